@@ -1,0 +1,35 @@
+// Subcommand registry. Each subcommand lives in its own file in game/cli/ and registers
+// itself with a static CommandRegistrar, so adding a command never edits main.cpp.
+//
+// setup() adds the subcommand's options to `sub` and returns the function that runs it
+// after parsing. run() returns the process exit code: 0 ok, 1 a check failed (regress
+// drift), 2 bad input. Throwing sweetspot::InputError also exits 2 with its message.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace sweetspot::cli {
+
+using RunFn = std::function<int()>;
+using SetupFn = RunFn (*)(CLI::App& sub);
+
+struct CommandInfo {
+  int order;            ///< position in `sweetspot --help`
+  const char* name;
+  const char* summary;
+  SetupFn setup;
+};
+
+std::vector<CommandInfo>& command_registry();
+
+struct CommandRegistrar {
+  CommandRegistrar(int order, const char* name, const char* summary, SetupFn setup) {
+    command_registry().push_back({order, name, summary, setup});
+  }
+};
+
+}  // namespace sweetspot::cli

@@ -1,0 +1,52 @@
+// `sweetspot`: dispatches to the subcommands registered in game/cli/cmd_*.cpp.
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "game/cli/command.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot::cli {
+std::vector<CommandInfo>& command_registry() {
+  static std::vector<CommandInfo> registry;
+  return registry;
+}
+}  // namespace sweetspot::cli
+
+int main(int argc, char** argv) {
+  using namespace sweetspot::cli;
+  CLI::App app{"Sweetspot — golf and baseball impact simulation"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "sweetspot 0.1");
+
+  auto& registry = command_registry();
+  std::sort(registry.begin(), registry.end(),
+            [](const CommandInfo& a, const CommandInfo& b) { return a.order < b.order; });
+  std::vector<std::pair<CLI::App*, RunFn>> runs;
+  for (const auto& c : registry) {
+    CLI::App* sub = app.add_subcommand(c.name, c.summary);
+    runs.emplace_back(sub, c.setup(*sub));
+  }
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints usage errors; map every bad flag to exit 2 (help/version stay 0).
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+
+  try {
+    for (auto& [sub, run] : runs) {
+      if (sub->parsed()) return run();
+    }
+  } catch (const sweetspot::InputError& e) {
+    std::cerr << "sweetspot: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "sweetspot: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return 2;
+}

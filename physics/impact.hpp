@@ -1,0 +1,106 @@
+// The impulse solver (DESIGN §3): two rigid bodies meet at a point; one impulse p on the
+// ball (−p on the impactor) resolves the impact under a restitution and friction model.
+//
+// Conventions: body 1 is the impactor (club head, bat, or the ground with inv_mass 0),
+// body 2 the ball. The unit normal n points from the impactor into the ball. r1, r2 run
+// from each CG to the contact point. u = (v2 + ω2×r2) − (v1 + ω1×r1) is the ball's
+// contact velocity relative to the impactor; the bodies approach when u·n < 0.
+//
+// solve_impact() is the hot path: allocation-free, no throw, assumes validate_impact()
+// passed. Call validate_impact() once where parameters enter (scenario load, UI edit).
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "physics/math.hpp"
+
+namespace sweetspot {
+
+enum class FrictionModel {
+  None,      ///< frictionless: reproduces the textbook's worked examples exactly
+  Textbook,  ///< Bourg ch. 5: tangential impulse µ·jn always, in full; can reverse sliding and CREATE energy
+  Coulomb,   ///< default: grip if the sticking impulse fits the friction cone, else slip
+};
+
+enum class ContactKind { Grip, Slip, Frictionless };
+
+const char* to_string(FrictionModel m);
+const char* to_string(ContactKind k);
+
+/// Normal coefficient of restitution as a function of normal approach speed, a piecewise
+/// linear table held constant past its ends. Ball COR falls as impact speed rises (a golf
+/// ball ~0.83 at 40 m/s and ~0.78 at 55 m/s; turf ~0.6 when dropped, ~0.3 at 20 m/s).
+/// A single point is a constant e. Fixed capacity so the solve never allocates.
+struct CorCurve {
+  static constexpr int kMaxPoints = 8;
+  std::array<double, kMaxPoints> speed{};  ///< m/s, strictly increasing
+  std::array<double, kMaxPoints> cor{};    ///< e at that speed, each in [0, 1]
+  int count = 1;                           ///< number of used points, 1..kMaxPoints
+
+  static CorCurve constant(double e) {
+    CorCurve c;
+    c.cor[0] = e;
+    return c;
+  }
+  /// e at normal approach speed `vn` (m/s, ≥ 0).
+  double at(double vn) const;
+};
+
+/// Contact material pair: restitution and friction between impactor and ball.
+struct ImpactMaterial {
+  CorCurve e = CorCurve::constant(0.83);  ///< normal restitution; USGA limit for a driver face is 0.830
+  double e_t = 0.0;   ///< tangential restitution in [0, 1]; 0 = ball rolls off the face (golf), 0.1–0.3 bat
+  double mu = 0.4;    ///< Coulomb friction coefficient ≥ 0; club face/ball ~0.35–0.45
+  FrictionModel friction = FrictionModel::Coulomb;
+};
+
+/// One body as the solver sees it, all world frame. Use inv_mass 0 and a zero inverse
+/// inertia for an immovable body (the ground).
+struct ImpactBody {
+  double inv_mass = 0.0;                     ///< 1/kg
+  Mat3 inv_inertia = Mat3::Zero();           ///< world-frame inverse inertia about the CG, 1/(kg·m²)
+  Vec3 r = Vec3::Zero();                     ///< m; CG → contact point
+  Vec3 velocity = Vec3::Zero();              ///< m/s of the CG
+  Vec3 angular_velocity = Vec3::Zero();      ///< rad/s
+};
+
+struct ImpactInput {
+  ImpactBody impactor;        ///< body 1
+  ImpactBody ball;            ///< body 2
+  Vec3 normal = Vec3::UnitX();///< unit, from impactor into ball
+  ImpactMaterial material;
+};
+
+struct ImpactResult {
+  Vec3 impulse = Vec3::Zero();     ///< N·s, applied to the ball (−impulse to the impactor)
+  double normal_impulse = 0.0;     ///< N·s, impulse·n (≥ 0)
+  double tangential_impulse = 0.0; ///< N·s, magnitude of the tangential part
+  double e_used = 0.0;             ///< the restitution the curve gave at this approach speed
+  ContactKind contact = ContactKind::Frictionless;
+  double energy_loss = 0.0;        ///< J, kinetic energy before − after (negative = created)
+  ImpactBody impactor_after;       ///< post-impact velocities (r and inertia unchanged)
+  ImpactBody ball_after;
+};
+
+/// Collision matrix K: an impulse p on the ball changes u by K p.
+Mat3 collision_matrix(const ImpactBody& impactor, const ImpactBody& ball);
+
+/// Relative contact velocity u of the ball with respect to the impactor.
+Vec3 contact_velocity(const ImpactBody& impactor, const ImpactBody& ball);
+
+/// Solves one impact. Requires validate_impact(in) to have passed.
+ImpactResult solve_impact(const ImpactInput& in) noexcept;
+
+/// Returns an empty string when `in` is a valid impact, otherwise a message naming the
+/// offending field and its allowed range (mass ≤ 0, inertia not symmetric positive
+/// definite, e or e_t outside [0, 1], µ < 0, non-unit normal, bodies separating, NaN).
+std::string validate_impact(const ImpactInput& in);
+
+/// validate_impact() + solve_impact(); throws InputError with the message on bad input.
+ImpactResult solve_impact_checked(const ImpactInput& in);
+
+/// Kinetic energy of an ImpactBody given its inverse mass properties (0 for immovable).
+double kinetic_energy(const ImpactBody& b);
+
+}  // namespace sweetspot

@@ -1,0 +1,57 @@
+// What a simulated shot produces after launch: the sampled path with its phase, and the
+// summary numbers of DESIGN §6 `flight`. The renderer and reports read this; they never
+// own physics state.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "physics/math.hpp"
+
+namespace sweetspot {
+
+enum class Phase : std::uint8_t { Flight, Bounce, Roll, Rest };
+
+enum class EndReason : std::uint8_t {
+  Rest,         ///< came to rest on the ground
+  OutOfBounds,  ///< left the world's bounds (or a world without ground)
+  Water,        ///< landed in a water hazard
+  HomeRun,      ///< cleared the outfield fence in fair territory
+  Fence,        ///< caught in / stopped against a fence or wall
+  StepLimit,    ///< hit the time or step bound (should not happen for sane input)
+};
+
+const char* to_string(Phase p);
+const char* to_string(EndReason r);
+
+/// One sample of the ball's path. Phase tells the renderer how to colour the trail.
+struct TrajectorySample {
+  double t = 0.0;               ///< s since launch
+  Vec3 position = Vec3::Zero(); ///< m, ball centre
+  Vec3 velocity = Vec3::Zero(); ///< m/s
+  Vec3 spin = Vec3::Zero();     ///< rad/s
+  Phase phase = Phase::Flight;
+};
+
+/// Summary of a shot, SI. Distances are measured in the horizontal plane from the launch
+/// point; lateral is + to the right (z).
+struct FlightSummary {
+  double carry_m = 0.0;            ///< to the first landing (baseball: batted-ball distance)
+  double total_m = 0.0;            ///< to the rest (or end) position
+  double apex_m = 0.0;             ///< max height above the launch point
+  double landing_angle_deg = 0.0;  ///< descent angle below horizontal at first landing
+  double hang_time_s = 0.0;        ///< launch to first landing
+  double lateral_m = 0.0;          ///< z at the first landing
+  double total_time_s = 0.0;       ///< launch to end
+  Vec3 landing_position = Vec3::Zero();
+  Vec3 rest_position = Vec3::Zero();
+  EndReason end = EndReason::Rest;
+  int bounces = 0;
+};
+
+struct ShotTrajectory {
+  std::vector<TrajectorySample> samples;  ///< time-ordered, first = launch, last = end
+  FlightSummary summary;
+};
+
+}  // namespace sweetspot

@@ -61,6 +61,10 @@ struct BallProperties {
   double inertia = 8.36e-6;  ///< kg·m² (solid sphere 0.4 m R²)
 };
 
+/// DESIGN §3 balls as solid spheres: golf 45.93 g, Ø 42.67 mm; baseball 145 g, R 36.9 mm.
+inline BallProperties golf_ball_properties() { return {0.04593, 0.021335, 0.4 * 0.04593 * 0.021335 * 0.021335}; }
+inline BallProperties baseball_properties() { return {0.145, 0.0369, 0.4 * 0.145 * 0.0369 * 0.0369}; }
+
 struct BounceResult {
   Vec3 velocity = Vec3::Zero();   ///< m/s after the bounce
   Vec3 spin = Vec3::Zero();       ///< rad/s after the bounce

@@ -100,6 +100,8 @@ Schema build_scenario_schema() {
 
   k.push_back(choice("sport", "golf|baseball", "", "which game (required)"));
   k.push_back(name("description", "", "one line shown by `sweetspot list`", kAnySport, ValueType::Text));
+  k.push_back(name("update", "true", "regression: false keeps `regress --update` from rewriting external reference values",
+                   kAnySport, ValueType::Bool));
 
   k.push_back(name("ball.name", "tour", "ball from assets/equipment/balls.toml", G));
   k.push_back(name("ball.name", "mlb", "ball from assets/equipment/balls.toml", B));
@@ -165,6 +167,8 @@ Schema build_impact_case_schema() {
   auto& k = s.keys;
   k.push_back(choice("case", "impact", "", "regression case kind (required)"));
   k.push_back(name("description", "", "what the case checks", kAnySport, ValueType::Text));
+  k.push_back(name("update", "true", "false keeps `regress --update` from rewriting external reference values",
+                   kAnySport, ValueType::Bool));
   for (const std::string_view body : {std::string_view("impactor"), std::string_view("ball")}) {
     auto& st = key_storage();
     auto key = [&](std::string_view leaf) {

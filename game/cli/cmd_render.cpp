@@ -30,6 +30,7 @@ struct RenderOptions {
   std::string spin_axis = "0deg", direction = "0deg";
   std::string impactor;  // "" = by sport
   std::string world = "none";
+  int samples = 0;
 };
 
 /// What the renderer needs of a shot, whatever produced it.
@@ -120,10 +121,13 @@ RunFn setup_render(CLI::App& sub) {
   sub.add_option("--impactor", o->impactor, "driver_head, iron_head, bat or none (default: driver_head / bat)")
       ->check(CLI::IsMember({"driver_head", "iron_head", "bat", "none"}));
   sub.add_option("--world", o->world, "world: none (flat default ground)")->capture_default_str();
+  sub.add_option("--msaa", o->samples, "multisample count: 0 = auto (4 on a GPU, 1 on llvmpipe), 1, 2, 4, 8")
+      ->capture_default_str()->check(CLI::IsMember({0, 1, 2, 4, 8}));
   return [o]() -> int {
     RenderRequest r;
     r.width = o->width;
     r.height = o->height;
+    r.samples = o->samples;
     r.camera = parse_camera_kind(o->camera);
     if (!o->at.empty()) {
       try {

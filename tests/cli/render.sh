@@ -29,6 +29,8 @@ done
 cmp -s "$tmp/bb.png" "$tmp/bb2.png" || fail "--at 2 and --at 2000ms differ"
 cmp -s "$tmp/side.png" "$tmp/bb.png" && fail "golf and baseball images identical"
 
+"$bin" render -o "$tmp/msaa.png" "${drive[@]}" --width 320 --height 200 --msaa 4 >/dev/null || fail "--msaa 4"
+
 # The same command twice gives the same image (deterministic scene and rasteriser).
 "$bin" render -o "$tmp/again.png" "${drive[@]}" --width 320 --height 200 >/dev/null
 cmp -s "$tmp/drive.png" "$tmp/again.png" || fail "repeated render differs"
@@ -43,6 +45,7 @@ expect_exit 2 "behind, side, top, follow" -o "$tmp/x.png" "${drive[@]}" --camera
 expect_exit 2 "16..8192" -o "$tmp/x.png" "${drive[@]}" --width 8
 expect_exit 2 "outside the shot" -o "$tmp/x.png" "${drive[@]}" --at 99
 expect_exit 2 "--at" -o "$tmp/x.png" "${drive[@]}" --at 2mph
+expect_exit 2 "--msaa" -o "$tmp/x.png" "${drive[@]}" --msaa 3
 expect_exit 2 "--ball-speed" -o "$tmp/x.png" --launch-angle 10deg --spin 2000rpm
 expect_exit 2 "--launch-angle" -o "$tmp/x.png" --ball-speed 160mph --launch-angle 10 --spin 2000rpm
 expect_exit 2 "does not exist" -o "$tmp/no/such/dir/x.png" "${drive[@]}"

@@ -1,10 +1,10 @@
 // The impulse solver. See impact.hpp for conventions and DESIGN §3 for the models.
 #include "physics/impact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
@@ -54,6 +54,33 @@ Vec3 contact_velocity(const ImpactBody& impactor, const ImpactBody& ball) {
          (impactor.velocity + impactor.angular_velocity.cross(impactor.r));
 }
 
+namespace {
+
+// K⁻¹ b for the symmetric positive definite collision matrix by the adjugate: a closed
+// form with no pivoting and no branches, several times faster than a general
+// factorisation on the hot path and as accurate for the well-conditioned K of real bodies.
+Vec3 solve_spd3(const Mat3& k, const Vec3& b) {
+  const double a00 = k(1, 1) * k(2, 2) - k(1, 2) * k(2, 1);
+  const double a01 = k(0, 2) * k(2, 1) - k(0, 1) * k(2, 2);
+  const double a02 = k(0, 1) * k(1, 2) - k(0, 2) * k(1, 1);
+  const double a11 = k(0, 0) * k(2, 2) - k(0, 2) * k(2, 0);
+  const double a12 = k(0, 2) * k(1, 0) - k(0, 0) * k(1, 2);
+  const double a22 = k(0, 0) * k(1, 1) - k(0, 1) * k(1, 0);
+  const double det = k(0, 0) * a00 + k(0, 1) * a01 + k(0, 2) * a02;
+  const double inv_det = 1.0 / det;
+  return Vec3(a00 * b.x() + a01 * b.y() + a02 * b.z(),
+              a01 * b.x() + a11 * b.y() + a12 * b.z(),
+              a02 * b.x() + a12 * b.y() + a22 * b.z()) * inv_det;
+}
+
+// Kinetic energy change of the two bodies under impulse p: p·u + ½ pᵀK p (exact for
+// rigid bodies; u is the pre-impact contact velocity).
+double energy_gain(const Mat3& k, const Vec3& u, const Vec3& p) {
+  return p.dot(u) + 0.5 * p.dot(k * p);
+}
+
+}  // namespace
+
 ImpactResult solve_impact(const ImpactInput& in) noexcept {
   const Vec3& n = in.normal;
   const ImpactMaterial& mat = in.material;
@@ -68,17 +95,18 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept {
   const double e = res.e_used;
   const Vec3 kn = k * n;
   const double jn_frictionless = -(1.0 + e) * un / n.dot(kn);
+  const Vec3 p_frictionless = jn_frictionless * n;
 
   Vec3 p = Vec3::Zero();
   switch (mat.friction) {
     case FrictionModel::None:
-      p = jn_frictionless * n;
+      p = p_frictionless;
       res.contact = ContactKind::Frictionless;
       break;
     case FrictionModel::Textbook: {
       // Bourg's model: µ·jn along −û_t, in full, whatever the sliding speed. Kept for
       // teaching; it can reverse sliding and create energy (tests demonstrate it).
-      p = jn_frictionless * n;
+      p = p_frictionless;
       if (ut_norm > 0.0) p -= mat.mu * jn_frictionless * (ut / ut_norm);
       res.contact = ContactKind::Slip;
       break;
@@ -87,7 +115,7 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept {
       // The impulse that ends the impact at normal separation −e·un and tangential
       // velocity −e_t·u_t; keep it if it lies inside the friction cone (grip).
       const Vec3 target_change = -(1.0 + e) * un * n - (1.0 + mat.e_t) * ut;
-      const Vec3 p_stick = k.ldlt().solve(target_change);
+      const Vec3 p_stick = solve_spd3(k, target_change);
       const double pn = p_stick.dot(n);
       const Vec3 pt = p_stick - pn * n;
       const double pt_norm = pt.norm();
@@ -95,9 +123,12 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept {
         p = p_stick;
         res.contact = ContactKind::Grip;
       } else {
-        // Slip: friction at its limit, opposing the tangential push the stick impulse
-        // needed. With an isotropic K this is −û_t exactly (DESIGN §3); with the coupled
-        // K of an off-centre club hit it is the direction sliding actually takes.
+        // Slip: friction at its limit µ·jn along the tangential direction the sticking
+        // impulse needed, with jn keeping the normal separation at −e·un. When K does not
+        // couple normal and tangent (ball on ground, centred hits) that direction is −û_t,
+        // DESIGN §3's formula; with the coupled K of an off-centre hit it differs, and this
+        // choice keeps the impulse continuous across the grip/slip boundary (on the cone
+        // the slip impulse equals the sticking one), so results never jump as µ is tuned.
         const Vec3 t_hat = pt / pt_norm;
         const Vec3 d = n + mat.mu * t_hat;
         const double denom = n.dot(k * d);
@@ -106,9 +137,31 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept {
         if (denom > 1e-12 * n.dot(kn)) {
           p = (-(1.0 + e) * un / denom) * d;
         } else {
-          p = jn_frictionless * n;
+          p = p_frictionless;
         }
         res.contact = ContactKind::Slip;
+      }
+      // Every impulse on the segment from the frictionless impulse to p gives the same
+      // normal separation and lies in the friction cone; the frictionless end never
+      // creates energy (its change is ½(1−e)·jn·un ≤ 0). If p would create energy, take
+      // the point of the segment furthest toward p that does not: the root of the
+      // quadratic energy change along it.
+      const double gain = energy_gain(k, u, p);
+      if (gain > 0.0) {
+        const Vec3 q = p - p_frictionless;
+        const double a = energy_gain(k, u, p_frictionless);  // ≤ 0
+        const double b = q.dot(u) + p_frictionless.dot(k * q);
+        const double c = 0.5 * q.dot(k * q);
+        const double disc = std::sqrt(std::max(0.0, b * b - 4.0 * a * c));
+        double lambda = 0.0;
+        if (b > 0.0) {
+          lambda = (-2.0 * a) / (b + disc);
+        } else if (c > 0.0) {
+          lambda = (-b + disc) / (2.0 * c);
+        }
+        lambda = std::clamp(lambda, 0.0, 1.0);
+        p = p_frictionless + lambda * q;
+        res.energy_limited = true;
       }
       break;
     }
@@ -126,8 +179,7 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept {
   res.impactor_after.angular_velocity -= in.impactor.inv_inertia * in.impactor.r.cross(p);
 
   // For rigid bodies the work done by an impulse is p·(u⁻ + u⁺)/2 exactly.
-  const Vec3 u_after = u + k * p;
-  res.energy_loss = -0.5 * p.dot(u + u_after);
+  res.energy_loss = -energy_gain(k, u, p);
   return res;
 }
 
@@ -205,6 +257,39 @@ double kinetic_energy(const ImpactBody& b) {
     ke += 0.5 * b.angular_velocity.dot(b.inv_inertia.inverse() * b.angular_velocity);
   }
   return ke;
+}
+
+std::string validate_mass_properties(double mass, const Mat3& inertia, const std::string& what) {
+  std::ostringstream os;
+  if (!std::isfinite(mass) || mass <= 0.0) {
+    os << what << ".mass: must be > 0 kg and finite, got " << mass;
+    return os.str();
+  }
+  if (!inertia.allFinite()) return what + ".inertia: must be finite";
+  if ((inertia - inertia.transpose()).cwiseAbs().maxCoeff() > 1e-9 * inertia.cwiseAbs().maxCoeff()) {
+    return what + ".inertia: the tensor must be symmetric (I_ij = I_ji)";
+  }
+  Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia);
+  if (!(eig.eigenvalues().minCoeff() > 0.0)) {
+    os << what << ".inertia: the tensor must be positive definite (smallest principal moment "
+       << eig.eigenvalues().minCoeff() << " kg·m² given, must be > 0)";
+    return os.str();
+  }
+  return {};
+}
+
+ImpactBody make_impact_body(const RigidBody& body, const Vec3& contact, const std::string& what) {
+  if (auto msg = validate_mass_properties(body.mass, body.inertia_body, what); !msg.empty()) {
+    throw InputError(msg);
+  }
+  ImpactBody b;
+  b.inv_mass = 1.0 / body.mass;
+  b.inv_inertia = body.inverse_inertia_world();
+  b.inv_inertia = 0.5 * (b.inv_inertia + b.inv_inertia.transpose());  // exact symmetry
+  b.r = contact - body.position;
+  b.velocity = body.velocity;
+  b.angular_velocity = body.angular_velocity;
+  return b;
 }
 
 }  // namespace sweetspot

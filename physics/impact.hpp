@@ -13,6 +13,7 @@
 #include <array>
 #include <string>
 
+#include "physics/body.hpp"
 #include "physics/math.hpp"
 
 namespace sweetspot {
@@ -79,6 +80,13 @@ struct ImpactResult {
   double e_used = 0.0;             ///< the restitution the curve gave at this approach speed
   ContactKind contact = ContactKind::Frictionless;
   double energy_loss = 0.0;        ///< J, kinetic energy before − after (negative = created)
+  /// Coulomb only. True when the model's impulse would have CREATED kinetic energy and was
+  /// pulled back toward the frictionless impulse until it did not. Independent normal and
+  /// tangential restitution (e ≠ e_t) are not energy-consistent when K couples the normal
+  /// and tangential directions strongly (a far off-centre CG, Kane's paradox); for club,
+  /// bat and ground impacts this does not happen (tests check it). When set, a "grip"
+  /// contact leaves the tangential velocity between −e_t·u_t and the frictionless value.
+  bool energy_limited = false;
   ImpactBody impactor_after;       ///< post-impact velocities (r and inertia unchanged)
   ImpactBody ball_after;
 };
@@ -102,5 +110,14 @@ ImpactResult solve_impact_checked(const ImpactInput& in);
 
 /// Kinetic energy of an ImpactBody given its inverse mass properties (0 for immovable).
 double kinetic_energy(const ImpactBody& b);
+
+/// Empty when `mass` (kg) is > 0 and finite and `inertia` (kg·m²) is finite, symmetric and
+/// positive definite; otherwise a message naming `what` and the violated condition.
+std::string validate_mass_properties(double mass, const Mat3& inertia, const std::string& what);
+
+/// The solver's view of a rigid body touching the contact point `contact` (world, m):
+/// inverse mass, world-frame inverse inertia, r = contact − CG and the body's velocities.
+/// Throws InputError naming `what` when the mass properties are invalid.
+ImpactBody make_impact_body(const RigidBody& body, const Vec3& contact, const std::string& what);
 
 }  // namespace sweetspot

@@ -1,0 +1,25 @@
+// `sweetspot list`: the built-in scenarios with a one-line description each.
+#include <iostream>
+
+#include "game/cli/command.hpp"
+#include "game/scenario/scenario_catalog.hpp"
+
+namespace sweetspot::cli {
+namespace {
+
+RunFn setup_list(CLI::App& /*sub*/) {
+  return []() -> int {
+    const auto all = builtin_scenarios();
+    std::size_t width = 0;
+    for (const auto& s : all) width = std::max(width, s.name.size());
+    for (const auto& s : all) {
+      std::cout << s.name << std::string(width + 2 - s.name.size(), ' ') << s.description << "\n";
+    }
+    return 0;
+  };
+}
+
+const CommandRegistrar reg{90, "list", "list the built-in scenarios", setup_list};
+
+}  // namespace
+}  // namespace sweetspot::cli

@@ -1,0 +1,244 @@
+#include "game/render/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+constexpr double kMargin = 0.84;  // fraction of the half-image the framed points may use
+
+// Distance along -forward from `centre` at which every point fits a frustum of the given
+// tangents (horizontal, vertical), with the points centred on `centre`.
+double fit_distance(const std::vector<Vec3>& points, const Vec3& centre, const Vec3& f, const Vec3& s, const Vec3& u,
+                    double tan_h, double tan_v) {
+  double d = 1.0;
+  for (const Vec3& p : points) {
+    const Vec3 r = p - centre;
+    const double z = r.dot(f);
+    d = std::max(d, std::abs(r.dot(s)) / (tan_h * kMargin) - z);
+    d = std::max(d, std::abs(r.dot(u)) / (tan_v * kMargin) - z);
+  }
+  return d;
+}
+
+// Centre of the points' extent in the (s, u) plane, keeping its depth at the mean.
+Vec3 extent_centre(const std::vector<Vec3>& points, const Vec3& s, const Vec3& u) {
+  double s_lo = 1e300, s_hi = -1e300, u_lo = 1e300, u_hi = -1e300;
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : points) {
+    s_lo = std::min(s_lo, p.dot(s));
+    s_hi = std::max(s_hi, p.dot(s));
+    u_lo = std::min(u_lo, p.dot(u));
+    u_hi = std::max(u_hi, p.dot(u));
+    mean += p;
+  }
+  mean /= static_cast<double>(points.size());
+  const Vec3 f = s.cross(u);
+  return 0.5 * (s_lo + s_hi) * s + 0.5 * (u_lo + u_hi) * u + mean.dot(f) * f;
+}
+
+Camera look_along(const std::vector<Vec3>& points, const Vec3& forward, const Vec3& up_hint, double aspect) {
+  Camera c;
+  c.up = up_hint;
+  const Vec3 f = forward.normalized();
+  const Vec3 s = f.cross(up_hint).normalized();
+  const Vec3 u = s.cross(f);
+  const Vec3 centre = extent_centre(points, s, u);
+  const double tan_v = std::tan(c.fov_y / 2);
+  const double d = fit_distance(points, centre, f, s, u, tan_v * aspect, tan_v);
+  c.eye = centre - d * f;
+  c.target = centre;
+  c.near_m = std::max(0.5, 0.02 * d);
+  return c;
+}
+
+}  // namespace
+
+CameraKind parse_camera_kind(std::string_view name) {
+  if (name == "behind") return CameraKind::Behind;
+  if (name == "side") return CameraKind::Side;
+  if (name == "top") return CameraKind::Top;
+  if (name == "follow") return CameraKind::Follow;
+  throw InputError("camera '" + std::string(name) + "' is not one of: behind, side, top, follow");
+}
+
+const char* to_string(CameraKind k) {
+  switch (k) {
+    case CameraKind::Behind: return "behind";
+    case CameraKind::Side: return "side";
+    case CameraKind::Top: return "top";
+    case CameraKind::Follow: return "follow";
+  }
+  return "?";
+}
+
+Vec3 Camera::forward() const { return (target - eye).normalized(); }
+Vec3 Camera::right() const { return forward().cross(up).normalized(); }
+Vec3 Camera::true_up() const { return right().cross(forward()); }
+
+Eigen::Matrix4d Camera::view() const {
+  const Vec3 f = forward(), s = right(), u = true_up();
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.block<1, 3>(0, 0) = s.transpose();
+  m.block<1, 3>(1, 0) = u.transpose();
+  m.block<1, 3>(2, 0) = -f.transpose();
+  m(0, 3) = -s.dot(eye);
+  m(1, 3) = -u.dot(eye);
+  m(2, 3) = f.dot(eye);
+  return m;
+}
+
+Eigen::Matrix4d Camera::projection(double aspect) const {
+  const double t = 1.0 / std::tan(fov_y / 2);
+  Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
+  m(0, 0) = t / aspect;
+  m(1, 1) = t;
+  m(2, 2) = -(far_m + near_m) / (far_m - near_m);
+  m(2, 3) = -2.0 * far_m * near_m / (far_m - near_m);
+  m(3, 2) = -1.0;
+  return m;
+}
+
+std::optional<Eigen::Vector2d> Camera::project(const Vec3& p, int width, int height) const {
+  const Eigen::Vector4d clip = projection(double(width) / height) * view() * p.homogeneous();
+  if (clip.w() <= near_m) return std::nullopt;
+  const double x = clip.x() / clip.w(), y = clip.y() / clip.w();
+  return Eigen::Vector2d((x + 1.0) * 0.5 * width, (1.0 - y) * 0.5 * height);
+}
+
+double Camera::metres_per_pixel(const Vec3& p, int height) const {
+  const double depth = std::max((p - eye).dot(forward()), near_m);
+  return 2.0 * depth * std::tan(fov_y / 2) / height;
+}
+
+void Bounds::add(const Vec3& p) {
+  min = min.cwiseMin(p);
+  max = max.cwiseMax(p);
+}
+
+Bounds shot_bounds(const ShotTrajectory& trajectory) {
+  Bounds b;
+  if (trajectory.samples.empty()) return b;
+  b.min = b.max = trajectory.samples.front().position;
+  for (const auto& s : trajectory.samples) b.add(s.position);
+  return b;
+}
+
+TrajectorySample sample_at(const ShotTrajectory& trajectory, double t, std::size_t* index) {
+  const auto& s = trajectory.samples;
+  if (s.empty()) {
+    if (index) *index = 0;
+    return {};
+  }
+  if (t <= s.front().t) {
+    if (index) *index = 0;
+    return s.front();
+  }
+  if (t >= s.back().t) {
+    if (index) *index = s.size() - 1;
+    return s.back();
+  }
+  const auto it = std::upper_bound(s.begin(), s.end(), t, [](double v, const TrajectorySample& x) { return v < x.t; });
+  const std::size_t i = static_cast<std::size_t>(it - s.begin()) - 1;
+  if (index) *index = i;
+  const auto& a = s[i];
+  const auto& b = s[i + 1];
+  const double span = b.t - a.t;
+  const double w = span > 0 ? (t - a.t) / span : 0.0;
+  TrajectorySample out = a;
+  out.t = t;
+  out.position = a.position + w * (b.position - a.position);
+  out.velocity = a.velocity + w * (b.velocity - a.velocity);
+  out.spin = a.spin + w * (b.spin - a.spin);
+  return out;
+}
+
+ShotFraming shot_framing(const ShotTrajectory& trajectory, double t) {
+  ShotFraming f;
+  const auto& s = trajectory.samples;
+  if (s.empty()) {
+    f.points.push_back(Vec3::Zero());
+    f.points.push_back(Vec3(100.0, 0.0, 0.0));
+    return f;
+  }
+  // At most ~400 points: framing needs the shape, not every integrator step.
+  const std::size_t stride = std::max<std::size_t>(1, s.size() / 400);
+  for (std::size_t i = 0; i < s.size(); i += stride) f.points.push_back(s[i].position);
+  f.points.push_back(s.back().position);
+  f.launch = s.front().position;
+  Vec3 d = s.back().position - f.launch;
+  d.y() = 0;
+  f.aim = d.norm() > 1.0 ? d.normalized() : Vec3::UnitX();
+  const TrajectorySample at = sample_at(trajectory, t);
+  f.ball = at.position;
+  f.ball_velocity = at.velocity;
+  return f;
+}
+
+Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height) {
+  const double aspect = double(width) / height;
+  const Vec3 up = Vec3::UnitY();
+  // Side, Top and Behind look along the target line (+x, DESIGN §2), not along this shot, so
+  // a slice or a pull shows as a curve away from the line.
+  const Vec3 aim = Vec3::UnitX();
+  const Vec3 right = Vec3::UnitZ();
+  switch (kind) {
+    case CameraKind::Side: {
+      // From the right of the shot, 10° down, so downrange runs left to right.
+      const Vec3 f = (-right * std::cos(deg_to_rad(10)) - up * std::sin(deg_to_rad(10))).normalized();
+      return look_along(framing.points, f, up, aspect);
+    }
+    case CameraKind::Top: {
+      // Straight down would make the up hint degenerate; the hint is the shot direction.
+      return look_along(framing.points, -up, aim, aspect);
+    }
+    case CameraKind::Follow: {
+      Camera c;
+      Vec3 dir = framing.ball_velocity;
+      dir.y() = 0;
+      dir = dir.norm() > 0.5 ? dir.normalized() : framing.aim;
+      c.eye = framing.ball - 9.0 * dir + Vec3(0, 2.5, 0);
+      c.target = framing.ball + 6.0 * dir;
+      c.near_m = 0.3;
+      return c;
+    }
+    case CameraKind::Behind:
+      break;
+  }
+  // Behind: the eye stands behind the launch point and turns to centre the shot's angular
+  // extent; it steps back until the extent fits a field of view of at most 60°.
+  Camera c;
+  for (double back : {14.0, 20.0, 30.0, 45.0, 70.0, 110.0, 170.0, 260.0, 420.0}) {
+    c.eye = framing.launch - back * aim + Vec3(0, 3.0 + 0.25 * back, 0);
+    double yaw_lo = 1e9, yaw_hi = -1e9, pitch_lo = 1e9, pitch_hi = -1e9;
+    for (const Vec3& p : framing.points) {
+      const Vec3 r = p - c.eye;
+      const double ahead = r.dot(aim);
+      const double yaw = std::atan2(r.dot(right), ahead);
+      const double pitch = std::atan2(r.y(), std::hypot(ahead, r.dot(right)));
+      yaw_lo = std::min(yaw_lo, yaw);
+      yaw_hi = std::max(yaw_hi, yaw);
+      pitch_lo = std::min(pitch_lo, pitch);
+      pitch_hi = std::max(pitch_hi, pitch);
+    }
+    const double yaw = 0.5 * (yaw_lo + yaw_hi), pitch = 0.5 * (pitch_lo + pitch_hi);
+    const double need_v = std::max(std::tan(0.5 * (pitch_hi - pitch_lo)) / kMargin,
+                                   std::tan(0.5 * (yaw_hi - yaw_lo)) / (kMargin * aspect));
+    const double fov = 2.0 * std::atan(need_v);
+    const Vec3 dir = (std::cos(pitch) * (std::cos(yaw) * aim + std::sin(yaw) * right) + std::sin(pitch) * up);
+    c.target = c.eye + 50.0 * dir;
+    c.fov_y = std::max(fov, deg_to_rad(30.0));
+    if (fov <= deg_to_rad(60.0)) break;
+  }
+  return c;
+}
+
+Camera frame_shot(CameraKind kind, const ShotTrajectory& trajectory, double t, int width, int height) {
+  return frame_shot(kind, shot_framing(trajectory, t), width, height);
+}
+
+}  // namespace sweetspot

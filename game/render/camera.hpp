@@ -1,0 +1,80 @@
+// Cameras for a shot (pure math, no GL): behind the ball, side, top, follow. Every kind
+// but Follow frames the whole shot from the trajectory's bounds, so the default view shows
+// launch, apex, landing and rest. World frame of DESIGN §2 (x downrange, y up, z right).
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "physics/math.hpp"
+#include "physics/trajectory.hpp"
+
+namespace sweetspot {
+
+enum class CameraKind {
+  Behind,  ///< behind and above the launch point, looking down the shot line (TV tracer view)
+  Side,    ///< from the right (+z) of the shot, downrange to the right of the image
+  Top,     ///< from above, downrange up the image, right of the target line to the right
+  Follow,  ///< chases the ball at the given time, a few metres behind and above it
+};
+
+/// Parses behind|side|top|follow; throws InputError listing the allowed names.
+CameraKind parse_camera_kind(std::string_view name);
+const char* to_string(CameraKind k);
+
+/// A pinhole camera. Pixel coordinates have their origin at the top-left of the image,
+/// x right, y down, pixel centres at +0.5.
+struct Camera {
+  Vec3 eye{-10.0, 3.0, 0.0};  ///< m
+  Vec3 target{0.0, 0.0, 0.0}; ///< m, the point at the image centre
+  Vec3 up{0.0, 1.0, 0.0};     ///< approximate up; orthogonalised
+  double fov_y = deg_to_rad(45.0);  ///< rad, vertical field of view
+  double near_m = 0.5, far_m = 5000.0;
+
+  Vec3 forward() const;  ///< unit, eye -> target
+  Vec3 right() const;    ///< unit, image +x
+  Vec3 true_up() const;  ///< unit, image -y
+  /// OpenGL view and projection matrices (clip z in [-1, 1]).
+  Eigen::Matrix4d view() const;
+  Eigen::Matrix4d projection(double aspect) const;
+  /// Pixel position of world point p in a width x height image; nothing if p is behind
+  /// the near plane.
+  std::optional<Eigen::Vector2d> project(const Vec3& p, int width, int height) const;
+  /// World size (m) of one pixel at the depth of p, for screen-constant line widths.
+  double metres_per_pixel(const Vec3& p, int height) const;
+};
+
+/// Axis-aligned box around a shot: every trajectory sample and the launch point.
+struct Bounds {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  void add(const Vec3& p);
+  Vec3 centre() const { return 0.5 * (min + max); }
+};
+Bounds shot_bounds(const ShotTrajectory& trajectory);
+
+/// What a camera frames: the points that must be in view, the launch point, the horizontal
+/// shot direction and the ball at the time shown.
+struct ShotFraming {
+  std::vector<Vec3> points;           ///< m; trajectory samples (decimated is fine)
+  Vec3 launch = Vec3::Zero();         ///< m
+  Vec3 aim = Vec3::UnitX();           ///< unit, horizontal: launch -> rest (or +x); Follow uses it at rest
+  Vec3 ball = Vec3::Zero();           ///< m, ball centre at the time shown
+  Vec3 ball_velocity = Vec3::Zero();  ///< m/s at the time shown (Follow looks along it)
+};
+ShotFraming shot_framing(const ShotTrajectory& trajectory, double t);
+
+/// The camera of `kind` for a width x height image. Behind, Side and Top keep every framing
+/// point inside the image with a margin of about 8 % per side; Follow sits behind the ball.
+Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height);
+
+/// Convenience: frame_shot(kind, shot_framing(trajectory, t), width, height).
+Camera frame_shot(CameraKind kind, const ShotTrajectory& trajectory, double t, int width, int height);
+
+/// Ball centre and velocity at time t (s), linear between samples, clamped to the shot.
+/// `index` (optional) gets the index of the last sample at or before t.
+TrajectorySample sample_at(const ShotTrajectory& trajectory, double t, std::size_t* index = nullptr);
+
+}  // namespace sweetspot

@@ -1,0 +1,65 @@
+#include "game/render/image.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <system_error>
+
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+
+void flip_rows(std::vector<std::uint8_t>& pixels, int width, int height, int channels) {
+  const auto row = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
+  for (int y = 0; y < height / 2; ++y) {
+    auto a = pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y));
+    auto b = pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(height - 1 - y));
+    std::swap_ranges(a, a + static_cast<std::ptrdiff_t>(row), b);
+  }
+}
+
+void write_png_atomic(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
+  if (width <= 0 || height <= 0 || rgba.size() != static_cast<std::size_t>(width) * height * 4) {
+    throw InputError("PNG " + path.string() + ": pixel buffer does not match " + std::to_string(width) + "x" +
+                     std::to_string(height) + " RGBA");
+  }
+  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(dir)) {
+    throw InputError("cannot write " + path.string() + ": folder " + dir.string() + " does not exist");
+  }
+  // Hidden temporary name in the same folder (rename is atomic only within a file system).
+  std::string tmp_name = path.filename().string();
+  tmp_name.insert(0, 1, '.');
+  tmp_name.append(".tmp").append(std::to_string(::getpid()));
+  const std::filesystem::path tmp = dir / tmp_name;
+  if (stbi_write_png(tmp.c_str(), width, height, 4, rgba.data(), width * 4) == 0) {
+    std::error_code ignore;
+    std::filesystem::remove(tmp, ignore);
+    throw InputError("cannot write " + path.string() + " (writing " + tmp.string() + " failed)");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignore;
+    std::filesystem::remove(tmp, ignore);
+    throw InputError("cannot write " + path.string() + ": " + ec.message());
+  }
+}
+
+std::vector<std::uint8_t> read_png_rgba(const std::filesystem::path& path, int* width, int* height) {
+  int w = 0, h = 0, n = 0;
+  stbi_uc* data = stbi_load(path.c_str(), &w, &h, &n, 4);
+  if (data == nullptr) throw InputError("cannot read PNG " + path.string() + ": " + stbi_failure_reason());
+  std::vector<std::uint8_t> out(data, data + static_cast<std::size_t>(w) * h * 4);
+  stbi_image_free(data);
+  *width = w;
+  *height = h;
+  return out;
+}
+
+}  // namespace sweetspot

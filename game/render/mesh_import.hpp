@@ -1,0 +1,31 @@
+// Meshes from files through assimp (OBJ + MTL; anything assimp reads). Each material's
+// colour comes from the render palette when its name is a known surface or equipment part
+// (so fairway, rough, sand... read the same in every world file), else from the file's
+// diffuse colour.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+#include <Eigen/Core>
+
+#include "game/render/mesh_data.hpp"
+
+namespace sweetspot {
+
+struct PaletteEntry {
+  Eigen::Vector3f color;  ///< RGB 0..1 as lit under the noon sun
+  float pattern;          ///< 1 = mown stripes
+};
+
+/// The palette colour for a material name (tee, fairway, rough, sand, green, water, dirt,
+/// grass, warning_track, wall, flag, ball, ...), or nothing for unknown names.
+std::optional<PaletteEntry> palette_color(std::string_view material);
+
+/// Loads every mesh of the file into one MeshData (triangulated, normals generated where the
+/// file has none, node transforms applied). Throws RenderError naming the file and
+/// assimp's message when it cannot be read or holds no triangles.
+MeshData import_mesh(const std::filesystem::path& path);
+
+}  // namespace sweetspot

@@ -1,0 +1,77 @@
+#include "game/render/render_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "game/render/image.hpp"
+#include "game/render/renderer.hpp"
+#include "game/render/render_paths.hpp"
+#include "game/render/synthetic_shot.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+
+std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, const RenderRequest& request) {
+  if (trajectory.samples.empty()) throw InputError("render: the shot has no trajectory samples");
+  const double end = trajectory.samples.back().t;
+  const double t = request.at_seconds.value_or(end);
+  if (!std::isfinite(t) || t < 0.0 || t > end + 1e-9) {
+    throw InputError("--at " + std::to_string(t) + " s is outside the shot (0.." + std::to_string(end) + " s)");
+  }
+  if (request.width < 16 || request.width > 8192 || request.height < 16 || request.height > 8192) {
+    throw InputError("image size " + std::to_string(request.width) + "x" + std::to_string(request.height) +
+                     " is outside 16..8192 pixels per side");
+  }
+  OffscreenContext context(request.platform);
+  ShotSceneInput input;
+  input.sport = request.sport;
+  input.world = request.world;
+  input.ball_radius = request.ball_radius;
+  input.impactor = request.impactor;
+  input.impactor_mesh = request.impactor_mesh;
+  input.flag = request.flag;
+  ShotScene scene(input);
+  scene.set_shot(trajectory, request.impactor);
+  RendererOptions options;
+  options.samples = request.samples;
+  Renderer renderer(request.width, request.height, options);
+  const Camera camera = scene.camera(request.camera, t, request.width, request.height);
+  renderer.draw(scene.build(camera, t, request.width, request.height), camera);
+  return renderer.read_pixels();
+}
+
+void render_shot_png(const ShotTrajectory& trajectory, const RenderRequest& request, const std::filesystem::path& out) {
+  const auto rgba = render_shot_rgba(trajectory, request);
+  write_png_atomic(out, request.width, request.height, rgba);
+}
+
+double measure_frame_ms(int w, int h, int frames) {
+  if (frames < 1) throw InputError("frames " + std::to_string(frames) + " must be at least 1");
+  OffscreenContext context;
+  ShotSceneInput input;
+  input.world = std::filesystem::is_regular_file(render_asset_dir() / "worlds" / "golf_hole.obj") ? "golf_hole" : "";
+  input.impactor_mesh = "driver_head";
+  ShotScene scene(input);
+  ImpactorPlacement club;
+  club.position = Vec3(-0.0214, 0.0214, 0.0);
+  scene.set_shot(synthetic_shot(), club);
+  Renderer renderer(w, h);
+  const double end = scene.trajectory().samples.back().t;
+  auto frame = [&](int i) {
+    const double t = end * (0.5 + 0.5 * (i % 8) / 8.0);  // the trail changes as in a replay
+    const Camera camera = scene.camera(CameraKind::Behind, t, w, h);
+    renderer.draw(scene.build(camera, t, w, h), camera);
+    return renderer.read_pixels();  // waits for the GPU, as writing an image does
+  };
+  for (int i = 0; i < 3; ++i) frame(i);
+  const auto start = std::chrono::steady_clock::now();
+  std::size_t guard = 0;
+  for (int i = 0; i < frames; ++i) guard += frame(i)[0];
+  const auto stop = std::chrono::steady_clock::now();
+  (void)guard;
+  return std::chrono::duration<double, std::milli>(stop - start).count() / frames;
+}
+
+}  // namespace sweetspot

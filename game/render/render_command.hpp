@@ -1,0 +1,44 @@
+// One call from a shot to a PNG (the `sweetspot render` command and the bench use these).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "game/render/camera.hpp"
+#include "game/render/offscreen_context.hpp"
+#include "game/render/shot_scene.hpp"
+#include "physics/trajectory.hpp"
+
+namespace sweetspot {
+
+struct RenderRequest {
+  std::string sport = "golf";       ///< "golf" | "baseball"
+  std::string world;                ///< world name (assets/worlds), .obj path, or "" (grass plane)
+  double ball_radius = 0.021335;    ///< m
+  std::optional<ImpactorPlacement> impactor;  ///< club/bat mesh frame -> world at impact
+  std::string impactor_mesh;        ///< "driver_head", "iron_head", "bat", a path, or ""
+  std::optional<Vec3> flag;         ///< m; see ShotSceneInput::flag
+  int width = 1280, height = 720;   ///< px, 16..8192
+  CameraKind camera = CameraKind::Behind;
+  std::optional<double> at_seconds; ///< s since launch, 0..end; nothing = the shot's end
+  int samples = 4;                  ///< MSAA samples (see RendererOptions)
+  EglPlatform platform = EglPlatform::Auto;
+};
+
+/// Renders the shot off-screen and returns RGBA8 pixels, top row first. Throws InputError
+/// for bad request values (size, time outside 0..end, unknown world/mesh/sport),
+/// RenderUnavailable when no GL context can be made, RenderError for shader/mesh failures.
+std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, const RenderRequest& request);
+
+/// render_shot_rgba, then write_png_atomic(out, ...).
+void render_shot_png(const ShotTrajectory& trajectory, const RenderRequest& request, const std::filesystem::path& out);
+
+/// Mean ms per warm w x h off-screen frame — scene build + draw + MSAA resolve + read-back —
+/// over `frames` frames after 3 warm-up frames, for a synthetic drive on the golf_hole world
+/// (a plain plane if that world is missing). Throws RenderUnavailable without EGL.
+double measure_frame_ms(int w, int h, int frames);
+
+}  // namespace sweetspot

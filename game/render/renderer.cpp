@@ -1,0 +1,190 @@
+#include "game/render/renderer.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "game/render/gl.hpp"
+#include "game/render/image.hpp"
+#include "game/render/render_error.hpp"
+#include "game/render/render_paths.hpp"
+#include "game/render/shader_program.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+
+struct Renderer::Impl {
+  ShaderProgram lit, flat, sky;
+  GpuMesh ground_overlay, top_overlay;
+  GLuint empty_vao = 0;
+  GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
+  GLuint resolve_fbo = 0, resolve_color = 0;
+
+  explicit Impl(const std::filesystem::path& dir) : lit(dir, "lit"), flat(dir, "flat"), sky(dir, "sky") {
+    glGenVertexArrays(1, &empty_vao);
+  }
+  ~Impl() {
+    release_targets();
+    glDeleteVertexArrays(1, &empty_vao);
+  }
+  void release_targets() {
+    if (msaa_fbo != 0) glDeleteFramebuffers(1, &msaa_fbo);
+    if (resolve_fbo != 0) glDeleteFramebuffers(1, &resolve_fbo);
+    if (msaa_color != 0) glDeleteRenderbuffers(1, &msaa_color);
+    if (msaa_depth != 0) glDeleteRenderbuffers(1, &msaa_depth);
+    if (resolve_color != 0) glDeleteTextures(1, &resolve_color);
+    msaa_fbo = resolve_fbo = msaa_color = msaa_depth = resolve_color = 0;
+  }
+};
+
+namespace {
+
+void check_size(int w, int h) {
+  if (w < 16 || w > 8192 || h < 16 || h > 8192) {
+    throw InputError("image size " + std::to_string(w) + "x" + std::to_string(h) +
+                     " is outside 16..8192 pixels per side");
+  }
+}
+
+void check_fbo(const char* which) {
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw RenderError(std::string(which) + " framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+  }
+}
+
+Eigen::Matrix3f normal_matrix(const Eigen::Matrix4f& model) {
+  return model.block<3, 3>(0, 0).inverse().transpose();
+}
+
+}  // namespace
+
+Renderer::Renderer(int width, int height, const RendererOptions& options) {
+  check_size(width, height);
+  impl_ = std::make_unique<Impl>(options.shader_dir.empty() ? shader_dir() : options.shader_dir);
+  GLint max_samples = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  samples_ = std::clamp(options.samples, 1, std::max(1, static_cast<int>(max_samples)));
+  resize(width, height);
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::resize(int width, int height) {
+  check_size(width, height);
+  width_ = width;
+  height_ = height;
+  Impl& m = *impl_;
+  m.release_targets();
+
+  glGenRenderbuffers(1, &m.msaa_color);
+  glBindRenderbuffer(GL_RENDERBUFFER, m.msaa_color);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_ > 1 ? samples_ : 0, GL_RGBA8, width, height);
+  glGenRenderbuffers(1, &m.msaa_depth);
+  glBindRenderbuffer(GL_RENDERBUFFER, m.msaa_depth);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_ > 1 ? samples_ : 0, GL_DEPTH_COMPONENT24, width, height);
+  glGenFramebuffers(1, &m.msaa_fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, m.msaa_fbo);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m.msaa_color);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m.msaa_depth);
+  check_fbo("multisampled");
+
+  glGenTextures(1, &m.resolve_color);
+  glBindTexture(GL_TEXTURE_2D, m.resolve_color);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glGenFramebuffers(1, &m.resolve_fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, m.resolve_fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m.resolve_color, 0);
+  check_fbo("resolve");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Renderer::draw(const Scene& scene, const Camera& camera) {
+  Impl& m = *impl_;
+  const double aspect = double(width_) / height_;
+  const Eigen::Matrix4d view_proj_d = camera.projection(aspect) * camera.view();
+  const Eigen::Matrix4f view_proj = view_proj_d.cast<float>();
+  const Eigen::Vector3f eye = camera.eye.cast<float>();
+
+  glBindFramebuffer(GL_FRAMEBUFFER, m.msaa_fbo);
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glClearColor(scene.sky_horizon.x(), scene.sky_horizon.y(), scene.sky_horizon.z(), 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  // Sky: depth writes off, so everything else draws over it.
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  m.sky.use();
+  m.sky.set("u_inv_view_proj", Eigen::Matrix4f(view_proj_d.inverse().cast<float>()));
+  m.sky.set("u_eye", eye);
+  m.sky.set("u_sun_dir", scene.sun_direction);
+  m.sky.set("u_horizon", scene.sky_horizon);
+  m.sky.set("u_zenith", scene.sky_zenith);
+  glBindVertexArray(m.empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  m.lit.use();
+  m.lit.set("u_view_proj", view_proj);
+  m.lit.set("u_eye", eye);
+  m.lit.set("u_sun_dir", scene.sun_direction);
+  m.lit.set("u_haze", scene.sky_horizon);
+  m.lit.set("u_haze_range", scene.haze_range);
+  for (const auto& inst : scene.meshes) {
+    if (inst.mesh == nullptr) continue;
+    // Terrain is pushed back a little in depth so markers lying on it win the depth test.
+    if (inst.terrain) {
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(1.0f, 4.0f);
+    }
+    m.lit.set("u_model", inst.model);
+    m.lit.set("u_normal_matrix", normal_matrix(inst.model));
+    inst.mesh->draw();
+    if (inst.terrain) glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+
+  m.flat.use();
+  m.flat.set("u_view_proj", view_proj);
+  m.ground_overlay.upload(scene.ground_overlay);
+  m.ground_overlay.draw();
+  glDisable(GL_DEPTH_TEST);
+  m.top_overlay.upload(scene.top_overlay);
+  m.top_overlay.draw();
+  glEnable(GL_DEPTH_TEST);
+
+  // Resolve the samples into the single-sample FBO that read-back and windows use.
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, m.msaa_fbo);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m.resolve_fbo);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::vector<std::uint8_t> Renderer::read_pixels() const {
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width_) * height_ * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, impl_->resolve_fbo);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  flip_rows(rgba, width_, height_, 4);
+  return rgba;
+}
+
+void Renderer::blit_to(unsigned framebuffer, int w, int h) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, impl_->resolve_fbo);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
+                    (w == width_ && h == height_) ? GL_NEAREST : GL_LINEAR);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+unsigned Renderer::resolved_texture() const { return impl_->resolve_color; }
+
+}  // namespace sweetspot

@@ -1,0 +1,30 @@
+// What the Renderer draws: plain data built each frame by the shot scene builder (or the
+// game). The renderer reads it; it owns no physics state (DESIGN §7).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "game/render/gpu_mesh.hpp"
+#include "game/render/mesh_data.hpp"
+
+namespace sweetspot {
+
+struct MeshInstance {
+  const GpuMesh* mesh = nullptr;                      ///< not owned
+  Eigen::Matrix4f model = Eigen::Matrix4f::Identity();  ///< mesh frame -> world, m
+  bool terrain = false;  ///< drawn with a depth offset so ground markers sit on it
+};
+
+struct Scene {
+  Eigen::Vector3f sky_zenith{0.20f, 0.42f, 0.78f};
+  Eigen::Vector3f sky_horizon{0.74f, 0.84f, 0.93f};
+  Eigen::Vector3f sun_direction = Eigen::Vector3f(-0.35f, 0.85f, 0.40f).normalized();  ///< toward the sun
+  float haze_range = 2500.0f;  ///< m
+  std::vector<MeshInstance> meshes;  ///< lit
+  MeshData ground_overlay;  ///< unlit, depth-tested: rings and stripes lying on the ground
+  MeshData top_overlay;     ///< unlit, drawn over everything: trail, pins, labels
+};
+
+}  // namespace sweetspot

@@ -1,0 +1,339 @@
+#include "game/render/shot_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "game/render/gpu_mesh.hpp"
+#include "game/render/mesh_import.hpp"
+#include "game/render/overlay_geometry.hpp"
+#include "game/render/render_paths.hpp"
+#include "game/render/trail_geometry.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+constexpr double kYard = 0.9144;  // m
+constexpr double kFoot = 0.3048;  // m
+
+const Eigen::Vector3f kWhite{1.0f, 1.0f, 1.0f};
+const Eigen::Vector3f kLandingColor{0.10f, 0.90f, 1.00f};
+const Eigen::Vector3f kRestColor{1.00f, 1.00f, 1.00f};
+const Eigen::Vector3f kFenceLabelColor{1.00f, 0.92f, 0.30f};
+const Eigen::Vector3f kShadowColor{0.05f, 0.07f, 0.05f};
+
+bool is_wall(const std::string& m) { return m == "wall" || m == "foul_pole"; }
+bool is_not_ground(const std::string& m) { return is_wall(m) || m == "flag" || m == "pole"; }
+
+Vec3 vpos(const MeshData& m, std::uint32_t i) { return m.vertices[i].position.cast<double>(); }
+
+// Uniform xz grid over the ground triangles, for marker heights.
+struct GroundGrid {
+  double x0 = 0, z0 = 0, cell = 1;
+  int nx = 0, nz = 0;
+  std::vector<std::vector<std::uint32_t>> cells;
+
+  void build(const MeshData& m) {
+    double xmin = 1e300, xmax = -1e300, zmin = 1e300, zmax = -1e300;
+    for (const auto& v : m.vertices) {
+      xmin = std::min(xmin, double(v.position.x()));
+      xmax = std::max(xmax, double(v.position.x()));
+      zmin = std::min(zmin, double(v.position.z()));
+      zmax = std::max(zmax, double(v.position.z()));
+    }
+    if (m.vertices.empty()) return;
+    cell = std::max(2.0, std::sqrt((xmax - xmin) * (zmax - zmin) / 40000.0));
+    x0 = xmin;
+    z0 = zmin;
+    nx = static_cast<int>((xmax - xmin) / cell) + 1;
+    nz = static_cast<int>((zmax - zmin) / cell) + 1;
+    cells.assign(static_cast<std::size_t>(nx) * nz, {});
+    for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+      if (is_not_ground(m.material_of(t))) continue;
+      double a = 1e300, b = -1e300, c = 1e300, d = -1e300;
+      for (int k = 0; k < 3; ++k) {
+        const auto& p = m.vertices[m.indices[3 * t + k]].position;
+        a = std::min(a, double(p.x()));
+        b = std::max(b, double(p.x()));
+        c = std::min(c, double(p.z()));
+        d = std::max(d, double(p.z()));
+      }
+      for (int i = index_x(a); i <= index_x(b); ++i) {
+        for (int j = index_z(c); j <= index_z(d); ++j) cells[static_cast<std::size_t>(i) * nz + j].push_back(static_cast<std::uint32_t>(t));
+      }
+    }
+  }
+  int index_x(double x) const { return std::clamp(static_cast<int>((x - x0) / cell), 0, nx - 1); }
+  int index_z(double z) const { return std::clamp(static_cast<int>((z - z0) / cell), 0, nz - 1); }
+
+  std::optional<double> height(const MeshData& m, double x, double z) const {
+    if (nx == 0 || x < x0 || z < z0 || x > x0 + nx * cell || z > z0 + nz * cell) return std::nullopt;
+    std::optional<double> best;
+    for (std::uint32_t t : cells[static_cast<std::size_t>(index_x(x)) * nz + index_z(z)]) {
+      const Vec3 a = vpos(m, m.indices[3 * t]), b = vpos(m, m.indices[3 * t + 1]), c = vpos(m, m.indices[3 * t + 2]);
+      const double det = (b.z() - c.z()) * (a.x() - c.x()) + (c.x() - b.x()) * (a.z() - c.z());
+      if (std::abs(det) < 1e-12) continue;
+      const double l1 = ((b.z() - c.z()) * (x - c.x()) + (c.x() - b.x()) * (z - c.z())) / det;
+      const double l2 = ((c.z() - a.z()) * (x - c.x()) + (a.x() - c.x()) * (z - c.z())) / det;
+      const double l3 = 1.0 - l1 - l2;
+      if (l1 < -1e-9 || l2 < -1e-9 || l3 < -1e-9) continue;
+      const double y = l1 * a.y() + l2 * b.y() + l3 * c.y();
+      if (!best || y > *best) best = y;
+    }
+    return best;
+  }
+};
+
+// Möller–Trumbore; distance along the unit direction, or nothing.
+std::optional<double> ray_triangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e1 = b - a, e2 = c - a, p = d.cross(e2);
+  const double det = e1.dot(p);
+  if (std::abs(det) < 1e-12) return std::nullopt;
+  const Vec3 s = o - a;
+  const double u = s.dot(p) / det;
+  if (u < 0 || u > 1) return std::nullopt;
+  const Vec3 q = s.cross(e1);
+  const double v = d.dot(q) / det;
+  if (v < 0 || u + v > 1) return std::nullopt;
+  const double t = e2.dot(q) / det;
+  return t > 0 ? std::optional<double>(t) : std::nullopt;
+}
+
+Eigen::Matrix4f translate_scale(const Vec3& p, double s) {
+  Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
+  m.block<3, 3>(0, 0) *= static_cast<float>(s);
+  m.block<3, 1>(0, 3) = p.cast<float>();
+  return m;
+}
+
+std::string format_distance(double metres, bool yards) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f %s", yards ? metres / kYard : metres / kFoot, yards ? "yd" : "ft");
+  return buf;
+}
+
+MeshData grass_plane(double y, double half) {
+  MeshData m;
+  const auto p = palette_color("out_of_bounds");
+  for (const Vec3& q : {Vec3(-half, y, -half), Vec3(half, y, -half), Vec3(half, y, half), Vec3(-half, y, half)}) {
+    Vertex v;
+    v.position = q.cast<float>();
+    v.normal = Eigen::Vector3f::UnitY();
+    v.color = p->color;
+    m.vertices.push_back(v);
+  }
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+}  // namespace
+
+struct ShotScene::Impl {
+  ShotSceneInput input;
+  SceneStyle style;
+  bool golf = true;
+  MeshData world_data;
+  GroundGrid grid;
+  std::unique_ptr<GpuMesh> world, surroundings, ball, tee, flag, impactor;
+  std::optional<Vec3> flag_position;
+  std::vector<std::pair<double, Vec3>> fence_marks;  // (distance m, label anchor)
+  double world_x_max = 0;
+  double plane_y = 0;  // the surrounding grass plane, m
+};
+
+ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.input = input;
+  m.style = style;
+  if (input.sport != "golf" && input.sport != "baseball") {
+    throw InputError("sport '" + input.sport + "' is not one of: golf, baseball");
+  }
+  if (!(input.ball_radius > 0.005 && input.ball_radius < 0.1)) {
+    throw InputError("ball radius " + std::to_string(input.ball_radius) + " m is outside 0.005..0.1 m");
+  }
+  m.golf = input.sport == "golf";
+
+  double ground_min_y = 0.0;
+  if (!input.world.empty()) {
+    m.world_data = import_mesh(world_mesh_path(input.world));
+    m.grid.build(m.world_data);
+    m.world = std::make_unique<GpuMesh>(m.world_data);
+    bool has_flag = false;
+    Vec3 green_sum = Vec3::Zero();
+    double green_n = 0;
+    ground_min_y = 1e300;
+    m.world_x_max = -1e300;
+    for (std::size_t t = 0; t < m.world_data.triangle_count(); ++t) {
+      const std::string& name = m.world_data.material_of(t);
+      has_flag = has_flag || name == "flag";
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 p = vpos(m.world_data, m.world_data.indices[3 * t + k]);
+        ground_min_y = std::min(ground_min_y, p.y());
+        m.world_x_max = std::max(m.world_x_max, p.x());
+        if (name == "green") {
+          green_sum += p;
+          green_n += 1;
+        }
+      }
+    }
+    if (input.flag) {
+      m.flag_position = input.flag;
+    } else if (m.golf && !has_flag && green_n > 0) {
+      const Vec3 c = green_sum / green_n;
+      m.flag_position = Vec3(c.x(), ground_height(c.x(), c.z()).value_or(c.y()), c.z());
+    }
+    if (!m.golf) {
+      // Fence distances where the foul lines, the gaps and centre field meet the wall.
+      for (double deg : {-45.0, -22.5, 0.0, 22.5, 45.0}) {
+        const Vec3 dir(std::cos(deg_to_rad(deg)), 0.0, std::sin(deg_to_rad(deg)));
+        const Vec3 origin(0.0, ground_height(0.0, 0.0).value_or(0.0) + 0.5, 0.0);
+        std::optional<double> hit;
+        for (std::size_t t = 0; t < m.world_data.triangle_count(); ++t) {
+          if (!is_wall(m.world_data.material_of(t))) continue;
+          const auto& w = m.world_data;
+          auto d = ray_triangle(origin, dir, vpos(w, w.indices[3 * t]), vpos(w, w.indices[3 * t + 1]),
+                                vpos(w, w.indices[3 * t + 2]));
+          if (d && (!hit || *d < *hit)) hit = d;
+        }
+        if (hit) m.fence_marks.emplace_back(*hit, origin + *hit * dir);
+      }
+    }
+  } else {
+    m.world_x_max = 0;
+  }
+  // Beyond the world mesh: a grass plane just below its lowest point, out to the horizon.
+  m.plane_y = m.world ? ground_min_y - 0.3 : 0.0;
+  m.surroundings = std::make_unique<GpuMesh>(grass_plane(m.plane_y, 4000.0));
+  m.ball = std::make_unique<GpuMesh>(import_mesh(mesh_path("golf_ball")));
+  if (m.golf) m.tee = std::make_unique<GpuMesh>(import_mesh(mesh_path("tee")));
+  if (m.flag_position) m.flag = std::make_unique<GpuMesh>(import_mesh(mesh_path("flag")));
+  if (!input.impactor_mesh.empty()) m.impactor = std::make_unique<GpuMesh>(import_mesh(mesh_path(input.impactor_mesh)));
+  impactor_ = input.impactor;
+}
+
+ShotScene::~ShotScene() = default;
+
+void ShotScene::set_shot(const ShotTrajectory& trajectory, const std::optional<ImpactorPlacement>& impactor) {
+  trajectory_ = trajectory;
+  impactor_ = impactor;
+}
+
+std::optional<double> ShotScene::ground_height(double x, double z) const {
+  return impl_->grid.height(impl_->world_data, x, z);
+}
+
+Camera ShotScene::camera(CameraKind kind, double t, int width, int height) const {
+  ShotFraming f = shot_framing(trajectory_, t);
+  if (impactor_) f.points.push_back(impactor_->position);
+  return frame_shot(kind, f, width, height);
+}
+
+Scene ShotScene::build(const Camera& camera, double t, int width, int height) const {
+  const Impl& m = *impl_;
+  Scene scene;
+  auto ground_at = [&](double x, double z) { return ground_height(x, z).value_or(m.plane_y); };
+  // Decoration sizes are styled for 720 lines and scale with the image (not below half).
+  const double style_scale = std::max(0.5, height / 720.0);
+  auto px = [&](const Vec3& p, double pixels) { return style_scale * pixels * camera.metres_per_pixel(p, height); };
+
+  if (m.world) scene.meshes.push_back({m.world.get(), Eigen::Matrix4f::Identity(), true});
+  scene.meshes.push_back({m.surroundings.get(), Eigen::Matrix4f::Identity(), true});
+
+  const auto& samples = trajectory_.samples;
+  const bool have_shot = !samples.empty();
+  const TrajectorySample at = sample_at(trajectory_, t);
+  const Vec3 launch = have_shot ? samples.front().position : Vec3(0, m.input.ball_radius, 0);
+
+  if (m.tee) {
+    scene.meshes.push_back({m.tee.get(), translate_scale(launch - Vec3(0, m.input.ball_radius, 0), 1.0), false});
+  }
+  if (m.flag) scene.meshes.push_back({m.flag.get(), translate_scale(*m.flag_position, 1.0), false});
+  if (m.impactor && impactor_) {
+    Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
+    model.block<3, 3>(0, 0) = impactor_->orientation.normalized().toRotationMatrix().cast<float>();
+    model.block<3, 1>(0, 3) = impactor_->position.cast<float>();
+    scene.meshes.push_back({m.impactor.get(), model, false});
+  }
+  // The ball: true size close up, never smaller than ball_min_radius_px on screen.
+  const Vec3 ball = have_shot ? at.position : launch;
+  const double radius = std::max(m.input.ball_radius, px(ball, m.style.ball_min_radius_px));
+  scene.meshes.push_back({m.ball.get(), translate_scale(ball, radius / 0.021335), false});
+
+  // Trail up to t.
+  if (have_shot) append_trail(scene.top_overlay, trajectory_, t, camera, {m.style.trail_width_px, height});
+
+  // Distance markers: stripes across the golf hole every 50 yd; fence distances in a park.
+  const Vec3 cam_right = camera.right(), cam_up = camera.true_up();
+  // Labels never overlap on screen: each claims its rectangle, and a label that would
+  // cover an earlier one is left out (shot labels go first, so they win).
+  std::vector<Eigen::Vector4d> taken;  // x0, y0, x1, y1 in pixels
+  auto label = [&](const std::string& text, const Vec3& anchor, const Eigen::Vector3f& color) {
+    const double h = px(anchor, m.style.label_height_px);
+    Vec3 origin = anchor - 0.5 * text_width(text, h) * cam_right;
+    auto at_px = camera.project(origin, width, height);
+    if (!at_px) return;
+    const double h_px = style_scale * m.style.label_height_px;
+    const double w_px = text_width(text, h_px), pad = 3.0;
+    // Slide a label that would stick out of the image back in horizontally.
+    const double shift = std::max(0.0, pad - at_px->x()) - std::max(0.0, at_px->x() + w_px + pad - width);
+    origin += shift * px(anchor, 1.0) / style_scale * cam_right;
+    at_px->x() += shift;
+    const Eigen::Vector4d r(at_px->x() - pad, at_px->y() - h_px - pad, at_px->x() + w_px + pad, at_px->y() + pad);
+    for (const auto& o : taken) {
+      if (r[0] < o[2] && o[0] < r[2] && r[1] < o[3] && o[1] < r[3]) return;
+    }
+    taken.push_back(r);
+    // A dark drop shadow keeps light labels readable over sand, sky and light greens.
+    const Vec3 shadow = origin + (cam_right - cam_up) * px(anchor, 1.5);
+    append_text(scene.top_overlay, text, shadow, cam_right, cam_up, h, kShadowColor);
+    append_text(scene.top_overlay, text, origin, cam_right, cam_up, h, color);
+  };
+  // Landing ring with the carry, rest pin with the total (golf yards, baseball feet).
+  if (have_shot) {
+    const auto& s = trajectory_.summary;
+    const double end_t = samples.back().t;
+    if (s.hang_time_s > 0 && t >= s.hang_time_s - 1e-9) {
+      const Vec3 lp = s.landing_position;
+      const Vec3 g(lp.x(), ground_at(lp.x(), lp.z()) + 0.05, lp.z());
+      const double r = px(g, m.style.marker_radius_px);
+      append_ring(scene.ground_overlay, g, 0.65 * r, r, kLandingColor);
+      label(format_distance(s.carry_m, m.golf), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), kLandingColor);
+    }
+    if (t >= end_t - 1e-9 && (s.rest_position - s.landing_position).norm() > 0.5) {
+      const Vec3 rp = s.rest_position;
+      const Vec3 g(rp.x(), ground_at(rp.x(), rp.z()), rp.z());
+      const double h = px(g, 30.0);
+      append_pin(scene.top_overlay, g, h, px(g, 2.5), cam_right, kRestColor);
+      label(format_distance(s.total_m, m.golf), g + Vec3(0, h, 0) + cam_up * px(g, 6.0), kRestColor);
+    }
+  }
+
+  if (m.golf) {
+    const Bounds b = shot_bounds(trajectory_);
+    const double reach = std::max({b.max.x() + 20.0, m.world_x_max, 60.0});
+    const double half = 22.0;
+    for (int k = 1; k * 50 * kYard <= reach && k <= 20; ++k) {
+      const double x = k * 50 * kYard;
+      if (m.world && !ground_height(x, 0.0)) continue;  // off the world
+      constexpr int n = 22;
+      for (int i = 0; i < n; ++i) {
+        const double z0 = -half + 2 * half * i / n, z1 = -half + 2 * half * (i + 1) / n;
+        const Vec3 a(x, ground_at(x, z0) + 0.03, z0), c(x, ground_at(x, z1) + 0.03, z1);
+        append_band(scene.ground_overlay, a, c, std::max(0.25, px(a, 2.0)), Vec3::UnitY(), kWhite);
+      }
+      const Vec3 anchor(x, ground_at(x, -half - 3.0) + 1.0, -half - 3.0);
+      label(std::to_string(k * 50), anchor, kWhite);
+    }
+  } else {
+    for (const auto& [dist, at_wall] : m.fence_marks) {
+      label(format_distance(dist, false), at_wall + Vec3(0, 4.0, 0), kFenceLabelColor);
+    }
+  }
+
+  return scene;
+}
+
+}  // namespace sweetspot

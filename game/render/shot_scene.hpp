@@ -1,0 +1,76 @@
+// Builds the Scene of one shot (DESIGN §7): sky, lit terrain from the world OBJ, the ball
+// at time t, the trail coloured by phase, landing and rest markers, distance markers (every
+// 50 yd for golf, the fence distances for baseball), the tee and flag, and the club or bat
+// at impact. Owns the GPU meshes it loads, so it needs a current GL context.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "game/render/camera.hpp"
+#include "game/render/scene.hpp"
+#include "physics/math.hpp"
+#include "physics/trajectory.hpp"
+
+namespace sweetspot {
+
+/// Where the club head or bat is at impact: its mesh frame (HEAD FRAME / BAT FRAME) to
+/// world. Fill it from Delivery::impactor_at_impact (position, orientation).
+struct ImpactorPlacement {
+  Vec3 position = Vec3::Zero();          ///< m, mesh-frame origin in the world
+  Quat orientation = Quat::Identity();   ///< mesh frame -> world
+};
+
+struct ShotSceneInput {
+  std::string sport = "golf";  ///< "golf" or "baseball": tee, flag, which distance markers
+  /// World mesh: a name under assets/worlds ("golf_hole", "ballpark"), a path to an .obj,
+  /// or "" for a plain grass plane.
+  std::string world;
+  double ball_radius = 0.021335;  ///< m (golf 0.021335, baseball 0.0373)
+  std::optional<ImpactorPlacement> impactor;
+  /// "driver_head", "iron_head", "bat" (assets/meshes) or a path; "" = no impactor drawn.
+  std::string impactor_mesh;
+  /// Flag position on the green (m); nothing = the centre of the world's "green" triangles,
+  /// unless the world mesh draws its own flag.
+  std::optional<Vec3> flag;
+};
+
+/// Sizes of the screen-constant decorations, in pixels of the output image.
+struct SceneStyle {
+  double trail_width_px = 5.0;
+  double ball_min_radius_px = 4.0;  ///< the ball is drawn at least this big (true size is sub-pixel far away)
+  double label_height_px = 16.0;
+  double marker_radius_px = 11.0;
+};
+
+class ShotScene {
+ public:
+  /// Loads the world and equipment meshes. Throws InputError for an unknown world, mesh or
+  /// sport, RenderError for an unreadable mesh file.
+  explicit ShotScene(const ShotSceneInput& input, const SceneStyle& style = {});
+  ~ShotScene();
+  ShotScene(const ShotScene&) = delete;
+  ShotScene& operator=(const ShotScene&) = delete;
+
+  /// Replaces the shot (the game recomputes it whenever a parameter changes).
+  void set_shot(const ShotTrajectory& trajectory, const std::optional<ImpactorPlacement>& impactor);
+  const ShotTrajectory& trajectory() const { return trajectory_; }
+
+  /// The camera of `kind` at time t (s) for a width x height image.
+  Camera camera(CameraKind kind, double t, int width, int height) const;
+  /// Everything to draw at time t (s; clamped to the shot) seen by `camera`.
+  Scene build(const Camera& camera, double t, int width, int height) const;
+
+  /// Ground height (m) under (x, z) from the world mesh (walls excluded), if any triangle
+  /// covers it.
+  std::optional<double> ground_height(double x, double z) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  ShotTrajectory trajectory_;
+  std::optional<ImpactorPlacement> impactor_;
+};
+
+}  // namespace sweetspot

@@ -1,0 +1,54 @@
+#include "game/render/trail_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sweetspot {
+
+Eigen::Vector3f phase_color(Phase phase) {
+  switch (phase) {
+    case Phase::Flight: return {1.00f, 0.86f, 0.10f};
+    case Phase::Bounce: return {1.00f, 0.42f, 0.05f};
+    case Phase::Roll:
+    case Phase::Rest: return {0.95f, 0.22f, 0.88f};
+  }
+  return {1.0f, 1.0f, 1.0f};
+}
+
+void append_trail(MeshData& out, const ShotTrajectory& trajectory, double t, const Camera& camera,
+                  const TrailStyle& style) {
+  const auto& s = trajectory.samples;
+  if (s.size() < 2) return;
+  std::size_t last = 0;
+  const TrajectorySample end = sample_at(trajectory, t, &last);
+  // Points up to t: samples 0..last, then the interpolated point at t.
+  auto point = [&](std::size_t i) { return i <= last ? s[i].position : end.position; };
+  const std::size_t n = last + 2 <= s.size() ? last + 2 : s.size();
+  const Vec3 side_fallback = camera.right();
+  auto offset = [&](std::size_t i) {
+    const Vec3 p = point(i);
+    const Vec3 a = point(i > 0 ? i - 1 : 0);
+    const Vec3 b = point(i + 1 < n ? i + 1 : n - 1);
+    Vec3 side = (b - a).cross(p - camera.eye);
+    side = side.norm() > 1e-12 ? side.normalized() : side_fallback;
+    return Vec3(side * (0.5 * style.width_px * camera.metres_per_pixel(p, style.image_height)));
+  };
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const Vec3 p0 = point(i), p1 = point(i + 1);
+    if ((p1 - p0).squaredNorm() < 1e-14) continue;
+    const Phase ph = s[std::min(i + 1, s.size() - 1)].phase;
+    if (ph == Phase::Rest) continue;
+    const Eigen::Vector3f c = phase_color(ph);
+    const Vec3 o0 = offset(i), o1 = offset(i + 1);
+    const auto base = static_cast<std::uint32_t>(out.vertices.size());
+    for (const Vec3& q : {Vec3(p0 - o0), Vec3(p0 + o0), Vec3(p1 + o1), Vec3(p1 - o1)}) {
+      Vertex v;
+      v.position = q.cast<float>();
+      v.color = c;
+      out.vertices.push_back(v);
+    }
+    for (std::uint32_t k : {0u, 1u, 2u, 0u, 2u, 3u}) out.indices.push_back(base + k);
+  }
+}
+
+}  // namespace sweetspot

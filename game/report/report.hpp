@@ -1,0 +1,40 @@
+// Shot reports for people and programs: a launch-monitor table in display units, the
+// DESIGN §6 JSON, a GSPro OpenConnect v1 shot message and CSV rows (Statcast column
+// names for baseball). All read a ShotResult; none computes physics.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "game/report/shot_result.hpp"
+
+namespace sweetspot {
+
+enum class UnitSystem { Imperial, Metric };
+/// "imperial" / "metric"; anything else -> InputError naming `flag` and the choices.
+UnitSystem parse_unit_system(std::string_view text, std::string_view flag = "--units");
+
+/// Launch-monitor table: one "Label  value unit" line per number, golf or baseball.
+std::string launch_table(const ShotResult& r, UnitSystem units);
+
+/// DESIGN §6 object: scenario, sport, launch{...}, impact{...} (when the shot had an
+/// impact), flight{...}. SI throughout; key names are a contract.
+nlohmann::json shot_json(const ShotResult& r);
+
+/// GSPro Open Connect API v1 shot message (golf; baseball sends the same ball fields).
+/// Units as GSPro expects with "Units": "Yards": mph, degrees, rpm, yards; face impact
+/// offsets in millimetres; closure rate in deg/s.
+nlohmann::json gspro_json(const ShotResult& r, int shot_number = 1);
+
+/// CSV header and one row. Baseball uses Statcast names (launch_speed mph, launch_angle,
+/// spray_angle, hit_distance_sc ft, bat_speed, release_speed, release_spin_rate); golf
+/// columns carry their unit in the name and follow `units`.
+std::string csv_header(Sport sport, UnitSystem units);
+std::string csv_row(const ShotResult& r, UnitSystem units);
+
+/// Quotes a CSV field when it holds a comma, quote or newline (RFC 4180).
+std::string csv_field(std::string_view text);
+
+}  // namespace sweetspot

@@ -1,0 +1,67 @@
+// Aerodynamic models: drag and Magnus lift coefficients as functions of the spin parameter
+// S = R·ω⊥/|v_r|, and the spin decay rate. Models are named data with their source, so a
+// scenario or the UI picks one by name; one model covers every club (no per-club tuning).
+//
+// Forces (DESIGN §4), with v_r = v - wind: drag -½ρA·Cd·|v_r|·v_r, lift
+// ½ρA·Cl·|v_r|²·normalize(ω × v_r). Only the spin component perpendicular to v_r makes lift
+// (rifle spin does not), so S uses ω⊥; the Nathan drag term uses the total spin rate.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "physics/math.hpp"
+
+namespace sweetspot {
+
+enum class LiftLaw {
+  Quadratic,   ///< Cl = l0 + l1 S + l2 S²
+  Power,       ///< Cl = l1 S^l2
+  Saturating,  ///< Cl = l1 S / (l0 + l2 S)
+};
+
+struct AeroCoefficients {
+  double cd = 0.0;  ///< drag coefficient, golf ~0.2–0.3, baseball ~0.35
+  double cl = 0.0;  ///< lift coefficient, golf driver ~0.2
+};
+
+/// A named drag/lift/spin-decay model. Immutable data; evaluate with coefficients().
+struct AeroModel {
+  std::string name;    ///< "ferguson2022", "smits_smith1994", "nathan"
+  std::string sport;   ///< "golf" or "baseball"
+  std::string source;  ///< citation, shown by the UI
+  // Drag: Cd = d0 + d1 S + d2 S² + d_krpm · (total spin / 1000 rpm)
+  double d0 = 0.0, d1 = 0.0, d2 = 0.0, d_krpm = 0.0;
+  LiftLaw lift = LiftLaw::Quadratic;
+  double l0 = 0.0, l1 = 0.0, l2 = 0.0;
+  /// Upper end of the fitted S range; S is held there beyond it so a quadratic fit does
+  /// not turn over (slow, high-spin balls late in a wedge's descent reach S ~ 0.5+).
+  double s_max = 1e9;
+  /// Spin decay dω/dt = -ω (decay_per_metre·|v_r| + 1/decay_tau). Golf: ~4 %/s at a
+  /// driver's 74.7 m/s, proportional to speed -> 5.36e-4 1/m. Nathan: tau ≈ 30 s.
+  double decay_per_metre = 0.0;  ///< 1/m
+  double decay_tau = 0.0;        ///< s; 0 = no speed-independent term
+
+  /// Coefficients at spin parameter `s` (≥ 0) and total spin rate `spin` (rad/s).
+  AeroCoefficients coefficients(double s, double spin) const;
+  /// Spin decay rate (1/s) at air speed `speed` (m/s).
+  double spin_decay_rate(double speed) const;
+};
+
+/// The model with that name; throws InputError listing the allowed names.
+const AeroModel& aero_model(std::string_view name);
+std::vector<std::string> aero_model_names();
+/// "ferguson2022" for golf, "nathan" for baseball; throws InputError for another sport.
+const AeroModel& default_aero_model(std::string_view sport);
+
+/// Aerodynamic force (N) on a ball of `radius` (m) in air of `density` (kg/m³) moving at
+/// `v_rel` (m/s, relative to the air) with spin `omega` (rad/s), and dω/dt (rad/s²).
+struct AeroEffect {
+  Vec3 force = Vec3::Zero();
+  Vec3 spin_rate = Vec3::Zero();
+};
+AeroEffect aero_effect(const AeroModel& model, double density, double radius, const Vec3& v_rel,
+                       const Vec3& omega);
+
+}  // namespace sweetspot

@@ -1,0 +1,184 @@
+#include "physics/ground.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+namespace sweetspot {
+namespace {
+
+constexpr double kStimpReleaseSpeed = 1.83;             // m/s (6 ft/s), USGA Stimpmeter
+constexpr double kCraterReferenceSpeed = 18.6;          // m/s, Penner 2002
+constexpr double kCraterReferenceAngle = 0.77493;       // rad = 44.4°, Penner 2002
+
+struct KindName {
+  SurfaceKind kind;
+  const char* name;
+};
+constexpr std::array<KindName, 11> kKindNames{{
+    {SurfaceKind::Tee, "tee"},
+    {SurfaceKind::Fairway, "fairway"},
+    {SurfaceKind::Rough, "rough"},
+    {SurfaceKind::Sand, "sand"},
+    {SurfaceKind::Green, "green"},
+    {SurfaceKind::Water, "water"},
+    {SurfaceKind::Dirt, "dirt"},
+    {SurfaceKind::Grass, "grass"},
+    {SurfaceKind::WarningTrack, "warning_track"},
+    {SurfaceKind::Wall, "wall"},
+    {SurfaceKind::OutOfBounds, "out_of_bounds"},
+}};
+
+}  // namespace
+
+const char* to_string(SurfaceKind k) {
+  for (const auto& kn : kKindNames) {
+    if (kn.kind == k) return kn.name;
+  }
+  return "?";
+}
+
+bool surface_kind_from_string(const std::string& s, SurfaceKind* out) {
+  for (const auto& kn : kKindNames) {
+    if (s == kn.name) {
+      *out = kn.kind;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string surface_kind_names() {
+  std::string s;
+  for (const auto& kn : kKindNames) s += (s.empty() ? "" : ", ") + std::string(kn.name);
+  return s;
+}
+
+std::string validate_surface_material(const SurfaceMaterial& m) {
+  std::ostringstream s;
+  const std::string where = "material '" + m.name + "': ";
+  if (m.e.count < 1 || m.e.count > CorCurve::kMaxPoints) {
+    s << where << "e has " << m.e.count << " points (allowed 1.." << CorCurve::kMaxPoints << ")";
+    return s.str();
+  }
+  for (int i = 0; i < m.e.count; ++i) {
+    const auto k = static_cast<size_t>(i);
+    if (!(m.e.cor[k] >= 0.0 && m.e.cor[k] <= 1.0)) {
+      s << where << "e = " << m.e.cor[k] << " out of range (allowed 0..1)";
+      return s.str();
+    }
+    if (i > 0 && !(m.e.speed[k] > m.e.speed[k - 1])) {
+      s << where << "e curve speeds must increase strictly (" << m.e.speed[k - 1] << " then " << m.e.speed[k] << " m/s)";
+      return s.str();
+    }
+  }
+  if (!(m.mu >= 0.0 && m.mu <= 2.0)) {
+    s << where << "mu = " << m.mu << " out of range (allowed 0..2)";
+    return s.str();
+  }
+  if (!(m.rolling_resistance >= 0.0 && m.rolling_resistance <= 5.0)) {
+    s << where << "rolling_resistance = " << m.rolling_resistance << " out of range (allowed 0..5)";
+    return s.str();
+  }
+  if (!(m.stimp == 0.0 || (m.stimp >= 0.5 && m.stimp <= 6.0))) {
+    s << where << "stimp = " << m.stimp << " m out of range (allowed 0 = unset, or 0.5..6 m)";
+    return s.str();
+  }
+  if (!(m.crater_tilt >= 0.0 && m.crater_tilt <= 0.6)) {
+    s << where << "crater_tilt = " << m.crater_tilt << " rad out of range (allowed 0..0.6)";
+    return s.str();
+  }
+  return {};
+}
+
+double rolling_resistance_from_stimp(double stimp) {
+  return kStimpReleaseSpeed * kStimpReleaseSpeed / (2.0 * kGravity * stimp);
+}
+
+double effective_rolling_resistance(const SurfaceMaterial& m) {
+  return m.stimp > 0.0 ? rolling_resistance_from_stimp(m.stimp) : m.rolling_resistance;
+}
+
+SurfaceMaterial default_fairway() {
+  SurfaceMaterial m;
+  m.name = "fairway";
+  m.kind = SurfaceKind::Fairway;
+  // A little firmer than Penner's green (e = 0.510 - 0.0375 v + 0.000903 v², 0.12 past 20 m/s).
+  m.e.count = 6;
+  m.e.speed = {0.0, 5.0, 10.0, 15.0, 20.0, 30.0, 0.0, 0.0};
+  m.e.cor = {0.55, 0.42, 0.30, 0.22, 0.17, 0.15, 0.0, 0.0};
+  m.mu = 0.4;
+  m.rolling_resistance = 0.12;
+  m.crater_tilt = deg_to_rad(12.0);
+  return m;
+}
+
+BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal, const Vec3& velocity,
+                               const Vec3& spin, const BallProperties& ball) {
+  BounceResult out;
+  out.velocity = velocity;
+  out.spin = spin;
+  out.normal = face_normal;
+  const double vn = velocity.dot(face_normal);
+  if (vn >= 0.0) return out;  // not approaching: nothing to resolve
+
+  Vec3 n = face_normal;
+  const Vec3 vt = velocity - vn * face_normal;
+  const double vt_norm = vt.norm();
+  if (m.crater_tilt > 0.0 && vt_norm > 1e-9) {
+    // The ball digs a crater whose far wall faces back against the motion.
+    const double incidence = std::atan2(-vn, vt_norm);
+    const double tilt = std::min(m.crater_tilt * (velocity.norm() / kCraterReferenceSpeed) *
+                                     (incidence / kCraterReferenceAngle),
+                                 std::min(2.0 * m.crater_tilt, 0.6));
+    n = std::cos(tilt) * face_normal - std::sin(tilt) * (vt / vt_norm);
+  }
+  out.normal = n;
+
+  ImpactInput in;
+  in.impactor.inv_mass = 0.0;
+  in.impactor.inv_inertia = Mat3::Zero();
+  in.ball.inv_mass = 1.0 / ball.mass;
+  in.ball.inv_inertia = Mat3::Identity() * (1.0 / ball.inertia);
+  in.ball.r = -ball.radius * n;
+  in.ball.velocity = velocity;
+  in.ball.angular_velocity = spin;
+  in.normal = n;
+  in.material.e = m.e;
+  in.material.e_t = 0.0;
+  in.material.mu = m.mu;
+  in.material.friction = FrictionModel::Coulomb;
+  out.impact = solve_impact(in);
+  out.velocity = out.impact.ball_after.velocity;
+  out.spin = out.impact.ball_after.angular_velocity;
+  return out;
+}
+
+bool FlatGround::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit) const {
+  if (!(to.y() < from.y())) return false;  // moving up or along the plane
+  const double d0 = from.y() - radius;
+  const double d1 = to.y() - radius;
+  if (d1 > 0.0) return false;
+  hit->fraction = d0 <= 0.0 ? 0.0 : d0 / (d0 - d1);
+  const Vec3 c = from + hit->fraction * (to - from);
+  hit->point = Vec3(c.x(), 0.0, c.z());
+  hit->normal = Vec3::UnitY();
+  hit->material = 0;
+  return true;
+}
+
+bool FlatGround::support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const {
+  if (centre.y() - radius > reach) return false;
+  hit->fraction = 0.0;
+  hit->point = Vec3(centre.x(), 0.0, centre.z());
+  hit->normal = Vec3::UnitY();
+  hit->material = 0;
+  return true;
+}
+
+bool FlatGround::may_touch(const Vec3& from, const Vec3& to, double radius) const {
+  return std::min(from.y(), to.y()) - radius <= 0.0;
+}
+
+}  // namespace sweetspot

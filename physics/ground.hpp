@@ -1,0 +1,124 @@
+// How the ball meets the ground: surface materials (turf, sand, dirt, walls), the bounce
+// through the impact solver with the ground as an infinite mass, rolling resistance from a
+// Stimpmeter reading, and the Terrain interface the flight state machine queries.
+//
+// Bounce (DESIGN §5): the ground is body 1 with inv_mass 0; the normal is the triangle's
+// face normal, optionally tilted against the ball's motion by the turf crater it digs
+// (Penner 2002, "The run of a golf ball": θc = 15.4° · (v/18.6 m/s) · (θin/44.4°) on a
+// green), which is what lets a wedge check up or spin back. e falls with impact speed.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "physics/impact.hpp"
+#include "physics/math.hpp"
+
+namespace sweetspot {
+
+enum class SurfaceKind : std::uint8_t {
+  Tee, Fairway, Rough, Sand, Green, Water, Dirt, Grass, WarningTrack, Wall, OutOfBounds,
+};
+
+const char* to_string(SurfaceKind k);
+/// Parses "tee", "fairway", ..., "warning_track", "wall", "out_of_bounds"; false if unknown.
+bool surface_kind_from_string(const std::string& s, SurfaceKind* out);
+/// "tee, fairway, ..." for error messages.
+std::string surface_kind_names();
+
+/// A ground or wall material. Immutable parameters, SI.
+struct SurfaceMaterial {
+  std::string name = "fairway";
+  SurfaceKind kind = SurfaceKind::Fairway;
+  CorCurve e = CorCurve::constant(0.4);  ///< normal restitution vs normal impact speed (turf: ~0.5 slow, ~0.15 at 20 m/s)
+  double mu = 0.4;                       ///< ball–surface Coulomb friction (Penner: 0.4 on a green)
+  /// Rolling resistance: the rolling ball decelerates at rolling_resistance · g on the flat.
+  /// Green (stimp 10 ft) ~0.055, fairway ~0.12, rough ~0.3, sand ~1. Ignored when stimp > 0.
+  double rolling_resistance = 0.12;
+  double stimp = 0.0;                    ///< m; Stimpmeter reading (tour greens 3.0–4.0 m); > 0 sets rolling_resistance
+  /// Turf crater tilt of the bounce normal, rad, at the reference impact (18.6 m/s at 44.4°
+  /// incidence); Penner's green 0.269 (15.4°); 0 = rigid surface (walls, cart paths).
+  double crater_tilt = 0.0;
+};
+
+/// Empty when valid, otherwise a message naming the field and its allowed range.
+std::string validate_surface_material(const SurfaceMaterial& m);
+
+/// The Stimpmeter releases the ball at 1.83 m/s (6 ft/s); with a constant rolling
+/// deceleration c·g the ball rolls v0²/(2cg), so c = v0² / (2 g stimp).
+double rolling_resistance_from_stimp(double stimp);
+/// rolling_resistance, or the Stimpmeter's value when stimp > 0.
+double effective_rolling_resistance(const SurfaceMaterial& m);
+
+/// A mown fairway: the surface of the flat default ground (world == nullptr).
+SurfaceMaterial default_fairway();
+
+/// Ball mass properties for flight and ground contact. Defaults: a golf ball (DESIGN §3);
+/// a baseball is 0.145 kg, 0.0369 m, 7.90e-5 kg·m².
+struct BallProperties {
+  double mass = 0.04593;     ///< kg
+  double radius = 0.021335;  ///< m
+  double inertia = 8.36e-6;  ///< kg·m² (solid sphere 0.4 m R²)
+};
+
+/// DESIGN §3 balls as solid spheres: golf 45.93 g, Ø 42.67 mm; baseball 145 g, R 36.9 mm.
+inline BallProperties golf_ball_properties() { return {0.04593, 0.021335, 0.4 * 0.04593 * 0.021335 * 0.021335}; }
+inline BallProperties baseball_properties() { return {0.145, 0.0369, 0.4 * 0.145 * 0.0369 * 0.0369}; }
+
+struct BounceResult {
+  Vec3 velocity = Vec3::Zero();   ///< m/s after the bounce
+  Vec3 spin = Vec3::Zero();       ///< rad/s after the bounce
+  Vec3 normal = Vec3::UnitY();    ///< normal the impulse used (tilted by the crater)
+  ImpactResult impact;
+};
+
+/// One bounce of a ball moving at `velocity` with `spin` onto a surface with unit face
+/// normal `face_normal` (pointing out of the ground). Uses solve_impact() with the ground
+/// as an infinite mass, e = m.e at the normal approach speed, e_t = 0, Coulomb friction.
+BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal, const Vec3& velocity,
+                               const Vec3& spin, const BallProperties& ball);
+
+/// A surface point the ball touches or rests on.
+struct SurfaceContact {
+  double fraction = 1.0;          ///< along the swept segment, 0..1
+  Vec3 point = Vec3::Zero();      ///< m, on the surface
+  Vec3 normal = Vec3::UnitY();    ///< unit face normal, out of the surface
+  int material = 0;               ///< index into the terrain's materials
+};
+
+/// What the flight state machine asks of the ground. The flat default ground and the
+/// Bullet World implement it. Queries are const but an implementation may keep scratch
+/// state: one Terrain per thread.
+class Terrain {
+ public:
+  virtual ~Terrain() = default;
+  /// First surface a sphere of `radius` touches moving in a straight line from `from` to
+  /// `to`, ignoring surfaces it is moving away from or along. False when none.
+  virtual bool sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit) const = 0;
+  /// The surface under a ball resting or rolling at `centre` (within `reach` m below the
+  /// ball's bottom). False when there is none (off the edge of the world).
+  virtual bool support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const = 0;
+  /// Broad phase: false only when a sphere of `radius` on the segment certainly touches nothing.
+  virtual bool may_touch(const Vec3& from, const Vec3& to, double radius) const = 0;
+  virtual const SurfaceMaterial& material(int index) const = 0;
+  /// False once the ball has left the playable volume.
+  virtual bool inside(const Vec3& centre) const = 0;
+  /// Height (m) of the ground reference for wind profiles and carry (flat ground: 0).
+  virtual double reference_height() const { return 0.0; }
+};
+
+/// An infinite flat plane y = 0 of one material: the ground when no world is loaded.
+class FlatGround final : public Terrain {
+ public:
+  explicit FlatGround(SurfaceMaterial m = default_fairway()) : material_(std::move(m)) {}
+  bool sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit) const override;
+  bool support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const override;
+  bool may_touch(const Vec3& from, const Vec3& to, double radius) const override;
+  const SurfaceMaterial& material(int) const override { return material_; }
+  bool inside(const Vec3&) const override { return true; }
+
+ private:
+  SurfaceMaterial material_;
+};
+
+}  // namespace sweetspot

@@ -1,0 +1,25 @@
+#version 330 core
+// Lit meshes (terrain, ball, club, bat, flag): world-space position and normal to the
+// fragment shader; colour and stripe pattern come per vertex from the material palette.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_color;
+layout(location = 3) in float a_pattern;
+
+uniform mat4 u_model;
+uniform mat3 u_normal_matrix;
+uniform mat4 u_view_proj;
+
+out vec3 v_world;
+out vec3 v_normal;
+out vec3 v_color;
+out float v_pattern;
+
+void main() {
+  vec4 world = u_model * vec4(a_position, 1.0);
+  v_world = world.xyz;
+  v_normal = u_normal_matrix * a_normal;
+  v_color = a_color;
+  v_pattern = a_pattern;
+  gl_Position = u_view_proj * world;
+}

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# `sweetspot flight`: JSON keys of DESIGN §6, determinism, the TrackMan driver row, and bad
+# input -> exit 2 with the flag named.
+set -euo pipefail
+bin="$1"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+out=$("$bin" flight --sport golf --ball-speed 167mph --launch-angle 10.9deg --spin 2686rpm --json)
+python3 - "$out" <<'PY' || fail "json keys / values"
+import json, sys
+j = json.loads(sys.argv[1])
+for k in ("scenario", "sport", "launch", "flight"):
+    assert k in j, k
+for k in ("ball_speed_mps", "vertical_angle_deg", "horizontal_angle_deg", "spin_rpm", "backspin_rpm",
+          "sidespin_rpm", "spin_axis_deg", "smash_factor"):
+    assert k in j["launch"], k
+f = j["flight"]
+for k in ("carry_m", "total_m", "apex_m", "landing_angle_deg", "hang_time_s", "lateral_m", "end", "rest_position_m"):
+    assert k in f, k
+assert j["sport"] == "golf"
+assert abs(j["launch"]["ball_speed_mps"] - 74.65) < 0.01
+# TrackMan PGA driver: 275 yd carry (251.5 m) within 4 %
+assert abs(f["carry_m"] - 251.46) / 251.46 < 0.04, f["carry_m"]
+assert f["total_m"] >= f["carry_m"]
+assert f["end"] == "rest"
+assert len(f["rest_position_m"]) == 3
+PY
+
+again=$("$bin" flight --sport golf --ball-speed 167mph --launch-angle 10.9deg --spin 2686rpm --json)
+[ "$out" = "$again" ] || fail "repeated runs differ"
+
+# Baseball, thinner air goes farther; wind from --set.
+sea=$("$bin" flight --sport baseball --ball-speed 103mph --launch-angle 28deg --spin 2000rpm --json)
+den=$("$bin" flight --sport baseball --ball-speed 103mph --launch-angle 28deg --spin 2000rpm --set environment.altitude=1609m --json)
+head=$("$bin" flight --sport baseball --ball-speed 103mph --launch-angle 28deg --spin 2000rpm \
+  --set environment.wind_speed=10mph --set environment.wind_direction=180deg --json)
+python3 - "$sea" "$den" "$head" <<'PY' || fail "baseball altitude / wind"
+import json, sys
+sea, den, head = (json.loads(a)["flight"]["carry_m"] for a in sys.argv[1:4])
+assert 415 <= sea / 0.3048 <= 425, sea / 0.3048
+assert 1.05 <= den / sea <= 1.08, den / sea
+assert head < sea - 5, (head, sea)
+PY
+
+# The readable table uses display units.
+table=$("$bin" flight --sport golf --ball-speed 120mph --launch-angle 16.3deg --spin 7097rpm)
+echo "$table" | grep -q "carry" || fail "table has no carry"
+echo "$table" | grep -q " yd" || fail "table not in yards"
+
+# Bad input: exit 2, message names the flag and the allowed range.
+expect_bad() {
+  local want="$1"; shift
+  set +e
+  err=$("$bin" flight "$@" 2>&1 >/dev/null)
+  code=$?
+  set -e
+  [ "$code" -eq 2 ] || fail "exit $code (want 2) for: $*"
+  echo "$err" | grep -q -- "$want" || fail "message '$err' does not mention '$want' for: $*"
+}
+expect_bad "--ball-speed" --sport golf --ball-speed 500mph --launch-angle 10deg --spin 2500rpm
+expect_bad "1..150" --sport golf --ball-speed 500mph --launch-angle 10deg --spin 2500rpm
+expect_bad "--launch-angle" --sport golf --ball-speed 150mph --launch-angle 10 --spin 2500rpm
+expect_bad "--spin" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500furlongs
+expect_bad "humidity" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --set environment.humidity=150%
+expect_bad "allowed" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --set environment.colour=blue
+expect_bad "ferguson2022" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --aero magic
+expect_bad "sport" --sport cricket --ball-speed 150mph --launch-angle 10deg --spin 2500rpm
+echo "ok"

@@ -1,0 +1,268 @@
+// Off-screen rendering end to end on whatever EGL offers (llvmpipe on CI: no display, no
+// GPU). The scene is the synthetic drive on tests/render/test_range.obj, so these images do
+// not change when the flight model or the asset worlds change.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "game/render/camera.hpp"
+#include "game/render/image.hpp"
+#include "game/render/offscreen_context.hpp"
+#include "game/render/render_command.hpp"
+#include "game/render/render_error.hpp"
+#include "game/render/render_paths.hpp"
+#include "game/render/renderer.hpp"
+#include "game/render/synthetic_shot.hpp"
+#include "game/render/trail_geometry.hpp"
+#include "physics/error.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+const std::filesystem::path kSource = SWEETSPOT_SOURCE_DIR;
+const std::filesystem::path kRange = kSource / "tests/render/test_range.obj";
+
+RenderRequest range_request(int w, int h, CameraKind camera) {
+  RenderRequest r;
+  r.sport = "golf";
+  r.world = kRange.string();
+  r.width = w;
+  r.height = h;
+  r.camera = camera;
+  return r;
+}
+
+struct Rgb {
+  int r, g, b;
+};
+Rgb pixel(const std::vector<std::uint8_t>& img, int w, int x, int y) {
+  const std::size_t i = (static_cast<std::size_t>(y) * w + x) * 4;
+  return {img[i], img[i + 1], img[i + 2]};
+}
+int colour_distance(Rgb a, const Eigen::Vector3f& c) {
+  return std::max({std::abs(a.r - int(std::lround(c.x() * 255))), std::abs(a.g - int(std::lround(c.y() * 255))),
+                   std::abs(a.b - int(std::lround(c.z() * 255)))});
+}
+
+}  // namespace
+
+TEST_CASE("off-screen render has the requested size, a sky above and grass below", "[render]") {
+  const int w = 320, h = 180;
+  const auto img = render_shot_rgba(synthetic_shot(), range_request(w, h, CameraKind::Behind));
+  REQUIRE(img.size() == std::size_t(w) * h * 4);
+  std::set<std::uint32_t> colours;
+  for (std::size_t i = 0; i < img.size(); i += 4) colours.insert(img[i] << 16 | img[i + 1] << 8 | img[i + 2]);
+  CHECK(colours.size() > 200);  // shaded terrain, sky gradient, trail, labels — not a blank clear
+  for (int x : {5, w / 2, w - 5}) {
+    const Rgb sky = pixel(img, w, x, 2);
+    CHECK(sky.b > sky.r + 40);  // blue at the top
+    const Rgb ground = pixel(img, w, x, h - 3);
+    CHECK(ground.g > ground.r + 30);  // green grass at the bottom
+    CHECK(ground.g > ground.b + 30);
+  }
+  for (std::size_t i = 3; i < img.size(); i += 4) REQUIRE(img[i] == 255);  // opaque
+}
+
+TEST_CASE("a projected trajectory point lands on the trail's phase colour", "[render]") {
+  const int w = 640, h = 360;
+  const ShotTrajectory shot = synthetic_shot();
+  const auto img = render_shot_rgba(shot, range_request(w, h, CameraKind::Side));
+  const double end = shot.samples.back().t;
+  const Camera cam = frame_shot(CameraKind::Side, shot, end, w, h);
+  // Flight at a quarter, half and three quarters of the arc; the first bounce's top.
+  std::vector<std::pair<std::size_t, Phase>> probes = {{65, Phase::Flight}, {130, Phase::Flight}, {195, Phase::Flight}};
+  for (std::size_t i = 0; i < shot.samples.size(); ++i) {
+    if (shot.samples[i].phase == Phase::Bounce) {
+      probes.emplace_back(i + 15, Phase::Bounce);  // middle of the first bounce arc
+      break;
+    }
+  }
+  for (const auto& [index, phase] : probes) {
+    REQUIRE(shot.samples[index].phase == phase);
+    const auto p = cam.project(shot.samples[index].position, w, h);
+    REQUIRE(p);
+    const int x = static_cast<int>(p->x()), y = static_cast<int>(p->y());
+    REQUIRE(x >= 0);
+    REQUIRE(x < w);
+    REQUIRE(y >= 0);
+    REQUIRE(y < h);
+    INFO("sample " << index << " at pixel " << x << "," << y);
+    CHECK(colour_distance(pixel(img, w, x, y), phase_color(phase)) <= 12);
+    // 25 px straight above the flight points is sky, not trail.
+    if (phase == Phase::Flight) CHECK(colour_distance(pixel(img, w, x, y - 25), phase_color(phase)) > 60);
+  }
+}
+
+TEST_CASE("--at shows the trail only up to that time", "[render]") {
+  const int w = 640, h = 360;
+  const ShotTrajectory shot = synthetic_shot();
+  RenderRequest r = range_request(w, h, CameraKind::Side);
+  r.at_seconds = 2.0;  // about a third of the flight
+  const auto img = render_shot_rgba(shot, r);
+  const Camera cam = frame_shot(CameraKind::Side, shot, 2.0, w, h);
+  const auto early = cam.project(shot.samples[40].position, w, h);   // t = 1.0 s
+  const auto late = cam.project(shot.samples[200].position, w, h);   // t = 5.0 s
+  REQUIRE(early);
+  REQUIRE(late);
+  CHECK(colour_distance(pixel(img, w, int(early->x()), int(early->y())), phase_color(Phase::Flight)) <= 12);
+  CHECK(colour_distance(pixel(img, w, int(late->x()), int(late->y())), phase_color(Phase::Flight)) > 60);
+  r.at_seconds = shot.samples.back().t + 1.0;
+  CHECK_THROWS_AS(render_shot_rgba(shot, r), InputError);
+}
+
+// Golden image. Rasterisers differ slightly between Mesa versions and GPUs: an edge may move
+// by a pixel, MSAA coverage and shading may round differently by a few counts. The metric
+// absorbs exactly that and nothing more:
+//  - a pixel "differs" when any channel is off by more than 32 (of 255); at most 2 % of the
+//    pixels may differ (an edge moving by one pixel touches well under 1 % of this image);
+//  - the mean colour of every 16x16 block must agree within 10 per channel, so a change in a
+//    region (a missing trail or marker, wrong terrain colour, a moved camera) fails even if
+//    it touches few pixels overall.
+// SWEETSPOT_UPDATE_GOLDEN=1 rewrites the golden image instead (look at it before committing).
+TEST_CASE("the side view matches the golden image within the rasteriser tolerance", "[render]") {
+  const int w = 480, h = 272;
+  RenderRequest r = range_request(w, h, CameraKind::Side);
+  r.impactor_mesh = "driver_head";
+  r.impactor = ImpactorPlacement{Vec3(-0.0214, 0.0214, 0.0), Quat::Identity()};
+  const auto img = render_shot_rgba(synthetic_shot(), r);
+  const auto golden_path = kSource / "tests/render/golden_side.png";
+  const char* update = std::getenv("SWEETSPOT_UPDATE_GOLDEN");
+  if (update != nullptr && std::string(update) == "1") {
+    write_png_atomic(golden_path, w, h, img);
+    WARN("rewrote " << golden_path.string());
+    return;
+  }
+  int gw = 0, gh = 0;
+  const auto golden = read_png_rgba(golden_path, &gw, &gh);
+  REQUIRE(gw == w);
+  REQUIRE(gh == h);
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < img.size(); i += 4) {
+    int d = 0;
+    for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(img[i + c]) - int(golden[i + c])));
+    if (d > 32) ++differing;
+  }
+  const double fraction = double(differing) / (w * h);
+  INFO("differing pixels: " << differing << " (" << 100 * fraction << " %)");
+  double worst_block = 0;
+  for (int by = 0; by + 16 <= h; by += 16) {
+    for (int bx = 0; bx + 16 <= w; bx += 16) {
+      for (int c = 0; c < 3; ++c) {
+        double a = 0, b = 0;
+        for (int y = by; y < by + 16; ++y) {
+          for (int x = bx; x < bx + 16; ++x) {
+            const std::size_t i = (std::size_t(y) * w + x) * 4 + c;
+            a += img[i];
+            b += golden[i];
+          }
+        }
+        worst_block = std::max(worst_block, std::abs(a - b) / 256.0);
+      }
+    }
+  }
+  INFO("worst 16x16 block mean difference: " << worst_block);
+  if (fraction > 0.02 || worst_block > 10.0) {
+    const auto actual = std::filesystem::temp_directory_path() / "sweetspot_golden_side_actual.png";
+    write_png_atomic(actual, w, h, img);
+    WARN("actual image written to " << actual.string());
+  }
+  CHECK(fraction <= 0.02);
+  CHECK(worst_block <= 10.0);
+}
+
+TEST_CASE("every camera frames the shot: the launch and rest points are in the image", "[render]") {
+  const int w = 320, h = 180;
+  const ShotTrajectory shot = synthetic_shot();
+  for (CameraKind k : {CameraKind::Behind, CameraKind::Side, CameraKind::Top, CameraKind::Follow}) {
+    INFO(to_string(k));
+    const auto img = render_shot_rgba(shot, range_request(w, h, k));
+    REQUIRE(img.size() == std::size_t(w) * h * 4);
+    if (k == CameraKind::Follow) continue;  // follows the ball, not the whole shot
+    const Camera cam = frame_shot(k, shot, shot.samples.back().t, w, h);
+    for (const Vec3& p : {shot.samples.front().position, shot.summary.rest_position}) {
+      const auto q = cam.project(p, w, h);
+      REQUIRE(q);
+      CHECK(q->x() > 0);
+      CHECK(q->x() < w);
+      CHECK(q->y() > 0);
+      CHECK(q->y() < h);
+    }
+  }
+}
+
+TEST_CASE("a missing or broken shader names the file and the compiler log", "[render]") {
+  OffscreenContext context;
+  const auto dir = std::filesystem::temp_directory_path() / "sweetspot_render_shader_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  RendererOptions options;
+  options.shader_dir = dir;
+  try {
+    Renderer r(64, 64, options);
+    FAIL("no error for a missing shader");
+  } catch (const RenderError& e) {
+    CHECK_THAT(e.what(), Catch::Contains((dir / "lit.vert").string()));
+  }
+  for (const char* f : {"lit.vert", "lit.frag", "flat.vert", "flat.frag", "sky.vert", "sky.frag"}) {
+    std::filesystem::copy_file(shader_dir() / f, dir / f);
+  }
+  {
+    std::ofstream broken(dir / "flat.frag", std::ios::trunc);
+    broken << "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(undeclared_thing, 1.0); }\n";
+  }
+  try {
+    Renderer r(64, 64, options);
+    FAIL("no error for a broken shader");
+  } catch (const RenderError& e) {
+    CHECK_THAT(e.what(), Catch::Contains((dir / "flat.frag").string()));
+    CHECK_THAT(e.what(), Catch::Contains("undeclared_thing"));  // the compiler's log
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("bad render requests are input errors naming the value", "[render]") {
+  const ShotTrajectory shot = synthetic_shot();
+  RenderRequest r = range_request(8, 8, CameraKind::Side);
+  CHECK_THROWS_WITH(render_shot_rgba(shot, r), Catch::Contains("8x8"));
+  r = range_request(64, 64, CameraKind::Side);
+  r.world = "no_such_world";
+  CHECK_THROWS_AS(render_shot_rgba(shot, r), InputError);
+  r = range_request(64, 64, CameraKind::Side);
+  r.sport = "cricket";
+  CHECK_THROWS_WITH(render_shot_rgba(shot, r), Catch::Contains("cricket"));
+  r = range_request(64, 64, CameraKind::Side);
+  r.impactor_mesh = "putter_head";
+  CHECK_THROWS_WITH(render_shot_rgba(shot, r), Catch::Contains("putter_head"));
+}
+
+TEST_CASE("an invalid EGL platform override is an input error, not a crash", "[render]") {
+  ::setenv("SWEETSPOT_EGL_PLATFORM", "vulkan", 1);
+  CHECK_THROWS_WITH(OffscreenContext(), Catch::Contains("SWEETSPOT_EGL_PLATFORM") && Catch::Contains("surfaceless"));
+  ::unsetenv("SWEETSPOT_EGL_PLATFORM");
+  // Forcing the device platform either finds a hardware GPU or says why not.
+  try {
+    OffscreenContext c(EglPlatform::Device);
+    CHECK(c.platform() == EglPlatform::Device);
+  } catch (const RenderUnavailable& e) {
+    CHECK_THAT(e.what(), Catch::Contains("device"));
+  }
+}
+
+// Run by the ctest `render_no_egl` with __EGL_VENDOR_LIBRARY_FILENAMES pointing nowhere, so
+// GLVND's libEGL has no vendor at all: the machine "has no EGL".
+TEST_CASE("without an EGL vendor the context fails with a clear RenderUnavailable", "[.][no_egl]") {
+  try {
+    OffscreenContext c;
+    FAIL("an EGL context was created although no EGL vendor is installed: " << c.description());
+  } catch (const RenderUnavailable& e) {
+    CHECK_THAT(e.what(), Catch::Contains("cannot create an off-screen OpenGL context"));
+  }
+  CHECK_THROWS_AS(render_shot_rgba(synthetic_shot(), range_request(64, 64, CameraKind::Side)), RenderUnavailable);
+}

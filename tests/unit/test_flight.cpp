@@ -1,0 +1,178 @@
+// Flight against published data (TrackMan PGA averages, Nathan's baseball numbers), closed
+// forms (vacuum range), convergence, wind, and determinism. Ground: the flat default.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+
+#include "physics/error.hpp"
+#include "physics/flight.hpp"
+#include "physics/units.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+FlightInput golf_launch(double mph, double launch_deg, double rpm, const char* model = "ferguson2022") {
+  FlightInput in;
+  in.aero = &aero_model(model);
+  in.launch = launch_from_metrics(mph_to_mps(mph), deg_to_rad(launch_deg), 0.0, rpm_to_radps(rpm), 0.0,
+                                  Vec3(0.0, in.ball.radius, 0.0));
+  return in;
+}
+
+FlightInput baseball_launch(double altitude) {
+  FlightInput in;
+  in.aero = &aero_model("nathan");
+  in.ball = BallProperties{0.145, 0.0369, 0.4 * 0.145 * 0.0369 * 0.0369};
+  in.environment.temperature = fahrenheit_to_kelvin(70.0);
+  in.environment.altitude = altitude;
+  in.launch = launch_from_metrics(mph_to_mps(103.0), deg_to_rad(28.0), 0.0, rpm_to_radps(2000.0), 0.0,
+                                  Vec3(0.0, 0.9, 0.0));
+  return in;
+}
+
+struct TrackManRow {
+  const char* club;
+  double ball_mph, launch_deg, spin_rpm, apex_yd, land_deg, carry_yd;
+};
+
+}  // namespace
+
+TEST_CASE("ferguson2022 reproduces the TrackMan PGA Tour averages", "[flight][reference]") {
+  // DESIGN §4: carry within 4 %, max height within 15 %, landing angle within 5°.
+  const TrackManRow rows[] = {
+      {"Driver", 167.0, 10.9, 2686.0, 32.0, 38.0, 275.0},
+      {"7-iron", 120.0, 16.3, 7097.0, 32.0, 50.0, 172.0},
+      {"PW", 102.0, 24.2, 9304.0, 29.0, 52.0, 136.0},
+  };
+  for (const auto& row : rows) {
+    INFO(row.club);
+    const ShotTrajectory tr = simulate_shot(golf_launch(row.ball_mph, row.launch_deg, row.spin_rpm), nullptr);
+    const FlightSummary& s = tr.summary;
+    CHECK(m_to_yd(s.carry_m) == Approx(row.carry_yd).epsilon(0.04));
+    CHECK(m_to_yd(s.apex_m) == Approx(row.apex_yd).epsilon(0.15));
+    CHECK(std::abs(s.landing_angle_deg - row.land_deg) <= 5.0);
+    CHECK(s.end == EndReason::Rest);
+  }
+}
+
+TEST_CASE("a baseball at 103 mph, 28 deg, 2000 rpm carries 415-425 ft, 5-8 % more in Denver",
+          "[flight][reference][baseball]") {
+  const double sea = m_to_ft(simulate_shot(baseball_launch(0.0), nullptr).summary.carry_m);
+  const double denver = m_to_ft(simulate_shot(baseball_launch(1609.0), nullptr).summary.carry_m);
+  CHECK(sea >= 415.0);
+  CHECK(sea <= 425.0);
+  CHECK(denver / sea >= 1.05);
+  CHECK(denver / sea <= 1.08);
+}
+
+TEST_CASE("in vacuum the carry is the closed-form range to the micrometre", "[flight][closed-form]") {
+  AeroModel vacuum;  // all coefficients zero
+  vacuum.name = "vacuum";
+  FlightInput in;
+  in.aero = &vacuum;
+  const double v = 40.0, a = deg_to_rad(35.0);
+  in.launch = launch_from_metrics(v, a, 0.0, 0.0, 0.0, Vec3(0.0, in.ball.radius, 0.0));
+  const FlightSummary s = simulate_shot(in, nullptr).summary;
+  CHECK(std::abs(s.carry_m - v * v * std::sin(2 * a) / kGravity) < 1e-6);
+  CHECK(std::abs(s.apex_m - std::pow(v * std::sin(a), 2) / (2 * kGravity)) < 1e-6);
+  CHECK(std::abs(s.hang_time_s - 2 * v * std::sin(a) / kGravity) < 1e-9);
+  CHECK(s.landing_angle_deg == Approx(35.0).epsilon(1e-9));
+}
+
+TEST_CASE("carry converges to a tight-tolerance reference", "[flight][convergence]") {
+  FlightInput in = golf_launch(167.0, 10.9, 2686.0);
+  in.settings.record_samples = false;
+  FlightInput ref = in;
+  ref.settings.rel_tol = 1e-13;
+  ref.settings.abs_tol = 1e-14;
+  const double reference = simulate_shot(ref, nullptr).summary.carry_m;
+  in.settings.rel_tol = 1e-6;
+  in.settings.abs_tol = 1e-7;
+  CHECK(std::abs(simulate_shot(in, nullptr).summary.carry_m - reference) < 0.01);
+  in.settings = FlightSettings{};
+  in.settings.record_samples = false;
+  // The default tolerance is what the bench reports; it is far inside the 1 cm contract.
+  CHECK(std::abs(simulate_shot(in, nullptr).summary.carry_m - reference) < 1e-5);
+}
+
+TEST_CASE("wind: headwind shortens, tailwind lengthens, crosswind drifts", "[flight][wind]") {
+  FlightInput in = golf_launch(167.0, 10.9, 2686.0);
+  const double calm = simulate_shot(in, nullptr).summary.carry_m;
+  in.environment.wind_speed = 5.0;
+  in.environment.wind_direction = kPi;  // blowing toward the golfer
+  const double head = simulate_shot(in, nullptr).summary.carry_m;
+  in.environment.wind_direction = 0.0;
+  const double tail = simulate_shot(in, nullptr).summary.carry_m;
+  in.environment.wind_direction = kPi / 2.0;
+  const FlightSummary cross = simulate_shot(in, nullptr).summary;
+  CHECK(head < calm - 5.0);
+  CHECK(tail > calm + 5.0);
+  CHECK(cross.lateral_m > 2.0);
+}
+
+TEST_CASE("thinner air: hot day and altitude carry farther", "[flight][atmosphere]") {
+  FlightInput in = golf_launch(167.0, 10.9, 2686.0);
+  const double base = simulate_shot(in, nullptr).summary.carry_m;
+  in.environment.temperature = celsius_to_kelvin(35.0);
+  CHECK(simulate_shot(in, nullptr).summary.carry_m > base);
+  in.environment.temperature = celsius_to_kelvin(21.0);
+  in.environment.altitude = 1609.0;
+  CHECK(simulate_shot(in, nullptr).summary.carry_m > base + 5.0);
+}
+
+TEST_CASE("spin axis curves the ball the TrackMan way", "[flight][conventions]") {
+  FlightInput in = golf_launch(167.0, 10.9, 2686.0);
+  in.launch = launch_from_metrics(mph_to_mps(167.0), deg_to_rad(10.9), 0.0, rpm_to_radps(2686.0),
+                                  deg_to_rad(10.0), Vec3(0.0, in.ball.radius, 0.0));
+  CHECK(simulate_shot(in, nullptr).summary.lateral_m > 5.0);  // + axis curves right
+}
+
+TEST_CASE("the shot ends at rest with a consistent trajectory", "[flight][rest]") {
+  const ShotTrajectory tr = simulate_shot(golf_launch(102.0, 24.2, 9304.0), nullptr);
+  const FlightSummary& s = tr.summary;
+  REQUIRE(s.end == EndReason::Rest);
+  REQUIRE(tr.samples.size() > 100);
+  CHECK(tr.samples.front().t == 0.0);
+  CHECK(tr.samples.back().phase == Phase::Rest);
+  CHECK(tr.samples.back().velocity.norm() == 0.0);
+  CHECK(s.bounces >= 1);
+  CHECK(s.total_time_s > s.hang_time_s);
+  CHECK(std::abs(s.rest_position.y() - tr.samples.front().position.y()) < 1e-9);  // on the ground
+  for (size_t i = 1; i < tr.samples.size(); ++i) {
+    INFO(i);
+    REQUIRE(tr.samples[i].t >= tr.samples[i - 1].t);
+    REQUIRE(tr.samples[i].position.y() >= 0.0);
+  }
+  // A wedge with 9300 rpm stops near where it lands; the driver runs out.
+  CHECK(s.total_m - s.carry_m < 10.0);
+  const FlightSummary d = simulate_shot(golf_launch(167.0, 10.9, 2686.0), nullptr).summary;
+  CHECK(d.total_m - d.carry_m > 10.0);
+}
+
+TEST_CASE("repeated runs are bit-identical", "[flight][determinism]") {
+  const FlightInput in = golf_launch(167.0, 10.9, 2686.0);
+  const ShotTrajectory a = simulate_shot(in, nullptr);
+  const ShotTrajectory b = simulate_shot(in, nullptr);
+  REQUIRE(a.samples.size() == b.samples.size());
+  CHECK(std::memcmp(&a.summary.carry_m, &b.summary.carry_m, sizeof(double)) == 0);
+  CHECK(std::memcmp(&a.summary.total_m, &b.summary.total_m, sizeof(double)) == 0);
+  for (size_t i = 0; i < a.samples.size(); ++i) {
+    REQUIRE(a.samples[i].t == b.samples[i].t);
+    REQUIRE(a.samples[i].position == b.samples[i].position);
+    REQUIRE(a.samples[i].spin == b.samples[i].spin);
+  }
+}
+
+TEST_CASE("bad flight input throws naming the field", "[flight][input]") {
+  FlightInput in = golf_launch(167.0, 10.9, 2686.0);
+  in.aero = nullptr;
+  CHECK_THROWS_AS(simulate_shot(in, nullptr), InputError);
+  in = golf_launch(167.0, 10.9, 2686.0);
+  in.launch.velocity.x() = std::nan("");
+  CHECK_THROWS_WITH(simulate_shot(in, nullptr), Catch::Contains("finite"));
+  in = golf_launch(167.0, 10.9, 2686.0);
+  in.environment.humidity = -0.1;
+  CHECK_THROWS_WITH(simulate_shot(in, nullptr), Catch::Contains("humidity"));
+}

@@ -1,0 +1,189 @@
+// Rendering logic that needs no GL: camera framing, trail colouring, row flipping, labels.
+#include <filesystem>
+#include <set>
+
+#include <catch2/catch.hpp>
+
+#include "game/render/camera.hpp"
+#include "game/render/image.hpp"
+#include "game/render/mesh_import.hpp"
+#include "game/render/overlay_geometry.hpp"
+#include "game/render/synthetic_shot.hpp"
+#include "game/render/trail_geometry.hpp"
+#include "physics/error.hpp"
+
+using namespace sweetspot;
+
+TEST_CASE("camera names parse and bad ones list the allowed names", "[render][unit]") {
+  CHECK(parse_camera_kind("behind") == CameraKind::Behind);
+  CHECK(parse_camera_kind("side") == CameraKind::Side);
+  CHECK(parse_camera_kind("top") == CameraKind::Top);
+  CHECK(parse_camera_kind("follow") == CameraKind::Follow);
+  CHECK_THROWS_WITH(parse_camera_kind("drone"), Catch::Contains("behind, side, top, follow"));
+  for (auto k : {CameraKind::Behind, CameraKind::Side, CameraKind::Top, CameraKind::Follow}) {
+    CHECK(parse_camera_kind(to_string(k)) == k);
+  }
+}
+
+TEST_CASE("projection: the target is the image centre, points behind the camera are not projected", "[render][unit]") {
+  Camera c;
+  c.eye = Vec3(-10, 2, 0);
+  c.target = Vec3(40, 2, 0);
+  const auto centre = c.project(c.target, 800, 600);
+  REQUIRE(centre);
+  CHECK(centre->x() == Approx(400).margin(1e-9));
+  CHECK(centre->y() == Approx(300).margin(1e-9));
+  CHECK_FALSE(c.project(Vec3(-20, 2, 0), 800, 600));
+  // +z (right of the target line) is to the right in the image, +y up is up.
+  CHECK(c.project(Vec3(40, 2, 5), 800, 600)->x() > 400);
+  CHECK(c.project(Vec3(40, 7, 0), 800, 600)->y() < 300);
+  // One pixel at distance d subtends 2 d tan(fov/2) / height.
+  CHECK(c.metres_per_pixel(Vec3(90, 2, 0), 600) == Approx(2 * 100 * std::tan(c.fov_y / 2) / 600));
+}
+
+TEST_CASE("default cameras frame the whole shot inside the image", "[render][unit]") {
+  const ShotTrajectory shot = synthetic_shot();
+  const int w = 1280, h = 720;
+  for (auto k : {CameraKind::Behind, CameraKind::Side, CameraKind::Top}) {
+    INFO(to_string(k));
+    const Camera c = frame_shot(k, shot, shot.samples.back().t, w, h);
+    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+    for (const auto& s : shot.samples) {
+      const auto p = c.project(s.position, w, h);
+      REQUIRE(p);
+      xmin = std::min(xmin, p->x());
+      xmax = std::max(xmax, p->x());
+      ymin = std::min(ymin, p->y());
+      ymax = std::max(ymax, p->y());
+    }
+    // Inside with a margin, and not lost in a corner: the shot spans a good part of the image.
+    CHECK(xmin > 0.03 * w);
+    CHECK(xmax < 0.97 * w);
+    CHECK(ymin > 0.03 * h);
+    CHECK(ymax < 0.97 * h);
+    CHECK(std::max((xmax - xmin) / w, (ymax - ymin) / h) > 0.5);
+  }
+  // Side: downrange runs left to right. Top: downrange runs up the image, right is right.
+  const Camera side = frame_shot(CameraKind::Side, shot, 0.0, w, h);
+  CHECK(side.project(Vec3(200, 0, 0), w, h)->x() > side.project(Vec3(0, 0, 0), w, h)->x() + 300);
+  const Camera top = frame_shot(CameraKind::Top, shot, 0.0, w, h);
+  CHECK(top.project(Vec3(200, 0, 0), w, h)->y() < top.project(Vec3(0, 0, 0), w, h)->y() - 300);
+  CHECK(top.project(Vec3(100, 0, 20), w, h)->x() > top.project(Vec3(100, 0, -20), w, h)->x());
+  // Behind: the launch point is low in the image, the apex above it.
+  const Camera behind = frame_shot(CameraKind::Behind, shot, 0.0, w, h);
+  CHECK(behind.project(shot.samples.front().position, w, h)->y() > 0.6 * h);
+  // Follow: the ball at time t is near the image centre.
+  const double t = 3.0;
+  const Camera follow = frame_shot(CameraKind::Follow, shot, t, w, h);
+  const auto ball = follow.project(sample_at(shot, t).position, w, h);
+  REQUIRE(ball);
+  CHECK(std::abs(ball->x() - w / 2.0) < 0.1 * w);
+  CHECK(std::abs(ball->y() - h / 2.0) < 0.25 * h);
+}
+
+TEST_CASE("sample_at interpolates between samples and clamps to the shot", "[render][unit]") {
+  ShotTrajectory s;
+  s.samples.resize(2);
+  s.samples[0].t = 0;
+  s.samples[0].position = Vec3(0, 0, 0);
+  s.samples[1].t = 2;
+  s.samples[1].position = Vec3(10, 4, -2);
+  std::size_t index = 99;
+  CHECK((sample_at(s, 0.5, &index).position - Vec3(2.5, 1, -0.5)).norm() < 1e-12);
+  CHECK(index == 0);
+  CHECK((sample_at(s, 5.0, &index).position - Vec3(10, 4, -2)).norm() < 1e-12);
+  CHECK(index == 1);
+  CHECK(sample_at(s, -1.0).position.norm() < 1e-12);
+}
+
+TEST_CASE("the trail has one quad per segment coloured by the phase that made it", "[render][unit]") {
+  ShotTrajectory s;
+  const Phase phases[] = {Phase::Flight, Phase::Flight, Phase::Flight, Phase::Bounce, Phase::Bounce, Phase::Roll,
+                          Phase::Rest};
+  for (int i = 0; i < 7; ++i) {
+    TrajectorySample x;
+    x.t = i;
+    x.position = Vec3(10.0 * i, i < 3 ? 5.0 * i * (3 - i) : 0.0, 0);
+    x.phase = phases[i];
+    s.samples.push_back(x);
+  }
+  Camera c;
+  c.eye = Vec3(30, 5, 80);
+  c.target = Vec3(30, 5, 0);
+  MeshData out;
+  append_trail(out, s, 100.0, c, {5.0, 720});
+  // Segments 0-1, 1-2: flight; 2-3, 3-4: bounce; 4-5: roll; 5-6 ends at rest: no quad.
+  REQUIRE(out.vertices.size() == 5 * 4);
+  REQUIRE(out.indices.size() == 5 * 6);
+  const Phase expect[] = {Phase::Flight, Phase::Flight, Phase::Bounce, Phase::Bounce, Phase::Roll};
+  for (int q = 0; q < 5; ++q) {
+    for (int k = 0; k < 4; ++k) CHECK(out.vertices[std::size_t(4 * q + k)].color == phase_color(expect[q]));
+  }
+  // The ribbon is about 5 px wide on screen wherever it is (exact on the image axis; off axis
+  // the widening is perpendicular to the line of sight, not to the image plane).
+  const auto a = c.project(out.vertices[0].position.cast<double>(), 1280, 720);
+  const auto b = c.project(out.vertices[1].position.cast<double>(), 1280, 720);
+  CHECK((*a - *b).norm() == Approx(5.0).epsilon(0.05));
+  // The three phase colours are distinct from each other.
+  CHECK((phase_color(Phase::Flight) - phase_color(Phase::Bounce)).norm() > 0.3);
+  CHECK((phase_color(Phase::Bounce) - phase_color(Phase::Roll)).norm() > 0.3);
+  // Up to t = 1.5 s: the first segment and half of the second.
+  MeshData part;
+  append_trail(part, s, 1.5, c, {5.0, 720});
+  REQUIRE(part.vertices.size() == 2 * 4);
+  CHECK(part.vertices[6].position.x() == Approx(15.0).margin(0.2));
+}
+
+TEST_CASE("flip_rows reverses the row order and keeps each row intact", "[render][unit]") {
+  std::vector<std::uint8_t> px = {1, 2, 3, 4, 5, 6, 7, 8, 9};  // 3 x 3, one channel
+  flip_rows(px, 3, 3, 1);
+  CHECK(px == std::vector<std::uint8_t>{7, 8, 9, 4, 5, 6, 1, 2, 3});
+  std::vector<std::uint8_t> two = {1, 1, 2, 2, 3, 3, 4, 4};  // 1 x 4, two channels
+  flip_rows(two, 1, 4, 2);
+  CHECK(two == std::vector<std::uint8_t>{4, 4, 3, 3, 2, 2, 1, 1});
+}
+
+TEST_CASE("PNGs are written atomically and read back identical", "[render][unit]") {
+  const auto dir = std::filesystem::temp_directory_path() / "sweetspot_png_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::vector<std::uint8_t> rgba(5 * 3 * 4);
+  for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>(i * 7);
+  write_png_atomic(dir / "a.png", 5, 3, rgba);
+  int w = 0, h = 0;
+  CHECK(read_png_rgba(dir / "a.png", &w, &h) == rgba);
+  CHECK(w == 5);
+  CHECK(h == 3);
+  // Only the final file remains: no temporary left behind.
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
+  CHECK_THROWS_WITH(write_png_atomic(dir / "missing" / "b.png", 5, 3, rgba), Catch::Contains("missing"));
+  CHECK_THROWS_AS(write_png_atomic(dir / "c.png", 4, 3, rgba), InputError);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("every world surface material has a distinct palette colour", "[render][unit]") {
+  const char* names[] = {"tee", "fairway", "rough", "sand", "green", "water", "dirt", "grass", "warning_track",
+                         "wall", "flag"};
+  std::set<std::tuple<float, float, float>> seen;
+  for (const char* n : names) {
+    INFO(n);
+    const auto p = palette_color(n);
+    REQUIRE(p);
+    seen.insert({p->color.x(), p->color.y(), p->color.z()});
+  }
+  CHECK(seen.size() == std::size(names));
+  CHECK_FALSE(palette_color("no_such_material"));
+  // Fairway and green carry mowing stripes, rough does not.
+  CHECK(palette_color("fairway")->pattern == 1.0f);
+  CHECK(palette_color("rough")->pattern == 0.0f);
+}
+
+TEST_CASE("label text: every marker character has a glyph, width grows per character", "[render][unit]") {
+  for (char c : std::string("0123456789 ydft.")) CHECK(font_has_glyph(c));
+  CHECK_FALSE(font_has_glyph('Q'));
+  MeshData m;
+  const double wd = append_text(m, "100", Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), 7.0, Eigen::Vector3f::Ones());
+  CHECK(wd == Approx(17.0));  // 3 glyphs of 5 cells + 2 gaps, cell = 1 m
+  // "1" has 10 lit cells, "0" has 19: 48 quads.
+  CHECK(m.vertices.size() == 48 * 4);
+}

@@ -5,6 +5,8 @@
 
 #include "physics/trajectory.hpp"
 
+// The ball at replay time t: sample_at() in game/render/camera.hpp.
+
 namespace sweetspot {
 
 struct ReplayState {
@@ -23,12 +25,6 @@ struct ReplayState {
   /// holding it here is a bound, not a silent correction of user input.
   void scrub(double t, double duration);
 };
-
-/// The ball's state at time `t` on the sampled path: positions, velocities and spin are
-/// interpolated linearly between the bracketing samples, the phase is that of the later
-/// sample (so a segment ending in a bounce draws as bounce). Before the first sample the
-/// first is returned, after the last the last. An empty trajectory gives a default sample.
-TrajectorySample sample_at(const ShotTrajectory& shot, double t);
 
 /// Time of the last sample (0 for an empty trajectory).
 double duration(const ShotTrajectory& shot);

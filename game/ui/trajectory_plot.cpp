@@ -5,7 +5,7 @@
 
 #include <imgui.h>
 
-#include "game/ui/replay.hpp"
+#include "game/render/camera.hpp"
 
 namespace sweetspot {
 

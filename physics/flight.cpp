@@ -21,9 +21,11 @@ using Segment = DenseSegment<9>;
 /// and ~15 m/s² the chord is within 1 mm of the arc; the landing time itself comes from
 /// root finding on the dense output, not from the chord.
 constexpr double kChordDuration = 0.02;
-/// A surface within this angle of the one the ball rolls on is followed; a steeper one
+/// A surface within kFollowAngle of the one the ball rolls on is followed; a steeper one
 /// (wall, bank) is struck.
-const double kFollowCos = std::cos(deg_to_rad(20.0));
+const double kFollowCos = std::cos(kFollowAngle);
+/// Leaving a wall slower than this, the ball drops dead at its foot: caught in the fence.
+constexpr double kDeadAtWallSpeed = 1.0;  // m/s
 /// Ball bottom more than this above the support plane: the ground fell away, fly.
 constexpr double kLeaveGap = 0.01;  // m
 
@@ -88,7 +90,8 @@ class ShotRunner {
   ShotRunner(const FlightInput& in, const Terrain& terrain, FlightStats* stats)
       : in_(in),
         set_(in.settings),
-        terrain_(terrain),
+        terrain_(&terrain),
+        field_level_(default_fairway(), terrain.reference_height()),
         stats_(stats ? stats : &local_stats_),
         dyn_{in.aero, &in.environment, air_density(in.environment), in.ball.radius,
              1.0 / in.ball.mass, terrain.reference_height()},
@@ -164,7 +167,7 @@ class ShotRunner {
     const Vec3 p1 = y1.segment<3>(0);
     // The arc strays from its chord by at most |Δv|·h/8 (exact for constant acceleration).
     const double sag = (y1.segment<3>(3) - s.r1.segment<3>(3)).norm() * s.h / 8.0 + 1e-3;
-    if (!terrain_.may_touch(p0, p1, radius() + sag)) return false;
+    if (!terrain_->may_touch(p0, p1, radius() + sag)) return false;
     const int chords = std::max(1, static_cast<int>(std::ceil(s.h / kChordDuration)));
     Vec3 pa = p0;
     for (int k = 0; k < chords; ++k) {
@@ -173,7 +176,7 @@ class ShotRunner {
       const Vec3 pb = k + 1 == chords ? p1 : position_at(s, tb);
       SurfaceContact c;
       ++stats_->sweeps;
-      if (terrain_.sweep(pa, pb, radius(), &c)) {
+      if (terrain_->sweep(pa, pb, radius(), &c, nullptr)) {
         const double t_chord = ta + c.fraction * (tb - ta);
         const auto gap = [&](double t) { return c.normal.dot(position_at(s, t) - c.point) - radius(); };
         const double ga = gap(ta), gb = gap(tb);
@@ -221,16 +224,22 @@ class ShotRunner {
         continue;
       }
       sample_segment(s, t1, air_phase_);
+      const Vec3 p0 = pos();
       t_ = t1;
       y_ = y1;
       max_y_ = std::max(max_y_, y_[1]);
-      if (!terrain_.inside(pos())) return finish(EndReason::OutOfBounds);
+      if (ghost_end_ == EndReason::Rest && terrain_->over_fence(p0, pos())) {
+        // Cleared the fence: fly on to field level for the batted-ball distance, then end.
+        ghost_end_ = EndReason::HomeRun;
+        terrain_ = &field_level_;
+      }
+      if (!terrain_->inside(pos())) return finish(EndReason::OutOfBounds);
     }
   }
 
   // ---- 4. bounce -------------------------------------------------------------------------
   Next impact(const SurfaceContact& c) {
-    const SurfaceMaterial& m = terrain_.material(c.material);
+    const SurfaceMaterial& m = terrain_->material(c.material);
     if (!landed_) {
       landed_ = true;
       FlightSummary& s = out_.summary;
@@ -241,6 +250,7 @@ class ShotRunner {
       s.landing_position = pos();
       s.landing_angle_deg = rad_to_deg(std::atan2(-vel().y(), std::hypot(vel().x(), vel().z())));
     }
+    if (ghost_end_ != EndReason::Rest) return finish(ghost_end_);
     if (m.kind == SurfaceKind::Water) return finish(EndReason::Water);
     if (m.kind == SurfaceKind::OutOfBounds) return finish(EndReason::OutOfBounds);
     const BounceResult b = bounce_on_surface(m, c.normal, vel(), spin(), in_.ball);
@@ -252,6 +262,7 @@ class ShotRunner {
     y_.segment<3>(6) = b.spin;
     air_phase_ = Phase::Bounce;
     sample(Phase::Bounce);
+    if (m.kind == SurfaceKind::Wall && v.norm() < kDeadAtWallSpeed) return finish(EndReason::Fence);
     const bool walkable = c.normal.dot(up_axis()) > kFollowCos * 0.5;  // < ~63° slope
     if (walkable && std::max(vn, 0.0) < set_.roll_speed) {
       support_ = c;
@@ -270,7 +281,7 @@ class ShotRunner {
     Vec3 w = spin();
     p -= (n.dot(p - c.point) - r) * n;
     v -= v.dot(n) * n;
-    const SurfaceMaterial* m = &terrain_.material(c.material);
+    const SurfaceMaterial* m = &terrain_->material(c.material);
     // Skid until the contact point grips: friction µ g cosθ acts against the slip, which
     // changes at (1 + m R²/I) µ g cosθ = 3.5 µ g cosθ for a solid sphere. The slope is
     // ignored for this short stretch.
@@ -300,8 +311,7 @@ class ShotRunner {
       const double resist = effective_rolling_resistance(*m) * kGravity * cos_t;
       const double speed = v.norm();
       const bool holds = slope_acc.norm() <= resist;  // static: the slope cannot start it
-      if (speed < set_.rest_speed && holds) {
-        y_.segment<3>(3) = Vec3::Zero();
+      if (speed == 0.0 && holds) {
         y_.segment<3>(6) = Vec3::Zero();
         return finish(EndReason::Rest);
       }
@@ -312,7 +322,7 @@ class ShotRunner {
       Vec3 p1 = p + 0.5 * (v + v1) * dt;
       double step_t = dt;
       bool stops = false;
-      if (holds && v1.dot(v) <= 0.0 && speed > 0.0) {
+      if (holds && speed > 0.0 && (v1.dot(v) <= 0.0 || speed < set_.rest_speed)) {
         // Comes to rest inside the step: advance exactly to the stop.
         const double along = -a.dot(dir);
         step_t = speed / along;
@@ -322,8 +332,7 @@ class ShotRunner {
       }
       // Walls and banks in the way.
       SurfaceContact hit;
-      ++stats_->sweeps;
-      if (terrain_.sweep(p, p1, r, &hit) && hit.normal.dot(n) < kFollowCos) {
+      if (terrain_->may_touch_steep(p, p1, r) && (++stats_->sweeps, terrain_->sweep(p, p1, r, &hit, &n))) {
         const double f = hit.fraction;
         t_ += f * step_t;
         y_.segment<3>(0) = p + f * (p1 - p);
@@ -334,8 +343,8 @@ class ShotRunner {
         return nx == Next::End ? nx : Next::Fly;
       }
       // Follow the ground under the new position.
-      SurfaceContact under;
-      if (!terrain_.support(p1, r, kLeaveGap + 0.1 * speed * step_t, &under)) {
+      SurfaceContact under = c;  // the current support is the cache hint
+      if (!terrain_->support(p1, r, kLeaveGap + 0.1 * speed * step_t, &under)) {
         t_ += step_t;
         y_.segment<3>(0) = p1;
         y_.segment<3>(3) = v1;
@@ -361,7 +370,7 @@ class ShotRunner {
         n = under.normal;
       }
       c = under;
-      m = &terrain_.material(c.material);
+      m = &terrain_->material(c.material);
       t_ += step_t;
       p = p1;
       v = v1;
@@ -370,7 +379,7 @@ class ShotRunner {
       y_.segment<3>(6) = n.cross(v) / r;
       sample(stops ? Phase::Rest : Phase::Roll);
       if (m->kind == SurfaceKind::Water) return finish(EndReason::Water);
-      if (m->kind == SurfaceKind::OutOfBounds || !terrain_.inside(p)) return finish(EndReason::OutOfBounds);
+      if (m->kind == SurfaceKind::OutOfBounds || !terrain_->inside(p)) return finish(EndReason::OutOfBounds);
       if (stops) {
         y_.segment<3>(6) = Vec3::Zero();
         return finish(EndReason::Rest);
@@ -380,7 +389,9 @@ class ShotRunner {
 
   const FlightInput& in_;
   const FlightSettings& set_;
-  const Terrain& terrain_;
+  const Terrain* terrain_;        // the world, or field_level_ once a ball has cleared the fence
+  FlatGround field_level_;        // y = the world's reference height, for the home-run distance
+  EndReason ghost_end_ = EndReason::Rest;  // HomeRun once over the fence
   FlightStats local_stats_;
   FlightStats* stats_;
   Dynamics dyn_;

@@ -16,7 +16,7 @@ struct KindName {
   SurfaceKind kind;
   const char* name;
 };
-constexpr std::array<KindName, 11> kKindNames{{
+constexpr std::array<KindName, 12> kKindNames{{
     {SurfaceKind::Tee, "tee"},
     {SurfaceKind::Fairway, "fairway"},
     {SurfaceKind::Rough, "rough"},
@@ -28,6 +28,7 @@ constexpr std::array<KindName, 11> kKindNames{{
     {SurfaceKind::WarningTrack, "warning_track"},
     {SurfaceKind::Wall, "wall"},
     {SurfaceKind::OutOfBounds, "out_of_bounds"},
+    {SurfaceKind::Decoration, "decoration"},
 }};
 
 }  // namespace
@@ -109,8 +110,10 @@ SurfaceMaterial default_fairway() {
   m.e.speed = {0.0, 5.0, 10.0, 15.0, 20.0, 30.0, 0.0, 0.0};
   m.e.cor = {0.55, 0.42, 0.30, 0.22, 0.17, 0.15, 0.0, 0.0};
   m.mu = 0.4;
-  m.rolling_resistance = 0.12;
-  m.crater_tilt = deg_to_rad(12.0);
+  // Chosen so the TrackMan launches roll out as tour shots do on a firm fairway: driver
+  // ~30 yd, 7-iron a few yards, PW checks (see note-4).
+  m.rolling_resistance = 0.16;
+  m.crater_tilt = deg_to_rad(16.0);
   return m;
 }
 
@@ -155,30 +158,32 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
   return out;
 }
 
-bool FlatGround::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit) const {
+bool FlatGround::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit,
+                       const Vec3* follow) const {
+  if (follow != nullptr && follow->y() >= std::cos(kFollowAngle)) return false;
   if (!(to.y() < from.y())) return false;  // moving up or along the plane
-  const double d0 = from.y() - radius;
-  const double d1 = to.y() - radius;
+  const double d0 = from.y() - height_ - radius;
+  const double d1 = to.y() - height_ - radius;
   if (d1 > 0.0) return false;
   hit->fraction = d0 <= 0.0 ? 0.0 : d0 / (d0 - d1);
   const Vec3 c = from + hit->fraction * (to - from);
-  hit->point = Vec3(c.x(), 0.0, c.z());
+  hit->point = Vec3(c.x(), height_, c.z());
   hit->normal = Vec3::UnitY();
   hit->material = 0;
   return true;
 }
 
 bool FlatGround::support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const {
-  if (centre.y() - radius > reach) return false;
+  if (centre.y() - height_ - radius > reach) return false;
   hit->fraction = 0.0;
-  hit->point = Vec3(centre.x(), 0.0, centre.z());
+  hit->point = Vec3(centre.x(), height_, centre.z());
   hit->normal = Vec3::UnitY();
   hit->material = 0;
   return true;
 }
 
 bool FlatGround::may_touch(const Vec3& from, const Vec3& to, double radius) const {
-  return std::min(from.y(), to.y()) - radius <= 0.0;
+  return std::min(from.y(), to.y()) - height_ - radius <= 0.0;
 }
 
 }  // namespace sweetspot

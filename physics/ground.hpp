@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "physics/impact.hpp"
 #include "physics/math.hpp"
@@ -18,6 +19,7 @@ namespace sweetspot {
 
 enum class SurfaceKind : std::uint8_t {
   Tee, Fairway, Rough, Sand, Green, Water, Dirt, Grass, WarningTrack, Wall, OutOfBounds,
+  Decoration,  ///< drawn, never collided (flag, chalk lines)
 };
 
 const char* to_string(SurfaceKind k);
@@ -33,7 +35,7 @@ struct SurfaceMaterial {
   CorCurve e = CorCurve::constant(0.4);  ///< normal restitution vs normal impact speed (turf: ~0.5 slow, ~0.15 at 20 m/s)
   double mu = 0.4;                       ///< ball–surface Coulomb friction (Penner: 0.4 on a green)
   /// Rolling resistance: the rolling ball decelerates at rolling_resistance · g on the flat.
-  /// Green (stimp 10 ft) ~0.055, fairway ~0.12, rough ~0.3, sand ~1. Ignored when stimp > 0.
+  /// Green (stimp 10 ft) ~0.055, fairway ~0.16, rough ~0.3, sand ~1. Ignored when stimp > 0.
   double rolling_resistance = 0.12;
   double stimp = 0.0;                    ///< m; Stimpmeter reading (tour greens 3.0–4.0 m); > 0 sets rolling_resistance
   /// Turf crater tilt of the bounce normal, rad, at the reference impact (18.6 m/s at 44.4°
@@ -84,7 +86,12 @@ struct SurfaceContact {
   Vec3 point = Vec3::Zero();      ///< m, on the surface
   Vec3 normal = Vec3::UnitY();    ///< unit face normal, out of the surface
   int material = 0;               ///< index into the terrain's materials
+  int mesh = -1;                  ///< terrain-specific: collision mesh of the triangle (-1 none)
+  int triangle = -1;              ///< terrain-specific: triangle within the mesh (-1 none)
 };
+
+/// Surfaces within this angle of the one a ball rolls on are followed, steeper ones struck.
+inline constexpr double kFollowAngle = 20.0 * 3.14159265358979323846 / 180.0;
 
 /// What the flight state machine asks of the ground. The flat default ground and the
 /// Bullet World implement it. Queries are const but an implementation may keep scratch
@@ -93,13 +100,22 @@ class Terrain {
  public:
   virtual ~Terrain() = default;
   /// First surface a sphere of `radius` touches moving in a straight line from `from` to
-  /// `to`, ignoring surfaces it is moving away from or along. False when none.
-  virtual bool sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit) const = 0;
+  /// `to`, ignoring surfaces it is moving away from or along, and, when `follow` is given,
+  /// surfaces within kFollowAngle of *follow (the ground a ball rolls on). False when none.
+  virtual bool sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit,
+                     const Vec3* follow) const = 0;
   /// The surface under a ball resting or rolling at `centre` (within `reach` m below the
-  /// ball's bottom). False when there is none (off the edge of the world).
+  /// ball's bottom). On entry *hit may hold the previous support (a cache hint). False
+  /// when there is none (off the edge of the world's ground).
   virtual bool support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const = 0;
   /// Broad phase: false only when a sphere of `radius` on the segment certainly touches nothing.
   virtual bool may_touch(const Vec3& from, const Vec3& to, double radius) const = 0;
+  /// Broad phase for a rolling ball: false only when no surface steeper than kFollowAngle
+  /// (a wall, a bank) can be touched.
+  virtual bool may_touch_steep(const Vec3& from, const Vec3& to, double radius) const = 0;
+  /// True when the straight flight from `from` to `to` crosses the outfield fence line
+  /// outward (a home run when no wall was hit on the way). Worlds without a fence: false.
+  virtual bool over_fence(const Vec3& /*from*/, const Vec3& /*to*/) const { return false; }
   virtual const SurfaceMaterial& material(int index) const = 0;
   /// False once the ball has left the playable volume.
   virtual bool inside(const Vec3& centre) const = 0;
@@ -107,18 +123,24 @@ class Terrain {
   virtual double reference_height() const { return 0.0; }
 };
 
-/// An infinite flat plane y = 0 of one material: the ground when no world is loaded.
+/// An infinite flat plane y = height of one material: the ground when no world is loaded.
 class FlatGround final : public Terrain {
  public:
   explicit FlatGround(SurfaceMaterial m = default_fairway()) : material_(std::move(m)) {}
-  bool sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit) const override;
+  /// `height`: y of the plane (m).
+  FlatGround(SurfaceMaterial m, double height) : material_(std::move(m)), height_(height) {}
+  bool sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit,
+             const Vec3* follow) const override;
   bool support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const override;
   bool may_touch(const Vec3& from, const Vec3& to, double radius) const override;
+  bool may_touch_steep(const Vec3&, const Vec3&, double) const override { return false; }
+  double reference_height() const override { return height_; }
   const SurfaceMaterial& material(int) const override { return material_; }
   bool inside(const Vec3&) const override { return true; }
 
  private:
   SurfaceMaterial material_;
+  double height_ = 0.0;
 };
 
 }  // namespace sweetspot

@@ -201,9 +201,10 @@ Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int he
       Vec3 dir = framing.ball_velocity;
       dir.y() = 0;
       dir = dir.norm() > 0.5 ? dir.normalized() : framing.aim;
-      c.eye = framing.ball - 9.0 * dir + Vec3(0, 2.5, 0);
-      c.target = framing.ball + 6.0 * dir;
-      c.near_m = 0.3;
+      // Close enough that the club or bat at impact reads at t = 0.
+      c.eye = framing.ball - 3.5 * dir + Vec3(0, 1.3, 0);
+      c.target = framing.ball + 4.0 * dir;
+      c.near_m = 0.1;
       return c;
     }
     case CameraKind::Behind:

@@ -24,7 +24,7 @@ struct RenderRequest {
   int width = 1280, height = 720;   ///< px, 16..8192
   CameraKind camera = CameraKind::Behind;
   std::optional<double> at_seconds; ///< s since launch, 0..end; nothing = the shot's end
-  int samples = 4;                  ///< MSAA samples (see RendererOptions)
+  int samples = 0;                  ///< MSAA samples, 0 = auto (see RendererOptions)
   EglPlatform platform = EglPlatform::Auto;
 };
 

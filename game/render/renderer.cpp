@@ -63,7 +63,12 @@ Renderer::Renderer(int width, int height, const RendererOptions& options) {
   impl_ = std::make_unique<Impl>(options.shader_dir.empty() ? shader_dir() : options.shader_dir);
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  samples_ = std::clamp(options.samples, 1, std::max(1, static_cast<int>(max_samples)));
+  const auto* renderer_name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string name = renderer_name ? renderer_name : "";
+  software_ = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos ||
+              name.find("swrast") != std::string::npos;
+  const int wanted = options.samples > 0 ? options.samples : (software_ ? 1 : 4);
+  samples_ = std::clamp(wanted, 1, std::max(1, static_cast<int>(max_samples)));
   resize(width, height);
 }
 
@@ -116,19 +121,6 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-  // Sky: depth writes off, so everything else draws over it.
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
-  m.sky.use();
-  m.sky.set("u_inv_view_proj", Eigen::Matrix4f(view_proj_d.inverse().cast<float>()));
-  m.sky.set("u_eye", eye);
-  m.sky.set("u_sun_dir", scene.sun_direction);
-  m.sky.set("u_horizon", scene.sky_horizon);
-  m.sky.set("u_zenith", scene.sky_zenith);
-  glBindVertexArray(m.empty_vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_TRUE);
@@ -151,14 +143,32 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
     if (inst.terrain) glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
+  // Sky after the opaque meshes, at the far plane with LEQUAL: only pixels nothing covered
+  // are shaded (early depth test), which matters on a software rasteriser.
+  glDepthMask(GL_FALSE);
+  m.sky.use();
+  m.sky.set("u_inv_view_proj", Eigen::Matrix4f(view_proj_d.inverse().cast<float>()));
+  m.sky.set("u_eye", eye);
+  m.sky.set("u_sun_dir", scene.sun_direction);
+  m.sky.set("u_horizon", scene.sky_horizon);
+  m.sky.set("u_zenith", scene.sky_zenith);
+  glBindVertexArray(m.empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDepthMask(GL_TRUE);
+
   m.flat.use();
   m.flat.set("u_view_proj", view_proj);
+  glEnable(GL_BLEND);
+  // Colour blends; the stored alpha stays 1 so images are opaque.
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   m.ground_overlay.upload(scene.ground_overlay);
   m.ground_overlay.draw();
   glDisable(GL_DEPTH_TEST);
   m.top_overlay.upload(scene.top_overlay);
   m.top_overlay.draw();
   glEnable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
 
   // Resolve the samples into the single-sample FBO that read-back and windows use.
   glBindFramebuffer(GL_READ_FRAMEBUFFER, m.msaa_fbo);

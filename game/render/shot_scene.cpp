@@ -115,14 +115,15 @@ std::string format_distance(double metres, bool yards) {
   return buf;
 }
 
-MeshData grass_plane(double y, double half) {
+MeshData grass_plane(double y, double half, const char* material) {
   MeshData m;
-  const auto p = palette_color("out_of_bounds");
+  const auto p = palette_color(material);
   for (const Vec3& q : {Vec3(-half, y, -half), Vec3(half, y, -half), Vec3(half, y, half), Vec3(-half, y, half)}) {
     Vertex v;
     v.position = q.cast<float>();
     v.normal = Eigen::Vector3f::UnitY();
     v.color = p->color;
+    v.pattern = p->pattern;
     m.vertices.push_back(v);
   }
   m.indices = {0, 1, 2, 0, 2, 3};
@@ -206,7 +207,8 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
   }
   // Beyond the world mesh: a grass plane just below its lowest point, out to the horizon.
   m.plane_y = m.world ? ground_min_y - 0.3 : 0.0;
-  m.surroundings = std::make_unique<GpuMesh>(grass_plane(m.plane_y, 4000.0));
+  // Without a world the plane is the flat default ground of the flight model: a mown fairway.
+  m.surroundings = std::make_unique<GpuMesh>(grass_plane(m.plane_y, 4000.0, m.world ? "out_of_bounds" : "fairway"));
   m.ball = std::make_unique<GpuMesh>(import_mesh(mesh_path("golf_ball")));
   if (m.golf) m.tee = std::make_unique<GpuMesh>(import_mesh(mesh_path("tee")));
   if (m.flag_position) m.flag = std::make_unique<GpuMesh>(import_mesh(mesh_path("flag")));

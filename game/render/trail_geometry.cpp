@@ -31,7 +31,7 @@ void append_trail(MeshData& out, const ShotTrajectory& trajectory, double t, con
     const Vec3 b = point(i + 1 < n ? i + 1 : n - 1);
     Vec3 side = (b - a).cross(p - camera.eye);
     side = side.norm() > 1e-12 ? side.normalized() : side_fallback;
-    return Vec3(side * (0.5 * style.width_px * camera.metres_per_pixel(p, style.image_height)));
+    return Vec3(side * (0.5 * (style.width_px + 1.0) * camera.metres_per_pixel(p, style.image_height)));
   };
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const Vec3 p0 = point(i), p1 = point(i + 1);
@@ -41,10 +41,14 @@ void append_trail(MeshData& out, const ShotTrajectory& trajectory, double t, con
     const Eigen::Vector3f c = phase_color(ph);
     const Vec3 o0 = offset(i), o1 = offset(i + 1);
     const auto base = static_cast<std::uint32_t>(out.vertices.size());
-    for (const Vec3& q : {Vec3(p0 - o0), Vec3(p0 + o0), Vec3(p1 + o1), Vec3(p1 - o1)}) {
+    const Vec3 corners[4] = {p0 - o0, p0 + o0, p1 + o1, p1 - o1};
+    const float across[4] = {-1.0f, 1.0f, 1.0f, -1.0f};
+    for (int k = 0; k < 4; ++k) {
       Vertex v;
-      v.position = q.cast<float>();
+      v.position = corners[k].cast<float>();
+      v.normal = Eigen::Vector3f::UnitX();  // feathered ribbon (flat.frag)
       v.color = c;
+      v.pattern = across[k];
       out.vertices.push_back(v);
     }
     for (std::uint32_t k : {0u, 1u, 2u, 0u, 2u, 3u}) out.indices.push_back(base + k);

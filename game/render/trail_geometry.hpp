@@ -21,7 +21,9 @@ struct TrailStyle {
 
 /// Appends the trail from launch up to time t (s) to `out`: one quad per sample segment
 /// (samples i -> i+1), coloured by the phase of sample i+1 (the motion that produced the
-/// segment), widened perpendicular to the line of sight so it faces the camera.
+/// segment), widened perpendicular to the line of sight so it faces the camera. The quad is
+/// width_px + 1 px wide: flat.frag fades its outer half pixel on each side (vertices carry
+/// normal.x = 1 and the across-ribbon coordinate -1..1 in `pattern`).
 void append_trail(MeshData& out, const ShotTrajectory& trajectory, double t, const Camera& camera,
                   const TrailStyle& style);
 

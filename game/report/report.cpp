@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "game/report/flight_json.hpp"
 #include "physics/error.hpp"
 #include "physics/math.hpp"
 #include "physics/units.hpp"
@@ -141,21 +142,12 @@ std::string launch_table(const ShotResult& r, UnitSystem units) {
 nlohmann::json shot_json(const ShotResult& r) {
   using nlohmann::json;
   const auto& L = r.launch;
-  const auto& F = r.trajectory.summary;
   json j;
   j["scenario"] = r.scenario;
   j["sport"] = to_string(r.sport);
-  j["launch"] = {
-      {"ball_speed_mps", L.ball_speed},
-      {"vertical_angle_deg", L.vertical_angle * kDegPerRad},
-      {"horizontal_angle_deg", L.horizontal_angle * kDegPerRad},
-      {"spin_rpm", radps_to_rpm(L.spin.total)},
-      {"backspin_rpm", radps_to_rpm(L.spin.backspin)},
-      {"sidespin_rpm", radps_to_rpm(L.spin.sidespin_right)},
-      {"rifle_spin_rpm", radps_to_rpm(L.spin.rifle)},
-      {"spin_axis_deg", L.spin.axis_rad * kDegPerRad},
-      {"smash_factor", r.smash_factor},
-  };
+  // The launch and flight objects are shared with `flight --json` (game/report/flight_json).
+  j["launch"] = launch_json(L, r.impact.present ? r.smash_factor : -1.0);
+  j["launch"]["rifle_spin_rpm"] = radps_to_rpm(L.spin.rifle);
   if (r.impact.present) {
     const auto& i = r.impact;
     j["impact"] = {
@@ -189,16 +181,7 @@ nlohmann::json shot_json(const ShotResult& r) {
       };
     }
   }
-  j["flight"] = {
-      {"carry_m", F.carry_m},
-      {"total_m", F.total_m},
-      {"apex_m", F.apex_m},
-      {"landing_angle_deg", F.landing_angle_deg},
-      {"hang_time_s", F.hang_time_s},
-      {"lateral_m", F.lateral_m},
-      {"end", to_string(F.end)},
-      {"rest_position_m", {F.rest_position.x(), F.rest_position.y(), F.rest_position.z()}},
-  };
+  j["flight"] = flight_json(r.trajectory.summary);
   return j;
 }
 

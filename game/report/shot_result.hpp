@@ -6,6 +6,7 @@
 #include <string>
 
 #include "game/scenario/scenario_schema.hpp"
+#include "physics/delivery.hpp"
 #include "physics/impact.hpp"
 #include "physics/launch.hpp"
 #include "physics/trajectory.hpp"
@@ -63,6 +64,9 @@ struct ShotResult {
   ClubNumbers club;                 ///< golf only
   BatNumbers bat;                   ///< baseball only
   ShotTrajectory trajectory;        ///< sampled path and the flight summary
+  /// Club head / bat at the instant of impact (mesh frame -> world), for rendering.
+  ImpactorPose impactor_at_impact;
+  bool has_impactor = false;        ///< false for launch-only shots
 };
 
 }  // namespace sweetspot

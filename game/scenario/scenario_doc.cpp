@@ -117,6 +117,18 @@ void flatten(const toml::table& table, const std::string& prefix, const std::str
   throw InputError(msg);
 }
 
+// True when something follows the number ("113mph", "8e-6kg*m^2"); a malformed number
+// counts as having a unit so parse_quantity reports it properly.
+bool has_unit(std::string_view t) {
+  const char* first = t.data();
+  const char* last = t.data() + t.size();
+  if (first != last && (*first == '+' || *first == '-')) ++first;
+  double v = 0.0;
+  const auto res = std::from_chars(first, last, v);
+  if (res.ec == std::errc::invalid_argument) return true;
+  return !trim(std::string_view(res.ptr, static_cast<std::size_t>(last - res.ptr))).empty();
+}
+
 bool is_dimensional(Dimension d) { return d != Dimension::Dimensionless && d != Dimension::Fraction; }
 
 // One element of a quantity: requires a unit for dimensional keys, then parses and checks
@@ -124,8 +136,7 @@ bool is_dimensional(Dimension d) { return d != Dimension::Dimensionless && d != 
 double check_number(const KeySpec& spec, std::string_view text, const std::string& origin) {
   const std::string_view t = trim(text);
   if (t.empty()) fail(origin, spec.key, "empty value", &spec);
-  const char last = t.back();
-  if (is_dimensional(spec.dim) && ((last >= '0' && last <= '9') || last == '.')) {
+  if (is_dimensional(spec.dim) && !has_unit(t)) {
     fail(origin, spec.key,
          "missing unit in '" + std::string(t) + "' (a " + std::string(dimension_name(spec.dim)) +
              " needs one of: " + accepted_units(spec.dim) + ")",
@@ -209,8 +220,8 @@ ScenarioDoc read_toml_doc(const std::filesystem::path& path) {
   return parse_toml_doc(ss.str(), path.string());
 }
 
-void apply_set(ScenarioDoc& doc, std::string_view assignment) {
-  const std::string origin = "--set " + std::string(assignment);
+void apply_set(ScenarioDoc& doc, std::string_view assignment, std::string_view origin_in) {
+  const std::string origin = origin_in.empty() ? "--set " + std::string(assignment) : std::string(origin_in);
   const auto eq = assignment.find('=');
   if (eq == std::string_view::npos) {
     throw InputError(origin + ": expected key=value in dotted form, e.g. --set swing.speed=105mph");

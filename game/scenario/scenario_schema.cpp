@@ -100,6 +100,8 @@ Schema build_scenario_schema() {
 
   k.push_back(choice("sport", "golf|baseball", "", "which game (required)"));
   k.push_back(name("description", "", "one line shown by `sweetspot list`", kAnySport, ValueType::Text));
+  k.push_back(name("update", "true", "regression: false keeps `regress --update` from rewriting external reference values",
+                   kAnySport, ValueType::Bool));
 
   k.push_back(name("ball.name", "tour", "ball from assets/equipment/balls.toml", G));
   k.push_back(name("ball.name", "mlb", "ball from assets/equipment/balls.toml", B));
@@ -135,13 +137,14 @@ Schema build_scenario_schema() {
   k.push_back(quantity("impact.mu", Dimension::Dimensionless, 0.0, 2.0, "", "", "friction coefficient (default: the equipment's)"));
   k.push_back(choice("impact.friction", "none|textbook|coulomb", "", "friction model (default: the equipment's, coulomb)"));
 
-  k.push_back(quantity("environment.temperature", Dimension::Temperature, celsius_to_kelvin(-40), celsius_to_kelvin(60), "C", "21C", "air temperature"));
+  k.push_back(quantity("environment.temperature", Dimension::Temperature, celsius_to_kelvin(-50), celsius_to_kelvin(60), "C", "21C", "air temperature"));
   k.push_back(quantity("environment.pressure", Dimension::Pressure, 30000.0, 110000.0, "hPa", "", "station pressure (default: from altitude)"));
-  k.push_back(quantity("environment.altitude", Length, -500.0, 5000.0, "m", "0m", "altitude above sea level"));
+  k.push_back(quantity("environment.altitude", Length, -500.0, 6000.0, "m", "0m", "altitude above sea level"));
   k.push_back(quantity("environment.humidity", Dimension::Fraction, 0.0, 1.0, "%", "50%", "relative humidity"));
-  k.push_back(quantity("environment.wind_speed", Speed, 0.0, 50.0, "mph", "0mph", "wind speed at 10 m"));
+  k.push_back(quantity("environment.wind_speed", Speed, 0.0, 60.0, "mph", "0mph", "wind speed at the reference height (10 m)"));
   k.push_back(quantity("environment.wind_direction", Angle, -2 * kPi, 2 * kPi, "deg", "0deg", "direction the wind blows toward: 0 = tailwind, 90deg = toward the right"));
 
+  k.push_back(choice("environment.wind_profile", "log|power|uniform", "log", "how wind grows with height"));
   k.push_back(name("world.name", "", "world asset (default: golf_hole / ballpark)"));
   k.push_back(list("world.ball_position", Length, 2, -2000.0, 2000.0, "m", "[0m, 0m]", "ball position [downrange x, right z]; height from the terrain", G));
   k.push_back(choice("world.lie", "tee|fairway|rough|sand|green", "", "required surface under the ball (checked)", G));
@@ -164,6 +167,8 @@ Schema build_impact_case_schema() {
   auto& k = s.keys;
   k.push_back(choice("case", "impact", "", "regression case kind (required)"));
   k.push_back(name("description", "", "what the case checks", kAnySport, ValueType::Text));
+  k.push_back(name("update", "true", "false keeps `regress --update` from rewriting external reference values",
+                   kAnySport, ValueType::Bool));
   for (const std::string_view body : {std::string_view("impactor"), std::string_view("ball")}) {
     auto& st = key_storage();
     auto key = [&](std::string_view leaf) {
@@ -274,6 +279,7 @@ const std::vector<ExpectSpec>& impact_case_expectations() {
       {"ball_spin", Dimension::AngularVelocity, "rad/s", 3},
       {"ball_speed", Dimension::Speed, "m/s", 0},
       {"ball_direction", Dimension::Angle, "deg", 0},
+      {"ball_tangential_velocity", Dimension::Speed, "m/s", 0},
       {"contact_tangential_velocity", Dimension::Speed, "m/s", 0},
       {"energy_ratio", Dimension::Dimensionless, "", 0},
   };

@@ -36,6 +36,7 @@ RenderRequest range_request(int w, int h, CameraKind camera) {
   r.width = w;
   r.height = h;
   r.camera = camera;
+  r.samples = 4;  // exercise the multisampled FBO and its resolve (auto is 1 on llvmpipe)
   return r;
 }
 
@@ -225,6 +226,24 @@ TEST_CASE("a missing or broken shader names the file and the compiler log", "[re
     CHECK_THAT(e.what(), Catch::Contains("undeclared_thing"));  // the compiler's log
   }
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("auto sample count: 4 on a GPU, 1 on a software rasteriser; explicit counts are kept", "[render]") {
+  OffscreenContext context;
+  Renderer automatic(64, 64);
+  CHECK(automatic.samples() == (automatic.software() ? 1 : 4));
+  RendererOptions four;
+  four.samples = 4;
+  CHECK(Renderer(64, 64, four).samples() == 4);
+  // The same shot with and without multisampling differs only along edges.
+  const ShotTrajectory shot = synthetic_shot();
+  RenderRequest a = range_request(320, 180, CameraKind::Side), b = a;
+  b.samples = 1;
+  const auto img_a = render_shot_rgba(shot, a), img_b = render_shot_rgba(shot, b);
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < img_a.size(); i += 4) differing += img_a[i] != img_b[i] || img_a[i + 1] != img_b[i + 1];
+  CHECK(differing > 0);                    // the resolve did something
+  CHECK(differing < img_a.size() / 4 / 5);  // ...but only at edges (< 20 % of pixels)
 }
 
 TEST_CASE("bad render requests are input errors naming the value", "[render]") {

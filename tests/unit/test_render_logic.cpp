@@ -119,11 +119,15 @@ TEST_CASE("the trail has one quad per segment coloured by the phase that made it
   for (int q = 0; q < 5; ++q) {
     for (int k = 0; k < 4; ++k) CHECK(out.vertices[std::size_t(4 * q + k)].color == phase_color(expect[q]));
   }
-  // The ribbon is about 5 px wide on screen wherever it is (exact on the image axis; off axis
-  // the widening is perpendicular to the line of sight, not to the image plane).
+  // The ribbon quad is about 5 + 1 px wide on screen wherever it is (5 px solid plus half a
+  // pixel of soft edge each side; exact on the image axis, off axis the widening is
+  // perpendicular to the line of sight, not to the image plane). Vertices carry the
+  // across-ribbon coordinate for the edge fade.
   const auto a = c.project(out.vertices[0].position.cast<double>(), 1280, 720);
   const auto b = c.project(out.vertices[1].position.cast<double>(), 1280, 720);
-  CHECK((*a - *b).norm() == Approx(5.0).epsilon(0.05));
+  CHECK((*a - *b).norm() == Approx(6.0).epsilon(0.05));
+  CHECK(out.vertices[0].pattern == -1.0f);
+  CHECK(out.vertices[1].pattern == 1.0f);
   // The three phase colours are distinct from each other.
   CHECK((phase_color(Phase::Flight) - phase_color(Phase::Bounce)).norm() > 0.3);
   CHECK((phase_color(Phase::Bounce) - phase_color(Phase::Roll)).norm() > 0.3);

@@ -1,0 +1,409 @@
+// World: Bullet collision queries over triangle meshes, plus a coarse height grid that lets
+// the flight skip sweeps while the ball is far above everything (most of a shot).
+#include "physics/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <btBulletCollisionCommon.h>
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+btVector3 bt(const Vec3& v) { return btVector3(v.x(), v.y(), v.z()); }
+
+bool finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
+
+/// Triangles of one material handed to Bullet. Bullet reads the arrays in place, so they
+/// must outlive the shape and never reallocate after it is built.
+struct CollisionMesh {
+  int material = 0;
+  std::vector<double> vertices;  // xyz
+  std::vector<int> indices;      // 3 per triangle
+  std::vector<Vec3> normals;     // unit face normal per triangle
+  std::unique_ptr<btTriangleIndexVertexArray> array;
+  std::unique_ptr<btBvhTriangleMeshShape> shape;
+  std::unique_ptr<btCollisionObject> object;
+
+  Vec3 vertex(int tri, int corner) const {
+    const auto i = static_cast<size_t>(indices[static_cast<size_t>(3 * tri + corner)]) * 3;
+    return Vec3(vertices[i], vertices[i + 1], vertices[i + 2]);
+  }
+};
+
+}  // namespace
+
+struct World::Impl {
+  WorldDescription desc;
+  std::vector<CollisionMesh> meshes;
+  int triangles = 0;
+  double follow_cos = std::cos(kFollowAngle);
+
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  btCollisionWorld world{&dispatcher, &broadphase, &config};
+  mutable btSphereShape sphere{0.02};
+
+  // Height grid over the xz extent of the collision triangles: per cell the highest point
+  // of any triangle overlapping it, and of any steep (wall) triangle.
+  double cell = 4.0;
+  double gx0 = 0.0, gz0 = 0.0;
+  int nx = 0, nz = 0;
+  std::vector<double> top;        // -inf where empty
+  std::vector<double> steep_top;  // -inf where no steep triangle
+
+  /// Cell range covering [x0, x1] × [z0, z1]; false when it misses the grid entirely.
+  bool cells(double x0, double x1, double z0, double z1, int* i0, int* i1, int* k0, int* k1) const {
+    *i0 = static_cast<int>(std::floor((x0 - gx0) / cell));
+    *i1 = static_cast<int>(std::floor((x1 - gx0) / cell));
+    *k0 = static_cast<int>(std::floor((z0 - gz0) / cell));
+    *k1 = static_cast<int>(std::floor((z1 - gz0) / cell));
+    if (*i1 < 0 || *k1 < 0 || *i0 >= nx || *k0 >= nz) return false;
+    *i0 = std::max(*i0, 0);
+    *k0 = std::max(*k0, 0);
+    *i1 = std::min(*i1, nx - 1);
+    *k1 = std::min(*k1, nz - 1);
+    return true;
+  }
+
+  double highest(const std::vector<double>& grid, const Vec3& a, const Vec3& b, double r) const {
+    int i0, i1, k0, k1;
+    if (!cells(std::min(a.x(), b.x()) - r, std::max(a.x(), b.x()) + r, std::min(a.z(), b.z()) - r,
+               std::max(a.z(), b.z()) + r, &i0, &i1, &k0, &k1))
+      return -std::numeric_limits<double>::infinity();
+    double h = -std::numeric_limits<double>::infinity();
+    for (int k = k0; k <= k1; ++k)
+      for (int i = i0; i <= i1; ++i) h = std::max(h, grid[static_cast<size_t>(k * nx + i)]);
+    return h;
+  }
+
+  void build_grid() {
+    double x0 = 1e300, x1 = -1e300, z0 = 1e300, z1 = -1e300;
+    for (const auto& m : meshes)
+      for (size_t i = 0; i < m.vertices.size(); i += 3) {
+        x0 = std::min(x0, m.vertices[i]);
+        x1 = std::max(x1, m.vertices[i]);
+        z0 = std::min(z0, m.vertices[i + 2]);
+        z1 = std::max(z1, m.vertices[i + 2]);
+      }
+    if (x0 > x1) return;  // no collision geometry: nothing can ever be touched
+    cell = std::max({4.0, (x1 - x0) / 512.0, (z1 - z0) / 512.0});
+    gx0 = x0;
+    gz0 = z0;
+    nx = static_cast<int>(std::floor((x1 - x0) / cell)) + 1;
+    nz = static_cast<int>(std::floor((z1 - z0) / cell)) + 1;
+    const double empty = -std::numeric_limits<double>::infinity();
+    top.assign(static_cast<size_t>(nx * nz), empty);
+    steep_top.assign(static_cast<size_t>(nx * nz), empty);
+    for (const auto& m : meshes) {
+      const int n = static_cast<int>(m.indices.size() / 3);
+      for (int t = 0; t < n; ++t) {
+        const Vec3 a = m.vertex(t, 0), b = m.vertex(t, 1), c = m.vertex(t, 2);
+        const double ytop = std::max({a.y(), b.y(), c.y()});
+        const bool steep = m.normals[static_cast<size_t>(t)].y() < follow_cos;
+        int i0, i1, k0, k1;
+        if (!cells(std::min({a.x(), b.x(), c.x()}), std::max({a.x(), b.x(), c.x()}),
+                   std::min({a.z(), b.z(), c.z()}), std::max({a.z(), b.z(), c.z()}), &i0, &i1, &k0, &k1))
+          continue;
+        for (int k = k0; k <= k1; ++k)
+          for (int i = i0; i <= i1; ++i) {
+            const auto idx = static_cast<size_t>(k * nx + i);
+            top[idx] = std::max(top[idx], ytop);
+            if (steep) steep_top[idx] = std::max(steep_top[idx], ytop);
+          }
+      }
+    }
+  }
+
+  void fill(SurfaceContact* hit, int mesh, int tri, const Vec3& centre, double fraction) const {
+    const CollisionMesh& m = meshes[static_cast<size_t>(mesh)];
+    const Vec3& n = m.normals[static_cast<size_t>(tri)];
+    hit->fraction = fraction;
+    hit->normal = n;
+    hit->point = centre - n * n.dot(centre - m.vertex(tri, 0));  // foot of the centre on the plane
+    hit->material = m.material;
+    hit->mesh = mesh;
+    hit->triangle = tri;
+  }
+
+  /// Whether the foot of `centre` on the triangle's plane lies inside the triangle.
+  bool over_triangle(int mesh, int tri, const Vec3& centre) const {
+    const CollisionMesh& m = meshes[static_cast<size_t>(mesh)];
+    const Vec3 a = m.vertex(tri, 0), b = m.vertex(tri, 1), c = m.vertex(tri, 2);
+    const Vec3& n = m.normals[static_cast<size_t>(tri)];
+    const Vec3 p = centre - n * n.dot(centre - a);
+    constexpr double eps = -1e-12;
+    return n.dot((b - a).cross(p - a)) >= eps && n.dot((c - b).cross(p - b)) >= eps &&
+           n.dot((a - c).cross(p - c)) >= eps;
+  }
+};
+
+namespace {
+
+struct SweepCallback final : btCollisionWorld::ConvexResultCallback {
+  const std::vector<CollisionMesh>* meshes = nullptr;
+  Vec3 direction = Vec3::Zero();
+  const Vec3* follow = nullptr;
+  double follow_cos = 1.0;
+  int mesh = -1;
+  int triangle = -1;
+
+  btScalar addSingleResult(btCollisionWorld::LocalConvexResult& r, bool /*normal_in_world*/) override {
+    if (r.m_localShapeInfo == nullptr) return m_closestHitFraction;
+    const int m = r.m_hitCollisionObject->getUserIndex2();
+    const int t = r.m_localShapeInfo->m_triangleIndex;
+    const Vec3& n = (*meshes)[static_cast<size_t>(m)].normals[static_cast<size_t>(t)];
+    // Only faces the ball moves into; Bullet's own normal (edge/vertex) is ignored on purpose.
+    if (n.dot(direction) >= -1e-9) return m_closestHitFraction;
+    if (follow != nullptr && n.dot(*follow) >= follow_cos) return m_closestHitFraction;
+    if (r.m_hitFraction < m_closestHitFraction) {
+      m_closestHitFraction = r.m_hitFraction;
+      mesh = m;
+      triangle = t;
+    }
+    return m_closestHitFraction;
+  }
+};
+
+struct RayCallback final : btCollisionWorld::RayResultCallback {
+  const std::vector<CollisionMesh>* meshes = nullptr;
+  int mesh = -1;
+  int triangle = -1;
+
+  btScalar addSingleResult(btCollisionWorld::LocalRayResult& r, bool /*normal_in_world*/) override {
+    if (r.m_localShapeInfo == nullptr) return m_closestHitFraction;
+    const int m = r.m_collisionObject->getUserIndex2();
+    const int t = r.m_localShapeInfo->m_triangleIndex;
+    // Ground only: a face that looks up (walls are met by sweeps, not stood on).
+    if ((*meshes)[static_cast<size_t>(m)].normals[static_cast<size_t>(t)].y() <= 0.1) return m_closestHitFraction;
+    if (r.m_hitFraction < m_closestHitFraction) {
+      m_closestHitFraction = r.m_hitFraction;
+      m_collisionObject = r.m_collisionObject;
+      mesh = m;
+      triangle = t;
+    }
+    return m_closestHitFraction;
+  }
+};
+
+}  // namespace
+
+std::string validate_world(const WorldDescription& d) {
+  std::ostringstream s;
+  const std::string w = "world '" + d.name + "': ";
+  if (d.materials.empty()) return w + "no materials";
+  for (const auto& m : d.materials) {
+    const std::string why = validate_surface_material(m);
+    if (!why.empty()) return w + why;
+  }
+  for (size_t i = 0; i < d.meshes.size(); ++i) {
+    const WorldMesh& m = d.meshes[i];
+    if (m.material < 0 || static_cast<size_t>(m.material) >= d.materials.size()) {
+      s << w << "mesh " << i << " has material " << m.material << " (allowed 0.." << d.materials.size() - 1 << ")";
+      return s.str();
+    }
+    if (m.indices.size() % 3 != 0) {
+      s << w << "mesh " << i << " has " << m.indices.size() << " indices (not a multiple of 3)";
+      return s.str();
+    }
+    for (size_t v = 0; v < m.vertices.size(); ++v)
+      if (!finite(m.vertices[v])) {
+        s << w << "mesh " << i << " (" << d.materials[static_cast<size_t>(m.material)].name << ") vertex " << v
+          << " is not a finite number";
+        return s.str();
+      }
+    for (size_t k = 0; k < m.indices.size(); ++k)
+      if (m.indices[k] >= m.vertices.size()) {
+        s << w << "mesh " << i << " index " << k << " = " << m.indices[k] << " is out of range (allowed 0.."
+          << (m.vertices.empty() ? 0 : m.vertices.size() - 1) << ")";
+        return s.str();
+      }
+  }
+  if (!finite(d.origin) || !finite(d.bounds_min) || !finite(d.bounds_max) ||
+      !(d.bounds_min.array() < d.bounds_max.array()).all())
+    return w + "bounds must be finite with bounds_min < bounds_max";
+  if (!(d.fence_height >= 0.0 && d.fence_height < 100.0)) return w + "fence_height out of range (allowed 0..100 m)";
+  for (const Vec3& p : d.fence_line)
+    if (!finite(p)) return w + "fence_line has a non-finite point";
+  return {};
+}
+
+World::World(WorldDescription description) : impl_(std::make_unique<Impl>()) {
+  const std::string why = validate_world(description);
+  if (!why.empty()) throw InputError(why);
+  Impl& w = *impl_;
+  w.desc = std::move(description);
+  const WorldDescription& d = w.desc;
+
+  // Merge meshes per material, dropping decorations and zero-area triangles.
+  std::vector<int> slot(d.materials.size(), -1);
+  int dropped = 0;
+  for (const WorldMesh& src : d.meshes) {
+    const SurfaceMaterial& mat = d.materials[static_cast<size_t>(src.material)];
+    if (mat.kind == SurfaceKind::Decoration) continue;
+    int& s = slot[static_cast<size_t>(src.material)];
+    if (s < 0) {
+      s = static_cast<int>(w.meshes.size());
+      w.meshes.emplace_back();
+      w.meshes.back().material = src.material;
+    }
+    CollisionMesh& dst = w.meshes[static_cast<size_t>(s)];
+    const int base = static_cast<int>(dst.vertices.size() / 3);
+    for (const Vec3& v : src.vertices) {
+      dst.vertices.push_back(v.x());
+      dst.vertices.push_back(v.y());
+      dst.vertices.push_back(v.z());
+    }
+    for (size_t k = 0; k + 2 < src.indices.size(); k += 3) {
+      const Vec3& a = src.vertices[src.indices[k]];
+      const Vec3& b = src.vertices[src.indices[k + 1]];
+      const Vec3& c = src.vertices[src.indices[k + 2]];
+      const Vec3 cross = (b - a).cross(c - a);
+      const double scale = std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), 1e-300});
+      if (!(cross.norm() > 1e-12 * scale)) {
+        ++dropped;  // zero-area (or needle) triangle: no normal, skip it
+        continue;
+      }
+      dst.indices.push_back(base + static_cast<int>(src.indices[k]));
+      dst.indices.push_back(base + static_cast<int>(src.indices[k + 1]));
+      dst.indices.push_back(base + static_cast<int>(src.indices[k + 2]));
+      dst.normals.push_back(cross.normalized());
+    }
+  }
+  if (dropped > 0) {
+    std::ostringstream s;
+    s << "dropped " << dropped << " zero-area triangle" << (dropped == 1 ? "" : "s");
+    w.desc.notes.push_back(s.str());
+  }
+  w.meshes.erase(std::remove_if(w.meshes.begin(), w.meshes.end(),
+                                [](const CollisionMesh& m) { return m.indices.empty(); }),
+                 w.meshes.end());
+
+  for (size_t i = 0; i < w.meshes.size(); ++i) {
+    CollisionMesh& m = w.meshes[i];
+    btIndexedMesh im;
+    im.m_numTriangles = static_cast<int>(m.indices.size() / 3);
+    im.m_triangleIndexBase = reinterpret_cast<const unsigned char*>(m.indices.data());
+    im.m_triangleIndexStride = 3 * static_cast<int>(sizeof(int));
+    im.m_numVertices = static_cast<int>(m.vertices.size() / 3);
+    im.m_vertexBase = reinterpret_cast<const unsigned char*>(m.vertices.data());
+    im.m_vertexStride = 3 * static_cast<int>(sizeof(double));
+    im.m_indexType = PHY_INTEGER;
+    im.m_vertexType = PHY_DOUBLE;
+    m.array = std::make_unique<btTriangleIndexVertexArray>();
+    m.array->addIndexedMesh(im, PHY_INTEGER);
+    m.shape = std::make_unique<btBvhTriangleMeshShape>(m.array.get(), true, true);
+    m.object = std::make_unique<btCollisionObject>();
+    m.object->setCollisionShape(m.shape.get());
+    m.object->setUserIndex(m.material);
+    m.object->setUserIndex2(static_cast<int>(i));
+    w.world.addCollisionObject(m.object.get());
+    w.triangles += im.m_numTriangles;
+  }
+  w.world.updateAabbs();
+  w.build_grid();
+}
+
+World::~World() {
+  for (auto& m : impl_->meshes) impl_->world.removeCollisionObject(m.object.get());
+}
+
+const WorldDescription& World::description() const { return impl_->desc; }
+int World::collision_triangles() const { return impl_->triangles; }
+
+bool World::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit,
+                  const Vec3* follow) const {
+  const Vec3 motion = to - from;
+  const double len = motion.norm();
+  if (!(len > 0.0)) return false;
+  Impl& w = *impl_;
+  w.sphere.setUnscaledRadius(radius);
+  SweepCallback cb;
+  cb.meshes = &w.meshes;
+  cb.direction = motion / len;
+  cb.follow = follow;
+  cb.follow_cos = w.follow_cos;
+  btTransform a, b;
+  a.setIdentity();
+  b.setIdentity();
+  a.setOrigin(bt(from));
+  b.setOrigin(bt(to));
+  w.world.convexSweepTest(&w.sphere, a, b, cb, 0.0);
+  if (cb.mesh < 0) return false;
+  const double f = cb.m_closestHitFraction;
+  w.fill(hit, cb.mesh, cb.triangle, from + f * motion, f);
+  return true;
+}
+
+bool World::support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const {
+  const Impl& w = *impl_;
+  int mesh = -1, tri = -1;
+  if (hit->mesh >= 0 && hit->triangle >= 0 && static_cast<size_t>(hit->mesh) < w.meshes.size() &&
+      w.over_triangle(hit->mesh, hit->triangle, centre)) {
+    mesh = hit->mesh;  // still over the same triangle: no Bullet query
+    tri = hit->triangle;
+  } else {
+    // Straight down far enough to find a 60° slope under the ball.
+    RayCallback cb;
+    cb.meshes = &w.meshes;
+    const Vec3 top = centre + Vec3(0.0, radius, 0.0);
+    const Vec3 bottom = centre - Vec3(0.0, 2.0 * radius + reach + 0.05, 0.0);
+    w.world.rayTest(bt(top), bt(bottom), cb);
+    if (cb.mesh < 0) return false;
+    mesh = cb.mesh;
+    tri = cb.triangle;
+  }
+  const CollisionMesh& m = w.meshes[static_cast<size_t>(mesh)];
+  const double gap = m.normals[static_cast<size_t>(tri)].dot(centre - m.vertex(tri, 0)) - radius;
+  if (gap > reach) return false;
+  w.fill(hit, mesh, tri, centre, 0.0);
+  return true;
+}
+
+bool World::may_touch(const Vec3& from, const Vec3& to, double radius) const {
+  return std::min(from.y(), to.y()) - radius <= impl_->highest(impl_->top, from, to, radius);
+}
+
+bool World::may_touch_steep(const Vec3& from, const Vec3& to, double radius) const {
+  return std::min(from.y(), to.y()) - radius <= impl_->highest(impl_->steep_top, from, to, radius);
+}
+
+const SurfaceMaterial& World::material(int index) const {
+  return impl_->desc.materials[static_cast<size_t>(index)];
+}
+
+bool World::inside(const Vec3& c) const {
+  const WorldDescription& d = impl_->desc;
+  return (c.array() >= d.bounds_min.array()).all() && (c.array() <= d.bounds_max.array()).all();
+}
+
+double World::reference_height() const { return impl_->desc.origin.y(); }
+
+bool World::over_fence(const Vec3& from, const Vec3& to) const {
+  const WorldDescription& d = impl_->desc;
+  if (d.fence_line.size() < 2) return false;
+  const auto cross2 = [](double ax, double az, double bx, double bz) { return ax * bz - az * bx; };
+  const double rx = to.x() - from.x(), rz = to.z() - from.z();
+  for (size_t i = 0; i + 1 < d.fence_line.size(); ++i) {
+    const Vec3& a = d.fence_line[i];
+    const Vec3& b = d.fence_line[i + 1];
+    const double sx = b.x() - a.x(), sz = b.z() - a.z();
+    const double den = cross2(rx, rz, sx, sz);
+    if (den == 0.0) continue;
+    const double qx = a.x() - from.x(), qz = a.z() - from.z();
+    const double t = cross2(qx, qz, sx, sz) / den;  // along the flight segment
+    const double u = cross2(qx, qz, rx, rz) / den;  // along the fence segment
+    if (t < 0.0 || t > 1.0 || u < 0.0 || u > 1.0) continue;
+    // Outward: the end is farther from home plate than the start.
+    const Vec3 o = d.origin;
+    if (std::hypot(to.x() - o.x(), to.z() - o.z()) > std::hypot(from.x() - o.x(), from.z() - o.z())) return true;
+  }
+  return false;
+}
+
+}  // namespace sweetspot

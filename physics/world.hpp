@@ -1,0 +1,79 @@
+// The course or ballpark as Bullet sees it (DESIGN §5): a btCollisionWorld of triangle
+// meshes, one btBvhTriangleMeshShape per surface material (material id in the collision
+// object's user index). Bullet only answers queries — sphere sweeps (convexSweepTest,
+// allowed penetration 0) and rays; our integrator moves the ball. Contacts report the
+// triangle's face normal, never Bullet's interpolated or edge normal, so a ball rolling
+// across the internal edges of a flat mesh does not hop.
+//
+// Physics takes plain vertex/index arrays; loading files (assimp, TOML) is game/assets.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "physics/ground.hpp"
+#include "physics/math.hpp"
+
+namespace sweetspot {
+
+/// Triangles of one material, world frame (m).
+struct WorldMesh {
+  int material = 0;                     ///< index into WorldDescription::materials
+  std::vector<Vec3> vertices;           ///< m
+  std::vector<std::uint32_t> indices;   ///< 3 per triangle, counter-clockwise seen from the side the normal points to
+};
+
+/// Everything a World is built from: plain data, loaded by game/assets or built in tests.
+struct WorldDescription {
+  std::string name;                       ///< "golf_hole", "ballpark"
+  std::string sport;                      ///< "golf" or "baseball" (informational)
+  std::vector<SurfaceMaterial> materials;
+  std::vector<WorldMesh> meshes;
+  Vec3 origin = Vec3::Zero();             ///< m; the tee (golf) or home plate (baseball), on the ground
+  Vec3 bounds_min = Vec3::Constant(-1e4); ///< m; leaving the box ends the shot out of bounds
+  Vec3 bounds_max = Vec3::Constant(1e4);  ///< m
+  std::optional<Vec3> flag;               ///< m; the hole (golf)
+  double fence_height = 0.0;              ///< m above the field (ballpark: 3.05 = 10 ft), 0 = none
+  /// Foot of the outfield fence, ordered from the left-field foul pole to the right-field
+  /// pole (xz used). With the origin it closes fair territory inside the fence.
+  std::vector<Vec3> fence_line;
+  std::vector<std::string> notes;         ///< repairs made while loading or building (dropped triangles)
+};
+
+/// Empty when valid, otherwise a message naming the world, mesh and field.
+std::string validate_world(const WorldDescription& d);
+
+/// A collision world built once from a description. Queries keep scratch state: use one
+/// World per thread. Not copyable.
+class World final : public Terrain {
+ public:
+  /// Throws InputError on a non-finite vertex, an index out of range or a bad material;
+  /// drops zero-area triangles (noted in description().notes).
+  explicit World(WorldDescription description);
+  ~World() override;
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  const WorldDescription& description() const;
+  /// Triangles handed to Bullet (decorations and dropped triangles excluded).
+  int collision_triangles() const;
+
+  bool sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit,
+             const Vec3* follow) const override;
+  bool support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const override;
+  bool may_touch(const Vec3& from, const Vec3& to, double radius) const override;
+  bool may_touch_steep(const Vec3& from, const Vec3& to, double radius) const override;
+  const SurfaceMaterial& material(int index) const override;
+  bool inside(const Vec3& centre) const override;
+  double reference_height() const override;
+  bool over_fence(const Vec3& from, const Vec3& to) const override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sweetspot

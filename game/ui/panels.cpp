@@ -99,7 +99,7 @@ bool impact_picker(PanelContext& c) {
     dl->AddText(ImVec2(o.x + 2, o.y + 2), IM_COL32(180, 180, 180, 255), "knob");
     dl->AddText(ImVec2(o.x + w - 24, o.y + 2), IM_COL32(180, 180, 180, 255), "tip");
     if (clicked) {
-      const double from_tip = std::clamp((x_tip - m.x) / scale, 0.0, 0.45);
+      const double from_tip = std::clamp(static_cast<double>((x_tip - m.x) / scale), 0.0, 0.45);
       const double undercut = std::clamp(-(m.y - centre.y) / 0.5 / 1000.0, -0.05, 0.05);
       if (std::abs(from_tip - s.bat_swing.impact_from_tip) > 2e-3 || std::abs(undercut - s.bat_swing.undercut) > 5e-4) {
         c.state.set("swing.impact_from_tip", quantity_text(from_tip * 1000.0, "mm"));
@@ -153,7 +153,8 @@ bool shot_panel(PanelContext& c) {
     changed |= slider(st, "dynamic loft", "swing.dynamic_loft", to_deg(loft), 5, 65, "deg");
     changed |= slider(st, "face angle", "swing.face_angle", to_deg(g.face_angle), -10, 10, "deg");
     changed |= slider(st, "closure rate", "swing.closure_rate", to_deg(g.closure_rate), 0, 3000, "deg/s", "%.0f");
-    ImGui::Text("impact: toe %+.0f mm, up %+.0f mm (click the face)", g.impact_toe * 1000, g.impact_up * 1000);
+    ImGui::Text("impact: toe %+.0f mm, up %+.0f mm", g.impact_toe * 1000, g.impact_up * 1000);
+    ImGui::TextDisabled("click the face to move the impact point");
   } else {
     if (combo("bat", s.bat.name, eq.bats, [](const BatSpec& x) { return x.name; }, chosen)) {
       st.set("bat.name", chosen);
@@ -165,8 +166,8 @@ bool shot_panel(PanelContext& c) {
     changed |= slider(st, "direction", "swing.direction", to_deg(b.direction), -45, 45, "deg");
     changed |= slider(st, "pitch speed", "pitch.speed", mps_to_mph(c.scenario.pitch.speed), 0, 105, "mph");
     changed |= slider(st, "pitch spin", "pitch.spin", radps_to_rpm(c.scenario.pitch.spin), 0, 3000, "rpm", "%.0f");
-    ImGui::Text("impact: %.1f in from tip, undercut %+.0f mm (click the barrel)", b.impact_from_tip / 0.0254,
-                b.undercut * 1000);
+    ImGui::Text("impact: %.1f in from tip, undercut %+.0f mm", b.impact_from_tip / 0.0254, b.undercut * 1000);
+    ImGui::TextDisabled("click the barrel: along = impact point, up = undercut");
   }
   changed |= impact_picker(c);
   ImGui::End();

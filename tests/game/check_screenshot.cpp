@@ -1,4 +1,4 @@
-// check_screenshot FILE WIDTH HEIGHT: exits 0 when FILE is a PNG of that size that shows a
+// check_screenshot FILE WIDTH HEIGHT [MIN_COLOURS]: exits 0 when FILE is a PNG of that size that shows a
 // real frame (many colours, not one flat fill), 1 otherwise with the reason. Used by the
 // Xvfb game test so CI needs no image tools beyond the project's own dependencies.
 #include <cstdio>
@@ -10,8 +10,8 @@
 #include <stb_image.h>
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: check_screenshot FILE WIDTH HEIGHT\n");
+  if (argc != 4 && argc != 5) {
+    std::fprintf(stderr, "usage: check_screenshot FILE WIDTH HEIGHT [MIN_COLOURS]\n");
     return 2;
   }
   int w = 0, h = 0, n = 0;
@@ -26,14 +26,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: %dx%d, expected %dx%d\n", argv[1], w, h, want_w, want_h);
     rc = 1;
   }
-  // A rendered scene with panels has thousands of colours; a blank or clear-only frame
-  // has one or two. Quantise to 5 bits per channel so noise does not count.
+  // A rendered scene with panels has hundreds of colours even at 5 bits per channel (the
+  // quantisation keeps noise from counting); a blank or clear-only frame has one or two.
+  const std::size_t min_colours = argc == 5 ? static_cast<std::size_t>(std::atol(argv[4])) : 200;
   std::set<unsigned> colours;
   for (long i = 0; i < static_cast<long>(w) * h; ++i) {
     const unsigned char* p = px + 4 * i;
     colours.insert((p[0] >> 3) << 10 | (p[1] >> 3) << 5 | (p[2] >> 3));
   }
-  if (colours.size() < 200) {
+  if (colours.size() < min_colours) {
     std::fprintf(stderr, "%s: only %zu distinct colours, the frame looks empty\n", argv[1], colours.size());
     rc = 1;
   }

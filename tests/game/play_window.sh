@@ -28,5 +28,5 @@ grep -q "no-such-scenario" "$work/bad.txt"
 (cd "$work" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play golf/7-iron > headless.txt)
 grep -q "no display" "$work/headless.txt"
 grep -qi "carry" "$work/headless.txt"
-if grep -q "^image: sweetspot-play.png" "$work/headless.txt"; then "$check" "$work/sweetspot-play.png" 1280 800; fi
+if grep -q "^image: sweetspot-play.png" "$work/headless.txt"; then "$check" "$work/sweetspot-play.png" 1280 800 50; fi
 echo "play window test passed"

@@ -57,6 +57,7 @@ struct BatNumbers {
 struct ShotResult {
   std::string scenario;             ///< built-in name or path
   Sport sport = Sport::Golf;
+  std::string world;                ///< world the shot flew on ("golf_hole", "ballpark", "none")
   LaunchState launch_state;         ///< ball at separation (world frame)
   LaunchMetrics launch;             ///< launch-monitor numbers derived from launch_state
   double smash_factor = 0.0;        ///< ball speed / impactor speed (0 for launch-only)

@@ -2,6 +2,10 @@
 // path of DESIGN §1 (delivery -> impact -> launch -> flight/world -> result).
 #include "game/scenario/scenario.hpp"
 
+#include <map>
+#include <memory>
+
+#include "game/assets/assets.hpp"
 #include "game/equipment/equipment_file.hpp"
 #include "game/report/report.hpp"
 #include "game/scenario/scenario_air.hpp"
@@ -63,6 +67,19 @@ std::vector<Expectation> expectations_from(const CheckedDoc& doc) {
 
 BallProperties ball_properties(const BallSpec& b) { return {b.mass, b.radius, b.inertia}; }
 
+// Worlds are built once per thread (a World keeps query scratch state and is not
+// thread-safe); sweeps and the UI reuse them shot after shot.
+const World* cached_world(const std::string& name) {
+  if (name == kFlatWorld) return nullptr;
+  thread_local std::map<std::string, std::unique_ptr<World>> cache;
+  auto& slot = cache[name];
+  if (!slot) slot = std::make_unique<World>(load_world(name));
+  return slot.get();
+}
+
+// Rotation about +y that turns the target line (+x) by `aim` toward +z (right).
+Mat3 aim_rotation(double aim) { return Eigen::AngleAxisd(-aim, Vec3::UnitY()).toRotationMatrix(); }
+
 void fill_club_numbers(const Scenario& s, const Delivery& d, ClubNumbers& c) {
   const auto& w = s.golf_swing;
   c.club = s.club.name;
@@ -89,6 +106,32 @@ void fill_bat_numbers(const Scenario& s, const Delivery& d, BatNumbers& b) {
   b.undercut = w.undercut;
   b.pitch_speed = s.pitch.speed;
   b.pitch_spin = s.pitch.spin;
+}
+
+// The ball's resting height on the world at world.ball_position, and the lie check.
+void place_golf_ball(const CheckedDoc& doc, const World* world, Scenario& s) {
+  s.aim = doc.quantity("world.aim");
+  if (world == nullptr) {
+    if (!s.lie.empty() && s.lie != "fairway") {
+      throw InputError(doc.origin("world.lie") + ": world.lie: the flat ground (world none) is fairway, not " + s.lie);
+    }
+    return;
+  }
+  SurfaceContact hit;
+  const Vec3 probe(s.ball_offset.x(), world->description().bounds_max.y(), s.ball_offset.z());
+  const double reach = world->description().bounds_max.y() - world->description().bounds_min.y();
+  if (!world->support(probe, s.ball.radius, reach, &hit)) {
+    throw InputError(doc.origin("world.ball_position") + ": world.ball_position: no ground under [" +
+                     std::to_string(s.ball_offset.x()) + " m, " + std::to_string(s.ball_offset.z()) + " m] in world " +
+                     s.world);
+  }
+  s.ball_offset.y() = hit.point.y();
+  const std::string surface = to_string(world->material(hit.material).kind);
+  s.start_surface = surface;
+  if (!s.lie.empty() && surface != s.lie) {
+    throw InputError(doc.origin("world.lie") + ": world.lie: the ball at world.ball_position lies on " + surface +
+                     ", not " + s.lie);
+  }
 }
 
 }  // namespace
@@ -164,11 +207,14 @@ Scenario scenario_from_doc(const ScenarioDoc& raw, std::string name) {
 
   s.environment = environment_from(doc);
   s.aero = &aero_from(doc);
-  s.world = doc.text_if_set("world.name").value_or("");
-  if (!s.world.empty()) {
-    throw InputError(doc.origin("world.name") +
-                     ": world.name: course and ballpark worlds are not in this build yet; leave it out for the flat ground");
+  s.world = doc.text_if_set("world.name").value_or(default_world_name(to_string(s.sport)));
+  const World* world = nullptr;
+  try {
+    world = cached_world(s.world);
+  } catch (const InputError& e) {
+    throw InputError(doc.origin("world.name") + ": world.name: " + e.what() + " (or none for the flat ground)");
   }
+  if (s.sport == Sport::Golf) place_golf_ball(doc, world, s);
   s.expectations = expectations_from(doc);
   return s;
 }
@@ -186,16 +232,13 @@ ShotResult run_scenario(const Scenario& s, const RunOptions& options) {
   r.sport = s.sport;
   if (s.launch) {
     const auto& l = *s.launch;
-    const Vec3 start = s.sport == Sport::Golf ? Vec3(s.ball_offset + Vec3(0.0, s.ball.radius, 0.0))
-                                              : Vec3(0.0, kBaseballContactHeight, 0.0);
+    const Vec3 start(0.0, s.sport == Sport::Golf ? s.ball.radius : kBaseballContactHeight, 0.0);
     r.launch_state = launch_from_metrics(l.ball_speed, l.vertical_angle, l.horizontal_angle, l.spin, l.spin_axis, start);
   } else {
     const Delivery d = s.sport == Sport::Golf ? deliver_golf(s.ball, s.club, s.golf_swing, s.material)
                                               : deliver_baseball(s.ball, s.bat, s.bat_swing, s.pitch, s.material);
     r.launch_state = d.launch;
-    r.launch_state.position += s.ball_offset;
     r.impactor_at_impact = d.impactor_at_impact;
-    r.impactor_at_impact.position += s.ball_offset;
     r.has_impactor = true;
     r.smash_factor = d.smash_factor;
     auto& i = r.impact;
@@ -214,7 +257,25 @@ ShotResult run_scenario(const Scenario& s, const RunOptions& options) {
       fill_bat_numbers(s, d, r.bat);
     }
   }
+  // Delivery works at the origin along +x; move the shot to the ball's spot on the world
+  // and turn it to the aim line. Launch numbers are measured relative to the aim line.
   r.launch = measure_launch(r.launch_state);
+  if (s.aim != 0.0 || !s.ball_offset.isZero(0.0)) {
+    const Mat3 R = aim_rotation(s.aim);
+    const Vec3 ball0(0.0, s.sport == Sport::Golf ? s.ball.radius : kBaseballContactHeight, 0.0);
+    auto& L = r.launch_state;
+    L.position = s.ball_offset + ball0 + R * (L.position - ball0);
+    L.velocity = R * L.velocity;
+    L.spin = R * L.spin;
+    if (r.has_impactor) {
+      auto& P = r.impactor_at_impact;
+      P.position = s.ball_offset + ball0 + R * (P.position - ball0);
+      P.orientation = Quat(R) * P.orientation;
+      P.velocity = R * P.velocity;
+      P.angular_velocity = R * P.angular_velocity;
+    }
+  }
+  r.world = s.world;
   if (!options.fly) return r;
 
   FlightInput in;
@@ -223,7 +284,7 @@ ShotResult run_scenario(const Scenario& s, const RunOptions& options) {
   in.environment = s.environment;
   in.aero = s.aero;
   in.settings.record_samples = options.record_samples;
-  r.trajectory = simulate_shot(in, nullptr);
+  r.trajectory = simulate_shot(in, cached_world(s.world));
   return r;
 }
 

@@ -24,6 +24,9 @@
 
 namespace sweetspot {
 
+/// world.name for the infinite flat fairway (no course or ballpark), as `flight --world none`.
+inline constexpr const char* kFlatWorld = "none";
+
 /// A launch-only scenario (`[launch]` section): the ball leaves with these launch-monitor
 /// numbers and no club or bat is simulated. SI.
 struct LaunchOnly {
@@ -55,9 +58,13 @@ struct Scenario {
   std::optional<LaunchOnly> launch;  ///< set: launch-only, no impact
   Environment environment;
   const AeroModel* aero = nullptr;   ///< never null after load
-  std::string world;              ///< world asset name; "" = the flat default ground
-  Vec3 ball_offset = Vec3::Zero();   ///< golf: ball's horizontal position (x, 0, z) on the world, m
+  std::string world;              ///< world asset name ("golf_hole", "ballpark") or kFlatWorld
+  /// Golf: where the ball rests, m: (x, ground height, z) from world.ball_position; the
+  /// tee at the origin is (0, 0, 0). Baseball: zero (contact above home plate).
+  Vec3 ball_offset = Vec3::Zero();
+  double aim = 0.0;               ///< golf: rad, target line turned right of +x (world.aim)
   std::string lie;                ///< golf: required surface under the ball ("" = any)
+  std::string start_surface;      ///< golf: surface the ball rests on ("tee", "sand", ...)
   std::vector<Expectation> expectations;
   ScenarioDoc doc;                ///< the document it came from (origins, `regress --update`)
 };
@@ -74,7 +81,8 @@ struct RunOptions {
   bool record_samples = true;  ///< false: summary only (sweeps, benchmarks)
 };
 
-/// Delivery -> impact -> launch -> flight on the scenario's world. Deterministic.
+/// Delivery -> impact -> launch -> flight on the scenario's world. Deterministic. The
+/// world is loaded once per calling thread and kept (thread_local cache).
 ShotResult run_scenario(const Scenario& s, const RunOptions& options = {});
 
 /// DESIGN §6 JSON of a shot of `s` (the report's shot_json; the scenario adds nothing the

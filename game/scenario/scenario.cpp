@@ -3,6 +3,7 @@
 #include "game/scenario/scenario.hpp"
 
 #include <map>
+#include <mutex>
 #include <memory>
 
 #include "game/assets/assets.hpp"
@@ -67,13 +68,23 @@ std::vector<Expectation> expectations_from(const CheckedDoc& doc) {
 
 BallProperties ball_properties(const BallSpec& b) { return {b.mass, b.radius, b.inertia}; }
 
-// Worlds are built once per thread (a World keeps query scratch state and is not
-// thread-safe); sweeps and the UI reuse them shot after shot.
+// The parsed world meshes are immutable, so one copy serves the process (reading the OBJ
+// with assimp is ~100 ms for the golf hole); the Bullet World built from them (~30 ms)
+// keeps query scratch state and is not thread-safe, so each thread builds its own, once.
+std::shared_ptr<const WorldDescription> shared_world_description(const std::string& name) {
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const WorldDescription>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = cache[name];
+  if (!slot) slot = std::make_shared<const WorldDescription>(load_world(name));
+  return slot;
+}
+
 const World* cached_world(const std::string& name) {
   if (name == kFlatWorld) return nullptr;
   thread_local std::map<std::string, std::unique_ptr<World>> cache;
   auto& slot = cache[name];
-  if (!slot) slot = std::make_unique<World>(load_world(name));
+  if (!slot) slot = std::make_unique<World>(*shared_world_description(name));
   return slot.get();
 }
 

@@ -92,6 +92,7 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept {
 
   ImpactResult res;
   res.e_used = mat.e.at(-un);
+  res.e_t_used = mat.e_t * mat.e_t_scale.at(-un);
   const double e = res.e_used;
   const Vec3 kn = k * n;
   const double jn_frictionless = -(1.0 + e) * un / n.dot(kn);
@@ -114,7 +115,7 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept {
     case FrictionModel::Coulomb: {
       // The impulse that ends the impact at normal separation −e·un and tangential
       // velocity −e_t·u_t; keep it if it lies inside the friction cone (grip).
-      const Vec3 target_change = -(1.0 + e) * un * n - (1.0 + mat.e_t) * ut;
+      const Vec3 target_change = -(1.0 + e) * un * n - (1.0 + res.e_t_used) * ut;
       const Vec3 p_stick = solve_spd3(k, target_change);
       const double pn = p_stick.dot(n);
       const Vec3 pt = p_stick - pn * n;
@@ -231,6 +232,18 @@ std::string validate_impact(const ImpactInput& in) {
     }
     if (i > 0 && !(m.e.speed[k] > m.e.speed[k - 1])) {
       return "impact.e: table speeds must be strictly increasing";
+    }
+  }
+  if (m.e_t_scale.count < 1 || m.e_t_scale.count > CorCurve::kMaxPoints) {
+    return "impact.e_t_scale: the table needs 1 to 8 points";
+  }
+  for (int i = 0; i < m.e_t_scale.count; ++i) {
+    const auto k = static_cast<size_t>(i);
+    if (!(m.e_t_scale.cor[k] >= 0.0 && m.e_t_scale.cor[k] <= 1.0)) {
+      return "impact.e_t_scale: factors must be in [0, 1], got " + std::to_string(m.e_t_scale.cor[k]);
+    }
+    if (i > 0 && !(m.e_t_scale.speed[k] > m.e_t_scale.speed[k - 1])) {
+      return "impact.e_t_scale: table speeds must be strictly increasing";
     }
   }
   if (!(m.e_t >= 0.0 && m.e_t <= 1.0)) {

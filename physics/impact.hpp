@@ -51,7 +51,11 @@ struct CorCurve {
 /// Contact material pair: restitution and friction between impactor and ball.
 struct ImpactMaterial {
   CorCurve e = CorCurve::constant(0.83);  ///< normal restitution; USGA limit for a driver face is 0.830
-  double e_t = 0.0;   ///< tangential restitution in [0, 1]; 0 = ball rolls off the face (golf), 0.1–0.3 bat
+  double e_t = 0.0;   ///< tangential restitution in [0, 1]; 0 = ball rolls off the face, 0.1–0.3 bat
+  /// Factor in [0, 1] on e_t as a function of normal approach speed (m/s): the tangential
+  /// rebound of a compressed ball fades at high impact speed, as the normal COR does. The
+  /// effective value is e_t · e_t_scale.at(speed). Default: 1 at every speed.
+  CorCurve e_t_scale = CorCurve::constant(1.0);
   double mu = 0.4;    ///< Coulomb friction coefficient ≥ 0; club face/ball ~0.35–0.45
   FrictionModel friction = FrictionModel::Coulomb;
 };
@@ -78,6 +82,7 @@ struct ImpactResult {
   double normal_impulse = 0.0;     ///< N·s, impulse·n (≥ 0)
   double tangential_impulse = 0.0; ///< N·s, magnitude of the tangential part
   double e_used = 0.0;             ///< the restitution the curve gave at this approach speed
+  double e_t_used = 0.0;           ///< the tangential restitution used: e_t · e_t_scale(speed)
   ContactKind contact = ContactKind::Frictionless;
   double energy_loss = 0.0;        ///< J, kinetic energy before − after (negative = created)
   /// Coulomb only. True when the model's impulse would have CREATED kinetic energy and was

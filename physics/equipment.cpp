@@ -1,0 +1,128 @@
+// Equipment validation and the bat's profile look-ups.
+#include "physics/equipment.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+
+namespace {
+
+// Linear interpolation in a table of (x, y) with x increasing, held constant past the ends.
+double interpolate(const std::vector<std::pair<double, double>>& t, double x) {
+  if (t.empty()) return 1.0;
+  if (x <= t.front().first) return t.front().second;
+  for (size_t i = 1; i < t.size(); ++i) {
+    if (x <= t[i].first) {
+      const double f = (x - t[i - 1].first) / (t[i].first - t[i - 1].first);
+      return t[i - 1].second + f * (t[i].second - t[i - 1].second);
+    }
+  }
+  return t.back().second;
+}
+
+[[noreturn]] void fail(const std::string& who, const std::string& field, const std::string& range, double got,
+                       double display_scale = 1.0, const char* unit = "") {
+  std::ostringstream os;
+  os << who << ": " << field << " must be " << range << ", got " << got * display_scale << unit;
+  throw InputError(os.str());
+}
+
+void check_range(const std::string& who, const std::string& field, double v, double lo, double hi,
+                 const std::string& range, double display_scale = 1.0, const char* unit = "") {
+  if (!(v >= lo && v <= hi)) fail(who, field, range, v, display_scale, unit);
+}
+
+constexpr double kDeg = 180.0 / kPi;
+
+}  // namespace
+
+double BatSpec::radius_at(double from_knob) const {
+  if (barrel_profile.empty() || from_knob < barrel_profile.front().first ||
+      from_knob > barrel_profile.back().first) {
+    return 0.0;
+  }
+  return interpolate(barrel_profile, from_knob);
+}
+
+double BatSpec::cor_factor_at(double from_tip) const { return interpolate(cor_profile, from_tip); }
+
+void validate_material(const ImpactMaterial& m, const std::string& what) {
+  // Reuse the solver's checks on a trivially valid impact carrying this material.
+  ImpactInput probe;
+  probe.impactor.inv_mass = 1.0;
+  probe.impactor.velocity = Vec3(1, 0, 0);
+  probe.ball.inv_mass = 1.0;
+  probe.material = m;
+  if (auto msg = validate_impact(probe); !msg.empty()) throw InputError(what + ": " + msg);
+}
+
+void validate_ball(const BallSpec& b) {
+  const std::string who = "ball '" + b.name + "'";
+  check_range(who, "mass", b.mass, 0.01, 0.5, "in [10, 500] g", 1000.0, " g");
+  check_range(who, "radius", b.radius, 0.01, 0.1, "in [10, 100] mm", 1000.0, " mm");
+  // A sphere's moment of inertia lies between a thin shell (2/3 m R²) and ... any
+  // realistic core concentration (0.2 m R²).
+  const double mr2 = b.mass * b.radius * b.radius;
+  if (!(b.inertia >= 0.2 * mr2 && b.inertia <= (2.0 / 3.0) * mr2)) {
+    std::ostringstream os;
+    os << who << ": inertia must be in [0.2, 0.667]·m·R² = [" << 0.2 * mr2 << ", " << (2.0 / 3.0) * mr2
+       << "] kg·m², got " << b.inertia;
+    throw InputError(os.str());
+  }
+}
+
+void validate_club(const ClubSpec& c) {
+  const std::string who = "club '" + c.name + "'";
+  check_range(who, "loft", c.loft, 0.0, deg_to_rad(70), "in [0, 70] deg", kDeg, " deg");
+  check_range(who, "lie", c.lie, deg_to_rad(40), deg_to_rad(80), "in [40, 80] deg", kDeg, " deg");
+  check_range(who, "dynamic_loft", c.dynamic_loft, 0.0, deg_to_rad(80), "in [0, 80] deg", kDeg, " deg");
+  check_range(who, "head_mass", c.head_mass, 0.05, 1.0, "in [50, 1000] g", 1000.0, " g");
+  if (!c.cg.allFinite() || c.cg.x() > 0.0 || c.cg.norm() > 0.1) {
+    std::ostringstream os;
+    os << who << ": cg must be finite, behind the face (x <= 0) and within 100 mm of the face centre, got ["
+       << c.cg.x() * 1000 << ", " << c.cg.y() * 1000 << ", " << c.cg.z() * 1000 << "] mm";
+    throw InputError(os.str());
+  }
+  if (auto msg = validate_mass_properties(c.head_mass, c.inertia, who); !msg.empty()) throw InputError(msg);
+  check_range(who, "bulge_radius", c.bulge_radius, 0.1, 1000.0, "in [0.1, 1000] m", 1.0, " m");
+  check_range(who, "roll_radius", c.roll_radius, 0.1, 1000.0, "in [0.1, 1000] m", 1.0, " m");
+  check_range(who, "length", c.length, 0.5, 1.3, "in [0.5, 1.3] m", 1.0, " m");
+  validate_material(c.face, who + " face");
+}
+
+void validate_bat(const BatSpec& b) {
+  const std::string who = "bat '" + b.name + "'";
+  check_range(who, "length", b.length, 0.5, 1.2, "in [0.5, 1.2] m", 1.0, " m");
+  check_range(who, "mass", b.mass, 0.3, 2.0, "in [0.3, 2.0] kg", 1.0, " kg");
+  check_range(who, "cg_from_knob", b.cg_from_knob, 0.0, b.length, "inside the bat, in [0, length]", 1.0, " m");
+  check_range(who, "inertia_cg", b.inertia_cg, 1e-3, 1.0, "in [0.001, 1] kg·m²", 1.0, " kg·m²");
+  check_range(who, "inertia_axial", b.inertia_axial, 1e-6, b.inertia_cg, "in [1e-6, inertia_cg] kg·m²", 1.0,
+              " kg·m²");
+  check_range(who, "pivot_from_knob", b.pivot_from_knob, 0.0, 0.5 * b.length, "in [0, length/2]", 1.0, " m");
+  check_range(who, "sweet_spot_from_tip", b.sweet_spot_from_tip, 0.0,
+              b.length - b.pivot_from_knob - 0.05, "between the tip and 5 cm beyond the pivot", 1.0, " m");
+  if (b.barrel_profile.size() < 2) throw InputError(who + ": barrel_profile needs at least 2 (from_knob, radius) points");
+  for (size_t i = 0; i < b.barrel_profile.size(); ++i) {
+    const auto [x, r] = b.barrel_profile[i];
+    if (!(r > 0.0 && r <= 0.05)) fail(who, "barrel_profile radius", "in (0, 50] mm", r, 1000.0, " mm");
+    if (!std::isfinite(x) || (i > 0 && !(x > b.barrel_profile[i - 1].first))) {
+      throw InputError(who + ": barrel_profile distances must be finite and strictly increasing");
+    }
+  }
+  if (std::abs(b.barrel_profile.front().first) > 1e-9 || std::abs(b.barrel_profile.back().first - b.length) > 1e-6) {
+    throw InputError(who + ": barrel_profile must run from the knob (0 m) to the tip (length)");
+  }
+  for (size_t i = 0; i < b.cor_profile.size(); ++i) {
+    const auto [x, f] = b.cor_profile[i];
+    if (!(f > 0.0 && f <= 1.0)) fail(who, "cor_profile factor", "in (0, 1]", f);
+    if (!std::isfinite(x) || (i > 0 && !(x > b.cor_profile[i - 1].first))) {
+      throw InputError(who + ": cor_profile distances must be finite and strictly increasing");
+    }
+  }
+  validate_material(b.material, who + " material");
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,80 @@
+// Equipment parameter sets (DESIGN §3): the balls, the golf bag and the bats, as plain
+// immutable data. Values live in assets/equipment/*.toml with their sources; the loader is
+// game/equipment/equipment_file.hpp. Everything SI.
+//
+// HEAD FRAME (also the club mesh frame): origin at the face centre, +x out of the face
+// (toward the ball when square), +y up along the face, +z toward the toe, at the club's
+// static-loft = 0 orientation; delivery applies the dynamic loft by rotation.
+// BAT FRAME (also the bat mesh frame): origin at the knob end, +x along the axis to the tip.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "physics/impact.hpp"
+#include "physics/math.hpp"
+
+namespace sweetspot {
+
+struct BallSpec {
+  std::string name;     ///< "tour" (golf), "mlb" (baseball)
+  double mass = 0.04593;    ///< kg; golf 45.93 g (USGA max), baseball 0.145
+  double radius = 0.021335; ///< m; golf 42.67 mm diameter, baseball 36.9 mm radius
+  double inertia = 8.363e-6;///< kg·m² about any diameter; 0.4 m R² for both balls (DESIGN §3)
+  /// m. A deforming ball's contact pressure centre runs ahead of its centre of mass in the
+  /// direction it slides across the face (as in rolling resistance), so the normal impulse
+  /// acts on a line offset by this distance and opposes the spin friction builds. McNally,
+  /// McPhee & Henrikson (Waterloo/Ping, Proc. ISEA 2020, 49:47) fit ~0.5 mm to measured
+  /// driver impacts, removing ~85 % of a rigid model's backspin error. 0 = rigid ball.
+  double contact_offset = 0.0;
+};
+
+struct ClubSpec {
+  std::string name;      ///< "driver","3-wood","5-wood","hybrid","3-iron".."9-iron","pw","sw","lw"
+  double loft = 0.171;   ///< rad, static loft; driver 9.8°, 7-iron 34°
+  double lie = 1.03;     ///< rad, static lie; driver ~59°, 7-iron ~62.5°
+  double dynamic_loft = 0.22;  ///< rad, typical delivered loft of a tour player (scenario default)
+  double head_mass = 0.204;    ///< kg; driver 204 g, 7-iron ~267 g
+  Vec3 cg{-0.0423, 0.0, 0.0};  ///< m, CG in the head frame (x < 0: behind the face)
+  Mat3 inertia = Mat3::Identity() * 4e-4;  ///< kg·m² about the CG in head axes; driver ~2.8e-4..5.7e-4
+  double bulge_radius = 0.305; ///< m, heel-toe face curvature; irons ~10 m (flat)
+  double roll_radius = 0.305;  ///< m, sole-crown face curvature; irons ~10 m (flat)
+  ImpactMaterial face;         ///< ball–face e curve, e_t, µ, friction model
+  double length = 1.14;        ///< m, shaft length (display and rendering only)
+};
+
+struct BatSpec {
+  std::string name;           ///< "maple" (wood), "bbcor" (alloy)
+  double length = 0.84;       ///< m; a 33 in bat
+  double mass = 0.989;        ///< kg
+  double cg_from_knob = 0.575;///< m; Cross & Nathan's wood bat: 0.265 m from the barrel end
+  double inertia_cg = 0.046;  ///< kg·m² about the CG, transverse axis
+  double inertia_axial = 2.0e-4;  ///< kg·m² about the long axis (small; ~ ½ m r² of the barrel)
+  /// (distance from knob m, radius m), distances strictly increasing, first at 0, last at
+  /// `length`. The barrel is 1.3 in (33 mm) in radius at most (MLB rule 3.02).
+  std::vector<std::pair<double, double>> barrel_profile;
+  double sweet_spot_from_tip = 0.1524;  ///< m; Statcast: 6 in
+  double pivot_from_knob = 0.15;        ///< m; the swing's rotation centre, near the hands
+  ImpactMaterial material;     ///< ball–bat e curve, e_t, µ
+  /// Ball–bat restitution multiplier along the barrel, (distance from tip m, factor ≤ 1),
+  /// distances increasing. Models the barrel vibrations a rigid bat lacks (Nathan 2000;
+  /// Cross 1999): COR peaks near the node ~5–7 in from the tip and falls toward both ends.
+  /// Empty = 1 everywhere.
+  std::vector<std::pair<double, double>> cor_profile;
+
+  /// Barrel radius (m) at `from_knob` (m), linear between profile points, 0 outside.
+  double radius_at(double from_knob) const;
+  /// Restitution factor at `from_tip` (m), linear between cor_profile points, held at ends.
+  double cor_factor_at(double from_tip) const;
+};
+
+/// Each throws InputError naming the field and its allowed range ("club 'driver': loft
+/// must be in [0, 70] deg, got ...").
+void validate_ball(const BallSpec& b);
+void validate_club(const ClubSpec& c);
+void validate_bat(const BatSpec& b);
+/// Throws InputError on an invalid ball–impactor material (`what` prefixes the message).
+void validate_material(const ImpactMaterial& m, const std::string& what);
+
+}  // namespace sweetspot

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# `sweetspot bench --quick [--json]`: one JSON object with a positive impact_solves_per_s,
+# a table without --json, and a bad flag -> exit 2. Runs in well under 5 s.
+set -euo pipefail
+bin="$1"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+out=$("$bin" bench --quick --json)
+python3 - "$out" <<'PY' || fail "json"
+import json, sys
+j = json.loads(sys.argv[1])
+v = j["impact_solves_per_s"]
+assert isinstance(v, (int, float)) and v > 1e5, f"impact_solves_per_s = {v}"
+PY
+"$bin" bench --quick | grep -q "impact solves/s" || fail "table output"
+set +e
+"$bin" bench --bogus >/dev/null 2>&1
+rc=$?
+set -e
+[ "$rc" -eq 2 ] || fail "bad flag exit code $rc, want 2"

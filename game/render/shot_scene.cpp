@@ -94,11 +94,13 @@ std::optional<double> ray_triangle(const Vec3& o, const Vec3& d, const Vec3& a, 
   const double det = e1.dot(p);
   if (std::abs(det) < 1e-12) return std::nullopt;
   const Vec3 s = o - a;
+  // A small tolerance so a ray along a shared edge (a foul line at a wall joint) still hits.
+  constexpr double kEdge = 1e-7;
   const double u = s.dot(p) / det;
-  if (u < 0 || u > 1) return std::nullopt;
+  if (u < -kEdge || u > 1 + kEdge) return std::nullopt;
   const Vec3 q = s.cross(e1);
   const double v = d.dot(q) / det;
-  if (v < 0 || u + v > 1) return std::nullopt;
+  if (v < -kEdge || u + v > 1 + kEdge) return std::nullopt;
   const double t = e2.dot(q) / det;
   return t > 0 ? std::optional<double>(t) : std::nullopt;
 }

@@ -35,7 +35,7 @@ struct SurfaceMaterial {
   CorCurve e = CorCurve::constant(0.4);  ///< normal restitution vs normal impact speed (turf: ~0.5 slow, ~0.15 at 20 m/s)
   double mu = 0.4;                       ///< ball–surface Coulomb friction (Penner: 0.4 on a green)
   /// Rolling resistance: the rolling ball decelerates at rolling_resistance · g on the flat.
-  /// Green (stimp 10 ft) ~0.055, fairway ~0.12, rough ~0.3, sand ~1. Ignored when stimp > 0.
+  /// Green (stimp 10 ft) ~0.055, fairway ~0.16, rough ~0.3, sand ~1. Ignored when stimp > 0.
   double rolling_resistance = 0.12;
   double stimp = 0.0;                    ///< m; Stimpmeter reading (tour greens 3.0–4.0 m); > 0 sets rolling_resistance
   /// Turf crater tilt of the bounce normal, rad, at the reference impact (18.6 m/s at 44.4°

@@ -8,12 +8,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "game/assets/assets.hpp"
 #include "game/cli/command.hpp"
 #include "game/environment_keys.hpp"
 #include "game/report/flight_json.hpp"
 #include "physics/error.hpp"
 #include "physics/flight.hpp"
 #include "physics/units.hpp"
+#include "physics/world.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -24,7 +26,7 @@ struct FlightOptions {
   std::string spin_axis = "0deg";
   std::string direction = "0deg";
   std::string aero;
-  std::string world = "none";
+  std::string world;  // empty: the sport's default world
   std::vector<std::string> sets;
   bool json = false;
 };
@@ -73,7 +75,8 @@ RunFn setup_flight(CLI::App& sub) {
   sub.add_option("--spin-axis", o->spin_axis, "spin axis, + curves right, e.g. -3deg (-90..90 deg)")->capture_default_str();
   sub.add_option("--direction", o->direction, "horizontal launch angle, + right (-90..90 deg)")->capture_default_str();
   sub.add_option("--aero", o->aero, "aero model: ferguson2022 (golf default), smits_smith1994, nathan (baseball default)");
-  sub.add_option("--world", o->world, "world to land on: none (flat fairway at y = 0)")->capture_default_str();
+  sub.add_option("--world", o->world,
+                 "world: golf_hole (golf default), ballpark (baseball default), a .toml path, or none (flat fairway)");
   sub.add_option("--set", o->sets, "environment.KEY=VALUE, e.g. environment.temperature=90F");
   sub.add_flag("--json", o->json, "print the DESIGN §6 JSON object");
   return [o]() -> int {
@@ -95,23 +98,33 @@ RunFn setup_flight(CLI::App& sub) {
       set_environment_key(in.environment, key, kv.substr(eq + 1));
     }
     check_environment(in.environment);
-    if (o->world != "none") throw InputError("--world '" + o->world + "': allowed: none");
+    // The same world and ground as a full shot: the sport's default unless told otherwise.
+    const std::string world_name = o->world.empty() ? default_world_name(o->sport) : o->world;
+    std::unique_ptr<World> world;
+    if (world_name != "none") {
+      try {
+        world = std::make_unique<World>(load_world(world_name));
+      } catch (const InputError& e) {
+        throw InputError(std::string("--world: ") + e.what());
+      }
+      for (const std::string& note : world->description().notes) std::cerr << "sweetspot: note: " << note << "\n";
+    }
     // Golf: ball centre on the ground at the tee (origin). Baseball: contact 0.9 m above home plate.
     const Vec3 start = o->sport == "golf" ? Vec3(0.0, in.ball.radius, 0.0) : Vec3(0.0, 0.9, 0.0);
     in.launch = launch_from_metrics(speed, launch, dir, spin, axis, start);
-    const ShotTrajectory tr = simulate_shot(in, nullptr);
+    const ShotTrajectory tr = simulate_shot(in, world.get());
     if (o->json) {
       nlohmann::json j;
       j["scenario"] = "flight";
       j["sport"] = o->sport;
       j["aero"] = in.aero->name;
-      j["world"] = o->world;
+      j["world"] = world_name;
       j["air_density_kgm3"] = air_density(in.environment);
       j["launch"] = launch_json(measure_launch(in.launch));
       j["flight"] = flight_json(tr.summary);
       std::cout << j.dump(2) << "\n";
     } else {
-      print_table(in, o->sport, o->world, tr);
+      print_table(in, o->sport, world_name, tr);
     }
     return 0;
   };

@@ -1,14 +1,15 @@
-// `sweetspot render -o FILE.png`: an off-screen image of a shot (DESIGN §7).
+// `sweetspot render SCENARIO -o FILE.png`: an off-screen image of a shot (DESIGN §7).
 //
-// The shot comes from a ShotSource. Today that is launch-monitor flags flown by the flight
-// model on the flat default ground (as `sweetspot flight`); a positional SCENARIO only needs
-// a second branch in make_shot() that runs the scenario and fills the same struct (with the
-// real ImpactorPose from the delivery instead of the nominal one).
+// The shot comes from a ShotSource: a scenario run through delivery, impact and flight on
+// its world (the club or bat drawn where the delivery put it), or, without SCENARIO,
+// launch-monitor flags flown on the flat default ground (as `sweetspot flight`).
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "game/app/shot_view.hpp"
 #include "game/cli/command.hpp"
 #include "game/render/render_command.hpp"
 #include "game/render/render_error.hpp"
@@ -20,6 +21,8 @@ namespace sweetspot::cli {
 namespace {
 
 struct RenderOptions {
+  std::string scenario;                 // built-in name or .toml; "" = launch flags
+  std::vector<std::string> overrides;   // --set key=value
   std::string output;
   int width = 1280, height = 720;
   std::string camera = "behind";
@@ -79,7 +82,26 @@ ImpactorPlacement nominal_impactor(const std::string& mesh, const LaunchState& l
   return p;
 }
 
+ShotSource scenario_shot(const RenderOptions& o) {
+  if (!o.ball_speed.empty() || !o.launch_angle.empty() || !o.spin.empty())
+    throw InputError("render: give a SCENARIO or the launch flags (--ball-speed, --launch-angle, --spin), not both");
+  const Scenario scenario = load_scenario(o.scenario, o.overrides);
+  const ShotResult result = run_scenario(scenario);
+  const RenderRequest req = render_request_for(scenario, result);
+  ShotSource s;
+  s.trajectory = result.trajectory;
+  s.sport = req.sport;
+  s.ball_radius = req.ball_radius;
+  s.world = req.world;
+  s.impactor = req.impactor;
+  s.impactor_mesh = o.impactor.empty() ? req.impactor_mesh : (o.impactor == "none" ? "" : o.impactor);
+  if (s.impactor_mesh.empty()) s.impactor.reset();
+  return s;
+}
+
 ShotSource make_shot(const RenderOptions& o) {
+  if (!o.scenario.empty()) return scenario_shot(o);
+  if (!o.overrides.empty()) throw InputError("--set needs a SCENARIO (e.g. render golf/driver --set swing.speed=100mph)");
   ShotSource s;
   s.sport = o.sport;
   FlightInput in;
@@ -107,6 +129,8 @@ ShotSource make_shot(const RenderOptions& o) {
 
 RunFn setup_render(CLI::App& sub) {
   auto o = std::make_shared<RenderOptions>();
+  sub.add_option("scenario", o->scenario, "built-in scenario name or .toml path (without it: the launch flags below)");
+  sub.add_option("--set", o->overrides, "override a scenario key, e.g. swing.speed=105mph (repeatable)");
   sub.add_option("-o,--output", o->output, "PNG file to write (written atomically)")->required();
   sub.add_option("--width", o->width, "image width in pixels (16..8192)")->capture_default_str();
   sub.add_option("--height", o->height, "image height in pixels (16..8192)")->capture_default_str();

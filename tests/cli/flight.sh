@@ -18,6 +18,7 @@ f = j["flight"]
 for k in ("carry_m", "total_m", "apex_m", "landing_angle_deg", "hang_time_s", "lateral_m", "end", "rest_position_m"):
     assert k in f, k
 assert j["sport"] == "golf"
+assert j["world"] == "golf_hole", j["world"]  # the sport's default world
 assert abs(j["launch"]["ball_speed_mps"] - 74.65) < 0.01
 # TrackMan PGA driver: 275 yd carry (251.5 m) within 4 %
 assert abs(f["carry_m"] - 251.46) / 251.46 < 0.04, f["carry_m"]
@@ -28,6 +29,15 @@ PY
 
 again=$("$bin" flight --sport golf --ball-speed 167mph --launch-angle 10.9deg --spin 2686rpm --json)
 [ "$out" = "$again" ] || fail "repeated runs differ"
+
+# --world none: the flat fairway; the carry is the same to within the hole's undulation.
+flat=$("$bin" flight --sport golf --ball-speed 167mph --launch-angle 10.9deg --spin 2686rpm --world none --json)
+python3 - "$out" "$flat" <<'PY' || fail "--world none"
+import json, sys
+hole, flat = (json.loads(a) for a in sys.argv[1:3])
+assert flat["world"] == "none"
+assert abs(hole["flight"]["carry_m"] - flat["flight"]["carry_m"]) < 0.01 * flat["flight"]["carry_m"]
+PY
 
 # Baseball, thinner air goes farther; wind from --set.
 sea=$("$bin" flight --sport baseball --ball-speed 103mph --launch-angle 28deg --spin 2000rpm --json)
@@ -40,6 +50,7 @@ sea, den, head = (json.loads(a)["flight"]["carry_m"] for a in sys.argv[1:4])
 assert 415 <= sea / 0.3048 <= 425, sea / 0.3048
 assert 1.05 <= den / sea <= 1.08, den / sea
 assert head < sea - 5, (head, sea)
+assert json.loads(sys.argv[1])["flight"]["end"] == "home_run"
 PY
 
 # The readable table uses display units.
@@ -64,5 +75,7 @@ expect_bad "--spin" --sport golf --ball-speed 150mph --launch-angle 10deg --spin
 expect_bad "humidity" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --set environment.humidity=150%
 expect_bad "allowed" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --set environment.colour=blue
 expect_bad "ferguson2022" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --aero magic
+expect_bad "--world" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --world moon
+expect_bad "golf_hole" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --world moon
 expect_bad "sport" --sport cricket --ball-speed 150mph --launch-angle 10deg --spin 2500rpm
 echo "ok"

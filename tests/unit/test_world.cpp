@@ -115,8 +115,8 @@ TEST_CASE("a ball rolling over a finely tessellated plane keeps a straight line"
     REQUIRE((off - off.dot(dir) * dir).norm() < 1e-9);  // never deflects
     travelled = off.dot(dir);
   }
-  // Rolling resistance c·g: distance v²/(2cg) = 16 / (2 · 0.12 · 9.80665) = 6.80 m.
-  CHECK(travelled == Approx(16.0 / (2.0 * 0.12 * kGravity)).epsilon(1e-6));
+  // Rolling resistance c·g: distance v²/(2cg) = 16 / (2 · 0.16 · 9.80665) = 5.10 m.
+  CHECK(travelled == Approx(16.0 / (2.0 * default_fairway().rolling_resistance * kGravity)).epsilon(1e-9));
   CHECK(tr.summary.bounces <= 1);
 }
 

@@ -1,0 +1,133 @@
+// The generated world assets load through assimp and behave: the hole is playable, the
+// ballpark has its stated fence, and broken files are rejected or repaired with a message.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "game/assets/assets.hpp"
+#include "physics/error.hpp"
+#include "physics/flight.hpp"
+#include "physics/units.hpp"
+
+using namespace sweetspot;
+namespace fs = std::filesystem;
+
+namespace {
+
+bool has_material(const WorldDescription& d, const std::string& name) {
+  for (const auto& m : d.meshes)
+    if (d.materials[static_cast<size_t>(m.material)].name == name) return true;
+  return false;
+}
+
+FlightInput launch(const char* sport, double mph, double deg, double rpm, double dir_deg = 0.0) {
+  FlightInput in;
+  const bool golf = std::string(sport) == "golf";
+  in.aero = &default_aero_model(sport);
+  in.ball = golf ? golf_ball_properties() : baseball_properties();
+  in.launch = launch_from_metrics(mph_to_mps(mph), deg_to_rad(deg), deg_to_rad(dir_deg), rpm_to_radps(rpm), 0.0,
+                                  golf ? Vec3(0.0, in.ball.radius, 0.0) : Vec3(0.0, 0.9, 0.0));
+  return in;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream f(p);
+  f << text;
+}
+
+}  // namespace
+
+TEST_CASE("golf_hole asset: materials, flag, size", "[assets][world]") {
+  const WorldDescription d = load_world("golf_hole");
+  CHECK(d.name == "golf_hole");
+  CHECK(d.sport == "golf");
+  for (const char* m : {"tee", "fairway", "rough", "sand", "green", "water", "flag"}) {
+    INFO(m);
+    CHECK(has_material(d, m));
+  }
+  REQUIRE(d.flag.has_value());
+  CHECK(d.flag->x() == Approx(405.0));
+  CHECK(d.notes.empty());
+  const World world(d);
+  CHECK(world.collision_triangles() > 10000);
+  CHECK(world.collision_triangles() < 50000);
+  SurfaceContact under;
+  REQUIRE(world.support(Vec3(0.0, 0.0213, 0.0), 0.021335, 0.01, &under));
+  CHECK(world.material(under.material).kind == SurfaceKind::Tee);
+  under = SurfaceContact{};
+  REQUIRE(world.support(Vec3(d.flag->x(), d.flag->y() + 0.0213, d.flag->z()), 0.021335, 0.05, &under));
+  CHECK(world.material(under.material).kind == SurfaceKind::Green);
+  CHECK(under.normal.x() < -0.01);  // the green slopes up toward the back
+}
+
+TEST_CASE("TrackMan launches on the golf hole: same carry as flat ground, end at rest", "[assets][world]") {
+  const World world(load_world("golf_hole"));
+  for (const auto& [mph, deg, rpm] : {std::tuple{167.0, 10.9, 2686.0}, {120.0, 16.3, 7097.0}, {102.0, 24.2, 9304.0}}) {
+    INFO(mph);
+    const FlightInput in = launch("golf", mph, deg, rpm);
+    const FlightSummary flat = simulate_shot(in, nullptr).summary;
+    const FlightSummary hole = simulate_shot(in, &world).summary;
+    // The fairway undulates by tens of centimetres: carry moves by well under 1 %.
+    CHECK(hole.carry_m == Approx(flat.carry_m).epsilon(0.01));
+    CHECK(hole.end == EndReason::Rest);
+    CHECK(hole.total_m > 0.9 * hole.carry_m);
+  }
+}
+
+TEST_CASE("ballpark asset: fence at 330 ft on the lines and 400 ft to centre", "[assets][world]") {
+  const WorldDescription d = load_world("ballpark");
+  for (const char* m : {"dirt", "grass", "warning_track", "wall", "foul_line"}) {
+    INFO(m);
+    CHECK(has_material(d, m));
+  }
+  REQUIRE(d.fence_line.size() >= 3);
+  const auto dist_ft = [](const Vec3& p) { return m_to_ft(std::hypot(p.x(), p.z())); };
+  CHECK(dist_ft(d.fence_line.front()) == Approx(330.0).epsilon(1e-4));
+  CHECK(dist_ft(d.fence_line.back()) == Approx(330.0).epsilon(1e-4));
+  CHECK(dist_ft(d.fence_line[d.fence_line.size() / 2]) == Approx(400.0).epsilon(1e-4));
+  CHECK(d.fence_line.front().z() < 0.0);  // left field first
+  CHECK(m_to_ft(d.fence_height) == Approx(10.0).epsilon(1e-3));
+}
+
+TEST_CASE("ballpark: a long fly ball is a home run, a liner off the wall rebounds", "[assets][world][fence]") {
+  const World world(load_world("ballpark"));
+  const ShotTrajectory hr = simulate_shot(launch("baseball", 103.0, 28.0, 2000.0), &world);
+  CHECK(hr.summary.end == EndReason::HomeRun);
+  CHECK(m_to_ft(hr.summary.carry_m) > 400.0);
+  // 95 mph at 25° toward right-centre reaches the 369 ft wall below its top.
+  const ShotTrajectory wall = simulate_shot(launch("baseball", 95.0, 25.0, 2000.0, 30.0), &world);
+  CHECK(wall.summary.end != EndReason::HomeRun);
+  CHECK(wall.summary.total_m < wall.summary.carry_m - 5.0);  // came back off the wall
+  // A pop-up stays in the infield and rests there.
+  const ShotTrajectory pop = simulate_shot(launch("baseball", 70.0, 60.0, 2500.0), &world);
+  CHECK(pop.summary.end == EndReason::Rest);
+  CHECK(pop.summary.total_m < 60.0);
+}
+
+TEST_CASE("default worlds and unknown names", "[assets][input]") {
+  CHECK(default_world_name("golf") == "golf_hole");
+  CHECK(default_world_name("baseball") == "ballpark");
+  CHECK_THROWS_AS(default_world_name("cricket"), InputError);
+  CHECK_THROWS_WITH(load_world("moon"), Catch::Contains("golf_hole") && Catch::Contains("ballpark"));
+}
+
+TEST_CASE("broken world meshes: NaN rejected, zero-area repaired, unknown material named", "[assets][input]") {
+  const fs::path dir = fs::temp_directory_path() / "sweetspot_test_world";
+  fs::create_directories(dir);
+  write(dir / "w.mtl", "newmtl fairway\nKd 0 1 0\nnewmtl lava\nKd 1 0 0\n");
+  write(dir / "ok.obj", "mtllib w.mtl\nv 0 0 0\nv 10 0 0\nv 0 0 10\nv 5 0 0\nusemtl fairway\nf 1 3 2\nf 1 4 2\n");
+  const WorldDescription ok = load_world((dir / "ok.obj").string());
+  REQUIRE(ok.meshes.size() == 1);
+  CHECK(ok.meshes[0].indices.size() == 3);
+  REQUIRE(ok.notes.size() == 1);
+  CHECK(ok.notes[0].find("zero-area") != std::string::npos);
+  write(dir / "nan.obj", "mtllib w.mtl\nv 0 0 0\nv nan 0 0\nv 0 0 10\nusemtl fairway\nf 1 3 2\n");
+  CHECK_THROWS_WITH(load_world((dir / "nan.obj").string()), Catch::Contains("nan.obj") && Catch::Contains("finite"));
+  write(dir / "lava.obj", "mtllib w.mtl\nv 0 0 0\nv 10 0 0\nv 0 0 10\nusemtl lava\nf 1 3 2\n");
+  CHECK_THROWS_WITH(load_world((dir / "lava.obj").string()), Catch::Contains("lava") && Catch::Contains("fairway"));
+  write(dir / "bad.toml", "name = \"bad\"\nmesh = \"ok.obj\"\nbounds_min = [1, 2]\n");
+  CHECK_THROWS_WITH(load_world((dir / "bad.toml").string()), Catch::Contains("bad.toml:3") && Catch::Contains("bounds_min"));
+  fs::remove_all(dir);
+}

@@ -66,9 +66,11 @@ RunFn setup_sweep(CLI::App& sub) {
                 "carry m");
     for (const auto& p : result) {
       const auto& L = p.shot.launch;
-      std::printf("%-7.4g %-7.4g %10.2f %9.2f %9.0f %9.2f %-5s %9.2f\n", p.e, p.mu, mps_to_mph(L.ball_speed),
+      char carry[32] = "        -";  // --no-flight: not computed
+      if (so.fly) std::snprintf(carry, sizeof carry, "%9.2f", p.shot.trajectory.summary.carry_m);
+      std::printf("%-7.4g %-7.4g %10.2f %9.2f %9.0f %9.2f %-5s %s\n", p.e, p.mu, mps_to_mph(L.ball_speed),
                   rad_to_deg(L.vertical_angle), radps_to_rpm(L.spin.total), rad_to_deg(L.spin.axis_rad),
-                  to_string(p.shot.impact.contact), p.shot.trajectory.summary.carry_m);
+                  to_string(p.shot.impact.contact), carry);
     }
     return 0;
   };

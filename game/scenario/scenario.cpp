@@ -295,7 +295,15 @@ ShotResult run_scenario(const Scenario& s, const RunOptions& options) {
   in.environment = s.environment;
   in.aero = s.aero;
   in.settings.record_samples = options.record_samples;
-  r.trajectory = simulate_shot(in, cached_world(s.world));
+  const World* world = cached_world(s.world);
+  try {
+    r.trajectory = simulate_shot(in, world);
+  } catch (const InputError& e) {
+    // Valid inputs can still launch an unflyable ball (the textbook friction model creates
+    // energy); say which scenario and why rather than a bare flight message.
+    throw InputError(s.name + ": the impact launched a ball the flight model refuses (" + e.what() +
+                     "); check impact.friction / impact.mu / swing inputs");
+  }
   return r;
 }
 

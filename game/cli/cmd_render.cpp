@@ -3,6 +3,7 @@
 // The shot comes from a ShotSource: a scenario run through delivery, impact and flight on
 // its world (the club or bat drawn where the delivery put it), or, without SCENARIO,
 // launch-monitor flags flown on the flat default ground (as `sweetspot flight`).
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -10,12 +11,14 @@
 #include <vector>
 
 #include "game/app/shot_view.hpp"
+#include "game/assets/assets.hpp"
 #include "game/cli/command.hpp"
 #include "game/render/render_command.hpp"
 #include "game/render/render_error.hpp"
 #include "physics/error.hpp"
 #include "physics/flight.hpp"
 #include "physics/units.hpp"
+#include "physics/world.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -32,7 +35,7 @@ struct RenderOptions {
   std::string ball_speed, launch_angle, spin;
   std::string spin_axis = "0deg", direction = "0deg";
   std::string impactor;  // "" = by sport
-  std::string world = "none";
+  std::string world;  // "" = the sport's default world
   int samples = 0;
 };
 
@@ -41,7 +44,8 @@ struct ShotSource {
   ShotTrajectory trajectory;
   std::string sport;
   double ball_radius = 0.0;
-  std::string world;  // "" = the flat default ground
+  std::string world;  // world name or mesh path for the renderer; "" = the flat default ground
+  std::optional<Vec3> flag;
   std::optional<ImpactorPlacement> impactor;
   std::string impactor_mesh;
 };
@@ -112,11 +116,25 @@ ShotSource make_shot(const RenderOptions& o) {
   const double spin = flag_quantity("--spin", o.spin, Dimension::AngularVelocity, 0.0, rpm_to_radps(14000.0), "0..14000 rpm");
   const double axis = flag_quantity("--spin-axis", o.spin_axis, Dimension::Angle, -kPi / 2, kPi / 2, "-90..90 deg");
   const double dir = flag_quantity("--direction", o.direction, Dimension::Angle, -kPi / 2, kPi / 2, "-90..90 deg");
-  if (o.world != "none") throw InputError("--world '" + o.world + "': allowed: none (the flat default ground)");
+  // The same world for physics and picture: the sport's default unless told otherwise.
+  const std::string world_name = o.world.empty() ? default_world_name(o.sport) : o.world;
+  std::unique_ptr<World> world;
+  if (world_name != "none") {
+    try {
+      world = std::make_unique<World>(load_world(world_name));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--world: ") + e.what());
+    }
+    s.flag = world->description().flag;
+    // A world .toml names its mesh; the renderer draws the .obj next to it.
+    s.world = world_name.ends_with(".toml")
+                  ? std::filesystem::path(world_name).replace_extension(".obj").string()
+                  : world_name;
+  }
   // Golf: ball centre on the ground at the tee (origin). Baseball: contact 0.9 m above home plate.
   const Vec3 start = o.sport == "golf" ? Vec3(0.0, in.ball.radius, 0.0) : Vec3(0.0, 0.9, 0.0);
   in.launch = launch_from_metrics(speed, launch, dir, spin, axis, start);
-  s.trajectory = simulate_shot(in, nullptr);
+  s.trajectory = simulate_shot(in, world.get());
   s.ball_radius = in.ball.radius;
   s.impactor_mesh = o.impactor.empty() ? (o.sport == "golf" ? "driver_head" : "bat") : o.impactor;
   if (s.impactor_mesh == "none") {
@@ -144,7 +162,8 @@ RunFn setup_render(CLI::App& sub) {
   sub.add_option("--direction", o->direction, "horizontal launch angle, + right (-90..90 deg)")->capture_default_str();
   sub.add_option("--impactor", o->impactor, "driver_head, iron_head, bat or none (default: driver_head / bat)")
       ->check(CLI::IsMember({"driver_head", "iron_head", "bat", "none"}));
-  sub.add_option("--world", o->world, "world: none (flat default ground)")->capture_default_str();
+  sub.add_option("--world", o->world,
+                 "world: golf_hole (golf default), ballpark (baseball default), a .toml path, or none (flat fairway)");
   sub.add_option("--msaa", o->samples, "multisample count: 0 = auto (4 on a GPU, 1 on llvmpipe), 1, 2, 4, 8")
       ->capture_default_str()->check(CLI::IsMember({0, 1, 2, 4, 8}));
   return [o]() -> int {
@@ -163,6 +182,7 @@ RunFn setup_render(CLI::App& sub) {
     const ShotSource shot = make_shot(*o);
     r.sport = shot.sport;
     r.world = shot.world;
+    r.flag = shot.flag;
     r.ball_radius = shot.ball_radius;
     r.impactor = shot.impactor;
     r.impactor_mesh = shot.impactor_mesh;

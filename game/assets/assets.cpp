@@ -167,11 +167,21 @@ void add_node_meshes(const aiScene* scene, const aiNode* node, const aiMatrix4x4
       if (!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z()))
         throw InputError(file.string() + ": mesh '" + mname + "' vertex " + std::to_string(v) +
                          " is not a finite number (NaN or infinity); fix the file");
+      // Far-away vertices would swamp Bullet's quantised triangle tree and the bounds, so a
+      // world is limited to kMaxWorldExtent from its origin in every axis.
+      if (q.cwiseAbs().maxCoeff() > kMaxWorldExtent)
+        throw InputError(file.string() + ": mesh '" + mname + "' vertex " + std::to_string(v) +
+                         " lies beyond the world limit of " + std::to_string(static_cast<long>(kMaxWorldExtent)) +
+                         " m from the origin in some axis; fix the file");
       wm.vertices.push_back(q);
     }
     for (unsigned f = 0; f < am->mNumFaces; ++f) {
       const aiFace& face = am->mFaces[f];
       if (face.mNumIndices != 3) continue;  // points and lines carry no surface
+      if (face.mIndices[0] >= am->mNumVertices || face.mIndices[1] >= am->mNumVertices ||
+          face.mIndices[2] >= am->mNumVertices)
+        throw InputError(file.string() + ": mesh '" + mname + "' face " + std::to_string(f) +
+                         " refers to a vertex that does not exist (truncated or corrupt file)");
       const Vec3& a = wm.vertices[face.mIndices[0]];
       const Vec3& b = wm.vertices[face.mIndices[1]];
       const Vec3& c = wm.vertices[face.mIndices[2]];
@@ -188,6 +198,10 @@ void add_node_meshes(const aiScene* scene, const aiNode* node, const aiMatrix4x4
 
 void load_mesh(const fs::path& obj, WorldDescription* d) {
   if (!fs::is_regular_file(obj)) throw InputError(obj.string() + ": world mesh not found");
+  // Refuse a file that would take minutes and gigabytes to import before assimp reads it.
+  if (fs::file_size(obj) > kMaxWorldMeshBytes)
+    throw InputError(obj.string() + ": world mesh is " + std::to_string(fs::file_size(obj) >> 20) +
+                     " MiB, over the limit of " + std::to_string(kMaxWorldMeshBytes >> 20) + " MiB");
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(obj.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   if (scene == nullptr || scene->mRootNode == nullptr)
@@ -227,7 +241,8 @@ WorldDescription load_world(const std::string& name_or_path) {
         lo = lo.cwiseMin(v);
         hi = hi.cwiseMax(v);
       }
-    if (d.meshes.empty()) throw InputError(path.string() + ": no triangles");
+    if (d.meshes.empty())
+      throw InputError(path.string() + ": no triangles with area (empty, truncated or degenerate mesh)");
     d.bounds_min = lo - Vec3(0.0, 10.0, 0.0);
     d.bounds_max = hi + Vec3(0.0, 400.0, 0.0);
   } else {

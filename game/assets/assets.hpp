@@ -2,6 +2,7 @@
 // assets/materials.toml) into the plain WorldDescription that physics/world builds from.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -19,6 +20,11 @@ std::filesystem::path asset_root();
 /// Surface materials from a materials.toml (default: asset_root()/materials.toml). Throws
 /// InputError naming the file, line and key with the allowed values.
 std::vector<SurfaceMaterial> load_materials(const std::filesystem::path& path);
+
+/// Limits of a world mesh: the OBJ file size (bytes) and how far any vertex may lie from the
+/// world origin in each axis (m). A course or ballpark is well inside both.
+inline constexpr std::uintmax_t kMaxWorldMeshBytes = std::uintmax_t{256} << 20;
+inline constexpr double kMaxWorldExtent = 100000.0;
 
 /// A world by name ("golf_hole", "ballpark": asset_root()/worlds/NAME.toml) or by path to
 /// its .toml (or a bare .obj: bounds then come from the mesh). Rejects non-finite vertices

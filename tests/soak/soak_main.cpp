@@ -1,0 +1,248 @@
+// Soak test: N seeded random golf and baseball deliveries and launch-only shots across the
+// physical ranges the physics accepts, plus one field pushed just outside its range for about
+// one shot in eight. Every accepted shot must end with finite numbers everywhere (launch,
+// impact, summary, every trajectory sample) and within its step and time bound; every
+// out-of-range input must be refused with InputError (never NaN, a crash or a silent clamp).
+//
+//   soak_tests [--count N] [--seed S]     (ctest runs a reduced count; the full soak is
+//   build/release/tests/soak_tests --count 1000000)
+//
+// Shot i draws from its own generator seeded by (seed, i), so a failure report "shot i" is
+// reproduced alone with --first i --count 1.
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "game/assets/assets.hpp"
+#include "game/equipment/equipment_file.hpp"
+#include "physics/aero.hpp"
+#include "physics/delivery.hpp"
+#include "physics/error.hpp"
+#include "physics/flight.hpp"
+#include "physics/launch.hpp"
+#include "physics/units.hpp"
+#include "physics/world.hpp"
+
+namespace {
+
+using namespace sweetspot;
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+// SplitMix64: tiny, portable and identical on every compiler (std distributions are not).
+struct Rng {
+  std::uint64_t s;
+  std::uint64_t next() {
+    std::uint64_t z = (s += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  }
+  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+  double in(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+  int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
+  // Just outside [lo, hi]: up to 20 % of the span beyond either end, or a non-finite value.
+  double outside(double lo, double hi) {
+    const int k = below(8);
+    if (k == 0) return std::numeric_limits<double>::quiet_NaN();
+    if (k == 1) return std::numeric_limits<double>::infinity();
+    const double d = (hi - lo) * in(1e-6, 0.2);
+    return (k % 2 == 0) ? lo - d : hi + d;
+  }
+};
+
+struct Counts {
+  long accepted = 0, refused_ok = 0, flight_refused = 0, world_shots = 0;
+};
+
+[[noreturn]] void fail(long i, const std::string& what) {
+  std::fprintf(stderr, "soak: shot %ld: %s\n", i, what.c_str());
+  std::exit(1);
+}
+
+bool finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
+
+void check_launch(long i, const LaunchState& l) {
+  if (!finite(l.position) || !finite(l.velocity) || !finite(l.spin)) fail(i, "non-finite launch state");
+  const LaunchMetrics m = measure_launch(l);
+  if (!std::isfinite(m.ball_speed) || !std::isfinite(m.vertical_angle) || !std::isfinite(m.horizontal_angle) ||
+      !std::isfinite(m.spin.total) || !std::isfinite(m.spin.axis_rad))
+    fail(i, "non-finite launch metrics");
+}
+
+void check_flight(long i, const FlightInput& in, const ShotTrajectory& t, const FlightStats& st) {
+  const FlightSummary& s = t.summary;
+  for (double v : {s.carry_m, s.total_m, s.apex_m, s.landing_angle_deg, s.hang_time_s, s.lateral_m, s.total_time_s})
+    if (!std::isfinite(v)) fail(i, "non-finite flight summary");
+  if (!finite(s.landing_position) || !finite(s.rest_position)) fail(i, "non-finite landing/rest position");
+  if (st.flight_steps + st.roll_steps > in.settings.max_steps) fail(i, "exceeded the step bound");
+  if (s.total_time_s > in.settings.max_time * (1 + 1e-9)) fail(i, "exceeded the time bound");
+  if (s.end == EndReason::StepLimit) fail(i, "ended on the step/time limit (a hang for sane input)");
+  if (t.samples.empty()) fail(i, "no trajectory samples");
+  for (const auto& p : t.samples)
+    if (!std::isfinite(p.t) || !finite(p.position) || !finite(p.velocity) || !finite(p.spin))
+      fail(i, "non-finite trajectory sample at t = " + std::to_string(p.t));
+}
+
+Environment random_environment(Rng& r) {
+  Environment e;
+  e.temperature = r.in(263.15, 318.15);  // -10..45 C
+  e.altitude = r.in(0.0, 3000.0);
+  e.humidity = r.in(0.0, 1.0);
+  e.wind_speed = r.in(0.0, 20.0);
+  e.wind_direction = r.in(-3.14159, 3.14159);
+  return e;
+}
+
+struct Worlds {
+  std::unique_ptr<World> golf, park;
+};
+
+// One shot; returns normally when it was accepted or correctly refused.
+void soak_one(long i, std::uint64_t seed, const EquipmentCatalog& eq, const Worlds& worlds, Counts& c) {
+  Rng r{seed ^ (static_cast<std::uint64_t>(i) * 0xD1B54A32D192ED03ULL)};
+  const int kind = static_cast<int>(i % 4);  // golf delivery, baseball delivery, golf launch, baseball launch
+  const bool golf = kind == 0 || kind == 2;
+  const bool outside = r.below(8) == 0;
+  const int bad = r.below(6);  // which field goes out of range when `outside`
+  auto pick = [&](int field, double lo, double hi) { return (outside && bad == field) ? r.outside(lo, hi) : r.in(lo, hi); };
+
+  LaunchState launch;
+  const BallSpec& ball = eq.ball(golf ? "tour" : "mlb");
+  try {
+    if (kind == 0) {
+      const ClubSpec& club = eq.clubs[static_cast<std::size_t>(r.below(static_cast<int>(eq.clubs.size())))];
+      GolfSwing s;
+      s.club_speed = pick(0, 1.0, 90.0);
+      s.attack_angle = pick(1, -30 * kDeg, 30 * kDeg);
+      s.club_path = r.in(-30 * kDeg, 30 * kDeg);
+      s.dynamic_loft = pick(2, 0.0, 75 * kDeg);
+      s.face_angle = pick(3, -30 * kDeg, 30 * kDeg);
+      s.impact_toe = pick(4, -0.05, 0.05);
+      s.impact_up = r.in(-0.03, 0.03);
+      s.closure_rate = pick(5, -110.0, 110.0);
+      ImpactMaterial m = club.face;
+      m.mu = r.in(0.0, 0.8);
+      launch = deliver_golf(ball, club, s, m).launch;
+    } else if (kind == 1) {
+      const BatSpec& bat = eq.bats[static_cast<std::size_t>(r.below(static_cast<int>(eq.bats.size())))];
+      BatSwing s;
+      s.bat_speed = pick(0, 1.0, 60.0);
+      s.attack_angle = pick(1, -45 * kDeg, 60 * kDeg);
+      s.direction = pick(2, -90 * kDeg, 90 * kDeg);
+      const double reach = bat.length - bat.pivot_from_knob - 0.05;
+      s.impact_from_tip = pick(3, 0.0, reach);
+      const double reach_r = 0.95 * (bat.radius_at(bat.length - std::min(std::max(s.impact_from_tip, 0.0), reach)) + ball.radius);
+      s.undercut = r.in(-0.999 * reach_r, 0.999 * reach_r);
+      Pitch p;
+      p.speed = pick(4, 0.0, 70.0);
+      p.approach_angle = r.in(-20 * kDeg, 45 * kDeg);
+      p.spin = pick(5, 0.0, 500.0);
+      p.spin_axis = r.in(-3.14159, 3.14159);
+      launch = deliver_baseball(ball, bat, s, p, bat.material).launch;
+    } else {
+      const Vec3 start(0.0, golf ? ball.radius : kBaseballContactHeight, 0.0);
+      launch = launch_from_metrics(r.in(0.0, 150.0), r.in(-10 * kDeg, 89 * kDeg), r.in(-45 * kDeg, 45 * kDeg),
+                                   r.in(0.0, 1500.0), r.in(-90 * kDeg, 90 * kDeg), start);
+      if (outside) {
+        // The flight refuses a launch beyond 150 m/s or 1500 rad/s, or a non-finite one.
+        if (bad % 3 == 0) launch.velocity = Vec3(r.in(150.0 * 1.0001, 180.0), 0.0, 0.0);
+        else if (bad % 3 == 1) launch.spin = Vec3(0.0, 0.0, r.in(1500.0 * 1.0001, 1800.0));
+        else launch.position.x() = std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+  } catch (const InputError&) {
+    if (!outside) fail(i, "an in-range delivery was refused");
+    ++c.refused_ok;
+    return;
+  }
+  const bool launch_outside = outside && kind >= 2;
+  if (outside && !launch_outside) {
+    // Every delivery field `bad` names is range-checked, so reaching here is a silent clamp.
+    fail(i, "an out-of-range delivery field was accepted");
+  }
+  if (!launch_outside) check_launch(i, launch);
+
+  FlightInput in;
+  in.launch = launch;
+  in.ball = BallProperties{ball.mass, ball.radius, ball.inertia};
+  in.environment = random_environment(r);
+  in.aero = &aero_model(golf ? "ferguson2022" : "nathan");
+  const Terrain* terrain = nullptr;
+  if (i % 16 < 2) {  // one shot in eight on the asset worlds (slower), the rest on flat ground
+    terrain = golf ? static_cast<const Terrain*>(worlds.golf.get()) : worlds.park.get();
+    ++c.world_shots;
+  }
+  FlightStats st;
+  ShotTrajectory t;
+  try {
+    t = simulate_shot(in, terrain, &st);
+  } catch (const InputError&) {
+    if (launch_outside) {
+      ++c.refused_ok;
+      return;
+    }
+    // A delivery inside its ranges that the flight refuses (e.g. more spin than it accepts)
+    // is counted and reported, not a crash; the refusal itself is the clear message.
+    ++c.flight_refused;
+    return;
+  }
+  if (launch_outside) fail(i, "an out-of-range launch was flown");
+  check_flight(i, in, t, st);
+  ++c.accepted;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  long count = 20000, first = 0;
+  std::uint64_t seed = 20261123;
+  for (int a = 1; a < argc; ++a) {
+    const std::string_view arg = argv[a];
+    auto value = [&]() -> const char* {
+      if (a + 1 >= argc) {
+        std::fprintf(stderr, "soak_tests: %s needs a value\n", argv[a]);
+        std::exit(2);
+      }
+      return argv[++a];
+    };
+    char* end = nullptr;
+    const char* v = nullptr;
+    if (arg == "--count") count = std::strtol(v = value(), &end, 10);
+    else if (arg == "--first") first = std::strtol(v = value(), &end, 10);
+    else if (arg == "--seed") seed = std::strtoull(v = value(), &end, 10);
+    else {
+      std::fprintf(stderr, "soak_tests: unknown argument '%s' (allowed: --count N, --first I, --seed S)\n", argv[a]);
+      return 2;
+    }
+    if (end == v || *end != '\0' || count < 0 || first < 0) {
+      std::fprintf(stderr, "soak_tests: %s: expected a non-negative integer, got '%s'\n", argv[a - 1], v);
+      return 2;
+    }
+  }
+  try {
+    const EquipmentCatalog& eq = default_equipment();
+    Worlds worlds;
+    worlds.golf = std::make_unique<World>(load_world("golf_hole"));
+    worlds.park = std::make_unique<World>(load_world("ballpark"));
+    Counts c;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (long i = first; i < first + count; ++i) soak_one(i, seed, eq, worlds, c);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("soak: %ld shots (seed %llu) in %.1f s: %ld flown and finite (%ld on asset worlds), %ld out-of-range "
+                "inputs refused with InputError, %ld in-range deliveries the flight refused\n",
+                count, static_cast<unsigned long long>(seed), secs, c.accepted, c.world_shots, c.refused_ok,
+                c.flight_refused);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "soak: unexpected exception: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -110,11 +110,15 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
 
   // The deformed ball's pressure centre runs ahead of the touch point by contact_offset in
   // the direction the ball slides across the face (BallSpec::contact_offset). Both bodies
-  // take the impulse there, so momentum stays exactly conserved.
+  // take the impulse there, so momentum stays exactly conserved. The ball deforms that way
+  // because the face drags its surface: with no traction (µ = 0, or the frictionless
+  // teaching model) there is no drag, the contact stays a rigid point, and a frictionless
+  // strike leaves the ball without spin, as the textbook has it.
   Vec3 contact = touch;
   const Vec3 slide = -head.point_velocity(touch);  // ball at rest: u = -v_head(P)
   const Vec3 slide_t = slide - slide.dot(n) * n;
-  if (slide_t.norm() > 1e-9 * slide.norm()) contact += ball.contact_offset * slide_t.normalized();
+  const bool traction = material.friction != FrictionModel::None && material.mu > 0.0;
+  if (traction && slide_t.norm() > 1e-9 * slide.norm()) contact += ball.contact_offset * slide_t.normalized();
 
   Delivery d;
   d.impact_input.impactor = make_impact_body(head, contact, "club '" + club.name + "'");

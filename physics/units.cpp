@@ -81,7 +81,7 @@ std::string_view trim(std::string_view s) {
   if (dim != Dimension::Dimensionless) {
     msg += " (accepted units: ";
     msg += accepted_units(dim);
-    msg += "; a bare number is SI)";
+    msg += ")";
   }
   throw InputError(msg);
 }

@@ -1,8 +1,9 @@
 // Unit conversions and quantity parsing ("113mph", "10.5deg", "2686rpm").
 //
-// Quantities in files and on the command line carry their unit. A bare number is SI
-// (m/s, rad, rad/s, K, kg, m, fraction 0..1, Pa, s). Display units appear only at the
-// edges (reports, UI); inside, everything is SI.
+// Quantities in files and on the command line carry their unit. The parser reads a bare
+// number as SI (m/s, rad, rad/s, K, kg, m, fraction 0..1, Pa, s); scenario keys and CLI
+// flags with a physical dimension refuse a bare number as "missing unit" (README: Units).
+// Display units appear only at the edges (reports, UI); inside, everything is SI.
 #pragma once
 
 #include <string>

@@ -20,8 +20,9 @@ Frames (docs/INTERFACES "impact" section, DESIGN §2):
   flag         origin at the hole (ground), pole up +y 2.13 m (7 ft), cloth toward +x.
 
 tests/render/test_range is a small practice range (fairway, rough, sand, green, dirt,
-grass, wall) that the render tests use, so their images do not change when the real
-worlds in assets/worlds change.
+grass, wall) and tests/render/test_park a minimal ballpark (grass fan, 330/400 ft wall) that
+the render tests use, so their images do not change when the real worlds in assets/worlds
+change.
 """
 import math
 import os
@@ -314,6 +315,29 @@ def test_range():
             "test range for the render tests: 300 m x 120 m, tee at the origin")
 
 
+def test_park():
+    """A minimal ballpark for the render tests: a fair-territory fan of grass from home plate
+    (origin) out to a 10 ft wall, 330 ft down the lines (+-45 deg) and 400 ft to centre."""
+    m = Mesh()
+
+    def fence(deg):
+        t = abs(deg) / 45.0
+        return (400.0 - 70.0 * t * t) * 0.3048
+
+    n = 36
+    for i in range(n):
+        a0, a1 = -45.0 + 90.0 * i / n, -45.0 + 90.0 * (i + 1) / n
+        r0, r1 = fence(a0), fence(a1)
+        p0 = (r0 * math.cos(math.radians(a0)), 0.0, r0 * math.sin(math.radians(a0)))
+        p1 = (r1 * math.cos(math.radians(a1)), 0.0, r1 * math.sin(math.radians(a1)))
+        m.flat_tri("grass", (0.0, 0.0, 0.0), p1, p0)
+        top0, top1 = (p0[0], 3.05, p0[2]), (p1[0], 3.05, p1[2])
+        m.flat_tri("wall", p0, p1, top1)
+        m.flat_tri("wall", p0, top1, top0)
+    m.write(os.path.join(ROOT, "tests/render/test_park.obj"), {"grass": (0.30, 0.58, 0.22), "wall": (0.12, 0.30, 0.20)},
+            "test ballpark for the render tests: 330 ft lines, 400 ft centre, 10 ft wall")
+
+
 def main():
     if len(sys.argv) > 1:
         print(__doc__)
@@ -325,6 +349,7 @@ def main():
     tee()
     flag()
     test_range()
+    test_park()
     return 0
 
 

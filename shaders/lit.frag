@@ -10,6 +10,7 @@ uniform vec3 u_eye;
 uniform vec3 u_sun_dir;      // unit, toward the sun
 uniform vec3 u_haze;         // colour of the far distance (the sky at the horizon)
 uniform float u_haze_range;  // m, distance at which haze reaches 63 %
+uniform float u_specular;    // 0 for terrain (grass has no sun glint), 1 for ball and equipment
 
 out vec4 frag_color;
 
@@ -28,7 +29,7 @@ void main() {
   float diffuse = max(dot(n, u_sun_dir), 0.0);
   vec3 sky_ambient = mix(vec3(0.35, 0.33, 0.30), vec3(0.55, 0.62, 0.75), 0.5 + 0.5 * n.y);
   vec3 h = normalize(u_sun_dir + v);
-  float spec = pow(max(dot(n, h), 0.0), 48.0) * 0.18;
+  float spec = pow(max(dot(n, h), 0.0), 48.0) * 0.18 * u_specular;
   vec3 lit = albedo * (0.72 * diffuse * vec3(1.0, 0.97, 0.90) + 0.52 * sky_ambient) + spec;
 
   float haze = 1.0 - exp(-dist / u_haze_range);

@@ -1,32 +1,39 @@
 // `sweetspot play [SCENARIO]`: the game window, or the shot headless when there is no display.
 #include <iostream>
+#include <memory>
 #include <string>
 
+#include "game/app/play_app.hpp"
 #include "game/cli/command.hpp"
 #include "game/display.hpp"
+#include "physics/error.hpp"
 
 namespace sweetspot::cli {
 namespace {
 
-struct PlayOptions {
-  std::string scenario = "golf/driver";
-  int frames = 0;
-  std::string screenshot;
-};
-
 RunFn setup_play(CLI::App& sub) {
-  auto opts = std::make_shared<PlayOptions>();
-  sub.add_option("scenario", opts->scenario, "built-in scenario name or .toml path")->capture_default_str();
-  sub.add_option("--frames", opts->frames, "run N frames then exit (automation)")->check(CLI::Range(1, 1000000));
-  sub.add_option("--screenshot", opts->screenshot, "save the window image to FILE.png after --frames");
-  return [opts]() -> int {
+  auto o = std::make_shared<PlayOptions>();
+  sub.add_option("scenario", o->scenario, "built-in scenario name or .toml path")->capture_default_str();
+  sub.add_option("--set", o->overrides, "override a scenario key, e.g. swing.speed=105mph (repeatable)");
+  sub.add_option("--frames", o->frames, "run N frames then exit (automation)")->check(CLI::Range(1, 1000000));
+  sub.add_option("--screenshot", o->screenshot, "save the last frame to FILE.png (headless: the shot's image)");
+  sub.add_option("--width", o->width, "window width in px")->check(CLI::Range(640, 7680))->capture_default_str();
+  sub.add_option("--height", o->height, "window height in px")->check(CLI::Range(480, 4320))->capture_default_str();
+  return [o]() -> int {
     std::string why;
     if (!display_available(&why)) {
-      std::cout << "sweetspot play: " << why << "; running " << opts->scenario << " headless.\n";
-      return 0;
+      std::cout << "sweetspot play: " << why << "; running " << o->scenario << " headless.\n";
+      return run_play_headless(*o, std::cout);
     }
-    std::cout << "sweetspot play: display found; the game window arrives with the rendering issue.\n";
-    return 0;
+    try {
+      return run_play_window(*o, std::cout);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      // A display was named but no GL window opened (e.g. a stale DISPLAY): fall back.
+      std::cout << "sweetspot play: " << e.what() << "; running " << o->scenario << " headless.\n";
+      return run_play_headless(*o, std::cout);
+    }
   };
 }
 

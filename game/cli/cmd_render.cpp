@@ -1,25 +1,31 @@
-// `sweetspot render -o FILE.png`: an off-screen image of a shot (DESIGN §7).
+// `sweetspot render SCENARIO -o FILE.png`: an off-screen image of a shot (DESIGN §7).
 //
-// The shot comes from a ShotSource. Today that is launch-monitor flags flown by the flight
-// model on the flat default ground (as `sweetspot flight`); a positional SCENARIO only needs
-// a second branch in make_shot() that runs the scenario and fills the same struct (with the
-// real ImpactorPose from the delivery instead of the nominal one).
+// The shot comes from a ShotSource: a scenario run through delivery, impact and flight on
+// its world (the club or bat drawn where the delivery put it), or, without SCENARIO,
+// launch-monitor flags flown on the flat default ground (as `sweetspot flight`).
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "game/app/shot_view.hpp"
+#include "game/assets/assets.hpp"
 #include "game/cli/command.hpp"
 #include "game/render/render_command.hpp"
 #include "game/render/render_error.hpp"
 #include "physics/error.hpp"
 #include "physics/flight.hpp"
 #include "physics/units.hpp"
+#include "physics/world.hpp"
 
 namespace sweetspot::cli {
 namespace {
 
 struct RenderOptions {
+  std::string scenario;                 // built-in name or .toml; "" = launch flags
+  std::vector<std::string> overrides;   // --set key=value
   std::string output;
   int width = 1280, height = 720;
   std::string camera = "behind";
@@ -29,7 +35,7 @@ struct RenderOptions {
   std::string ball_speed, launch_angle, spin;
   std::string spin_axis = "0deg", direction = "0deg";
   std::string impactor;  // "" = by sport
-  std::string world = "none";
+  std::string world;  // "" = the sport's default world
   int samples = 0;
 };
 
@@ -38,7 +44,8 @@ struct ShotSource {
   ShotTrajectory trajectory;
   std::string sport;
   double ball_radius = 0.0;
-  std::string world;  // "" = the flat default ground
+  std::string world;  // world name or mesh path for the renderer; "" = the flat default ground
+  std::optional<Vec3> flag;
   std::optional<ImpactorPlacement> impactor;
   std::string impactor_mesh;
 };
@@ -79,7 +86,26 @@ ImpactorPlacement nominal_impactor(const std::string& mesh, const LaunchState& l
   return p;
 }
 
+ShotSource scenario_shot(const RenderOptions& o) {
+  if (!o.ball_speed.empty() || !o.launch_angle.empty() || !o.spin.empty())
+    throw InputError("render: give a SCENARIO or the launch flags (--ball-speed, --launch-angle, --spin), not both");
+  const Scenario scenario = load_scenario(o.scenario, o.overrides);
+  const ShotResult result = run_scenario(scenario);
+  const RenderRequest req = render_request_for(scenario, result);
+  ShotSource s;
+  s.trajectory = result.trajectory;
+  s.sport = req.sport;
+  s.ball_radius = req.ball_radius;
+  s.world = req.world;
+  s.impactor = req.impactor;
+  s.impactor_mesh = o.impactor.empty() ? req.impactor_mesh : (o.impactor == "none" ? "" : o.impactor);
+  if (s.impactor_mesh.empty()) s.impactor.reset();
+  return s;
+}
+
 ShotSource make_shot(const RenderOptions& o) {
+  if (!o.scenario.empty()) return scenario_shot(o);
+  if (!o.overrides.empty()) throw InputError("--set needs a SCENARIO (e.g. render golf/driver --set swing.speed=100mph)");
   ShotSource s;
   s.sport = o.sport;
   FlightInput in;
@@ -90,11 +116,25 @@ ShotSource make_shot(const RenderOptions& o) {
   const double spin = flag_quantity("--spin", o.spin, Dimension::AngularVelocity, 0.0, rpm_to_radps(14000.0), "0..14000 rpm");
   const double axis = flag_quantity("--spin-axis", o.spin_axis, Dimension::Angle, -kPi / 2, kPi / 2, "-90..90 deg");
   const double dir = flag_quantity("--direction", o.direction, Dimension::Angle, -kPi / 2, kPi / 2, "-90..90 deg");
-  if (o.world != "none") throw InputError("--world '" + o.world + "': allowed: none (the flat default ground)");
+  // The same world for physics and picture: the sport's default unless told otherwise.
+  const std::string world_name = o.world.empty() ? default_world_name(o.sport) : o.world;
+  std::unique_ptr<World> world;
+  if (world_name != "none") {
+    try {
+      world = std::make_unique<World>(load_world(world_name));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--world: ") + e.what());
+    }
+    s.flag = world->description().flag;
+    // A world .toml names its mesh; the renderer draws the .obj next to it.
+    s.world = world_name.ends_with(".toml")
+                  ? std::filesystem::path(world_name).replace_extension(".obj").string()
+                  : world_name;
+  }
   // Golf: ball centre on the ground at the tee (origin). Baseball: contact 0.9 m above home plate.
   const Vec3 start = o.sport == "golf" ? Vec3(0.0, in.ball.radius, 0.0) : Vec3(0.0, 0.9, 0.0);
   in.launch = launch_from_metrics(speed, launch, dir, spin, axis, start);
-  s.trajectory = simulate_shot(in, nullptr);
+  s.trajectory = simulate_shot(in, world.get());
   s.ball_radius = in.ball.radius;
   s.impactor_mesh = o.impactor.empty() ? (o.sport == "golf" ? "driver_head" : "bat") : o.impactor;
   if (s.impactor_mesh == "none") {
@@ -107,6 +147,8 @@ ShotSource make_shot(const RenderOptions& o) {
 
 RunFn setup_render(CLI::App& sub) {
   auto o = std::make_shared<RenderOptions>();
+  sub.add_option("scenario", o->scenario, "built-in scenario name or .toml path (without it: the launch flags below)");
+  sub.add_option("--set", o->overrides, "override a scenario key, e.g. swing.speed=105mph (repeatable)");
   sub.add_option("-o,--output", o->output, "PNG file to write (written atomically)")->required();
   sub.add_option("--width", o->width, "image width in pixels (16..8192)")->capture_default_str();
   sub.add_option("--height", o->height, "image height in pixels (16..8192)")->capture_default_str();
@@ -120,7 +162,8 @@ RunFn setup_render(CLI::App& sub) {
   sub.add_option("--direction", o->direction, "horizontal launch angle, + right (-90..90 deg)")->capture_default_str();
   sub.add_option("--impactor", o->impactor, "driver_head, iron_head, bat or none (default: driver_head / bat)")
       ->check(CLI::IsMember({"driver_head", "iron_head", "bat", "none"}));
-  sub.add_option("--world", o->world, "world: none (flat default ground)")->capture_default_str();
+  sub.add_option("--world", o->world,
+                 "world: golf_hole (golf default), ballpark (baseball default), a .toml path, or none (flat fairway)");
   sub.add_option("--msaa", o->samples, "multisample count: 0 = auto (4 on a GPU, 1 on llvmpipe), 1, 2, 4, 8")
       ->capture_default_str()->check(CLI::IsMember({0, 1, 2, 4, 8}));
   return [o]() -> int {
@@ -139,6 +182,7 @@ RunFn setup_render(CLI::App& sub) {
     const ShotSource shot = make_shot(*o);
     r.sport = shot.sport;
     r.world = shot.world;
+    r.flag = shot.flag;
     r.ball_radius = shot.ball_radius;
     r.impactor = shot.impactor;
     r.impactor_mesh = shot.impactor_mesh;

@@ -7,6 +7,7 @@
 
 #include <toml++/toml.h>
 
+#include "game/assets/assets.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 
@@ -278,13 +279,6 @@ const T& find(const std::vector<T>& v, std::string_view name, const char* what) 
   std::string names;
   for (const auto& x : v) names += (names.empty() ? "" : ", ") + x.name;
   throw InputError(std::string("unknown ") + what + " '" + std::string(name) + "' (allowed: " + names + ")");
-}
-
-std::filesystem::path asset_root() {
-  // The flight helper's game/assets/assets.hpp will own this; until it lands, the same
-  // rule privately: $SWEETSPOT_ASSETS, else the source tree's assets/.
-  if (const char* env = std::getenv("SWEETSPOT_ASSETS"); env && *env) return env;
-  return std::filesystem::path(SWEETSPOT_SOURCE_DIR) / "assets";
 }
 
 }  // namespace

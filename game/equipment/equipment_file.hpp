@@ -25,8 +25,7 @@ struct EquipmentCatalog {
 /// ("clubs.toml:42: club 'driver': head_mass must be in [50, 1000] g, got 5000 g").
 EquipmentCatalog load_equipment(const std::filesystem::path& dir);
 
-/// The built-in equipment, loaded once from <asset root>/equipment. The asset root is
-/// $SWEETSPOT_ASSETS when set, else the source tree's assets/ (SWEETSPOT_SOURCE_DIR).
+/// The built-in equipment, loaded once from asset_root()/equipment (game/assets/assets.hpp).
 const EquipmentCatalog& default_equipment();
 
 }  // namespace sweetspot

@@ -137,6 +137,7 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
       glEnable(GL_POLYGON_OFFSET_FILL);
       glPolygonOffset(1.0f, 4.0f);
     }
+    m.lit.set("u_specular", inst.terrain ? 0.0f : 1.0f);
     m.lit.set("u_model", inst.model);
     m.lit.set("u_normal_matrix", normal_matrix(inst.model));
     inst.mesh->draw();

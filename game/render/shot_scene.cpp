@@ -24,6 +24,7 @@ const Eigen::Vector3f kLandingColor{0.10f, 0.90f, 1.00f};
 const Eigen::Vector3f kRestColor{1.00f, 1.00f, 1.00f};
 const Eigen::Vector3f kFenceLabelColor{1.00f, 0.92f, 0.30f};
 const Eigen::Vector3f kShadowColor{0.05f, 0.07f, 0.05f};
+const Eigen::Vector3f kTrackColor{0.10f, 0.22f, 0.08f};
 
 bool is_wall(const std::string& m) { return m == "wall" || m == "foul_pole"; }
 bool is_not_ground(const std::string& m) { return is_wall(m) || m == "flag" || m == "pole"; }
@@ -93,11 +94,13 @@ std::optional<double> ray_triangle(const Vec3& o, const Vec3& d, const Vec3& a, 
   const double det = e1.dot(p);
   if (std::abs(det) < 1e-12) return std::nullopt;
   const Vec3 s = o - a;
+  // A small tolerance so a ray along a shared edge (a foul line at a wall joint) still hits.
+  constexpr double kEdge = 1e-7;
   const double u = s.dot(p) / det;
-  if (u < 0 || u > 1) return std::nullopt;
+  if (u < -kEdge || u > 1 + kEdge) return std::nullopt;
   const Vec3 q = s.cross(e1);
   const double v = d.dot(q) / det;
-  if (v < 0 || u + v > 1) return std::nullopt;
+  if (v < -kEdge || u + v > 1 + kEdge) return std::nullopt;
   const double t = e2.dot(q) / det;
   return t > 0 ? std::optional<double>(t) : std::nullopt;
 }
@@ -264,8 +267,28 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   const double radius = std::max(m.input.ball_radius, px(ball, m.style.ball_min_radius_px));
   scene.meshes.push_back({m.ball.get(), translate_scale(ball, radius / 0.021335), false});
 
-  // Trail up to t.
-  if (have_shot) append_trail(scene.top_overlay, trajectory_, t, camera, {m.style.trail_width_px, height});
+  // A line on the ground `pixels` wide, widened across the line of sight (so it reads from
+  // a grazing behind view as well as from above) and lifted by half its width.
+  auto ground_line = [&](const Vec3& a, const Vec3& b, double pixels, const Eigen::Vector3f& color) {
+    const Vec3 lift(0, 0.5 * px(a, pixels) + 0.02, 0);
+    append_band(scene.ground_overlay, a + lift, b + lift, px(a, pixels), a - camera.eye, color);
+  };
+  // Trail up to t, and its ground track (the flight's shadow at noon) so the eye can tell
+  // height from distance in the behind view.
+  if (have_shot) {
+    append_trail(scene.top_overlay, trajectory_, t, camera, {m.style.trail_width_px * std::max(1.0, style_scale), height});
+    std::size_t last = 0;
+    sample_at(trajectory_, t, &last);
+    const std::size_t stride = std::max<std::size_t>(1, samples.size() / 300);
+    Vec3 prev = Vec3::Constant(std::nan(""));
+    for (std::size_t i = 0; i <= last; i += stride) {
+      if (samples[i].phase != Phase::Flight) break;
+      const Vec3& q = samples[i].position;
+      const Vec3 g(q.x(), ground_at(q.x(), q.z()) + 0.04, q.z());
+      if (!std::isnan(prev.x())) ground_line(prev, g, 2.0, kTrackColor);
+      prev = g;
+    }
+  }
 
   // Distance markers: stripes across the golf hole every 50 yd; fence distances in a park.
   const Vec3 cam_right = camera.right(), cam_up = camera.true_up();
@@ -323,8 +346,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       constexpr int n = 22;
       for (int i = 0; i < n; ++i) {
         const double z0 = -half + 2 * half * i / n, z1 = -half + 2 * half * (i + 1) / n;
-        const Vec3 a(x, ground_at(x, z0) + 0.03, z0), c(x, ground_at(x, z1) + 0.03, z1);
-        append_band(scene.ground_overlay, a, c, std::max(0.25, px(a, 2.0)), Vec3::UnitY(), kWhite);
+        ground_line(Vec3(x, ground_at(x, z0), z0), Vec3(x, ground_at(x, z1), z1), 2.0, kWhite);
       }
       const Vec3 anchor(x, ground_at(x, -half - 3.0) + 1.0, -half - 3.0);
       label(std::to_string(k * 50), anchor, kWhite);

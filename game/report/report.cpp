@@ -145,6 +145,7 @@ nlohmann::json shot_json(const ShotResult& r) {
   json j;
   j["scenario"] = r.scenario;
   j["sport"] = to_string(r.sport);
+  if (!r.world.empty()) j["world"] = r.world;
   // The launch and flight objects are shared with `flight --json` (game/report/flight_json).
   j["launch"] = launch_json(L, r.impact.present ? r.smash_factor : -1.0);
   j["launch"]["rifle_spin_rpm"] = radps_to_rpm(L.spin.rifle);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "game/scenario/scenario_schema.hpp"
+#include "physics/delivery.hpp"
 #include "physics/impact.hpp"
 #include "physics/launch.hpp"
 #include "physics/trajectory.hpp"
@@ -56,6 +57,7 @@ struct BatNumbers {
 struct ShotResult {
   std::string scenario;             ///< built-in name or path
   Sport sport = Sport::Golf;
+  std::string world;                ///< world the shot flew on ("golf_hole", "ballpark", "none")
   LaunchState launch_state;         ///< ball at separation (world frame)
   LaunchMetrics launch;             ///< launch-monitor numbers derived from launch_state
   double smash_factor = 0.0;        ///< ball speed / impactor speed (0 for launch-only)
@@ -63,6 +65,9 @@ struct ShotResult {
   ClubNumbers club;                 ///< golf only
   BatNumbers bat;                   ///< baseball only
   ShotTrajectory trajectory;        ///< sampled path and the flight summary
+  /// Club head / bat at the instant of impact (mesh frame -> world), for rendering.
+  ImpactorPose impactor_at_impact;
+  bool has_impactor = false;        ///< false for launch-only shots
 };
 
 }  // namespace sweetspot

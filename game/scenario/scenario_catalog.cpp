@@ -3,22 +3,13 @@
 #include "game/scenario/scenario_catalog.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 
+#include "game/assets/assets.hpp"
 #include "game/scenario/scenario_doc.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
 namespace {
-
-std::filesystem::path asset_directory() {
-  if (const char* env = std::getenv("SWEETSPOT_ASSETS"); env != nullptr && *env != '\0') return env;
-#ifdef SWEETSPOT_SOURCE_DIR
-  return std::filesystem::path(SWEETSPOT_SOURCE_DIR) / "assets";
-#else
-  return "assets";
-#endif
-}
 
 std::string names_of(const std::vector<BuiltinScenario>& all) {
   std::string out;
@@ -31,7 +22,7 @@ std::string names_of(const std::vector<BuiltinScenario>& all) {
 
 }  // namespace
 
-std::filesystem::path scenario_directory() { return asset_directory() / "scenarios"; }
+std::filesystem::path scenario_directory() { return asset_root() / "scenarios"; }
 
 std::vector<BuiltinScenario> builtin_scenarios() {
   const auto dir = scenario_directory();

@@ -220,8 +220,8 @@ ScenarioDoc read_toml_doc(const std::filesystem::path& path) {
   return parse_toml_doc(ss.str(), path.string());
 }
 
-void apply_set(ScenarioDoc& doc, std::string_view assignment) {
-  const std::string origin = "--set " + std::string(assignment);
+void apply_set(ScenarioDoc& doc, std::string_view assignment, std::string_view origin_in) {
+  const std::string origin = origin_in.empty() ? "--set " + std::string(assignment) : std::string(origin_in);
   const auto eq = assignment.find('=');
   if (eq == std::string_view::npos) {
     throw InputError(origin + ": expected key=value in dotted form, e.g. --set swing.speed=105mph");

@@ -47,7 +47,9 @@ ScenarioDoc parse_toml_doc(std::string_view toml_text, const std::string& source
 ScenarioDoc read_toml_doc(const std::filesystem::path& path);
 /// Applies one `--set key=value` (value text as on the command line: "105mph",
 /// "[10mm,0mm]", "textbook"). Only the shape is checked here; CheckedDoc validates it.
-void apply_set(ScenarioDoc& doc, std::string_view assignment);
+/// `origin` names the flag in messages (default "--set key=value"; `shot --e 0.7` passes
+/// "--e 0.7").
+void apply_set(ScenarioDoc& doc, std::string_view assignment, std::string_view origin = {});
 
 /// A validated value in SI.
 struct CheckedValue {

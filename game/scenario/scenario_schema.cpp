@@ -100,6 +100,8 @@ Schema build_scenario_schema() {
 
   k.push_back(choice("sport", "golf|baseball", "", "which game (required)"));
   k.push_back(name("description", "", "one line shown by `sweetspot list`", kAnySport, ValueType::Text));
+  k.push_back(name("update", "true", "regression: false keeps `regress --update` from rewriting external reference values",
+                   kAnySport, ValueType::Bool));
 
   k.push_back(name("ball.name", "tour", "ball from assets/equipment/balls.toml", G));
   k.push_back(name("ball.name", "mlb", "ball from assets/equipment/balls.toml", B));
@@ -143,9 +145,10 @@ Schema build_scenario_schema() {
   k.push_back(quantity("environment.wind_direction", Angle, -2 * kPi, 2 * kPi, "deg", "0deg", "direction the wind blows toward: 0 = tailwind, 90deg = toward the right"));
 
   k.push_back(choice("environment.wind_profile", "log|power|uniform", "log", "how wind grows with height"));
-  k.push_back(name("world.name", "", "world asset (default: golf_hole / ballpark)"));
+  k.push_back(name("world.name", "", "world asset: golf_hole (golf default), ballpark (baseball default), none = flat ground"));
+  k.push_back(quantity("world.aim", Angle, -90 * kDeg, 90 * kDeg, "deg", "0deg", "target line turned right (+) of the hole's +x axis", G));
   k.push_back(list("world.ball_position", Length, 2, -2000.0, 2000.0, "m", "[0m, 0m]", "ball position [downrange x, right z]; height from the terrain", G));
-  k.push_back(choice("world.lie", "tee|fairway|rough|sand|green", "", "required surface under the ball (checked)", G));
+  k.push_back(choice("world.lie", "tee|fairway|rough|sand|green", "", "required surface under the ball (checked against the world)", G));
 
   k.push_back(name("aero.model", "", "aerodynamic model (default: ferguson2022 / nathan)"));
 
@@ -165,6 +168,8 @@ Schema build_impact_case_schema() {
   auto& k = s.keys;
   k.push_back(choice("case", "impact", "", "regression case kind (required)"));
   k.push_back(name("description", "", "what the case checks", kAnySport, ValueType::Text));
+  k.push_back(name("update", "true", "false keeps `regress --update` from rewriting external reference values",
+                   kAnySport, ValueType::Bool));
   for (const std::string_view body : {std::string_view("impactor"), std::string_view("ball")}) {
     auto& st = key_storage();
     auto key = [&](std::string_view leaf) {

@@ -4,14 +4,14 @@ set -euo pipefail
 bin="$1"
 out=$("$bin" list)
 fail() { echo "FAIL: $*"; echo "$out"; exit 1; }
-for name in golf/driver golf/3-wood golf/7-iron golf/pw golf/toe-hook golf/heel-slice \
+for name in golf/driver golf/3-wood golf/7-iron golf/pw golf/sand-wedge golf/toe-hook golf/heel-slice \
             golf/into-wind golf/altitude baseball/line-drive baseball/home-run \
             baseball/grounder baseball/pop-up baseball/opposite-field; do
   line=$(grep -E "^$name " <<<"$out") || fail "$name missing"
   desc=$(sed -E "s|^$name +||" <<<"$line")
   [ ${#desc} -ge 10 ] || fail "$name has no description"
 done
-[ "$(wc -l <<<"$out")" -ge 13 ] || fail "fewer than 13 scenarios"
+[ "$(wc -l <<<"$out")" -ge 14 ] || fail "fewer than 14 scenarios"
 # Golf first, then baseball.
 first_baseball=$(grep -n '^baseball/' <<<"$out" | head -1 | cut -d: -f1)
 last_golf=$(grep -n '^golf/' <<<"$out" | tail -1 | cut -d: -f1)

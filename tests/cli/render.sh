@@ -52,6 +52,16 @@ expect_exit 2 "does not exist" -o "$tmp/no/such/dir/x.png" "${drive[@]}"
 expect_exit 2 "output" "${drive[@]}"
 [ -e "$tmp/x.png" ] && fail "a failed render left an output file"
 
+# Scenario form: the shot is delivered, flown on its world, and drawn with the club/bat.
+"$bin" render golf/7-iron -o "$tmp/scen.png" --width 320 --height 180 --camera side >/dev/null || fail "render golf/7-iron"
+[ -s "$tmp/scen.png" ] || fail "scenario render wrote nothing"
+"$bin" render baseball/line-drive --set swing.speed=60mph -o "$tmp/bb.png" --width 320 --height 180 >/dev/null \
+  || fail "render baseball/line-drive --set"
+expect_exit 2 "no-such" -o "$tmp/x.png" golf/no-such
+expect_exit 2 "not both" golf/driver -o "$tmp/x.png" "${drive[@]}"
+expect_exit 2 "swing.speed" golf/driver -o "$tmp/x.png" --set swing.speed=1e9mph
+[ -e "$tmp/x.png" ] && fail "a failed scenario render left an output file"
+
 # No EGL vendor at all (GLVND finds none): exit 3, a sentence, no crash, no file.
 set +e
 msg=$(__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/sweetspot-no-egl.json "$bin" render -o "$tmp/noegl.png" "${drive[@]}" 2>&1)

@@ -198,6 +198,29 @@ TEST_CASE("every camera frames the shot: the launch and rest points are in the i
   }
 }
 
+TEST_CASE("a ballpark shows the fence distances where the foul lines and gaps meet the wall", "[render]") {
+  // A baseball drive to centre-right; the fence labels are drawn in their own yellow.
+  ShotTrajectory shot = synthetic_shot({110.0, 30.0, 10.0, 0.0369, 0.0});
+  for (auto& s : shot.samples) s.position.y() += 0.9;  // contact above the plate
+  RenderRequest r = range_request(640, 360, CameraKind::Top);
+  r.sport = "baseball";
+  r.world = (kSource / "tests/render/test_park.obj").string();
+  r.ball_radius = 0.0369;
+  auto count_fence_yellow = [](const std::vector<std::uint8_t>& img) {
+    std::size_t n = 0;
+    // (255, 235, 77); the flight trail (255, 219, 26) is told apart by its green and blue.
+    for (std::size_t i = 0; i < img.size(); i += 4)
+      n += img[i] > 240 && img[i + 1] > 228 && img[i + 1] < 242 && img[i + 2] > 60 && img[i + 2] < 95;
+    return n;
+  };
+  const auto park = render_shot_rgba(shot, r);
+  // Five labels ("330 ft" x2, "382 ft" x2, "400 ft"), 8 px tall at this size: each has
+  // ~60 lit font cells of about one pixel, some softened by MSAA; 163 counted when written.
+  CHECK(count_fence_yellow(park) > 5 * 20);
+  r.sport = "golf";  // the same world as a golf hole: 50 yd lines instead, no fence labels
+  CHECK(count_fence_yellow(render_shot_rgba(shot, r)) < 20);
+}
+
 TEST_CASE("a missing or broken shader names the file and the compiler log", "[render]") {
   OffscreenContext context;
   const auto dir = std::filesystem::temp_directory_path() / "sweetspot_render_shader_test";

@@ -70,6 +70,20 @@ TEST_CASE("a square centre strike launches straight with backspin", "[delivery][
   CHECK(d.impact.contact == ContactKind::Grip);
 }
 
+TEST_CASE("a frictionless centre strike leaves the ball without spin", "[delivery][golf]") {
+  // Through the CG line of a symmetric face the frictionless impulse is along the normal
+  // and passes through the ball's centre: no torque on the ball, whatever the loft.
+  for (FrictionModel model : {FrictionModel::None, FrictionModel::Coulomb}) {
+    const ClubSpec& c = eq().club("7-iron");
+    ImpactMaterial m = c.face;
+    m.friction = model;
+    m.mu = 0.0;
+    const Delivery d = deliver_golf(eq().ball("tour"), c, GolfSwing{}, m);
+    CHECK(d.launch.spin.norm() < 1e-9);
+    CHECK(d.launch.velocity.norm() > 30.0);
+  }
+}
+
 TEST_CASE("gear effect: toe hooks, heel slices, high spins less", "[delivery][golf][gear]") {
   GolfSwing s;
   const LaunchMetrics centre = measure_launch(golf("driver", s).launch);

@@ -155,14 +155,14 @@ TEST_CASE("a missing file is named", "[scenario][bad-input]") {
 
 TEST_CASE("every built-in scenario is valid and described", "[scenario]") {
   const auto all = builtin_scenarios();
-  REQUIRE(all.size() >= 13);
+  REQUIRE(all.size() >= 14);
   for (const auto& s : all) {
     INFO(s.name);
     const CheckedDoc d(read_toml_doc(s.path), scenario_schema());
     CHECK(d.sport() == s.sport);
     CHECK_FALSE(s.description.empty());
   }
-  for (const char* name : {"golf/driver", "golf/3-wood", "golf/7-iron", "golf/pw", "golf/toe-hook",
+  for (const char* name : {"golf/driver", "golf/3-wood", "golf/7-iron", "golf/pw", "golf/sand-wedge", "golf/toe-hook",
                            "golf/heel-slice", "golf/into-wind", "golf/altitude", "baseball/line-drive",
                            "baseball/home-run", "baseball/grounder", "baseball/pop-up", "baseball/opposite-field"}) {
     INFO(name);

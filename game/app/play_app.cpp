@@ -1,0 +1,165 @@
+#include "game/app/play_app.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "game/app/game_window.hpp"
+#include "game/app/shot_view.hpp"
+#include "game/render/gl.hpp"
+#include "game/render/image.hpp"
+#include "game/render/render_error.hpp"
+#include "game/render/renderer.hpp"
+#include "game/report/report.hpp"
+#include "game/ui/panels.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+// Mouse orbit on top of the chosen camera: yaw about the vertical through the target,
+// pitch toward the zenith, zoom along the view line. Reset when the camera changes.
+struct Orbit {
+  double yaw = 0.0, pitch = 0.0, zoom = 1.0;
+  void reset() { *this = Orbit{}; }
+  Camera apply(Camera c) const {
+    Vec3 off = c.eye - c.target;
+    off = Eigen::AngleAxisd(yaw, Vec3::UnitY()) * off;
+    const Vec3 side = off.cross(Vec3::UnitY());
+    if (side.norm() > 1e-9) {
+      const Vec3 pitched = Eigen::AngleAxisd(pitch, side.normalized()) * off;
+      // Stop short of the zenith and the ground plane so the view never flips.
+      const double elev = std::asin(std::clamp(pitched.normalized().y(), -1.0, 1.0));
+      if (elev < 1.45 && elev > -0.05) off = pitched;
+    }
+    c.eye = c.target + off * zoom;
+    return c;
+  }
+};
+
+struct Shot {
+  Scenario scenario;
+  ShotResult result;
+};
+
+Shot compute(const UiState& st) {
+  Shot s{load_ui_scenario(st), {}};
+  s.result = run_scenario(s.scenario);
+  return s;
+}
+
+}  // namespace
+
+int run_play_headless(const PlayOptions& o, std::ostream& out) {
+  UiState st;
+  st.scenario = o.scenario;
+  for (const std::string& a : o.overrides) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos) throw InputError("--set " + a + ": expected key=value");
+    st.set(a.substr(0, eq), a.substr(eq + 1));
+  }
+  const Shot shot = compute(st);
+  out << launch_table(shot.result, UnitSystem::Imperial);
+  const std::string png = o.screenshot.empty() ? "sweetspot-play.png" : o.screenshot;
+  try {
+    RenderRequest req = render_request_for(shot.scenario, shot.result);
+    req.width = o.width;
+    req.height = o.height;
+    render_shot_png(shot.result.trajectory, req, png);
+    out << "image: " << png << " (" << req.width << "x" << req.height << ", off-screen EGL)\n";
+  } catch (const RenderUnavailable& e) {
+    out << "image: skipped, no off-screen OpenGL here (" << e.what() << ")\n";
+  }
+  return 0;
+}
+
+int run_play_window(const PlayOptions& o, std::ostream& out) {
+  UiState st;
+  st.scenario = o.scenario;
+  for (const std::string& a : o.overrides) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos) throw InputError("--set " + a + ": expected key=value");
+    st.set(a.substr(0, eq), a.substr(eq + 1));
+  }
+  Shot shot = compute(st);  // bad input fails here, before a window opens
+  UiState good = st;
+
+  WindowOptions wo;
+  wo.width = o.width;
+  wo.height = o.height;
+  wo.vsync = o.frames == 0;
+  GameWindow win(wo);
+  Renderer renderer(win.framebuffer_width(), win.framebuffer_height());
+  auto scene = std::make_unique<ShotScene>(scene_input_for(shot.scenario, shot.result));
+  scene->set_shot(shot.result.trajectory, impactor_placement(shot.result));
+
+  ReplayState replay;
+  CameraKind camera = CameraKind::Behind;
+  Orbit orbit;
+  std::string status, save_path = "my-shot.toml";
+  int frame = 0;
+  double ms_total = 0.0;
+  auto last = std::chrono::steady_clock::now();
+
+  while (!win.should_close()) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double dt = std::chrono::duration<double>(t0 - last).count();
+    last = t0;
+    const FrameInput in = win.begin_frame();
+    if (in.camera >= 0 && static_cast<CameraKind>(in.camera) != camera) {
+      camera = static_cast<CameraKind>(in.camera);
+      orbit.reset();
+    }
+    if (in.replay || in.hit_again) replay.restart();
+    orbit.yaw -= in.orbit_dx * 0.005;
+    orbit.pitch += in.orbit_dy * 0.005;
+    if (in.zoom != 0.0) orbit.zoom = std::clamp(orbit.zoom * std::pow(0.9, in.zoom), 0.1, 5.0);
+
+    const CameraKind before = camera;
+    PanelContext ctx{st, shot.scenario, shot.result, replay, camera, status, save_path};
+    const bool changed = draw_panels(ctx) || in.hit_again;
+    if (camera != before) orbit.reset();
+    if (changed) {
+      // Recompute in the same frame, so the trail drawn below is the new shot's.
+      try {
+        Shot next = compute(st);
+        const bool new_world = next.scenario.world != shot.scenario.world || next.scenario.sport != shot.scenario.sport;
+        shot = std::move(next);
+        good = st;
+        if (new_world) scene = std::make_unique<ShotScene>(scene_input_for(shot.scenario, shot.result));
+        scene->set_shot(shot.result.trajectory, impactor_placement(shot.result));
+        replay.restart();
+        status.clear();
+      } catch (const InputError& e) {
+        status = e.what();
+        st = good;  // keep showing the last valid shot
+      }
+    }
+    replay.advance(dt, duration(shot.result.trajectory));
+
+    const int w = win.framebuffer_width(), h = win.framebuffer_height();
+    if (w > 0 && h > 0) {
+      if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);
+      const Camera cam = orbit.apply(scene->camera(camera, replay.time, w, h));
+      renderer.draw(scene->build(cam, replay.time, w, h), cam);
+      renderer.blit_to(0, w, h);
+    }
+    win.render_ui();
+    ++frame;
+    const bool last_frame = o.frames > 0 && frame >= o.frames;
+    if (last_frame && !o.screenshot.empty()) {
+      int sw = 0, sh = 0;
+      std::vector<unsigned char> rgba;
+      win.read_pixels(sw, sh, rgba);
+      write_png_atomic(o.screenshot, sw, sh, rgba);
+      out << "screenshot: " << o.screenshot << " (" << sw << "x" << sh << ")\n";
+    }
+    win.present();
+    ms_total += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (last_frame) break;
+  }
+  if (frame > 0) out << "play: " << frame << " frames, " << ms_total / frame << " ms per frame\n";
+  return 0;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,29 @@
+// `sweetspot play`: the game window (GLFW + Dear ImGui over the renderer) or, without a
+// display, the same shot headless (launch-monitor table + an off-screen PNG).
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace sweetspot {
+
+struct PlayOptions {
+  std::string scenario = "golf/driver";   ///< built-in name or .toml path
+  std::vector<std::string> overrides;     ///< `--set key=value` applied before the first shot
+  int frames = 0;                         ///< window: run this many frames then exit (0 = until closed)
+  std::string screenshot;                 ///< window: PNG of the last frame; headless: the shot's PNG
+  int width = 1280, height = 800;         ///< px, window size
+};
+
+/// Opens the window and runs until closed (or `frames`). Returns the exit code. Prints the
+/// mean frame time on exit. Throws InputError for a bad scenario, std::runtime_error when
+/// no window can be opened.
+int run_play_window(const PlayOptions& options, std::ostream& out);
+
+/// Runs the shot without a window: prints the launch-monitor table and writes a PNG of the
+/// shot through EGL (`screenshot`, default sweetspot-play.png). Without EGL the table is
+/// still printed and the PNG skipped with a note. Returns 0.
+int run_play_headless(const PlayOptions& options, std::ostream& out);
+
+}  // namespace sweetspot

@@ -1,0 +1,109 @@
+#include "game/ui/ui_state.hpp"
+
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+namespace sweetspot {
+
+std::vector<std::string> UiState::override_list() const {
+  std::vector<std::string> out;
+  out.reserve(overrides.size());
+  for (const auto& [key, value] : overrides) out.push_back(key + "=" + value);
+  return out;
+}
+
+std::string quantity_text(double value, const std::string& unit) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", value);
+  return std::string(buf) + unit;
+}
+
+std::string quantity_list_text(const std::vector<double>& values, const std::string& unit) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i) out += ", ";
+    out += quantity_text(values[i], unit);
+  }
+  return out + "]";
+}
+
+Scenario load_ui_scenario(const UiState& state) {
+  return load_scenario(state.scenario, state.override_list());
+}
+
+namespace {
+
+std::string toml_string(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// "[10mm, 0mm]" -> ["10mm", "0mm"]; a value already in TOML array syntax with quoted
+// elements passes through unchanged.
+std::string toml_array(const std::string& text) {
+  std::string inner = text.substr(1, text.size() - 2);
+  if (inner.find('"') != std::string::npos) return text;
+  std::string out = "[";
+  std::stringstream ss(inner);
+  std::string item;
+  bool first = true;
+  while (std::getline(ss, item, ',')) {
+    const auto b = item.find_first_not_of(" \t");
+    const auto e = item.find_last_not_of(" \t");
+    if (b == std::string::npos) continue;
+    if (!first) out += ", ";
+    out += toml_string(item.substr(b, e - b + 1));
+    first = false;
+  }
+  return out + "]";
+}
+
+std::string toml_value(const DocEntry& e) {
+  switch (e.kind) {
+    case RawKind::Integer:
+    case RawKind::Float:
+    case RawKind::Boolean:
+      return e.text;
+    case RawKind::Array:
+      return toml_array(e.text);
+    case RawKind::Text:
+      if (!e.text.empty() && e.text.front() == '[' && e.text.back() == ']') return toml_array(e.text);
+      return toml_string(e.text);
+    default:
+      return toml_string(e.text);
+  }
+}
+
+}  // namespace
+
+std::string scenario_toml(const Scenario& scenario) {
+  // Top-level keys first, then one table per section in the order the document first
+  // mentions it, so a saved file reads like the built-in it came from.
+  std::ostringstream out;
+  out << "# Saved from the Sweetspot window (scenario " << scenario.name << ").\n";
+  std::vector<std::string> sections;
+  std::map<std::string, std::vector<const DocEntry*>> by_section;
+  for (const DocEntry& e : scenario.doc.entries) {
+    const auto dot = e.key.find('.');
+    if (dot == std::string::npos) {
+      out << e.key << " = " << toml_value(e) << "\n";
+      continue;
+    }
+    const std::string section = e.key.substr(0, dot);
+    if (!by_section.count(section)) sections.push_back(section);
+    by_section[section].push_back(&e);
+  }
+  for (const std::string& section : sections) {
+    out << "\n[" << section << "]\n";
+    for (const DocEntry* e : by_section[section])
+      out << e->key.substr(section.size() + 1) << " = " << toml_value(*e) << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace sweetspot

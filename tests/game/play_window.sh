@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The game window under Xvfb: `play --frames N --screenshot` opens a real GLFW window with
+# the ImGui panels, runs N frames and saves the window's image; check_screenshot verifies
+# size and content. $1 = sweetspot, $2 = check_screenshot.
+set -euo pipefail
+bin="$1"; check="$2"
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+if ! command -v xvfb-run >/dev/null; then
+  echo "xvfb-run missing: install Debian's xvfb (scripts/dev installs it)" >&2; exit 1
+fi
+for scenario in golf/driver baseball/home-run; do
+  out="$work/${scenario//\//-}.png"
+  xvfb-run -a -s "-screen 0 1280x800x24" "$bin" play "$scenario" --frames 40 --screenshot "$out" \
+    > "$work/log.txt" 2>&1 || { cat "$work/log.txt"; exit 1; }
+  cat "$work/log.txt"
+  grep -q "ms per frame" "$work/log.txt"
+  "$check" "$out" 1280 800
+  [ -n "${SWEETSPOT_GAME_ARTIFACTS:-}" ] && cp "$out" "$SWEETSPOT_GAME_ARTIFACTS/" || true
+done
+# A bad scenario fails before any window opens, exit 2.
+set +e
+xvfb-run -a "$bin" play golf/no-such-scenario --frames 2 > "$work/bad.txt" 2>&1
+rc=$?
+set -e
+[ "$rc" -eq 2 ] || { echo "expected exit 2 for an unknown scenario, got $rc"; cat "$work/bad.txt"; exit 1; }
+grep -q "no-such-scenario" "$work/bad.txt"
+# Headless (no DISPLAY): says so, prints the table, writes the PNG, exit 0.
+(cd "$work" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play golf/7-iron > headless.txt)
+grep -q "no display" "$work/headless.txt"
+grep -qi "carry" "$work/headless.txt"
+if grep -q "^image: sweetspot-play.png" "$work/headless.txt"; then "$check" "$work/sweetspot-play.png" 1280 800 50; fi
+echo "play window test passed"

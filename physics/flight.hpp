@@ -20,6 +20,9 @@ namespace sweetspot {
 struct FlightSettings {
   double rel_tol = 1e-8;         ///< integrator relative tolerance per step
   double abs_tol = 1e-9;         ///< integrator absolute tolerance (m, m/s, rad/s)
+  /// Relative tolerance once the ball has landed (the hops after the carry); the carry
+  /// itself always uses rel_tol. The bounces' own model error (turf e, µ) is ~1e-2.
+  double bounce_rel_tol = 1e-6;
   double max_time = 60.0;        ///< s; a shot that has not ended by then ends with StepLimit
   int max_steps = 200000;        ///< integrator + roll steps bound
   bool record_samples = true;    ///< fill ShotTrajectory::samples (off for benchmarks)

@@ -126,6 +126,8 @@ class DormandPrince45 {
   }
 
   double step_size() const { return h_; }
+  /// Changes the tolerances from the next step on (e.g. looser after the carry is known).
+  void set_tolerances(const IntegratorTolerances& tol) { tol_ = tol; }
 
  private:
   IntegratorTolerances tol_;

@@ -3,7 +3,9 @@
 #include "physics/world.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <limits>
 #include <sstream>
 
@@ -18,6 +20,11 @@ btVector3 bt(const Vec3& v) { return btVector3(v.x(), v.y(), v.z()); }
 
 bool finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
 
+struct TriRef {
+  int mesh = -1;
+  int tri = -1;
+};
+
 /// Triangles of one material handed to Bullet. Bullet reads the arrays in place, so they
 /// must outlive the shape and never reallocate after it is built.
 struct CollisionMesh {
@@ -25,6 +32,7 @@ struct CollisionMesh {
   std::vector<double> vertices;  // xyz
   std::vector<int> indices;      // 3 per triangle
   std::vector<Vec3> normals;     // unit face normal per triangle
+  std::vector<std::array<TriRef, 3>> neighbours;  // across edge k = (corner k, corner k+1), any mesh
   std::unique_ptr<btTriangleIndexVertexArray> array;
   std::unique_ptr<btBvhTriangleMeshShape> shape;
   std::unique_ptr<btCollisionObject> object;
@@ -116,6 +124,32 @@ struct World::Impl {
             top[idx] = std::max(top[idx], ytop);
             if (steep) steep_top[idx] = std::max(steep_top[idx], ytop);
           }
+      }
+    }
+  }
+
+  /// Edge adjacency across all meshes (edges matched by their end points), so a rolling
+  /// ball that leaves its triangle usually finds the next one without a Bullet query.
+  void build_adjacency() {
+    using Key = std::array<double, 6>;
+    std::map<Key, std::vector<std::pair<TriRef, int>>> edges;
+    for (size_t mi = 0; mi < meshes.size(); ++mi) {
+      CollisionMesh& m = meshes[mi];
+      const int n = static_cast<int>(m.indices.size() / 3);
+      m.neighbours.assign(static_cast<size_t>(n), {});
+      for (int t = 0; t < n; ++t)
+        for (int k = 0; k < 3; ++k) {
+          Vec3 a = m.vertex(t, k), b = m.vertex(t, (k + 1) % 3);
+          if (std::lexicographical_compare(b.data(), b.data() + 3, a.data(), a.data() + 3)) std::swap(a, b);
+          edges[Key{a.x(), a.y(), a.z(), b.x(), b.y(), b.z()}].push_back({TriRef{static_cast<int>(mi), t}, k});
+        }
+    }
+    for (const auto& [key, list] : edges) {
+      if (list.size() != 2) continue;  // boundary or non-manifold edge: leave it to the ray
+      for (int s = 0; s < 2; ++s) {
+        const auto& [self, k] = list[static_cast<size_t>(s)];
+        meshes[static_cast<size_t>(self.mesh)].neighbours[static_cast<size_t>(self.tri)][static_cast<size_t>(k)] =
+            list[static_cast<size_t>(1 - s)].first;
       }
     }
   }
@@ -307,6 +341,7 @@ World::World(WorldDescription description) : impl_(std::make_unique<Impl>()) {
   }
   w.world.updateAabbs();
   w.build_grid();
+  w.build_adjacency();
 }
 
 World::~World() {
@@ -343,11 +378,22 @@ bool World::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContac
 bool World::support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const {
   const Impl& w = *impl_;
   int mesh = -1, tri = -1;
-  if (hit->mesh >= 0 && hit->triangle >= 0 && static_cast<size_t>(hit->mesh) < w.meshes.size() &&
-      w.over_triangle(hit->mesh, hit->triangle, centre)) {
-    mesh = hit->mesh;  // still over the same triangle: no Bullet query
-    tri = hit->triangle;
-  } else {
+  if (hit->mesh >= 0 && hit->triangle >= 0 && static_cast<size_t>(hit->mesh) < w.meshes.size()) {
+    if (w.over_triangle(hit->mesh, hit->triangle, centre)) {
+      mesh = hit->mesh;  // still over the same triangle: no Bullet query
+      tri = hit->triangle;
+    } else {
+      for (const TriRef& nb : w.meshes[static_cast<size_t>(hit->mesh)].neighbours[static_cast<size_t>(hit->triangle)]) {
+        if (nb.mesh >= 0 && w.meshes[static_cast<size_t>(nb.mesh)].normals[static_cast<size_t>(nb.tri)].y() > 0.1 &&
+            w.over_triangle(nb.mesh, nb.tri, centre)) {
+          mesh = nb.mesh;  // rolled onto a neighbour
+          tri = nb.tri;
+          break;
+        }
+      }
+    }
+  }
+  if (mesh < 0) {
     // Straight down far enough to find a 60° slope under the ball.
     RayCallback cb;
     cb.meshes = &w.meshes;

@@ -62,9 +62,33 @@ void post_tick(btDynamicsWorld* world, btScalar /*dt*/) {
 
 }  // namespace
 
+BaselineGroundShape::BaselineGroundShape(const BaselineGround& ground) : ground_(ground) {
+  auto* mesh = new btTriangleMesh(true, false);
+  for (size_t i = 0; i + 2 < ground.indices.size(); i += 3) {
+    mesh->addTriangle(bt(ground.positions[static_cast<size_t>(ground.indices[i])]),
+                      bt(ground.positions[static_cast<size_t>(ground.indices[i + 1])]),
+                      bt(ground.positions[static_cast<size_t>(ground.indices[i + 2])]));
+  }
+  mesh_ = mesh;
+  shape_ = new btBvhTriangleMeshShape(mesh, true);
+}
+
+BaselineGroundShape::~BaselineGroundShape() {
+  delete static_cast<btBvhTriangleMeshShape*>(shape_);
+  delete static_cast<btTriangleMesh*>(mesh_);
+}
+
 BaselineResult run_bullet_baseline(const LaunchState& launch, const BaselineBall& ball,
                                    const AeroFn& aero, const BaselineGround& ground,
                                    const BaselineOptions& options) {
+  const BaselineGroundShape shape(ground);
+  return run_bullet_baseline(launch, ball, aero, shape, options);
+}
+
+BaselineResult run_bullet_baseline(const LaunchState& launch, const BaselineBall& ball,
+                                   const AeroFn& aero, const BaselineGroundShape& ground_shape,
+                                   const BaselineOptions& options) {
+  const BaselineGround& ground = ground_shape.ground();
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher(&config);
   btDbvtBroadphase broadphase;
@@ -72,14 +96,8 @@ BaselineResult run_bullet_baseline(const LaunchState& launch, const BaselineBall
   btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
   world.setGravity(btVector3(0, -kGravity, 0));
 
-  btTriangleMesh mesh(true, false);
-  for (size_t i = 0; i + 2 < ground.indices.size(); i += 3) {
-    mesh.addTriangle(bt(ground.positions[static_cast<size_t>(ground.indices[i])]),
-                     bt(ground.positions[static_cast<size_t>(ground.indices[i + 1])]),
-                     bt(ground.positions[static_cast<size_t>(ground.indices[i + 2])]));
-  }
-  btBvhTriangleMeshShape ground_shape(&mesh, true);
-  btRigidBody::btRigidBodyConstructionInfo ground_info(0.0, nullptr, &ground_shape);
+  auto* ground_bvh = static_cast<btBvhTriangleMeshShape*>(ground_shape.shape());
+  btRigidBody::btRigidBodyConstructionInfo ground_info(0.0, nullptr, ground_bvh);
   ground_info.m_restitution = ground.restitution;
   ground_info.m_friction = ground.friction;
   ground_info.m_rollingFriction = ground.rolling_friction;

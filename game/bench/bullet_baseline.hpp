@@ -57,4 +57,26 @@ BaselineResult run_bullet_baseline(const LaunchState& launch, const BaselineBall
                                    const AeroFn& aero, const BaselineGround& ground,
                                    const BaselineOptions& options = {});
 
+/// The ground's triangle mesh and BVH, built once and shared by many baseline shots (a game
+/// builds its level once, not per shot). Not copyable; keep `ground` alive while it lives.
+class BaselineGroundShape {
+ public:
+  explicit BaselineGroundShape(const BaselineGround& ground);
+  ~BaselineGroundShape();
+  BaselineGroundShape(const BaselineGroundShape&) = delete;
+  BaselineGroundShape& operator=(const BaselineGroundShape&) = delete;
+  const BaselineGround& ground() const { return ground_; }
+  void* shape() const { return shape_; }  ///< btBvhTriangleMeshShape*
+
+ private:
+  const BaselineGround& ground_;
+  void* mesh_ = nullptr;   // btTriangleMesh*
+  void* shape_ = nullptr;  // btBvhTriangleMeshShape*
+};
+
+/// The same shot on a prebuilt ground shape.
+BaselineResult run_bullet_baseline(const LaunchState& launch, const BaselineBall& ball,
+                                   const AeroFn& aero, const BaselineGroundShape& ground,
+                                   const BaselineOptions& options = {});
+
 }  // namespace sweetspot::bench

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "game/bench/impact_bench.hpp"
+#include "game/bench/shot_bench.hpp"
 #include "game/bench/sweep_bench.hpp"
 #include "game/render/render_command.hpp"
 #include "game/render/render_error.hpp"
@@ -36,6 +37,21 @@ RunFn setup_bench(CLI::App& sub) {
     const double seconds = opts->quick ? 0.05 : 1.0;
     std::vector<Measurement> rows;
     rows.push_back({"impact_solves_per_s", measure_impact_solves_per_s(seconds), "impact solves/s (one core)"});
+
+    // Whole shots, launch to rest on the asset worlds, and the same driver launch through
+    // the Bullet-dynamics baseline, all measured in this run.
+    const bench::ShotBenchResult golf = bench::bench_golf_shots(seconds);
+    const bench::ShotBenchResult baseball = bench::bench_baseball_shots(seconds);
+    const bench::ShotBenchResult baseline = bench::bench_baseline_golf_shots(seconds);
+    const bench::CarryErrors carry = bench::golf_carry_errors();
+    rows.push_back({"golf_shots_per_s", golf.shots_per_second, "golf shots/s (driver, launch to rest)"});
+    rows.push_back({"golf_us_per_shot", golf.us_per_shot, "us per golf shot"});
+    rows.push_back({"baseball_shots_per_s", baseball.shots_per_second, "baseball shots/s (ballpark)"});
+    rows.push_back({"baseline_golf_shots_per_s", baseline.shots_per_second, "baseline golf shots/s (Bullet 240 Hz)"});
+    rows.push_back({"speedup_vs_baseline", golf.shots_per_second / baseline.shots_per_second, "speed-up vs baseline"});
+    rows.push_back({"carry_error_m", carry.ours_error_m, "carry error, ours (m)"});
+    rows.push_back({"baseline_carry_error_m", carry.baseline_error_m, "carry error, baseline (m)"});
+    rows.push_back({"reference_carry_m", carry.reference_m, "reference carry (m)"});
 
     const int axis = opts->quick ? 6 : 40;
     const SweepThroughput s1 = measure_sweep(1, axis);

@@ -35,7 +35,12 @@ FrictionModel friction_from(const std::string& s) {
 
 void apply_material_overrides(const CheckedDoc& doc, ImpactMaterial& m) {
   if (auto e = doc.quantity_if_set("impact.e")) m.e = CorCurve::constant(*e);
-  if (auto et = doc.quantity_if_set("impact.e_t")) m.e_t = *et;
+  if (auto et = doc.quantity_if_set("impact.e_t")) {
+    // A stated e_t is the value used: drop the equipment's speed fade, as impact.e drops
+    // the speed-dependent COR curve.
+    m.e_t = *et;
+    m.e_t_scale = CorCurve::constant(1.0);
+  }
   if (auto mu = doc.quantity_if_set("impact.mu")) m.mu = *mu;
   if (auto f = doc.text_if_set("impact.friction")) m.friction = friction_from(*f);
 }

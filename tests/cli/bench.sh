@@ -11,6 +11,14 @@ import json, sys
 j = json.loads(sys.argv[1])
 v = j["impact_solves_per_s"]
 assert isinstance(v, (int, float)) and v > 1e5, f"impact_solves_per_s = {v}"
+for k in ("golf_shots_per_s", "baseball_shots_per_s", "baseline_golf_shots_per_s", "speedup_vs_baseline",
+          "carry_error_m", "baseline_carry_error_m", "frame_ms_1280x720"):
+    assert k in j, f"missing key {k}"
+for k in ("golf_shots_per_s", "baseball_shots_per_s", "baseline_golf_shots_per_s", "speedup_vs_baseline"):
+    assert j[k] > 0, f"{k} = {j[k]}"
+# Accuracy is not timing: ours must beat the baseline's carry error and stay within 5 cm.
+assert 0 <= j["carry_error_m"] <= 0.05, j["carry_error_m"]
+assert j["carry_error_m"] < j["baseline_carry_error_m"], (j["carry_error_m"], j["baseline_carry_error_m"])
 PY
 "$bin" bench --quick | grep -q "impact solves/s" || fail "table output"
 set +e

@@ -41,6 +41,15 @@ TEST_CASE("panel edits change the loaded scenario", "[ui]") {
   CHECK(v1 < v0);
 }
 
+TEST_CASE("the e_t slider changes a driver shot (the stated e_t replaces the speed fade)", "[ui]") {
+  UiState st;
+  st.set("impact.e_t", "0");
+  const ShotResult a = run_scenario(load_ui_scenario(st), {true, false});
+  st.set("impact.e_t", "0.3");
+  const ShotResult b = run_scenario(load_ui_scenario(st), {true, false});
+  CHECK(b.launch.spin.total > a.launch.spin.total * 1.05);  // more tangential rebound, more spin
+}
+
 TEST_CASE("switching scenario drops the previous edits", "[ui]") {
   UiState st;
   st.set("swing.speed", "90mph");

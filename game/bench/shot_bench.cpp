@@ -1,0 +1,122 @@
+#include "game/bench/shot_bench.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "game/assets/assets.hpp"
+#include "game/bench/bullet_baseline.hpp"
+#include "physics/flight.hpp"
+#include "physics/units.hpp"
+#include "physics/world.hpp"
+
+namespace sweetspot::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class Shot>
+ShotBenchResult time_shots(double min_seconds, const Shot& shot) {
+  ShotBenchResult r;
+  double total = shot();  // warm-up (caches, lazy statics), not timed
+  total = 0.0;
+  const auto t0 = Clock::now();
+  double elapsed = 0.0;
+  do {
+    for (int i = 0; i < 16; ++i) total += shot();
+    r.shots += 16;
+    elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
+  } while (elapsed < min_seconds);
+  r.seconds = elapsed;
+  r.us_per_shot = elapsed * 1e6 / r.shots;
+  r.shots_per_second = r.shots / elapsed;
+  r.mean_total_m = total / r.shots;
+  return r;
+}
+
+FlightInput driver_input() {
+  FlightInput in;
+  in.aero = &aero_model("ferguson2022");
+  in.ball = golf_ball_properties();
+  in.launch = bench_driver_launch();
+  in.settings.record_samples = false;
+  return in;
+}
+
+BaselineGround golf_ground(const WorldDescription& d) {
+  BaselineGround g;
+  for (const WorldMesh& m : d.meshes) {
+    if (d.materials[static_cast<size_t>(m.material)].kind == SurfaceKind::Decoration) continue;
+    const int base = static_cast<int>(g.positions.size());
+    g.positions.insert(g.positions.end(), m.vertices.begin(), m.vertices.end());
+    for (std::uint32_t i : m.indices) g.indices.push_back(base + static_cast<int>(i));
+  }
+  // Bullet's combined restitution/friction: fairway-like values for a typical game.
+  g.restitution = 0.3;
+  g.friction = 0.4;
+  return g;
+}
+
+AeroFn baseline_aero(const FlightInput& in) {
+  const AeroModel* model = in.aero;
+  const double rho = air_density(in.environment);
+  const double radius = in.ball.radius;
+  return [model, rho, radius](const Vec3&, const Vec3& v, const Vec3& w) {
+    const sweetspot::AeroEffect fx = aero_effect(*model, rho, radius, v, w);
+    return bench::AeroEffect{fx.force, fx.spin_rate};
+  };
+}
+
+BaselineBall baseline_ball(const FlightInput& in) { return BaselineBall{in.ball.mass, in.ball.radius, in.ball.inertia}; }
+
+}  // namespace
+
+LaunchState bench_driver_launch() {
+  return launch_from_metrics(mph_to_mps(167.0), deg_to_rad(10.9), 0.0, rpm_to_radps(2686.0), 0.0,
+                             Vec3(0.0, golf_ball_properties().radius, 0.0));
+}
+
+ShotBenchResult bench_golf_shots(double min_seconds) {
+  const World world(load_world("golf_hole"));
+  const FlightInput in = driver_input();
+  return time_shots(min_seconds, [&] { return simulate_shot(in, &world).summary.total_m; });
+}
+
+ShotBenchResult bench_baseball_shots(double min_seconds) {
+  const World world(load_world("ballpark"));
+  FlightInput in;
+  in.aero = &aero_model("nathan");
+  in.ball = baseball_properties();
+  in.launch = launch_from_metrics(mph_to_mps(103.0), deg_to_rad(28.0), 0.0, rpm_to_radps(2000.0), 0.0,
+                                  Vec3(0.0, 0.9, 0.0));
+  in.settings.record_samples = false;
+  return time_shots(min_seconds, [&] { return simulate_shot(in, &world).summary.total_m; });
+}
+
+ShotBenchResult bench_baseline_golf_shots(double min_seconds) {
+  const BaselineGround ground = golf_ground(load_world("golf_hole"));
+  const BaselineGroundShape shape(ground);  // built once, as a game builds its level
+  const FlightInput in = driver_input();
+  const AeroFn aero = baseline_aero(in);
+  const BaselineBall ball = baseline_ball(in);
+  return time_shots(min_seconds, [&] { return run_bullet_baseline(in.launch, ball, aero, shape).total_m; });
+}
+
+CarryErrors golf_carry_errors() {
+  const WorldDescription d = load_world("golf_hole");
+  const World world(d);
+  FlightInput in = driver_input();
+  CarryErrors e;
+  e.ours_m = simulate_shot(in, &world).summary.carry_m;
+  in.settings.rel_tol = 1e-13;
+  in.settings.abs_tol = 1e-14;
+  e.reference_m = simulate_shot(in, &world).summary.carry_m;
+  const BaselineGround ground = golf_ground(d);
+  BaselineOptions opt;
+  opt.carry_only = true;
+  e.baseline_m = run_bullet_baseline(in.launch, baseline_ball(in), baseline_aero(in), ground, opt).carry_m;
+  e.ours_error_m = std::abs(e.ours_m - e.reference_m);
+  e.baseline_error_m = std::abs(e.baseline_m - e.reference_m);
+  return e;
+}
+
+}  // namespace sweetspot::bench

@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
 #include "physics/body.hpp"
 #include "physics/error.hpp"
@@ -47,6 +48,16 @@ LaunchState launch_of(const ImpactResult& r, const Vec3& ball_centre) {
 }
 
 void solve_into(Delivery& d, const char* who) {
+  // Far off-centre contact with a slow swing can leave the striking surface moving along or
+  // away from the contact normal: a geometric miss, which deserves words a player understands.
+  const double closing = -contact_velocity(d.impact_input.impactor, d.impact_input.ball).dot(d.impact_input.normal);
+  if (closing <= 0.0) {
+    std::ostringstream os;
+    os << who << ": the strike misses: at this contact point the " << (std::string(who).starts_with("golf") ? "club" : "bat")
+       << " does not close on the ball (closing speed " << closing
+       << " m/s along the contact normal); hit nearer the centre or swing faster";
+    throw InputError(os.str());
+  }
   if (auto msg = validate_impact(d.impact_input); !msg.empty()) {
     throw InputError(std::string(who) + ": " + msg);
   }

@@ -329,15 +329,24 @@ class ShotRunner {
         return finish(EndReason::Rest);
       }
       const Vec3 dir = speed > 0.0 ? Vec3(v / speed) : Vec3(slope_acc.normalized());
-      const Vec3 a = slope_acc - resist * dir;
+      // Air drag matters on a fast roll (a ball skidding out at 80 m/s loses more to the air
+      // than to the turf); its part along the surface acts through the centre, so a rolling
+      // sphere feels 5/7 of it. Lift on the topspin only presses into the ground.
+      Vec3 drag_acc = Vec3::Zero();
+      if (speed > 0.0) {
+        const Vec3 v_rel = v - wind_at(*dyn_.env, r);
+        const Vec3 f = aero_effect(*dyn_.aero, dyn_.density, r, v_rel, n.cross(v) / r).force;
+        drag_acc = (5.0 / 7.0) * dyn_.inv_mass * (f - f.dot(n) * n);
+      }
+      const Vec3 a = slope_acc + drag_acc - resist * dir;
       const double dt = std::min(std::clamp(0.25 / std::max(speed, 1e-3), 1.0 / 240.0, 0.1), set_.max_time - t_);
       Vec3 v1 = v + a * dt;
       Vec3 p1 = p + 0.5 * (v + v1) * dt;
       double step_t = dt;
       bool stops = false;
-      if (holds && speed > 0.0 && (v1.dot(v) <= 0.0 || speed < set_.rest_speed)) {
+      const double along = -a.dot(dir);  // deceleration along the motion
+      if (holds && speed > 0.0 && along > 0.0 && (v1.dot(v) <= 0.0 || speed < set_.rest_speed)) {
         // Comes to rest inside the step: advance exactly to the stop.
-        const double along = -a.dot(dir);
         step_t = speed / along;
         p1 = p + v * step_t + 0.5 * a * step_t * step_t;
         v1 = Vec3::Zero();

@@ -243,8 +243,12 @@ WorldDescription load_world(const std::string& name_or_path) {
       }
     if (d.meshes.empty())
       throw InputError(path.string() + ": no triangles with area (empty, truncated or degenerate mesh)");
-    d.bounds_min = lo - Vec3(0.0, 10.0, 0.0);
-    d.bounds_max = hi + Vec3(0.0, 400.0, 0.0);
+    // The shot starts at the origin, so the box holds it even when the mesh does not (a
+    // lone wall); a margin keeps a flat or single-plane mesh from giving an empty box.
+    lo = lo.cwiseMin(d.origin);
+    hi = hi.cwiseMax(d.origin);
+    d.bounds_min = lo - Vec3(10.0, 10.0, 10.0);
+    d.bounds_max = hi + Vec3(10.0, 400.0, 10.0);
   } else {
     const toml::table t = parse_toml(path);
     static const std::vector<std::string> allowed = {"name", "sport", "mesh", "origin", "bounds_min", "bounds_max",

@@ -27,7 +27,8 @@ inline constexpr std::uintmax_t kMaxWorldMeshBytes = std::uintmax_t{256} << 20;
 inline constexpr double kMaxWorldExtent = 100000.0;
 
 /// A world by name ("golf_hole", "ballpark": asset_root()/worlds/NAME.toml) or by path to
-/// its .toml (or a bare .obj: bounds then come from the mesh). Rejects non-finite vertices
+/// its .toml (or a bare .obj: bounds are the mesh box and the origin, 10 m wider, 400 m
+/// higher). Rejects non-finite vertices
 /// and unknown material names (InputError naming file and mesh); drops zero-area triangles
 /// and says so in WorldDescription::notes.
 WorldDescription load_world(const std::string& name_or_path);

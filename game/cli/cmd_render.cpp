@@ -150,8 +150,8 @@ RunFn setup_render(CLI::App& sub) {
   sub.add_option("scenario", o->scenario, "built-in scenario name or .toml path (without it: the launch flags below)");
   sub.add_option("--set", o->overrides, "override a scenario key, e.g. swing.speed=105mph (repeatable)");
   sub.add_option("-o,--output", o->output, "PNG file to write (written atomically)")->required();
-  sub.add_option("--width", o->width, "image width in pixels (16..8192)")->capture_default_str();
-  sub.add_option("--height", o->height, "image height in pixels (16..8192)")->capture_default_str();
+  sub.add_option("--width", o->width, "image width in pixels (16..8192)")->check(CLI::Range(16, 8192))->capture_default_str();
+  sub.add_option("--height", o->height, "image height in pixels (16..8192)")->check(CLI::Range(16, 8192))->capture_default_str();
   sub.add_option("--camera", o->camera, "behind, side, top or follow")->capture_default_str();
   sub.add_option("--at", o->at, "time since launch, e.g. 2.5 or 2500ms (default: the shot's end)");
   sub.add_option("--sport", o->sport, "golf or baseball")->capture_default_str()->check(CLI::IsMember({"golf", "baseball"}));

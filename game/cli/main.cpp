@@ -1,5 +1,6 @@
 // `sweetspot`: dispatches to the subcommands registered in game/cli/cmd_*.cpp.
 #include <algorithm>
+#include <string>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -19,6 +20,10 @@ int main(int argc, char** argv) {
   CLI::App app{"Sweetspot — golf and baseball impact simulation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "sweetspot 0.1");
+  // Usage errors read like every other error: prefixed, one per line, pointing at --help.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("sweetspot: error: ") + e.what() + "\nRun with --help for the options and their ranges.\n";
+  });
 
   auto& registry = command_registry();
   std::sort(registry.begin(), registry.end(),

@@ -27,10 +27,10 @@ expect_refused() {
   done
 }
 
-expect_refused "club speed 1e9 m/s" "swing.speed|335.5 mph" -- shot golf/driver --set 'swing.speed=1e9m/s'
-expect_refused "bat speed 1e9 m/s" "swing.speed|335.5 mph" -- shot baseball/line-drive --set 'swing.speed=1e9m/s'
+expect_refused "club speed 1e9 m/s" "swing.speed|150 m/s" -- shot golf/driver --set 'swing.speed=1e9m/s'
+expect_refused "bat speed 1e9 m/s" "swing.speed|150 m/s" -- shot baseball/line-drive --set 'swing.speed=1e9m/s'
 expect_refused "pitch spin 1e9 rpm" "pitch.spin|20000 rpm" -- shot baseball/line-drive --set 'pitch.spin=1e9rpm'
-expect_refused "pitch speed 1e9 m/s" "pitch.speed|335.5 mph" -- shot baseball/line-drive --set 'pitch.speed=1e9m/s'
+expect_refused "pitch speed 1e9 m/s" "pitch.speed|150 m/s" -- shot baseball/line-drive --set 'pitch.speed=1e9m/s'
 expect_refused "flight ball speed 1e9 m/s" "ball-speed" -- flight --sport golf --ball-speed 1e9m/s --launch-angle 10deg --spin 2500rpm
 expect_refused "flight spin 1e9 rpm" "spin" -- flight --sport golf --ball-speed 70m/s --launch-angle 10deg --spin 1e9rpm
 expect_refused "wind 1e9 m/s" "environment.wind_speed" -- shot golf/driver --set 'environment.wind_speed=1e9m/s'
@@ -39,6 +39,6 @@ expect_refused "sweep grid of 1e10 points" "100000" -- sweep golf/driver --e 0.5
 [ ! -e "$tmp/s.csv" ] || fail "a refused sweep wrote its CSV"
 expect_refused "render 1e9 px wide" "8192" -- render golf/driver -o "$tmp/big.png" --width 1000000000 --height 720
 expect_refused "render 1e9 px high" "8192" -- render golf/driver -o "$tmp/big.png" --width 1280 --height 1000000000
-expect_refused "render width beyond int" "width" -- render golf/driver -o "$tmp/big.png" --width 99999999999999 --height 720
+expect_refused "render width beyond int" "--width|8192" -- render golf/driver -o "$tmp/big.png" --width 99999999999999 --height 720
 [ ! -e "$tmp/big.png" ] || fail "a refused render wrote its image"
 echo "bounds: all absurd sizes refused with their limits"

@@ -1,7 +1,10 @@
 #include "game/bench/shot_bench.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include "game/assets/assets.hpp"
 #include "game/bench/bullet_baseline.hpp"
@@ -33,13 +36,19 @@ ShotBenchResult time_shots(double min_seconds, const Shot& shot) {
   return r;
 }
 
-FlightInput driver_input() {
+FlightInput golf_input(const LaunchState& launch) {
   FlightInput in;
   in.aero = &aero_model("ferguson2022");
   in.ball = golf_ball_properties();
-  in.launch = bench_driver_launch();
+  in.launch = launch;
   in.settings.record_samples = false;
   return in;
+}
+
+std::vector<FlightInput> tour_inputs() {
+  std::vector<FlightInput> v;
+  for (const BenchLaunch& l : bench_tour_launches()) v.push_back(golf_input(l.launch));
+  return v;
 }
 
 BaselineGround golf_ground(const WorldDescription& d) {
@@ -70,15 +79,21 @@ BaselineBall baseline_ball(const FlightInput& in) { return BaselineBall{in.ball.
 
 }  // namespace
 
-LaunchState bench_driver_launch() {
-  return launch_from_metrics(mph_to_mps(167.0), deg_to_rad(10.9), 0.0, rpm_to_radps(2686.0), 0.0,
-                             Vec3(0.0, golf_ball_properties().radius, 0.0));
+std::vector<BenchLaunch> bench_tour_launches() {
+  // TrackMan PGA Tour averages (DESIGN §4): ball speed, launch angle, spin.
+  const Vec3 tee(0.0, golf_ball_properties().radius, 0.0);
+  return {
+      {"driver", launch_from_metrics(mph_to_mps(167.0), deg_to_rad(10.9), 0.0, rpm_to_radps(2686.0), 0.0, tee)},
+      {"7-iron", launch_from_metrics(mph_to_mps(120.0), deg_to_rad(16.3), 0.0, rpm_to_radps(7097.0), 0.0, tee)},
+      {"pw", launch_from_metrics(mph_to_mps(102.0), deg_to_rad(24.2), 0.0, rpm_to_radps(9304.0), 0.0, tee)},
+  };
 }
 
 ShotBenchResult bench_golf_shots(double min_seconds) {
   const World world(load_world("golf_hole"));
-  const FlightInput in = driver_input();
-  return time_shots(min_seconds, [&] { return simulate_shot(in, &world).summary.total_m; });
+  const std::vector<FlightInput> ins = tour_inputs();
+  std::size_t next = 0;
+  return time_shots(min_seconds, [&] { return simulate_shot(ins[next++ % ins.size()], &world).summary.total_m; });
 }
 
 ShotBenchResult bench_baseball_shots(double min_seconds) {
@@ -95,27 +110,37 @@ ShotBenchResult bench_baseball_shots(double min_seconds) {
 ShotBenchResult bench_baseline_golf_shots(double min_seconds) {
   const BaselineGround ground = golf_ground(load_world("golf_hole"));
   const BaselineGroundShape shape(ground);  // built once, as a game builds its level
-  const FlightInput in = driver_input();
-  const AeroFn aero = baseline_aero(in);
-  const BaselineBall ball = baseline_ball(in);
-  return time_shots(min_seconds, [&] { return run_bullet_baseline(in.launch, ball, aero, shape).total_m; });
+  const std::vector<FlightInput> ins = tour_inputs();
+  const AeroFn aero = baseline_aero(ins.front());
+  const BaselineBall ball = baseline_ball(ins.front());
+  std::size_t next = 0;
+  return time_shots(min_seconds, [&] {
+    return run_bullet_baseline(ins[next++ % ins.size()].launch, ball, aero, shape).total_m;
+  });
 }
 
 CarryErrors golf_carry_errors() {
   const WorldDescription d = load_world("golf_hole");
   const World world(d);
-  FlightInput in = driver_input();
-  CarryErrors e;
-  e.ours_m = simulate_shot(in, &world).summary.carry_m;
-  in.settings.rel_tol = 1e-13;
-  in.settings.abs_tol = 1e-14;
-  e.reference_m = simulate_shot(in, &world).summary.carry_m;
   const BaselineGround ground = golf_ground(d);
-  BaselineOptions opt;
-  opt.carry_only = true;
-  e.baseline_m = run_bullet_baseline(in.launch, baseline_ball(in), baseline_aero(in), ground, opt).carry_m;
-  e.ours_error_m = std::abs(e.ours_m - e.reference_m);
-  e.baseline_error_m = std::abs(e.baseline_m - e.reference_m);
+  CarryErrors e;
+  for (const BenchLaunch& l : bench_tour_launches()) {
+    FlightInput in = golf_input(l.launch);
+    CarryError c;
+    c.name = l.name;
+    c.ours_m = simulate_shot(in, &world).summary.carry_m;
+    in.settings.rel_tol = 1e-13;
+    in.settings.abs_tol = 1e-14;
+    c.reference_m = simulate_shot(in, &world).summary.carry_m;
+    BaselineOptions opt;
+    opt.carry_only = true;
+    c.baseline_m = run_bullet_baseline(in.launch, baseline_ball(in), baseline_aero(in), ground, opt).carry_m;
+    c.ours_error_m = std::abs(c.ours_m - c.reference_m);
+    c.baseline_error_m = std::abs(c.baseline_m - c.reference_m);
+    e.ours_error_m = std::max(e.ours_error_m, c.ours_error_m);
+    e.baseline_error_m = std::max(e.baseline_error_m, c.baseline_error_m);
+    e.shots.push_back(c);
+  }
   return e;
 }
 

@@ -1,8 +1,10 @@
-// Whole-shot benchmarks (DESIGN §8): driver and baseball shots launch to rest on the asset
+// Whole-shot benchmarks (DESIGN §8): tour golf launches and a baseball shot launch to rest on the asset
 // worlds with our integrator + Bullet collision world, the same launches through the
 // Bullet-dynamics baseline (ground built once), and both carry errors against a
 // tight-tolerance reference. `sweetspot bench` calls these.
 #pragma once
+
+#include <vector>
 
 #include "physics/launch.hpp"
 
@@ -16,26 +18,39 @@ struct ShotBenchResult {
   double mean_total_m = 0.0;   ///< keeps the work observable; also a sanity figure
 };
 
-/// TrackMan PGA driver (167 mph, 10.9°, 2686 rpm) on golf_hole, samples off, for at least
+/// A named launch of the fixed golf set.
+struct BenchLaunch {
+  const char* name;
+  LaunchState launch;
+};
+/// The fixed set of tour launches the golf benchmarks cycle through: TrackMan PGA driver
+/// (167 mph, 10.9°, 2686 rpm), 7-iron (120 mph, 16.3°, 7097 rpm), PW (102 mph, 24.2°, 9304 rpm).
+std::vector<BenchLaunch> bench_tour_launches();
+
+/// The tour launches in turn on golf_hole, launch to rest, samples off, for at least
 /// `min_seconds`. The world is loaded and built once, outside the timing.
 ShotBenchResult bench_golf_shots(double min_seconds);
 /// 103 mph, 28°, 2000 rpm on the ballpark (a home run: flight to the field-level landing).
 ShotBenchResult bench_baseball_shots(double min_seconds);
-/// The driver launch through the Bullet-dynamics baseline on golf_hole's ground, to rest.
+/// The same tour launches through the Bullet-dynamics baseline on golf_hole's ground, to rest.
 ShotBenchResult bench_baseline_golf_shots(double min_seconds);
 
-/// Driver carry on golf_hole: reference (our integrator at rel_tol 1e-13), ours at the
-/// default tolerance, and the 240 Hz baseline, with the absolute errors (m).
-struct CarryErrors {
+/// One launch's carry on golf_hole (m): reference (our integrator at rel_tol 1e-13), ours
+/// at the default tolerance, and the 240 Hz baseline, with the absolute errors.
+struct CarryError {
+  const char* name = "";
   double reference_m = 0.0;
   double ours_m = 0.0;
   double baseline_m = 0.0;
   double ours_error_m = 0.0;
   double baseline_error_m = 0.0;
 };
+/// Every tour launch's carry error; the headline errors are the worst over the set (m).
+struct CarryErrors {
+  std::vector<CarryError> shots;
+  double ours_error_m = 0.0;
+  double baseline_error_m = 0.0;
+};
 CarryErrors golf_carry_errors();
-
-/// The driver launch the golf benchmarks use.
-LaunchState bench_driver_launch();
 
 }  // namespace sweetspot::bench

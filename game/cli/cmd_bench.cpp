@@ -38,22 +38,27 @@ RunFn setup_bench(CLI::App& sub) {
     std::vector<Measurement> rows;
     rows.push_back({"impact_solves_per_s", measure_impact_solves_per_s(seconds), "impact solves/s (one core)"});
 
-    // Whole shots, launch to rest on the asset worlds, and the same driver launch through
+    // Whole shots, launch to rest on the asset worlds, and the same tour launches through
     // the Bullet-dynamics baseline, all measured in this run.
     const bench::ShotBenchResult golf = bench::bench_golf_shots(seconds);
     const bench::ShotBenchResult baseball = bench::bench_baseball_shots(seconds);
     const bench::ShotBenchResult baseline = bench::bench_baseline_golf_shots(seconds);
     const bench::CarryErrors carry = bench::golf_carry_errors();
-    rows.push_back({"golf_shots_per_s", golf.shots_per_second, "golf shots/s (driver, launch to rest)"});
+    rows.push_back({"golf_shots_per_s", golf.shots_per_second, "golf shots/s (tour driver/7-iron/PW, to rest)"});
     rows.push_back({"golf_us_per_shot", golf.us_per_shot, "us per golf shot"});
     rows.push_back({"baseball_shots_per_s", baseball.shots_per_second, "baseball shots/s (ballpark)"});
     rows.push_back({"baseline_golf_shots_per_s", baseline.shots_per_second, "baseline golf shots/s (Bullet 240 Hz)"});
     rows.push_back({"speedup_vs_baseline", golf.shots_per_second / baseline.shots_per_second, "speed-up vs baseline"});
-    rows.push_back({"carry_error_m", carry.ours_error_m, "carry error, ours (m)"});
-    rows.push_back({"baseline_carry_error_m", carry.baseline_error_m, "carry error, baseline (m)"});
-    rows.push_back({"reference_carry_m", carry.reference_m, "reference carry (m)"});
+    rows.push_back({"carry_error_m", carry.ours_error_m, "carry error, ours, worst of the set (m)"});
+    rows.push_back({"baseline_carry_error_m", carry.baseline_error_m, "carry error, baseline, worst of the set (m)"});
+    for (const bench::CarryError& c : carry.shots) {
+      const std::string n = c.name;
+      rows.push_back({"reference_carry_m_" + n, c.reference_m, "  " + n + " reference carry (m)"});
+      rows.push_back({"carry_error_m_" + n, c.ours_error_m, "  " + n + " carry error, ours (m)"});
+      rows.push_back({"baseline_carry_error_m_" + n, c.baseline_error_m, "  " + n + " carry error, baseline (m)"});
+    }
 
-    const int axis = opts->quick ? 6 : 40;
+    const int axis = opts->quick ? 6 : 60;
     const SweepThroughput s1 = measure_sweep(1, axis);
     const SweepThroughput s2 = measure_sweep(2, axis);
     rows.push_back({"sweep_shots_per_s_1_thread", s1.shots_per_s, "sweep shots/s, 1 thread"});
@@ -76,7 +81,7 @@ RunFn setup_bench(CLI::App& sub) {
       std::cout << j.dump(2) << "\n";
     } else {
       for (const auto& r : rows) {
-        std::cout << std::left << std::setw(36) << r.label << std::right << std::setprecision(4) << r.value << "\n";
+        std::cout << std::left << std::setw(52) << r.label << std::right << std::setprecision(4) << r.value << "\n";
       }
       if (!frame_note.empty()) std::cout << "frame: not measured (" << frame_note << ")\n";
     }

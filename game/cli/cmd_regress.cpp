@@ -40,7 +40,8 @@ RunFn setup_regress(CLI::App& sub) {
       std::cout << "updated " << written << " of " << results.size() << " case files\n";
       return 0;
     }
-    std::cout << results.size() << " cases, " << rows << " checks, " << failed_rows << " failed\n";
+    std::cout << results.size() << " cases (" << failed_cases << " failing), " << rows << " checks, " << failed_rows
+              << " failed\n";
     return failed_rows == 0 ? 0 : 1;
   };
 }

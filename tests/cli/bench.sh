@@ -19,6 +19,13 @@ for k in ("golf_shots_per_s", "baseball_shots_per_s", "baseline_golf_shots_per_s
 # Accuracy is not timing: ours must beat the baseline's carry error and stay within 5 cm.
 assert 0 <= j["carry_error_m"] <= 0.05, j["carry_error_m"]
 assert j["carry_error_m"] < j["baseline_carry_error_m"], (j["carry_error_m"], j["baseline_carry_error_m"])
+# Each launch of the tour set: a plausible reference carry (TrackMan: driver 275 yd, 7-iron
+# 172 yd, PW 136 yd, within 10 %), and the headline errors are the worst of the set.
+for club, yd in (("driver", 275), ("7-iron", 172), ("pw", 136)):
+    ref = j[f"reference_carry_m_{club}"] / 0.9144
+    assert abs(ref - yd) < 0.1 * yd, (club, ref)
+    assert j[f"carry_error_m_{club}"] <= j["carry_error_m"]
+    assert j[f"baseline_carry_error_m_{club}"] <= j["baseline_carry_error_m"]
 PY
 "$bin" bench --quick | grep -q "impact solves/s" || fail "table output"
 set +e

@@ -12,6 +12,7 @@
 #include <btBulletCollisionCommon.h>
 
 #include "physics/error.hpp"
+#include "physics/sphere_sweep.hpp"
 
 namespace sweetspot {
 namespace {
@@ -55,7 +56,6 @@ struct World::Impl {
   btCollisionDispatcher dispatcher{&config};
   btDbvtBroadphase broadphase;
   btCollisionWorld world{&dispatcher, &broadphase, &config};
-  mutable btSphereShape sphere{0.02};
 
   // Height grid over the xz extent of the collision triangles: per cell the highest point
   // of any triangle overlapping it, and of any steep (wall) triangle.
@@ -179,28 +179,30 @@ struct World::Impl {
 
 namespace {
 
-struct SweepCallback final : btCollisionWorld::ConvexResultCallback {
-  const std::vector<CollisionMesh>* meshes = nullptr;
+/// Bullet's BVH hands over the triangles whose boxes overlap the sweep's box; each is tested
+/// exactly (sphere_triangle_sweep) and the earliest face the ball moves into is kept.
+struct SweepCallback final : btTriangleCallback {
+  const CollisionMesh* mesh = nullptr;
+  Vec3 from = Vec3::Zero();
+  Vec3 motion = Vec3::Zero();
   Vec3 direction = Vec3::Zero();
+  double radius = 0.0;
   const Vec3* follow = nullptr;
   double follow_cos = 1.0;
-  int mesh = -1;
+  double best = 1.0;
   int triangle = -1;
 
-  btScalar addSingleResult(btCollisionWorld::LocalConvexResult& r, bool /*normal_in_world*/) override {
-    if (r.m_localShapeInfo == nullptr) return m_closestHitFraction;
-    const int m = r.m_hitCollisionObject->getUserIndex2();
-    const int t = r.m_localShapeInfo->m_triangleIndex;
-    const Vec3& n = (*meshes)[static_cast<size_t>(m)].normals[static_cast<size_t>(t)];
-    // Only faces the ball moves into; Bullet's own normal (edge/vertex) is ignored on purpose.
-    if (n.dot(direction) >= -1e-9) return m_closestHitFraction;
-    if (follow != nullptr && n.dot(*follow) >= follow_cos) return m_closestHitFraction;
-    if (r.m_hitFraction < m_closestHitFraction) {
-      m_closestHitFraction = r.m_hitFraction;
-      mesh = m;
+  void processTriangle(btVector3* /*corners*/, int /*part*/, int t) override {
+    const Vec3& n = mesh->normals[static_cast<size_t>(t)];
+    // Only faces the ball moves into; edge or corner normals are ignored on purpose.
+    if (n.dot(direction) >= -1e-9) return;
+    if (follow != nullptr && n.dot(*follow) >= follow_cos) return;
+    double f = 0.0;
+    if (sphere_triangle_sweep(from, motion, radius, mesh->vertex(t, 0), mesh->vertex(t, 1), mesh->vertex(t, 2), &f) &&
+        (triangle < 0 ? f <= best : f < best)) {
+      best = f;
       triangle = t;
     }
-    return m_closestHitFraction;
   }
 };
 
@@ -356,22 +358,30 @@ bool World::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContac
   const Vec3 motion = to - from;
   const double len = motion.norm();
   if (!(len > 0.0)) return false;
-  Impl& w = *impl_;
-  w.sphere.setUnscaledRadius(radius);
-  SweepCallback cb;
-  cb.meshes = &w.meshes;
-  cb.direction = motion / len;
-  cb.follow = follow;
-  cb.follow_cos = w.follow_cos;
-  btTransform a, b;
-  a.setIdentity();
-  b.setIdentity();
-  a.setOrigin(bt(from));
-  b.setOrigin(bt(to));
-  w.world.convexSweepTest(&w.sphere, a, b, cb, 0.0);
-  if (cb.mesh < 0) return false;
-  const double f = cb.m_closestHitFraction;
-  w.fill(hit, cb.mesh, cb.triangle, from + f * motion, f);
+  const Impl& w = *impl_;
+  const Vec3 lo = from.cwiseMin(to) - Vec3::Constant(radius + 1e-6);
+  const Vec3 hi = from.cwiseMax(to) + Vec3::Constant(radius + 1e-6);
+  int best_mesh = -1, best_tri = -1;
+  double best = 1.0;
+  for (size_t i = 0; i < w.meshes.size(); ++i) {
+    SweepCallback cb;
+    cb.mesh = &w.meshes[i];
+    cb.from = from;
+    cb.motion = motion;
+    cb.direction = motion / len;
+    cb.radius = radius;
+    cb.follow = follow;
+    cb.follow_cos = w.follow_cos;
+    cb.best = best;
+    w.meshes[i].shape->processAllTriangles(&cb, bt(lo), bt(hi));
+    if (cb.triangle >= 0 && (best_mesh < 0 || cb.best < best)) {
+      best = cb.best;
+      best_mesh = static_cast<int>(i);
+      best_tri = cb.triangle;
+    }
+  }
+  if (best_mesh < 0) return false;
+  w.fill(hit, best_mesh, best_tri, from + best * motion, best);
   return true;
 }
 

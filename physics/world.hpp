@@ -1,7 +1,8 @@
 // The course or ballpark as Bullet sees it (DESIGN §5): a btCollisionWorld of triangle
 // meshes, one btBvhTriangleMeshShape per surface material (material id in the collision
-// object's user index). Bullet only answers queries — sphere sweeps (convexSweepTest,
-// allowed penetration 0) and rays; our integrator moves the ball. Contacts report the
+// object's user index). Bullet only answers queries: its BVH finds the triangles a sphere
+// sweep may touch (the exact first contact is ours, physics/sphere_sweep), and it casts
+// rays; our integrator moves the ball. Contacts report the
 // triangle's face normal, never Bullet's interpolated or edge normal, so a ball rolling
 // across the internal edges of a flat mesh does not hop.
 //

@@ -314,3 +314,26 @@ TEST_CASE("the bat pose is reported in the bat (mesh) frame", "[delivery][baseba
   CHECK(v_sweet.norm() == Approx(s.bat_speed).epsilon(1e-12));
   CHECK(p.velocity.norm() < 0.3 * s.bat_speed);
 }
+
+TEST_CASE("a glancing swing that cannot close on the ball is called a miss", "[delivery][baseball][soak]") {
+  // Found by the soak (shot 53): the bat swung almost sideways (87°), struck near the hands
+  // where it moves slowly, 36 mm under the ball's centre, with the pitch rising at it. The
+  // contact point does not close, which used to surface as the solver's "bodies are
+  // separating"; a player needs to hear that the strike misses.
+  BatSwing s;
+  s.bat_speed = 11.2134;
+  s.attack_angle = -0.08988;
+  s.direction = 1.51427;
+  s.impact_from_tip = 0.56017;
+  s.undercut = 0.03571;
+  Pitch p;
+  p.speed = 50.274;
+  p.approach_angle = -0.23809;
+  p.spin = 86.55;
+  p.spin_axis = 0.0745;
+  CHECK_THROWS_WITH(bat_hit("maple", s, p), Contains("the strike misses") && Contains("closing speed"));
+  // Squared up, the same slow swing near the hands makes (weak) contact.
+  s.direction = 0.0;
+  s.undercut = 0.0;
+  CHECK_NOTHROW(bat_hit("maple", s, p));
+}

@@ -176,3 +176,28 @@ TEST_CASE("bad flight input throws naming the field", "[flight][input]") {
   in.environment.humidity = -0.1;
   CHECK_THROWS_WITH(simulate_shot(in, nullptr), Catch::Contains("humidity"));
 }
+
+TEST_CASE("a ball skidding out fast is slowed by the air as well as the turf", "[flight][rest][soak]") {
+  // Found by the soak (shot 440310): launched almost flat at 115 m/s with 8700 rpm of
+  // hook spin, it barely bounced and rolled. With turf resistance alone (0.16 g) it would
+  // roll for over a minute and 3 km, past the 60 s bound; the air takes most of that speed.
+  FlightInput in = golf_launch(10.0, 0.0, 0.0);
+  in.launch.velocity = Vec3(115.09913326282135, 0.048463062991829557, -27.298052483953086);
+  in.launch.spin = Vec3(42.321380599357468, 913.88188691470668, 180.06572973709996);
+  FlightStats st;
+  const ShotTrajectory t = simulate_shot(in, nullptr, &st);
+  CHECK(t.summary.end == EndReason::Rest);
+  CHECK(t.summary.total_time_s < 0.5 * in.settings.max_time);
+  CHECK(t.summary.total_m < 1500.0);
+  // A slow roll hardly feels the air: a ball rolling at 5 m/s stops within a few per cent
+  // of where turf resistance alone (deceleration c·g) would stop it, v²/(2cg).
+  FlightInput slow = golf_launch(10.0, 0.0, 0.0);
+  const double v0 = 5.0;
+  slow.launch.velocity = Vec3(v0, 0.0, 0.0);
+  slow.launch.spin = Vec3(0.0, 0.0, -v0 / slow.ball.radius);  // already rolling
+  const ShotTrajectory roll = simulate_shot(slow, nullptr);
+  const double turf_only = v0 * v0 / (2.0 * effective_rolling_resistance(default_fairway()) * 9.80665);
+  CHECK(roll.summary.end == EndReason::Rest);
+  CHECK(roll.summary.total_m < turf_only);
+  CHECK(roll.summary.total_m > 0.95 * turf_only);
+}

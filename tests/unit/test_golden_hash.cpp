@@ -32,7 +32,7 @@ std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t h = 0xcbf29ce4842223
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x938d084b8be794a4ULL;
+constexpr std::uint64_t kGoldenHash = 0x63b5a773493afb15ULL;
 
 }  // namespace
 

@@ -54,7 +54,8 @@ TEST_CASE("hostile OBJ: empty and truncated files are rejected naming the file",
   // Cut off after a face that names vertices the file never got to.
   CHECK_THROWS_WITH(load_world(dir.write("dangling.obj", "mtllib w.mtl\nusemtl fairway\nv 0 0 0\nv 10 0 0\nf 1 2 3\n")),
                     Catch::Contains("dangling.obj"));
-  CHECK_THROWS_WITH(load_world(dir.write("garbage.obj", std::string("\x7f\x45\x4c\x46\x02\x01\x01\0\0\0 ]]]\xff\xfe", 18))),
+  static const char elf_like[] = "\x7f\x45\x4c\x46\x02\x01\x01\0\0\0 ]]]\xff\xfe";  // binary, NULs inside
+  CHECK_THROWS_WITH(load_world(dir.write("garbage.obj", std::string(elf_like, sizeof elf_like - 1))),
                     Catch::Contains("garbage.obj"));
 }
 

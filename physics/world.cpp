@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 
+#include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 #include <btBulletCollisionCommon.h>
 
 #include "physics/error.hpp"
@@ -51,11 +52,13 @@ struct World::Impl {
   std::vector<CollisionMesh> meshes;
   int triangles = 0;
   double follow_cos = std::cos(kFollowAngle);
+  SweepMethod method = SweepMethod::BvhExact;
 
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher{&config};
   btDbvtBroadphase broadphase;
   btCollisionWorld world{&dispatcher, &broadphase, &config};
+  mutable btSphereShape sphere{0.02};  // SweepMethod::BulletConvexSweep only
 
   // Height grid over the xz extent of the collision triangles: per cell the highest point
   // of any triangle overlapping it, and of any steep (wall) triangle.
@@ -206,24 +209,46 @@ struct SweepCallback final : btTriangleCallback {
   }
 };
 
-struct RayCallback final : btCollisionWorld::RayResultCallback {
+struct ConvexSweepCallback final : btCollisionWorld::ConvexResultCallback {
   const std::vector<CollisionMesh>* meshes = nullptr;
+  Vec3 direction = Vec3::Zero();
+  const Vec3* follow = nullptr;
+  double follow_cos = 1.0;
   int mesh = -1;
   int triangle = -1;
 
-  btScalar addSingleResult(btCollisionWorld::LocalRayResult& r, bool /*normal_in_world*/) override {
+  btScalar addSingleResult(btCollisionWorld::LocalConvexResult& r, bool /*normal_in_world*/) override {
     if (r.m_localShapeInfo == nullptr) return m_closestHitFraction;
-    const int m = r.m_collisionObject->getUserIndex2();
+    const int m = r.m_hitCollisionObject->getUserIndex2();
     const int t = r.m_localShapeInfo->m_triangleIndex;
-    // Ground only: a face that looks up (walls are met by sweeps, not stood on).
-    if ((*meshes)[static_cast<size_t>(m)].normals[static_cast<size_t>(t)].y() <= 0.1) return m_closestHitFraction;
+    const Vec3& n = (*meshes)[static_cast<size_t>(m)].normals[static_cast<size_t>(t)];
+    // Same filter as SweepCallback: faces the ball moves into, Bullet's own normal ignored.
+    if (n.dot(direction) >= -1e-9) return m_closestHitFraction;
+    if (follow != nullptr && n.dot(*follow) >= follow_cos) return m_closestHitFraction;
     if (r.m_hitFraction < m_closestHitFraction) {
       m_closestHitFraction = r.m_hitFraction;
-      m_collisionObject = r.m_collisionObject;
       mesh = m;
       triangle = t;
     }
     return m_closestHitFraction;
+  }
+};
+
+/// Bullet's per-shape ray cast (the BVH walk and the ray-triangle test are Bullet's); only
+/// faces that look up count as ground. Reads the shape only, so queries may run in parallel.
+struct RayCallback final : btTriangleRaycastCallback {
+  const CollisionMesh* mesh = nullptr;
+  int triangle = -1;
+
+  RayCallback(const btVector3& from, const btVector3& to, double best) : btTriangleRaycastCallback(from, to) {
+    m_hitFraction = best;
+  }
+
+  btScalar reportHit(const btVector3& /*normal*/, btScalar fraction, int /*part*/, int t) override {
+    // Ground only: a face that looks up (walls are met by sweeps, not stood on).
+    if (mesh->normals[static_cast<size_t>(t)].y() <= 0.1) return m_hitFraction;
+    if (fraction < m_hitFraction) triangle = t;
+    return std::min(fraction, m_hitFraction);
   }
 };
 
@@ -269,7 +294,8 @@ std::string validate_world(const WorldDescription& d) {
   return {};
 }
 
-World::World(WorldDescription description) : impl_(std::make_unique<Impl>()) {
+World::World(WorldDescription description, SweepMethod method) : impl_(std::make_unique<Impl>()) {
+  impl_->method = method;
   const std::string why = validate_world(description);
   if (!why.empty()) throw InputError(why);
   Impl& w = *impl_;
@@ -359,6 +385,24 @@ bool World::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContac
   const double len = motion.norm();
   if (!(len > 0.0)) return false;
   const Impl& w = *impl_;
+  if (w.method == SweepMethod::BulletConvexSweep) {
+    w.sphere.setUnscaledRadius(radius);
+    ConvexSweepCallback cb;
+    cb.meshes = &w.meshes;
+    cb.direction = motion / len;
+    cb.follow = follow;
+    cb.follow_cos = w.follow_cos;
+    btTransform a, b;
+    a.setIdentity();
+    b.setIdentity();
+    a.setOrigin(bt(from));
+    b.setOrigin(bt(to));
+    w.world.convexSweepTest(&w.sphere, a, b, cb, 0.0);
+    if (cb.mesh < 0) return false;
+    const double f = cb.m_closestHitFraction;
+    w.fill(hit, cb.mesh, cb.triangle, from + f * motion, f);
+    return true;
+  }
   const Vec3 lo = from.cwiseMin(to) - Vec3::Constant(radius + 1e-6);
   const Vec3 hi = from.cwiseMax(to) + Vec3::Constant(radius + 1e-6);
   int best_mesh = -1, best_tri = -1;
@@ -405,14 +449,20 @@ bool World::support(const Vec3& centre, double radius, double reach, SurfaceCont
   }
   if (mesh < 0) {
     // Straight down far enough to find a 60° slope under the ball.
-    RayCallback cb;
-    cb.meshes = &w.meshes;
-    const Vec3 top = centre + Vec3(0.0, radius, 0.0);
-    const Vec3 bottom = centre - Vec3(0.0, 2.0 * radius + reach + 0.05, 0.0);
-    w.world.rayTest(bt(top), bt(bottom), cb);
-    if (cb.mesh < 0) return false;
-    mesh = cb.mesh;
-    tri = cb.triangle;
+    const btVector3 top = bt(centre + Vec3(0.0, radius, 0.0));
+    const btVector3 bottom = bt(centre - Vec3(0.0, 2.0 * radius + reach + 0.05, 0.0));
+    double best = 1.0;
+    for (size_t i = 0; i < w.meshes.size(); ++i) {
+      RayCallback cb(top, bottom, best);
+      cb.mesh = &w.meshes[i];
+      w.meshes[i].shape->performRaycast(&cb, top, bottom);
+      if (cb.triangle >= 0) {
+        best = cb.m_hitFraction;
+        mesh = static_cast<int>(i);
+        tri = cb.triangle;
+      }
+    }
+    if (mesh < 0) return false;
   }
   const CollisionMesh& m = w.meshes[static_cast<size_t>(mesh)];
   const double gap = m.normals[static_cast<size_t>(tri)].dot(centre - m.vertex(tri, 0)) - radius;

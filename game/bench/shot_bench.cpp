@@ -89,8 +89,8 @@ std::vector<BenchLaunch> bench_tour_launches() {
   };
 }
 
-ShotBenchResult bench_golf_shots(double min_seconds) {
-  const World world(load_world("golf_hole"));
+ShotBenchResult bench_golf_shots(double min_seconds, SweepMethod method) {
+  const World world(load_world("golf_hole"), method);
   const std::vector<FlightInput> ins = tour_inputs();
   std::size_t next = 0;
   return time_shots(min_seconds, [&] { return simulate_shot(ins[next++ % ins.size()], &world).summary.total_m; });

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "physics/launch.hpp"
+#include "physics/world.hpp"
 
 namespace sweetspot::bench {
 
@@ -28,8 +29,9 @@ struct BenchLaunch {
 std::vector<BenchLaunch> bench_tour_launches();
 
 /// The tour launches in turn on golf_hole, launch to rest, samples off, for at least
-/// `min_seconds`. The world is loaded and built once, outside the timing.
-ShotBenchResult bench_golf_shots(double min_seconds);
+/// `min_seconds`. The world is loaded and built once, outside the timing. `method` picks the
+/// world's sweep narrow phase (BulletConvexSweep is DESIGN §5's convexSweepTest).
+ShotBenchResult bench_golf_shots(double min_seconds, SweepMethod method = SweepMethod::BvhExact);
 /// 103 mph, 28°, 2000 rpm on the ballpark (a home run: flight to the field-level landing).
 ShotBenchResult bench_baseball_shots(double min_seconds);
 /// The same tour launches through the Bullet-dynamics baseline on golf_hole's ground, to rest.

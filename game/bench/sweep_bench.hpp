@@ -11,8 +11,7 @@ struct SweepThroughput {
 
 /// Runs the e × µ grid of golf/driver (`points_per_axis`² shots, flight to rest on the golf
 /// hole, no trajectory samples) with `threads` workers and times it. The same grid at every
-/// thread count, so the ratio is the scaling. Each run starts on a fresh thread, so every
-/// worker's world build (per thread, tens of ms) is inside the timing at every count.
+/// thread count, so the ratio is the scaling. The shared world is built before timing.
 SweepThroughput measure_sweep(int threads, int points_per_axis);
 
 }  // namespace sweetspot

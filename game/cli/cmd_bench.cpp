@@ -41,11 +41,16 @@ RunFn setup_bench(CLI::App& sub) {
     // Whole shots, launch to rest on the asset worlds, and the same tour launches through
     // the Bullet-dynamics baseline, all measured in this run.
     const bench::ShotBenchResult golf = bench::bench_golf_shots(seconds);
+    const bench::ShotBenchResult golf_gjk = bench::bench_golf_shots(seconds, SweepMethod::BulletConvexSweep);
     const bench::ShotBenchResult baseball = bench::bench_baseball_shots(seconds);
     const bench::ShotBenchResult baseline = bench::bench_baseline_golf_shots(seconds);
     const bench::CarryErrors carry = bench::golf_carry_errors();
     rows.push_back({"golf_shots_per_s", golf.shots_per_second, "golf shots/s (tour driver/7-iron/PW, to rest)"});
     rows.push_back({"golf_us_per_shot", golf.us_per_shot, "us per golf shot"});
+    rows.push_back({"golf_shots_per_s_convex_sweep", golf_gjk.shots_per_second,
+                    "golf shots/s, Bullet convexSweepTest narrow phase"});
+    rows.push_back({"exact_sweep_speedup", golf.shots_per_second / golf_gjk.shots_per_second,
+                    "speed-up of the exact sweep over convexSweepTest"});
     rows.push_back({"baseball_shots_per_s", baseball.shots_per_second, "baseball shots/s (ballpark)"});
     rows.push_back({"baseline_golf_shots_per_s", baseline.shots_per_second, "baseline golf shots/s (Bullet 240 Hz)"});
     rows.push_back({"speedup_vs_baseline", golf.shots_per_second / baseline.shots_per_second, "speed-up vs baseline"});

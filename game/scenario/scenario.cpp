@@ -74,8 +74,8 @@ std::vector<Expectation> expectations_from(const CheckedDoc& doc) {
 BallProperties ball_properties(const BallSpec& b) { return {b.mass, b.radius, b.inertia}; }
 
 // The parsed world meshes are immutable, so one copy serves the process (reading the OBJ
-// with assimp is ~100 ms for the golf hole); the Bullet World built from them (~30 ms)
-// keeps query scratch state and is not thread-safe, so each thread builds its own, once.
+// with assimp is ~100 ms for the golf hole), and so does the World built from them (~30 ms):
+// with the default sweep method its queries only read, so sweep threads share it.
 std::shared_ptr<const WorldDescription> shared_world_description(const std::string& name) {
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const WorldDescription>> cache;
@@ -87,9 +87,11 @@ std::shared_ptr<const WorldDescription> shared_world_description(const std::stri
 
 const World* cached_world(const std::string& name) {
   if (name == kFlatWorld) return nullptr;
-  thread_local std::map<std::string, std::unique_ptr<World>> cache;
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<const World>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
   auto& slot = cache[name];
-  if (!slot) slot = std::make_unique<World>(*shared_world_description(name));
+  if (!slot) slot = std::make_unique<const World>(*shared_world_description(name));
   return slot.get();
 }
 

@@ -81,8 +81,8 @@ struct RunOptions {
   bool record_samples = true;  ///< false: summary only (sweeps, benchmarks)
 };
 
-/// Delivery -> impact -> launch -> flight on the scenario's world. Deterministic. The
-/// world is loaded once per calling thread and kept (thread_local cache).
+/// Delivery -> impact -> launch -> flight on the scenario's world. Deterministic and safe to
+/// call from many threads. The world is loaded and built once per process and shared.
 ShotResult run_scenario(const Scenario& s, const RunOptions& options = {});
 
 /// DESIGN §6 JSON of a shot of `s` (the report's shot_json; the scenario adds nothing the

@@ -14,7 +14,7 @@ assert isinstance(v, (int, float)) and v > 1e5, f"impact_solves_per_s = {v}"
 for k in ("golf_shots_per_s", "baseball_shots_per_s", "baseline_golf_shots_per_s", "speedup_vs_baseline",
           "carry_error_m", "baseline_carry_error_m", "frame_ms_1280x720"):
     assert k in j, f"missing key {k}"
-for k in ("golf_shots_per_s", "baseball_shots_per_s", "baseline_golf_shots_per_s", "speedup_vs_baseline"):
+for k in ("golf_shots_per_s", "golf_shots_per_s_convex_sweep", "exact_sweep_speedup", "baseball_shots_per_s", "baseline_golf_shots_per_s", "speedup_vs_baseline"):
     assert j[k] > 0, f"{k} = {j[k]}"
 # Accuracy is not timing: ours must beat the baseline's carry error and stay within 5 cm.
 assert 0 <= j["carry_error_m"] <= 0.05, j["carry_error_m"]

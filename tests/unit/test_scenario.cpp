@@ -169,3 +169,19 @@ TEST_CASE("regression cases detect drift and --update rewrites only pinned value
   std::filesystem::remove_all(dir);
   CHECK_THROWS_WITH(regression_paths({"/nonexistent/case.toml"}), Contains("/nonexistent/case.toml"));
 }
+
+TEST_CASE("sweep threads share one golf_hole world and still agree bit for bit", "[sweep][world]") {
+  // The world is built once per process and queried by every worker at once (its default
+  // sweep method only reads). Full flights to rest on the course, 1 thread against 4.
+  const Scenario s = load_scenario("golf/driver", {});
+  SweepOptions o;
+  o.e = parse_grid_axis("0.70:0.86:5", "--e", 0, 1);
+  o.mu = parse_grid_axis("0.2:0.6:5", "--mu", 0, 2);
+  o.threads = 1;
+  const auto one = run_sweep(s, o);
+  o.threads = 4;
+  const auto four = run_sweep(s, o);
+  REQUIRE(one.size() == 25);
+  CHECK(sweep_csv(one) == sweep_csv(four));
+  for (const auto& p : one) CHECK(p.shot.trajectory.summary.end == EndReason::Rest);
+}

@@ -23,12 +23,12 @@ fs::path asset_root() {
   if (const char* env = std::getenv("SWEETSPOT_ASSETS"); env != nullptr && *env != '\0') return env;
 #ifdef SWEETSPOT_SOURCE_DIR
   const fs::path src = fs::path(SWEETSPOT_SOURCE_DIR) / "assets";
-  if (fs::is_directory(src)) return src;
+  if (std::error_code e; fs::is_directory(src, e)) return src;
 #endif
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   for (fs::path dir = ec ? fs::current_path() : exe.parent_path(); !dir.empty(); dir = dir.parent_path()) {
-    if (fs::is_directory(dir / "assets")) return dir / "assets";
+    if (std::error_code e; fs::is_directory(dir / "assets", e)) return dir / "assets";
     if (dir == dir.parent_path()) break;
   }
   return "assets";
@@ -45,7 +45,11 @@ std::string where(const fs::path& file, const toml::node& node, std::string_view
 std::string where(const fs::path& file, std::string_view key) { return file.string() + ": " + std::string(key); }
 
 toml::table parse_toml(const fs::path& path) {
-  if (!fs::is_regular_file(path)) throw InputError(path.string() + ": file not found");
+  // error_code overloads: a path the OS refuses (too long, bad permissions) is bad input,
+  // not a filesystem_error escaping as an internal error (a fuzzer finding).
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(path.string() + ": file not found" + (ec ? " (" + ec.message() + ")" : std::string()));
   try {
     return toml::parse_file(path.string());
   } catch (const toml::parse_error& e) {
@@ -197,10 +201,14 @@ void add_node_meshes(const aiScene* scene, const aiNode* node, const aiMatrix4x4
 }
 
 void load_mesh(const fs::path& obj, WorldDescription* d) {
-  if (!fs::is_regular_file(obj)) throw InputError(obj.string() + ": world mesh not found");
+  std::error_code ec;
+  if (!fs::is_regular_file(obj, ec))
+    throw InputError(obj.string() + ": world mesh not found" + (ec ? " (" + ec.message() + ")" : std::string()));
   // Refuse a file that would take minutes and gigabytes to import before assimp reads it.
-  if (fs::file_size(obj) > kMaxWorldMeshBytes)
-    throw InputError(obj.string() + ": world mesh is " + std::to_string(fs::file_size(obj) >> 20) +
+  const std::uintmax_t bytes = fs::file_size(obj, ec);
+  if (ec) throw InputError(obj.string() + ": cannot read the world mesh's size (" + ec.message() + ")");
+  if (bytes > kMaxWorldMeshBytes)
+    throw InputError(obj.string() + ": world mesh is " + std::to_string(bytes >> 20) +
                      " MiB, over the limit of " + std::to_string(kMaxWorldMeshBytes >> 20) + " MiB");
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(obj.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
@@ -218,7 +226,7 @@ fs::path resolve_world(const std::string& name_or_path) {
       name_or_path.ends_with(".obj"))
     return name_or_path;
   const fs::path p = asset_root() / "worlds" / (name_or_path + ".toml");
-  if (!fs::is_regular_file(p)) {
+  if (std::error_code ec; !fs::is_regular_file(p, ec)) {
     std::string names;
     for (const auto& n : world_names()) names += (names.empty() ? "" : ", ") + n;
     throw InputError("unknown world '" + name_or_path + "' (allowed: " + names + ", none, or a path to a .toml)");

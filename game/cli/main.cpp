@@ -3,6 +3,7 @@
 #include <string>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 
 #include "game/cli/command.hpp"
@@ -47,6 +48,11 @@ int main(int argc, char** argv) {
       if (sub->parsed()) return run();
     }
   } catch (const sweetspot::InputError& e) {
+    std::cerr << "sweetspot: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the OS refuses is the user's input, not our bug; loaders report most as
+    // InputError already, this catches any that slip through.
     std::cerr << "sweetspot: error: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

@@ -48,9 +48,8 @@ Shot compute(const UiState& st) {
   return s;
 }
 
-}  // namespace
-
-int run_play_headless(const PlayOptions& o, std::ostream& out) {
+/// The UI state `play` starts from: the scenario and each --set key=value applied to it.
+UiState ui_state_from(const PlayOptions& o) {
   UiState st;
   st.scenario = o.scenario;
   for (const std::string& a : o.overrides) {
@@ -58,6 +57,13 @@ int run_play_headless(const PlayOptions& o, std::ostream& out) {
     if (eq == std::string::npos) throw InputError("--set " + a + ": expected key=value");
     st.set(a.substr(0, eq), a.substr(eq + 1));
   }
+  return st;
+}
+
+}  // namespace
+
+int run_play_headless(const PlayOptions& o, std::ostream& out) {
+  UiState st = ui_state_from(o);
   const Shot shot = compute(st);
   out << launch_table(shot.result, UnitSystem::Imperial);
   const std::string png = o.screenshot.empty() ? "sweetspot-play.png" : o.screenshot;
@@ -74,13 +80,7 @@ int run_play_headless(const PlayOptions& o, std::ostream& out) {
 }
 
 int run_play_window(const PlayOptions& o, std::ostream& out) {
-  UiState st;
-  st.scenario = o.scenario;
-  for (const std::string& a : o.overrides) {
-    const auto eq = a.find('=');
-    if (eq == std::string::npos) throw InputError("--set " + a + ": expected key=value");
-    st.set(a.substr(0, eq), a.substr(eq + 1));
-  }
+  UiState st = ui_state_from(o);
   Shot shot = compute(st);  // bad input fails here, before a window opens
   UiState good = st;
 

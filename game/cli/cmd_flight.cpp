@@ -15,6 +15,7 @@
 #include "physics/error.hpp"
 #include "physics/flight.hpp"
 #include "physics/units.hpp"
+#include "game/scenario/scenario.hpp"
 #include "physics/world.hpp"
 
 namespace sweetspot::cli {
@@ -100,19 +101,19 @@ RunFn setup_flight(CLI::App& sub) {
     check_environment(in.environment);
     // The same world and ground as a full shot: the sport's default unless told otherwise.
     const std::string world_name = o->world.empty() ? default_world_name(o->sport) : o->world;
-    std::unique_ptr<World> world;
-    if (world_name != "none") {
-      try {
-        world = std::make_unique<World>(load_world(world_name));
-      } catch (const InputError& e) {
-        throw InputError(std::string("--world: ") + e.what());
-      }
+    const World* world = nullptr;
+    try {
+      world = shared_world(world_name);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--world: ") + e.what());
+    }
+    if (world != nullptr) {
       for (const std::string& note : world->description().notes) std::cerr << "sweetspot: note: " << note << "\n";
     }
     // Golf: ball centre on the ground at the tee (origin). Baseball: contact 0.9 m above home plate.
     const Vec3 start = o->sport == "golf" ? Vec3(0.0, in.ball.radius, 0.0) : Vec3(0.0, 0.9, 0.0);
     in.launch = launch_from_metrics(speed, launch, dir, spin, axis, start);
-    const ShotTrajectory tr = simulate_shot(in, world.get());
+    const ShotTrajectory tr = simulate_shot(in, world);
     if (o->json) {
       nlohmann::json j;
       j["scenario"] = "flight";

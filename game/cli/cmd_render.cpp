@@ -18,6 +18,7 @@
 #include "physics/error.hpp"
 #include "physics/flight.hpp"
 #include "physics/units.hpp"
+#include "game/scenario/scenario.hpp"
 #include "physics/world.hpp"
 
 namespace sweetspot::cli {
@@ -118,13 +119,13 @@ ShotSource make_shot(const RenderOptions& o) {
   const double dir = flag_quantity("--direction", o.direction, Dimension::Angle, -kPi / 2, kPi / 2, "-90..90 deg");
   // The same world for physics and picture: the sport's default unless told otherwise.
   const std::string world_name = o.world.empty() ? default_world_name(o.sport) : o.world;
-  std::unique_ptr<World> world;
-  if (world_name != "none") {
-    try {
-      world = std::make_unique<World>(load_world(world_name));
-    } catch (const InputError& e) {
-      throw InputError(std::string("--world: ") + e.what());
-    }
+  const World* world = nullptr;
+  try {
+    world = shared_world(world_name);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--world: ") + e.what());
+  }
+  if (world != nullptr) {
     s.flag = world->description().flag;
     // A world .toml names its mesh; the renderer draws the .obj next to it.
     s.world = world_name.ends_with(".toml")
@@ -134,7 +135,7 @@ ShotSource make_shot(const RenderOptions& o) {
   // Golf: ball centre on the ground at the tee (origin). Baseball: contact 0.9 m above home plate.
   const Vec3 start = o.sport == "golf" ? Vec3(0.0, in.ball.radius, 0.0) : Vec3(0.0, 0.9, 0.0);
   in.launch = launch_from_metrics(speed, launch, dir, spin, axis, start);
-  s.trajectory = simulate_shot(in, world.get());
+  s.trajectory = simulate_shot(in, world);
   s.ball_radius = in.ball.radius;
   s.impactor_mesh = o.impactor.empty() ? (o.sport == "golf" ? "driver_head" : "bat") : o.impactor;
   if (s.impactor_mesh == "none") {

@@ -73,27 +73,22 @@ std::vector<Expectation> expectations_from(const CheckedDoc& doc) {
 
 BallProperties ball_properties(const BallSpec& b) { return {b.mass, b.radius, b.inertia}; }
 
-// The parsed world meshes are immutable, so one copy serves the process (reading the OBJ
-// with assimp is ~100 ms for the golf hole), and so does the World built from them (~30 ms):
-// with the default sweep method its queries only read, so sweep threads share it.
-std::shared_ptr<const WorldDescription> shared_world_description(const std::string& name) {
-  static std::mutex mutex;
-  static std::map<std::string, std::shared_ptr<const WorldDescription>> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto& slot = cache[name];
-  if (!slot) slot = std::make_shared<const WorldDescription>(load_world(name));
-  return slot;
-}
+}  // namespace
 
-const World* cached_world(const std::string& name) {
+// One World per name serves the process: reading the OBJ with assimp (~100 ms for the golf
+// hole) and building Bullet's trees (~30 ms) happen once, and with the default sweep method
+// its queries only read, so sweep threads share it.
+const World* shared_world(const std::string& name) {
   if (name == kFlatWorld) return nullptr;
   static std::mutex mutex;
   static std::map<std::string, std::unique_ptr<const World>> cache;
   std::lock_guard<std::mutex> lock(mutex);
   auto& slot = cache[name];
-  if (!slot) slot = std::make_unique<const World>(*shared_world_description(name));
+  if (!slot) slot = std::make_unique<const World>(load_world(name));
   return slot.get();
 }
+
+namespace {
 
 // Rotation about +y that turns the target line (+x) by `aim` toward +z (right).
 Mat3 aim_rotation(double aim) { return Eigen::AngleAxisd(-aim, Vec3::UnitY()).toRotationMatrix(); }
@@ -228,7 +223,7 @@ Scenario scenario_from_doc(const ScenarioDoc& raw, std::string name) {
   s.world = doc.text_if_set("world.name").value_or(default_world_name(to_string(s.sport)));
   const World* world = nullptr;
   try {
-    world = cached_world(s.world);
+    world = shared_world(s.world);
   } catch (const InputError& e) {
     throw InputError(doc.origin("world.name") + ": world.name: " + e.what() + " (or none for the flat ground)");
   }
@@ -302,7 +297,7 @@ ShotResult run_scenario(const Scenario& s, const RunOptions& options) {
   in.environment = s.environment;
   in.aero = s.aero;
   in.settings.record_samples = options.record_samples;
-  const World* world = cached_world(s.world);
+  const World* world = shared_world(s.world);
   try {
     r.trajectory = simulate_shot(in, world);
   } catch (const InputError& e) {

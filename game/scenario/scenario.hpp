@@ -21,6 +21,7 @@
 #include "physics/delivery.hpp"
 #include "physics/equipment.hpp"
 #include "physics/flight.hpp"
+#include "physics/world.hpp"
 
 namespace sweetspot {
 
@@ -80,6 +81,11 @@ struct RunOptions {
   bool fly = true;             ///< false: delivery and launch only (fit, fast sweeps)
   bool record_samples = true;  ///< false: summary only (sweeps, benchmarks)
 };
+
+/// The world by name or path, loaded and built once per process and shared: its queries
+/// only read, so any number of threads may use it. nullptr for kFlatWorld. Throws
+/// InputError for an unknown name or a bad file.
+const World* shared_world(const std::string& name);
 
 /// Delivery -> impact -> launch -> flight on the scenario's world. Deterministic and safe to
 /// call from many threads. The world is loaded and built once per process and shared.

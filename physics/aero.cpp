@@ -8,69 +8,6 @@
 #include "physics/units.hpp"
 
 namespace sweetspot {
-namespace {
-
-// Golf spin decay: ~4 %/s at a tour driver's ball speed (167 mph = 74.66 m/s), taken
-// proportional to air speed (Smits & Smith's decay scales with V/R; TrackMan data show
-// ~4 %/s for drivers).
-constexpr double kGolfDecayPerMetre = 0.04 / 74.66;
-
-std::array<AeroModel, 3> build_models() {
-  AeroModel ferguson;
-  ferguson.name = "ferguson2022";
-  ferguson.sport = "golf";
-  ferguson.source =
-      "Ferguson (2022), quadratic Cd(S), Cl(S) fit to 1040 launch-monitor shots: "
-      "Cd = 0.1304 + 0.9287 S - 0.8259 S^2, Cl = 0.0504 + 1.2031 S - 1.1490 S^2";
-  ferguson.d0 = 0.1304;
-  ferguson.d1 = 0.9287;
-  ferguson.d2 = -0.8259;
-  ferguson.lift = LiftLaw::Quadratic;
-  ferguson.l0 = 0.0504;
-  ferguson.l1 = 1.2031;
-  ferguson.l2 = -1.1490;
-  // Both parabolas peak near S = 0.52 (Cl at 0.524, Cd at 0.562): hold S there.
-  ferguson.s_max = 0.52;
-  ferguson.decay_per_metre = kGolfDecayPerMetre;
-
-  AeroModel smits;
-  smits.name = "smits_smith1994";
-  smits.sport = "golf";
-  smits.source =
-      "Smits & Smith (1994), 'A new aerodynamic model of a golf ball in flight', Science and "
-      "Golf II: Cd = 0.24 + 0.18 S, Cl = 0.54 S^0.4";
-  smits.d0 = 0.24;
-  smits.d1 = 0.18;
-  smits.lift = LiftLaw::Power;
-  smits.l1 = 0.54;
-  smits.l2 = 0.4;
-  smits.s_max = 0.5;
-  smits.decay_per_metre = kGolfDecayPerMetre;
-
-  AeroModel nathan;
-  nathan.name = "nathan";
-  nathan.sport = "baseball";
-  nathan.source =
-      "A. M. Nathan, trajectory calculator: Cd = 0.3008 + 0.0292 (spin/1000 rpm), "
-      "Cl = 1.120 S / (0.583 + 2.333 S), spin decay time constant ~30 s";
-  nathan.d0 = 0.3008;
-  nathan.d_krpm = 0.0292;
-  nathan.lift = LiftLaw::Saturating;
-  nathan.l0 = 0.583;
-  nathan.l1 = 1.120;
-  nathan.l2 = 2.333;
-  nathan.decay_tau = 30.0;
-
-  return {ferguson, smits, nathan};
-}
-
-const std::array<AeroModel, 3>& models() {
-  static const std::array<AeroModel, 3> m = build_models();
-  return m;
-}
-
-}  // namespace
-
 AeroCoefficients AeroModel::coefficients(double s, double spin) const {
   const double sc = std::min(s, s_max);
   AeroCoefficients c;
@@ -87,25 +24,39 @@ double AeroModel::spin_decay_rate(double speed) const {
   return decay_per_metre * speed + (decay_tau > 0.0 ? 1.0 / decay_tau : 0.0);
 }
 
-const AeroModel& aero_model(std::string_view name) {
-  for (const AeroModel& m : models()) {
-    if (m.name == name) return m;
+const char* to_string(LiftLaw l) {
+  switch (l) {
+    case LiftLaw::Quadratic: return "quadratic";
+    case LiftLaw::Power: return "power";
+    case LiftLaw::Saturating: return "saturating";
   }
-  std::string allowed;
-  for (const auto& n : aero_model_names()) allowed += (allowed.empty() ? "" : ", ") + n;
-  throw InputError("unknown aero model '" + std::string(name) + "' (allowed: " + allowed + ")");
+  return "?";
 }
 
-std::vector<std::string> aero_model_names() {
-  std::vector<std::string> names;
-  for (const AeroModel& m : models()) names.push_back(m.name);
-  return names;
+bool lift_law_from_string(std::string_view name, LiftLaw* out) {
+  for (const LiftLaw l : {LiftLaw::Quadratic, LiftLaw::Power, LiftLaw::Saturating}) {
+    if (name == to_string(l)) {
+      *out = l;
+      return true;
+    }
+  }
+  return false;
 }
 
-const AeroModel& default_aero_model(std::string_view sport) {
-  if (sport == "golf") return aero_model("ferguson2022");
-  if (sport == "baseball") return aero_model("nathan");
-  throw InputError("unknown sport '" + std::string(sport) + "' (allowed: golf, baseball)");
+std::string validate_aero_model(const AeroModel& m) {
+  const std::string who = "aero model '" + m.name + "': ";
+  for (double c : {m.d0, m.d1, m.d2, m.d_krpm, m.l0, m.l1, m.l2, m.s_max, m.decay_per_metre, m.decay_tau})
+    if (!std::isfinite(c)) return who + "coefficients must be finite numbers";
+  if (!(m.s_max > 0.0)) return who + "s_max must be > 0";
+  if (!(m.decay_per_metre >= 0.0) || !(m.decay_tau >= 0.0)) return who + "spin decay terms must be >= 0";
+  if (m.lift == LiftLaw::Saturating && !(m.l0 > 0.0 && m.l2 >= 0.0))
+    return who + "a saturating lift law needs l0 > 0 and l2 >= 0 (no pole at positive S)";
+  // Drag must stay positive over the fitted range, or the ball would be pushed forward.
+  for (int i = 0; i <= 100; ++i) {
+    const double sp = m.s_max * i / 100.0;
+    if (!(m.coefficients(sp, 0.0).cd > 0.0)) return who + "Cd must be > 0 for every S in [0, s_max]";
+  }
+  return {};
 }
 
 AeroEffect aero_effect(const AeroModel& model, double density, double radius, const Vec3& v_rel,

@@ -9,7 +9,6 @@
 
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "physics/math.hpp"
 
@@ -26,7 +25,8 @@ struct AeroCoefficients {
   double cl = 0.0;  ///< lift coefficient, golf driver ~0.2
 };
 
-/// A named drag/lift/spin-decay model. Immutable data; evaluate with coefficients().
+/// A named drag/lift/spin-decay model. Immutable data; evaluate with coefficients(). The
+/// shipped models and their sources are in assets/aero_models.toml.
 struct AeroModel {
   std::string name;    ///< "ferguson2022", "smits_smith1994", "nathan"
   std::string sport;   ///< "golf" or "baseball"
@@ -49,11 +49,13 @@ struct AeroModel {
   double spin_decay_rate(double speed) const;
 };
 
-/// The model with that name; throws InputError listing the allowed names.
-const AeroModel& aero_model(std::string_view name);
-std::vector<std::string> aero_model_names();
-/// "ferguson2022" for golf, "nathan" for baseball; throws InputError for another sport.
-const AeroModel& default_aero_model(std::string_view sport);
+const char* to_string(LiftLaw l);
+/// "quadratic", "power", "saturating"; false when unknown.
+bool lift_law_from_string(std::string_view name, LiftLaw* out);
+/// Empty when `m` is usable (finite coefficients, Cd > 0 over [0, s_max], no lift pole);
+/// otherwise a message naming the model and the problem. Models are data
+/// (assets/aero_models.toml, loaded by game/content).
+std::string validate_aero_model(const AeroModel& m);
 
 /// Aerodynamic force (N) on a ball of `radius` (m) in air of `density` (kg/m³) moving at
 /// `v_rel` (m/s, relative to the air) with spin `omega` (rad/s), and dω/dt (rad/s²).

@@ -1,5 +1,6 @@
 #include "physics/atmosphere.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -16,12 +17,6 @@ constexpr double kBarometricExponent = 5.25588;
 constexpr double kGasConstantDryAir = 287.058;  // J/(kg·K)
 constexpr double kGasConstantVapour = 461.495;  // J/(kg·K)
 
-std::string range_error(const char* field, double value, const char* range) {
-  std::ostringstream s;
-  s << "environment." << field << " = " << value << " is out of range (allowed " << range << ")";
-  return s.str();
-}
-
 }  // namespace
 
 const char* to_string(WindProfile p) {
@@ -34,27 +29,29 @@ const char* to_string(WindProfile p) {
 }
 
 std::string validate_environment(const Environment& e) {
-  // The negated comparisons also reject NaN.
-  if (!(e.temperature >= 223.15 && e.temperature <= 333.15))
-    return range_error("temperature", e.temperature, "223.15..333.15 K, i.e. -50..60 C");
-  if (!(e.pressure == 0.0 || (e.pressure >= 30000.0 && e.pressure <= 110000.0)))
-    return range_error("pressure", e.pressure, "0 (from altitude) or 30000..110000 Pa");
-  if (!(e.altitude >= -500.0 && e.altitude <= 6000.0))
-    return range_error("altitude", e.altitude, "-500..6000 m");
-  if (!(e.humidity >= 0.0 && e.humidity <= 1.0))
-    return range_error("humidity", e.humidity, "0..1 (0..100%)");
-  if (!(e.wind_speed >= 0.0 && e.wind_speed <= 60.0))
-    return range_error("wind_speed", e.wind_speed, "0..60 m/s");
-  if (!std::isfinite(e.wind_direction))
-    return range_error("wind_direction", e.wind_direction, "a finite angle");
-  if (!(e.wind_reference_height >= 0.5 && e.wind_reference_height <= 100.0))
-    return range_error("wind_reference_height", e.wind_reference_height, "0.5..100 m");
-  if (!(e.wind_roughness_length >= 1e-4 && e.wind_roughness_length <= 1.0 &&
-        e.wind_roughness_length < e.wind_reference_height))
-    return range_error("wind_roughness_length", e.wind_roughness_length,
-                       "1e-4..1 m and below wind_reference_height");
-  if (!(e.wind_power_exponent >= 0.0 && e.wind_power_exponent <= 1.0))
-    return range_error("wind_power_exponent", e.wind_power_exponent, "0..1");
+  const auto bad = [](const char* field, double v, const Range& r, const char* unit) {
+    return range_refusal(std::string("environment.") + field, v, r, unit);
+  };
+  if (auto w = bad("temperature", e.temperature, Environment::kTemperature, "K"); !w.empty()) return w;
+  if (e.pressure != 0.0) {
+    if (auto w = bad("pressure", e.pressure, Environment::kPressure, "Pa"); !w.empty()) return w + " (or unset: from altitude)";
+  }
+  if (auto w = bad("altitude", e.altitude, Environment::kAltitude, "m"); !w.empty()) return w;
+  if (auto w = bad("humidity", e.humidity, Environment::kHumidity, ""); !w.empty()) return w;
+  if (auto w = bad("wind_speed", e.wind_speed, Environment::kWindSpeed, "m/s"); !w.empty()) return w;
+  if (auto w = bad("wind_direction", e.wind_direction, Environment::kWindDirection, "rad"); !w.empty()) return w;
+  if (auto w = bad("wind_reference_height", e.wind_reference_height, Environment::kWindReferenceHeight, "m");
+      !w.empty())
+    return w;
+  if (auto w = bad("wind_roughness_length", e.wind_roughness_length, Environment::kWindRoughnessLength, "m");
+      !w.empty())
+    return w;
+  if (auto w = bad("wind_roughness_length (at most wind_reference_height / 10 for the log law)",
+                   e.wind_roughness_length, Range{0.0, e.wind_reference_height / 10.0}, "m");
+      !w.empty())
+    return w;
+  if (auto w = bad("wind_power_exponent", e.wind_power_exponent, Environment::kWindPowerExponent, ""); !w.empty())
+    return w;
   return {};
 }
 
@@ -88,6 +85,7 @@ double air_viscosity(double t) { return 1.458e-6 * t * std::sqrt(t) / (t + 110.4
 
 Vec3 wind_at(const Environment& env, double height) {
   if (env.wind_speed == 0.0) return Vec3::Zero();
+  height = std::min(height, kSurfaceLayerTop);
   double speed = env.wind_speed;
   switch (env.wind_profile) {
     case WindProfile::Uniform: break;

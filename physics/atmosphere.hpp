@@ -9,6 +9,7 @@
 #include <string>
 
 #include "physics/math.hpp"
+#include "physics/range.hpp"
 
 namespace sweetspot {
 
@@ -24,17 +25,35 @@ const char* to_string(WindProfile p);
 /// Weather at the course or ballpark. Defaults (DESIGN §4): sea level, 21 °C (70 °F), 50 %
 /// relative humidity, calm.
 struct Environment {
-  double temperature = 294.15;  ///< K; 294.15 = 21 °C = 70 °F. Allowed 223.15..333.15 (-50..60 °C)
-  double pressure = 0.0;        ///< Pa, station pressure; 0 -> from `altitude` via the ISA. Allowed 0 or 30000..110000
-  double altitude = 0.0;        ///< m above sea level; Denver's Coors Field 1580 m, "mile high" 1609 m. Allowed -500..6000
+  double temperature = 294.15;  ///< K; 294.15 = 21 °C = 70 °F
+  /// -50..60 °C: the Buck vapour-pressure fit and the ideal-gas density hold there.
+  static constexpr Range kTemperature{223.15, 333.15};
+  double pressure = 0.0;        ///< Pa, station pressure; 0 -> from `altitude` via the ISA
+  /// When set (not 0): from a 6000 m summit's ~47 kPa down to a deep mine's ~110 kPa.
+  static constexpr Range kPressure{30000.0, 110000.0};
+  double altitude = 0.0;        ///< m above sea level; Denver's Coors Field 1580 m, "mile high" 1609 m
+  static constexpr Range kAltitude{-500.0, 6000.0};  ///< the Dead Sea shore to the highest courses and beyond
   double humidity = 0.5;        ///< relative humidity 0..1
-  double wind_speed = 0.0;      ///< m/s at wind_reference_height; a breezy day 5 m/s. Allowed 0..60
+  static constexpr Range kHumidity{0.0, 1.0};
+  double wind_speed = 0.0;      ///< m/s at wind_reference_height; a breezy day 5 m/s
+  static constexpr Range kWindSpeed{0.0, 60.0};  ///< up to hurricane force (33 m/s) and beyond
   double wind_direction = 0.0;  ///< rad, direction the wind blows TOWARD: 0 = tailwind (+x), +pi/2 = toward +z (right)
-  double wind_reference_height = 10.0;  ///< m where wind_speed is measured (weather stations: 10 m). Allowed 0.5..100
+  static constexpr Range kWindDirection{-2.0 * kPi, 2.0 * kPi};
+  double wind_reference_height = 10.0;  ///< m where wind_speed is measured (weather stations: 10 m)
+  static constexpr Range kWindReferenceHeight{0.5, 100.0};
   WindProfile wind_profile = WindProfile::Logarithmic;
-  double wind_roughness_length = 0.03;  ///< m, z0 of the log profile; mown grass / open fairway 0.01..0.05. Allowed 1e-4..1
-  double wind_power_exponent = 1.0 / 7.0;  ///< alpha of the power law; open terrain 0.14. Allowed 0..1
+  double wind_roughness_length = 0.03;  ///< m, z0 of the log profile; mown grass / open fairway 0.01..0.05
+  /// 0.1 mm (calm water) to 1 m (a town); the log law also needs z0 <= h_ref / 10 (the
+  /// surface layer well above the roughness elements), else its ratio ln(h/z0)/ln(h_ref/z0)
+  /// blows up as z0 nears the reference height.
+  static constexpr Range kWindRoughnessLength{1e-4, 1.0};
+  double wind_power_exponent = 1.0 / 7.0;  ///< alpha of the power law; open terrain 0.14
+  static constexpr Range kWindPowerExponent{0.0, 1.0};
 };
+
+/// The wind profiles describe the atmospheric surface layer, ~100 m deep: above this height
+/// the wind is held at its value here.
+inline constexpr double kSurfaceLayerTop = 100.0;  // m
 
 /// Empty when `env` is valid, otherwise a message naming the field and its allowed range.
 std::string validate_environment(const Environment& env);

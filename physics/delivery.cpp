@@ -26,17 +26,6 @@ namespace sweetspot {
 
 namespace {
 
-constexpr double kDeg = 180.0 / kPi;
-
-void check(const char* field, double v, double lo, double hi, const char* range, double scale = 1.0,
-           const char* unit = "") {
-  if (!(v >= lo && v <= hi)) {
-    std::ostringstream os;
-    os << field << " must be " << range << ", got " << v * scale << unit;
-    throw InputError(os.str());
-  }
-}
-
 Quat axis_angle(double angle, const Vec3& axis) { return Quat(Eigen::AngleAxisd(angle, axis)); }
 
 LaunchState launch_of(const ImpactResult& r, const Vec3& ball_centre) {
@@ -66,20 +55,48 @@ void solve_into(Delivery& d, const char* who) {
 
 }  // namespace
 
+void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
+  check_range("swing.speed", w.club_speed, GolfSwing::kClubSpeed, "m/s");
+  check_range("swing.attack_angle", w.attack_angle, GolfSwing::kAttackAngle, "rad");
+  check_range("swing.path", w.club_path, GolfSwing::kClubPath, "rad");
+  check_range("swing.dynamic_loft", std::isnan(w.dynamic_loft) ? club.dynamic_loft : w.dynamic_loft,
+              GolfSwing::kDynamicLoft, "rad");
+  check_range("swing.face_angle", w.face_angle, GolfSwing::kFaceAngle, "rad");
+  check_range("swing.impact_offset[0] (toe)", w.impact_toe, GolfSwing::kImpactToe, "m");
+  check_range("swing.impact_offset[1] (up)", w.impact_up, GolfSwing::kImpactUp, "m");
+  check_range("swing.closure_rate", w.closure_rate, GolfSwing::kClosureRate, "rad/s");
+}
+
+void validate_bat_swing(const BatSwing& w, const BatSpec& bat, const BallSpec& ball) {
+  check_range("swing.speed", w.bat_speed, BatSwing::kBatSpeed, "m/s");
+  check_range("swing.attack_angle", w.attack_angle, BatSwing::kAttackAngle, "rad");
+  check_range("swing.direction", w.direction, BatSwing::kDirection, "rad");
+  check_range("swing.impact_from_tip", w.impact_from_tip, BatSwing::kImpactFromTip, "m");
+  check_range("swing.undercut", w.undercut, BatSwing::kUndercut, "m");
+  // The bat narrows both: the contact must be on the barrel beyond the hands, and the
+  // ball centre within reach of the bat's surface there.
+  const double reach = bat.length - bat.pivot_from_knob - 0.05;
+  check_range("swing.impact_from_tip (bat '" + bat.name + "': the barrel beyond 5 cm past the pivot)",
+              w.impact_from_tip, Range{0.0, reach}, "m");
+  const double reach_r = bat.radius_at(bat.length - w.impact_from_tip) + ball.radius;
+  check_range("swing.undercut (95 % of bat + ball radius at this contact)", w.undercut,
+              Range{-0.95 * reach_r, 0.95 * reach_r, true, true}, "m");
+}
+
+void validate_pitch(const Pitch& p) {
+  check_range("pitch.speed", p.speed, Pitch::kSpeed, "m/s");
+  check_range("pitch.approach_angle", p.approach_angle, Pitch::kApproachAngle, "rad");
+  check_range("pitch.spin", p.spin, Pitch::kSpin, "rad/s");
+  check_range("pitch.spin_axis", p.spin_axis, Pitch::kSpinAxis, "rad");
+}
+
 Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwing& swing,
                       const ImpactMaterial& material) {
   validate_ball(ball);
   validate_club(club);
   validate_material(material, "impact");
+  validate_golf_swing(swing, club);
   const double loft = std::isnan(swing.dynamic_loft) ? club.dynamic_loft : swing.dynamic_loft;
-  check("swing.speed", swing.club_speed, 1.0, 90.0, "in [1, 90] m/s (2–200 mph)");
-  check("swing.attack_angle", swing.attack_angle, deg_to_rad(-30), deg_to_rad(30), "in [-30, 30] deg", kDeg, " deg");
-  check("swing.club_path", swing.club_path, deg_to_rad(-30), deg_to_rad(30), "in [-30, 30] deg", kDeg, " deg");
-  check("swing.dynamic_loft", loft, deg_to_rad(0), deg_to_rad(75), "in [0, 75] deg", kDeg, " deg");
-  check("swing.face_angle", swing.face_angle, deg_to_rad(-30), deg_to_rad(30), "in [-30, 30] deg", kDeg, " deg");
-  check("swing.impact_offset toe", swing.impact_toe, -0.05, 0.05, "in [-50, 50] mm", 1000.0, " mm");
-  check("swing.impact_offset up", swing.impact_up, -0.03, 0.03, "in [-30, 30] mm", 1000.0, " mm");
-  check("swing.closure_rate", swing.closure_rate, -110.0, 110.0, "in [-110, 110] rad/s (±6300 deg/s)", 1.0, " rad/s");
 
   // Head pose: loft about the head's toe axis (z), then the face angle about vertical
   // (+ open turns the face toward +z, i.e. right).
@@ -150,30 +167,11 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   validate_ball(ball);
   validate_bat(bat);
   validate_material(material, "impact");
-  check("swing.speed", swing.bat_speed, 1.0, 60.0, "in [1, 60] m/s (2–134 mph)");
-  check("swing.attack_angle", swing.attack_angle, deg_to_rad(-45), deg_to_rad(60), "in [-45, 60] deg", kDeg, " deg");
-  check("swing.direction", swing.direction, deg_to_rad(-90), deg_to_rad(90), "in [-90, 90] deg", kDeg, " deg");
-  const double reach = bat.length - bat.pivot_from_knob - 0.05;
-  if (!(swing.impact_from_tip >= 0.0 && swing.impact_from_tip <= reach)) {
-    std::ostringstream os;
-    os << "swing.impact_from_tip must be in [0, " << reach * 1000 << "] mm (the barrel beyond 5 cm past the pivot), got "
-       << swing.impact_from_tip * 1000 << " mm";
-    throw InputError(os.str());
-  }
+  validate_bat_swing(swing, bat, ball);
+  validate_pitch(pitch);
   const double from_knob = bat.length - swing.impact_from_tip;
   const double r_bat = bat.radius_at(from_knob);
   const double reach_r = r_bat + ball.radius;
-  if (!(std::abs(swing.undercut) < 0.95 * reach_r)) {
-    std::ostringstream os;
-    os << "swing.undercut must be within ±" << 0.95 * reach_r * 1000 << " mm (95 % of bat + ball radius here), got "
-       << swing.undercut * 1000 << " mm";
-    throw InputError(os.str());
-  }
-  check("pitch.speed", pitch.speed, 0.0, 70.0, "in [0, 70] m/s (0–157 mph)");
-  check("pitch.approach_angle", pitch.approach_angle, deg_to_rad(-20), deg_to_rad(45), "in [-20, 45] deg", kDeg,
-        " deg");
-  check("pitch.spin", pitch.spin, 0.0, 500.0, "in [0, 500] rad/s (0–4775 rpm)", 1.0, " rad/s");
-  check("pitch.spin_axis", pitch.spin_axis, -kPi, kPi, "in [-180, 180] deg", kDeg, " deg");
 
   // Swing frame: the bat axis (knob -> tip) points toward +z (first-base side, the batter
   // stands on the third-base side as a right-hander), the sweet spot moves along d (tilted

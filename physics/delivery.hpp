@@ -9,37 +9,67 @@
 #include "physics/equipment.hpp"
 #include "physics/impact.hpp"
 #include "physics/launch.hpp"
+#include "physics/range.hpp"
 
 namespace sweetspot {
 
 /// A golf swing at impact, launch-monitor conventions (DESIGN §2). Defaults: a tour driver.
+/// Each field's allowed range sits beside it; validate_golf_swing() checks them all.
 struct GolfSwing {
-  double club_speed = 50.5;    ///< m/s of the face centre; tour driver 113 mph = 50.5 m/s
-  double attack_angle = 0;     ///< rad, + up; tour driver -1.3°, 7-iron -4.3°
+  double club_speed = 50.5;    ///< m/s of the face centre; tour driver 113 mph = 50.5 m/s, a 3 m putt ~1.5 m/s
+  /// From a tap-in putt to beyond the long-drive record (~68 m/s, 152 mph).
+  static constexpr Range kClubSpeed{0.0, 90.0, true};
+  double attack_angle = 0;     ///< rad, + up; tour driver -1.3°, 7-iron -4.3°, putter ~+2°
+  static constexpr Range kAttackAngle{deg_to_rad(-30.0), deg_to_rad(30.0)};
   double club_path = 0;        ///< rad, + right (in-to-out for a right-hander)
+  static constexpr Range kClubPath{deg_to_rad(-30.0), deg_to_rad(30.0)};
   double dynamic_loft = std::numeric_limits<double>::quiet_NaN();  ///< rad; NaN -> club.dynamic_loft
+  /// A de-lofted putter (0°) to a lob wedge laid wide open.
+  static constexpr Range kDynamicLoft{0.0, deg_to_rad(80.0)};
   double face_angle = 0;       ///< rad, + open (face pointing right of target)
+  static constexpr Range kFaceAngle{deg_to_rad(-30.0), deg_to_rad(30.0)};
   double impact_toe = 0;       ///< m from the face centre, + toward the toe; ±20 mm is a big miss
+  static constexpr Range kImpactToe{-0.05, 0.05};  ///< half a driver face (~110 mm wide)
   double impact_up = 0;        ///< m from the face centre, + up the face
+  static constexpr Range kImpactUp{-0.03, 0.03};   ///< half a driver face (~60 mm tall)
   double closure_rate = 0;     ///< rad/s about the shaft axis, + closing; tour ~ 30–40 rad/s
+  static constexpr Range kClosureRate{-110.0, 110.0};  ///< ±6300 deg/s, ~3x a tour player's
 };
 
 /// A bat swing at impact. Defaults: a line drive with a wood bat.
 struct BatSwing {
   double bat_speed = 31.3;     ///< m/s at the sweet spot (70 mph, Statcast average)
+  static constexpr Range kBatSpeed{0.0, 60.0, true};  ///< Statcast's fastest swings ~90 mph (40 m/s)
   double attack_angle = 0.15;  ///< rad, + up: tilt of the swing plane (velocity of the sweet spot)
+  static constexpr Range kAttackAngle{deg_to_rad(-45.0), deg_to_rad(60.0)};
   double direction = 0;        ///< rad, + toward right field: horizontal direction of the swing
+  static constexpr Range kDirection{deg_to_rad(-90.0), deg_to_rad(90.0)};
   double impact_from_tip = 0.1524;  ///< m along the barrel from the tip (6 in = sweet spot)
+  /// Outer bound (the longest bats, 42 in); the bat limits it to the barrel beyond 5 cm past the pivot.
+  static constexpr Range kImpactFromTip{0.0, 1.0668};
   double undercut = 0;         ///< m, + ball centre above the bat axis (backspin, loft); ±20 mm typical
+  /// Outer bound; the bat and ball radii limit it to 95 % of their sum at the contact.
+  static constexpr Range kUndercut{-0.1, 0.1};
 };
 
 /// The pitch arriving at the plate.
 struct Pitch {
-  double speed = 40.2;         ///< m/s (90 mph)
+  double speed = 40.2;         ///< m/s (90 mph); 0 = a ball on a batting tee
+  /// Up to 110 mph: the fastest pitch on record is 105.8 mph (Chapman, 2010).
+  static constexpr Range kSpeed{0.0, 49.1744};
   double approach_angle = 0.1; ///< rad, + descending (fastball ~6°)
+  static constexpr Range kApproachAngle{deg_to_rad(-20.0), deg_to_rad(45.0)};
   double spin = 240;           ///< rad/s (~2300 rpm)
+  /// Up to 4000 rpm: the highest MLB spin rates are ~3500 rpm (Statcast curveballs).
+  static constexpr Range kSpin{0.0, 418.87902047863906};
   double spin_axis = 0;        ///< rad, 0 = pure backspin for the pitcher's ball (DESIGN §2 axis sign)
+  static constexpr Range kSpinAxis{-kPi, kPi};
 };
+
+/// Each throws InputError naming the field (as a scenario key) and its allowed range.
+void validate_golf_swing(const GolfSwing& swing, const ClubSpec& club);
+void validate_bat_swing(const BatSwing& swing, const BatSpec& bat, const BallSpec& ball);
+void validate_pitch(const Pitch& pitch);
 
 /// The impactor (club head or bat) at the instant of impact, before the impulse: its mesh
 /// frame (HEAD or BAT frame, physics/equipment.hpp) mapped to world, and the velocity of

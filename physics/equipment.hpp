@@ -14,13 +14,16 @@
 
 #include "physics/impact.hpp"
 #include "physics/math.hpp"
+#include "physics/range.hpp"
 
 namespace sweetspot {
 
 struct BallSpec {
   std::string name;     ///< "tour" (golf), "mlb" (baseball)
   double mass = 0.04593;    ///< kg; golf 45.93 g (USGA max), baseball 0.145
+  static constexpr Range kMass{0.01, 0.5};  ///< a ping-pong ball (2.7 g) is out; a softball (0.19 kg) is in
   double radius = 0.021335; ///< m; golf 42.67 mm diameter, baseball 36.9 mm radius
+  static constexpr Range kRadius{0.01, 0.1};
   double inertia = 8.363e-6;///< kg·m² about any diameter; 0.4 m R² for both balls (DESIGN §3)
   /// m. A deforming ball's contact pressure centre runs ahead of its centre of mass in the
   /// direction it slides across the face (as in rolling resistance), so the normal impulse
@@ -32,24 +35,33 @@ struct BallSpec {
 
 struct ClubSpec {
   std::string name;      ///< "driver","3-wood","5-wood","hybrid","3-iron".."9-iron","pw","sw","lw"
-  double loft = 0.171;   ///< rad, static loft; driver 9.8°, 7-iron 34°
-  double lie = 1.03;     ///< rad, static lie; driver ~59°, 7-iron ~62.5°
-  double dynamic_loft = 0.22;  ///< rad, typical delivered loft of a tour player (scenario default)
-  double head_mass = 0.204;    ///< kg; driver 204 g, 7-iron ~267 g
+  double loft = 0.171;   ///< rad, static loft; putter 3°, driver 9.8°, 7-iron 34°
+  static constexpr Range kLoft{0.0, deg_to_rad(70.0)};
+  double lie = 1.03;     ///< rad, static lie; driver ~59°, 7-iron ~62.5°, putter ~70°
+  static constexpr Range kLie{deg_to_rad(40.0), deg_to_rad(80.0)};
+  double dynamic_loft = 0.22;  ///< rad, typical delivered loft of a tour player (scenario default); range GolfSwing::kDynamicLoft
+  double head_mass = 0.204;    ///< kg; driver 204 g, 7-iron ~267 g, putter ~350 g
+  static constexpr Range kHeadMass{0.05, 1.0};
+  /// The scenario's club.head_mass override is this range too.
   Vec3 cg{-0.0423, 0.0, 0.0};  ///< m, CG in the head frame (x < 0: behind the face)
   Mat3 inertia = Mat3::Identity() * 4e-4;  ///< kg·m² about the CG in head axes; driver ~2.8e-4..5.7e-4
   double bulge_radius = 0.305; ///< m, heel-toe face curvature; irons ~10 m (flat)
   double roll_radius = 0.305;  ///< m, sole-crown face curvature; irons ~10 m (flat)
+  static constexpr Range kFaceRadius{0.1, 1000.0};  ///< bulge and roll
   ImpactMaterial face;         ///< ball–face e curve, e_t, µ, friction model
-  double length = 1.14;        ///< m, shaft length (display and rendering only)
+  double length = 1.14;        ///< m, shaft length (display and rendering only); putter ~0.86
+  static constexpr Range kLength{0.5, 1.3};
 };
 
 struct BatSpec {
   std::string name;           ///< "maple" (wood), "bbcor" (alloy)
   double length = 0.84;       ///< m; a 33 in bat
+  static constexpr Range kLength{0.5, 1.2};
   double mass = 0.989;        ///< kg
+  static constexpr Range kMass{0.3, 2.0};  ///< also the scenario's bat.mass override
   double cg_from_knob = 0.575;///< m; Cross & Nathan's wood bat: 0.265 m from the barrel end
   double inertia_cg = 0.046;  ///< kg·m² about the CG, transverse axis
+  static constexpr Range kInertiaCg{1e-3, 1.0};
   double inertia_axial = 2.0e-4;  ///< kg·m² about the long axis (small; ~ ½ m r² of the barrel)
   /// (distance from knob m, radius m), distances strictly increasing, first at 0, last at
   /// `length`. The barrel is 1.3 in (33 mm) in radius at most (MLB rule 3.02).

@@ -1,17 +1,31 @@
 // The shot after launch: flight under gravity, drag, Magnus lift and spin decay (DESIGN §4),
-// then bounces and roll on the ground (DESIGN §5) until the ball rests or leaves play.
+// then bounces and roll on the ground (DESIGN §5) until the ball rests or leaves the world.
+//
+// Model and data are apart (as MuJoCo's mjModel / mjData): a ShotModel holds what does not
+// change during a shot (ball, air, aero, ground, settings); a ShotState is the small plain
+// state that step() advances. simulate_shot() is nothing but a loop over step(), so a game
+// mode can run the same loop and read every event (landing, bounce, rest) as it happens,
+// a replay can restart from any saved state, and a test can hash the state's bytes.
 //
 // The ball is moved by our own Dormand–Prince 5(4) integrator; the landing instant is the
 // root of the ball's distance to the contact plane on the step's dense output, so carry
 // converges to micrometres at the default tolerance instead of depending on a frame rate.
+//
+// Physics knows surfaces and geometry only. Game rules (a home run over the fence, out of
+// bounds, a water hazard, a holed putt) read the events and the final state (game/rules).
 #pragma once
 
+#include <cstdint>
+#include <limits>
 #include <string>
+
+#include <Eigen/Core>
 
 #include "physics/aero.hpp"
 #include "physics/atmosphere.hpp"
 #include "physics/ground.hpp"
 #include "physics/launch.hpp"
+#include "physics/range.hpp"
 #include "physics/trajectory.hpp"
 
 namespace sweetspot {
@@ -19,40 +33,123 @@ namespace sweetspot {
 /// Integration and termination settings. Defaults give carry converged to ~1e-6 m.
 struct FlightSettings {
   double rel_tol = 1e-8;         ///< integrator relative tolerance per step
+  static constexpr Range kRelTol{1e-14, 1e-2};
   double abs_tol = 1e-9;         ///< integrator absolute tolerance (m, m/s, rad/s)
+  static constexpr Range kAbsTol{1e-15, 1e-2};
   /// Relative tolerance once the ball has landed (the hops after the carry); the carry
   /// itself always uses rel_tol. The bounces' own model error (turf e, µ) is ~1e-2.
   double bounce_rel_tol = 1e-6;
+  static constexpr Range kBounceRelTol{1e-14, 1e-2};
   double max_time = 60.0;        ///< s; a shot that has not ended by then ends with StepLimit
+  static constexpr Range kMaxTime{0.0, 600.0, true};
   int max_steps = 200000;        ///< integrator + roll steps bound
-  bool record_samples = true;    ///< fill ShotTrajectory::samples (off for benchmarks)
-  double sample_interval = 1.0 / 60.0;  ///< s between flight samples (rendering)
+  static constexpr Range kMaxSteps{1.0, 1e7};
   double roll_speed = 0.25;      ///< m/s; a bounce leaving slower than this along the normal starts the roll
+  static constexpr Range kRollSpeed{0.0, 5.0};
   double rest_speed = 0.02;      ///< m/s; below it a ball that the slope cannot move is at rest
+  static constexpr Range kRestSpeed{0.0, 1.0, true};
 };
 
-struct FlightInput {
-  LaunchState launch;                 ///< ball state at separation (world frame, SI)
+/// What a shot flies through and lands on: read-only while it runs. Make it with
+/// make_shot_model(), which validates the inputs and derives the air density once.
+struct ShotModel {
   BallProperties ball;                ///< golf ball by default
+  const AeroModel* aero = nullptr;    ///< required
   Environment environment;            ///< air and wind
-  const AeroModel* aero = nullptr;    ///< required: aero_model("ferguson2022"), ...
+  const Terrain* terrain = nullptr;   ///< never null after make_shot_model (flat fairway by default)
   FlightSettings settings;
+  double air_density = 0.0;           ///< kg/m³, from environment
 };
 
-/// Work counters of one simulated shot (benchmarks, tests).
-struct FlightStats {
-  int flight_steps = 0;     ///< accepted integrator steps
-  int rejected_steps = 0;   ///< rejected integrator trials
-  int sweeps = 0;           ///< terrain sweeps issued
-  int roll_steps = 0;
+/// Validates (throws InputError naming the field and its range) and builds the model.
+/// `terrain` == nullptr is an infinite flat fairway at y = 0 (flight without a world); the
+/// terrain and aero model must outlive the model.
+ShotModel make_shot_model(const BallProperties& ball, const AeroModel& aero, const Environment& environment,
+                          const Terrain* terrain, const FlightSettings& settings = {});
+
+/// Where the ball is and what it is doing. Plain data: copy it, save it, hash its bytes,
+/// restart from it. Advanced only by step().
+struct ShotState {
+  double t = 0.0;                     ///< s since launch
+  Eigen::Matrix<double, 9, 1> y = Eigen::Matrix<double, 9, 1>::Zero();  ///< position m, velocity m/s, spin rad/s
+  Phase phase = Phase::Flight;        ///< Flight until the first touch, Bounce while airborne after it
+  bool ended = false;                 ///< true once at rest, out of the world, or out of budget
+  EndReason end = EndReason::Rest;    ///< valid once ended
+  bool landed = false;                ///< has touched the ground
+  bool skidding = false;              ///< Roll: the skid to pure rolling is still to come
+  int bounces = 0;
+  double max_height = 0.0;            ///< m, highest ball centre so far (exact, on the dense output)
+  SurfaceContact support;             ///< Roll/Rest: the surface under the ball
+  // Integrator carry (DopriCarry<9>): next trial step and the first-same-as-last derivative.
+  double step_size = 0.01;            ///< s
+  Eigen::Matrix<double, 9, 1> rate = Eigen::Matrix<double, 9, 1>::Zero();
+  bool rate_valid = false;
+  FlightStats counters;               ///< work done so far (budget and benchmarks)
+
+  Vec3 position() const { return y.segment<3>(0); }
+  Vec3 velocity() const { return y.segment<3>(3); }
+  Vec3 spin() const { return y.segment<3>(6); }
 };
 
-/// Empty when `in` is valid, otherwise a message naming the field and its allowed range.
-std::string validate_flight_input(const FlightInput& in);
+/// The state at launch.
+ShotState start_state(const LaunchState& launch);
 
-/// Flies, bounces and rolls the ball to the end. `terrain` == nullptr is an infinite flat
-/// fairway at y = 0 (so flight works without a world); pass a World (physics/world.hpp)
-/// for a course or ballpark. Throws InputError on invalid input; deterministic.
-ShotTrajectory simulate_shot(const FlightInput& in, const Terrain* terrain, FlightStats* stats = nullptr);
+enum class ShotEventKind : std::uint8_t {
+  Step,       ///< moved; nothing else happened
+  Landing,    ///< first touch of the ground (carry ends here); the bounce is already applied
+  Bounce,     ///< a later touch of a surface while airborne (or a wall while rolling)
+  Roll,       ///< the bounce left the ball on the ground: it rolls from here
+  Airborne,   ///< a rolling ball left the ground (an edge, a crest)
+  Rest,       ///< came to rest (or sank: a water surface holds the ball where it lands)
+  LeftWorld,  ///< left the world's bounds, or rolled off its ground
+  StepLimit,  ///< ran out of time or steps (should not happen for sane input)
+};
+const char* to_string(ShotEventKind k);
+
+struct ShotEvent {
+  ShotEventKind kind = ShotEventKind::Step;
+  SurfaceContact contact;             ///< Landing, Bounce, Roll, Rest: the surface touched
+  Vec3 velocity_in = Vec3::Zero();    ///< Landing, Bounce: the ball's velocity just before the touch
+};
+
+/// Advances `state` by one integrator step (airborne) or one roll step, stopping early at
+/// a contact, a rest or time `until` (s). Returns what happened. Never throws for a model
+/// made by make_shot_model() except InputError when the state turns non-finite (input far
+/// outside the models' validity). Deterministic.
+ShotEvent step(const ShotModel& model, ShotState& state,
+               double until = std::numeric_limits<double>::infinity());
+
+/// The position on one airborne step's path at time t in [t0, t1], from the positions and
+/// velocities at its ends (cubic Hermite; exact while the acceleration is constant, within
+/// ~1 mm over a 0.3 s step of a real flight). Rules use it to place a crossing (the fence).
+Vec3 flight_position_between(const Vec3& p0, const Vec3& v0, double t0, const Vec3& p1, const Vec3& v1,
+                             double t1, double t);
+
+/// Builds the sampled path and the summary of DESIGN §6 from the states a loop over step()
+/// visits. Samples every `interval` s on airborne stretches (rendering) plus every roll
+/// step and event; `record_samples` false keeps only the summary (sweeps, benchmarks).
+class TrajectoryRecorder {
+ public:
+  TrajectoryRecorder(const ShotState& launch, bool record_samples, double interval = 1.0 / 60.0);
+  /// After each step: the state before it, after it, and its event.
+  void add(const ShotState& before, const ShotState& after, const ShotEvent& event);
+  /// The trajectory ending at `last` (its end reason and rest position).
+  ShotTrajectory finish(const ShotState& last);
+
+ private:
+  ShotTrajectory out_;
+  Vec3 launch_;
+  bool record_;
+  double interval_;
+  double next_sample_ = 0.0;
+};
+
+/// Flies, bounces and rolls the ball to the end: start_state + step() until ended, recorded.
+/// Throws InputError for an invalid launch (speed or spin beyond LaunchState's ranges).
+ShotTrajectory simulate_shot(const ShotModel& model, const LaunchState& launch, bool record_samples = true);
+
+/// Empty when `launch` is flyable (finite, within LaunchState's ranges), otherwise a message
+/// naming the launch value and its range.
+std::string validate_launch(const LaunchState& launch);
 
 }  // namespace sweetspot

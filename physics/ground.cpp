@@ -65,31 +65,22 @@ std::string validate_surface_material(const SurfaceMaterial& m) {
   }
   for (int i = 0; i < m.e.count; ++i) {
     const auto k = static_cast<size_t>(i);
-    if (!(m.e.cor[k] >= 0.0 && m.e.cor[k] <= 1.0)) {
-      s << where << "e = " << m.e.cor[k] << " out of range (allowed 0..1)";
-      return s.str();
-    }
+    if (auto w = range_refusal(where + "e", m.e.cor[k], ImpactMaterial::kE, ""); !w.empty()) return w;
     if (i > 0 && !(m.e.speed[k] > m.e.speed[k - 1])) {
       s << where << "e curve speeds must increase strictly (" << m.e.speed[k - 1] << " then " << m.e.speed[k] << " m/s)";
       return s.str();
     }
   }
-  if (!(m.mu >= 0.0 && m.mu <= 2.0)) {
-    s << where << "mu = " << m.mu << " out of range (allowed 0..2)";
-    return s.str();
+  const auto bad = [&](const char* field, double v, const Range& r, const char* unit) {
+    return range_refusal(where + field, v, r, unit);
+  };
+  if (auto w = bad("mu", m.mu, SurfaceMaterial::kMu, ""); !w.empty()) return w;
+  if (auto w = bad("rolling_resistance", m.rolling_resistance, SurfaceMaterial::kRollingResistance, ""); !w.empty())
+    return w;
+  if (m.stimp != 0.0) {
+    if (auto w = bad("stimp", m.stimp, SurfaceMaterial::kStimp, "m"); !w.empty()) return w + " (or 0 = unset)";
   }
-  if (!(m.rolling_resistance >= 0.0 && m.rolling_resistance <= 5.0)) {
-    s << where << "rolling_resistance = " << m.rolling_resistance << " out of range (allowed 0..5)";
-    return s.str();
-  }
-  if (!(m.stimp == 0.0 || (m.stimp >= 0.5 && m.stimp <= 6.0))) {
-    s << where << "stimp = " << m.stimp << " m out of range (allowed 0 = unset, or 0.5..6 m)";
-    return s.str();
-  }
-  if (!(m.crater_tilt >= 0.0 && m.crater_tilt <= 0.6)) {
-    s << where << "crater_tilt = " << m.crater_tilt << " rad out of range (allowed 0..0.6)";
-    return s.str();
-  }
+  if (auto w = bad("crater_tilt", m.crater_tilt, SurfaceMaterial::kCraterTilt, "rad"); !w.empty()) return w;
   return {};
 }
 

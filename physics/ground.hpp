@@ -14,6 +14,7 @@
 
 #include "physics/impact.hpp"
 #include "physics/math.hpp"
+#include "physics/range.hpp"
 
 namespace sweetspot {
 
@@ -32,15 +33,20 @@ std::string surface_kind_names();
 struct SurfaceMaterial {
   std::string name = "fairway";
   SurfaceKind kind = SurfaceKind::Fairway;
-  CorCurve e = CorCurve::constant(0.4);  ///< normal restitution vs normal impact speed (turf: ~0.5 slow, ~0.15 at 20 m/s)
+  CorCurve e = CorCurve::constant(0.4);  ///< normal restitution vs normal impact speed (turf: ~0.5 slow, ~0.15 at 20 m/s); each point in ImpactMaterial::kE
   double mu = 0.4;                       ///< ball–surface Coulomb friction (Penner: 0.4 on a green)
+  static constexpr Range kMu{0.0, 2.0};
   /// Rolling resistance: the rolling ball decelerates at rolling_resistance · g on the flat.
   /// Green (stimp 10 ft) ~0.055, fairway ~0.16, rough ~0.3, sand ~1. Ignored when stimp > 0.
   double rolling_resistance = 0.12;
+  static constexpr Range kRollingResistance{0.0, 5.0};
   double stimp = 0.0;                    ///< m; Stimpmeter reading (tour greens 3.0–4.0 m); > 0 sets rolling_resistance
+  /// When set (> 0): 0.5 m (shaggy) to 6 m, beyond the fastest greens ever measured (~4.3 m).
+  static constexpr Range kStimp{0.5, 6.0};
   /// Turf crater tilt of the bounce normal, rad, at the reference impact (18.6 m/s at 44.4°
   /// incidence); Penner's green 0.269 (15.4°); 0 = rigid surface (walls, cart paths).
   double crater_tilt = 0.0;
+  static constexpr Range kCraterTilt{0.0, 0.6};
 };
 
 /// Empty when valid, otherwise a message naming the field and its allowed range.
@@ -113,9 +119,6 @@ class Terrain {
   /// Broad phase for a rolling ball: false only when no surface steeper than kFollowAngle
   /// (a wall, a bank) can be touched.
   virtual bool may_touch_steep(const Vec3& from, const Vec3& to, double radius) const = 0;
-  /// True when the straight flight from `from` to `to` crosses the outfield fence line
-  /// outward (a home run when no wall was hit on the way). Worlds without a fence: false.
-  virtual bool over_fence(const Vec3& /*from*/, const Vec3& /*to*/) const { return false; }
   virtual const SurfaceMaterial& material(int index) const = 0;
   /// False once the ball has left the playable volume.
   virtual bool inside(const Vec3& centre) const = 0;

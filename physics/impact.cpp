@@ -21,6 +21,18 @@ const char* to_string(FrictionModel m) {
   return "?";
 }
 
+bool friction_model_from_string(std::string_view name, FrictionModel* out) {
+  for (const FrictionModel m : {FrictionModel::None, FrictionModel::Textbook, FrictionModel::Coulomb}) {
+    if (name == to_string(m)) {
+      *out = m;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string friction_model_names() { return "none, textbook, coulomb"; }
+
 const char* to_string(ContactKind k) {
   switch (k) {
     case ContactKind::Grip: return "grip";
@@ -212,6 +224,26 @@ std::string check_body(const ImpactBody& b, const char* name) {
 
 }  // namespace
 
+std::string validate_material_values(const ImpactMaterial& m) {
+  if (m.e.count < 1 || m.e.count > CorCurve::kMaxPoints) return "impact.e: the restitution table needs 1 to 8 points";
+  for (int i = 0; i < m.e.count; ++i) {
+    const auto k = static_cast<size_t>(i);
+    if (auto why = range_refusal("impact.e", m.e.cor[k], ImpactMaterial::kE, ""); !why.empty()) return why;
+    if (i > 0 && !(m.e.speed[k] > m.e.speed[k - 1])) return "impact.e: table speeds must be strictly increasing";
+  }
+  if (m.e_t_scale.count < 1 || m.e_t_scale.count > CorCurve::kMaxPoints)
+    return "impact.e_t_scale: the table needs 1 to 8 points";
+  for (int i = 0; i < m.e_t_scale.count; ++i) {
+    const auto k = static_cast<size_t>(i);
+    if (auto why = range_refusal("impact.e_t_scale", m.e_t_scale.cor[k], Range{0.0, 1.0}, ""); !why.empty()) return why;
+    if (i > 0 && !(m.e_t_scale.speed[k] > m.e_t_scale.speed[k - 1]))
+      return "impact.e_t_scale: table speeds must be strictly increasing";
+  }
+  if (auto why = range_refusal("impact.e_t", m.e_t, ImpactMaterial::kEt, ""); !why.empty()) return why;
+  if (auto why = range_refusal("impact.mu", m.mu, ImpactMaterial::kMu, ""); !why.empty()) return why;
+  return {};
+}
+
 std::string validate_impact(const ImpactInput& in) {
   if (auto m = check_body(in.impactor, "impactor"); !m.empty()) return m;
   if (auto m = check_body(in.ball, "ball"); !m.empty()) return m;
@@ -221,37 +253,7 @@ std::string validate_impact(const ImpactInput& in) {
   if (!finite(in.normal) || std::abs(in.normal.norm() - 1.0) > 1e-9) {
     return "impact: contact normal must be a unit vector (|n| = 1 within 1e-9)";
   }
-  const ImpactMaterial& m = in.material;
-  if (m.e.count < 1 || m.e.count > CorCurve::kMaxPoints) {
-    return "impact.e: the restitution table needs 1 to 8 points";
-  }
-  for (int i = 0; i < m.e.count; ++i) {
-    const auto k = static_cast<size_t>(i);
-    if (!(m.e.cor[k] >= 0.0 && m.e.cor[k] <= 1.0)) {
-      return "impact.e: restitution must be in [0, 1], got " + std::to_string(m.e.cor[k]);
-    }
-    if (i > 0 && !(m.e.speed[k] > m.e.speed[k - 1])) {
-      return "impact.e: table speeds must be strictly increasing";
-    }
-  }
-  if (m.e_t_scale.count < 1 || m.e_t_scale.count > CorCurve::kMaxPoints) {
-    return "impact.e_t_scale: the table needs 1 to 8 points";
-  }
-  for (int i = 0; i < m.e_t_scale.count; ++i) {
-    const auto k = static_cast<size_t>(i);
-    if (!(m.e_t_scale.cor[k] >= 0.0 && m.e_t_scale.cor[k] <= 1.0)) {
-      return "impact.e_t_scale: factors must be in [0, 1], got " + std::to_string(m.e_t_scale.cor[k]);
-    }
-    if (i > 0 && !(m.e_t_scale.speed[k] > m.e_t_scale.speed[k - 1])) {
-      return "impact.e_t_scale: table speeds must be strictly increasing";
-    }
-  }
-  if (!(m.e_t >= 0.0 && m.e_t <= 1.0)) {
-    return "impact.e_t: tangential restitution must be in [0, 1], got " + std::to_string(m.e_t);
-  }
-  if (!(m.mu >= 0.0) || !std::isfinite(m.mu)) {
-    return "impact.mu: friction coefficient must be >= 0 and finite, got " + std::to_string(m.mu);
-  }
+  if (auto m = validate_material_values(in.material); !m.empty()) return m;
   if (contact_velocity(in.impactor, in.ball).dot(in.normal) >= 0.0) {
     return "impact: bodies are separating or at rest along the normal (u·n >= 0); nothing to solve";
   }

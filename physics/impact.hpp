@@ -12,9 +12,11 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 
 #include "physics/body.hpp"
 #include "physics/math.hpp"
+#include "physics/range.hpp"
 
 namespace sweetspot {
 
@@ -28,6 +30,11 @@ enum class ContactKind { Grip, Slip, Frictionless };
 
 const char* to_string(FrictionModel m);
 const char* to_string(ContactKind k);
+/// The one parser of friction model names ("none", "textbook", "coulomb"); false when
+/// `name` is none of them (callers refuse it naming their key and friction_model_names()).
+bool friction_model_from_string(std::string_view name, FrictionModel* out);
+/// "none, textbook, coulomb", for messages and the schema.
+std::string friction_model_names();
 
 /// Normal coefficient of restitution as a function of normal approach speed, a piecewise
 /// linear table held constant past its ends. Ball COR falls as impact speed rises (a golf
@@ -51,12 +58,16 @@ struct CorCurve {
 /// Contact material pair: restitution and friction between impactor and ball.
 struct ImpactMaterial {
   CorCurve e = CorCurve::constant(0.83);  ///< normal restitution; USGA limit for a driver face is 0.830
-  double e_t = 0.0;   ///< tangential restitution in [0, 1]; 0 = ball rolls off the face, 0.1–0.3 bat
+  static constexpr Range kE{0.0, 1.0};     ///< every point of the curve; 1 = perfectly elastic
+  double e_t = 0.0;   ///< tangential restitution; 0 = ball rolls off the face, 0.1–0.3 bat
+  static constexpr Range kEt{0.0, 1.0};
   /// Factor in [0, 1] on e_t as a function of normal approach speed (m/s): the tangential
   /// rebound of a compressed ball fades at high impact speed, as the normal COR does. The
   /// effective value is e_t · e_t_scale.at(speed). Default: 1 at every speed.
   CorCurve e_t_scale = CorCurve::constant(1.0);
-  double mu = 0.4;    ///< Coulomb friction coefficient ≥ 0; club face/ball ~0.35–0.45
+  double mu = 0.4;    ///< Coulomb friction coefficient; club face/ball ~0.35–0.45, ball/bat ~0.5
+  /// Rubber on rough rock reaches ~1; 2 leaves room for tests of the grip limit.
+  static constexpr Range kMu{0.0, 2.0};
   FrictionModel friction = FrictionModel::Coulomb;
 };
 
@@ -109,6 +120,10 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept;
 /// offending field and its allowed range (mass ≤ 0, inertia not symmetric positive
 /// definite, e or e_t outside [0, 1], µ < 0, non-unit normal, bodies separating, NaN).
 std::string validate_impact(const ImpactInput& in);
+
+/// Empty when every value of `m` is in its range (e curve points in kE, e_t in kEt, mu in
+/// kMu, table speeds increasing); otherwise a message naming the impact.* key and range.
+std::string validate_material_values(const ImpactMaterial& m);
 
 /// validate_impact() + solve_impact(); throws InputError with the message on bad input.
 ImpactResult solve_impact_checked(const ImpactInput& in);

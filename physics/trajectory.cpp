@@ -15,10 +15,7 @@ const char* to_string(Phase p) {
 const char* to_string(EndReason r) {
   switch (r) {
     case EndReason::Rest: return "rest";
-    case EndReason::OutOfBounds: return "out_of_bounds";
-    case EndReason::Water: return "water";
-    case EndReason::HomeRun: return "home_run";
-    case EndReason::Fence: return "fence";
+    case EndReason::LeftWorld: return "left_world";
     case EndReason::StepLimit: return "step_limit";
   }
   return "?";

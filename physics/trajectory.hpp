@@ -12,13 +12,12 @@ namespace sweetspot {
 
 enum class Phase : std::uint8_t { Flight, Bounce, Roll, Rest };
 
+/// Why the physics stopped a shot. Game outcomes (home run, water, out of bounds by the
+/// course's stakes, holed) are decided by game/rules from the events and the final state.
 enum class EndReason : std::uint8_t {
-  Rest,         ///< came to rest on the ground
-  OutOfBounds,  ///< left the world's bounds (or a world without ground)
-  Water,        ///< landed in a water hazard
-  HomeRun,      ///< cleared the outfield fence in fair territory
-  Fence,        ///< caught in / stopped against a fence or wall
-  StepLimit,    ///< hit the time or step bound (should not happen for sane input)
+  Rest,       ///< came to rest (on the ground, in the cup, or sunk where it touched water)
+  LeftWorld,  ///< left the world's bounds, or rolled off the edge of its ground
+  StepLimit,  ///< hit the time or step bound (should not happen for sane input)
 };
 
 const char* to_string(Phase p);
@@ -41,7 +40,7 @@ struct FlightSummary {
   double apex_m = 0.0;             ///< max height above the launch point
   double landing_angle_deg = 0.0;  ///< descent angle below horizontal at first landing
   double hang_time_s = 0.0;        ///< launch to first landing
-  double lateral_m = 0.0;          ///< z at the first landing
+  double lateral_m = 0.0;          ///< z at the first landing (world axis; the report measures from the aim line)
   double total_time_s = 0.0;       ///< launch to end
   Vec3 landing_position = Vec3::Zero();
   Vec3 rest_position = Vec3::Zero();
@@ -49,9 +48,18 @@ struct FlightSummary {
   int bounces = 0;
 };
 
+/// Work counters of one simulated shot (benchmarks, tests, the step budget).
+struct FlightStats {
+  int flight_steps = 0;     ///< accepted integrator steps
+  int rejected_steps = 0;   ///< rejected integrator trials
+  int sweeps = 0;           ///< terrain sweeps issued
+  int roll_steps = 0;
+};
+
 struct ShotTrajectory {
   std::vector<TrajectorySample> samples;  ///< time-ordered, first = launch, last = end
   FlightSummary summary;
+  FlightStats stats;                      ///< the work it took
 };
 
 }  // namespace sweetspot

@@ -105,6 +105,23 @@ std::string_view dimension_name(Dimension d) {
   return "quantity";
 }
 
+std::string_view si_unit_name(Dimension d) {
+  switch (d) {
+    case Dimension::Speed: return "m/s";
+    case Dimension::Angle: return "rad";
+    case Dimension::AngularVelocity: return "rad/s";
+    case Dimension::Temperature: return "K";
+    case Dimension::Mass: return "kg";
+    case Dimension::Length: return "m";
+    case Dimension::Fraction: return "";
+    case Dimension::Pressure: return "Pa";
+    case Dimension::Time: return "s";
+    case Dimension::Inertia: return "kg*m^2";
+    case Dimension::Dimensionless: return "";
+  }
+  return "";
+}
+
 std::string accepted_units(Dimension d) {
   std::string out;
   for (const auto& u : kUnits) {

@@ -61,6 +61,8 @@ enum class Dimension {
 
 /// Human-readable name ("speed", "angle", ...), for error messages.
 std::string_view dimension_name(Dimension d);
+/// The SI unit of `d` as text ("m/s", "rad", "kg*m^2"; "" for fractions and numbers).
+std::string_view si_unit_name(Dimension d);
 /// The accepted unit spellings for `d`, e.g. "m/s, mph, km/h, kph, ft/s, fps".
 std::string accepted_units(Dimension d);
 

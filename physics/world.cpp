@@ -13,7 +13,7 @@
 #include <btBulletCollisionCommon.h>
 
 #include "physics/error.hpp"
-#include "physics/sphere_sweep.hpp"
+#include "physics/detail/sphere_sweep.hpp"
 
 namespace sweetspot {
 namespace {
@@ -288,9 +288,6 @@ std::string validate_world(const WorldDescription& d) {
   if (!finite(d.origin) || !finite(d.bounds_min) || !finite(d.bounds_max) ||
       !(d.bounds_min.array() < d.bounds_max.array()).all())
     return w + "bounds must be finite with bounds_min < bounds_max";
-  if (!(d.fence_height >= 0.0 && d.fence_height < 100.0)) return w + "fence_height out of range (allowed 0..100 m)";
-  for (const Vec3& p : d.fence_line)
-    if (!finite(p)) return w + "fence_line has a non-finite point";
   return {};
 }
 
@@ -489,27 +486,5 @@ bool World::inside(const Vec3& c) const {
 }
 
 double World::reference_height() const { return impl_->desc.origin.y(); }
-
-bool World::over_fence(const Vec3& from, const Vec3& to) const {
-  const WorldDescription& d = impl_->desc;
-  if (d.fence_line.size() < 2) return false;
-  const auto cross2 = [](double ax, double az, double bx, double bz) { return ax * bz - az * bx; };
-  const double rx = to.x() - from.x(), rz = to.z() - from.z();
-  for (size_t i = 0; i + 1 < d.fence_line.size(); ++i) {
-    const Vec3& a = d.fence_line[i];
-    const Vec3& b = d.fence_line[i + 1];
-    const double sx = b.x() - a.x(), sz = b.z() - a.z();
-    const double den = cross2(rx, rz, sx, sz);
-    if (den == 0.0) continue;
-    const double qx = a.x() - from.x(), qz = a.z() - from.z();
-    const double t = cross2(qx, qz, sx, sz) / den;  // along the flight segment
-    const double u = cross2(qx, qz, rx, rz) / den;  // along the fence segment
-    if (t < 0.0 || t > 1.0 || u < 0.0 || u > 1.0) continue;
-    // Outward: the end is farther from home plate than the start.
-    const Vec3 o = d.origin;
-    if (std::hypot(to.x() - o.x(), to.z() - o.z()) > std::hypot(from.x() - o.x(), from.z() - o.z())) return true;
-  }
-  return false;
-}
 
 }  // namespace sweetspot

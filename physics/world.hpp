@@ -11,7 +11,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,17 +29,12 @@ struct WorldMesh {
 /// Everything a World is built from: plain data, loaded by game/assets or built in tests.
 struct WorldDescription {
   std::string name;                       ///< "golf_hole", "ballpark"
-  std::string sport;                      ///< "golf" or "baseball" (informational)
   std::vector<SurfaceMaterial> materials;
   std::vector<WorldMesh> meshes;
-  Vec3 origin = Vec3::Zero();             ///< m; the tee (golf) or home plate (baseball), on the ground
-  Vec3 bounds_min = Vec3::Constant(-1e4); ///< m; leaving the box ends the shot out of bounds
+  /// m; the ground reference (the tee, home plate): wind heights and field level count from it.
+  Vec3 origin = Vec3::Zero();
+  Vec3 bounds_min = Vec3::Constant(-1e4); ///< m; leaving the box ends the shot (EndReason::LeftWorld)
   Vec3 bounds_max = Vec3::Constant(1e4);  ///< m
-  std::optional<Vec3> flag;               ///< m; the hole (golf)
-  double fence_height = 0.0;              ///< m above the field (ballpark: 3.05 = 10 ft), 0 = none
-  /// Foot of the outfield fence, ordered from the left-field foul pole to the right-field
-  /// pole (xz used). With the origin it closes fair territory inside the fence.
-  std::vector<Vec3> fence_line;
   std::vector<std::string> notes;         ///< repairs made while loading or building (dropped triangles)
 };
 
@@ -84,7 +78,6 @@ class World final : public Terrain {
   const SurfaceMaterial& material(int index) const override;
   bool inside(const Vec3& centre) const override;
   double reference_height() const override;
-  bool over_fence(const Vec3& from, const Vec3& to) const override;
 
  private:
   struct Impl;

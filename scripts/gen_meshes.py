@@ -11,7 +11,8 @@ shows any change. Re-run after editing this script.
 Frames (docs/INTERFACES "impact" section, DESIGN §2):
   golf_ball    centre at the origin, radius 0.021335 m (1.68 in diameter).
   driver_head,
-  iron_head    HEAD FRAME: origin at the face centre, +x out of the face (toward the ball
+  iron_head,
+  putter_head  HEAD FRAME: origin at the face centre, +x out of the face (toward the ball
                when square), +y up along the face, +z toward the toe, static loft 0. The
                body lies at x < 0; a hosel at the heel (-z) carries a short shaft stub up
                the lie angle so the club reads as a club in a render.
@@ -210,6 +211,37 @@ def club_head(mesh, kind):
     surface_of_revolution(mesh, "shaft", [(0.05, 0.0055), (shaft_len, 0.0075)], base, basis, 12, False, True)
 
 
+def box(mesh, mat, lo, hi):
+    """An axis-aligned box from corner lo to corner hi, faces outward."""
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    c = [(x0, y0, z0), (x1, y0, z0), (x1, y1, z0), (x0, y1, z0),
+         (x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)]
+    for a, b, cc, d in ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (3, 7, 6, 2), (0, 4, 7, 3), (1, 2, 6, 5)):
+        mesh.flat_tri(mat, c[a], c[b], c[cc])
+        mesh.flat_tri(mat, c[a], c[cc], c[d])
+
+
+def putter_head(mesh):
+    """A blade putter in the HEAD FRAME: 100 mm heel to toe, 24 mm tall, 22 mm deep, a
+    flange behind the face, a plumber's-neck hosel at the heel and the shaft at 70 deg lie."""
+    half_w, h, depth = 0.050, 0.024, 0.022
+    bottom = -0.009  # the face centre sits a little above the sole
+    box(mesh, "clubhead", (-0.008, bottom, -half_w), (0.0, bottom + h, half_w))              # face blade
+    box(mesh, "clubhead", (-depth, bottom, -half_w * 0.9), (-0.008, bottom + 0.007, half_w * 0.9))  # flange
+    face = [(0.0005, bottom + 0.003, -half_w * 0.9), (0.0005, bottom + 0.003, half_w * 0.9),
+            (0.0005, bottom + h - 0.003, half_w * 0.9), (0.0005, bottom + h - 0.003, -half_w * 0.9)]
+    mesh.flat_tri("face", face[0], face[2], face[1])
+    mesh.flat_tri("face", face[0], face[3], face[2])
+    # Sight line on top of the blade.
+    box(mesh, "grip", (-0.006, bottom + h, -0.0008), (-0.002, bottom + h + 0.0004, 0.0008))
+    lie = math.radians(70)
+    axis = normalize((-0.02, math.sin(lie), -math.cos(lie)))
+    base = (-0.004, bottom + h, -half_w * 0.75)
+    basis = tube_basis(axis)
+    surface_of_revolution(mesh, "clubhead", [(0.0, 0.0055), (0.045, 0.0050)], base, basis, 12, True, False)
+    surface_of_revolution(mesh, "shaft", [(0.045, 0.0045), (0.70, 0.0060)], base, basis, 12, False, True)
+
+
 def golf_ball():
     m = Mesh()
     sphere(m, "ball", (0.0, 0.0, 0.0), 0.021335, 16, 24)
@@ -219,7 +251,10 @@ def golf_ball():
 
 def club(kind):
     m = Mesh()
-    club_head(m, kind)
+    if kind == "putter":
+        putter_head(m)
+    else:
+        club_head(m, kind)
     mats = {"clubhead": (0.30, 0.31, 0.34) if kind == "driver" else (0.70, 0.72, 0.75),
             "face": (0.78, 0.80, 0.84), "grip": (0.08, 0.08, 0.08), "shaft": (0.62, 0.64, 0.68)}
     m.write(os.path.join(ROOT, "assets/meshes/%s_head.obj" % kind), mats,
@@ -345,6 +380,7 @@ def main():
     golf_ball()
     club("driver")
     club("iron")
+    club("putter")
     bat()
     tee()
     flag()

@@ -12,10 +12,15 @@
 namespace sweetspot {
 namespace {
 
-// Scroll arrives through a callback; ImGui's backend chains to the previous one, so keep
-// ours installed first and accumulate until the frame reads it.
-double g_scroll = 0.0;
-void on_scroll(GLFWwindow*, double, double dy) { g_scroll += dy; }
+// Keys and scroll arrive through callbacks into the window's own queue (its user pointer),
+// so a press and release inside one frame is never lost. ImGui's backend chains to the
+// callbacks installed before it, so ours go first.
+void on_scroll(GLFWwindow* w, double, double dy) {
+  static_cast<GameWindow*>(glfwGetWindowUserPointer(w))->queue_scroll(dy);
+}
+void on_key(GLFWwindow* w, int key, int, int action, int) {
+  if (action == GLFW_PRESS) static_cast<GameWindow*>(glfwGetWindowUserPointer(w))->queue_key(key);
+}
 
 void on_glfw_error(int code, const char* text) {
   // Kept for the exception message below; GLFW reports failures through this hook only.
@@ -46,7 +51,9 @@ GameWindow::GameWindow(const WindowOptions& options) {
   }
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(options.vsync ? 1 : 0);
+  glfwSetWindowUserPointer(window_, this);
   glfwSetScrollCallback(window_, on_scroll);
+  glfwSetKeyCallback(window_, on_key);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -67,7 +74,6 @@ GameWindow::~GameWindow() {
 bool GameWindow::should_close() const { return glfwWindowShouldClose(window_) != 0; }
 
 FrameInput GameWindow::begin_frame() {
-  g_scroll = 0.0;
   glfwPollEvents();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
@@ -76,12 +82,14 @@ FrameInput GameWindow::begin_frame() {
   FrameInput in;
   const ImGuiIO& io = ImGui::GetIO();
   if (!io.WantCaptureKeyboard) {
-    // ImGui 1.86 (Debian 12) indexes keys by the backend's codes: GLFW key numbers.
-    in.hit_again = ImGui::IsKeyPressed(GLFW_KEY_SPACE, false);
-    in.replay = ImGui::IsKeyPressed(GLFW_KEY_R, false);
-    for (int i = 0; i < 4; ++i)
-      if (ImGui::IsKeyPressed(GLFW_KEY_1 + i, false)) in.camera = i;
+    in.keys = std::move(keys_);
+    for (const int key : in.keys) {
+      if (key == GLFW_KEY_SPACE) in.hit_again = true;
+      if (key == GLFW_KEY_R) in.replay = true;
+      if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4) in.camera = key - GLFW_KEY_1;
+    }
   }
+  keys_.clear();
   double x = 0.0, y = 0.0;
   glfwGetCursorPos(window_, &x, &y);
   const bool down = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
@@ -91,12 +99,13 @@ FrameInput GameWindow::begin_frame() {
       in.orbit_dy = y - last_y_;
     }
     dragging_ = down;
-    in.zoom = g_scroll;
+    in.zoom = scroll_;
   } else {
     dragging_ = false;
   }
   last_x_ = x;
   last_y_ = y;
+  scroll_ = 0.0;
   return in;
 }
 

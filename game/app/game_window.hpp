@@ -25,6 +25,7 @@ struct FrameInput {
   double orbit_dx = 0.0;         ///< px dragged with the left button this frame
   double orbit_dy = 0.0;
   double zoom = 0.0;             ///< scroll wheel clicks, + = in
+  std::vector<int> keys;         ///< every key pressed since the last frame, in order (GLFW codes)
 };
 
 class GameWindow {
@@ -51,11 +52,16 @@ class GameWindow {
   int framebuffer_width() const;
   int framebuffer_height() const;
   GLFWwindow* handle() const { return window_; }
+  /// Called by the GLFW callbacks: queue one key press / scroll step for the next frame.
+  void queue_key(int key) { keys_.push_back(key); }
+  void queue_scroll(double dy) { scroll_ += dy; }
 
  private:
   GLFWwindow* window_ = nullptr;
   double last_x_ = 0.0, last_y_ = 0.0;
   bool dragging_ = false;
+  std::vector<int> keys_;
+  double scroll_ = 0.0;
 };
 
 }  // namespace sweetspot

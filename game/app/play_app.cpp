@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "game/app/game_window.hpp"
-#include "game/app/shot_view.hpp"
+#include "game/render/shot_view.hpp"
 #include "game/render/gl.hpp"
 #include "game/render/image.hpp"
 #include "game/render/render_error.hpp"
@@ -42,8 +42,8 @@ struct Shot {
   ShotResult result;
 };
 
-Shot compute(const UiState& st) {
-  Shot s{load_ui_scenario(st), {}};
+Shot compute(const Assets& assets, const UiState& st) {
+  Shot s{load_ui_scenario(assets, st), {}};
   s.result = run_scenario(s.scenario);
   return s;
 }
@@ -62,13 +62,13 @@ UiState ui_state_from(const PlayOptions& o) {
 
 }  // namespace
 
-int run_play_headless(const PlayOptions& o, std::ostream& out) {
+int run_play_headless(const Assets& assets, const PlayOptions& o, std::ostream& out) {
   UiState st = ui_state_from(o);
-  const Shot shot = compute(st);
-  out << launch_table(shot.result, UnitSystem::Imperial);
+  const Shot shot = compute(assets, st);
+  out << launch_table(shot.result, *shot.scenario.resolved.sport, UnitSystem::Imperial);
   const std::string png = o.screenshot.empty() ? "sweetspot-play.png" : o.screenshot;
   try {
-    RenderRequest req = render_request_for(shot.scenario, shot.result);
+    RenderRequest req = render_request_for(assets, shot.scenario.resolved, shot.result);
     req.width = o.width;
     req.height = o.height;
     render_shot_png(shot.result.trajectory, req, png);
@@ -79,9 +79,9 @@ int run_play_headless(const PlayOptions& o, std::ostream& out) {
   return 0;
 }
 
-int run_play_window(const PlayOptions& o, std::ostream& out) {
+int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& out) {
   UiState st = ui_state_from(o);
-  Shot shot = compute(st);  // bad input fails here, before a window opens
+  Shot shot = compute(assets, st);  // bad input fails here, before a window opens
   UiState good = st;
 
   WindowOptions wo;
@@ -90,7 +90,7 @@ int run_play_window(const PlayOptions& o, std::ostream& out) {
   wo.vsync = o.frames == 0;
   GameWindow win(wo);
   Renderer renderer(win.framebuffer_width(), win.framebuffer_height());
-  auto scene = std::make_unique<ShotScene>(scene_input_for(shot.scenario, shot.result));
+  auto scene = std::make_unique<ShotScene>(scene_input_for(assets, shot.scenario.resolved, shot.result));
   scene->set_shot(shot.result.trajectory, impactor_placement(shot.result));
 
   ReplayState replay;
@@ -116,17 +116,19 @@ int run_play_window(const PlayOptions& o, std::ostream& out) {
     if (in.zoom != 0.0) orbit.zoom = std::clamp(orbit.zoom * std::pow(0.9, in.zoom), 0.1, 5.0);
 
     const CameraKind before = camera;
-    PanelContext ctx{st, shot.scenario, shot.result, replay, camera, status, save_path};
+    PanelContext ctx{assets, st, shot.scenario, shot.result, replay, camera, status, save_path};
     const bool changed = draw_panels(ctx) || in.hit_again;
     if (camera != before) orbit.reset();
     if (changed) {
       // Recompute in the same frame, so the trail drawn below is the new shot's.
       try {
-        Shot next = compute(st);
-        const bool new_world = next.scenario.world != shot.scenario.world || next.scenario.sport != shot.scenario.sport;
+        Shot next = compute(assets, st);
+        const bool new_scene = next.scenario.resolved.world != shot.scenario.resolved.world ||
+                               next.scenario.resolved.sport != shot.scenario.resolved.sport ||
+                               next.result.impactor_mesh != shot.result.impactor_mesh;
         shot = std::move(next);
         good = st;
-        if (new_world) scene = std::make_unique<ShotScene>(scene_input_for(shot.scenario, shot.result));
+        if (new_scene) scene = std::make_unique<ShotScene>(scene_input_for(assets, shot.scenario.resolved, shot.result));
         scene->set_shot(shot.result.trajectory, impactor_placement(shot.result));
         replay.restart();
         status.clear();

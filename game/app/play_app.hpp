@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "game/core/assets.hpp"
+
 namespace sweetspot {
 
 struct PlayOptions {
@@ -19,11 +21,11 @@ struct PlayOptions {
 /// Opens the window and runs until closed (or `frames`). Returns the exit code. Prints the
 /// mean frame time on exit. Throws InputError for a bad scenario, std::runtime_error when
 /// no window can be opened.
-int run_play_window(const PlayOptions& options, std::ostream& out);
+int run_play_window(const Assets& assets, const PlayOptions& options, std::ostream& out);
 
 /// Runs the shot without a window: prints the launch-monitor table and writes a PNG of the
 /// shot through EGL (`screenshot`, default sweetspot-play.png). Without EGL the table is
 /// still printed and the PNG skipped with a note. Returns 0.
-int run_play_headless(const PlayOptions& options, std::ostream& out);
+int run_play_headless(const Assets& assets, const PlayOptions& options, std::ostream& out);
 
 }  // namespace sweetspot

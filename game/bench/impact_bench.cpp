@@ -3,13 +3,12 @@
 
 #include <chrono>
 
-#include "game/equipment/equipment_file.hpp"
+#include "game/content/equipment_file.hpp"
 #include "physics/delivery.hpp"
 
 namespace sweetspot {
 
-std::vector<ImpactInput> realistic_impacts() {
-  const EquipmentCatalog& eq = default_equipment();
+std::vector<ImpactInput> realistic_impacts(const EquipmentCatalog& eq) {
   std::vector<ImpactInput> out;
   for (const ClubSpec& club : eq.clubs) {
     for (double speed : {35.0, 45.0, 52.0}) {
@@ -40,8 +39,8 @@ std::vector<ImpactInput> realistic_impacts() {
   return out;
 }
 
-double measure_impact_solves_per_s(double min_seconds) {
-  const std::vector<ImpactInput> impacts = realistic_impacts();
+double measure_impact_solves_per_s(const EquipmentCatalog& equipment, double min_seconds) {
+  const std::vector<ImpactInput> impacts = realistic_impacts(equipment);
   using clock = std::chrono::steady_clock;
   volatile double sink = 0.0;
   double checksum = 0.0;

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "game/assets/assets.hpp"
+#include "game/core/assets.hpp"
 #include "game/bench/bullet_baseline.hpp"
 #include "physics/flight.hpp"
 #include "physics/units.hpp"
@@ -36,21 +36,6 @@ ShotBenchResult time_shots(double min_seconds, const Shot& shot) {
   return r;
 }
 
-FlightInput golf_input(const LaunchState& launch) {
-  FlightInput in;
-  in.aero = &aero_model("ferguson2022");
-  in.ball = golf_ball_properties();
-  in.launch = launch;
-  in.settings.record_samples = false;
-  return in;
-}
-
-std::vector<FlightInput> tour_inputs() {
-  std::vector<FlightInput> v;
-  for (const BenchLaunch& l : bench_tour_launches()) v.push_back(golf_input(l.launch));
-  return v;
-}
-
 BaselineGround golf_ground(const WorldDescription& d) {
   BaselineGround g;
   for (const WorldMesh& m : d.meshes) {
@@ -65,17 +50,21 @@ BaselineGround golf_ground(const WorldDescription& d) {
   return g;
 }
 
-AeroFn baseline_aero(const FlightInput& in) {
-  const AeroModel* model = in.aero;
-  const double rho = air_density(in.environment);
-  const double radius = in.ball.radius;
+AeroFn baseline_aero(const ShotModel& m) {
+  const AeroModel* model = m.aero;
+  const double rho = m.air_density;
+  const double radius = m.ball.radius;
   return [model, rho, radius](const Vec3&, const Vec3& v, const Vec3& w) {
     const sweetspot::AeroEffect fx = aero_effect(*model, rho, radius, v, w);
     return bench::AeroEffect{fx.force, fx.spin_rate};
   };
 }
 
-BaselineBall baseline_ball(const FlightInput& in) { return BaselineBall{in.ball.mass, in.ball.radius, in.ball.inertia}; }
+BaselineBall baseline_ball(const ShotModel& m) { return BaselineBall{m.ball.mass, m.ball.radius, m.ball.inertia}; }
+
+ShotModel golf_model(const Assets& assets, const Terrain* terrain, FlightSettings settings = {}) {
+  return make_shot_model(golf_ball_properties(), assets.aero("ferguson2022"), Environment{}, terrain, settings);
+}
 
 }  // namespace
 
@@ -89,52 +78,54 @@ std::vector<BenchLaunch> bench_tour_launches() {
   };
 }
 
-ShotBenchResult bench_golf_shots(double min_seconds, SweepMethod method) {
-  const World world(load_world("golf_hole"), method);
-  const std::vector<FlightInput> ins = tour_inputs();
-  std::size_t next = 0;
-  return time_shots(min_seconds, [&] { return simulate_shot(ins[next++ % ins.size()], &world).summary.total_m; });
-}
-
-ShotBenchResult bench_baseball_shots(double min_seconds) {
-  const World world(load_world("ballpark"));
-  FlightInput in;
-  in.aero = &aero_model("nathan");
-  in.ball = baseball_properties();
-  in.launch = launch_from_metrics(mph_to_mps(103.0), deg_to_rad(28.0), 0.0, rpm_to_radps(2000.0), 0.0,
-                                  Vec3(0.0, 0.9, 0.0));
-  in.settings.record_samples = false;
-  return time_shots(min_seconds, [&] { return simulate_shot(in, &world).summary.total_m; });
-}
-
-ShotBenchResult bench_baseline_golf_shots(double min_seconds) {
-  const BaselineGround ground = golf_ground(load_world("golf_hole"));
-  const BaselineGroundShape shape(ground);  // built once, as a game builds its level
-  const std::vector<FlightInput> ins = tour_inputs();
-  const AeroFn aero = baseline_aero(ins.front());
-  const BaselineBall ball = baseline_ball(ins.front());
+ShotBenchResult bench_golf_shots(const Assets& assets, double min_seconds, SweepMethod method) {
+  const World world(assets.world("golf_hole")->description(), method);
+  const ShotModel model = golf_model(assets, &world);
+  const std::vector<BenchLaunch> launches = bench_tour_launches();
   std::size_t next = 0;
   return time_shots(min_seconds, [&] {
-    return run_bullet_baseline(ins[next++ % ins.size()].launch, ball, aero, shape).total_m;
+    return simulate_shot(model, launches[next++ % launches.size()].launch, false).summary.total_m;
   });
 }
 
-CarryErrors golf_carry_errors() {
-  const WorldDescription d = load_world("golf_hole");
-  const World world(d);
-  const BaselineGround ground = golf_ground(d);
+ShotBenchResult bench_baseball_shots(const Assets& assets, double min_seconds) {
+  const ShotModel model = make_shot_model(baseball_properties(), assets.aero("nathan"), Environment{},
+                                          assets.world("ballpark")->world.get());
+  const LaunchState launch = launch_from_metrics(mph_to_mps(103.0), deg_to_rad(28.0), 0.0, rpm_to_radps(2000.0), 0.0,
+                                                 Vec3(0.0, 0.9, 0.0));
+  return time_shots(min_seconds, [&] { return simulate_shot(model, launch, false).summary.total_m; });
+}
+
+ShotBenchResult bench_baseline_golf_shots(const Assets& assets, double min_seconds) {
+  const BaselineGround ground = golf_ground(assets.world("golf_hole")->description());
+  const BaselineGroundShape shape(ground);  // built once, as a game builds its level
+  const ShotModel model = golf_model(assets, nullptr);
+  const AeroFn aero = baseline_aero(model);
+  const BaselineBall ball = baseline_ball(model);
+  const std::vector<BenchLaunch> launches = bench_tour_launches();
+  std::size_t next = 0;
+  return time_shots(min_seconds, [&] {
+    return run_bullet_baseline(launches[next++ % launches.size()].launch, ball, aero, shape).total_m;
+  });
+}
+
+CarryErrors golf_carry_errors(const Assets& assets) {
+  const WorldAsset& w = *assets.world("golf_hole");
+  const BaselineGround ground = golf_ground(w.description());
+  const ShotModel model = golf_model(assets, w.world.get());
+  FlightSettings tight;
+  tight.rel_tol = 1e-13;
+  tight.abs_tol = 1e-14;
+  const ShotModel reference = golf_model(assets, w.world.get(), tight);
   CarryErrors e;
   for (const BenchLaunch& l : bench_tour_launches()) {
-    FlightInput in = golf_input(l.launch);
     CarryError c;
     c.name = l.name;
-    c.ours_m = simulate_shot(in, &world).summary.carry_m;
-    in.settings.rel_tol = 1e-13;
-    in.settings.abs_tol = 1e-14;
-    c.reference_m = simulate_shot(in, &world).summary.carry_m;
+    c.ours_m = simulate_shot(model, l.launch, false).summary.carry_m;
+    c.reference_m = simulate_shot(reference, l.launch, false).summary.carry_m;
     BaselineOptions opt;
     opt.carry_only = true;
-    c.baseline_m = run_bullet_baseline(in.launch, baseline_ball(in), baseline_aero(in), ground, opt).carry_m;
+    c.baseline_m = run_bullet_baseline(l.launch, baseline_ball(model), baseline_aero(model), ground, opt).carry_m;
     c.ours_error_m = std::abs(c.ours_m - c.reference_m);
     c.baseline_error_m = std::abs(c.baseline_m - c.reference_m);
     e.ours_error_m = std::max(e.ours_error_m, c.ours_error_m);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "physics/launch.hpp"
+#include "game/core/assets.hpp"
 #include "physics/world.hpp"
 
 namespace sweetspot::bench {
@@ -31,11 +32,11 @@ std::vector<BenchLaunch> bench_tour_launches();
 /// The tour launches in turn on golf_hole, launch to rest, samples off, for at least
 /// `min_seconds`. The world is loaded and built once, outside the timing. `method` picks the
 /// world's sweep narrow phase (BulletConvexSweep is DESIGN §5's convexSweepTest).
-ShotBenchResult bench_golf_shots(double min_seconds, SweepMethod method = SweepMethod::BvhExact);
+ShotBenchResult bench_golf_shots(const Assets& assets, double min_seconds, SweepMethod method = SweepMethod::BvhExact);
 /// 103 mph, 28°, 2000 rpm on the ballpark (a home run: flight to the field-level landing).
-ShotBenchResult bench_baseball_shots(double min_seconds);
+ShotBenchResult bench_baseball_shots(const Assets& assets, double min_seconds);
 /// The same tour launches through the Bullet-dynamics baseline on golf_hole's ground, to rest.
-ShotBenchResult bench_baseline_golf_shots(double min_seconds);
+ShotBenchResult bench_baseline_golf_shots(const Assets& assets, double min_seconds);
 
 /// One launch's carry on golf_hole (m): reference (our integrator at rel_tol 1e-13), ours
 /// at the default tolerance, and the 240 Hz baseline, with the absolute errors.
@@ -53,6 +54,6 @@ struct CarryErrors {
   double ours_error_m = 0.0;
   double baseline_error_m = 0.0;
 };
-CarryErrors golf_carry_errors();
+CarryErrors golf_carry_errors(const Assets& assets);
 
 }  // namespace sweetspot::bench

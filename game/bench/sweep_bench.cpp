@@ -2,12 +2,12 @@
 
 #include <chrono>
 
-#include "game/scenario/sweep.hpp"
+#include "game/tuning/sweep.hpp"
 
 namespace sweetspot {
 
-SweepThroughput measure_sweep(int threads, int points_per_axis) {
-  const Scenario base = load_scenario("golf/driver", {});
+SweepThroughput measure_sweep(const Assets& assets, int threads, int points_per_axis) {
+  const Scenario base = load_scenario(assets, "golf/driver", {});
   SweepOptions o;
   o.e = GridAxis{0.70, 0.86, points_per_axis};
   o.mu = GridAxis{0.20, 0.60, points_per_axis};

@@ -1,6 +1,8 @@
 // Sweep throughput at a given thread count (DESIGN §8: `sweep` scales with threads).
 #pragma once
 
+#include "game/core/assets.hpp"
+
 namespace sweetspot {
 
 struct SweepThroughput {
@@ -12,6 +14,6 @@ struct SweepThroughput {
 /// Runs the e × µ grid of golf/driver (`points_per_axis`² shots, flight to rest on the golf
 /// hole, no trajectory samples) with `threads` workers and times it. The same grid at every
 /// thread count, so the ratio is the scaling. The shared world is built before timing.
-SweepThroughput measure_sweep(int threads, int points_per_axis);
+SweepThroughput measure_sweep(const Assets& assets, int threads, int points_per_axis);
 
 }  // namespace sweetspot

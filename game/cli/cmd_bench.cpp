@@ -33,18 +33,18 @@ RunFn setup_bench(CLI::App& sub) {
   auto opts = std::make_shared<BenchOptions>();
   sub.add_flag("--json", opts->json, "print one JSON object");
   sub.add_flag("--quick", opts->quick, "short timing runs (tests, smoke checks)");
-  return [opts]() -> int {
+  return [opts](const Assets& assets) -> int {
     const double seconds = opts->quick ? 0.05 : 1.0;
     std::vector<Measurement> rows;
-    rows.push_back({"impact_solves_per_s", measure_impact_solves_per_s(seconds), "impact solves/s (one core)"});
+    rows.push_back({"impact_solves_per_s", measure_impact_solves_per_s(assets.equipment(), seconds), "impact solves/s (one core)"});
 
     // Whole shots, launch to rest on the asset worlds, and the same tour launches through
     // the Bullet-dynamics baseline, all measured in this run.
-    const bench::ShotBenchResult golf = bench::bench_golf_shots(seconds);
-    const bench::ShotBenchResult golf_gjk = bench::bench_golf_shots(seconds, SweepMethod::BulletConvexSweep);
-    const bench::ShotBenchResult baseball = bench::bench_baseball_shots(seconds);
-    const bench::ShotBenchResult baseline = bench::bench_baseline_golf_shots(seconds);
-    const bench::CarryErrors carry = bench::golf_carry_errors();
+    const bench::ShotBenchResult golf = bench::bench_golf_shots(assets, seconds);
+    const bench::ShotBenchResult golf_gjk = bench::bench_golf_shots(assets, seconds, SweepMethod::BulletConvexSweep);
+    const bench::ShotBenchResult baseball = bench::bench_baseball_shots(assets, seconds);
+    const bench::ShotBenchResult baseline = bench::bench_baseline_golf_shots(assets, seconds);
+    const bench::CarryErrors carry = bench::golf_carry_errors(assets);
     rows.push_back({"golf_shots_per_s", golf.shots_per_second, "golf shots/s (tour driver/7-iron/PW, to rest)"});
     rows.push_back({"golf_us_per_shot", golf.us_per_shot, "us per golf shot"});
     rows.push_back({"golf_shots_per_s_convex_sweep", golf_gjk.shots_per_second,
@@ -64,8 +64,8 @@ RunFn setup_bench(CLI::App& sub) {
     }
 
     const int axis = opts->quick ? 6 : 60;
-    const SweepThroughput s1 = measure_sweep(1, axis);
-    const SweepThroughput s2 = measure_sweep(2, axis);
+    const SweepThroughput s1 = measure_sweep(assets, 1, axis);
+    const SweepThroughput s2 = measure_sweep(assets, 2, axis);
     rows.push_back({"sweep_shots_per_s_1_thread", s1.shots_per_s, "sweep shots/s, 1 thread"});
     rows.push_back({"sweep_shots_per_s_2_threads", s2.shots_per_s, "sweep shots/s, 2 threads"});
     rows.push_back({"sweep_scaling_2_threads", s2.shots_per_s / s1.shots_per_s, "sweep speed-up, 2 vs 1 thread"});
@@ -73,7 +73,7 @@ RunFn setup_bench(CLI::App& sub) {
     // The frame: EGL off-screen (llvmpipe without a GPU). Absent without EGL, not an error.
     std::string frame_note;
     try {
-      rows.push_back({"frame_ms_1280x720", measure_frame_ms(1280, 720, opts->quick ? 3 : 20), "ms per 1280x720 off-screen frame"});
+      rows.push_back({"frame_ms_1280x720", measure_frame_ms(assets, 1280, 720, opts->quick ? 3 : 20), "ms per 1280x720 off-screen frame"});
     } catch (const RenderUnavailable& e) {
       frame_note = e.what();
     }

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "game/cli/command.hpp"
-#include "game/scenario/fit.hpp"
+#include "game/tuning/fit.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot::cli {
@@ -22,9 +22,9 @@ RunFn setup_fit(CLI::App& sub) {
   sub.add_option("--target", o->target, "measured launch: ball_speed=Q,launch_angle=Q,spin=Q (any subset)")
       ->required();
   sub.add_option("--set", o->sets, "override a scenario key: key=value")->type_name("KEY=VALUE");
-  return [o]() -> int {
+  return [o](const Assets& assets) -> int {
     const FitTarget t = parse_fit_target(o->target);
-    const Scenario s = load_scenario(o->scenario, o->sets);
+    const Scenario s = load_scenario(assets, o->scenario, o->sets);
     const FitResult r = fit_e_mu(s, t);
     std::printf("fit %s: e = %.4f, mu = %.4f  (%s, %d deliveries solved)\n", o->scenario.c_str(), r.e, r.mu,
                 to_string(r.contact), r.evaluations);

@@ -2,18 +2,18 @@
 #include <iostream>
 
 #include "game/cli/command.hpp"
-#include "game/scenario/scenario_catalog.hpp"
+#include "game/content/scenario.hpp"
 
 namespace sweetspot::cli {
 namespace {
 
 RunFn setup_list(CLI::App& /*sub*/) {
-  return []() -> int {
-    const auto all = builtin_scenarios();
+  return [](const Assets& assets) -> int {
+    const auto& all = assets.scenarios();
     std::size_t width = 0;
     for (const auto& s : all) width = std::max(width, s.name.size());
     for (const auto& s : all) {
-      std::cout << s.name << std::string(width + 2 - s.name.size(), ' ') << s.description << "\n";
+      std::cout << s.name << std::string(width + 2 - s.name.size(), ' ') << scenario_description(s) << "\n";
     }
     return 0;
   };

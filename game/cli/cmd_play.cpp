@@ -5,7 +5,7 @@
 
 #include "game/app/play_app.hpp"
 #include "game/cli/command.hpp"
-#include "game/display.hpp"
+#include "game/app/display.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot::cli {
@@ -19,20 +19,20 @@ RunFn setup_play(CLI::App& sub) {
   sub.add_option("--screenshot", o->screenshot, "save the last frame to FILE.png (headless: the shot's image)");
   sub.add_option("--width", o->width, "window width in px")->check(CLI::Range(640, 7680))->capture_default_str();
   sub.add_option("--height", o->height, "window height in px")->check(CLI::Range(480, 4320))->capture_default_str();
-  return [o]() -> int {
+  return [o](const Assets& assets) -> int {
     std::string why;
     if (!display_available(&why)) {
       std::cout << "sweetspot play: " << why << "; running " << o->scenario << " headless.\n";
-      return run_play_headless(*o, std::cout);
+      return run_play_headless(assets, *o, std::cout);
     }
     try {
-      return run_play_window(*o, std::cout);
+      return run_play_window(assets, *o, std::cout);
     } catch (const InputError&) {
       throw;
     } catch (const std::runtime_error& e) {
       // A display was named but no GL window opened (e.g. a stale DISPLAY): fall back.
       std::cout << "sweetspot play: " << e.what() << "; running " << o->scenario << " headless.\n";
-      return run_play_headless(*o, std::cout);
+      return run_play_headless(assets, *o, std::cout);
     }
   };
 }

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "game/cli/command.hpp"
-#include "game/scenario/regression.hpp"
+#include "game/tuning/regression.hpp"
 #include "game/util/atomic_file.hpp"
 
 namespace sweetspot::cli {
@@ -19,10 +19,10 @@ RunFn setup_regress(CLI::App& sub) {
   auto o = std::make_shared<RegressOptions>();
   sub.add_option("paths", o->paths, "case files or directories (default: tests/regression)");
   sub.add_flag("--update", o->update, "rewrite each case's expected values with what this build computes");
-  return [o]() -> int {
+  return [o](const Assets& assets) -> int {
     // Run every case before writing anything: a bad file aborts with no file touched.
     std::vector<RegressionCaseResult> results;
-    for (const auto& p : regression_paths(o->paths)) results.push_back(run_regression_case(p));
+    for (const auto& p : regression_paths(o->paths)) results.push_back(run_regression_case(assets, p));
     std::cout << regression_table(results);
     int failed_cases = 0, failed_rows = 0, rows = 0;
     for (const auto& r : results) {

@@ -5,8 +5,7 @@
 
 #include "game/cli/command.hpp"
 #include "game/report/report.hpp"
-#include "game/scenario/scenario.hpp"
-#include "game/scenario/scenario_catalog.hpp"
+#include "game/content/scenario.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -33,23 +32,24 @@ RunFn setup_shot(CLI::App& sub) {
   gspro->excludes(csv);
   sub.add_option("--units", o->units, "display units of the table and CSV: imperial or metric")
       ->capture_default_str();
-  return [o]() -> int {
+  return [o](const Assets& assets) -> int {
     const UnitSystem units = parse_unit_system(o->units);
     // --e / --mu are --set shorthands; their messages name the flag itself.
-    ScenarioDoc doc = read_toml_doc(resolve_scenario(o->scenario));
+    ScenarioDoc doc = read_toml_doc(resolve_scenario(assets, o->scenario));
     for (const auto& s : o->sets) apply_set(doc, s);
     if (!o->e.empty()) apply_set(doc, "impact.e=" + o->e, "--e " + o->e);
     if (!o->mu.empty()) apply_set(doc, "impact.mu=" + o->mu, "--mu " + o->mu);
-    const Scenario scenario = scenario_from_doc(doc, o->scenario);
+    const Scenario scenario = scenario_from_doc(assets, doc, o->scenario);
     const ShotResult r = run_scenario(scenario, RunOptions{true, false});
+    const SportProfile& sport = *scenario.resolved.sport;
     if (o->json) {
       std::cout << shot_json(r).dump(2) << "\n";
     } else if (o->gspro) {
       std::cout << gspro_json(r).dump(2) << "\n";
     } else if (o->csv) {
-      std::cout << csv_header(r.sport, units) << csv_row(r, units);
+      std::cout << csv_header(sport, units) << csv_row(r, sport, units);
     } else {
-      std::cout << launch_table(r, units);
+      std::cout << launch_table(r, sport, units);
     }
     return 0;
   };

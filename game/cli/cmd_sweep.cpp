@@ -9,8 +9,8 @@
 #include <memory>
 
 #include "game/cli/command.hpp"
-#include "game/scenario/scenario_schema.hpp"
-#include "game/scenario/sweep.hpp"
+#include "game/content/scenario_schema.hpp"
+#include "game/tuning/sweep.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/units.hpp"
 
@@ -33,11 +33,10 @@ RunFn setup_sweep(CLI::App& sub) {
   sub.add_option("--set", o->sets, "override a scenario key: key=value")->type_name("KEY=VALUE");
   sub.add_option("--threads", o->threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   sub.add_flag("--no-flight", o->no_flight, "launch numbers only, skip the flight (faster)");
-  return [o]() -> int {
-    const double mu_max = scenario_schema().find("impact.mu", 0)->max;
+  return [o](const Assets& assets) -> int {
     SweepOptions so;
-    so.e = parse_grid_axis(o->e, "--e", 0.0, 1.0);
-    so.mu = parse_grid_axis(o->mu, "--mu", 0.0, mu_max);
+    so.e = parse_grid_axis(o->e, "--e", ImpactMaterial::kE);
+    so.mu = parse_grid_axis(o->mu, "--mu", ImpactMaterial::kMu);
     so.threads = o->threads;
     so.fly = !o->no_flight;
     const std::size_t points = static_cast<std::size_t>(so.e.count) * static_cast<std::size_t>(so.mu.count);
@@ -45,7 +44,7 @@ RunFn setup_sweep(CLI::App& sub) {
       throw InputError("--e " + o->e + " --mu " + o->mu + ": " + std::to_string(points) +
                        " grid points exceed the limit of " + std::to_string(kMaxSweepPoints));
     }
-    const Scenario base = load_scenario(o->scenario, o->sets);
+    const Scenario base = load_scenario(assets, o->scenario, o->sets);
     if (::isatty(STDERR_FILENO) != 0) {
       so.progress = [](std::size_t done, std::size_t total) {
         std::fprintf(stderr, "\rsweep: %zu/%zu points", done, total);

@@ -2,8 +2,10 @@
 // itself with a static CommandRegistrar, so adding a command never edits main.cpp.
 //
 // setup() adds the subcommand's options to `sub` and returns the function that runs it
-// after parsing. run() returns the process exit code: 0 ok, 1 a check failed (regress
-// drift), 2 bad input. Throwing sweetspot::InputError also exits 2 with its message.
+// after parsing, with the one Assets context of the process. run() returns the exit code:
+// 0 ok, 1 a check failed (regress drift, unreachable fit), 2 bad input, 3 no off-screen
+// OpenGL. Throwing sweetspot::InputError exits 2 with its message; any other exception is
+// an internal error, exit 4.
 #pragma once
 
 #include <functional>
@@ -12,9 +14,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "game/core/assets.hpp"
+
 namespace sweetspot::cli {
 
-using RunFn = std::function<int()>;
+using RunFn = std::function<int(const Assets&)>;
 using SetupFn = RunFn (*)(CLI::App& sub);
 
 struct CommandInfo {

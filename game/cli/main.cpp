@@ -44,8 +44,9 @@ int main(int argc, char** argv) {
   }
 
   try {
+    const sweetspot::Assets assets;  // the one asset context; each part loads on first use
     for (auto& [sub, run] : runs) {
-      if (sub->parsed()) return run();
+      if (sub->parsed()) return run(assets);
     }
   } catch (const sweetspot::InputError& e) {
     std::cerr << "sweetspot: error: " << e.what() << "\n";
@@ -57,7 +58,7 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "sweetspot: internal error: " << e.what() << "\n";
-    return 3;
+    return 4;
   }
   return 2;
 }

@@ -1,6 +1,5 @@
 #include "game/render/mesh_import.hpp"
 
-#include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -9,10 +8,15 @@
 #include <array>
 #include <string>
 
+#include "game/content/mesh_file.hpp"
 #include "game/render/render_error.hpp"
+#include "physics/error.hpp"
 
 namespace sweetspot {
 namespace {
+
+/// Equipment and decoration meshes are small; 64 MiB is far beyond any of them.
+constexpr std::uintmax_t kMaxMeshBytes = std::uintmax_t{64} << 20;
 
 struct Named {
   std::string_view name;
@@ -58,15 +62,14 @@ std::optional<PaletteEntry> palette_color(std::string_view material) {
 }
 
 MeshData import_mesh(const std::filesystem::path& path) {
-  Assimp::Importer importer;
-  // Flat normals for files without them keep terrain facets readable; pre-transform bakes
-  // node transforms so the mesh is in the file's frame.
-  const aiScene* scene = importer.ReadFile(
-      path.string(), aiProcess_Triangulate | aiProcess_GenNormals | aiProcess_PreTransformVertices |
-                         aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
-  if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
-    throw RenderError("mesh " + path.string() + " cannot be read: " + importer.GetErrorString());
-  }
+  // Flat normals for files without them keep facets readable; pre-transform bakes node
+  // transforms so the mesh is in the file's frame.
+  const ImportedMesh imported = import_mesh_file(
+      path, "mesh", kMaxMeshBytes,
+      aiProcess_Triangulate | aiProcess_GenNormals | aiProcess_PreTransformVertices |
+          aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  const aiScene* scene = imported.scene;
+  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) throw InputError("mesh " + path.string() + " is incomplete");
   MeshData out;
   for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi) {
     const aiMesh* mesh = scene->mMeshes[mi];
@@ -103,7 +106,43 @@ MeshData import_mesh(const std::filesystem::path& path) {
       out.triangle_material.push_back(mat_index);
     }
   }
-  if (out.indices.empty()) throw RenderError("mesh " + path.string() + " holds no triangles");
+  if (out.indices.empty()) throw InputError("mesh " + path.string() + " holds no triangles");
+  return out;
+}
+
+MeshData world_mesh_data(const WorldDescription& world) {
+  MeshData out;
+  for (const WorldMesh& m : world.meshes) {
+    const std::string& name = world.materials[static_cast<size_t>(m.material)].name;
+    const PaletteEntry entry = palette_color(name).value_or(PaletteEntry{{0.7f, 0.7f, 0.7f}, 0.0f});
+    auto it = std::find(out.materials.begin(), out.materials.end(), name);
+    if (it == out.materials.end()) {
+      out.materials.push_back(name);
+      it = out.materials.end() - 1;
+    }
+    const auto mat_index = static_cast<std::uint16_t>(it - out.materials.begin());
+    const auto base = static_cast<std::uint32_t>(out.vertices.size());
+    // Area-weighted vertex normals: terrain reads smooth, walls stay sharp at their own mesh.
+    std::vector<Vec3> normals(m.vertices.size(), Vec3::Zero());
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+      const Vec3& a = m.vertices[m.indices[t]];
+      const Vec3 n = (m.vertices[m.indices[t + 1]] - a).cross(m.vertices[m.indices[t + 2]] - a);
+      for (int k = 0; k < 3; ++k) normals[m.indices[t + static_cast<size_t>(k)]] += n;
+    }
+    for (size_t v = 0; v < m.vertices.size(); ++v) {
+      Vertex vx;
+      vx.position = m.vertices[v].cast<float>();
+      const double len = normals[v].norm();
+      vx.normal = len > 0.0 ? Eigen::Vector3f((normals[v] / len).cast<float>()) : Eigen::Vector3f::UnitY();
+      vx.color = entry.color;
+      vx.pattern = entry.pattern;
+      out.vertices.push_back(vx);
+    }
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+      for (int k = 0; k < 3; ++k) out.indices.push_back(base + m.indices[t + static_cast<size_t>(k)]);
+      out.triangle_material.push_back(mat_index);
+    }
+  }
   return out;
 }
 

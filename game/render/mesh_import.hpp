@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "game/render/mesh_data.hpp"
+#include "physics/world.hpp"
 
 namespace sweetspot {
 
@@ -24,8 +25,13 @@ struct PaletteEntry {
 std::optional<PaletteEntry> palette_color(std::string_view material);
 
 /// Loads every mesh of the file into one MeshData (triangulated, normals generated where the
-/// file has none, node transforms applied). Throws RenderError naming the file and
-/// assimp's message when it cannot be read or holds no triangles.
+/// file has none, node transforms applied), through the bounded reader of
+/// game/content/mesh_file.hpp. Throws InputError naming the file when it cannot be read or
+/// holds no triangles.
 MeshData import_mesh(const std::filesystem::path& path);
+
+/// A world's own triangles (game/content WorldAsset: the meshes physics collides with, and
+/// its decorations) as one MeshData, coloured by surface name, with smooth vertex normals.
+MeshData world_mesh_data(const WorldDescription& world);
 
 }  // namespace sweetspot

@@ -26,8 +26,10 @@ std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, con
   }
   OffscreenContext context(request.platform);
   ShotSceneInput input;
-  input.sport = request.sport;
+  input.assets = request.assets;
   input.world = request.world;
+  input.distance_unit = request.distance_unit;
+  input.tee = request.tee;
   input.ball_radius = request.ball_radius;
   input.impactor = request.impactor;
   input.impactor_mesh = request.impactor_mesh;
@@ -47,11 +49,13 @@ void render_shot_png(const ShotTrajectory& trajectory, const RenderRequest& requ
   write_png_atomic(out, request.width, request.height, rgba);
 }
 
-double measure_frame_ms(int w, int h, int frames) {
+double measure_frame_ms(const Assets& assets, int w, int h, int frames) {
   if (frames < 1) throw InputError("frames " + std::to_string(frames) + " must be at least 1");
   OffscreenContext context;
   ShotSceneInput input;
-  input.world = std::filesystem::is_regular_file(render_asset_dir() / "worlds" / "golf_hole.obj") ? "golf_hole" : "";
+  input.assets = &assets;
+  input.world = assets.world("golf_hole");
+  input.tee = true;
   input.impactor_mesh = "driver_head";
   ShotScene scene(input);
   ImpactorPlacement club;

@@ -15,11 +15,13 @@
 namespace sweetspot {
 
 struct RenderRequest {
-  std::string sport = "golf";       ///< "golf" | "baseball"
-  std::string world;                ///< world name (assets/worlds), .obj path, or "" (grass plane)
+  const Assets* assets = nullptr;   ///< required: meshes
+  const WorldAsset* world = nullptr;///< drawn and asked for heights; nullptr = a grass plane
+  std::string distance_unit = "yd"; ///< "yd" golf stripes, "ft" baseball fence marks
+  bool tee = false;                 ///< the ball was teed up
   double ball_radius = 0.021335;    ///< m
   std::optional<ImpactorPlacement> impactor;  ///< club/bat mesh frame -> world at impact
-  std::string impactor_mesh;        ///< "driver_head", "iron_head", "bat", a path, or ""
+  std::string impactor_mesh;        ///< "driver_head", "iron_head", "putter_head", "bat", a path, or ""
   std::optional<Vec3> flag;         ///< m; see ShotSceneInput::flag
   int width = 1280, height = 720;   ///< px, 16..8192
   CameraKind camera = CameraKind::Behind;
@@ -37,8 +39,8 @@ std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, con
 void render_shot_png(const ShotTrajectory& trajectory, const RenderRequest& request, const std::filesystem::path& out);
 
 /// Mean ms per warm w x h off-screen frame — scene build + draw + MSAA resolve + read-back —
-/// over `frames` frames after 3 warm-up frames, for a synthetic drive on the golf_hole world
-/// (a plain plane if that world is missing). Throws RenderUnavailable without EGL.
-double measure_frame_ms(int w, int h, int frames);
+/// over `frames` frames after 3 warm-up frames, for a synthetic drive on the golf_hole world.
+/// Throws RenderUnavailable without EGL.
+double measure_frame_ms(const Assets& assets, int w, int h, int frames);
 
 }  // namespace sweetspot

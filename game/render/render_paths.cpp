@@ -34,27 +34,14 @@ std::filesystem::path resolve(const char* env_name, const char* sub) {
 
 std::filesystem::path shader_dir() { return resolve("SWEETSPOT_SHADERS", "shaders"); }
 
-std::filesystem::path render_asset_dir() { return resolve("SWEETSPOT_ASSETS", "assets"); }
-
-std::filesystem::path mesh_path(const std::string& name) {
+std::filesystem::path mesh_path(const std::filesystem::path& assets_root, const std::string& name) {
   if (name.find('/') != std::string::npos || name.ends_with(".obj")) {
     if (std::filesystem::is_regular_file(name)) return name;
     throw InputError("mesh file '" + name + "' does not exist");
   }
-  auto p = render_asset_dir() / "meshes" / (name + ".obj");
+  auto p = assets_root / "meshes" / (name + ".obj");
   if (std::filesystem::is_regular_file(p)) return p;
-  throw InputError("mesh '" + name + "' not found at " + p.string() +
-                   " (known: golf_ball, driver_head, iron_head, bat, tee, flag)");
-}
-
-std::filesystem::path world_mesh_path(const std::string& name) {
-  if (name.find('/') != std::string::npos || name.ends_with(".obj")) {
-    if (std::filesystem::is_regular_file(name)) return name;
-    throw InputError("world mesh '" + name + "' does not exist");
-  }
-  auto p = render_asset_dir() / "worlds" / (name + ".obj");
-  if (std::filesystem::is_regular_file(p)) return p;
-  throw InputError("world '" + name + "' not found at " + p.string() + " (worlds: golf_hole, ballpark)");
+  throw InputError("mesh '" + name + "' not found at " + p.string());
 }
 
 }  // namespace sweetspot

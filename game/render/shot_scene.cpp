@@ -26,83 +26,19 @@ const Eigen::Vector3f kFenceLabelColor{1.00f, 0.92f, 0.30f};
 const Eigen::Vector3f kShadowColor{0.05f, 0.07f, 0.05f};
 const Eigen::Vector3f kTrackColor{0.10f, 0.22f, 0.08f};
 
-bool is_wall(const std::string& m) { return m == "wall" || m == "foul_pole"; }
-bool is_not_ground(const std::string& m) { return is_wall(m) || m == "flag" || m == "pole"; }
-
-Vec3 vpos(const MeshData& m, std::uint32_t i) { return m.vertices[i].position.cast<double>(); }
-
-// Uniform xz grid over the ground triangles, for marker heights.
-struct GroundGrid {
-  double x0 = 0, z0 = 0, cell = 1;
-  int nx = 0, nz = 0;
-  std::vector<std::vector<std::uint32_t>> cells;
-
-  void build(const MeshData& m) {
-    double xmin = 1e300, xmax = -1e300, zmin = 1e300, zmax = -1e300;
-    for (const auto& v : m.vertices) {
-      xmin = std::min(xmin, double(v.position.x()));
-      xmax = std::max(xmax, double(v.position.x()));
-      zmin = std::min(zmin, double(v.position.z()));
-      zmax = std::max(zmax, double(v.position.z()));
-    }
-    if (m.vertices.empty()) return;
-    cell = std::max(2.0, std::sqrt((xmax - xmin) * (zmax - zmin) / 40000.0));
-    x0 = xmin;
-    z0 = zmin;
-    nx = static_cast<int>((xmax - xmin) / cell) + 1;
-    nz = static_cast<int>((zmax - zmin) / cell) + 1;
-    cells.assign(static_cast<std::size_t>(nx) * nz, {});
-    for (std::size_t t = 0; t < m.triangle_count(); ++t) {
-      if (is_not_ground(m.material_of(t))) continue;
-      double a = 1e300, b = -1e300, c = 1e300, d = -1e300;
-      for (int k = 0; k < 3; ++k) {
-        const auto& p = m.vertices[m.indices[3 * t + k]].position;
-        a = std::min(a, double(p.x()));
-        b = std::max(b, double(p.x()));
-        c = std::min(c, double(p.z()));
-        d = std::max(d, double(p.z()));
-      }
-      for (int i = index_x(a); i <= index_x(b); ++i) {
-        for (int j = index_z(c); j <= index_z(d); ++j) cells[static_cast<std::size_t>(i) * nz + j].push_back(static_cast<std::uint32_t>(t));
-      }
-    }
+// Where the ray from `origin` along `dir` (xz) first meets the polyline `line` (xz), in m.
+std::optional<double> ray_polyline(const Vec3& origin, const Vec3& dir, const std::vector<Vec3>& line) {
+  std::optional<double> best;
+  for (size_t i = 0; i + 1 < line.size(); ++i) {
+    const double sx = line[i + 1].x() - line[i].x(), sz = line[i + 1].z() - line[i].z();
+    const double den = dir.x() * sz - dir.z() * sx;
+    if (std::abs(den) < 1e-12) continue;
+    const double qx = line[i].x() - origin.x(), qz = line[i].z() - origin.z();
+    const double t = (qx * sz - qz * sx) / den;
+    const double u = (qx * dir.z() - qz * dir.x()) / den;
+    if (t > 0 && u >= -1e-9 && u <= 1 + 1e-9 && (!best || t < *best)) best = t;
   }
-  int index_x(double x) const { return std::clamp(static_cast<int>((x - x0) / cell), 0, nx - 1); }
-  int index_z(double z) const { return std::clamp(static_cast<int>((z - z0) / cell), 0, nz - 1); }
-
-  std::optional<double> height(const MeshData& m, double x, double z) const {
-    if (nx == 0 || x < x0 || z < z0 || x > x0 + nx * cell || z > z0 + nz * cell) return std::nullopt;
-    std::optional<double> best;
-    for (std::uint32_t t : cells[static_cast<std::size_t>(index_x(x)) * nz + index_z(z)]) {
-      const Vec3 a = vpos(m, m.indices[3 * t]), b = vpos(m, m.indices[3 * t + 1]), c = vpos(m, m.indices[3 * t + 2]);
-      const double det = (b.z() - c.z()) * (a.x() - c.x()) + (c.x() - b.x()) * (a.z() - c.z());
-      if (std::abs(det) < 1e-12) continue;
-      const double l1 = ((b.z() - c.z()) * (x - c.x()) + (c.x() - b.x()) * (z - c.z())) / det;
-      const double l2 = ((c.z() - a.z()) * (x - c.x()) + (a.x() - c.x()) * (z - c.z())) / det;
-      const double l3 = 1.0 - l1 - l2;
-      if (l1 < -1e-9 || l2 < -1e-9 || l3 < -1e-9) continue;
-      const double y = l1 * a.y() + l2 * b.y() + l3 * c.y();
-      if (!best || y > *best) best = y;
-    }
-    return best;
-  }
-};
-
-// Möller–Trumbore; distance along the unit direction, or nothing.
-std::optional<double> ray_triangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 e1 = b - a, e2 = c - a, p = d.cross(e2);
-  const double det = e1.dot(p);
-  if (std::abs(det) < 1e-12) return std::nullopt;
-  const Vec3 s = o - a;
-  // A small tolerance so a ray along a shared edge (a foul line at a wall joint) still hits.
-  constexpr double kEdge = 1e-7;
-  const double u = s.dot(p) / det;
-  if (u < -kEdge || u > 1 + kEdge) return std::nullopt;
-  const Vec3 q = s.cross(e1);
-  const double v = d.dot(q) / det;
-  if (v < -kEdge || u + v > 1 + kEdge) return std::nullopt;
-  const double t = e2.dot(q) / det;
-  return t > 0 ? std::optional<double>(t) : std::nullopt;
+  return best;
 }
 
 Eigen::Matrix4f translate_scale(const Vec3& p, double s) {
@@ -139,8 +75,6 @@ struct ShotScene::Impl {
   ShotSceneInput input;
   SceneStyle style;
   bool golf = true;
-  MeshData world_data;
-  GroundGrid grid;
   std::unique_ptr<GpuMesh> world, surroundings, ball, tee, flag, impactor;
   std::optional<Vec3> flag_position;
   std::vector<std::pair<double, Vec3>> fence_marks;  // (distance m, label anchor)
@@ -152,70 +86,51 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
   Impl& m = *impl_;
   m.input = input;
   m.style = style;
-  if (input.sport != "golf" && input.sport != "baseball") {
-    throw InputError("sport '" + input.sport + "' is not one of: golf, baseball");
+  if (input.assets == nullptr) throw InputError("render: no assets given");
+  if (input.distance_unit != "yd" && input.distance_unit != "ft") {
+    throw InputError("distance unit '" + input.distance_unit + "' is not one of: yd, ft");
   }
   if (!(input.ball_radius > 0.005 && input.ball_radius < 0.1)) {
     throw InputError("ball radius " + std::to_string(input.ball_radius) + " m is outside 0.005..0.1 m");
   }
-  m.golf = input.sport == "golf";
+  m.golf = input.distance_unit == "yd";
+  const auto& root = input.assets->root();
 
   double ground_min_y = 0.0;
-  if (!input.world.empty()) {
-    m.world_data = import_mesh(world_mesh_path(input.world));
-    m.grid.build(m.world_data);
-    m.world = std::make_unique<GpuMesh>(m.world_data);
-    bool has_flag = false;
-    Vec3 green_sum = Vec3::Zero();
-    double green_n = 0;
+  if (input.world != nullptr) {
+    const WorldDescription& d = input.world->description();
+    m.world = std::make_unique<GpuMesh>(world_mesh_data(d));
     ground_min_y = 1e300;
     m.world_x_max = -1e300;
-    for (std::size_t t = 0; t < m.world_data.triangle_count(); ++t) {
-      const std::string& name = m.world_data.material_of(t);
-      has_flag = has_flag || name == "flag";
-      for (int k = 0; k < 3; ++k) {
-        const Vec3 p = vpos(m.world_data, m.world_data.indices[3 * t + k]);
+    for (const WorldMesh& wm : d.meshes)
+      for (const Vec3& p : wm.vertices) {
         ground_min_y = std::min(ground_min_y, p.y());
         m.world_x_max = std::max(m.world_x_max, p.x());
-        if (name == "green") {
-          green_sum += p;
-          green_n += 1;
-        }
       }
-    }
-    if (input.flag) {
-      m.flag_position = input.flag;
-    } else if (m.golf && !has_flag && green_n > 0) {
-      const Vec3 c = green_sum / green_n;
-      m.flag_position = Vec3(c.x(), ground_height(c.x(), c.z()).value_or(c.y()), c.z());
-    }
-    if (!m.golf) {
-      // Fence distances where the foul lines, the gaps and centre field meet the wall.
+    m.flag_position = input.flag ? input.flag : input.world->pin;
+    // Fence distances where the foul lines, the gaps and centre field meet the fence line.
+    if (!input.world->fence_line.empty()) {
       for (double deg : {-45.0, -22.5, 0.0, 22.5, 45.0}) {
         const Vec3 dir(std::cos(deg_to_rad(deg)), 0.0, std::sin(deg_to_rad(deg)));
-        const Vec3 origin(0.0, ground_height(0.0, 0.0).value_or(0.0) + 0.5, 0.0);
-        std::optional<double> hit;
-        for (std::size_t t = 0; t < m.world_data.triangle_count(); ++t) {
-          if (!is_wall(m.world_data.material_of(t))) continue;
-          const auto& w = m.world_data;
-          auto d = ray_triangle(origin, dir, vpos(w, w.indices[3 * t]), vpos(w, w.indices[3 * t + 1]),
-                                vpos(w, w.indices[3 * t + 2]));
-          if (d && (!hit || *d < *hit)) hit = d;
+        const Vec3 origin(d.origin.x(), ground_height(d.origin.x(), d.origin.z()).value_or(d.origin.y()) + 0.5,
+                          d.origin.z());
+        if (const auto hit = ray_polyline(origin, dir, input.world->fence_line)) {
+          m.fence_marks.emplace_back(*hit, origin + *hit * dir);
         }
-        if (hit) m.fence_marks.emplace_back(*hit, origin + *hit * dir);
       }
     }
   } else {
     m.world_x_max = 0;
+    m.flag_position = input.flag;
   }
   // Beyond the world mesh: a grass plane just below its lowest point, out to the horizon.
   m.plane_y = m.world ? ground_min_y - 0.3 : 0.0;
   // Without a world the plane is the flat default ground of the flight model: a mown fairway.
   m.surroundings = std::make_unique<GpuMesh>(grass_plane(m.plane_y, 4000.0, m.world ? "out_of_bounds" : "fairway"));
-  m.ball = std::make_unique<GpuMesh>(import_mesh(mesh_path("golf_ball")));
-  if (m.golf) m.tee = std::make_unique<GpuMesh>(import_mesh(mesh_path("tee")));
-  if (m.flag_position) m.flag = std::make_unique<GpuMesh>(import_mesh(mesh_path("flag")));
-  if (!input.impactor_mesh.empty()) m.impactor = std::make_unique<GpuMesh>(import_mesh(mesh_path(input.impactor_mesh)));
+  m.ball = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, "golf_ball")));
+  if (input.tee) m.tee = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, "tee")));
+  if (m.flag_position) m.flag = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, "flag")));
+  if (!input.impactor_mesh.empty()) m.impactor = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, input.impactor_mesh)));
   impactor_ = input.impactor;
 }
 
@@ -227,7 +142,14 @@ void ShotScene::set_shot(const ShotTrajectory& trajectory, const std::optional<I
 }
 
 std::optional<double> ShotScene::ground_height(double x, double z) const {
-  return impl_->grid.height(impl_->world_data, x, z);
+  const WorldAsset* w = impl_->input.world;
+  if (w == nullptr) return std::nullopt;
+  const WorldDescription& d = w->description();
+  SurfaceContact hit;
+  // A tiny sphere dropped from the top of the world: the highest ground under (x, z).
+  if (!w->world->support(Vec3(x, d.bounds_max.y(), z), 1e-3, d.bounds_max.y() - d.bounds_min.y(), &hit))
+    return std::nullopt;
+  return hit.point.y();
 }
 
 Camera ShotScene::camera(CameraKind kind, double t, int width, int height) const {
@@ -253,6 +175,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   const Vec3 launch = have_shot ? samples.front().position : Vec3(0, m.input.ball_radius, 0);
 
   if (m.tee) {
+    // The tee's cup holds the ball's bottom; its peg reaches down into the turf.
     scene.meshes.push_back({m.tee.get(), translate_scale(launch - Vec3(0, m.input.ball_radius, 0), 1.0), false});
   }
   if (m.flag) scene.meshes.push_back({m.flag.get(), translate_scale(*m.flag_position, 1.0), false});

@@ -11,6 +11,8 @@
 #include "game/render/camera.hpp"
 #include "game/render/scene.hpp"
 #include "physics/math.hpp"
+#include "game/content/world_asset.hpp"
+#include "game/core/assets.hpp"
 #include "physics/trajectory.hpp"
 
 namespace sweetspot {
@@ -23,16 +25,16 @@ struct ImpactorPlacement {
 };
 
 struct ShotSceneInput {
-  std::string sport = "golf";  ///< "golf" or "baseball": tee, flag, which distance markers
-  /// World mesh: a name under assets/worlds ("golf_hole", "ballpark"), a path to an .obj,
-  /// or "" for a plain grass plane.
-  std::string world;
-  double ball_radius = 0.021335;  ///< m (golf 0.021335, baseball 0.0373)
+  const Assets* assets = nullptr;       ///< required: where the meshes are
+  const WorldAsset* world = nullptr;    ///< the world drawn and asked for heights; nullptr = a grass plane
+  /// "yd": stripes across the hole every 50 yd (golf); "ft": the fence distances (baseball).
+  std::string distance_unit = "yd";
+  double ball_radius = 0.021335;  ///< m (golf 0.021335, baseball 0.0369)
+  bool tee = false;               ///< draw a tee under the launch point (the ball was teed up)
   std::optional<ImpactorPlacement> impactor;
-  /// "driver_head", "iron_head", "bat" (assets/meshes) or a path; "" = no impactor drawn.
+  /// assets/meshes name or a path ("driver_head", "iron_head", "putter_head", "bat"); "" = none.
   std::string impactor_mesh;
-  /// Flag position on the green (m); nothing = the centre of the world's "green" triangles,
-  /// unless the world mesh draws its own flag.
+  /// Flag position (m); nothing = the world's pin, if it has one.
   std::optional<Vec3> flag;
 };
 
@@ -62,7 +64,7 @@ class ShotScene {
   /// Everything to draw at time t (s; clamped to the shot) seen by `camera`.
   Scene build(const Camera& camera, double t, int width, int height) const;
 
-  /// Ground height (m) under (x, z) from the world mesh (walls excluded), if any triangle
+  /// Ground height (m) under (x, z): the physics world's support query, if any ground
   /// covers it.
   std::optional<double> ground_height(double x, double z) const;
 

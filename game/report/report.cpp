@@ -14,129 +14,14 @@ namespace {
 
 constexpr double kDegPerRad = 180.0 / kPi;
 
-std::string fixed(double v, int decimals) {
-  if (std::fabs(v) < 0.5 * std::pow(10.0, -decimals)) v = 0.0;  // no "-0.0"
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
-struct Units {
-  bool imperial;
-  std::string speed_unit() const { return imperial ? "mph" : "m/s"; }
-  double speed(double mps) const { return imperial ? mps_to_mph(mps) : mps; }
-  std::string dist_unit() const { return imperial ? "yd" : "m"; }
-  double dist(double m) const { return imperial ? m_to_yd(m) : m; }
-  std::string short_unit() const { return imperial ? "ft" : "m"; }
-  double short_dist(double m) const { return imperial ? m_to_ft(m) : m; }
-};
-
-using Rows = std::vector<std::pair<std::string, std::string>>;
-
-std::string render(const std::string& title, const Rows& rows) {
-  std::string out = title + "\n";
-  for (const auto& [label, value] : rows) {
-    std::string line = "  " + label;
-    if (line.size() < 22) line.append(22 - line.size(), ' ');
-    out += line + value + "\n";
-  }
-  return out;
-}
-
-std::string deg(double rad, int decimals = 1) { return fixed(rad * kDegPerRad, decimals) + " deg"; }
-std::string rpm(double radps) { return fixed(radps_to_rpm(radps), 0) + " rpm"; }
-
-void impact_rows(const ShotResult& r, Rows& rows) {
-  if (!r.impact.present) return;
-  const auto& i = r.impact;
-  rows.emplace_back("Impact model", std::string(to_string(i.friction)) + ", " + to_string(i.contact));
-  rows.emplace_back("Restitution e / e_t", fixed(i.e, 3) + " / " + fixed(i.e_t, 3));
-  rows.emplace_back("Friction mu", fixed(i.mu, 3));
-  rows.emplace_back("Impulse n / t", fixed(i.normal_impulse, 3) + " / " + fixed(i.tangential_impulse, 3) + " N*s");
-  rows.emplace_back("Energy lost", fixed(i.energy_loss, 1) + " J");
-}
-
-std::string golf_table(const ShotResult& r, const Units& u) {
-  const auto& L = r.launch;
-  const auto& F = r.trajectory.summary;
-  Rows rows;
-  if (r.impact.present) rows.emplace_back("Club speed", fixed(u.speed(r.club.speed), 1) + " " + u.speed_unit());
-  rows.emplace_back("Ball speed", fixed(u.speed(L.ball_speed), 1) + " " + u.speed_unit());
-  if (r.impact.present) rows.emplace_back("Smash factor", fixed(r.smash_factor, 2));
-  rows.emplace_back("Launch angle", deg(L.vertical_angle));
-  rows.emplace_back("Launch direction", deg(L.horizontal_angle) + " (+ right)");
-  rows.emplace_back("Spin rate", rpm(L.spin.total));
-  rows.emplace_back("Backspin / sidespin",
-                    fixed(radps_to_rpm(L.spin.backspin), 0) + " / " + fixed(radps_to_rpm(L.spin.sidespin_right), 0) + " rpm");
-  rows.emplace_back("Spin axis", deg(L.spin.axis_rad) + " (+ right)");
-  if (r.impact.present) {
-    rows.emplace_back("Attack angle", deg(r.club.attack_angle));
-    rows.emplace_back("Club path", deg(r.club.path) + " (+ in-to-out)");
-    rows.emplace_back("Face angle", deg(r.club.face_to_target) + " (+ open)");
-    rows.emplace_back("Dynamic loft", deg(r.club.dynamic_loft));
-    rows.emplace_back("Spin loft", deg(r.club.dynamic_loft - r.club.attack_angle));
-    rows.emplace_back("Impact point", fixed(r.club.impact_toe * 1000.0, 0) + " mm toe, " +
-                                          fixed(r.club.impact_up * 1000.0, 0) + " mm up");
-  }
-  rows.emplace_back("Carry", fixed(u.dist(F.carry_m), 1) + " " + u.dist_unit());
-  rows.emplace_back("Total", fixed(u.dist(F.total_m), 1) + " " + u.dist_unit());
-  rows.emplace_back("Max height", fixed(u.dist(F.apex_m), 1) + " " + u.dist_unit());
-  rows.emplace_back("Landing angle", deg(F.landing_angle_deg / kDegPerRad));
-  rows.emplace_back("Hang time", fixed(F.hang_time_s, 2) + " s");
-  rows.emplace_back("Lateral", fixed(u.dist(F.lateral_m), 1) + " " + u.dist_unit() + " (+ right)");
-  rows.emplace_back("End", to_string(F.end));
-  impact_rows(r, rows);
-  std::string title = r.scenario;
-  if (r.impact.present) title += "  (" + r.club.club + ")";
-  return render(title, rows);
-}
-
-std::string baseball_table(const ShotResult& r, const Units& u) {
-  const auto& L = r.launch;
-  const auto& F = r.trajectory.summary;
-  Rows rows;
-  rows.emplace_back("Exit velocity", fixed(u.speed(L.ball_speed), 1) + " " + u.speed_unit());
-  rows.emplace_back("Launch angle", deg(L.vertical_angle));
-  rows.emplace_back("Spray angle", deg(L.horizontal_angle) + " (+ right field)");
-  rows.emplace_back("Spin rate", rpm(L.spin.total));
-  rows.emplace_back("Backspin / sidespin",
-                    fixed(radps_to_rpm(L.spin.backspin), 0) + " / " + fixed(radps_to_rpm(L.spin.sidespin_right), 0) + " rpm");
-  if (r.impact.present) {
-    rows.emplace_back("Bat speed", fixed(u.speed(r.bat.speed), 1) + " " + u.speed_unit());
-    rows.emplace_back("Smash factor", fixed(r.smash_factor, 2));
-    rows.emplace_back("Pitch speed", fixed(u.speed(r.bat.pitch_speed), 1) + " " + u.speed_unit());
-    rows.emplace_back("Swing plane", deg(r.bat.attack_angle));
-    rows.emplace_back("Swing direction", deg(r.bat.direction) + " (+ right field)");
-    rows.emplace_back("Undercut", fixed(r.bat.undercut * 1000.0, 1) + " mm");
-  }
-  rows.emplace_back("Distance", fixed(u.short_dist(F.carry_m), 0) + " " + u.short_unit());
-  rows.emplace_back("Max height", fixed(u.short_dist(F.apex_m), 0) + " " + u.short_unit());
-  rows.emplace_back("Hang time", fixed(F.hang_time_s, 2) + " s");
-  rows.emplace_back("Landing angle", deg(F.landing_angle_deg / kDegPerRad));
-  rows.emplace_back("End", to_string(F.end));
-  impact_rows(r, rows);
-  std::string title = r.scenario;
-  if (r.impact.present) title += "  (" + r.bat.bat + ")";
-  return render(title, rows);
-}
-
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", std::fabs(v) < 1e-12 ? 0.0 : v);
-  return buf;
-}
-
 }  // namespace
 
-UnitSystem parse_unit_system(std::string_view text, std::string_view flag) {
-  if (text == "imperial") return UnitSystem::Imperial;
-  if (text == "metric") return UnitSystem::Metric;
-  throw InputError(std::string(flag) + " " + std::string(text) + ": unknown unit system; allowed: imperial, metric");
-}
+DisplayUnits display_units(const SportProfile& sport, UnitSystem units) { return DisplayUnits{units, sport.distance_unit}; }
 
-std::string launch_table(const ShotResult& r, UnitSystem units) {
-  const Units u{units == UnitSystem::Imperial};
-  return r.sport == Sport::Golf ? golf_table(r, u) : baseball_table(r, u);
+std::string launch_table(const ShotResult& r, const SportProfile& sport, UnitSystem units) {
+  std::string title = r.scenario;
+  if (r.impact.present) title += "  (" + (r.club.club.empty() ? r.bat.bat : r.club.club) + ")";
+  return metric_table(title, sport.report, r, display_units(sport, units));
 }
 
 nlohmann::json shot_json(const ShotResult& r) {
@@ -144,7 +29,7 @@ nlohmann::json shot_json(const ShotResult& r) {
   const auto& L = r.launch;
   json j;
   j["scenario"] = r.scenario;
-  j["sport"] = to_string(r.sport);
+  j["sport"] = r.sport;
   if (!r.world.empty()) j["world"] = r.world;
   // The launch and flight objects are shared with `flight --json` (game/report/flight_json).
   j["launch"] = launch_json(L, r.impact.present ? r.smash_factor : -1.0);
@@ -154,6 +39,7 @@ nlohmann::json shot_json(const ShotResult& r) {
     j["impact"] = {
         {"e", i.e},
         {"e_t", i.e_t},
+        {"e_t_nominal", i.e_t_nominal},
         {"mu", i.mu},
         {"friction", to_string(i.friction)},
         {"contact", to_string(i.contact)},
@@ -161,7 +47,7 @@ nlohmann::json shot_json(const ShotResult& r) {
         {"tangential_impulse_Ns", i.tangential_impulse},
         {"energy_loss_J", i.energy_loss},
     };
-    if (r.sport == Sport::Golf) {
+    if (!r.club.club.empty()) {
       j["club"] = {
           {"name", r.club.club},
           {"speed_mps", r.club.speed},
@@ -171,7 +57,7 @@ nlohmann::json shot_json(const ShotResult& r) {
           {"dynamic_loft_deg", r.club.dynamic_loft * kDegPerRad},
           {"impact_offset_m", {r.club.impact_toe, r.club.impact_up}},
       };
-    } else {
+    } else if (!r.bat.bat.empty()) {
       j["bat"] = {
           {"name", r.bat.bat},
           {"speed_mps", r.bat.speed},
@@ -183,13 +69,14 @@ nlohmann::json shot_json(const ShotResult& r) {
     }
   }
   j["flight"] = flight_json(r.trajectory.summary);
+  j["flight"]["end"] = to_string(r.end);
   return j;
 }
 
 nlohmann::json gspro_json(const ShotResult& r, int shot_number) {
   using nlohmann::json;
   const auto& L = r.launch;
-  const bool club = r.impact.present && r.sport == Sport::Golf;
+  const bool club = r.impact.present && !r.club.club.empty();
   json j;
   j["DeviceID"] = "Sweetspot 0.1";
   j["Units"] = "Yards";
@@ -239,72 +126,36 @@ std::string csv_field(std::string_view text) {
   return out;
 }
 
-std::string csv_header(Sport sport, UnitSystem units) {
-  if (sport == Sport::Baseball) {
-    // Statcast: launch_speed mph, launch_angle deg, hit_distance_sc ft, bat_speed mph,
-    // release_speed / release_spin_rate of the pitch. spray_angle and the spin columns are
-    // not in Statcast's CSV and use Statcast-style names. Always imperial, like Statcast.
-    return "scenario,launch_speed,launch_angle,spray_angle,launch_spin_rate,hit_distance_sc,"
-           "apex_ft,hang_time,bat_speed,release_speed,release_spin_rate,end\n";
-  }
-  if (units == UnitSystem::Imperial) {
-    return "scenario,club,club_speed_mph,ball_speed_mph,smash_factor,launch_angle_deg,launch_direction_deg,"
-           "spin_rpm,backspin_rpm,sidespin_rpm,spin_axis_deg,carry_yd,total_yd,apex_yd,landing_angle_deg,"
-           "hang_time_s,lateral_yd,e,mu,friction,contact,end\n";
-  }
-  return "scenario,club,club_speed_mps,ball_speed_mps,smash_factor,launch_angle_deg,launch_direction_deg,"
-         "spin_rpm,backspin_rpm,sidespin_rpm,spin_axis_deg,carry_m,total_m,apex_m,landing_angle_deg,"
-         "hang_time_s,lateral_m,e,mu,friction,contact,end\n";
+namespace {
+
+const Metric& metric(const std::string& id) {
+  const Metric* m = find_metric(id);
+  if (m == nullptr) throw InputError("unknown CSV metric '" + id + "' (allowed: " + metric_ids() + ")");
+  return *m;
 }
 
-std::string csv_row(const ShotResult& r, UnitSystem units) {
-  const auto& L = r.launch;
-  const auto& F = r.trajectory.summary;
-  std::vector<std::string> f;
-  f.push_back(csv_field(r.scenario));
-  if (r.sport == Sport::Baseball) {
-    f.push_back(num(mps_to_mph(L.ball_speed)));
-    f.push_back(num(L.vertical_angle * kDegPerRad));
-    f.push_back(num(L.horizontal_angle * kDegPerRad));
-    f.push_back(num(radps_to_rpm(L.spin.total)));
-    f.push_back(num(m_to_ft(F.carry_m)));
-    f.push_back(num(m_to_ft(F.apex_m)));
-    f.push_back(num(F.hang_time_s));
-    f.push_back(r.impact.present ? num(mps_to_mph(r.bat.speed)) : "");
-    f.push_back(r.impact.present ? num(mps_to_mph(r.bat.pitch_speed)) : "");
-    f.push_back(r.impact.present ? num(radps_to_rpm(r.bat.pitch_spin)) : "");
-    f.push_back(to_string(F.end));
-  } else {
-    const Units u{units == UnitSystem::Imperial};
-    f.push_back(csv_field(r.club.club));
-    f.push_back(r.impact.present ? num(u.speed(r.club.speed)) : "");
-    f.push_back(num(u.speed(L.ball_speed)));
-    f.push_back(r.impact.present ? num(r.smash_factor) : "");
-    f.push_back(num(L.vertical_angle * kDegPerRad));
-    f.push_back(num(L.horizontal_angle * kDegPerRad));
-    f.push_back(num(radps_to_rpm(L.spin.total)));
-    f.push_back(num(radps_to_rpm(L.spin.backspin)));
-    f.push_back(num(radps_to_rpm(L.spin.sidespin_right)));
-    f.push_back(num(L.spin.axis_rad * kDegPerRad));
-    f.push_back(num(u.dist(F.carry_m)));
-    f.push_back(num(u.dist(F.total_m)));
-    f.push_back(num(u.dist(F.apex_m)));
-    f.push_back(num(F.landing_angle_deg));
-    f.push_back(num(F.hang_time_s));
-    f.push_back(num(u.dist(F.lateral_m)));
-    f.push_back(r.impact.present ? num(r.impact.e) : "");
-    f.push_back(r.impact.present ? num(r.impact.mu) : "");
-    f.push_back(r.impact.present ? to_string(r.impact.friction) : "");
-    f.push_back(r.impact.present ? to_string(r.impact.contact) : "");
-    f.push_back(to_string(F.end));
-  }
+}  // namespace
+
+std::string csv_header(const SportProfile& sport, UnitSystem units) {
+  const DisplayUnits u = display_units(sport, units);
   std::string out;
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    if (i > 0) out += ',';
-    out += f[i];
+  for (const std::string& id : sport.csv) {
+    if (!out.empty()) out += ',';
+    out += csv_field(metric(id).csv_name(u));
   }
-  out += '\n';
-  return out;
+  return out + "\n";
+}
+
+std::string csv_row(const ShotResult& r, const SportProfile& sport, UnitSystem units) {
+  const DisplayUnits u = display_units(sport, units);
+  std::string out;
+  bool first = true;
+  for (const std::string& id : sport.csv) {
+    if (!first) out += ',';
+    first = false;
+    out += csv_field(metric(id).csv_value(r, u));
+  }
+  return out + "\n";
 }
 
 }  // namespace sweetspot

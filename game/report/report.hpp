@@ -8,16 +8,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include "game/report/shot_result.hpp"
+#include "game/core/shot_result.hpp"
+#include "game/core/sport.hpp"
+#include "game/report/metrics.hpp"
 
 namespace sweetspot {
 
-enum class UnitSystem { Imperial, Metric };
-/// "imperial" / "metric"; anything else -> InputError naming `flag` and the choices.
-UnitSystem parse_unit_system(std::string_view text, std::string_view flag = "--units");
+/// The display units of a sport in a unit system.
+DisplayUnits display_units(const SportProfile& sport, UnitSystem units);
 
-/// Launch-monitor table: one "Label  value unit" line per number, golf or baseball.
-std::string launch_table(const ShotResult& r, UnitSystem units);
+/// Launch-monitor table: one "Label  value unit" line per row of the sport's profile.
+std::string launch_table(const ShotResult& r, const SportProfile& sport, UnitSystem units);
 
 /// DESIGN §6 object: scenario, sport, launch{...}, impact{...} (when the shot had an
 /// impact), flight{...}. SI throughout; key names are a contract.
@@ -28,11 +29,11 @@ nlohmann::json shot_json(const ShotResult& r);
 /// offsets in millimetres; closure rate in deg/s.
 nlohmann::json gspro_json(const ShotResult& r, int shot_number = 1);
 
-/// CSV header and one row. Baseball uses Statcast names (launch_speed mph, launch_angle,
-/// spray_angle, hit_distance_sc ft, bat_speed, release_speed, release_spin_rate); golf
-/// columns carry their unit in the name and follow `units`.
-std::string csv_header(Sport sport, UnitSystem units);
-std::string csv_row(const ShotResult& r, UnitSystem units);
+/// CSV header and one row: the sport profile's csv columns. Baseball uses Statcast names
+/// and units (launch_speed mph, launch_angle, hit_distance_sc ft, ...); golf columns carry
+/// their unit in the name and follow `units`.
+std::string csv_header(const SportProfile& sport, UnitSystem units);
+std::string csv_row(const ShotResult& r, const SportProfile& sport, UnitSystem units);
 
 /// Quotes a CSV field when it holds a comma, quote or newline (RFC 4180).
 std::string csv_field(std::string_view text);

@@ -13,6 +13,7 @@ namespace sweetspot {
 
 /// What the panels show and edit in one frame.
 struct PanelContext {
+  const Assets& assets;
   UiState& state;
   const Scenario& scenario;       ///< the loaded scenario (after overrides)
   const ShotResult& result;       ///< its shot

@@ -28,8 +28,8 @@ std::string quantity_list_text(const std::vector<double>& values, const std::str
   return out + "]";
 }
 
-Scenario load_ui_scenario(const UiState& state) {
-  return load_scenario(state.scenario, state.override_list());
+Scenario load_ui_scenario(const Assets& assets, const UiState& state) {
+  return load_scenario(assets, state.scenario, state.override_list());
 }
 
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "game/scenario/scenario.hpp"
+#include "game/content/scenario.hpp"
 
 namespace sweetspot {
 
@@ -38,8 +38,8 @@ std::string quantity_text(double value, const std::string& unit);
 /// "[12.5mm, -3mm]".
 std::string quantity_list_text(const std::vector<double>& values, const std::string& unit);
 
-/// load_scenario(state.scenario, state.override_list()). Throws InputError like the CLI.
-Scenario load_ui_scenario(const UiState& state);
+/// load_scenario(assets, state.scenario, state.override_list()). Throws InputError like the CLI.
+Scenario load_ui_scenario(const Assets& assets, const UiState& state);
 
 /// The scenario's document with the overrides applied, as TOML that `sweetspot shot FILE`
 /// loads back to the same shot (sections in schema order, values quoted with units).

@@ -38,22 +38,22 @@ expect_bad "e out of range" "--e 1.5|0 <= impact.e <= 1" -- shot golf/driver --e
 expect_bad "e_t out of range" "--set impact.e_t=-0.2|0 <= impact.e_t <= 1" -- shot golf/driver --set impact.e_t=-0.2
 expect_bad "mu out of range" "--mu -0.1|0 <= impact.mu" -- shot golf/driver --mu -0.1
 expect_bad "negative speed" "swing.speed|out of range|0 mph < swing.speed" -- shot golf/driver --set swing.speed=-10mph
-expect_bad "speed bound" "swing.speed|335.54 mph|150 m/s" -- shot golf/driver --set swing.speed=400mph
-expect_bad "negative mass" "ball.mass|out of range|0 g < ball.mass" -- shot golf/driver --set ball.mass=-45g
-expect_bad "spin bound" "pitch.spin|20000 rpm" -- shot baseball/line-drive --set pitch.spin=25000rpm
+expect_bad "speed bound" "swing.speed|201.324 mph|(0, 90] m/s" -- shot golf/driver --set swing.speed=400mph
+expect_bad "negative mass" "ball.mass|out of range|10 g <= ball.mass" -- shot golf/driver --set ball.mass=-45g
+expect_bad "spin bound" "pitch.spin|4000 rpm" -- shot baseball/line-drive --set pitch.spin=25000rpm
 expect_bad "NaN" "--set swing.speed=nanmph|NaN" -- shot golf/driver --set swing.speed=nanmph
 expect_bad "infinity" "--e inf|infinity" -- shot golf/driver --e inf
 scenario nan.toml 'sport = "golf"\n[impact]\nmu = nan\n'
 expect_bad "NaN in a file" "nan.toml:3|impact.mu|NaN" -- shot "$tmp/nan.toml"
-expect_bad "missing file" "$tmp/absent.toml|no such file" -- shot "$tmp/absent.toml"
+expect_bad "missing file" "$tmp/absent.toml|not found" -- shot "$tmp/absent.toml"
 expect_bad "unknown scenario" "unknown scenario 'golf/drivr'|golf/driver|baseball/line-drive" -- shot golf/drivr
-expect_bad "unknown club" "club.name|putter|driver|7-iron" -- shot golf/driver --set club.name=putter
+expect_bad "unknown club" "club.name|spoon|driver|7-iron|putter" -- shot golf/driver --set club.name=spoon
 expect_bad "unknown bat" "bat.name|corked|maple" -- shot baseball/line-drive --set bat.name=corked
 scenario sport.toml 'sport = "cricket"\n'
-expect_bad "unknown sport" "sport.toml:1|unknown value 'cricket'|golf, baseball" -- shot "$tmp/sport.toml"
+expect_bad "unknown sport" "sport.toml:1|unknown sport 'cricket'|golf, baseball" -- shot "$tmp/sport.toml"
 scenario nosport.toml '[swing]\nspeed = "100mph"\n'
 expect_bad "missing sport" "missing key 'sport'|golf, baseball" -- shot "$tmp/nosport.toml"
-expect_bad "wrong sport key" "swing.undercut|baseball scenarios only" -- shot golf/driver --set swing.undercut=10mm
+expect_bad "wrong sport key" "swing.undercut|scenarios that swing a bat" -- shot golf/driver --set swing.undercut=10mm
 expect_bad "bad --units" "--units|imperial, metric" -- shot golf/driver --units furlongs
 expect_bad "unknown world" "world.name|moon" -- shot golf/driver --set world.name=moon
 expect_bad "bad lie" "world.lie|not sand" -- shot golf/sand-wedge --set "world.ball_position=[100m,0m]"

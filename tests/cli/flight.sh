@@ -55,7 +55,7 @@ PY
 
 # The readable table uses display units.
 table=$("$bin" flight --sport golf --ball-speed 120mph --launch-angle 16.3deg --spin 7097rpm)
-echo "$table" | grep -q "carry" || fail "table has no carry"
+echo "$table" | grep -q "Carry" || fail "table has no carry"
 echo "$table" | grep -q " yd" || fail "table not in yards"
 
 # Bad input: exit 2, message names the flag and the allowed range.
@@ -66,11 +66,15 @@ expect_bad() {
   code=$?
   set -e
   [ "$code" -eq 2 ] || fail "exit $code (want 2) for: $*"
-  echo "$err" | grep -q -- "$want" || fail "message '$err' does not mention '$want' for: $*"
+  echo "$err" | grep -qF -- "$want" || fail "message '$err' does not mention '$want' for: $*"
 }
 expect_bad "--ball-speed" --sport golf --ball-speed 500mph --launch-angle 10deg --spin 2500rpm
-expect_bad "1..150" --sport golf --ball-speed 500mph --launch-angle 10deg --spin 2500rpm
+expect_bad "[0, 150] m/s" --sport golf --ball-speed 500mph --launch-angle 10deg --spin 2500rpm
 expect_bad "--launch-angle" --sport golf --ball-speed 150mph --launch-angle 10 --spin 2500rpm
+expect_bad "missing unit" --sport golf --ball-speed 150 --launch-angle 10deg --spin 2500rpm
+# Topspin flies: a grounder's own launch numbers replay (spin axis 180 deg).
+"$bin" flight --sport baseball --ball-speed 95mph --launch-angle -5deg --spin 1500rpm --spin-axis 180deg --json >/dev/null \
+  || fail "topspin launch refused"
 expect_bad "--spin" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500furlongs
 expect_bad "humidity" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --set environment.humidity=150%
 expect_bad "allowed" --sport golf --ball-speed 150mph --launch-angle 10deg --spin 2500rpm --set environment.colour=blue

@@ -23,5 +23,5 @@ set +e
 SWEETSPOT_ASSETS=/nonexistent "$bin" list 2>"$tmp/err"; rc=$?
 set -e
 [ $rc -eq 2 ] || fail "missing assets gave exit $rc, want 2"
-grep -q "/nonexistent/scenarios" "$tmp/err" || fail "missing assets error does not name the directory"
+grep -q "/nonexistent/" "$tmp/err" || fail "missing assets error does not name the folder it looked in"
 echo "list: ok"

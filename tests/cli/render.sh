@@ -23,10 +23,10 @@ for cam in behind side top follow; do
   [ "$(png_size "$tmp/$cam.png")" = "160 x 90" ] || fail "camera $cam size"
 done
 "$bin" render -o "$tmp/bb.png" --sport baseball --ball-speed 103mph --launch-angle 28deg --spin 2000rpm \
-  --camera side --at 2 --width 200 --height 120 >/dev/null || fail "baseball render"
+  --camera side --at 2s --width 200 --height 120 >/dev/null || fail "baseball render"
 "$bin" render -o "$tmp/bb2.png" --sport baseball --ball-speed 103mph --launch-angle 28deg --spin 2000rpm \
   --camera side --at 2000ms --width 200 --height 120 >/dev/null || fail "--at 2000ms"
-cmp -s "$tmp/bb.png" "$tmp/bb2.png" || fail "--at 2 and --at 2000ms differ"
+cmp -s "$tmp/bb.png" "$tmp/bb2.png" || fail "--at 2s and --at 2000ms differ"
 cmp -s "$tmp/side.png" "$tmp/bb.png" && fail "golf and baseball images identical"
 
 "$bin" render -o "$tmp/msaa.png" "${drive[@]}" --width 320 --height 200 --msaa 4 >/dev/null || fail "--msaa 4"
@@ -43,7 +43,8 @@ expect_exit() {  # code, text the message must contain, args...
 }
 expect_exit 2 "behind, side, top, follow" -o "$tmp/x.png" "${drive[@]}" --camera drone
 expect_exit 2 "not in range 16 to 8192" -o "$tmp/x.png" "${drive[@]}" --width 8
-expect_exit 2 "outside the shot" -o "$tmp/x.png" "${drive[@]}" --at 99
+expect_exit 2 "outside the shot" -o "$tmp/x.png" "${drive[@]}" --at 99s
+expect_exit 2 "missing unit" -o "$tmp/x.png" "${drive[@]}" --at 2
 expect_exit 2 "--at" -o "$tmp/x.png" "${drive[@]}" --at 2mph
 expect_exit 2 "--msaa" -o "$tmp/x.png" "${drive[@]}" --msaa 3
 expect_exit 2 "--ball-speed" -o "$tmp/x.png" --launch-angle 10deg --spin 2000rpm

@@ -12,8 +12,9 @@
 #include <string>
 #include <string_view>
 
-#include "game/scenario/scenario.hpp"
-#include "game/scenario/scenario_doc.hpp"
+#include "game/content/scenario.hpp"
+#include "support/test_assets.hpp"
+#include "game/content/scenario_doc.hpp"
 #include "physics/error.hpp"
 
 namespace {
@@ -32,7 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
     const sweetspot::ScenarioDoc doc = sweetspot::parse_toml_doc(text, "fuzz.toml");
-    const sweetspot::Scenario s = sweetspot::scenario_from_doc(doc, "fuzz");
+    const sweetspot::Scenario s = sweetspot::scenario_from_doc(sweetspot::test::assets(), doc, "fuzz");
     sweetspot::RunOptions options;
     options.fly = false;
     const sweetspot::ShotResult r = sweetspot::run_scenario(s, options);

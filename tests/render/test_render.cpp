@@ -21,18 +21,43 @@
 #include "game/render/synthetic_shot.hpp"
 #include "game/render/trail_geometry.hpp"
 #include "physics/error.hpp"
+#include "support/test_assets.hpp"
+
+#include <map>
+#include <memory>
 
 using namespace sweetspot;
 
 namespace {
 
 const std::filesystem::path kSource = SWEETSPOT_SOURCE_DIR;
-const std::filesystem::path kRange = kSource / "tests/render/test_range.obj";
+
+// The render tests' own worlds (tests/render, made by scripts/gen_meshes.py), so their
+// images do not change when the shipped worlds do.
+const WorldAsset& test_world(const char* file) {
+  static std::map<std::string, std::unique_ptr<WorldAsset>> cache;
+  auto& slot = cache[file];
+  if (!slot) {
+    slot = std::make_unique<WorldAsset>(load_world_asset(kSource / "tests/render", (kSource / "tests/render" / file).string(),
+                                                         test::assets().materials()));
+    if (std::string(file) == "test_park.obj") {
+      // The park's fence, as gen_meshes.py builds it: 330 ft at the poles, 400 ft to centre.
+      for (int i = 0; i <= 36; ++i) {
+        const double deg = -45.0 + 90.0 * i / 36, t = std::abs(deg) / 45.0;
+        const double r = (400.0 - 70.0 * t * t) * 0.3048;
+        slot->fence_line.emplace_back(r * std::cos(deg_to_rad(deg)), 0.0, r * std::sin(deg_to_rad(deg)));
+      }
+      slot->fence_height = 3.05;
+    }
+  }
+  return *slot;
+}
 
 RenderRequest range_request(int w, int h, CameraKind camera) {
   RenderRequest r;
-  r.sport = "golf";
-  r.world = kRange.string();
+  r.assets = &test::assets();
+  r.distance_unit = "yd";
+  r.world = &test_world("test_range.obj");
   r.width = w;
   r.height = h;
   r.camera = camera;
@@ -203,8 +228,8 @@ TEST_CASE("a ballpark shows the fence distances where the foul lines and gaps me
   ShotTrajectory shot = synthetic_shot({110.0, 30.0, 10.0, 0.0369, 0.0});
   for (auto& s : shot.samples) s.position.y() += 0.9;  // contact above the plate
   RenderRequest r = range_request(640, 360, CameraKind::Top);
-  r.sport = "baseball";
-  r.world = (kSource / "tests/render/test_park.obj").string();
+  r.distance_unit = "ft";
+  r.world = &test_world("test_park.obj");
   r.ball_radius = 0.0369;
   auto count_fence_yellow = [](const std::vector<std::uint8_t>& img) {
     std::size_t n = 0;
@@ -217,7 +242,7 @@ TEST_CASE("a ballpark shows the fence distances where the foul lines and gaps me
   // Five labels ("330 ft" x2, "382 ft" x2, "400 ft"), 8 px tall at this size: each has
   // ~60 lit font cells of about one pixel, some softened by MSAA; 163 counted when written.
   CHECK(count_fence_yellow(park) > 5 * 20);
-  r.sport = "golf";  // the same world as a golf hole: 50 yd lines instead, no fence labels
+  r.distance_unit = "yd";  // the same world as a golf hole: 50 yd lines instead, no fence labels
   CHECK(count_fence_yellow(render_shot_rgba(shot, r)) < 20);
 }
 
@@ -274,14 +299,11 @@ TEST_CASE("bad render requests are input errors naming the value", "[render]") {
   RenderRequest r = range_request(8, 8, CameraKind::Side);
   CHECK_THROWS_WITH(render_shot_rgba(shot, r), Catch::Contains("8x8"));
   r = range_request(64, 64, CameraKind::Side);
-  r.world = "no_such_world";
-  CHECK_THROWS_AS(render_shot_rgba(shot, r), InputError);
+  r.distance_unit = "furlong";
+  CHECK_THROWS_WITH(render_shot_rgba(shot, r), Catch::Contains("furlong"));
   r = range_request(64, 64, CameraKind::Side);
-  r.sport = "cricket";
-  CHECK_THROWS_WITH(render_shot_rgba(shot, r), Catch::Contains("cricket"));
-  r = range_request(64, 64, CameraKind::Side);
-  r.impactor_mesh = "putter_head";
-  CHECK_THROWS_WITH(render_shot_rgba(shot, r), Catch::Contains("putter_head"));
+  r.impactor_mesh = "spoon_head";
+  CHECK_THROWS_WITH(render_shot_rgba(shot, r), Catch::Contains("spoon_head"));
 }
 
 TEST_CASE("an invalid EGL platform override is an input error, not a crash", "[render]") {

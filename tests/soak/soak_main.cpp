@@ -20,8 +20,8 @@
 #include <string>
 #include <string_view>
 
-#include "game/assets/assets.hpp"
-#include "game/equipment/equipment_file.hpp"
+#include "game/core/assets.hpp"
+#include "game/content/equipment_file.hpp"
 #include "physics/aero.hpp"
 #include "physics/delivery.hpp"
 #include "physics/error.hpp"
@@ -29,6 +29,7 @@
 #include "physics/launch.hpp"
 #include "physics/units.hpp"
 #include "physics/world.hpp"
+#include "support/test_assets.hpp"
 
 namespace {
 
@@ -77,20 +78,21 @@ void check_launch(long i, const LaunchState& l) {
     fail(i, "non-finite launch metrics");
 }
 
-void check_flight(long i, const FlightInput& in, const ShotTrajectory& t, const FlightStats& st) {
+void check_flight(long i, const LaunchState& launch, const FlightSettings& settings, const ShotTrajectory& t) {
+  const FlightStats& st = t.stats;
   const FlightSummary& s = t.summary;
   for (double v : {s.carry_m, s.total_m, s.apex_m, s.landing_angle_deg, s.hang_time_s, s.lateral_m, s.total_time_s})
     if (!std::isfinite(v)) fail(i, "non-finite flight summary");
   if (!finite(s.landing_position) || !finite(s.rest_position)) fail(i, "non-finite landing/rest position");
-  if (st.flight_steps + st.roll_steps > in.settings.max_steps) fail(i, "exceeded the step bound");
-  if (s.total_time_s > in.settings.max_time * (1 + 1e-9)) fail(i, "exceeded the time bound");
+  if (st.flight_steps + st.roll_steps > settings.max_steps) fail(i, "exceeded the step bound");
+  if (s.total_time_s > settings.max_time * (1 + 1e-9)) fail(i, "exceeded the time bound");
   if (s.end == EndReason::StepLimit) {
     char buf[512];
     std::snprintf(buf, sizeof buf,
                   "ended on the step/time limit (a hang for sane input): launch v (%.17g, %.17g, %.17g) m/s, "
                   "spin (%.17g, %.17g, %.17g) rad/s, %ld flight + %ld roll steps, %.3f s",
-                  in.launch.velocity.x(), in.launch.velocity.y(), in.launch.velocity.z(), in.launch.spin.x(),
-                  in.launch.spin.y(), in.launch.spin.z(), static_cast<long>(st.flight_steps),
+                  launch.velocity.x(), launch.velocity.y(), launch.velocity.z(), launch.spin.x(),
+                  launch.spin.y(), launch.spin.z(), static_cast<long>(st.flight_steps),
                   static_cast<long>(st.roll_steps), s.total_time_s);
     fail(i, buf);
   }
@@ -111,7 +113,8 @@ Environment random_environment(Rng& r) {
 }
 
 struct Worlds {
-  std::unique_ptr<World> golf, park;
+  const World* golf = nullptr;
+  const World* park = nullptr;
 };
 
 // One shot; returns normally when it was accepted or correctly refused.
@@ -122,6 +125,11 @@ void soak_one(long i, std::uint64_t seed, const EquipmentCatalog& eq, const Worl
   const bool outside = r.below(8) == 0;
   const int bad = r.below(6);  // which field goes out of range when `outside`
   auto pick = [&](int field, double lo, double hi) { return (outside && bad == field) ? r.outside(lo, hi) : r.in(lo, hi); };
+  // In-range draws come from the physics parameters' own ranges (one range per value).
+  auto pick_in = [&](int field, const Range& range, double floor = -1e300) {
+    if (outside && bad == field) return r.outside(range.min, range.max);
+    return r.in(std::max(range.min, floor), range.max);
+  };
 
   LaunchState launch;
   const BallSpec& ball = eq.ball(golf ? "tour" : "mlb");
@@ -129,43 +137,45 @@ void soak_one(long i, std::uint64_t seed, const EquipmentCatalog& eq, const Worl
     if (kind == 0) {
       const ClubSpec& club = eq.clubs[static_cast<std::size_t>(r.below(static_cast<int>(eq.clubs.size())))];
       GolfSwing s;
-      s.club_speed = pick(0, 1.0, 90.0);
-      s.attack_angle = pick(1, -30 * kDeg, 30 * kDeg);
-      s.club_path = r.in(-30 * kDeg, 30 * kDeg);
-      s.dynamic_loft = pick(2, 0.0, 75 * kDeg);
+      s.club_speed = pick_in(0, GolfSwing::kClubSpeed, 1.0);
+      s.attack_angle = pick_in(1, GolfSwing::kAttackAngle);
+      s.club_path = r.in(GolfSwing::kClubPath.min, GolfSwing::kClubPath.max);
+      s.dynamic_loft = pick_in(2, GolfSwing::kDynamicLoft);
       // NaN is the API's "use the club's own loft", so the non-finite probe here is -inf.
       if (std::isnan(s.dynamic_loft)) s.dynamic_loft = -std::numeric_limits<double>::infinity();
-      s.face_angle = pick(3, -30 * kDeg, 30 * kDeg);
-      s.impact_toe = pick(4, -0.05, 0.05);
-      s.impact_up = r.in(-0.03, 0.03);
-      s.closure_rate = pick(5, -110.0, 110.0);
+      s.face_angle = pick_in(3, GolfSwing::kFaceAngle);
+      s.impact_toe = pick_in(4, GolfSwing::kImpactToe);
+      s.impact_up = r.in(GolfSwing::kImpactUp.min, GolfSwing::kImpactUp.max);
+      s.closure_rate = pick_in(5, GolfSwing::kClosureRate);
       ImpactMaterial m = club.face;
       m.mu = r.in(0.0, 0.8);
       launch = deliver_golf(ball, club, s, m).launch;
     } else if (kind == 1) {
       const BatSpec& bat = eq.bats[static_cast<std::size_t>(r.below(static_cast<int>(eq.bats.size())))];
       BatSwing s;
-      s.bat_speed = pick(0, 1.0, 60.0);
-      s.attack_angle = pick(1, -45 * kDeg, 60 * kDeg);
-      s.direction = pick(2, -90 * kDeg, 90 * kDeg);
+      s.bat_speed = pick_in(0, BatSwing::kBatSpeed, 1.0);
+      s.attack_angle = pick_in(1, BatSwing::kAttackAngle);
+      s.direction = pick_in(2, BatSwing::kDirection);
       const double reach = bat.length - bat.pivot_from_knob - 0.05;
       s.impact_from_tip = pick(3, 0.0, reach);
       const double reach_r = 0.95 * (bat.radius_at(bat.length - std::min(std::max(s.impact_from_tip, 0.0), reach)) + ball.radius);
       s.undercut = r.in(-0.999 * reach_r, 0.999 * reach_r);
       Pitch p;
-      p.speed = pick(4, 0.0, 70.0);
-      p.approach_angle = r.in(-20 * kDeg, 45 * kDeg);
-      p.spin = pick(5, 0.0, 500.0);
+      p.speed = pick_in(4, Pitch::kSpeed);
+      p.approach_angle = r.in(Pitch::kApproachAngle.min, Pitch::kApproachAngle.max);
+      p.spin = pick_in(5, Pitch::kSpin);
       p.spin_axis = r.in(-3.14159, 3.14159);
       launch = deliver_baseball(ball, bat, s, p, bat.material).launch;
     } else {
       const Vec3 start(0.0, golf ? ball.radius : kBaseballContactHeight, 0.0);
-      launch = launch_from_metrics(r.in(0.0, 150.0), r.in(-10 * kDeg, 89 * kDeg), r.in(-45 * kDeg, 45 * kDeg),
-                                   r.in(0.0, 1500.0), r.in(-90 * kDeg, 90 * kDeg), start);
+      const double vmax = LaunchNumbers::kBallSpeed.max, wmax = LaunchNumbers::kSpin.max;
+      launch = launch_from_metrics(r.in(0.0, vmax), r.in(-10 * kDeg, 89 * kDeg), r.in(-45 * kDeg, 45 * kDeg),
+                                   r.in(0.0, wmax), r.in(LaunchNumbers::kSpinAxis.min, LaunchNumbers::kSpinAxis.max),
+                                   start);
       if (outside) {
-        // The flight refuses a launch beyond 150 m/s or 1500 rad/s, or a non-finite one.
-        if (bad % 3 == 0) launch.velocity = Vec3(r.in(150.0 * 1.0001, 180.0), 0.0, 0.0);
-        else if (bad % 3 == 1) launch.spin = Vec3(0.0, 0.0, r.in(1500.0 * 1.0001, 1800.0));
+        // The flight refuses a launch beyond its speed or spin range, or a non-finite one.
+        if (bad % 3 == 0) launch.velocity = Vec3(r.in(vmax * 1.0001, vmax * 1.2), 0.0, 0.0);
+        else if (bad % 3 == 1) launch.spin = Vec3(0.0, 0.0, r.in(wmax * 1.0001, wmax * 1.2));
         else launch.position.x() = std::numeric_limits<double>::quiet_NaN();
       }
     }
@@ -187,20 +197,18 @@ void soak_one(long i, std::uint64_t seed, const EquipmentCatalog& eq, const Worl
   }
   if (!launch_outside) check_launch(i, launch);
 
-  FlightInput in;
-  in.launch = launch;
-  in.ball = BallProperties{ball.mass, ball.radius, ball.inertia};
-  in.environment = random_environment(r);
-  in.aero = &aero_model(golf ? "ferguson2022" : "nathan");
+  const BallProperties props{ball.mass, ball.radius, ball.inertia};
+  const Environment environment = random_environment(r);
+  const AeroModel& aero = sweetspot::test::assets().aero(golf ? "ferguson2022" : "nathan");
+  const FlightSettings settings;
   const Terrain* terrain = nullptr;
   if (i % 16 < 2) {  // one shot in eight on the asset worlds (slower), the rest on flat ground
-    terrain = golf ? static_cast<const Terrain*>(worlds.golf.get()) : worlds.park.get();
+    terrain = golf ? worlds.golf : worlds.park;
     ++c.world_shots;
   }
-  FlightStats st;
   ShotTrajectory t;
   try {
-    t = simulate_shot(in, terrain, &st);
+    t = simulate_shot(make_shot_model(props, aero, environment, terrain, settings), launch);
   } catch (const InputError& e) {
     if (std::getenv("SOAK_VERBOSE")) std::fprintf(stderr, "shot %ld: flight refused: %s\n", i, e.what());
     if (launch_outside) {
@@ -213,7 +221,7 @@ void soak_one(long i, std::uint64_t seed, const EquipmentCatalog& eq, const Worl
     return;
   }
   if (launch_outside) fail(i, "an out-of-range launch was flown");
-  check_flight(i, in, t, st);
+  check_flight(i, launch, settings, t);
   ++c.accepted;
 }
 
@@ -246,10 +254,10 @@ int main(int argc, char** argv) {
     }
   }
   try {
-    const EquipmentCatalog& eq = default_equipment();
+    const EquipmentCatalog& eq = sweetspot::test::assets().equipment();
     Worlds worlds;
-    worlds.golf = std::make_unique<World>(load_world("golf_hole"));
-    worlds.park = std::make_unique<World>(load_world("ballpark"));
+    worlds.golf = sweetspot::test::assets().world("golf_hole")->world.get();
+    worlds.park = sweetspot::test::assets().world("ballpark")->world.get();
     Counts c;
     const auto t0 = std::chrono::steady_clock::now();
     for (long i = first; i < first + count; ++i) soak_one(i, seed, eq, worlds, c);

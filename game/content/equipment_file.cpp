@@ -1,0 +1,224 @@
+// Equipment files through the one TOML reader. See equipment_file.hpp.
+#include "game/content/equipment_file.hpp"
+
+#include <algorithm>
+
+#include "game/content/toml_file.hpp"
+#include "physics/delivery.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+// Runs a physics validator and re-throws its message with the file and line.
+template <class F>
+void validated(const TomlFile& f, const toml::node& where, F&& check) {
+  try {
+    check();
+  } catch (const InputError& e) {
+    throw InputError(f.where(where) + ": " + e.what());
+  }
+}
+
+CorCurve curve(const TomlFile& f, const toml::node& n, std::string_view key) {
+  const auto pts = f.pairs(n, key, Dimension::Speed, Dimension::Dimensionless);
+  if (pts.size() > static_cast<size_t>(CorCurve::kMaxPoints)) f.fail(n, key, "at most 8 points");
+  CorCurve k;
+  k.count = static_cast<int>(pts.size());
+  for (size_t i = 0; i < pts.size(); ++i) {
+    k.speed[i] = pts[i].first;
+    k.cor[i] = pts[i].second;
+  }
+  return k;
+}
+
+FrictionModel friction(const TomlFile& f, const toml::table& t) {
+  const toml::node* n = t.get("friction");
+  if (n == nullptr) return FrictionModel::Coulomb;
+  FrictionModel m;
+  if (!friction_model_from_string(f.text(*n, "friction"), &m))
+    f.fail(*n, "friction", "unknown model (allowed: " + friction_model_names() + ")");
+  return m;
+}
+
+BallSpec read_ball(const TomlFile& f, const toml::table& t) {
+  f.only_keys(t, "ball", {"name", "mass", "radius", "inertia", "contact_offset"});
+  BallSpec b;
+  b.name = f.text(f.required(t, "name", "the ball's name"), "name");
+  b.mass = f.quantity(f.required(t, "mass", "kg"), "mass", Dimension::Mass, &BallSpec::kMass);
+  b.radius = f.quantity(f.required(t, "radius", "m"), "radius", Dimension::Length, &BallSpec::kRadius);
+  b.inertia = f.quantity_or(t, "inertia", Dimension::Inertia, 0.4 * b.mass * b.radius * b.radius);
+  const Range offset{0.0, 0.2 * b.radius};
+  b.contact_offset = f.quantity_or(t, "contact_offset", Dimension::Length, 0.0, &offset);
+  validated(f, t, [&] { validate_ball(b); });
+  return b;
+}
+
+struct FaceLaw {
+  double reference_speed = 48.8, slope = 0.0;
+  ImpactMaterial material;
+};
+
+FaceLaw read_face(const TomlFile& f, const toml::table& root) {
+  FaceLaw law;
+  const toml::node* n = root.get("face");
+  if (n == nullptr) return law;
+  const toml::table& t = f.table(*n, "face");
+  f.only_keys(t, "face", {"cor_reference_speed", "cor_slope", "mu", "e_t", "e_t_scale", "friction"});
+  law.reference_speed = f.quantity_or(t, "cor_reference_speed", Dimension::Speed, law.reference_speed);
+  static constexpr Range kSlope{0.0, 0.05};
+  law.slope = f.quantity_or(t, "cor_slope", Dimension::Dimensionless, 0.0, &kSlope);
+  law.material.mu = f.quantity_or(t, "mu", Dimension::Dimensionless, law.material.mu, &ImpactMaterial::kMu);
+  law.material.e_t = f.quantity_or(t, "e_t", Dimension::Dimensionless, law.material.e_t, &ImpactMaterial::kEt);
+  if (const toml::node* s = t.get("e_t_scale")) law.material.e_t_scale = curve(f, *s, "e_t_scale");
+  law.material.friction = friction(f, t);
+  return law;
+}
+
+void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, ClubSpec& k, ClubInfo& info) {
+  f.only_keys(t, "club", {"name", "kind", "mesh", "tee_height", "loft", "lie", "dynamic_loft", "head_mass", "cg",
+                          "inertia", "inertia_products", "bulge_radius", "roll_radius", "cor", "length"});
+  k.name = f.text(f.required(t, "name", "the club's name"), "name");
+  info.name = k.name;
+  info.kind = f.text(f.required(t, "kind", "wood, hybrid, iron, wedge or putter"), "kind");
+  if (info.kind != "wood" && info.kind != "hybrid" && info.kind != "iron" && info.kind != "wedge" &&
+      info.kind != "putter")
+    f.fail(*t.get("kind"), "kind", "unknown kind '" + info.kind + "' (allowed: wood, hybrid, iron, wedge, putter)");
+  info.mesh = f.text(f.required(t, "mesh", "the head mesh in assets/meshes"), "mesh");
+  info.tee_height = f.quantity_or(t, "tee_height", Dimension::Length, 0.0, &ClubInfo::kTeeHeight);
+  k.loft = f.quantity(f.required(t, "loft", "static loft"), "loft", Dimension::Angle, &ClubSpec::kLoft);
+  k.lie = f.quantity(f.required(t, "lie", "static lie"), "lie", Dimension::Angle, &ClubSpec::kLie);
+  k.dynamic_loft = f.quantity(f.required(t, "dynamic_loft", "typical delivered loft"), "dynamic_loft",
+                              Dimension::Angle, &GolfSwing::kDynamicLoft);
+  k.head_mass = f.quantity(f.required(t, "head_mass", "kg"), "head_mass", Dimension::Mass, &ClubSpec::kHeadMass);
+  const auto cg = f.quantities(f.required(t, "cg", "[x, y, z] in the head frame"), "cg", Dimension::Length, 3);
+  k.cg = Vec3(cg[0], cg[1], cg[2]);
+  const auto d = f.quantities(f.required(t, "inertia", "[Ixx, Iyy, Izz]"), "inertia", Dimension::Inertia, 3);
+  std::vector<double> p{0.0, 0.0, 0.0};
+  if (const toml::node* n = t.get("inertia_products")) p = f.quantities(*n, "inertia_products", Dimension::Inertia, 3);
+  k.inertia << d[0], p[0], p[1],
+               p[0], d[1], p[2],
+               p[1], p[2], d[2];
+  k.bulge_radius = f.quantity(f.required(t, "bulge_radius", "m"), "bulge_radius", Dimension::Length,
+                              &ClubSpec::kFaceRadius);
+  k.roll_radius = f.quantity(f.required(t, "roll_radius", "m"), "roll_radius", Dimension::Length,
+                             &ClubSpec::kFaceRadius);
+  k.length = f.quantity(f.required(t, "length", "shaft length"), "length", Dimension::Length, &ClubSpec::kLength);
+  // The face: the shared ball–face law with this club's COR at the reference speed.
+  k.face = face.material;
+  static constexpr Range kCor{0.0, 1.0, true};
+  const double cor = f.quantity(f.required(t, "cor", "face COR at the reference speed"), "cor",
+                                Dimension::Dimensionless, &kCor);
+  if (face.slope > 0.0) {
+    // Linear in normal speed through (reference speed, cor) between 10 and 90 m/s, held
+    // constant outside and within [0, 1].
+    const double speeds[] = {10.0, face.reference_speed, 90.0};
+    k.face.e.count = 3;
+    for (size_t i = 0; i < 3; ++i) {
+      k.face.e.speed[i] = speeds[i];
+      k.face.e.cor[i] = std::clamp(cor + face.slope * (face.reference_speed - speeds[i]), 0.0, 1.0);
+    }
+  } else {
+    k.face.e = CorCurve::constant(cor);
+  }
+  validated(f, t, [&] { validate_club(k); });
+}
+
+void read_bat(const TomlFile& f, const toml::table& t, BatSpec& b, BatInfo& info) {
+  f.only_keys(t, "bat", {"name", "mesh", "length", "mass", "cg_from_knob", "inertia_cg", "inertia_axial",
+                         "barrel_profile", "sweet_spot_from_tip", "pivot_from_knob", "material"});
+  b.name = f.text(f.required(t, "name", "the bat's name"), "name");
+  info.name = b.name;
+  info.mesh = f.text_or(t, "mesh", "bat");
+  b.length = f.quantity(f.required(t, "length", "m"), "length", Dimension::Length, &BatSpec::kLength);
+  b.mass = f.quantity(f.required(t, "mass", "kg"), "mass", Dimension::Mass, &BatSpec::kMass);
+  b.cg_from_knob = f.quantity(f.required(t, "cg_from_knob", "m"), "cg_from_knob", Dimension::Length);
+  b.inertia_cg = f.quantity(f.required(t, "inertia_cg", "kg*m^2"), "inertia_cg", Dimension::Inertia,
+                            &BatSpec::kInertiaCg);
+  b.inertia_axial = f.quantity(f.required(t, "inertia_axial", "kg*m^2"), "inertia_axial", Dimension::Inertia);
+  b.barrel_profile = f.pairs(f.required(t, "barrel_profile", "[[from_knob, radius], ...]"), "barrel_profile",
+                             Dimension::Length, Dimension::Length);
+  b.sweet_spot_from_tip = f.quantity(f.required(t, "sweet_spot_from_tip", "m"), "sweet_spot_from_tip", Dimension::Length);
+  b.pivot_from_knob = f.quantity(f.required(t, "pivot_from_knob", "m"), "pivot_from_knob", Dimension::Length);
+  const toml::table& m = f.table(f.required(t, "material", "[bat.material]"), "material");
+  f.only_keys(m, "material", {"cor", "e_t", "mu", "friction", "cor_profile"});
+  b.material.e = curve(f, f.required(m, "cor", "[[normal speed, e], ...]"), "material.cor");
+  b.material.e_t = f.quantity_or(m, "e_t", Dimension::Dimensionless, 0.0, &ImpactMaterial::kEt);
+  b.material.mu = f.quantity_or(m, "mu", Dimension::Dimensionless, 0.5, &ImpactMaterial::kMu);
+  b.material.friction = friction(f, m);
+  if (const toml::node* cp = m.get("cor_profile"))
+    b.cor_profile = f.pairs(*cp, "material.cor_profile", Dimension::Length, Dimension::Dimensionless);
+  validated(f, t, [&] { validate_bat(b); });
+}
+
+template <class T>
+void check_unique(const std::vector<T>& v, const std::string& file, const char* what) {
+  for (size_t i = 0; i < v.size(); ++i)
+    for (size_t j = i + 1; j < v.size(); ++j)
+      if (v[i].name == v[j].name) throw InputError(file + ": " + what + " '" + v[i].name + "' is defined twice");
+}
+
+template <class T>
+const T& find(const std::vector<T>& v, std::string_view name, const char* what) {
+  for (const auto& x : v)
+    if (x.name == name) return x;
+  std::string names;
+  for (const auto& x : v) names += (names.empty() ? "" : ", ") + x.name;
+  throw InputError(std::string("unknown ") + what + " '" + std::string(name) + "' (allowed: " + names + ")");
+}
+
+}  // namespace
+
+const BallSpec& EquipmentCatalog::ball(std::string_view name) const { return find(balls, name, "ball"); }
+const ClubSpec& EquipmentCatalog::club(std::string_view name) const { return find(clubs, name, "club"); }
+const ClubInfo& EquipmentCatalog::club_info_of(std::string_view name) const { return find(club_info, name, "club"); }
+const BatSpec& EquipmentCatalog::bat(std::string_view name) const { return find(bats, name, "bat"); }
+const BatInfo& EquipmentCatalog::bat_info_of(std::string_view name) const { return find(bat_info, name, "bat"); }
+
+EquipmentCatalog load_equipment(const std::filesystem::path& dir) {
+  EquipmentCatalog cat;
+  {
+    const TomlFile f = TomlFile::read(dir / "balls.toml", "equipment");
+    f.only_keys(f.root(), "", {"ball"});
+    for (const toml::table* t : f.tables(f.root(), "ball", true)) {
+      try {
+        cat.balls.push_back(read_ball(f, *t));
+      } catch (const InputError& e) {
+        throw InputError(f.in_context(e.what(), "ball '" + f.text_or(*t, "name", "?") + "'"));
+      }
+    }
+    check_unique(cat.balls, f.source(), "ball");
+  }
+  {
+    const TomlFile f = TomlFile::read(dir / "clubs.toml", "equipment");
+    f.only_keys(f.root(), "", {"face", "club"});
+    const FaceLaw face = read_face(f, f.root());
+    for (const toml::table* t : f.tables(f.root(), "club", true)) {
+      cat.clubs.emplace_back();
+      cat.club_info.emplace_back();
+      try {
+        read_club(f, *t, face, cat.clubs.back(), cat.club_info.back());
+      } catch (const InputError& e) {
+        throw InputError(f.in_context(e.what(), "club '" + f.text_or(*t, "name", "?") + "'"));
+      }
+    }
+    check_unique(cat.clubs, f.source(), "club");
+  }
+  {
+    const TomlFile f = TomlFile::read(dir / "bats.toml", "equipment");
+    f.only_keys(f.root(), "", {"bat"});
+    for (const toml::table* t : f.tables(f.root(), "bat", true)) {
+      cat.bats.emplace_back();
+      cat.bat_info.emplace_back();
+      try {
+        read_bat(f, *t, cat.bats.back(), cat.bat_info.back());
+      } catch (const InputError& e) {
+        throw InputError(f.in_context(e.what(), "bat '" + f.text_or(*t, "name", "?") + "'"));
+      }
+    }
+    check_unique(cat.bats, f.source(), "bat");
+  }
+  return cat;
+}
+
+}  // namespace sweetspot

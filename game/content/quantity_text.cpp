@@ -1,0 +1,56 @@
+#include "game/content/quantity_text.hpp"
+
+#include <charconv>
+#include <string>
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace
+
+bool needs_unit(Dimension dim) { return dim != Dimension::Dimensionless; }
+
+bool has_unit(std::string_view t) {
+  t = trim(t);
+  const char* first = t.data();
+  const char* last = t.data() + t.size();
+  if (first != last && (*first == '+' || *first == '-')) ++first;
+  double v = 0.0;
+  const auto res = std::from_chars(first, last, v);
+  if (res.ec == std::errc::invalid_argument) return true;
+  return !trim(std::string_view(res.ptr, static_cast<std::size_t>(last - res.ptr))).empty();
+}
+
+double read_quantity(std::string_view text, Dimension dim) {
+  const std::string_view t = trim(text);
+  if (t.empty()) throw InputError("empty value (a " + std::string(dimension_name(dim)) + " is needed)");
+  if (needs_unit(dim) && !has_unit(t)) {
+    throw InputError("missing unit in '" + std::string(t) + "' (a " + std::string(dimension_name(dim)) +
+                     " needs one of: " + accepted_units(dim) + ")");
+  }
+  return parse_quantity(t, dim);
+}
+
+std::vector<double> read_quantity_list(std::string_view text, Dimension dim) {
+  std::string_view s = trim(text);
+  if (!s.empty() && s.front() == '[' && s.back() == ']') s = s.substr(1, s.size() - 2);
+  std::vector<double> out;
+  if (trim(s).empty()) return out;
+  for (;;) {
+    const auto comma = s.find(',');
+    out.push_back(read_quantity(s.substr(0, comma), dim));
+    if (comma == std::string_view::npos) break;
+    s.remove_prefix(comma + 1);
+  }
+  return out;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,29 @@
+// The one rule for quantities written by people, in every file and on every flag:
+// a value with a physical dimension carries its unit ("113mph", "10.5deg", "50%"); only a
+// dimensionless value (e, µ, a count) is written bare. `speed = 113` meaning 113 m/s is a
+// trap, so we ask (README: Units). The unit parser itself lives in physics/units.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "physics/units.hpp"
+
+namespace sweetspot {
+
+/// True when `dim` needs a unit in text: everything but Dimensionless (fractions too: "50%").
+bool needs_unit(Dimension dim);
+
+/// True when something follows the number ("113mph"); a malformed number counts as having
+/// a unit so the parser reports it properly.
+bool has_unit(std::string_view text);
+
+/// Parses `text` as a quantity of `dim` under the rule above. Throws InputError (without an
+/// origin; callers prefix the file:line, key or flag): "missing unit in '113' (a speed needs
+/// one of: m/s, mph, ...)", or the parser's message.
+double read_quantity(std::string_view text, Dimension dim);
+
+/// "[10mm, 0mm]" or "10mm, 0mm": each element by read_quantity.
+std::vector<double> read_quantity_list(std::string_view text, Dimension dim);
+
+}  // namespace sweetspot

@@ -1,0 +1,210 @@
+// Sections: 1. materials.toml   2. the mesh (assimp)   3. the world .toml   4. names
+#include "game/content/world_asset.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <system_error>
+
+#include <assimp/scene.h>
+
+#include "game/content/mesh_file.hpp"
+#include "game/content/toml_file.hpp"
+#include "physics/error.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+namespace fs = std::filesystem;
+
+// ---- 1. materials ----------------------------------------------------------------------
+std::vector<SurfaceMaterial> load_materials(const fs::path& path) {
+  const TomlFile f = TomlFile::read(path, "materials");
+  std::vector<SurfaceMaterial> out;
+  for (const auto& [name_key, node] : f.root()) {
+    const std::string name(name_key.str());
+    const toml::table& t = f.table(node, name);
+    f.only_keys(t, name, {"kind", "e", "mu", "rolling_resistance", "stimp", "crater_tilt"});
+    SurfaceMaterial m;
+    m.name = name;
+    const std::string kind = f.text(f.required(t, "kind", "allowed: " + surface_kind_names()), name + ".kind");
+    if (!surface_kind_from_string(kind, &m.kind))
+      f.fail(*t.get("kind"), name + ".kind", "unknown kind '" + kind + "' (allowed: " + surface_kind_names() + ")");
+    m.e = CorCurve::constant(0.0);
+    if (const toml::node* e = t.get("e")) {
+      const auto pts = f.pairs(*e, name + ".e", Dimension::Speed, Dimension::Dimensionless);
+      if (pts.size() > static_cast<size_t>(CorCurve::kMaxPoints))
+        f.fail(*e, name + ".e", "at most " + std::to_string(CorCurve::kMaxPoints) + " points [speed, e]");
+      m.e.count = static_cast<int>(pts.size());
+      for (size_t i = 0; i < pts.size(); ++i) {
+        m.e.speed[i] = pts[i].first;
+        m.e.cor[i] = pts[i].second;
+      }
+    }
+    m.mu = f.quantity_or(t, "mu", Dimension::Dimensionless, 0.0, &SurfaceMaterial::kMu);
+    m.rolling_resistance =
+        f.quantity_or(t, "rolling_resistance", Dimension::Dimensionless, 0.0, &SurfaceMaterial::kRollingResistance);
+    m.stimp = f.quantity_or(t, "stimp", Dimension::Length, 0.0, &SurfaceMaterial::kStimp);
+    m.crater_tilt = f.quantity_or(t, "crater_tilt", Dimension::Angle, 0.0, &SurfaceMaterial::kCraterTilt);
+    if (const std::string why = validate_surface_material(m); !why.empty()) throw InputError(f.where(node) + ": " + why);
+    out.push_back(std::move(m));
+  }
+  if (out.empty()) throw InputError(path.string() + ": no materials");
+  return out;
+}
+
+// ---- 2. the mesh -----------------------------------------------------------------------
+namespace {
+
+void add_node_meshes(const aiScene* scene, const aiNode* node, const aiMatrix4x4& parent, const fs::path& file,
+                     WorldDescription* d, int* dropped) {
+  const aiMatrix4x4 xf = parent * node->mTransformation;
+  for (unsigned k = 0; k < node->mNumMeshes; ++k) {
+    const aiMesh* am = scene->mMeshes[node->mMeshes[k]];
+    aiString ainame;
+    scene->mMaterials[am->mMaterialIndex]->Get(AI_MATKEY_NAME, ainame);
+    const std::string mname = ainame.C_Str();
+    const auto it = std::find_if(d->materials.begin(), d->materials.end(),
+                                 [&](const SurfaceMaterial& m) { return m.name == mname; });
+    if (it == d->materials.end()) {
+      std::string names;
+      for (const auto& m : d->materials) names += (names.empty() ? "" : ", ") + m.name;
+      throw InputError(file.string() + ": mesh '" + std::string(am->mName.C_Str()) + "' uses material '" + mname +
+                       "', which materials.toml does not define (allowed: " + names + ")");
+    }
+    WorldMesh wm;
+    wm.material = static_cast<int>(it - d->materials.begin());
+    wm.vertices.reserve(am->mNumVertices);
+    for (unsigned v = 0; v < am->mNumVertices; ++v) {
+      const aiVector3D p = xf * am->mVertices[v];
+      const Vec3 q(p.x, p.y, p.z);
+      if (!q.allFinite())
+        throw InputError(file.string() + ": mesh '" + mname + "' vertex " + std::to_string(v) +
+                         " is not a finite number (NaN or infinity); fix the file");
+      // Far-away vertices would swamp Bullet's quantised triangle tree and the bounds, so a
+      // world is limited to kMaxWorldExtent from its origin in every axis.
+      if (q.cwiseAbs().maxCoeff() > kMaxWorldExtent)
+        throw InputError(file.string() + ": mesh '" + mname + "' vertex " + std::to_string(v) +
+                         " lies beyond the world limit of " + std::to_string(static_cast<long>(kMaxWorldExtent)) +
+                         " m from the origin in some axis; fix the file");
+      wm.vertices.push_back(q);
+    }
+    for (unsigned fi = 0; fi < am->mNumFaces; ++fi) {
+      const aiFace& face = am->mFaces[fi];
+      if (face.mNumIndices != 3) continue;  // points and lines carry no surface
+      if (face.mIndices[0] >= am->mNumVertices || face.mIndices[1] >= am->mNumVertices ||
+          face.mIndices[2] >= am->mNumVertices)
+        throw InputError(file.string() + ": mesh '" + mname + "' face " + std::to_string(fi) +
+                         " refers to a vertex that does not exist (truncated or corrupt file)");
+      const Vec3& a = wm.vertices[face.mIndices[0]];
+      const Vec3& b = wm.vertices[face.mIndices[1]];
+      const Vec3& c = wm.vertices[face.mIndices[2]];
+      if (!((b - a).cross(c - a).norm() > 1e-12 * std::max((b - a).squaredNorm(), (c - a).squaredNorm()))) {
+        ++*dropped;
+        continue;
+      }
+      wm.indices.insert(wm.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+    }
+    if (!wm.indices.empty()) d->meshes.push_back(std::move(wm));
+  }
+  for (unsigned c = 0; c < node->mNumChildren; ++c) add_node_meshes(scene, node->mChildren[c], xf, file, d, dropped);
+}
+
+/// Every world mesh passes the same checks, whichever path named it: readable, finite,
+/// near the origin, indices in range, and at least one collidable triangle with area.
+void load_mesh(const fs::path& obj, WorldDescription* d) {
+  const ImportedMesh mesh = import_mesh_file(obj, "world mesh", kMaxWorldMeshBytes);
+  int dropped = 0;
+  add_node_meshes(mesh.scene, mesh.scene->mRootNode, aiMatrix4x4(), obj, d, &dropped);
+  if (dropped > 0)
+    d->notes.push_back(obj.string() + ": dropped " + std::to_string(dropped) + " zero-area triangle" +
+                       (dropped == 1 ? "" : "s"));
+  const bool collidable = std::any_of(d->meshes.begin(), d->meshes.end(), [&](const WorldMesh& m) {
+    return d->materials[static_cast<size_t>(m.material)].kind != SurfaceKind::Decoration;
+  });
+  if (!collidable)
+    throw InputError(obj.string() + ": no collidable triangles with area (empty, truncated, garbage or "
+                     "decoration-only mesh)");
+}
+
+fs::path resolve_world(const fs::path& root, const std::string& name_or_path) {
+  if (name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".toml") ||
+      name_or_path.ends_with(".obj"))
+    return name_or_path;
+  const fs::path p = root / "worlds" / (name_or_path + ".toml");
+  if (std::error_code ec; !fs::is_regular_file(p, ec)) {
+    std::string names;
+    for (const auto& n : world_names(root)) names += (names.empty() ? "" : ", ") + n;
+    throw InputError("unknown world '" + name_or_path + "' (allowed: " + names + ", none, or a path to a .toml)");
+  }
+  return p;
+}
+
+Vec3 vec3(const TomlFile& f, const toml::node& n, std::string_view key) {
+  const auto v = f.quantities(n, key, Dimension::Length, 3);
+  return Vec3(v[0], v[1], v[2]);
+}
+
+}  // namespace
+
+// ---- 3. the world .toml ----------------------------------------------------------------
+WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_path,
+                            const std::vector<SurfaceMaterial>& materials) {
+  const fs::path path = resolve_world(root, name_or_path);
+  WorldAsset a;
+  a.source = path;
+  WorldDescription d;
+  d.materials = materials;
+  if (path.extension() == ".obj") {
+    d.name = path.stem().string();
+    load_mesh(path, &d);
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    for (const auto& m : d.meshes)
+      for (const auto& v : m.vertices) {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+      }
+    // The shot starts at the origin, so the box holds it even when the mesh does not (a
+    // lone wall); a margin keeps a flat or single-plane mesh from giving an empty box.
+    lo = lo.cwiseMin(d.origin);
+    hi = hi.cwiseMax(d.origin);
+    d.bounds_min = lo - Vec3(10.0, 10.0, 10.0);
+    d.bounds_max = hi + Vec3(10.0, 400.0, 10.0);
+  } else {
+    const TomlFile f = TomlFile::read(path, "world");
+    const toml::table& t = f.root();
+    f.only_keys(t, "", {"name", "sport", "mesh", "origin", "bounds_min", "bounds_max", "pin", "fence_height",
+                        "fence_line"});
+    d.name = f.text_or(t, "name", path.stem().string());
+    a.sport = f.text_or(t, "sport", "");
+    const std::string mesh = f.text(f.required(t, "mesh", "the .obj file, relative to the .toml"), "mesh");
+    if (const toml::node* n = t.get("origin")) d.origin = vec3(f, *n, "origin");
+    if (const toml::node* n = t.get("bounds_min")) d.bounds_min = vec3(f, *n, "bounds_min");
+    if (const toml::node* n = t.get("bounds_max")) d.bounds_max = vec3(f, *n, "bounds_max");
+    if (const toml::node* n = t.get("pin")) a.pin = vec3(f, *n, "pin");
+    a.fence_height = f.quantity_or(t, "fence_height", Dimension::Length, 0.0, &WorldAsset::kFenceHeight);
+    if (const toml::node* n = t.get("fence_line")) {
+      const toml::array* arr = n->as_array();
+      if (arr == nullptr || arr->size() < 2) f.fail(*n, "fence_line", "expected [[x, z], ...] with 2 or more points");
+      for (const toml::node& p : *arr) {
+        const auto xz = f.quantities(p, "fence_line", Dimension::Length, 2);
+        a.fence_line.emplace_back(xz[0], d.origin.y(), xz[1]);
+      }
+    }
+    load_mesh(path.parent_path() / mesh, &d);
+  }
+  a.name = d.name;
+  if (const std::string why = validate_world(d); !why.empty()) throw InputError(path.string() + ": " + why);
+  a.world = std::make_unique<const World>(std::move(d));
+  return a;
+}
+
+// ---- 4. names --------------------------------------------------------------------------
+std::vector<std::string> world_names(const fs::path& root) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(root / "worlds", ec))
+    if (e.path().extension() == ".toml") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace sweetspot

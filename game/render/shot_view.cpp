@@ -1,0 +1,61 @@
+#include "game/render/shot_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sweetspot {
+
+std::optional<ImpactorPlacement> impactor_placement(const ShotResult& r) {
+  if (!r.has_impactor) return std::nullopt;
+  ImpactorPlacement p;
+  p.position = r.impactor_at_impact.position;
+  p.orientation = r.impactor_at_impact.orientation;
+  return p;
+}
+
+ImpactorPlacement nominal_impactor(bool bat, const LaunchState& launch, double ball_radius, double bat_length) {
+  const Vec3 n = launch.velocity.norm() > 0.0 ? Vec3(launch.velocity.normalized()) : Vec3::UnitX();
+  const double yaw = std::atan2(n.z(), n.x());
+  ImpactorPlacement p;
+  if (bat) {
+    constexpr double kSweetFromTip = 0.1524, kBarrelRadius = 0.033;  // Statcast sweet spot; MLB barrel
+    const Quat q = Quat(Eigen::AngleAxisd(-yaw, Vec3::UnitY())) * Quat(Eigen::AngleAxisd(-kPi / 2, Vec3::UnitY()));
+    const Vec3 flat(n.x(), 0, n.z());
+    const Vec3 back = flat.norm() > 0.0 ? Vec3(flat.normalized()) : Vec3::UnitX();
+    const Vec3 contact = launch.position - (ball_radius + kBarrelRadius) * back;
+    p.orientation = q;
+    p.position = contact - (bat_length - kSweetFromTip) * (q * Vec3::UnitX());
+    return p;
+  }
+  const double loft = std::asin(std::clamp(n.y(), -1.0, 1.0));
+  p.orientation = Quat(Eigen::AngleAxisd(-yaw, Vec3::UnitY())) * Quat(Eigen::AngleAxisd(loft, Vec3::UnitZ()));
+  p.position = launch.position - ball_radius * (p.orientation * Vec3::UnitX());
+  return p;
+}
+
+ShotSceneInput scene_input_for(const Assets& assets, const ResolvedShot& s, const ShotResult& r) {
+  ShotSceneInput in;
+  in.assets = &assets;
+  in.world = s.world;
+  in.distance_unit = s.sport->distance_unit;
+  in.ball_radius = s.ball.radius;
+  in.tee = s.start_surface == "tee" && s.spec.placement.teed;
+  in.impactor = impactor_placement(r);
+  in.impactor_mesh = in.impactor ? r.impactor_mesh : "";
+  return in;
+}
+
+RenderRequest render_request_for(const Assets& assets, const ResolvedShot& s, const ShotResult& r) {
+  const ShotSceneInput in = scene_input_for(assets, s, r);
+  RenderRequest req;
+  req.assets = in.assets;
+  req.world = in.world;
+  req.distance_unit = in.distance_unit;
+  req.tee = in.tee;
+  req.ball_radius = in.ball_radius;
+  req.impactor = in.impactor;
+  req.impactor_mesh = in.impactor_mesh;
+  return req;
+}
+
+}  // namespace sweetspot

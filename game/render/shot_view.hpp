@@ -1,0 +1,27 @@
+// How a shot is shown: which world and meshes, whether the ball sat on a tee, where the
+// club or bat was at impact. Shared by `sweetspot render`, `play` (window and headless) and
+// the game modes, so every view of one shot draws the same scene.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "game/content/scenario.hpp"
+#include "game/render/render_command.hpp"
+#include "game/render/shot_scene.hpp"
+
+namespace sweetspot {
+
+/// The club or bat at impact in its mesh frame, when the shot had one.
+std::optional<ImpactorPlacement> impactor_placement(const ShotResult& r);
+
+/// Where the club head or bat is drawn when only launch numbers are known: an illustrative
+/// pose, not an impact solve. A club's face touches the back of the ball with its normal
+/// along the launch direction (loft ~ launch angle); a bat's sweet spot sits behind the
+/// ball, level and square to the launch direction (`bat_length` m, knob on the third-base side).
+ImpactorPlacement nominal_impactor(bool bat, const LaunchState& launch, double ball_radius, double bat_length = 0.84);
+
+ShotSceneInput scene_input_for(const Assets& assets, const ResolvedShot& shot, const ShotResult& r);
+RenderRequest render_request_for(const Assets& assets, const ResolvedShot& shot, const ShotResult& r);
+
+}  // namespace sweetspot

@@ -1,0 +1,173 @@
+// Rolling: the skid until the contact point grips, then steps along the ground under
+// gravity along the slope, rolling resistance and air drag, following the terrain's facets,
+// leaving it over an edge, striking walls, stopping exactly where the speed runs out.
+#include <algorithm>
+#include <cmath>
+
+#include "physics/detail/flight_steps.hpp"
+
+namespace sweetspot::detail {
+namespace {
+
+/// Ball bottom more than this above the support plane: the ground fell away, fly.
+constexpr double kLeaveGap = 0.01;  // m
+
+void set_rolling(ShotState& s, const Vec3& p, const Vec3& v, const Vec3& n, double r) {
+  s.y.segment<3>(0) = p;
+  s.y.segment<3>(3) = v;
+  s.y.segment<3>(6) = n.cross(v) / r;
+}
+
+ShotEvent go_airborne(ShotState& s, double dt, const Vec3& p1, const Vec3& v1) {
+  s.t += dt;
+  s.y.segment<3>(0) = p1;
+  s.y.segment<3>(3) = v1;
+  s.phase = Phase::Bounce;
+  s.step_size = hop_step(s);
+  s.rate_valid = false;
+  ShotEvent ev;
+  ev.kind = ShotEventKind::Airborne;
+  return ev;
+}
+
+/// Skid until the contact point grips: friction µ g cosθ acts against the slip, which
+/// changes at (1 + m R²/I) µ g cosθ = 3.5 µ g cosθ for a solid sphere. The slope is
+/// ignored for this short stretch.
+void skid(const ShotModel& m, ShotState& s) {
+  const double r = m.ball.radius;
+  const SurfaceContact& c = s.support;
+  const Vec3 n = c.normal;
+  Vec3 p = s.position();
+  Vec3 v = s.velocity();
+  Vec3 w = s.spin();
+  p -= (n.dot(p - c.point) - r) * n;
+  v -= v.dot(n) * n;
+  const SurfaceMaterial& mat = m.terrain->material(c.material);
+  const Vec3 slip = v + w.cross(-r * n);
+  const double slip_speed = slip.norm();
+  const double cos_slope = std::max(n.dot(up_axis()), 0.1);
+  if (slip_speed > 1e-6 && mat.mu > 0.0) {
+    const double k = 1.0 + m.ball.mass * r * r / m.ball.inertia;
+    const double decel = mat.mu * kGravity * cos_slope;
+    const double tg = slip_speed / (k * decel);
+    const Vec3 a = -decel * (slip / slip_speed);
+    p += v * tg + 0.5 * a * tg * tg;
+    v += a * tg;
+    s.t += tg;
+  }
+  w = w.dot(n) * n + n.cross(v) / r;
+  s.y.segment<3>(0) = p;
+  s.y.segment<3>(3) = v;
+  s.y.segment<3>(6) = w;
+  s.skidding = false;
+}
+
+}  // namespace
+
+ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
+  ShotEvent ev;
+  if (s.skidding) {
+    skid(m, s);
+    return ev;
+  }
+  if (out_of_budget(m, s)) {
+    end_shot(s, EndReason::StepLimit);
+    ev.kind = ShotEventKind::StepLimit;
+    return ev;
+  }
+  ++s.counters.roll_steps;
+  const Terrain& terrain = *m.terrain;
+  const double r = m.ball.radius;
+  const SurfaceContact c = s.support;
+  const Vec3 n = c.normal;
+  const SurfaceMaterial& mat = terrain.material(c.material);
+  const Vec3 p = s.position();
+  const Vec3 v = s.velocity();
+
+  const double cos_t = n.dot(up_axis());
+  const Vec3 slope_acc = (5.0 / 7.0) * -kGravity * (up_axis() - cos_t * n);  // rolling sphere
+  const double resist = effective_rolling_resistance(mat) * kGravity * cos_t;
+  const double speed = v.norm();
+  const bool holds = slope_acc.norm() <= resist;  // static: the slope cannot start it
+  if (speed == 0.0 && holds) {
+    s.y.segment<3>(6).setZero();
+    s.phase = Phase::Rest;
+    end_shot(s, EndReason::Rest);
+    ev.kind = ShotEventKind::Rest;
+    ev.contact = c;
+    return ev;
+  }
+  const Vec3 dir = speed > 0.0 ? Vec3(v / speed) : Vec3(slope_acc.normalized());
+  // Air drag matters on a fast roll (a ball skidding out at 80 m/s loses more to the air
+  // than to the turf); its part along the surface acts through the centre, so a rolling
+  // sphere feels 5/7 of it. Lift on the topspin only presses into the ground.
+  Vec3 drag_acc = Vec3::Zero();
+  if (speed > 0.0) {
+    const Vec3 v_rel = v - wind_at(m.environment, r);
+    const Vec3 f = aero_effect(*m.aero, m.air_density, r, v_rel, n.cross(v) / r).force;
+    drag_acc = (5.0 / 7.0) / m.ball.mass * (f - f.dot(n) * n);
+  }
+  const Vec3 a = slope_acc + drag_acc - resist * dir;
+  const double limit = std::min(m.settings.max_time, until) - s.t;
+  const double dt = std::min(std::clamp(0.25 / std::max(speed, 1e-3), 1.0 / 240.0, 0.1), limit);
+  Vec3 v1 = v + a * dt;
+  Vec3 p1 = p + 0.5 * (v + v1) * dt;
+  double step_t = dt;
+  bool stops = false;
+  const double along = -a.dot(dir);  // deceleration along the motion
+  if (holds && speed > 0.0 && along > 0.0 && (v1.dot(v) <= 0.0 || speed < m.settings.rest_speed)) {
+    // Comes to rest inside the step: advance exactly to the stop.
+    step_t = speed / along;
+    p1 = p + v * step_t + 0.5 * a * step_t * step_t;
+    v1 = Vec3::Zero();
+    stops = true;
+  }
+  // Walls and banks in the way: a rolling ball that strikes one bounces off it into the air.
+  SurfaceContact hit;
+  if (terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p, p1, r, &hit, &n))) {
+    const double f = hit.fraction;
+    s.t += f * step_t;
+    set_rolling(s, p + f * (p1 - p), v + f * (v1 - v), n, r);
+    s.phase = Phase::Bounce;
+    ShotEvent touched = touch_surface(m, s, hit);
+    if (!s.ended) {
+      s.phase = Phase::Bounce;
+      s.skidding = false;
+    }
+    return touched;
+  }
+  // Follow the ground under the new position.
+  SurfaceContact under = c;  // the current support is the cache hint
+  if (!terrain.support(p1, r, kLeaveGap + 0.1 * speed * step_t, &under)) return go_airborne(s, step_t, p1, v1);
+  const double gap = under.normal.dot(p1 - under.point) - r;
+  // The ground fell away (or turned sharply): the ball leaves it and flies.
+  if (gap > kLeaveGap || under.normal.dot(n) < kFollowCos) return go_airborne(s, step_t, p1, v1);
+  p1 -= gap * under.normal;
+  if (under.normal != n) {
+    // Onto a differently sloped facet: turn the velocity into its plane, keeping speed.
+    const double s1 = v1.norm();
+    v1 -= v1.dot(under.normal) * under.normal;
+    const double s2 = v1.norm();
+    if (s2 > 0.0) v1 *= s1 / s2;
+  }
+  s.support = under;
+  s.t += step_t;
+  set_rolling(s, p1, v1, under.normal, r);
+  const SurfaceMaterial& now = terrain.material(under.material);
+  if (now.kind == SurfaceKind::Water) stops = true;  // rolled into water: it sinks there
+  if (!terrain.inside(p1)) {
+    end_shot(s, EndReason::LeftWorld);
+    ev.kind = ShotEventKind::LeftWorld;
+    return ev;
+  }
+  if (stops) {
+    s.y.segment<6>(3).setZero();
+    s.phase = Phase::Rest;
+    end_shot(s, EndReason::Rest);
+    ev.kind = ShotEventKind::Rest;
+    ev.contact = under;
+  }
+  return ev;
+}
+
+}  // namespace sweetspot::detail

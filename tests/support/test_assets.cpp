@@ -1,0 +1,33 @@
+#include "support/test_assets.hpp"
+
+#include "physics/units.hpp"
+
+namespace sweetspot::test {
+
+const Assets& assets() {
+  static const Assets a(std::filesystem::path(SWEETSPOT_SOURCE_DIR) / "assets");
+  return a;
+}
+
+ShotModel golf_model(const Terrain* terrain, const Environment& env, const FlightSettings& settings) {
+  return make_shot_model(golf_ball_properties(), assets().aero("ferguson2022"), env, terrain, settings);
+}
+
+ShotModel baseball_model(const Terrain* terrain, const Environment& env, const FlightSettings& settings) {
+  return make_shot_model(baseball_properties(), assets().aero("nathan"), env, terrain, settings);
+}
+
+ShotTrajectory fly(const FlightCase& c, const Terrain* terrain) {
+  const AeroModel& aero = c.aero ? *c.aero : assets().aero("ferguson2022");
+  return simulate_shot(make_shot_model(c.ball, aero, c.environment, terrain, c.settings), c.launch, c.record_samples);
+}
+
+FlightCase golf_launch(double mph, double launch_deg, double rpm, const char* model) {
+  FlightCase c;
+  c.aero = &assets().aero(model);
+  c.launch = launch_from_metrics(mph_to_mps(mph), deg_to_rad(launch_deg), 0.0, rpm_to_radps(rpm), 0.0,
+                                 Vec3(0.0, c.ball.radius, 0.0));
+  return c;
+}
+
+}  // namespace sweetspot::test

@@ -1,0 +1,35 @@
+// Test fixtures shared by the suites: the shipped Assets context (one per test process,
+// loaded lazily like the program's own) and short-hands for the models tests fly with.
+#pragma once
+
+#include "game/core/assets.hpp"
+#include "physics/flight.hpp"
+
+namespace sweetspot::test {
+
+/// The assets folder of the source tree, loaded on first use.
+const Assets& assets();
+
+/// A golf ball with the ferguson2022 aero model in the default environment over `terrain`
+/// (nullptr = the flat fairway).
+ShotModel golf_model(const Terrain* terrain = nullptr, const Environment& env = {}, const FlightSettings& settings = {});
+/// A baseball with Nathan's model.
+ShotModel baseball_model(const Terrain* terrain = nullptr, const Environment& env = {},
+                         const FlightSettings& settings = {});
+
+/// A launch with everything it flies through, as the tests write it: a ShotModel's inputs
+/// plus the launch state. fly() makes the model and simulates.
+struct FlightCase {
+  LaunchState launch;
+  BallProperties ball;                 ///< golf ball by default
+  Environment environment;
+  const AeroModel* aero = nullptr;     ///< nullptr = ferguson2022
+  FlightSettings settings;
+  bool record_samples = true;
+};
+/// simulate_shot(make_shot_model(...), c.launch, c.record_samples) over `terrain`.
+ShotTrajectory fly(const FlightCase& c, const Terrain* terrain = nullptr);
+/// A golf launch from launch-monitor numbers at the origin tee (ball on the ground).
+FlightCase golf_launch(double mph, double launch_deg, double rpm, const char* model = "ferguson2022");
+
+}  // namespace sweetspot::test

@@ -1,0 +1,70 @@
+// Aero models are the published formulas, selectable by name.
+#include <catch2/catch.hpp>
+
+#include "physics/aero.hpp"
+#include "physics/error.hpp"
+#include "physics/units.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+TEST_CASE("ferguson2022 coefficients are the published quadratics", "[aero]") {
+  const AeroModel& m = test::assets().aero("ferguson2022");
+  const AeroCoefficients c = m.coefficients(0.1, 0.0);
+  CHECK(c.cd == Approx(0.1304 + 0.09287 - 0.008259).epsilon(1e-12));
+  CHECK(c.cl == Approx(0.0504 + 0.12031 - 0.011490).epsilon(1e-12));
+  // Held at the top of the fit range instead of turning over.
+  CHECK(m.coefficients(0.9, 0.0).cl == Approx(m.coefficients(m.s_max, 0.0).cl));
+}
+
+TEST_CASE("smits_smith1994 and nathan coefficients", "[aero]") {
+  const AeroCoefficients s = test::assets().aero("smits_smith1994").coefficients(0.15, 0.0);
+  CHECK(s.cd == Approx(0.24 + 0.18 * 0.15));
+  CHECK(s.cl == Approx(0.54 * std::pow(0.15, 0.4)));
+  const AeroCoefficients n = test::assets().aero("nathan").coefficients(0.2, rpm_to_radps(2000.0));
+  CHECK(n.cd == Approx(0.3008 + 0.0292 * 2.0));
+  CHECK(n.cl == Approx(1.120 * 0.2 / (0.583 + 2.333 * 0.2)));
+}
+
+TEST_CASE("spin decay: golf ~4 %/s at driver speed, proportional to speed; nathan tau 30 s", "[aero]") {
+  const AeroModel& g = test::assets().aero("ferguson2022");
+  CHECK(g.spin_decay_rate(mph_to_mps(167.0)) == Approx(0.04).epsilon(1e-3));
+  CHECK(g.spin_decay_rate(mph_to_mps(83.5)) == Approx(0.02).epsilon(1e-3));
+  CHECK(test::assets().aero("nathan").spin_decay_rate(40.0) == Approx(1.0 / 30.0));
+}
+
+TEST_CASE("aero forces: drag opposes motion, backspin lifts, rifle spin does not", "[aero]") {
+  const AeroModel& m = test::assets().aero("ferguson2022");
+  const double rho = 1.2, r = 0.021335;
+  const Vec3 v(70.0, 0.0, 0.0);
+  const AeroEffect none = aero_effect(m, rho, r, v, Vec3::Zero());
+  CHECK(none.force.x() == Approx(-0.5 * rho * kPi * r * r * 0.1304 * 70.0 * 70.0));
+  CHECK(none.force.y() == 0.0);
+  const AeroEffect back = aero_effect(m, rho, r, v, Vec3(0.0, 0.0, 300.0));  // backspin for +x
+  CHECK(back.force.y() > 0.0);
+  const AeroEffect rifle = aero_effect(m, rho, r, v, Vec3(300.0, 0.0, 0.0));
+  CHECK(rifle.force.y() == 0.0);
+  CHECK(rifle.force.z() == 0.0);
+  // Side spin curving right (axis tilted, ω has a -y part for +x travel) pushes toward +z.
+  const AeroEffect slice = aero_effect(m, rho, r, v, Vec3(0.0, -100.0, 300.0));
+  CHECK(slice.force.z() > 0.0);
+}
+
+TEST_CASE("unknown aero model lists the allowed names; the shipped models validate", "[aero][input]") {
+  try {
+    test::assets().aero("magic");
+    FAIL("no throw");
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    CHECK(what.find("magic") != std::string::npos);
+    CHECK(what.find("ferguson2022") != std::string::npos);
+    CHECK(what.find("nathan") != std::string::npos);
+  }
+  CHECK(test::assets().aero_models().size() == 3);
+  for (const AeroModel& m : test::assets().aero_models()) CHECK(validate_aero_model(m).empty());
+  AeroModel bad = test::assets().aero("ferguson2022");
+  bad.d0 = -1.0;  // drag pushing forward at low spin
+  CHECK(validate_aero_model(bad).find("Cd") != std::string::npos);
+  CHECK(test::assets().sport("golf").default_aero == "ferguson2022");
+  CHECK(test::assets().sport("baseball").default_aero == "nathan");
+}

@@ -1,0 +1,33 @@
+// Equipment validation: each field against the range beside it in physics/equipment.hpp.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "physics/equipment.hpp"
+#include "physics/error.hpp"
+#include "physics/units.hpp"
+
+using namespace sweetspot;
+using Catch::Matchers::Contains;
+
+TEST_CASE("physics-side validation names the field and range", "[equipment][validation]") {
+  ClubSpec c;
+  c.name = "test";
+  CHECK_NOTHROW(validate_club(c));
+  c.loft = deg_to_rad(95);
+  CHECK_THROWS_WITH(validate_club(c), Contains("club 'test': loft = 1.65806 rad is out of range (allowed [0, 1.22173] rad)"));
+  c = ClubSpec{};
+  c.cg = Vec3(0.01, 0, 0);
+  CHECK_THROWS_WITH(validate_club(c), Contains("behind the face"));
+  c = ClubSpec{};
+  c.inertia(0, 1) = 1e-4;  // asymmetric
+  CHECK_THROWS_WITH(validate_club(c), Contains("symmetric"));
+  BallSpec b;
+  b.inertia = 1.0;
+  CHECK_THROWS_WITH(validate_ball(b), Contains("inertia must be in"));
+  BatSpec bat;
+  bat.barrel_profile = {{0.0, 0.02}, {0.84, 0.033}};
+  CHECK_NOTHROW(validate_bat(bat));
+  bat.pivot_from_knob = 0.6;
+  CHECK_THROWS_WITH(validate_bat(bat), Contains("pivot_from_knob"));
+}

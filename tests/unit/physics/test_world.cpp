@@ -1,0 +1,204 @@
+// The Bullet world and the known traps: tunnelling, internal-edge bumps, resting, fences.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "physics/error.hpp"
+#include "physics/flight.hpp"
+#include "physics/units.hpp"
+#include "physics/world.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+using sweetspot::test::FlightCase;
+using sweetspot::test::fly;
+
+namespace {
+
+const AeroModel& vacuum() {
+  static const AeroModel m = [] {
+    AeroModel a;
+    a.name = "vacuum";
+    return a;
+  }();
+  return m;
+}
+
+/// A flat square [-half, half]² at height y, split into n×n cells of two triangles each.
+WorldMesh grid_plane(int material, double half, int n, double y = 0.0) {
+  WorldMesh m;
+  m.material = material;
+  const double step = 2.0 * half / n;
+  for (int k = 0; k <= n; ++k)
+    for (int i = 0; i <= n; ++i) m.vertices.emplace_back(-half + i * step, y, -half + k * step);
+  const auto at = [n](int i, int k) { return static_cast<std::uint32_t>(k * (n + 1) + i); };
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < n; ++i) {
+      // Counter-clockwise seen from above (+y): normal up.
+      m.indices.insert(m.indices.end(), {at(i, k), at(i, k + 1), at(i + 1, k)});
+      m.indices.insert(m.indices.end(), {at(i + 1, k), at(i, k + 1), at(i + 1, k + 1)});
+    }
+  return m;
+}
+
+SurfaceMaterial wall_material() {
+  SurfaceMaterial w;
+  w.name = "wall";
+  w.kind = SurfaceKind::Wall;
+  w.e = CorCurve::constant(0.5);
+  w.mu = 0.3;
+  return w;
+}
+
+WorldDescription plane_world(double half, int n) {
+  WorldDescription d;
+  d.name = "plane";
+  d.materials = {default_fairway()};
+  d.meshes = {grid_plane(0, half, n)};
+  d.bounds_min = Vec3(-half, -5.0, -half);
+  d.bounds_max = Vec3(half, 1000.0, half);
+  return d;
+}
+
+FlightCase golf(double mph, double deg, double rpm) { return test::golf_launch(mph, deg, rpm); }
+
+}  // namespace
+
+TEST_CASE("a world plane gives the same shot as the analytic flat ground", "[world]") {
+  const World world(plane_world(600.0, 1));
+  const FlightCase in = golf(167.0, 10.9, 2686.0);
+  const FlightSummary flat = fly(in).summary;
+  const FlightSummary mesh = fly(in, &world).summary;
+  CHECK(std::abs(mesh.carry_m - flat.carry_m) < 1e-6);
+  CHECK(std::abs(mesh.total_m - flat.total_m) < 1e-3);
+  CHECK(mesh.end == EndReason::Rest);
+}
+
+TEST_CASE("no tunnelling through a thin ground at 80 m/s", "[world][bullet-trap]") {
+  WorldDescription d = plane_world(400.0, 1);  // two triangles, zero thickness
+  const World world(d);
+  FlightCase in;
+  in.aero = &vacuum();
+  for (double deg : {-90.0, -60.0, -20.0}) {
+    INFO(deg);
+    in.launch = launch_from_metrics(80.0, deg_to_rad(deg), 0.0, 0.0, 0.0, Vec3(0.0, 3.0, 0.0));
+    const ShotTrajectory tr = fly(in, &world);
+    REQUIRE(tr.summary.bounces >= 1);
+    // Over the plane the ball never sinks below it (past its edge it may fall off the world).
+    for (const auto& s : tr.samples)
+      if (std::abs(s.position.x()) < 400.0 && std::abs(s.position.z()) < 400.0)
+        REQUIRE(s.position.y() >= in.ball.radius - 1e-9);
+  }
+}
+
+TEST_CASE("a ball rolling over a finely tessellated plane keeps a straight line", "[world][bullet-trap]") {
+  const World world(plane_world(20.0, 160));  // 0.25 m cells: 51200 triangles, many internal edges
+  REQUIRE(world.collision_triangles() == 2 * 160 * 160);
+  FlightCase in;
+  in.aero = &vacuum();
+  // Rolling diagonally across the grid at 17° so it crosses axis-aligned and diagonal edges.
+  const double a = deg_to_rad(17.0);
+  in.launch.position = Vec3(-15.0, in.ball.radius, -4.0);
+  in.launch.velocity = 4.0 * Vec3(std::cos(a), 0.0, std::sin(a));
+  in.launch.spin = Vec3::UnitY().cross(in.launch.velocity) / in.ball.radius;  // rolling
+  const ShotTrajectory tr = fly(in, &world);
+  REQUIRE(tr.summary.end == EndReason::Rest);
+  const Vec3 dir(std::cos(a), 0.0, std::sin(a));
+  double travelled = 0.0;
+  for (const auto& s : tr.samples) {
+    INFO(s.t);
+    REQUIRE(std::abs(s.position.y() - in.ball.radius) < 1e-9);  // never hops
+    const Vec3 off = s.position - in.launch.position;
+    REQUIRE((off - off.dot(dir) * dir).norm() < 1e-9);  // never deflects
+    travelled = off.dot(dir);
+  }
+  // Rolling resistance c·g: distance v²/(2cg) = 16 / (2 · 0.16 · 9.80665) = 5.10 m.
+  CHECK(travelled == Approx(16.0 / (2.0 * default_fairway().rolling_resistance * kGravity)).epsilon(1e-9));
+  CHECK(tr.summary.bounces <= 1);
+}
+
+TEST_CASE("balls come to rest: flat, gentle slope holds, steep slope runs downhill", "[world]") {
+  WorldDescription d;
+  d.name = "slopes";
+  SurfaceMaterial green = default_fairway();
+  green.name = "green";
+  green.kind = SurfaceKind::Green;
+  green.stimp = 3.2;
+  d.materials = {green};
+  // A plane tilted about z by `deg`, rising toward +x.
+  const auto tilted = [](double deg) {
+    WorldMesh m = grid_plane(0, 30.0, 12);
+    for (Vec3& v : m.vertices) v.y() = std::tan(deg_to_rad(deg)) * v.x();
+    return m;
+  };
+  FlightCase in;
+  in.aero = &vacuum();
+  in.launch.position = Vec3(0.0, in.ball.radius / std::cos(deg_to_rad(1.0)), 0.0);
+  d.meshes = {tilted(1.0)};  // 1.7 % < rolling resistance 0.053: holds
+  {
+    const World world(d);
+    const ShotTrajectory tr = fly(in, &world);
+    CHECK(tr.summary.end == EndReason::Rest);
+    CHECK(tr.summary.total_m < 0.01);
+    CHECK(tr.samples.back().velocity.norm() == 0.0);
+  }
+  d.meshes = {tilted(8.0)};  // 14 %: the slope wins and the ball runs down to -x
+  in.launch.position = Vec3(0.0, in.ball.radius / std::cos(deg_to_rad(8.0)) + 1e-6, 0.0);
+  {
+    const World world(d);
+    const ShotTrajectory tr = fly(in, &world);
+    CHECK(tr.summary.rest_position.x() < -5.0);
+    CHECK(tr.summary.end == EndReason::LeftWorld);  // it runs off the 30 m plane
+  }
+}
+
+TEST_CASE("a world without ground ends the shot (left the world) instead of hanging", "[world]") {
+  WorldDescription d;
+  d.name = "void";
+  d.materials = {default_fairway()};
+  d.bounds_min = Vec3(-100, -10, -100);
+  d.bounds_max = Vec3(100, 100, 100);
+  const World world(d);
+  const ShotTrajectory tr = fly(golf(100.0, 20.0, 5000.0), &world);
+  CHECK(tr.summary.end == EndReason::LeftWorld);
+}
+
+TEST_CASE("water holds the ball where it lands (the rules call it a hazard)", "[world]") {
+  WorldDescription d = plane_world(600.0, 1);
+  SurfaceMaterial water;
+  water.name = "water";
+  water.kind = SurfaceKind::Water;
+  d.materials = {water};
+  const World world(d);
+  const ShotTrajectory tr = fly(golf(167.0, 10.9, 2686.0), &world);
+  CHECK(tr.summary.end == EndReason::Rest);
+  CHECK(tr.summary.bounces == 0);
+  CHECK(tr.summary.total_m == Approx(tr.summary.carry_m));
+}
+
+TEST_CASE("world shots are bit-identical when repeated", "[world][determinism]") {
+  const World world(plane_world(300.0, 60));
+  const FlightCase in = golf(102.0, 24.2, 9304.0);
+  const ShotTrajectory a = fly(in, &world);
+  const ShotTrajectory b = fly(in, &world);
+  REQUIRE(a.samples.size() == b.samples.size());
+  for (size_t i = 0; i < a.samples.size(); ++i) REQUIRE(a.samples[i].position == b.samples[i].position);
+  CHECK(a.summary.total_m == b.summary.total_m);
+}
+
+TEST_CASE("degenerate meshes: NaN rejected with a clear message, zero-area triangles dropped", "[world][input]") {
+  WorldDescription d = plane_world(10.0, 1);
+  d.meshes[0].vertices[2].y() = std::nan("");
+  CHECK_THROWS_WITH(World(d), Catch::Contains("vertex 2") && Catch::Contains("finite"));
+  d = plane_world(10.0, 1);
+  d.meshes[0].vertices.push_back(Vec3(1, 0, 1));
+  d.meshes[0].indices.insert(d.meshes[0].indices.end(), {0, 0, 4});
+  const World world(d);
+  CHECK(world.collision_triangles() == 2);
+  REQUIRE(world.description().notes.size() == 1);
+  CHECK(world.description().notes[0].find("zero-area") != std::string::npos);
+  d.meshes[0].indices.push_back(99);
+  d.meshes[0].indices.push_back(0);
+  d.meshes[0].indices.push_back(1);
+  CHECK_THROWS_WITH(World(d), Catch::Contains("out of range"));
+}

@@ -1,0 +1,90 @@
+// The one way in: a ShotSpec built in code (as the game modes, the bench and a launch
+// monitor build one) resolves against the Assets context and runs like a scenario file.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "game/content/scenario.hpp"
+#include "game/core/run_shot.hpp"
+#include "physics/error.hpp"
+#include "physics/units.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+using Catch::Matchers::Contains;
+
+TEST_CASE("a ShotSpec in code and the scenario file of the same shot give the same bytes", "[run_shot]") {
+  const Assets& A = test::assets();
+  ShotSpec spec;
+  spec.sport = "golf";
+  ClubStrike c;
+  c.club = "7-iron";
+  c.swing.club_speed = mph_to_mps(90.0);
+  c.swing.attack_angle = deg_to_rad(-4.3);
+  spec.strike = c;
+  const ShotResult a = run_shot(resolve(spec, A), "code");
+  const ShotResult b = run_scenario(load_scenario(A, "golf/7-iron", {}));
+  CHECK(a.launch_state.velocity == b.launch_state.velocity);
+  CHECK(a.launch_state.spin == b.launch_state.spin);
+  CHECK(a.trajectory.summary.rest_position == b.trajectory.summary.rest_position);
+}
+
+TEST_CASE("resolve picks the sport's defaults and refuses a strike of the other sport", "[run_shot]") {
+  const Assets& A = test::assets();
+  ShotSpec golf;
+  const ResolvedShot g = resolve(golf, A);
+  CHECK(g.ball.name == "tour");
+  CHECK(g.club->name == "driver");
+  CHECK(g.aero->name == "ferguson2022");
+  CHECK(g.world_name == "golf_hole");
+  CHECK(g.start_surface == "tee");
+  // Teed up: the driver's tee height under the ball.
+  CHECK(g.ball_centre.y() - g.ground.y() == Approx(g.ball.radius + g.club_info->tee_height));
+  ShotSpec bad;
+  bad.strike = BatStrike{};
+  CHECK_THROWS_WITH(resolve(bad, A), Contains("bat strike") && Contains("golf"));
+  ShotSpec fast;
+  std::get<ClubStrike>(fast.strike).swing.club_speed = 200.0;
+  CHECK_THROWS_WITH(resolve(fast, A), Contains("swing.speed") && Contains("(0, 90] m/s"));
+  ShotSpec odd;
+  odd.impact.mu = 5.0;
+  CHECK_THROWS_WITH(resolve(odd, A), Contains("impact.mu = 5"));
+  ShotSpec sport;
+  sport.sport = "cricket";
+  CHECK_THROWS_WITH(resolve(sport, A), Contains("cricket") && Contains("golf, baseball"));
+}
+
+TEST_CASE("the putter needs no tee and no code: a putt rolls on the green", "[run_shot][putter]") {
+  const Assets& A = test::assets();
+  ShotSpec spec;
+  ClubStrike c;
+  c.club = "putter";
+  c.swing.club_speed = 1.5;  // a firm 3 m putt
+  spec.strike = c;
+  spec.placement.x = 400.0;  // on the green, short of the pin at 405 m
+  spec.placement.z = 3.0;
+  const ResolvedShot r = resolve(spec, A);
+  CHECK(r.start_surface == "green");
+  CHECK(r.ball_centre.y() - r.ground.y() == Approx(r.ball.radius));
+  const ShotResult s = run_shot(r, "putt");
+  CHECK(s.impactor_mesh == "putter_head");
+  CHECK(rad_to_deg(s.launch.vertical_angle) < 5.0);
+  CHECK(s.end == ShotEnd::Rest);
+  CHECK(s.trajectory.summary.total_m > 1.0);
+  CHECK(s.trajectory.summary.total_m < 8.0);
+}
+
+TEST_CASE("aim turns the shot on the world, not its launch numbers", "[run_shot]") {
+  const Assets& A = test::assets();
+  ShotSpec straight;
+  straight.world = "none";
+  ShotSpec right = straight;
+  right.placement.aim = deg_to_rad(10.0);
+  const ShotResult a = run_shot(resolve(straight, A), "a");
+  const ShotResult b = run_shot(resolve(right, A), "b");
+  CHECK(b.launch.ball_speed == a.launch.ball_speed);
+  CHECK(b.launch.horizontal_angle == a.launch.horizontal_angle);
+  const Vec3 pa = a.trajectory.summary.rest_position, pb = b.trajectory.summary.rest_position;
+  CHECK(std::hypot(pa.x(), pa.z()) == Approx(std::hypot(pb.x(), pb.z())).epsilon(1e-9));
+  CHECK(rad_to_deg(std::atan2(pb.z(), pb.x()) - std::atan2(pa.z(), pa.x())) == Approx(10.0).epsilon(1e-6));
+}

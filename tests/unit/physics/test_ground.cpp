@@ -1,0 +1,122 @@
+// Ground contact (physics/ground.hpp): the bounce through the impact solver with the ground
+// as an infinite mass, rolling resistance from a Stimpmeter reading (the USGA definition is
+// the test), and the turf crater tilt.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "physics/flight.hpp"
+#include "physics/ground.hpp"
+#include "physics/units.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+SurfaceMaterial rigid(double e, double mu) {
+  SurfaceMaterial m = default_fairway();
+  m.e = CorCurve::constant(e);
+  m.mu = mu;
+  m.crater_tilt = 0.0;
+  return m;
+}
+
+double ke(const BallProperties& b, const Vec3& v, const Vec3& w) {
+  return 0.5 * b.mass * v.squaredNorm() + 0.5 * b.inertia * w.squaredNorm();
+}
+
+}  // namespace
+
+TEST_CASE("a vertical drop rebounds at e times the impact speed, no spin made", "[ground][bounce]") {
+  const BallProperties ball = golf_ball_properties();
+  const BounceResult b = bounce_on_surface(rigid(0.6, 0.4), Vec3::UnitY(), Vec3(0, -5, 0), Vec3::Zero(), ball);
+  CHECK(b.velocity.y() == Approx(3.0).epsilon(1e-12));
+  CHECK(b.velocity.x() == Approx(0.0).margin(1e-12));
+  CHECK(b.spin.norm() == Approx(0.0).margin(1e-9));
+}
+
+TEST_CASE("an oblique bounce that grips leaves the ball rolling (v = ωR) and loses energy", "[ground][bounce]") {
+  // The worked friction case of DESIGN §3: a solid sphere at 10 m/s normal, 1 m/s tangential,
+  // e = 0.5, µ = 0.4: it grips and leaves rolling at 5/7 of the tangential speed.
+  const BallProperties ball = golf_ball_properties();
+  const BounceResult b = bounce_on_surface(rigid(0.5, 0.4), Vec3::UnitY(), Vec3(1, -10, 0), Vec3::Zero(), ball);
+  CHECK(b.impact.contact == ContactKind::Grip);
+  CHECK(b.velocity.x() == Approx(5.0 / 7.0).epsilon(1e-9));
+  CHECK(b.velocity.y() == Approx(5.0).epsilon(1e-9));
+  // Rolling contact: the bottom of the ball is at rest, v + ω × (-R ŷ) has no x part.
+  CHECK((b.velocity + b.spin.cross(-ball.radius * Vec3::UnitY())).x() == Approx(0.0).margin(1e-9));
+  CHECK(ke(ball, b.velocity, b.spin) < ke(ball, Vec3(1, -10, 0), Vec3::Zero()));
+}
+
+TEST_CASE("bounces never create energy, whatever the spin, angle or surface", "[ground][bounce][property]") {
+  const BallProperties ball = golf_ball_properties();
+  std::uint64_t s = 7;
+  auto u = [&s] {
+    s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(s >> 11) * 0x1.0p-53;
+  };
+  for (int i = 0; i < 20000; ++i) {
+    SurfaceMaterial m = rigid(u(), 2.0 * u());
+    m.crater_tilt = 0.6 * u();
+    const Vec3 n = Vec3(0.3 * (u() - 0.5), 1.0, 0.3 * (u() - 0.5)).normalized();
+    const Vec3 v(60.0 * (u() - 0.5), -30.0 * u() - 0.1, 60.0 * (u() - 0.5));
+    const Vec3 w(800.0 * (u() - 0.5), 800.0 * (u() - 0.5), 800.0 * (u() - 0.5));
+    const BounceResult b = bounce_on_surface(m, n, v, w, ball);
+    INFO(i);
+    REQUIRE(ke(ball, b.velocity, b.spin) <= ke(ball, v, w) * (1 + 1e-12));
+  }
+}
+
+TEST_CASE("the crater tilt grows with speed and incidence, and the ball is never sent into the ground",
+          "[ground][crater]") {
+  SurfaceMaterial green = default_fairway();
+  green.crater_tilt = deg_to_rad(15.4);  // Penner 2002's green at 18.6 m/s, 44.4°
+  const BallProperties ball = golf_ball_properties();
+  const auto tilt = [&](double speed, double incidence_deg) {
+    const double a = deg_to_rad(incidence_deg);
+    const BounceResult b = bounce_on_surface(green, Vec3::UnitY(), speed * Vec3(std::cos(a), -std::sin(a), 0),
+                                             Vec3::Zero(), ball);
+    return rad_to_deg(std::acos(std::clamp(b.normal.dot(Vec3::UnitY()), -1.0, 1.0)));
+  };
+  // (The code's reference incidence 0.77493 rad is 44.4002°: 1e-5 covers that rounding.)
+  CHECK(tilt(18.6, 44.4) == Approx(15.4).epsilon(1e-5));  // the reference impact
+  CHECK(tilt(9.3, 44.4) == Approx(7.7).epsilon(1e-5));    // linear in speed
+  CHECK(tilt(18.6, 22.2) == Approx(7.7).epsilon(1e-5));   // linear in incidence
+  CHECK(tilt(40.0, 60.0) <= 2.0 * 15.4 + 1e-9);           // capped at twice the reference
+  CHECK(tilt(5.0, 90.0 - 1e-9) >= 0.0);
+}
+
+TEST_CASE("a Stimpmeter ball released at 1.83 m/s rolls the reading on a flat green", "[ground][stimp]") {
+  // USGA Stimpmeter: the ball leaves the ramp at 6 ft/s (1.83 m/s) rolling; the distance it
+  // rolls on a flat green is the reading. 10.5 ft = 3.2 m.
+  SurfaceMaterial green = default_fairway();
+  green.name = "green";
+  green.kind = SurfaceKind::Green;
+  green.stimp = ft_to_m(10.5);
+  CHECK(rolling_resistance_from_stimp(green.stimp) == Approx(1.83 * 1.83 / (2 * 9.80665 * 3.2004)).epsilon(1e-12));
+  const FlatGround flat(green);
+  test::FlightCase c;
+  c.aero = &test::assets().aero("ferguson2022");
+  c.launch.position = Vec3(0, c.ball.radius, 0);
+  c.launch.velocity = Vec3(1.83, 0, 0);
+  c.launch.spin = Vec3(0, 0, -1.83 / c.ball.radius);  // rolling forward
+  const ShotTrajectory t = test::fly(c, &flat);
+  CHECK(t.summary.end == EndReason::Rest);
+  // Air drag on a 1.8 m/s roll is ~1 % of the turf's resistance.
+  CHECK(t.summary.total_m == Approx(green.stimp).epsilon(0.02));
+}
+
+TEST_CASE("surface validation names the material, the field and its range", "[ground][input]") {
+  SurfaceMaterial m = default_fairway();
+  m.mu = 3.0;
+  CHECK(validate_surface_material(m).find("material 'fairway': mu = 3 is out of range (allowed [0, 2])") !=
+        std::string::npos);
+  m = default_fairway();
+  m.stimp = 10.0;
+  CHECK(validate_surface_material(m).find("stimp") != std::string::npos);
+  m = default_fairway();
+  m.e.cor[1] = 1.5;
+  CHECK(validate_surface_material(m).find("e = 1.5") != std::string::npos);
+  CHECK(validate_surface_material(default_fairway()).empty());
+}

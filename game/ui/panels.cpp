@@ -34,9 +34,9 @@ bool slider(UiState& st, std::uint8_t strikes, const char* label, const std::str
   const float lo = static_cast<float>(si_to_unit(r.min, unit, spec->dim));
   const float hi = static_cast<float>(si_to_unit(r.max, unit, spec->dim));
   float v = static_cast<float>(si_to_unit(si_value, unit, spec->dim));
-  char shown[64];
-  std::snprintf(shown, sizeof shown, "%s %s", fmt, unit.c_str());
-  if (ImGui::SliderFloat(label, &v, lo, hi, shown, ImGuiSliderFlags_AlwaysClamp)) {
+  std::string shown = std::string(fmt) + " ";
+  for (const char ch : unit) shown += ch == '%' ? std::string("%%") : std::string(1, ch);  // a format string
+  if (ImGui::SliderFloat(label, &v, lo, hi, shown.c_str(), ImGuiSliderFlags_AlwaysClamp)) {
     st.set(key, quantity_text(v, unit));
     return true;
   }

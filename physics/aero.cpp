@@ -8,15 +8,17 @@
 #include "physics/units.hpp"
 
 namespace sweetspot {
-AeroCoefficients AeroModel::coefficients(double s, double spin) const {
+AeroCoefficients AeroModel::coefficients(double s, double spin, double re) const {
   const double sc = std::min(s, s_max);
   AeroCoefficients c;
   c.cd = d0 + d1 * sc + d2 * sc * sc + d_krpm * (radps_to_rpm(spin) / 1000.0);
+  if (crisis_rise > 0.0) c.cd += crisis_rise / (1.0 + std::exp(std::clamp((re - crisis_re) / crisis_width, -50.0, 50.0)));
   switch (lift) {
     case LiftLaw::Quadratic: c.cl = l0 + l1 * sc + l2 * sc * sc; break;
     case LiftLaw::Power: c.cl = sc > 0.0 ? l1 * std::pow(sc, l2) : 0.0; break;
     case LiftLaw::Saturating: c.cl = l1 * sc / (l0 + l2 * sc); break;
   }
+  if (lift_onset > 0.0 && sc < lift_onset) c.cl *= sc / lift_onset;
   return c;
 }
 
@@ -45,10 +47,14 @@ bool lift_law_from_string(std::string_view name, LiftLaw* out) {
 
 std::string validate_aero_model(const AeroModel& m) {
   const std::string who = "aero model '" + m.name + "': ";
-  for (double c : {m.d0, m.d1, m.d2, m.d_krpm, m.l0, m.l1, m.l2, m.s_max, m.decay_per_metre, m.decay_tau})
+  for (double c : {m.d0, m.d1, m.d2, m.d_krpm, m.l0, m.l1, m.l2, m.s_max, m.decay_per_metre, m.decay_tau,
+                   m.lift_onset, m.crisis_re, m.crisis_rise, m.crisis_width})
     if (!std::isfinite(c)) return who + "coefficients must be finite numbers";
   if (!(m.s_max > 0.0)) return who + "s_max must be > 0";
   if (!(m.decay_per_metre >= 0.0) || !(m.decay_tau >= 0.0)) return who + "spin decay terms must be >= 0";
+  if (!(m.lift_onset >= 0.0 && m.lift_onset < m.s_max)) return who + "lift_onset must be in [0, s_max)";
+  if (!(m.crisis_rise >= 0.0 && m.crisis_re >= 0.0 && m.crisis_width > 0.0))
+    return who + "drag crisis: re and rise must be >= 0, width > 0";
   if (m.lift == LiftLaw::Saturating && !(m.l0 > 0.0 && m.l2 >= 0.0))
     return who + "a saturating lift law needs l0 > 0 and l2 >= 0 (no pole at positive S)";
   // Drag must stay positive over the fitted range, or the ball would be pushed forward.
@@ -60,7 +66,7 @@ std::string validate_aero_model(const AeroModel& m) {
 }
 
 AeroEffect aero_effect(const AeroModel& model, double density, double radius, const Vec3& v_rel,
-                       const Vec3& omega) {
+                       const Vec3& omega, double viscosity) {
   AeroEffect fx;
   const double speed = v_rel.norm();
   const double spin = omega.norm();
@@ -69,7 +75,8 @@ AeroEffect aero_effect(const AeroModel& model, double density, double radius, co
   const Vec3 lift_dir_unnorm = omega.cross(v_rel);  // |ω × v_r| = ω⊥ |v_r|
   const double w_perp = lift_dir_unnorm.norm() / speed;
   const double s = radius * w_perp / speed;
-  const AeroCoefficients c = model.coefficients(s, spin);
+  const double re = density * speed * 2.0 * radius / viscosity;
+  const AeroCoefficients c = model.coefficients(s, spin, re);
   const double q_area = 0.5 * density * kPi * radius * radius;  // ½ρA
   fx.force = -q_area * c.cd * speed * v_rel;
   if (w_perp > 0.0) fx.force += q_area * c.cl * speed * speed * (lift_dir_unnorm / (w_perp * speed));

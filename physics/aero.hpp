@@ -38,13 +38,20 @@ struct AeroModel {
   /// Upper end of the fitted S range; S is held there beyond it so a quadratic fit does
   /// not turn over (slow, high-spin balls late in a wedge's descent reach S ~ 0.5+).
   double s_max = 1e9;
+  /// Below this S the lift falls linearly to 0 at S = 0: a ball that does not spin has no
+  /// Magnus lift by symmetry, whatever a fit's intercept says (0 = the law as written).
+  double lift_onset = 0.0;
+  /// Drag crisis: below the critical Reynolds number the boundary layer stays laminar and
+  /// Cd rises by crisis_rise, Cd += rise / (1 + exp((Re − re)/width)). 0 = none.
+  double crisis_re = 0.0, crisis_rise = 0.0, crisis_width = 1.0;
   /// Spin decay dω/dt = -ω (decay_per_metre·|v_r| + 1/decay_tau). Golf: ~4 %/s at a
   /// driver's 74.7 m/s, proportional to speed -> 5.36e-4 1/m. Nathan: tau ≈ 30 s.
   double decay_per_metre = 0.0;  ///< 1/m
   double decay_tau = 0.0;        ///< s; 0 = no speed-independent term
 
-  /// Coefficients at spin parameter `s` (≥ 0) and total spin rate `spin` (rad/s).
-  AeroCoefficients coefficients(double s, double spin) const;
+  /// Coefficients at spin parameter `s` (≥ 0), total spin rate `spin` (rad/s) and Reynolds
+  /// number `re` (ρ|v|D/µ; a driver launches at ~2e5). Continuous in all three.
+  AeroCoefficients coefficients(double s, double spin, double re = 2e5) const;
   /// Spin decay rate (1/s) at air speed `speed` (m/s).
   double spin_decay_rate(double speed) const;
 };
@@ -63,7 +70,8 @@ struct AeroEffect {
   Vec3 force = Vec3::Zero();
   Vec3 spin_rate = Vec3::Zero();
 };
+/// `viscosity`: the air's dynamic viscosity, Pa·s (air_viscosity(); 1.81e-5 at 20 °C).
 AeroEffect aero_effect(const AeroModel& model, double density, double radius, const Vec3& v_rel,
-                       const Vec3& omega);
+                       const Vec3& omega, double viscosity = 1.81e-5);
 
 }  // namespace sweetspot

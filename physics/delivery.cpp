@@ -53,6 +53,63 @@ void solve_into(Delivery& d, const char* who) {
   d.impact = solve_impact(d.impact_input);
 }
 
+/// The impact with duration when the ball has a contact layer and the model asks for it;
+/// the textbook's friction law is an instantaneous impulse by definition.
+bool uses_duration(const BallSpec& ball, const ImpactMaterial& m) {
+  return ball.compliance.stiffness > 0.0 && m.model == ImpactModel::Compliant && m.friction != FrictionModel::Textbook;
+}
+
+void solve_compliant_into(Delivery& d, CompliantImpactInput& in, const char* who) {
+  const double closing = -contact_velocity(d.impact_input.impactor, d.impact_input.ball).dot(d.impact_input.normal);
+  if (closing <= 0.0) {
+    std::ostringstream os;
+    os << who << ": the strike misses: at this contact point the " << (std::string(who).starts_with("golf") ? "club" : "bat")
+       << " does not close on the ball (closing speed " << closing
+       << " m/s along the contact normal); hit nearer the centre or swing faster";
+    throw InputError(os.str());
+  }
+  if (auto msg = validate_compliant_impact(in); !msg.empty()) throw InputError(std::string(who) + ": " + msg);
+  const CompliantImpactResult r = solve_compliant_impact(in);
+  ImpactResult& out = d.impact;
+  out.impulse = r.impulse;
+  out.normal_impulse = r.normal_impulse;
+  out.tangential_impulse = r.tangential_impulse;
+  out.e_used = r.e_used;
+  out.contact = r.contact;
+  out.energy_loss = r.energy_loss;
+  out.impactor_after = d.impact_input.impactor;
+  out.impactor_after.velocity = r.impactor_after.velocity;
+  out.impactor_after.angular_velocity = r.impactor_after.angular_velocity;
+  out.ball_after = d.impact_input.ball;
+  out.ball_after.velocity = r.ball_after.velocity;
+  out.ball_after.angular_velocity = r.ball_after.angular_velocity;
+  // The tangential restitution the contact produced, in the instantaneous model's terms:
+  // the contact point's tangential velocity after, against before, at the first touch.
+  const Vec3& n = d.impact_input.normal;
+  const Vec3 u0 = contact_velocity(d.impact_input.impactor, d.impact_input.ball);
+  const Vec3 u1 = contact_velocity(out.impactor_after, out.ball_after);
+  const Vec3 ut0 = u0 - u0.dot(n) * n;
+  out.e_t_used = ut0.norm() > 1e-9 ? -(u1 - u1.dot(n) * n).dot(ut0) / ut0.squaredNorm() : 0.0;
+  d.compliant = true;
+  d.contact_time = r.duration;
+  d.impactor_separated = r.impactor_after;
+  d.ball_separated = r.ball_after;
+}
+
+/// The bodies at first touch, and at separation for the instantaneous impulse (same poses,
+/// new velocities); the compliant solve has already set its own separated poses.
+void record_bodies(Delivery& d, const RigidBody& impactor, const RigidBody& ball) {
+  d.impactor_before = impactor;
+  d.ball_before = ball;
+  if (d.compliant) return;
+  d.impactor_separated = impactor;
+  d.impactor_separated.velocity = d.impact.impactor_after.velocity;
+  d.impactor_separated.angular_velocity = d.impact.impactor_after.angular_velocity;
+  d.ball_separated = ball;
+  d.ball_separated.velocity = d.impact.ball_after.velocity;
+  d.ball_separated.angular_velocity = d.impact.ball_after.angular_velocity;
+}
+
 }  // namespace
 
 void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
@@ -63,7 +120,8 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
               GolfSwing::kDynamicLoft, "rad");
   check_range("swing.face_angle", w.face_angle, GolfSwing::kFaceAngle, "rad");
   check_range("swing.impact_offset[0] (toe)", w.impact_toe, GolfSwing::kImpactToe, "m");
-  check_range("swing.impact_offset[1] (up)", w.impact_up, GolfSwing::kImpactUp, "m");
+  check_range("swing.impact_offset[1] (up)", std::isnan(w.impact_up) ? club.strike_height : w.impact_up,
+              GolfSwing::kImpactUp, "m");
   check_range("swing.closure_rate", w.closure_rate, GolfSwing::kClosureRate, "rad/s");
 }
 
@@ -104,7 +162,7 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
   const Mat3 rot = q.toRotationMatrix();
 
   // Contact point and normal on the curved face, head frame.
-  const double toe = swing.impact_toe, up = swing.impact_up;
+  const double toe = swing.impact_toe, up = std::isnan(swing.impact_up) ? club.strike_height : swing.impact_up;
   const Vec3 p_head(-(toe * toe / (2.0 * club.bulge_radius) + up * up / (2.0 * club.roll_radius)), up, toe);
   const Vec3 n_head = Vec3(1.0, up / club.roll_radius, toe / club.bulge_radius).normalized();
   const Vec3 n = (rot * n_head).normalized();
@@ -124,7 +182,7 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
   const Vec3 omega = swing.closure_rate * shaft_axis;
 
   RigidBody head;
-  head.mass = club.head_mass;
+  head.mass = club.head_mass + club.shaft_tip_mass;
   head.inertia_body = club.inertia;
   head.orientation = q;
   head.position = face_centre + rot * club.cg;
@@ -136,24 +194,28 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
   b.inertia_body = Mat3::Identity() * ball.inertia;
   b.position = ball_centre;
 
-  // The deformed ball's pressure centre runs ahead of the touch point by contact_offset in
-  // the direction the ball slides across the face (BallSpec::contact_offset). Both bodies
-  // take the impulse there, so momentum stays exactly conserved. The ball deforms that way
-  // because the face drags its surface: with no traction (µ = 0, or the frictionless
-  // teaching model) there is no drag, the contact stays a rigid point, and a frictionless
-  // strike leaves the ball without spin, as the textbook has it.
-  Vec3 contact = touch;
-  const Vec3 slide = -head.point_velocity(touch);  // ball at rest: u = -v_head(P)
-  const Vec3 slide_t = slide - slide.dot(n) * n;
-  const bool traction = material.friction != FrictionModel::None && material.mu > 0.0;
-  if (traction && slide_t.norm() > 1e-9 * slide.norm()) contact += ball.contact_offset * slide_t.normalized();
-
   Delivery d;
-  d.impact_input.impactor = make_impact_body(head, contact, "club '" + club.name + "'");
-  d.impact_input.ball = make_impact_body(b, contact, "ball '" + ball.name + "'");
+  d.impact_input.impactor = make_impact_body(head, touch, "club '" + club.name + "'");
+  d.impact_input.ball = make_impact_body(b, touch, "ball '" + ball.name + "'");
   d.impact_input.normal = n;
   d.impact_input.material = material;
-  solve_into(d, "golf delivery");
+  if (uses_duration(ball, material)) {
+    CompliantImpactInput in;
+    in.impactor = head;
+    in.surface_origin = -club.cg;  // the face centre seen from the head's CG, head axes
+    in.surface.kind = ImpactSurface::Kind::Face;
+    in.surface.bulge_radius = club.bulge_radius;
+    in.surface.roll_radius = club.roll_radius;
+    in.ball = b;
+    in.ball_radius = ball.radius;
+    in.contact.ball = ball.compliance;
+    in.contact.material = material;
+    in.contact.cor_factor = club.face_cor_factor(toe, up);
+    solve_compliant_into(d, in, "golf delivery");
+  } else {
+    solve_into(d, "golf delivery");
+  }
+  record_bodies(d, head, b);
 
   d.launch = launch_of(d.impact, ball_centre);
   d.impactor_at_impact = ImpactorPose{face_centre, q, v_face, omega};
@@ -218,17 +280,32 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   b.velocity = pitched.velocity;
   b.angular_velocity = pitched.spin;
 
-  // Barrel vibrations: restitution falls away from the node (BatSpec::cor_profile).
-  ImpactMaterial m = material;
-  const double factor = bat.cor_factor_at(swing.impact_from_tip);
-  for (int i = 0; i < m.e.count; ++i) m.e.cor[static_cast<size_t>(i)] *= factor;
-
   Delivery dl;
   dl.impact_input.impactor = make_impact_body(batb, contact, "bat '" + bat.name + "'");
   dl.impact_input.ball = make_impact_body(b, contact, "ball '" + ball.name + "'");
   dl.impact_input.normal = n;
-  dl.impact_input.material = m;
-  solve_into(dl, "baseball delivery");
+  // Barrel vibrations: restitution falls away from the node (BatSpec::cor_profile).
+  const double factor = bat.cor_factor_at(swing.impact_from_tip);
+  if (uses_duration(ball, material)) {
+    CompliantImpactInput in;
+    in.impactor = batb;
+    in.surface_origin = Vec3(-bat.cg_from_knob, 0.0, 0.0);  // the knob seen from the CG, bat axes
+    in.surface.kind = ImpactSurface::Kind::Barrel;
+    in.surface.bat = &bat;
+    in.ball = b;
+    in.ball_radius = ball.radius;
+    in.contact.ball = ball.compliance;
+    in.contact.material = material;
+    in.contact.cor_factor = factor;
+    dl.impact_input.material = material;
+    solve_compliant_into(dl, in, "baseball delivery");
+  } else {
+    ImpactMaterial m = material;
+    for (int i = 0; i < m.e.count; ++i) m.e.cor[static_cast<size_t>(i)] *= factor;
+    dl.impact_input.material = m;
+    solve_into(dl, "baseball delivery");
+  }
+  record_bodies(dl, batb, b);
 
   dl.launch = launch_of(dl.impact, ball_centre);
   dl.impactor_at_impact = ImpactorPose{knob, q, batb.point_velocity(knob), omega};

@@ -6,6 +6,7 @@
 
 #include <limits>
 
+#include "physics/compliant_impact.hpp"
 #include "physics/equipment.hpp"
 #include "physics/impact.hpp"
 #include "physics/launch.hpp"
@@ -30,7 +31,9 @@ struct GolfSwing {
   static constexpr Range kFaceAngle{deg_to_rad(-30.0), deg_to_rad(30.0)};
   double impact_toe = 0;       ///< m from the face centre, + toward the toe; ±20 mm is a big miss
   static constexpr Range kImpactToe{-0.05, 0.05};  ///< half a driver face (~110 mm wide)
-  double impact_up = 0;        ///< m from the face centre, + up the face
+  /// m from the face centre, + up the face; NaN -> club.strike_height (the tour player's
+  /// usual strike: the driver's is high on the face, every other club's at the centre).
+  double impact_up = std::numeric_limits<double>::quiet_NaN();
   static constexpr Range kImpactUp{-0.03, 0.03};   ///< half a driver face (~60 mm tall)
   double closure_rate = 0;     ///< rad/s about the shaft axis, + closing; tour ~ 30–40 rad/s
   static constexpr Range kClosureRate{-110.0, 110.0};  ///< ±6300 deg/s, ~3x a tour player's
@@ -82,9 +85,17 @@ struct ImpactorPose {
 };
 
 struct Delivery {
-  LaunchState launch;               ///< ball state at separation
-  ImpactResult impact;              ///< the solve (impulses, contact kind, energy)
-  ImpactInput impact_input;         ///< what was solved (for diagnostics and tests)
+  LaunchState launch;               ///< ball state at separation (position: its centre before impact)
+  /// The solve (impulses, contact kind, energy; e_t_used is the tangential restitution the
+  /// contact produced: −u_t'·û_t / |u_t| at the first contact point).
+  ImpactResult impact;
+  ImpactInput impact_input;         ///< the instantaneous model's input at first touch (diagnostics, tests)
+  bool compliant = false;           ///< solved with duration (physics/compliant_impact.hpp)
+  double contact_time = 0.0;        ///< s the ball was on the face (compliant), 0 for the rigid impulse
+  /// The two bodies as they first touch and as they separate (world frame, CG poses). The
+  /// instantaneous impulse leaves the poses where they were; the impact with duration moves
+  /// and turns them. Momentum and angular momentum balances use these (tests).
+  RigidBody impactor_before, ball_before, impactor_separated, ball_separated;
   ImpactorPose impactor_at_impact;  ///< for rendering
   double impactor_speed = 0;        ///< m/s, club head / bat at the contact point before impact
   double smash_factor = 0;          ///< ball speed / impactor_speed

@@ -18,6 +18,25 @@
 
 namespace sweetspot {
 
+/// A ball's contact layer for the impact with duration (physics/compliant_impact.hpp).
+struct BallCompliance {
+  /// N/m^1.5, Hertz coefficient of F = k δ^{3/2}. Set from a measured contact time (a golf
+  /// ball is on a driver's face ~0.45 ms at 45 m/s; a baseball on a bat ~0.7 ms). 0 = rigid:
+  /// deliveries then use the instantaneous impulse of physics/impact.hpp.
+  double stiffness = 0.0;
+  static constexpr Range kStiffness{0.0, 1e12};
+  /// Poisson's ratio of the ball's rubber; the Mindlin ratio of tangential to normal contact
+  /// stiffness is 2(1−ν)/(2−ν) (0.67 for ν = 0.5). Rubber cores ~0.48.
+  double poisson = 0.48;
+  static constexpr Range kPoisson{0.0, 0.5};
+  /// The rubber's hysteresis in shear relative to compression: the tangential spring is
+  /// damped by this × the Mindlin ratio × the normal law's Hunt–Crossley damping. 0 = an
+  /// elastic shear spring (the ball's tangential rebound rings undamped); tour ball 2.0,
+  /// fitted to TrackMan's PGA irons and woods (balls.toml).
+  double tangential_damping = 1.0;
+  static constexpr Range kTangentialDamping{0.0, 10.0};
+};
+
 struct BallSpec {
   std::string name;     ///< "tour" (golf), "mlb" (baseball)
   double mass = 0.04593;    ///< kg; golf 45.93 g (USGA max), baseball 0.145
@@ -25,12 +44,7 @@ struct BallSpec {
   double radius = 0.021335; ///< m; golf 42.67 mm diameter, baseball 36.9 mm radius
   static constexpr Range kRadius{0.01, 0.1};
   double inertia = 8.363e-6;///< kg·m² about any diameter; 0.4 m R² for both balls (DESIGN §3)
-  /// m. A deforming ball's contact pressure centre runs ahead of its centre of mass in the
-  /// direction it slides across the face (as in rolling resistance), so the normal impulse
-  /// acts on a line offset by this distance and opposes the spin friction builds. McNally,
-  /// McPhee & Henrikson (Waterloo/Ping, Proc. ISEA 2020, 49:47) fit ~0.5 mm to measured
-  /// driver impacts, removing ~85 % of a rigid model's backspin error. 0 = rigid ball.
-  double contact_offset = 0.0;
+  BallCompliance compliance;  ///< the contact layer the compliant impact presses (physics/compliant_impact.hpp)
 };
 
 struct ClubSpec {
@@ -40,7 +54,15 @@ struct ClubSpec {
   double lie = 1.03;     ///< rad, static lie; driver ~59°, 7-iron ~62.5°, putter ~70°
   static constexpr Range kLie{deg_to_rad(40.0), deg_to_rad(80.0)};
   double dynamic_loft = 0.22;  ///< rad, typical delivered loft of a tour player (scenario default); range GolfSwing::kDynamicLoft
+  /// m above the face centre where a tour player usually strikes the ball (scenario default
+  /// of the impact's up offset): ~+10 mm on a driver teed high, 0 for the other clubs.
+  double strike_height = 0.0;  ///< range GolfSwing::kImpactUp
   double head_mass = 0.204;    ///< kg; driver 204 g, 7-iron ~267 g, putter ~350 g
+  /// kg of shaft tip that moves with the head during the ~0.45 ms contact (a bending wave
+  /// travels ~0.1 m of shaft in that time): McNally, McPhee & Henrikson (ISEA 2020) needed
+  /// ~3 g on a measured driver to match measured ball speeds. Added to the head's mass.
+  double shaft_tip_mass = 0.0;
+  static constexpr Range kShaftTipMass{0.0, 0.05};
   static constexpr Range kHeadMass{0.05, 1.0};
   /// The scenario's club.head_mass override is this range too.
   Vec3 cg{-0.0423, 0.0, 0.0};  ///< m, CG in the head frame (x < 0: behind the face)
@@ -49,6 +71,17 @@ struct ClubSpec {
   double roll_radius = 0.305;  ///< m, sole-crown face curvature; irons ~10 m (flat)
   static constexpr Range kFaceRadius{0.1, 1000.0};  ///< bulge and roll
   ImpactMaterial face;         ///< ball–face e curve, e_t, µ, friction model
+  /// The face's size (half-width heel-toe, half-height sole-crown, m) and its COR map: the
+  /// ball–face COR falls toward the edges of the face (the face flexes, and the head's mass
+  /// backs it, less there), e × (1 − cor_edge_drop·r⁴), r² = (toe/w)² + (up/h)². A driver face is
+  /// ~110 × 56 mm; irons ~76 × 46 mm.
+  double face_half_width = 0.055;
+  double face_half_height = 0.028;
+  static constexpr Range kFaceHalfSize{0.005, 0.1};
+  double cor_edge_drop = 0.0;
+  static constexpr Range kCorEdgeDrop{0.0, 0.5};
+  /// The COR map's factor at an impact `toe`, `up` (m) from the face centre, in (0, 1].
+  double face_cor_factor(double toe, double up) const;
   double length = 1.14;        ///< m, shaft length (display and rendering only); putter ~0.86
   static constexpr Range kLength{0.5, 1.3};
 };

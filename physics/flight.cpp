@@ -27,6 +27,8 @@ ShotModel make_shot_model(const BallProperties& ball, const AeroModel& aero, con
   check_range("flight.max_steps", settings.max_steps, FlightSettings::kMaxSteps, "");
   check_range("flight.roll_speed", settings.roll_speed, FlightSettings::kRollSpeed, "m/s");
   check_range("flight.rest_speed", settings.rest_speed, FlightSettings::kRestSpeed, "m/s");
+  check_range("world.firmness", settings.ground_firmness, kFirmness, "");
+  if (settings.green_stimp != 0.0) check_range("world.stimp", settings.green_stimp, SurfaceMaterial::kStimp, "m");
   // The flat default ground is immutable, so one instance serves every thread.
   static const FlatGround flat;
   ShotModel m;
@@ -36,6 +38,7 @@ ShotModel make_shot_model(const BallProperties& ball, const AeroModel& aero, con
   m.terrain = terrain != nullptr ? terrain : &flat;
   m.settings = settings;
   m.air_density = air_density(environment);
+  m.air_viscosity = air_viscosity(environment.temperature);
   return m;
 }
 

@@ -48,6 +48,11 @@ struct FlightSettings {
   static constexpr Range kRollSpeed{0.0, 5.0};
   double rest_speed = 0.02;      ///< m/s; below it a ball that the slope cannot move is at rest
   static constexpr Range kRestSpeed{0.0, 1.0, true};
+  /// The turf's stiffness relative to the world's materials (1 = as measured): firmer turf
+  /// digs shallower craters (crater_tilt_at). 0.25 soaked ... 4 baked; range kFirmness.
+  double ground_firmness = 1.0;
+  /// m; the greens' Stimpmeter reading for this shot, 0 = the world's own.
+  double green_stimp = 0.0;      ///< range SurfaceMaterial::kStimp when set
 };
 
 /// What a shot flies through and lands on: read-only while it runs. Make it with
@@ -59,6 +64,7 @@ struct ShotModel {
   const Terrain* terrain = nullptr;   ///< never null after make_shot_model (flat fairway by default)
   FlightSettings settings;
   double air_density = 0.0;           ///< kg/m³, from environment
+  double air_viscosity = 1.81e-5;     ///< Pa·s, from environment (Sutherland)
 };
 
 /// Validates (throws InputError naming the field and its range) and builds the model.

@@ -88,6 +88,11 @@ double rolling_resistance_from_stimp(double stimp) {
   return kStimpReleaseSpeed * kStimpReleaseSpeed / (2.0 * kGravity * stimp);
 }
 
+double rolling_resistance_from_stimp(double stimp, double k) {
+  if (!(k > 1e-9)) return rolling_resistance_from_stimp(stimp);
+  return k * kStimpReleaseSpeed * kStimpReleaseSpeed / (kGravity * std::expm1(2.0 * k * stimp));
+}
+
 double effective_rolling_resistance(const SurfaceMaterial& m) {
   return m.stimp > 0.0 ? rolling_resistance_from_stimp(m.stimp) : m.rolling_resistance;
 }
@@ -108,28 +113,11 @@ SurfaceMaterial default_fairway() {
   return m;
 }
 
-BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal, const Vec3& velocity,
-                               const Vec3& spin, const BallProperties& ball) {
-  BounceResult out;
-  out.velocity = velocity;
-  out.spin = spin;
-  out.normal = face_normal;
-  const double vn = velocity.dot(face_normal);
-  if (vn >= 0.0) return out;  // not approaching: nothing to resolve
+namespace {
 
-  Vec3 n = face_normal;
-  const Vec3 vt = velocity - vn * face_normal;
-  const double vt_norm = vt.norm();
-  if (m.crater_tilt > 0.0 && vt_norm > 1e-9) {
-    // The ball digs a crater whose far wall faces back against the motion.
-    const double incidence = std::atan2(-vn, vt_norm);
-    const double tilt = std::min(m.crater_tilt * (velocity.norm() / kCraterReferenceSpeed) *
-                                     (incidence / kCraterReferenceAngle),
-                                 std::min(2.0 * m.crater_tilt, 0.6));
-    n = std::cos(tilt) * face_normal - std::sin(tilt) * (vt / vt_norm);
-  }
-  out.normal = n;
-
+// The rigid bounce off a plane with normal n (the ground an infinite mass).
+ImpactResult bounce_impulse(const SurfaceMaterial& m, const Vec3& n, const Vec3& velocity, const Vec3& spin,
+                            const BallProperties& ball) {
   ImpactInput in;
   in.impactor.inv_mass = 0.0;
   in.impactor.inv_inertia = Mat3::Zero();
@@ -143,7 +131,62 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
   in.material.e_t = 0.0;
   in.material.mu = m.mu;
   in.material.friction = FrictionModel::Coulomb;
-  out.impact = solve_impact(in);
+  in.material.model = ImpactModel::Rigid;
+  return solve_impact(in);
+}
+
+Vec3 tilted(const Vec3& face_normal, const Vec3& along, double tilt) {
+  return std::cos(tilt) * face_normal - std::sin(tilt) * along;
+}
+
+}  // namespace
+
+double crater_tilt_at(const SurfaceMaterial& m, double speed, double incidence, double firmness) {
+  if (m.crater_tilt <= 0.0) return 0.0;
+  // Penner's tilt grows with speed and with incidence up to his 44.4°; a crater dug
+  // straight down (90°) is symmetric and tilts nothing. sin 2θ carries both: linear in θ
+  // for shallow landings (Penner's form), 1 at 45°, 0 at 90°. Depth, and with it the tilt,
+  // scales as 1/√stiffness for a turf spring: firmness is the stiffness relative to the
+  // material's own.
+  const double shape = std::sin(2.0 * incidence) / std::sin(2.0 * kCraterReferenceAngle);
+  const double tilt = m.crater_tilt * (speed / kCraterReferenceSpeed) * shape / std::sqrt(firmness);
+  return std::clamp(tilt, 0.0, std::min(2.0 * m.crater_tilt, 0.6));
+}
+
+BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal, const Vec3& velocity,
+                               const Vec3& spin, const BallProperties& ball, double firmness) {
+  BounceResult out;
+  out.velocity = velocity;
+  out.spin = spin;
+  out.normal = face_normal;
+  const double vn = velocity.dot(face_normal);
+  if (vn >= 0.0) return out;  // not approaching: nothing to resolve
+
+  Vec3 n = face_normal;
+  const Vec3 vt = velocity - vn * face_normal;
+  const double vt_norm = vt.norm();
+  if (m.crater_tilt > 0.0 && vt_norm > 1e-9) {
+    // The ball digs a crater whose far wall faces back against the motion.
+    const Vec3 along = vt / vt_norm;
+    double tilt = crater_tilt_at(m, velocity.norm(), std::atan2(-vn, vt_norm), firmness);
+    // The far wall can stop a ball but not throw it back: only backspin can (Haake's balls
+    // spun back only with backspin). Where the tilt would return a spinless ball of this
+    // velocity backwards, it is lowered to the tilt that stops it dead.
+    const auto forward = [&](double t) {
+      return bounce_impulse(m, tilted(face_normal, along, t), velocity, Vec3::Zero(), ball).ball_after.velocity.dot(along);
+    };
+    if (tilt > 0.0 && forward(tilt) < 0.0) {
+      double lo = 0.0, hi = tilt;
+      for (int i = 0; i < 40; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (forward(mid) < 0.0 ? hi : lo) = mid;
+      }
+      tilt = lo;
+    }
+    n = tilted(face_normal, along, tilt);
+  }
+  out.normal = n;
+  out.impact = bounce_impulse(m, n, velocity, spin, ball);
   out.velocity = out.impact.ball_after.velocity;
   out.spin = out.impact.ball_after.angular_velocity;
   return out;

@@ -55,6 +55,11 @@ std::string validate_surface_material(const SurfaceMaterial& m);
 /// The Stimpmeter releases the ball at 1.83 m/s (6 ft/s); with a constant rolling
 /// deceleration c·g the ball rolls v0²/(2cg), so c = v0² / (2 g stimp).
 double rolling_resistance_from_stimp(double stimp);
+/// The same when the air also slows the rolling ball, its deceleration k·v² (k in 1/m, the
+/// along-ground drag per unit mass, 5/7 of it for a rolling sphere): a roll from v0 with
+/// c·g + k v² covers ln(1 + k v0²/(c g)) / (2k), so c = k v0² / (g (e^{2k·stimp} − 1)).
+/// The reading is what the green does with the air included; k = 0 is the plain formula.
+double rolling_resistance_from_stimp(double stimp, double k);
 /// rolling_resistance, or the Stimpmeter's value when stimp > 0.
 double effective_rolling_resistance(const SurfaceMaterial& m);
 
@@ -80,11 +85,23 @@ struct BounceResult {
   ImpactResult impact;
 };
 
+/// The crater's tilt of the bounce normal (rad) for an impact at `speed` (m/s) and
+/// `incidence` (rad below the surface): crater_tilt · (speed / 18.6 m/s) · sin 2θ / sin 88.8°
+/// / √firmness, at most twice crater_tilt and 0.6 rad. Penner 2002's reference impact
+/// (18.6 m/s at 44.4°) returns crater_tilt; a vertical drop, 0. `firmness`: the turf's
+/// stiffness relative to the material's (1 = as measured, 2 = twice as firm).
+double crater_tilt_at(const SurfaceMaterial& m, double speed, double incidence, double firmness = 1.0);
+
 /// One bounce of a ball moving at `velocity` with `spin` onto a surface with unit face
 /// normal `face_normal` (pointing out of the ground). Uses solve_impact() with the ground
-/// as an infinite mass, e = m.e at the normal approach speed, e_t = 0, Coulomb friction.
+/// as an infinite mass, e = m.e at the normal approach speed, e_t = 0, Coulomb friction,
+/// on the plane tilted by crater_tilt_at() — lowered where it would return a spinless ball
+/// backwards (only backspin brings a ball back). Never creates energy.
 BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal, const Vec3& velocity,
-                               const Vec3& spin, const BallProperties& ball);
+                               const Vec3& spin, const BallProperties& ball, double firmness = 1.0);
+
+/// Ground firmness range: from turf a quarter as stiff (soaked) to four times (baked).
+inline constexpr Range kFirmness{0.25, 4.0};
 
 /// A surface point the ball touches or rests on.
 struct SurfaceContact {

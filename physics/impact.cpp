@@ -33,6 +33,18 @@ bool friction_model_from_string(std::string_view name, FrictionModel* out) {
 
 std::string friction_model_names() { return "none, textbook, coulomb"; }
 
+const char* to_string(ImpactModel m) { return m == ImpactModel::Compliant ? "compliant" : "rigid"; }
+
+bool impact_model_from_string(std::string_view name, ImpactModel* out) {
+  for (const ImpactModel m : {ImpactModel::Compliant, ImpactModel::Rigid}) {
+    if (name == to_string(m)) {
+      *out = m;
+      return true;
+    }
+  }
+  return false;
+}
+
 const char* to_string(ContactKind k) {
   switch (k) {
     case ContactKind::Grip: return "grip";
@@ -104,7 +116,7 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept {
 
   ImpactResult res;
   res.e_used = mat.e.at(-un);
-  res.e_t_used = mat.e_t * mat.e_t_scale.at(-un);
+  res.e_t_used = mat.e_t;
   const double e = res.e_used;
   const Vec3 kn = k * n;
   const double jn_frictionless = -(1.0 + e) * un / n.dot(kn);
@@ -230,14 +242,6 @@ std::string validate_material_values(const ImpactMaterial& m) {
     const auto k = static_cast<size_t>(i);
     if (auto why = range_refusal("impact.e", m.e.cor[k], ImpactMaterial::kE, ""); !why.empty()) return why;
     if (i > 0 && !(m.e.speed[k] > m.e.speed[k - 1])) return "impact.e: table speeds must be strictly increasing";
-  }
-  if (m.e_t_scale.count < 1 || m.e_t_scale.count > CorCurve::kMaxPoints)
-    return "impact.e_t_scale: the table needs 1 to 8 points";
-  for (int i = 0; i < m.e_t_scale.count; ++i) {
-    const auto k = static_cast<size_t>(i);
-    if (auto why = range_refusal("impact.e_t_scale", m.e_t_scale.cor[k], Range{0.0, 1.0}, ""); !why.empty()) return why;
-    if (i > 0 && !(m.e_t_scale.speed[k] > m.e_t_scale.speed[k - 1]))
-      return "impact.e_t_scale: table speeds must be strictly increasing";
   }
   if (auto why = range_refusal("impact.e_t", m.e_t, ImpactMaterial::kEt, ""); !why.empty()) return why;
   if (auto why = range_refusal("impact.mu", m.mu, ImpactMaterial::kMu, ""); !why.empty()) return why;

@@ -28,6 +28,14 @@ enum class FrictionModel {
 
 enum class ContactKind { Grip, Slip, Frictionless };
 
+/// How a delivery resolves the strike: with duration through the ball's compliant contact
+/// layer (physics/compliant_impact.hpp, the default), or as one instantaneous impulse
+/// (solve_impact below: the textbook's model and the compliant one's limit).
+enum class ImpactModel { Compliant, Rigid };
+const char* to_string(ImpactModel m);
+/// "compliant", "rigid"; false when unknown.
+bool impact_model_from_string(std::string_view name, ImpactModel* out);
+
 const char* to_string(FrictionModel m);
 const char* to_string(ContactKind k);
 /// The one parser of friction model names ("none", "textbook", "coulomb"); false when
@@ -59,12 +67,12 @@ struct CorCurve {
 struct ImpactMaterial {
   CorCurve e = CorCurve::constant(0.83);  ///< normal restitution; USGA limit for a driver face is 0.830
   static constexpr Range kE{0.0, 1.0};     ///< every point of the curve; 1 = perfectly elastic
-  double e_t = 0.0;   ///< tangential restitution; 0 = ball rolls off the face, 0.1–0.3 bat
+  /// Tangential restitution of the instantaneous (rigid) model: 0 = the ball rolls off the
+  /// face, > 0 it leaves over-spinning. The impact with duration does not read it: there the
+  /// tangential rebound comes out of the contact's shear spring (compliant_impact.hpp).
+  double e_t = 0.0;
   static constexpr Range kEt{0.0, 1.0};
-  /// Factor in [0, 1] on e_t as a function of normal approach speed (m/s): the tangential
-  /// rebound of a compressed ball fades at high impact speed, as the normal COR does. The
-  /// effective value is e_t · e_t_scale.at(speed). Default: 1 at every speed.
-  CorCurve e_t_scale = CorCurve::constant(1.0);
+  ImpactModel model = ImpactModel::Compliant;  ///< the textbook friction model is always rigid
   double mu = 0.4;    ///< Coulomb friction coefficient; club face/ball ~0.35–0.45, ball/bat ~0.5
   /// Rubber on rough rock reaches ~1; 2 leaves room for tests of the grip limit.
   static constexpr Range kMu{0.0, 2.0};
@@ -93,7 +101,7 @@ struct ImpactResult {
   double normal_impulse = 0.0;     ///< N·s, impulse·n (≥ 0)
   double tangential_impulse = 0.0; ///< N·s, magnitude of the tangential part
   double e_used = 0.0;             ///< the restitution the curve gave at this approach speed
-  double e_t_used = 0.0;           ///< the tangential restitution used: e_t · e_t_scale(speed)
+  double e_t_used = 0.0;           ///< the tangential restitution: e_t (rigid) or what the contact produced (compliant)
   ContactKind contact = ContactKind::Frictionless;
   double energy_loss = 0.0;        ///< J, kinetic energy before − after (negative = created)
   /// Coulomb only. True when the model's impulse would have CREATED kinetic energy and was

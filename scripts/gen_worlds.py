@@ -15,7 +15,9 @@ golf_hole -- a 400 m par 4 played along +x. Tee box at the origin (flat, y = 0),
 ballpark -- home plate at the origin, foul lines at +-45 deg from +x (third base on -z),
   fence 10 ft (3.048 m) high at 330 ft down the lines and 400 ft in centre field
   (d(phi) = 400 - 70 (phi/45deg)^2 ft), a 15 ft warning track inside it, infield dirt and
-  grass, outfield grass, chalk foul lines (decoration), stands (out of bounds) beyond.
+  grass, outfield grass, chalk foul lines (decoration), stands (out of bounds) beyond, and a
+  backstop 60 ft behind home plate (MLB Official Baseball Rules 2.01 asks for 60 ft or
+  more), 10 ft high, from 100 to 260 deg around the plate.
 
 Triangles take the material of the region their centroid falls in. The output is text
 with fixed precision, so reruns give identical files: commit them.
@@ -196,6 +198,7 @@ pin = ["{hx:.4f}m", "{hy:.4f}m", "{hz:.4f}m"]   # the cup on the green ({mesh.tr
 FENCE_HEIGHT = 10.0 * FT
 LINE_FT, CENTRE_FT = 330.0, 400.0
 TRACK = 15.0 * FT
+BACKSTOP = 60.0 * FT
 
 
 def fence_distance(phi_deg):
@@ -237,6 +240,13 @@ def ballpark(out_dir):
         a0, b0 = mesh.vertex(xa, 0.0, za), mesh.vertex(xb, 0.0, zb)
         b1, a1 = mesh.vertex(xb, FENCE_HEIGHT, zb), mesh.vertex(xa, FENCE_HEIGHT, za)
         # a0 b0 b1 a1 is counter-clockwise seen from home plate: the normal faces the field.
+        mesh.quad("wall", a0, b0, b1, a1)
+    # Backstop: an arc of wall behind the plate, facing it (a pop-up that spins back stops here).
+    back = [(BACKSTOP * math.cos(math.radians(a)), BACKSTOP * math.sin(math.radians(a))) for a in range(100, 261, 5)]
+    for i in range(len(back) - 1):
+        (xa, za), (xb, zb) = back[i], back[i + 1]
+        a0, b0 = mesh.vertex(xa, 0.0, za), mesh.vertex(xb, 0.0, zb)
+        b1, a1 = mesh.vertex(xb, FENCE_HEIGHT, zb), mesh.vertex(xa, FENCE_HEIGHT, za)
         mesh.quad("wall", a0, b0, b1, a1)
     # Chalk foul lines, 10 cm wide, just above the grass (decoration only).
     for sign in (-1.0, 1.0):

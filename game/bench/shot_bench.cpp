@@ -63,7 +63,7 @@ AeroFn baseline_aero(const ShotModel& m) {
 BaselineBall baseline_ball(const ShotModel& m) { return BaselineBall{m.ball.mass, m.ball.radius, m.ball.inertia}; }
 
 ShotModel golf_model(const Assets& assets, const Terrain* terrain, FlightSettings settings = {}) {
-  return make_shot_model(golf_ball_properties(), assets.aero("ferguson2022"), Environment{}, terrain, settings);
+  return make_shot_model(golf_ball_properties(), assets.aero(assets.sport("golf").default_aero), Environment{}, terrain, settings);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@ std::vector<AeroModel> load_aero_models(const std::filesystem::path& path) {
   std::vector<AeroModel> out;
   for (const toml::table* t : f.tables(f.root(), "model", true)) {
     f.only_keys(*t, "model", {"name", "sport", "source", "drag", "drag_per_krpm", "lift_law", "lift", "s_max",
-                              "decay_length", "decay_tau"});
+                              "decay_length", "decay_tau", "lift_onset", "drag_crisis"});
     AeroModel m;
     m.name = f.text(f.required(*t, "name", "the model's name"), "name");
     m.sport = f.text(f.required(*t, "sport", "golf or baseball"), "sport");
@@ -33,6 +33,14 @@ std::vector<AeroModel> load_aero_models(const std::filesystem::path& path) {
     const double length = f.quantity_or(*t, "decay_length", Dimension::Length, 0.0, &kPositive);
     m.decay_per_metre = length > 0.0 ? 1.0 / length : 0.0;
     m.decay_tau = f.quantity_or(*t, "decay_tau", Dimension::Time, 0.0, &kPositive);
+    m.lift_onset = f.quantity_or(*t, "lift_onset", Dimension::Dimensionless, 0.0);
+    if (const toml::node* n = t->get("drag_crisis")) {
+      // [Re_critical, Cd rise, width in Re]: plain numbers.
+      const auto c = f.quantities(*n, "drag_crisis", Dimension::Dimensionless, 3);
+      m.crisis_re = c[0];
+      m.crisis_rise = c[1];
+      m.crisis_width = c[2];
+    }
     if (const std::string why = validate_aero_model(m); !why.empty()) throw InputError(f.where(*t) + ": " + why);
     for (const AeroModel& o : out)
       if (o.name == m.name) throw InputError(f.where(*t) + ": aero model '" + m.name + "' is defined twice");

@@ -42,20 +42,25 @@ FrictionModel friction(const TomlFile& f, const toml::table& t) {
 }
 
 BallSpec read_ball(const TomlFile& f, const toml::table& t) {
-  f.only_keys(t, "ball", {"name", "mass", "radius", "inertia", "contact_offset"});
+  f.only_keys(t, "ball", {"name", "mass", "radius", "inertia", "stiffness", "poisson", "tangential_damping"});
   BallSpec b;
   b.name = f.text(f.required(t, "name", "the ball's name"), "name");
   b.mass = f.quantity(f.required(t, "mass", "kg"), "mass", Dimension::Mass, &BallSpec::kMass);
   b.radius = f.quantity(f.required(t, "radius", "m"), "radius", Dimension::Length, &BallSpec::kRadius);
   b.inertia = f.quantity_or(t, "inertia", Dimension::Inertia, 0.4 * b.mass * b.radius * b.radius);
-  const Range offset{0.0, 0.2 * b.radius};
-  b.contact_offset = f.quantity_or(t, "contact_offset", Dimension::Length, 0.0, &offset);
+  // Stiffness is in N/m^1.5, a unit the parser does not spell: written as a plain number
+  // with its unit in the key's documentation (balls.toml).
+  b.compliance.stiffness = f.quantity_or(t, "stiffness", Dimension::Dimensionless, 0.0, &BallCompliance::kStiffness);
+  b.compliance.poisson = f.quantity_or(t, "poisson", Dimension::Dimensionless, b.compliance.poisson, &BallCompliance::kPoisson);
+  b.compliance.tangential_damping = f.quantity_or(t, "tangential_damping", Dimension::Dimensionless,
+                                                 b.compliance.tangential_damping, &BallCompliance::kTangentialDamping);
   validated(f, t, [&] { validate_ball(b); });
   return b;
 }
 
 struct FaceLaw {
   double reference_speed = 48.8, slope = 0.0;
+  double shaft_tip_mass = 0.0;  // kg, from [shaft]
   ImpactMaterial material;
 };
 
@@ -64,20 +69,24 @@ FaceLaw read_face(const TomlFile& f, const toml::table& root) {
   const toml::node* n = root.get("face");
   if (n == nullptr) return law;
   const toml::table& t = f.table(*n, "face");
-  f.only_keys(t, "face", {"cor_reference_speed", "cor_slope", "mu", "e_t", "e_t_scale", "friction"});
+  f.only_keys(t, "face", {"cor_reference_speed", "cor_slope", "mu", "e_t", "friction", "model"});
   law.reference_speed = f.quantity_or(t, "cor_reference_speed", Dimension::Speed, law.reference_speed);
   static constexpr Range kSlope{0.0, 0.05};
   law.slope = f.quantity_or(t, "cor_slope", Dimension::Dimensionless, 0.0, &kSlope);
   law.material.mu = f.quantity_or(t, "mu", Dimension::Dimensionless, law.material.mu, &ImpactMaterial::kMu);
   law.material.e_t = f.quantity_or(t, "e_t", Dimension::Dimensionless, law.material.e_t, &ImpactMaterial::kEt);
-  if (const toml::node* s = t.get("e_t_scale")) law.material.e_t_scale = curve(f, *s, "e_t_scale");
   law.material.friction = friction(f, t);
+  if (const toml::node* m = t.get("model")) {
+    if (!impact_model_from_string(f.text(*m, "model"), &law.material.model))
+      f.fail(*m, "model", "unknown impact model (allowed: compliant, rigid)");
+  }
   return law;
 }
 
 void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, ClubSpec& k, ClubInfo& info) {
-  f.only_keys(t, "club", {"name", "kind", "mesh", "tee_height", "loft", "lie", "dynamic_loft", "head_mass", "cg",
-                          "inertia", "inertia_products", "bulge_radius", "roll_radius", "cor", "length"});
+  f.only_keys(t, "club", {"name", "kind", "mesh", "tee_height", "loft", "lie", "dynamic_loft", "strike_height", "head_mass", "cg",
+                          "inertia", "inertia_products", "bulge_radius", "roll_radius", "cor", "length", "face_size",
+                          "cor_edge_drop"});
   k.name = f.text(f.required(t, "name", "the club's name"), "name");
   info.name = k.name;
   info.kind = f.text(f.required(t, "kind", "wood, hybrid, iron, wedge or putter"), "kind");
@@ -90,7 +99,9 @@ void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, Clu
   k.lie = f.quantity(f.required(t, "lie", "static lie"), "lie", Dimension::Angle, &ClubSpec::kLie);
   k.dynamic_loft = f.quantity(f.required(t, "dynamic_loft", "typical delivered loft"), "dynamic_loft",
                               Dimension::Angle, &GolfSwing::kDynamicLoft);
+  k.strike_height = f.quantity_or(t, "strike_height", Dimension::Length, 0.0, &GolfSwing::kImpactUp);
   k.head_mass = f.quantity(f.required(t, "head_mass", "kg"), "head_mass", Dimension::Mass, &ClubSpec::kHeadMass);
+  k.shaft_tip_mass = face.shaft_tip_mass;
   const auto cg = f.quantities(f.required(t, "cg", "[x, y, z] in the head frame"), "cg", Dimension::Length, 3);
   k.cg = Vec3(cg[0], cg[1], cg[2]);
   const auto d = f.quantities(f.required(t, "inertia", "[Ixx, Iyy, Izz]"), "inertia", Dimension::Inertia, 3);
@@ -104,6 +115,12 @@ void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, Clu
   k.roll_radius = f.quantity(f.required(t, "roll_radius", "m"), "roll_radius", Dimension::Length,
                              &ClubSpec::kFaceRadius);
   k.length = f.quantity(f.required(t, "length", "shaft length"), "length", Dimension::Length, &ClubSpec::kLength);
+  if (const toml::node* n = t.get("face_size")) {
+    const auto size = f.quantities(*n, "face_size", Dimension::Length, 2);
+    k.face_half_width = 0.5 * size[0];
+    k.face_half_height = 0.5 * size[1];
+  }
+  k.cor_edge_drop = f.quantity_or(t, "cor_edge_drop", Dimension::Dimensionless, 0.0, &ClubSpec::kCorEdgeDrop);
   // The face: the shared ball–face law with this club's COR at the reference speed.
   k.face = face.material;
   static constexpr Range kCor{0.0, 1.0, true};
@@ -191,8 +208,13 @@ EquipmentCatalog load_equipment(const std::filesystem::path& dir) {
   }
   {
     const TomlFile f = TomlFile::read(dir / "clubs.toml", "equipment");
-    f.only_keys(f.root(), "", {"face", "club"});
-    const FaceLaw face = read_face(f, f.root());
+    f.only_keys(f.root(), "", {"face", "shaft", "club"});
+    FaceLaw face = read_face(f, f.root());
+    if (const toml::node* n = f.root().get("shaft")) {
+      const toml::table& s = f.table(*n, "shaft");
+      f.only_keys(s, "shaft", {"tip_mass"});
+      face.shaft_tip_mass = f.quantity_or(s, "tip_mass", Dimension::Mass, 0.0, &ClubSpec::kShaftTipMass);
+    }
     for (const toml::table* t : f.tables(f.root(), "club", true)) {
       cat.clubs.emplace_back();
       cat.club_info.emplace_back();

@@ -68,9 +68,11 @@ ShotSpec spec_from(const CheckedDoc& doc) {
       w.club_path = doc.quantity("swing.path");
       w.dynamic_loft = doc.quantity_if_set("swing.dynamic_loft").value_or(std::nan(""));
       w.face_angle = doc.quantity("swing.face_angle");
-      const auto offset = doc.list("swing.impact_offset");
-      w.impact_toe = offset[0];
-      w.impact_up = offset[1];
+      if (doc.has("swing.impact_offset")) {
+        const auto offset = doc.list("swing.impact_offset");
+        w.impact_toe = offset[0];
+        w.impact_up = offset[1];
+      }
       w.closure_rate = doc.quantity("swing.closure_rate");
       s.strike = c;
     } else {
@@ -99,9 +101,16 @@ ShotSpec spec_from(const CheckedDoc& doc) {
     friction_model_from_string(*f, &m);  // the schema's choices are these names
     s.impact.friction = m;
   }
+  if (auto f = doc.text_if_set("impact.model")) {
+    ImpactModel m;
+    impact_model_from_string(*f, &m);  // the schema's choices are these names
+    s.impact.model = m;
+  }
   s.environment = environment_from(doc);
   if (auto a = doc.text_if_set("aero.model")) s.aero = *a;
   if (auto w = doc.text_if_set("world.name")) s.world = *w;
+  s.flight.ground_firmness = doc.quantity("world.firmness");
+  s.flight.green_stimp = doc.quantity_if_set("world.stimp").value_or(0.0);
   if (doc.strikes() & kClubKeys) {
     const auto pos = doc.list("world.ball_position");
     s.placement.x = pos[0];

@@ -121,7 +121,7 @@ Schema build_scenario_schema() {
   k.push_back(quantity("swing.dynamic_loft", Angle, &GolfSwing::kDynamicLoft, "deg", "", "delivered loft (default: the club's)", C));
   k.push_back(quantity("swing.face_angle", Angle, &GolfSwing::kFaceAngle, "deg", "0deg", "face angle to target, + open (right)", C));
   k.push_back(list("swing.impact_offset", Length, 2, {&GolfSwing::kImpactToe, &GolfSwing::kImpactUp, nullptr}, "mm",
-                   "[0mm, 0mm]", "impact point [toe +, up +] from the face centre", C));
+                   "", "impact point [toe +, up +] from the face centre (default: the club's usual strike)", C));
   k.push_back(quantity("swing.closure_rate", Spin, &GolfSwing::kClosureRate, "deg/s", "0deg/s", "face closure rate, + closing", C));
 
   k.push_back(quantity("swing.speed", Speed, &BatSwing::kBatSpeed, "mph", "31.3m/s", "bat speed at the sweet spot", B));
@@ -136,9 +136,11 @@ Schema build_scenario_schema() {
   k.push_back(quantity("pitch.spin_axis", Angle, &Pitch::kSpinAxis, "deg", "0deg", "pitch spin axis, 0 = pure backspin", B));
 
   k.push_back(quantity("impact.e", None, &ImpactMaterial::kE, "", "", "normal restitution (default: the equipment's speed-dependent curve)"));
-  k.push_back(quantity("impact.e_t", None, &ImpactMaterial::kEt, "", "", "tangential restitution (default: the equipment's)"));
+  k.push_back(quantity("impact.e_t", None, &ImpactMaterial::kEt, "", "", "the rigid model's tangential restitution (default: the equipment's)"));
   k.push_back(quantity("impact.mu", None, &ImpactMaterial::kMu, "", "", "friction coefficient (default: the equipment's)"));
   k.push_back(choice("impact.friction", "none|textbook|coulomb", "", "friction model (default: the equipment's, coulomb)"));
+  k.push_back(choice("impact.model", "compliant|rigid", "",
+                     "impact with duration (compliant) or instantaneous impulse (rigid); default: the equipment's"));
 
   k.push_back(quantity("environment.temperature", Dimension::Temperature, &Environment::kTemperature, "C", "21C", "air temperature"));
   k.push_back(quantity("environment.pressure", Dimension::Pressure, &Environment::kPressure, "hPa", "", "station pressure (default: from altitude)"));
@@ -156,6 +158,8 @@ Schema build_scenario_schema() {
                        "alpha of the power-law profile (default 1/7, open terrain)"));
 
   k.push_back(name("world.name", "", "world asset (default: the sport's), none = flat ground"));
+  k.push_back(quantity("world.firmness", None, &kFirmness, "", "1", "turf stiffness relative to the world's materials: 0.25 soaked ... 4 baked"));
+  k.push_back(quantity("world.stimp", Length, &SurfaceMaterial::kStimp, "ft", "", "green speed, a Stimpmeter reading (default: the world's greens)"));
   k.push_back(quantity("world.aim", Angle, &BallPlacement::kAim, "deg", "0deg", "target line turned right (+) of the world's +x axis", C));
   k.push_back(list("world.ball_position", Length, 2, {&BallPlacement::kHorizontal, &BallPlacement::kHorizontal, nullptr},
                    "m", "[0m, 0m]", "ball position [downrange x, right z]; height from the terrain", C));

@@ -25,17 +25,15 @@ void apply_overrides(const ImpactOverrides& o, ImpactMaterial& m) {
     m.e = CorCurve::constant(*o.e);
   }
   if (o.e_t) {
-    // A stated e_t is the value used: drop the equipment's speed fade, as impact.e drops
-    // the speed-dependent COR curve.
     check_range("impact.e_t", *o.e_t, ImpactMaterial::kEt, "");
     m.e_t = *o.e_t;
-    m.e_t_scale = CorCurve::constant(1.0);
   }
   if (o.mu) {
     check_range("impact.mu", *o.mu, ImpactMaterial::kMu, "");
     m.mu = *o.mu;
   }
   if (o.friction) m.friction = *o.friction;
+  if (o.model) m.model = *o.model;
 }
 
 // Rotation about +y that turns the target line (+x) by `aim` toward +z (right).
@@ -164,7 +162,7 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
       k.dynamic_loft = std::isnan(w.dynamic_loft) ? s.club->dynamic_loft : w.dynamic_loft;
       k.lie = s.club->lie;
       k.impact_toe = w.impact_toe;
-      k.impact_up = w.impact_up;
+      k.impact_up = std::isnan(w.impact_up) ? s.club->strike_height : w.impact_up;
       k.closure_rate = w.closure_rate;
       r.impactor_mesh = s.club_info->mesh;
     } else {

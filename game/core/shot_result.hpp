@@ -28,8 +28,8 @@ const char* to_string(ShotEnd e);
 struct ImpactSummary {
   bool present = false;
   double e = 0.0;                   ///< restitution the solver used at this approach speed (driver ~0.80)
-  double e_t = 0.0;                 ///< tangential restitution the solver used (after any speed fade)
-  double e_t_nominal = 0.0;         ///< the material's stated e_t, before the fade
+  double e_t = 0.0;                 ///< tangential restitution: the rigid model's, or what the compliant contact produced
+  double e_t_nominal = 0.0;         ///< the material's stated (rigid-model) e_t
   double mu = 0.0;                  ///< friction coefficient
   FrictionModel friction = FrictionModel::Coulomb;
   ContactKind contact = ContactKind::Frictionless;

@@ -44,9 +44,10 @@ using Strike = std::variant<ClubStrike, BatStrike, LaunchStrike>;
 /// Overrides of the impactor's ball contact law; unset = the equipment's own.
 struct ImpactOverrides {
   std::optional<double> e;             ///< constant normal restitution (drops the speed curve); ImpactMaterial::kE
-  std::optional<double> e_t;           ///< tangential restitution (drops the speed fade); ImpactMaterial::kEt
+  std::optional<double> e_t;           ///< the rigid model's tangential restitution; ImpactMaterial::kEt
   std::optional<double> mu;            ///< ImpactMaterial::kMu
   std::optional<FrictionModel> friction;
+  std::optional<ImpactModel> model;    ///< compliant (with duration) or rigid (instantaneous)
 };
 
 /// Where the ball is played from on the world.

@@ -103,7 +103,8 @@ bool impact_picker(PanelContext& c) {
       dl->AddLine(ImVec2(centre.x - fw * 0.35f, centre.y + k * 6.0f), ImVec2(centre.x + fw * 0.35f, centre.y + k * 6.0f),
                   IM_COL32(95, 100, 110, 255));
     const float toe_mm = static_cast<float>(g.impact_toe * 1000.0);
-    const float up_mm = static_cast<float>(g.impact_up * 1000.0);
+    const double up_m = std::isnan(g.impact_up) ? s.resolved.club->strike_height : g.impact_up;  // the club's usual strike
+    const float up_mm = static_cast<float>(up_m * 1000.0);
     // Seen from the golfer's side of a right-hander's face, the toe is to the screen's right.
     dl->AddCircleFilled(ImVec2(centre.x + toe_mm, centre.y - up_mm), 5.0f, IM_COL32(255, 255, 255, 255));
     dl->AddText(ImVec2(o.x + 2, o.y + 2), IM_COL32(180, 180, 180, 255), "heel");
@@ -111,7 +112,7 @@ bool impact_picker(PanelContext& c) {
     if (clicked) {
       const double toe = std::clamp((m.x - centre.x) / 1000.0, GolfSwing::kImpactToe.min, GolfSwing::kImpactToe.max);
       const double up = std::clamp(-(m.y - centre.y) / 1000.0, GolfSwing::kImpactUp.min, GolfSwing::kImpactUp.max);
-      if (std::abs(toe - g.impact_toe) > 5e-4 || std::abs(up - g.impact_up) > 5e-4) {
+      if (std::abs(toe - g.impact_toe) > 5e-4 || std::abs(up - up_m) > 5e-4) {
         c.state.set("swing.impact_offset", quantity_list_text({toe * 1000.0, up * 1000.0}, "mm"));
         return true;
       }
@@ -178,7 +179,8 @@ bool shot_panel(PanelContext& c) {
     const ClubSpec& club = *s.resolved.club;
     if (combo("club", club.name, eq.clubs, [](const ClubSpec& x) { return x.name; }, chosen)) {
       st.set("club.name", chosen);
-      st.overrides.erase("swing.dynamic_loft");  // the new club's own delivered loft
+      st.overrides.erase("swing.dynamic_loft");  // the new club's own delivered loft and strike
+      st.overrides.erase("swing.impact_offset");
       changed = true;
     }
     const GolfSwing& g = std::get<ClubStrike>(s.spec.strike).swing;
@@ -188,7 +190,8 @@ bool shot_panel(PanelContext& c) {
     changed |= slider(st, k, "dynamic loft", "swing.dynamic_loft", std::isnan(g.dynamic_loft) ? club.dynamic_loft : g.dynamic_loft);
     changed |= slider(st, k, "face angle", "swing.face_angle", g.face_angle);
     changed |= slider(st, k, "closure rate", "swing.closure_rate", g.closure_rate, "%.0f");
-    ImGui::Text("impact: toe %+.0f mm, up %+.0f mm", g.impact_toe * 1000, g.impact_up * 1000);
+    ImGui::Text("impact: toe %+.0f mm, up %+.0f mm", g.impact_toe * 1000,
+                (std::isnan(g.impact_up) ? club.strike_height : g.impact_up) * 1000);
     ImGui::TextDisabled("click the face to move the impact point");
   } else if (is_bat(s)) {
     if (combo("bat", s.resolved.bat->name, eq.bats, [](const BatSpec& x) { return x.name; }, chosen)) {
@@ -220,7 +223,16 @@ bool tuning_panel(PanelContext& c) {
   const ImpactSummary& im = c.result.impact;
   const ImpactMaterial& mat = s.resolved.material;
   changed |= slider(st, k, "e", "impact.e", im.present ? im.e : 0.8, "%.3f");
-  changed |= slider(st, k, "e_t", "impact.e_t", mat.e_t, "%.3f");
+  int impact_model = static_cast<int>(mat.model);
+  const char* impact_models[] = {"compliant", "rigid"};
+  if (ImGui::Combo("impact", &impact_model, impact_models, 2)) {
+    st.set("impact.model", impact_models[impact_model]);
+    changed = true;
+  }
+  if (mat.model == ImpactModel::Rigid || mat.friction == FrictionModel::Textbook)
+    changed |= slider(st, k, "e_t", "impact.e_t", mat.e_t, "%.3f");
+  else
+    ImGui::TextDisabled("e_t %.3f (from the contact; rigid model to set it)", im.present ? im.e_t : 0.0);
   changed |= slider(st, k, "mu", "impact.mu", mat.mu, "%.3f");
   int model = static_cast<int>(mat.friction);
   const char* models[] = {"none", "textbook", "coulomb"};

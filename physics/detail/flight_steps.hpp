@@ -31,7 +31,7 @@ struct Dynamics {
     const Vec3 v = y.segment<3>(3);
     const Vec3 w = y.segment<3>(6);
     const Vec3 v_rel = v - wind_at(model->environment, y[1] - ground_height);
-    const AeroEffect fx = aero_effect(*model->aero, model->air_density, model->ball.radius, v_rel, w);
+    const AeroEffect fx = aero_effect(*model->aero, model->air_density, model->ball.radius, v_rel, w, model->air_viscosity);
     State9 d;
     d.segment<3>(0) = v;
     d.segment<3>(3) = fx.force * inv_mass - kGravity * up_axis();

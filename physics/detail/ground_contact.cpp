@@ -21,7 +21,7 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
     end_shot(s, EndReason::Rest);
     return ev;
   }
-  const BounceResult b = bounce_on_surface(mat, c.normal, s.velocity(), s.spin(), m.ball);
+  const BounceResult b = bounce_on_surface(mat, c.normal, s.velocity(), s.spin(), m.ball, m.settings.ground_firmness);
   ++s.bounces;
   Vec3 v = b.velocity;
   const double vn = v.dot(c.normal);

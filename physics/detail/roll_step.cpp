@@ -12,6 +12,16 @@ namespace {
 /// Ball bottom more than this above the support plane: the ground fell away, fly.
 constexpr double kLeaveGap = 0.01;  // m
 
+/// The still air's deceleration per v² (1/m) of a ball rolling like the Stimpmeter's
+/// (1.83 m/s, spinning with the roll), along the ground: 5/7 of the drag on a free ball.
+/// Below the drag crisis Cd does not change with speed, so k holds for the whole putt.
+double stimp_air_drag(const ShotModel& m) {
+  const double v = 1.83, r = m.ball.radius;
+  const Vec3 vel(v, 0.0, 0.0), spin(0.0, 0.0, -v / r);
+  const double f = -aero_effect(*m.aero, m.air_density, r, vel, spin, m.air_viscosity).force.x();
+  return (5.0 / 7.0) * f / (m.ball.mass * v * v);
+}
+
 void set_rolling(ShotState& s, const Vec3& p, const Vec3& v, const Vec3& n, double r) {
   s.y.segment<3>(0) = p;
   s.y.segment<3>(3) = v;
@@ -86,7 +96,9 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
 
   const double cos_t = n.dot(up_axis());
   const Vec3 slope_acc = (5.0 / 7.0) * -kGravity * (up_axis() - cos_t * n);  // rolling sphere
-  const double resist = effective_rolling_resistance(mat) * kGravity * cos_t;
+  const double stimp = mat.kind == SurfaceKind::Green && m.settings.green_stimp > 0.0 ? m.settings.green_stimp : mat.stimp;
+  const double rolling = stimp > 0.0 ? rolling_resistance_from_stimp(stimp, stimp_air_drag(m)) : mat.rolling_resistance;
+  const double resist = rolling * kGravity * cos_t;
   const double speed = v.norm();
   const bool holds = slope_acc.norm() <= resist;  // static: the slope cannot start it
   if (speed == 0.0 && holds) {
@@ -104,7 +116,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   Vec3 drag_acc = Vec3::Zero();
   if (speed > 0.0) {
     const Vec3 v_rel = v - wind_at(m.environment, r);
-    const Vec3 f = aero_effect(*m.aero, m.air_density, r, v_rel, n.cross(v) / r).force;
+    const Vec3 f = aero_effect(*m.aero, m.air_density, r, v_rel, n.cross(v) / r, m.air_viscosity).force;
     drag_acc = (5.0 / 7.0) / m.ball.mass * (f - f.dot(n) * n);
   }
   const Vec3 a = slope_acc + drag_acc - resist * dir;

@@ -199,7 +199,7 @@ void soak_one(long i, std::uint64_t seed, const EquipmentCatalog& eq, const Worl
 
   const BallProperties props{ball.mass, ball.radius, ball.inertia};
   const Environment environment = random_environment(r);
-  const AeroModel& aero = sweetspot::test::assets().aero(golf ? "ferguson2022" : "nathan");
+  const AeroModel& aero = sweetspot::test::assets().aero(golf ? "tour_fit" : "nathan");
   const FlightSettings settings;
   const Terrain* terrain = nullptr;
   if (i % 16 < 2) {  // one shot in eight on the asset worlds (slower), the rest on flat ground

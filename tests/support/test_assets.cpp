@@ -10,7 +10,7 @@ const Assets& assets() {
 }
 
 ShotModel golf_model(const Terrain* terrain, const Environment& env, const FlightSettings& settings) {
-  return make_shot_model(golf_ball_properties(), assets().aero("ferguson2022"), env, terrain, settings);
+  return make_shot_model(golf_ball_properties(), assets().aero(assets().sport("golf").default_aero), env, terrain, settings);
 }
 
 ShotModel baseball_model(const Terrain* terrain, const Environment& env, const FlightSettings& settings) {
@@ -18,7 +18,7 @@ ShotModel baseball_model(const Terrain* terrain, const Environment& env, const F
 }
 
 ShotTrajectory fly(const FlightCase& c, const Terrain* terrain) {
-  const AeroModel& aero = c.aero ? *c.aero : assets().aero("ferguson2022");
+  const AeroModel& aero = c.aero ? *c.aero : assets().aero(assets().sport("golf").default_aero);
   return simulate_shot(make_shot_model(c.ball, aero, c.environment, terrain, c.settings), c.launch, c.record_samples);
 }
 

@@ -10,7 +10,7 @@ namespace sweetspot::test {
 /// The assets folder of the source tree, loaded on first use.
 const Assets& assets();
 
-/// A golf ball with the ferguson2022 aero model in the default environment over `terrain`
+/// A golf ball with the golf sport's default aero model (tour_fit) in the default environment over `terrain`
 /// (nullptr = the flat fairway).
 ShotModel golf_model(const Terrain* terrain = nullptr, const Environment& env = {}, const FlightSettings& settings = {});
 /// A baseball with Nathan's model.
@@ -23,13 +23,13 @@ struct FlightCase {
   LaunchState launch;
   BallProperties ball;                 ///< golf ball by default
   Environment environment;
-  const AeroModel* aero = nullptr;     ///< nullptr = ferguson2022
+  const AeroModel* aero = nullptr;     ///< nullptr = golf's default (tour_fit)
   FlightSettings settings;
   bool record_samples = true;
 };
 /// simulate_shot(make_shot_model(...), c.launch, c.record_samples) over `terrain`.
 ShotTrajectory fly(const FlightCase& c, const Terrain* terrain = nullptr);
 /// A golf launch from launch-monitor numbers at the origin tee (ball on the ground).
-FlightCase golf_launch(double mph, double launch_deg, double rpm, const char* model = "ferguson2022");
+FlightCase golf_launch(double mph, double launch_deg, double rpm, const char* model = "tour_fit");
 
 }  // namespace sweetspot::test

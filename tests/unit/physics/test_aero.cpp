@@ -60,11 +60,11 @@ TEST_CASE("unknown aero model lists the allowed names; the shipped models valida
     CHECK(what.find("ferguson2022") != std::string::npos);
     CHECK(what.find("nathan") != std::string::npos);
   }
-  CHECK(test::assets().aero_models().size() == 3);
+  CHECK(test::assets().aero_models().size() == 4);
   for (const AeroModel& m : test::assets().aero_models()) CHECK(validate_aero_model(m).empty());
   AeroModel bad = test::assets().aero("ferguson2022");
   bad.d0 = -1.0;  // drag pushing forward at low spin
   CHECK(validate_aero_model(bad).find("Cd") != std::string::npos);
-  CHECK(test::assets().sport("golf").default_aero == "ferguson2022");
+  CHECK(test::assets().sport("golf").default_aero == "tour_fit");
   CHECK(test::assets().sport("baseball").default_aero == "nathan");
 }

@@ -1,10 +1,12 @@
-// Calibration against the TrackMan PGA Tour averages of DESIGN §4: the default equipment,
-// each club's documented dynamic loft and the tour club speed and attack angle reproduce
-// ball speed within 3 %, launch angle within 1.5° and spin within 15 %. One physical model
-// for every club: the same ball, the same ball–face contact law (µ, e_t and its speed
-// fade, friction model), only measured or documented per-club data (loft, mass, CG,
-// inertia, face COR) differ.
+// Calibration against the TrackMan PGA Tour averages (TrackMan 2004–2008 tour averages;
+// DESIGN §4): the default equipment, each club's documented dynamic loft and strike, and the
+// row's club speed and attack angle reproduce ball speed within 3 %, launch angle within
+// 1.5° and spin within 15 % for all twelve rows. One physical model for every club: the same
+// ball and ball–face contact law (the compliant impact, µ, friction model); only measured or
+// documented per-club data (loft, mass, CG, inertia, face COR) and the delivery differ.
 #include <catch2/catch.hpp>
+
+#include <cmath>
 
 #include "game/content/equipment_file.hpp"
 #include "support/test_assets.hpp"
@@ -19,10 +21,18 @@ struct TrackManRow {
   double club_mph, attack_deg, ball_mph, launch_deg, spin_rpm;
 };
 constexpr TrackManRow kRows[] = {
-    {"driver", 113, -1.3, 167, 10.9, 2686},
-    {"7-iron", 90, -4.3, 120, 16.3, 7097},
-    {"pw", 83, -5.0, 102, 24.2, 9304},
+    {"driver", 113, -1.3, 167, 10.9, 2686}, {"3-wood", 107, -2.9, 158, 9.2, 3655}, {"5-wood", 103, -3.3, 152, 9.4, 4350},
+    {"hybrid", 100, -3.5, 146, 10.2, 4437}, {"3-iron", 98, -3.1, 142, 10.4, 4630}, {"4-iron", 96, -3.4, 137, 11.0, 4836},
+    {"5-iron", 94, -3.7, 132, 12.1, 5361},  {"6-iron", 92, -4.1, 127, 14.1, 6231}, {"7-iron", 90, -4.3, 120, 16.3, 7097},
+    {"8-iron", 87, -4.5, 115, 18.1, 7998},  {"9-iron", 85, -4.7, 109, 20.4, 8647}, {"pw", 83, -5.0, 102, 24.2, 9304},
 };
+
+GolfSwing row_swing(const TrackManRow& row) {
+  GolfSwing s;
+  s.club_speed = mph_to_mps(row.club_mph);
+  s.attack_angle = deg_to_rad(row.attack_deg);
+  return s;
+}
 }  // namespace
 
 TEST_CASE("tour deliveries reproduce the TrackMan PGA averages", "[delivery][calibration]") {
@@ -30,20 +40,36 @@ TEST_CASE("tour deliveries reproduce the TrackMan PGA averages", "[delivery][cal
   const BallSpec& ball = eq.ball("tour");
   for (const TrackManRow& row : kRows) {
     const ClubSpec& club = eq.club(row.club);
-    GolfSwing s;
-    s.club_speed = mph_to_mps(row.club_mph);
-    s.attack_angle = deg_to_rad(row.attack_deg);
-    const Delivery d = deliver_golf(ball, club, s, club.face);
+    const Delivery d = deliver_golf(ball, club, row_swing(row), club.face);
     const LaunchMetrics m = measure_launch(d.launch);
     INFO(row.club << ": ball " << mps_to_mph(m.ball_speed) << " mph (TrackMan " << row.ball_mph << "), launch "
                   << rad_to_deg(m.vertical_angle) << " deg (" << row.launch_deg << "), spin "
                   << radps_to_rpm(m.spin.total) << " rpm (" << row.spin_rpm << "), dynamic loft "
                   << rad_to_deg(club.dynamic_loft) << " deg, smash " << d.smash_factor);
+    CHECK(d.compliant);
     CHECK(mps_to_mph(m.ball_speed) == Approx(row.ball_mph).epsilon(0.03));
     CHECK(rad_to_deg(m.vertical_angle) == Approx(row.launch_deg).margin(1.5));
     CHECK(radps_to_rpm(m.spin.total) == Approx(row.spin_rpm).epsilon(0.15));
     CHECK(std::abs(rad_to_deg(m.horizontal_angle)) < 0.5);
     CHECK(std::abs(rad_to_deg(m.spin.axis_rad)) < 3.0);
+  }
+}
+
+TEST_CASE("each club's documented dynamic loft is the one that launches at its row's angle", "[delivery][calibration]") {
+  // clubs.toml's dynamic lofts are fitted to launch angle only; solving again keeps the
+  // data honest when the contact model changes (spin and ball speed are then predictions).
+  const EquipmentCatalog& eq = test::assets().equipment();
+  for (const TrackManRow& row : kRows) {
+    const ClubSpec& club = eq.club(row.club);
+    double lo = deg_to_rad(2.0), hi = deg_to_rad(70.0);
+    for (int i = 0; i < 40; ++i) {
+      GolfSwing s = row_swing(row);
+      s.dynamic_loft = 0.5 * (lo + hi);
+      const double launch = measure_launch(deliver_golf(eq.ball("tour"), club, s, club.face).launch).vertical_angle;
+      (launch < deg_to_rad(row.launch_deg) ? lo : hi) = s.dynamic_loft;
+    }
+    INFO(row.club << ": documented " << rad_to_deg(club.dynamic_loft) << " deg, solved " << rad_to_deg(0.5 * (lo + hi)));
+    CHECK(rad_to_deg(club.dynamic_loft) == Approx(rad_to_deg(0.5 * (lo + hi))).margin(0.1));
   }
 }
 
@@ -55,11 +81,8 @@ TEST_CASE("one contact model for every club: no per-club friction or spin factor
     CHECK(c.face.mu == ref.mu);
     CHECK(c.face.e_t == ref.e_t);
     CHECK(c.face.friction == ref.friction);
-    CHECK(c.face.e_t_scale.count == ref.e_t_scale.count);
-    for (int i = 0; i < ref.e_t_scale.count; ++i) {
-      CHECK(c.face.e_t_scale.speed[static_cast<size_t>(i)] == ref.e_t_scale.speed[static_cast<size_t>(i)]);
-      CHECK(c.face.e_t_scale.cor[static_cast<size_t>(i)] == ref.e_t_scale.cor[static_cast<size_t>(i)]);
-    }
+    CHECK(c.face.model == ref.model);
+    CHECK(c.shaft_tip_mass == eq.club("driver").shaft_tip_mass);
     // The COR curves differ only by the club's face COR: the same slope in speed.
     const double slope = (c.face.e.at(30.0) - c.face.e.at(45.0)) / 15.0;
     CHECK(slope == Approx((ref.e.at(30.0) - ref.e.at(45.0)) / 15.0).epsilon(1e-9));
@@ -70,7 +93,7 @@ TEST_CASE("spin rises and ball speed falls through the bag", "[delivery][calibra
   // The TrackMan table's trend for the whole bag, with each row's speed and attack angle.
   const EquipmentCatalog& eq = test::assets().equipment();
   struct Row { const char* club; double mph, attack; };
-  const Row rows[] = {{"driver", 113, -1.3}, {"3-wood", 107, -2.9}, {"5-wood", 103, -3.3}, {"hybrid", 100, -3.3},
+  const Row rows[] = {{"driver", 113, -1.3}, {"3-wood", 107, -2.9}, {"5-wood", 103, -3.3}, {"hybrid", 100, -3.5},
                       {"3-iron", 98, -3.1}, {"4-iron", 96, -3.4}, {"5-iron", 94, -3.7}, {"6-iron", 92, -4.1},
                       {"7-iron", 90, -4.3}, {"8-iron", 87, -4.5}, {"9-iron", 85, -4.7}, {"pw", 83, -5.0}};
   double last_spin = 0, last_speed = 1e9;

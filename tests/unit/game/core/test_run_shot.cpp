@@ -35,7 +35,7 @@ TEST_CASE("resolve picks the sport's defaults and refuses a strike of the other 
   const ResolvedShot g = resolve(golf, A);
   CHECK(g.ball.name == "tour");
   CHECK(g.club->name == "driver");
-  CHECK(g.aero->name == "ferguson2022");
+  CHECK(g.aero->name == "tour_fit");
   CHECK(g.world_name == "golf_hole");
   CHECK(g.start_surface == "tee");
   // Teed up: the driver's tee height under the ball.
@@ -85,6 +85,8 @@ TEST_CASE("aim turns the shot on the world, not its launch numbers", "[run_shot]
   CHECK(b.launch.ball_speed == a.launch.ball_speed);
   CHECK(b.launch.horizontal_angle == a.launch.horizontal_angle);
   const Vec3 pa = a.trajectory.summary.rest_position, pb = b.trajectory.summary.rest_position;
-  CHECK(std::hypot(pa.x(), pa.z()) == Approx(std::hypot(pb.x(), pb.z())).epsilon(1e-9));
+  // Frame independence up to round-off, which the hops and roll amplify (a rotated frame
+  // rounds differently): 10 µm over ~270 m of carry and run.
+  CHECK(std::hypot(pa.x(), pa.z()) == Approx(std::hypot(pb.x(), pb.z())).margin(1e-5));
   CHECK(rad_to_deg(std::atan2(pb.z(), pb.x()) - std::atan2(pa.z(), pa.x())) == Approx(10.0).epsilon(1e-6));
 }

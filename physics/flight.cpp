@@ -61,6 +61,8 @@ const char* to_string(ShotEventKind k) {
     case ShotEventKind::Rest: return "rest";
     case ShotEventKind::LeftWorld: return "left_world";
     case ShotEventKind::StepLimit: return "step_limit";
+    case ShotEventKind::InCup: return "in_cup";
+    case ShotEventKind::LipOut: return "lip_out";
   }
   return "?";
 }

@@ -17,11 +17,13 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <Eigen/Core>
 
 #include "physics/aero.hpp"
+#include "physics/cup.hpp"
 #include "physics/atmosphere.hpp"
 #include "physics/ground.hpp"
 #include "physics/launch.hpp"
@@ -63,6 +65,7 @@ struct ShotModel {
   Environment environment;            ///< air and wind
   const Terrain* terrain = nullptr;   ///< never null after make_shot_model (flat fairway by default)
   FlightSettings settings;
+  std::optional<Cup> cup;             ///< the hole on the green, when the world has one (golf)
   double air_density = 0.0;           ///< kg/m³, from environment
   double air_viscosity = 1.81e-5;     ///< Pa·s, from environment (Sutherland)
 };
@@ -83,6 +86,7 @@ struct ShotState {
   EndReason end = EndReason::Rest;    ///< valid once ended
   bool landed = false;                ///< has touched the ground
   bool skidding = false;              ///< Roll: the skid to pure rolling is still to come
+  bool over_cup = false;              ///< rolled over the hole and out: ignore it until clear of it
   int bounces = 0;
   double max_height = 0.0;            ///< m, highest ball centre so far (exact, on the dense output)
   SurfaceContact support;             ///< Roll/Rest: the surface under the ball
@@ -109,6 +113,8 @@ enum class ShotEventKind : std::uint8_t {
   Rest,       ///< came to rest (or sank: a water surface holds the ball where it lands)
   LeftWorld,  ///< left the world's bounds, or rolled off its ground
   StepLimit,  ///< ran out of time or steps (should not happen for sane input)
+  InCup,      ///< dropped into the hole
+  LipOut,     ///< crossed the hole too fast, or struck the flagstick, and went on
 };
 const char* to_string(ShotEventKind k);
 

@@ -81,6 +81,8 @@ std::string validate_surface_material(const SurfaceMaterial& m) {
     if (auto w = bad("stimp", m.stimp, SurfaceMaterial::kStimp, "m"); !w.empty()) return w + " (or 0 = unset)";
   }
   if (auto w = bad("crater_tilt", m.crater_tilt, SurfaceMaterial::kCraterTilt, "rad"); !w.empty()) return w;
+  if (auto w = bad("lie_friction", m.lie_friction, SurfaceMaterial::kLieFriction, ""); !w.empty()) return w;
+  if (auto w = bad("lie_speed_loss", m.lie_speed_loss, SurfaceMaterial::kLieSpeedLoss, ""); !w.empty()) return w;
   return {};
 }
 

@@ -47,6 +47,13 @@ struct SurfaceMaterial {
   /// incidence); Penner's green 0.269 (15.4°); 0 = rigid surface (walls, cart paths).
   double crater_tilt = 0.0;
   static constexpr Range kCraterTilt{0.0, 0.6};
+  /// The lie: what the surface does to a strike of a ball resting on it. Grass trapped
+  /// between face and ball lubricates the contact (the "flyer": spin falls 60-70 %, the
+  /// launch rises), sand or long grass slows the club before it reaches the ball.
+  double lie_friction = 1.0;             ///< factor on the face–ball µ; rough ~0.2, clean lies 1
+  static constexpr Range kLieFriction{0.0, 1.0};
+  double lie_speed_loss = 0.0;           ///< fraction of the club's speed lost before contact; rough ~0.03
+  static constexpr Range kLieSpeedLoss{0.0, 0.9};
 };
 
 /// Empty when valid, otherwise a message naming the field and its allowed range.

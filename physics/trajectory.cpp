@@ -17,6 +17,7 @@ const char* to_string(EndReason r) {
     case EndReason::Rest: return "rest";
     case EndReason::LeftWorld: return "left_world";
     case EndReason::StepLimit: return "step_limit";
+    case EndReason::InCup: return "in_cup";
   }
   return "?";
 }

@@ -18,6 +18,7 @@ enum class EndReason : std::uint8_t {
   Rest,       ///< came to rest (on the ground, in the cup, or sunk where it touched water)
   LeftWorld,  ///< left the world's bounds, or rolled off the edge of its ground
   StepLimit,  ///< hit the time or step bound (should not happen for sane input)
+  InCup,      ///< dropped into the hole (physics/cup.hpp)
 };
 
 const char* to_string(Phase p);

@@ -110,6 +110,7 @@ ShotSpec spec_from(const CheckedDoc& doc) {
   if (auto a = doc.text_if_set("aero.model")) s.aero = *a;
   if (auto w = doc.text_if_set("world.name")) s.world = *w;
   s.flight.ground_firmness = doc.quantity("world.firmness");
+  if (doc.sport()->impactor == ImpactorKind::Club || doc.has("world.flagstick")) s.flagstick = doc.flag("world.flagstick");
   s.flight.green_stimp = doc.quantity_if_set("world.stimp").value_or(0.0);
   if (doc.strikes() & kClubKeys) {
     const auto pos = doc.list("world.ball_position");

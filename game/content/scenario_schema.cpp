@@ -158,6 +158,7 @@ Schema build_scenario_schema() {
                        "alpha of the power-law profile (default 1/7, open terrain)"));
 
   k.push_back(name("world.name", "", "world asset (default: the sport's), none = flat ground"));
+  k.push_back(name("world.flagstick", "false", "golf: leave the flagstick in the hole (true/false)", C, ValueType::Bool));
   k.push_back(quantity("world.firmness", None, &kFirmness, "", "1", "turf stiffness relative to the world's materials: 0.25 soaked ... 4 baked"));
   k.push_back(quantity("world.stimp", Length, &SurfaceMaterial::kStimp, "ft", "", "green speed, a Stimpmeter reading (default: the world's greens)"));
   k.push_back(quantity("world.aim", Angle, &BallPlacement::kAim, "deg", "0deg", "target line turned right (+) of the world's +x axis", C));

@@ -2,9 +2,11 @@
 #include "game/core/run_shot.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "game/rules/shot_rules.hpp"
 #include "physics/error.hpp"
+#include "physics/units.hpp"
 
 namespace sweetspot {
 namespace {
@@ -126,7 +128,10 @@ ResolvedShot resolve(const ShotSpec& spec, const Assets& assets) {
                        " m] in world " + r.world_name);
     }
     r.ground.y() = hit.point.y();
-    r.start_surface = to_string(r.world->world->material(hit.material).kind);
+    const SurfaceMaterial& under = r.world->world->material(hit.material);
+    r.start_surface = to_string(under.kind);
+    r.lie_friction = under.lie_friction;
+    r.lie_speed_loss = under.lie_speed_loss;
   }
   if (!p.lie.empty() && p.lie != r.start_surface) {
     throw InputError("world.lie: the ball at world.ball_position lies on " + r.start_surface + ", not " + p.lie);
@@ -150,7 +155,13 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
   } else {
     Delivery d;
     if (const auto* c = std::get_if<ClubStrike>(&s.spec.strike)) {
-      d = deliver_golf(s.ball, *s.club, c->swing, s.material);
+      // The lie acts on the strike: grass between face and ball, a club slowed by sand.
+      ImpactMaterial face = s.material;
+      face.mu *= s.lie_friction;
+      GolfSwing through = c->swing;
+      through.club_speed *= 1.0 - s.lie_speed_loss;
+      d = deliver_golf(s.ball, *s.club, through, face);
+      r.lie = s.start_surface;
       const auto& w = c->swing;
       ClubNumbers& k = r.club;
       k.club = s.club->name;
@@ -227,10 +238,33 @@ ShotResult run_shot(const ResolvedShot& s, const std::string& name, const RunOpt
   if (!options.fly) return r;
   const BallProperties ball{s.ball.mass, s.ball.radius, s.ball.inertia};
   const Terrain* terrain = s.world ? s.world->world.get() : nullptr;
-  const ShotModel model = make_shot_model(ball, *s.aero, s.spec.environment, terrain, s.spec.flight);
-  if (const std::string why = validate_launch(r.launch_state); !why.empty()) {
-    // Valid inputs can still launch an unflyable ball (the textbook friction model creates
-    // energy); say which shot and why rather than a bare flight message.
+  ShotModel model = make_shot_model(ball, *s.aero, s.spec.environment, terrain, s.spec.flight);
+  if (s.world != nullptr && s.world->pin) {
+    Cup cup;
+    cup.centre = *s.world->pin;
+    cup.flagstick = s.spec.flagstick;
+    model.cup = cup;
+  }
+  if (r.impact.present && r.impact.energy_loss < 0.0) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "the %s friction model created %.1f J in the impact (it does not bound the tangential impulse)",
+                  to_string(r.impact.friction), -r.impact.energy_loss);
+    r.warnings.emplace_back(buf);
+  }
+  // A delivered launch beyond the spin the aero models were fitted on still flies (they hold
+  // S at their fit's end), with a warning: the textbook model's wedge can reach 20 000 rpm.
+  LaunchState check = r.launch_state;
+  if (check.spin.norm() > LaunchNumbers::kSpin.max && check.spin.allFinite()) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "launch spin %.0f rpm is beyond the %.0f rpm the aero models were fitted on",
+                  radps_to_rpm(check.spin.norm()), radps_to_rpm(LaunchNumbers::kSpin.max));
+    r.warnings.emplace_back(buf);
+    check.spin *= LaunchNumbers::kSpin.max / check.spin.norm();
+  }
+  if (const std::string why = validate_launch(check); !why.empty()) {
+    // Valid inputs can still launch an unflyable ball; say which shot and why rather than a
+    // bare flight message.
     throw InputError(name + ": the impact launched a ball the flight model refuses (" + why +
                      "); check impact.friction / impact.mu / swing inputs");
   }

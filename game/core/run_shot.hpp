@@ -29,6 +29,8 @@ struct ResolvedShot {
   Vec3 ground = Vec3::Zero();           ///< m, the ground point under the ball
   Vec3 ball_centre = Vec3::Zero();      ///< m, the ball's centre at contact
   std::string start_surface;            ///< the surface under the ball ("tee", "fairway", ...; "" in the air)
+  double lie_friction = 1.0;            ///< the lie's factor on the face µ (SurfaceMaterial::lie_friction)
+  double lie_speed_loss = 0.0;          ///< the lie's club-speed loss before contact
 };
 
 /// Looks up every name of `spec` and checks every value against its physics range.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "physics/delivery.hpp"
 #include "physics/flight.hpp"
@@ -84,6 +85,10 @@ struct ShotResult {
   bool has_impactor = false;        ///< false for launch-only shots
   std::string impactor_mesh;        ///< assets/meshes name of the club head or bat; "" when none
   ShotState final_state;            ///< the physics state the shot ended in (replays, the golden hash)
+  /// What a player or coach should know about how far to trust this shot: the textbook
+  /// friction model created energy, the launch is beyond what the aero model was fitted on.
+  std::vector<std::string> warnings;
+  std::string lie;                  ///< club strikes: the surface the ball was struck from ("tee", "rough", ...)
 };
 
 }  // namespace sweetspot

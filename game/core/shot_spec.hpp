@@ -75,6 +75,7 @@ struct ShotSpec {
   std::string world;                   ///< "" = the sport's world; "none" = flat ground (kFlatWorld)
   BallPlacement placement;
   FlightSettings flight;
+  bool flagstick = false;              ///< golf: the flagstick left in the hole (Rules of Golf 13.2a)
 };
 
 /// world name of the infinite flat fairway (no course or ballpark), as `flight --world none`.

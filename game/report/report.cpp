@@ -21,7 +21,9 @@ DisplayUnits display_units(const SportProfile& sport, UnitSystem units) { return
 std::string launch_table(const ShotResult& r, const SportProfile& sport, UnitSystem units) {
   std::string title = r.scenario;
   if (r.impact.present) title += "  (" + (r.club.club.empty() ? r.bat.bat : r.club.club) + ")";
-  return metric_table(title, sport.report, r, display_units(sport, units));
+  std::string table = metric_table(title, sport.report, r, display_units(sport, units));
+  for (const std::string& w : r.warnings) table += "  warning: " + w + "\n";
+  return table;
 }
 
 nlohmann::json shot_json(const ShotResult& r) {
@@ -57,6 +59,7 @@ nlohmann::json shot_json(const ShotResult& r) {
           {"dynamic_loft_deg", r.club.dynamic_loft * kDegPerRad},
           {"impact_offset_m", {r.club.impact_toe, r.club.impact_up}},
       };
+      if (!r.lie.empty()) j["club"]["lie"] = r.lie;
     } else if (!r.bat.bat.empty()) {
       j["bat"] = {
           {"name", r.bat.bat},
@@ -70,6 +73,7 @@ nlohmann::json shot_json(const ShotResult& r) {
   }
   j["flight"] = flight_json(r.trajectory.summary);
   j["flight"]["end"] = to_string(r.end);
+  if (!r.warnings.empty()) j["warnings"] = r.warnings;
   return j;
 }
 

@@ -7,6 +7,7 @@ ShotEnd GolfShotRules::outcome(const ShotState& last) const {
   switch (last.end) {
     case EndReason::StepLimit: return ShotEnd::StepLimit;
     case EndReason::LeftWorld: return ShotEnd::OutOfBounds;
+    case EndReason::InCup: return ShotEnd::Holed;
     case EndReason::Rest: break;
   }
   const SurfaceKind kind = model_.terrain->material(last.support.material).kind;

@@ -21,6 +21,24 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
     end_shot(s, EndReason::Rest);
     return ev;
   }
+  if (m.cup) {
+    // Dropping into the hole from the air: where it comes down inside the hole's circle,
+    // Holmes's rule with its speed along the green decides (a pitch that dunks, a chip
+    // that lands in the hole).
+    const Vec3 d = c.point - m.cup->centre;
+    const double offset = (d - d.dot(c.normal) * c.normal).norm();
+    const Vec3 v = s.velocity();
+    const double along = (v - v.dot(c.normal) * c.normal).norm();
+    if (offset < m.cup->radius && along < cup_capture_speed(*m.cup, m.ball.radius, offset)) {
+      s.y.segment<3>(0) = m.cup->centre - (m.cup->depth - m.ball.radius) * c.normal;
+      s.y.segment<6>(3).setZero();
+      s.support = c;
+      s.phase = Phase::Rest;
+      end_shot(s, EndReason::InCup);
+      ev.kind = ShotEventKind::InCup;
+      return ev;
+    }
+  }
   const BounceResult b = bounce_on_surface(mat, c.normal, s.velocity(), s.spin(), m.ball, m.settings.ground_firmness);
   ++s.bounces;
   Vec3 v = b.velocity;

@@ -154,3 +154,48 @@ TEST_CASE("surface validation names the material, the field and its range", "[gr
   CHECK(validate_surface_material(m).find("e = 1.5") != std::string::npos);
   CHECK(validate_surface_material(default_fairway()).empty());
 }
+
+TEST_CASE("a skidding ball on a side slope is pulled down it before it grips", "[ground][skid]") {
+  // The slope acts on the ball in the skid as in the roll (issue 15: the skid ignored it).
+  const BallProperties ball = golf_ball_properties();
+  auto side_drift = [&](double slope_deg) {
+    struct Tilted final : Terrain {
+      Vec3 n;
+      SurfaceMaterial m = default_fairway();
+      bool sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit, const Vec3*) const override {
+        const double d0 = n.dot(from) - radius, d1 = n.dot(to) - radius;
+        if (d1 > 0.0 || d1 >= d0) return false;
+        hit->fraction = d0 <= 0.0 ? 0.0 : d0 / (d0 - d1);
+        const Vec3 c = from + hit->fraction * (to - from);
+        hit->point = c - radius * n;
+        hit->normal = n;
+        hit->material = 0;
+        return true;
+      }
+      bool support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const override {
+        if (n.dot(centre) - radius > reach) return false;
+        hit->point = centre - n.dot(centre) * n;
+        hit->normal = n;
+        hit->material = 0;
+        return true;
+      }
+      bool may_touch(const Vec3&, const Vec3&, double) const override { return true; }
+      bool may_touch_steep(const Vec3&, const Vec3&, double) const override { return false; }
+      const SurfaceMaterial& material(int) const override { return m; }
+      bool inside(const Vec3&) const override { return true; }
+    } ground;
+    const double a = deg_to_rad(slope_deg);
+    ground.n = Vec3(0.0, std::cos(a), std::sin(a));  // y = -z tanθ: falls toward +z
+    ShotModel model = test::golf_model(&ground);
+    LaunchState l;
+    l.position = ground.n * ball.radius;
+    l.velocity = Vec3(3.0, 0.0, 0.0);
+    ShotState s = start_state(l);
+    while (!s.ended && s.phase != Phase::Roll) step(model, s);
+    const double z0 = s.position().z();
+    step(model, s);  // the skid
+    return s.position().z() - z0;
+  };
+  CHECK(side_drift(0.0) == Approx(0.0).margin(1e-9));
+  CHECK(side_drift(3.0) > 1e-3);  // pulled down the slope (+z) while it slides
+}

@@ -47,7 +47,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x23794d3279e2898fULL;
+constexpr std::uint64_t kGoldenHash = 0x4fb851b779b78c7bULL;
 
 }  // namespace
 

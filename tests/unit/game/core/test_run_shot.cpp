@@ -90,3 +90,32 @@ TEST_CASE("aim turns the shot on the world, not its launch numbers", "[run_shot]
   CHECK(std::hypot(pa.x(), pa.z()) == Approx(std::hypot(pb.x(), pb.z())).margin(1e-5));
   CHECK(rad_to_deg(std::atan2(pb.z(), pb.x()) - std::atan2(pa.z(), pa.x())) == Approx(10.0).epsilon(1e-6));
 }
+
+TEST_CASE("the lie acts on the strike: a flyer from the rough, a slowed club in the sand", "[run_shot][lie]") {
+  // Grass between face and ball (materials.toml lie_friction): B. Pate (TrackMan, 2020) saw a
+  // light-rough 8-iron at ~2470 rpm against ~8000 clean, launch +2°, ball speed -9 mph;
+  // Coach Micque (FlightScope, 2016) a rough gap wedge at -66 % spin. Research bounds: spin
+  // -40…-75 %, ball speed -3…-8 %, a higher launch.
+  const Assets& A = test::assets();
+  ShotSpec spec;
+  auto& c = std::get<ClubStrike>(spec.strike);
+  c.club = "8-iron";
+  c.swing.club_speed = mph_to_mps(87.0);
+  c.swing.attack_angle = deg_to_rad(-4.5);
+  spec.placement.x = 150.0;
+  spec.placement.z = 0.0;
+  const ShotResult clean = run_shot(resolve(spec, A), "fairway", {true, false});
+  REQUIRE(clean.lie == "fairway");
+  spec.placement.z = 30.0;
+  const ShotResult rough = run_shot(resolve(spec, A), "rough", {true, false});
+  REQUIRE(rough.lie == "rough");
+  const double spin = rough.launch.spin.total / clean.launch.spin.total - 1.0;
+  const double speed = rough.launch.ball_speed / clean.launch.ball_speed - 1.0;
+  INFO("rough: spin " << 100 * spin << " %, ball speed " << 100 * speed << " %, launch "
+                      << rad_to_deg(rough.launch.vertical_angle - clean.launch.vertical_angle) << " deg");
+  CHECK(spin < -0.40);
+  CHECK(spin > -0.75);
+  CHECK(speed < -0.02);
+  CHECK(speed > -0.08);
+  CHECK(rough.launch.vertical_angle > clean.launch.vertical_angle);
+}

@@ -1,0 +1,103 @@
+// The hole (physics/cup.hpp): Holmes's capture speeds, lip-outs, the flagstick, and a putt
+// that drops on a flat Stimpmeter green.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "physics/cup.hpp"
+#include "physics/flight.hpp"
+#include "physics/ground.hpp"
+#include "physics/units.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+constexpr double kR = 0.021335;  // golf ball radius
+
+SurfaceMaterial stimp_green(double feet) {
+  SurfaceMaterial g = default_fairway();
+  g.name = "green";
+  g.kind = SurfaceKind::Green;
+  g.stimp = ft_to_m(feet);
+  return g;
+}
+
+// A ball rolling (already gripping) along +x toward a hole 2 m away, `offset` m to the side,
+// arriving at about `arrive` m/s on a flat 10 ft green. Returns the shot's end.
+EndReason putt(double arrive, double offset, bool flagstick) {
+  static const FlatGround green(stimp_green(10.0));
+  ShotModel model = test::golf_model(&green);
+  Cup cup;
+  cup.centre = Vec3(2.0, 0.0, offset);
+  cup.flagstick = flagstick;
+  model.cup = cup;
+  // Constant deceleration a (air included in the reading): v0² = v² + 2 a d.
+  const double a = rolling_resistance_from_stimp(ft_to_m(10.0)) * kGravity;
+  const double v0 = std::sqrt(arrive * arrive + 2.0 * a * 2.0);
+  LaunchState l;
+  l.position = Vec3(0.0, kR, 0.0);
+  l.velocity = Vec3(v0, 0.0, 0.0);
+  l.spin = Vec3(0.0, 0.0, -v0 / kR);  // rolling
+  ShotState s = start_state(l);
+  while (!s.ended) step(model, s);
+  return s.end;
+}
+
+}  // namespace
+
+TEST_CASE("Holmes's capture speeds: 1.31 m/s through the centre, falling to 0 at the rim", "[cup]") {
+  // Holmes, Am. J. Phys. 59 (1991): a centred ball drops if slower than 1.31 m/s (4.3 ft/s)
+  // on a 4.25 in hole.
+  const Cup cup;
+  CHECK(cup_capture_speed(cup, kR, 0.0) == Approx(1.31).epsilon(0.01));
+  double last = 10.0;
+  for (double b = 0.0; b < cup.radius; b += 0.005) {
+    const double v = cup_capture_speed(cup, kR, b);
+    CHECK(v <= last);
+    last = v;
+  }
+  CHECK(cup_capture_speed(cup, kR, cup.radius) == 0.0);
+  CHECK(cup_capture_speed(cup, kR, 0.06) == 0.0);  // outside the hole
+}
+
+TEST_CASE("a rolling putt drops below the capture speed and rides over above it", "[cup]") {
+  CHECK(putt(1.20, 0.0, false) == EndReason::InCup);
+  CHECK(putt(1.45, 0.0, false) != EndReason::InCup);
+  CHECK(putt(0.30, 0.0, false) == EndReason::InCup);
+  // 30 mm off line: the chord is shorter, the capture speed lower.
+  CHECK(putt(0.60, 0.030, false) == EndReason::InCup);
+  CHECK(putt(1.20, 0.030, false) != EndReason::InCup);
+  // Past the rim: never.
+  CHECK(putt(0.50, 0.060, false) != EndReason::InCup);
+}
+
+TEST_CASE("the flagstick stops a firm centred putt; a glancing one is turned aside", "[cup]") {
+  // Pelz (1990): with the stick in, more putts were holed (it absorbs speed); Mase (2019):
+  // the stick hurts putts that strike it off-centre.
+  CHECK(putt(1.8, 0.0, false) != EndReason::InCup);
+  CHECK(putt(1.8, 0.0, true) == EndReason::InCup);
+  CHECK(putt(1.0, 0.020, false) == EndReason::InCup);
+  CHECK(putt(1.0, 0.020, true) != EndReason::InCup);
+}
+
+TEST_CASE("a putt skids, then rolls at 5/7 of its speed", "[cup][skid]") {
+  // A ball struck without spin slides until v = 5/7 v0 whatever µ (solid sphere, I = 2/5 mR²),
+  // over 12 v0² / (49 µ g).
+  const FlatGround green(stimp_green(10.0));
+  ShotModel model = test::golf_model(&green);
+  LaunchState l;
+  l.position = Vec3(0.0, kR, 0.0);
+  l.velocity = Vec3(2.0, 0.0, 0.0);
+  ShotState s = start_state(l);
+  ShotEvent ev;
+  do {
+    ev = step(model, s);
+  } while (!s.ended && s.phase != Phase::Roll);
+  REQUIRE(s.phase == Phase::Roll);
+  step(model, s);  // the skid
+  CHECK(s.velocity().norm() == Approx(5.0 / 7.0 * 2.0).epsilon(1e-3));
+  const double mu = default_fairway().mu;
+  CHECK(s.position().x() == Approx(12.0 * 4.0 / (49.0 * mu * kGravity)).epsilon(0.01));
+}

@@ -194,6 +194,15 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
   return out;
 }
 
+bool ground_under(const Terrain& terrain, double x, double z, double from_y, double depth, SurfaceContact* hit) {
+  if (!terrain.support(Vec3(x, from_y, z), 0.0, depth, hit)) return false;
+  const Vec3& n = hit->normal;
+  if (!(n.y() > 1e-6)) return false;  // a wall: no ground on this vertical
+  const Vec3& p = hit->point;
+  hit->point = Vec3(x, p.y() - (n.x() * (x - p.x()) + n.z() * (z - p.z())) / n.y(), z);
+  return true;
+}
+
 bool FlatGround::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit,
                        const Vec3* follow) const {
   if (follow != nullptr && follow->y() >= std::cos(kFollowAngle)) return false;

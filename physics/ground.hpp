@@ -150,6 +150,11 @@ class Terrain {
   virtual double reference_height() const { return 0.0; }
 };
 
+/// The ground straight below (x, from_y, z), searching `depth` m down: the surface's contact
+/// with its point on that vertical line (Terrain::support's point is the foot along the
+/// surface normal, which from far above lies metres aside on a slope). False when none.
+bool ground_under(const Terrain& terrain, double x, double z, double from_y, double depth, SurfaceContact* hit);
+
 /// An infinite flat plane y = height of one material: the ground when no world is loaded.
 class FlatGround final : public Terrain {
  public:

@@ -84,7 +84,7 @@ FaceLaw read_face(const TomlFile& f, const toml::table& root) {
 }
 
 void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, ClubSpec& k, ClubInfo& info) {
-  f.only_keys(t, "club", {"name", "kind", "mesh", "tee_height", "loft", "lie", "dynamic_loft", "strike_height", "head_mass", "cg",
+  f.only_keys(t, "club", {"name", "kind", "mesh", "tee_height", "tour_speed", "tour_attack", "loft", "lie", "dynamic_loft", "strike_height", "head_mass", "cg",
                           "inertia", "inertia_products", "bulge_radius", "roll_radius", "cor", "length", "face_size",
                           "cor_edge_drop"});
   k.name = f.text(f.required(t, "name", "the club's name"), "name");
@@ -95,6 +95,10 @@ void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, Clu
     f.fail(*t.get("kind"), "kind", "unknown kind '" + info.kind + "' (allowed: wood, hybrid, iron, wedge, putter)");
   info.mesh = f.text(f.required(t, "mesh", "the head mesh in assets/meshes"), "mesh");
   info.tee_height = f.quantity_or(t, "tee_height", Dimension::Length, 0.0, &ClubInfo::kTeeHeight);
+  info.tour_speed = f.quantity(f.required(t, "tour_speed", "a tour player's full-swing club speed"), "tour_speed",
+                               Dimension::Speed, &GolfSwing::kClubSpeed);
+  info.tour_attack = f.quantity(f.required(t, "tour_attack", "a tour player's attack angle"), "tour_attack",
+                                Dimension::Angle, &GolfSwing::kAttackAngle);
   k.loft = f.quantity(f.required(t, "loft", "static loft"), "loft", Dimension::Angle, &ClubSpec::kLoft);
   k.lie = f.quantity(f.required(t, "lie", "static lie"), "lie", Dimension::Angle, &ClubSpec::kLie);
   k.dynamic_loft = f.quantity(f.required(t, "dynamic_loft", "typical delivered loft"), "dynamic_loft",

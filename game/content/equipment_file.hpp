@@ -22,6 +22,10 @@ struct ClubInfo {
   /// irons ~5 mm); 0 = played off the ground even from the tee (a putter).
   double tee_height = 0.0;
   static constexpr Range kTeeHeight{0.0, 0.1016};  ///< Rule 4.3: a tee is at most 4 in long
+  /// A tour player's full swing with this club (TrackMan PGA averages): m/s and rad. The
+  /// game scales the speed for every golfer by their driver speed.
+  double tour_speed = 40.0;
+  double tour_attack = 0.0;
 };
 
 /// The game's side of a bat.

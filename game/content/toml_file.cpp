@@ -148,7 +148,11 @@ double TomlFile::quantity(const toml::node& n, std::string_view key, Dimension d
     fail(n, key, e.what());
   }
   if (range != nullptr) {
-    if (const std::string why = range_refusal(key, v, *range, si_unit_name(dim)); !why.empty()) {
+    // Fractions are written and read as percent ("140%"): say it in percent too.
+    const bool pct = dim == Dimension::Fraction;
+    const Range shown = pct ? Range{100.0 * range->min, 100.0 * range->max, range->min_open, range->max_open} : *range;
+    if (const std::string why = range_refusal(key, pct ? 100.0 * v : v, shown, pct ? "%" : si_unit_name(dim));
+        !why.empty()) {
       throw InputError(where(n) + ": " + why);
     }
   }

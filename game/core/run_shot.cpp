@@ -122,8 +122,7 @@ ResolvedShot resolve(const ShotSpec& spec, const Assets& assets) {
   if (r.world != nullptr) {
     const WorldDescription& d = r.world->description();
     SurfaceContact hit;
-    const Vec3 probe(p.x, d.bounds_max.y(), p.z);
-    if (!r.world->world->support(probe, r.ball.radius, d.bounds_max.y() - d.bounds_min.y(), &hit)) {
+    if (!ground_under(*r.world->world, p.x, p.z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit)) {
       throw InputError("world.ball_position: no ground under [" + std::to_string(p.x) + " m, " + std::to_string(p.z) +
                        " m] in world " + r.world_name);
     }

@@ -146,8 +146,8 @@ std::optional<double> ShotScene::ground_height(double x, double z) const {
   if (w == nullptr) return std::nullopt;
   const WorldDescription& d = w->description();
   SurfaceContact hit;
-  // A tiny sphere dropped from the top of the world: the highest ground under (x, z).
-  if (!w->world->support(Vec3(x, d.bounds_max.y(), z), 1e-3, d.bounds_max.y() - d.bounds_min.y(), &hit))
+  // Straight down from the top of the world: the highest ground under (x, z).
+  if (!ground_under(*w->world, x, z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit))
     return std::nullopt;
   return hit.point.y();
 }

@@ -1,0 +1,85 @@
+#include "game/content/course_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "game/content/toml_file.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+// The ground point under [x, z] on the world, or InputError naming where it came from.
+Vec3 ground_at(const WorldAsset& w, double x, double z, const std::string& where, const std::string& what) {
+  const WorldDescription& d = w.description();
+  SurfaceContact hit;
+  if (!ground_under(*w.world, x, z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit))
+    throw InputError(where + ": " + what + " [" + std::to_string(x) + " m, " + std::to_string(z) +
+                     " m] is off the ground of world '" + w.name + "'");
+  return Vec3(x, hit.point.y(), z);
+}
+
+}  // namespace
+
+double CourseHole::length() const { return std::hypot(pin.x() - tee.x(), pin.z() - tee.z()); }
+
+int Course::par() const {
+  int p = 0;
+  for (const CourseHole& h : holes) p += h.par;
+  return p;
+}
+
+Course load_course(const Assets& assets, std::string_view name_or_path) {
+  std::filesystem::path path(name_or_path);
+  if (path.extension() != ".toml") path = assets.root() / "courses" / (std::string(name_or_path) + ".toml");
+  const TomlFile f = TomlFile::read(path, "course");
+  f.only_keys(f.root(), "", {"name", "hole"});
+  Course c;
+  c.source = path;
+  c.name = f.text(f.required(f.root(), "name", "the course's name"), "name");
+  int last = 0;
+  for (const toml::table* t : f.tables(f.root(), "hole", true)) {
+    f.only_keys(*t, "hole", {"number", "par", "world", "tee", "pin"});
+    CourseHole h;
+    static constexpr Range kNumber{1.0, 18.0};
+    h.number = static_cast<int>(f.quantity(f.required(*t, "number", "the hole's number, 1-18"), "number",
+                                           Dimension::Dimensionless, &kNumber));
+    if (h.number != last + 1) f.fail(*t->get("number"), "number", "holes must be numbered 1, 2, 3, ... in order");
+    last = h.number;
+    h.par = static_cast<int>(f.quantity(f.required(*t, "par", "3 to 6"), "par", Dimension::Dimensionless, &CourseHole::kPar));
+    const toml::node& wn = f.required(*t, "world", "a world of assets/worlds");
+    h.world_name = f.text(wn, "world");
+    try {
+      h.world = assets.world(h.world_name);
+    } catch (const InputError& e) {
+      throw InputError(f.where(wn) + ": world: " + e.what());
+    }
+    if (h.world == nullptr || h.world->sport != "golf")
+      f.fail(wn, "world", "'" + h.world_name + "' is not a golf world (a hole needs a course world with a green)");
+    const toml::node& tn = f.required(*t, "tee", "the tee spot [x, z] on the world");
+    const auto tee = f.quantities(tn, "tee", Dimension::Length, 2);
+    h.tee = ground_at(*h.world, tee[0], tee[1], f.where(tn), "tee");
+    if (const toml::node* pn = t->get("pin")) {
+      const auto pin = f.quantities(*pn, "pin", Dimension::Length, 2);
+      h.pin = ground_at(*h.world, pin[0], pin[1], f.where(*pn), "pin");
+    } else if (h.world->pin) {
+      h.pin = *h.world->pin;
+    } else {
+      throw InputError(f.where(*t) + ": hole " + std::to_string(h.number) + ": missing pin (world '" + h.world_name +
+                       "' has no cup: give pin = [x, z])");
+    }
+    c.holes.push_back(h);
+  }
+  return c;
+}
+
+std::vector<std::string> course_names(const Assets& assets) {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(assets.root() / "courses", ec))
+    if (e.path().extension() == ".toml") out.push_back(e.path().stem().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace sweetspot

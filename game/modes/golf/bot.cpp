@@ -1,0 +1,161 @@
+#include "game/modes/golf/bot.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+// Where the ball came to rest against the line it was aimed on: metres along and to the
+// right of the line from `from` toward direction `line` (rad right of +x).
+struct AlongAcross {
+  double along, across;
+};
+AlongAcross relative(const Vec3& from, double line, const Vec3& p) {
+  const double dx = p.x() - from.x(), dz = p.z() - from.z();
+  const double c = std::cos(line), s = std::sin(line);
+  return {dx * c + dz * s, -dx * s + dz * c};
+}
+
+/// The putt's aim point: this far past the cup (Pelz's 17 in, 0.43 m, holes the most).
+constexpr double kPuttPast = 0.43;
+/// Extra power spread of a partial swing per unit of power it leaves out (ESTIMATE: a
+/// half-swing wedge strays ~3 % more in distance than a full one; tour players leave
+/// 20-yd pitches ~2.5 m away, Broadie 2014).
+constexpr double kPartialFeel = 0.06;
+
+}  // namespace
+
+GolfBot::GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed)
+    : assets_(assets), skill_(skill), rng_(seed) {
+  const EquipmentCatalog& eq = assets.equipment();
+  for (const std::string& club : golf_bag()) {
+    if (club == "putter") continue;
+    ShotSpec s;
+    s.sport = "golf";
+    s.world = kFlatWorld;
+    ClubStrike c;
+    c.club = club;
+    c.swing = meter_swing(MeterInput{}, eq.club(club), eq.club_info_of(club), full_swing_speed(skill, eq.club_info_of(club)));
+    s.strike = c;
+    const ShotResult r = run_shot(resolve(s, assets), club, {true, false});
+    stock_.push_back({club, r.trajectory.summary.carry_m, r.trajectory.summary.total_m});
+  }
+}
+
+std::string GolfBot::suggest(double distance, bool teed) const {
+  // The shortest club that carries the distance, else the longest allowed.
+  const Stock* pick = nullptr;
+  for (const Stock& s : stock_) {
+    if (s.club == "driver" && !teed) continue;
+    if (s.carry >= distance && (pick == nullptr || s.carry < pick->carry)) pick = &s;
+  }
+  if (pick == nullptr) {
+    for (const Stock& s : stock_) {
+      if (s.club == "driver" && !teed) continue;
+      if (pick == nullptr || s.carry > pick->carry) pick = &s;
+    }
+  }
+  return pick->club;
+}
+
+StrokeInput GolfBot::putt(const GolfRound& round) const {
+  StrokeInput in;
+  in.club = "putter";
+  const double d = round.to_pin();
+  const double line = round.line_to_pin();
+  const Vec3 start = round.ball();
+  // Roll deceleration for first guesses: a 10 ft Stimpmeter green, ~0.55 m/s².
+  constexpr double kDecel = 0.55;
+  const double v_target = std::sqrt(2.0 * kDecel * kPuttPast);  // at the cup, to finish 0.43 m past
+  const double full = full_swing_speed(skill_, assets_.equipment().club_info_of("putter"));
+  double power = std::clamp(std::sqrt(2.0 * kDecel * (d + kPuttPast)) / 1.6 / full, 0.02, 1.1);
+  double aim = 0.0;
+  for (int i = 0; i < 6; ++i) {
+    in.aim = aim;
+    in.meter.power = power;
+    const ShotResult r = round.simulate(in, true);
+    // Where the ball crosses the cup's distance, and how fast (between two samples): the
+    // line and the speed to fix. A ball that drops is read from the sample before it fell.
+    const auto& sm = r.trajectory.samples;
+    const std::size_t usable = r.end == ShotEnd::Holed && sm.size() > 1 ? sm.size() - 1 : sm.size();
+    bool crossed = false;
+    double across = 0.0, v = 0.0, reach = 0.0;
+    for (std::size_t k = 1; k < usable; ++k) {
+      const AlongAcross a = relative(start, line, sm[k - 1].position), b = relative(start, line, sm[k].position);
+      reach = std::max(reach, b.along);
+      if (b.along >= d && a.along < d) {
+        const double f = (d - a.along) / std::max(b.along - a.along, 1e-9);
+        across = a.across + f * (b.across - a.across);
+        v = sm[k - 1].velocity.norm() + f * (sm[k].velocity.norm() - sm[k - 1].velocity.norm());
+        crossed = true;
+        break;
+      }
+    }
+    if (r.end == ShotEnd::Holed && (!crossed || (v > 0.5 * v_target && v < 1.5 * v_target))) break;
+    if (!crossed) {  // short: more speed, the line from where it stopped
+      const AlongAcross at = relative(start, line, r.trajectory.summary.rest_position);
+      power = std::clamp(power * std::sqrt((d + kPuttPast) / std::max(std::max(reach, at.along), 0.05)), 0.02, 1.1);
+      if (at.along > 0.3 * d) aim = std::clamp(aim - std::atan2(at.across, at.along), -0.5, 0.5);
+      continue;
+    }
+    power = std::clamp(power * std::sqrt((2.0 * kDecel * d + v_target * v_target) / (2.0 * kDecel * d + v * v)), 0.02, 1.1);
+    aim = std::clamp(aim - std::atan2(across, d), -0.5, 0.5);
+  }
+  in.aim = aim;
+  in.meter.power = power;
+  return in;
+}
+
+StrokeInput GolfBot::intend(const GolfRound& round) const {
+  if (round.lie() == "green") return putt(round);
+  const double d = round.to_pin();
+  StrokeInput in;
+  const Stock& shortest = stock_.back();
+  in.club = suggest(d, round.teed());
+  double power = 1.0;
+  if (d < shortest.carry) {
+    // A partial wedge: carry grows a little faster than swing speed; start at that guess.
+    in.club = shortest.club;
+    power = std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0);
+  }
+  const bool going_for_pin = d <= std::max_element(stock_.begin(), stock_.end(), [&](const Stock& a, const Stock& b) {
+                                       return (a.club == "driver" && !round.teed() ? 0.0 : a.carry) <
+                                              (b.club == "driver" && !round.teed() ? 0.0 : b.carry);
+                                     })->total;
+  // Try it on the course and correct the aim (wind, slopes, curve) and a partial swing's power.
+  double aim = 0.0;
+  const double line = round.line_to_pin();
+  for (int i = 0; i < 3; ++i) {
+    in.aim = aim;
+    in.meter.power = power;
+    const ShotResult r = round.simulate(in);
+    const Vec3& rest = r.end == ShotEnd::Water || r.end == ShotEnd::OutOfBounds ? r.trajectory.summary.landing_position
+                                                                               : r.trajectory.summary.rest_position;
+    const AlongAcross at = relative(round.ball(), line, rest);
+    if (at.along > 1.0) aim = std::clamp(aim - std::atan2(at.across, at.along), -0.4, 0.4);
+    if (power < 1.0 && going_for_pin && at.along > 1.0)
+      power = std::clamp(power * std::pow(d / at.along, 0.8), 0.05, 1.0);
+  }
+  in.aim = aim;
+  in.meter.power = power;
+  return in;
+}
+
+StrokeInput GolfBot::plan(const GolfRound& round) {
+  StrokeInput in = intend(round);
+  if (in.club == "putter") {
+    in.meter.power = std::clamp(in.meter.power * (1.0 + rng_.normal(skill_.putt_speed_sd)), 0.01, 1.1);
+    in.aim = std::clamp(in.aim + rng_.normal(skill_.putt_aim_sd), -1.5, 1.5);
+    return in;
+  }
+  // A partial swing is judged by feel: its power strays more the shorter it is.
+  const double power_sd = skill_.power_sd + kPartialFeel * (1.0 - std::min(in.meter.power, 1.0));
+  in.meter.power = std::clamp(in.meter.power * (1.0 + rng_.normal(power_sd)), 0.02, 1.1);
+  in.meter.accuracy_ms = std::clamp(rng_.normal(skill_.accuracy_sd_ms), MeterInput::kAccuracy.min, MeterInput::kAccuracy.max);
+  return in;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,43 @@
+// A bot golfer (DESIGN §9): it reads the hole like a player — which club reaches, where to
+// aim, how hard to putt — by trying the stroke on the physics it is about to play (a caddie
+// who knows the course), then swings with seeded random meter errors drawn from its skill.
+// It makes the game testable headless and is the opponent in the window.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "game/modes/golf/round.hpp"
+#include "game/util/rng.hpp"
+
+namespace sweetspot {
+
+class GolfBot {
+ public:
+  GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed);
+
+  /// The stroke it means to play from where the round's ball lies: no errors.
+  StrokeInput intend(const GolfRound& round) const;
+  /// intend() with this skill's meter errors drawn from the bot's seeded generator.
+  StrokeInput plan(const GolfRound& round);
+
+  /// A full, error-free swing's carry and total on flat fairway, per club of the bag.
+  struct Stock {
+    std::string club;
+    double carry = 0.0, total = 0.0;  ///< m
+  };
+  const std::vector<Stock>& stock() const { return stock_; }
+  /// The club a player of this skill would hit `distance` m (the shortest that carries it;
+  /// the longest when none does); never the putter, the driver only from a tee.
+  std::string suggest(double distance, bool teed) const;
+
+ private:
+  StrokeInput putt(const GolfRound& round) const;
+  const Assets& assets_;
+  GolferSkill skill_;
+  Rng rng_;
+  std::vector<Stock> stock_;
+};
+
+}  // namespace sweetspot

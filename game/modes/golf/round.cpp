@@ -1,0 +1,156 @@
+#include "game/modes/golf/round.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+
+const char* to_string(StrokeEnd e) {
+  switch (e) {
+    case StrokeEnd::Rest: return "rest";
+    case StrokeEnd::Holed: return "holed";
+    case StrokeEnd::Water: return "water";
+    case StrokeEnd::OutOfBounds: return "out_of_bounds";
+  }
+  return "?";
+}
+
+GolfRound::GolfRound(const Assets& assets, Course course, const GolferSkill& golfer)
+    : assets_(assets), course_(std::move(course)), golfer_(golfer) {
+  if (course_.holes.empty()) throw InputError("course '" + course_.name + "' has no holes");
+  ball_ = hole().tee;
+  card_.push_back(HoleCard{hole().number, hole().par, 0, 0, 0, false, {}});
+}
+
+std::string GolfRound::surface_at(const Vec3& p) const {
+  const WorldAsset& w = *hole().world;
+  const WorldDescription& d = w.description();
+  SurfaceContact hit;
+  if (!ground_under(*w.world, p.x(), p.z(), d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit))
+    return "out_of_bounds";
+  return to_string(w.world->material(hit.material).kind);
+}
+
+std::string GolfRound::lie() const { return surface_at(ball_); }
+
+double GolfRound::to_pin() const { return std::hypot(hole().pin.x() - ball_.x(), hole().pin.z() - ball_.z()); }
+
+double GolfRound::line_to_pin() const { return std::atan2(hole().pin.z() - ball_.z(), hole().pin.x() - ball_.x()); }
+
+int GolfRound::total_strokes() const {
+  int n = 0;
+  for (const HoleCard& h : card_) n += h.strokes;
+  return n;
+}
+
+ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
+  const EquipmentCatalog& eq = assets_.equipment();
+  if (std::find(golf_bag().begin(), golf_bag().end(), in.club) == golf_bag().end()) {
+    std::string names;
+    for (const std::string& c : golf_bag()) names += (names.empty() ? "" : ", ") + c;
+    throw InputError("club '" + in.club + "' is not in the bag (allowed: " + names + ")");
+  }
+  check_range("aim", in.aim, StrokeInput::kAim, "rad");
+  ShotSpec s;
+  s.sport = "golf";
+  s.world = hole().world_name;
+  ClubStrike c;
+  c.club = in.club;
+  c.swing = meter_swing(in.meter, eq.club(in.club), eq.club_info_of(in.club), full_swing_speed(golfer_, eq.club_info_of(in.club)));
+  s.strike = c;
+  s.placement.x = ball_.x();
+  s.placement.z = ball_.z();
+  // The aim line: from the ball toward the cup, turned by the player's aim.
+  double aim = line_to_pin() + in.aim;
+  aim = std::remainder(aim, 2.0 * kPi);
+  s.placement.aim = aim;
+  s.placement.teed = teed_;
+  return s;
+}
+
+ShotResult GolfRound::simulate(const StrokeInput& in, bool record_samples) const {
+  const ShotSpec s = spec_for(in);
+  return run_shot(resolve(s, assets_), "hole " + std::to_string(hole().number), {true, record_samples});
+}
+
+Vec3 GolfRound::drop_back_on_line(const Vec3& in_water, const Vec3& from) const {
+  // Rule 17.1d(2), back-on-the-line relief: on the line from the hole through where the ball
+  // entered, behind it; here, from where it came to rest back toward where it was struck,
+  // the first spot that is neither water nor out of bounds, and a metre more.
+  const Vec3 d = Vec3(from.x() - in_water.x(), 0.0, from.z() - in_water.z());
+  const double len = d.norm();
+  const Vec3 u = len > 0.0 ? Vec3(d / len) : Vec3::UnitX() * -1.0;
+  for (double t = 0.5; t < len + 50.0; t += 0.5) {
+    const Vec3 p = in_water + t * u;
+    const std::string s = surface_at(p);
+    if (s != "water" && s != "out_of_bounds") {
+      const Vec3 q = p + u;
+      const std::string sq = surface_at(q);
+      return sq != "water" && sq != "out_of_bounds" ? q : p;
+    }
+  }
+  return from;
+}
+
+void GolfRound::finish_hole() {
+  ++hole_;
+  if (finished()) return;
+  ball_ = hole().tee;
+  teed_ = true;
+  card_.push_back(HoleCard{hole().number, hole().par, 0, 0, 0, false, {}});
+}
+
+const StrokeRecord& GolfRound::play(const StrokeInput& in, ShotResult* shot) {
+  if (finished()) throw InputError("the round is over");
+  const ShotSpec spec = spec_for(in);
+  const ResolvedShot resolved = resolve(spec, assets_);
+  ShotResult r = run_shot(resolved, "hole " + std::to_string(hole().number), {true, shot != nullptr});
+  const std::size_t k = card_.size() - 1;
+  HoleCard& h = card_[k];
+  StrokeRecord rec;
+  rec.club = in.club;
+  rec.lie = resolved.start_surface;
+  rec.start = resolved.ball_centre;
+  rec.rest = r.trajectory.summary.rest_position;
+  ++h.strokes;
+  if (rec.lie == "green") ++h.putts;
+  switch (r.end) {
+    case ShotEnd::Holed:
+      rec.end = StrokeEnd::Holed;
+      break;
+    case ShotEnd::Water:
+      rec.end = StrokeEnd::Water;
+      rec.penalty = 1;
+      ball_ = drop_back_on_line(rec.rest, rec.start);
+      teed_ = false;
+      break;
+    case ShotEnd::OutOfBounds:
+    case ShotEnd::StepLimit:
+      // Stroke and distance: play again from where it was struck (teed again on the tee).
+      rec.end = StrokeEnd::OutOfBounds;
+      rec.penalty = 1;
+      break;
+    default:
+      rec.end = StrokeEnd::Rest;
+      ball_ = Vec3(rec.rest.x(), rec.rest.y() - resolved.ball.radius, rec.rest.z());
+      teed_ = false;
+      break;
+  }
+  h.penalties += rec.penalty;
+  h.strokes += rec.penalty;
+  rec.to_pin_m = rec.end == StrokeEnd::Holed ? 0.0 : std::hypot(hole().pin.x() - rec.rest.x(), hole().pin.z() - rec.rest.z());
+  h.shots.push_back(rec);
+  if (shot != nullptr) *shot = std::move(r);
+  if (rec.end == StrokeEnd::Holed) {
+    h.holed = true;
+    finish_hole();
+  } else if (h.strokes >= kPickUp) {
+    h.strokes = kPickUp;
+    finish_hole();
+  }
+  return card_[k].shots.back();
+}
+
+}  // namespace sweetspot

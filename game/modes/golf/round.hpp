@@ -1,0 +1,95 @@
+// A round of golf (DESIGN §9): the ball played where it lies, stroke by stroke, from each
+// hole's tee to the cup, under the Rules of Golf's penalties: out of bounds costs stroke and
+// distance (Rule 18.2), water a penalty stroke and a drop back on the line (Rule 17.1d), and
+// a hole ends in the cup or at a 10-stroke pick-up. The physics decides every outcome: a
+// stroke is a ShotSpec run through the same resolve()/run_shot() as every other shot.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "game/content/course_file.hpp"
+#include "game/core/run_shot.hpp"
+#include "game/modes/golf/golfer.hpp"
+#include "game/modes/golf/swing_meter.hpp"
+
+namespace sweetspot {
+
+struct StrokeInput {
+  std::string club;           ///< a club of golf_bag()
+  double aim = 0.0;           ///< rad, + right of the line from the ball to the cup
+  static constexpr Range kAim{-kPi / 2, kPi / 2};
+  MeterInput meter;
+};
+
+enum class StrokeEnd { Rest, Holed, Water, OutOfBounds };
+const char* to_string(StrokeEnd e);
+
+struct StrokeRecord {
+  std::string club;
+  std::string lie;            ///< "tee", "fairway", "rough", "sand", "green"
+  Vec3 start = Vec3::Zero();  ///< m, the ball's centre when struck
+  Vec3 rest = Vec3::Zero();   ///< m, where it came to rest (in the water or out of bounds: there)
+  StrokeEnd end = StrokeEnd::Rest;
+  double to_pin_m = 0.0;      ///< m from the rest position to the cup (0 when holed)
+  int penalty = 0;            ///< penalty strokes this shot incurred
+};
+
+struct HoleCard {
+  int number = 0, par = 0;
+  int strokes = 0;            ///< shots played + penalty strokes
+  int putts = 0;              ///< shots played from the green
+  int penalties = 0;
+  bool holed = false;         ///< false: picked up at 10
+  std::vector<StrokeRecord> shots;
+};
+
+class GolfRound {
+ public:
+  /// Holes at most this many strokes, then the ball is picked up (DESIGN §9).
+  static constexpr int kPickUp = 10;
+
+  GolfRound(const Assets& assets, Course course, const GolferSkill& golfer);
+
+  bool finished() const { return hole_ >= course_.holes.size(); }
+  const Course& course() const { return course_; }
+  const GolferSkill& golfer() const { return golfer_; }
+  std::size_t hole_index() const { return hole_; }
+  const CourseHole& hole() const { return course_.holes.at(hole_); }
+  /// The ground point the ball lies on (for the first stroke of a hole: the tee spot).
+  const Vec3& ball() const { return ball_; }
+  bool teed() const { return teed_; }
+  /// The surface under the ball ("tee", "fairway", "rough", "sand", "green").
+  std::string lie() const;
+  double to_pin() const;
+  /// World direction from the ball to the cup, rad right of +x.
+  double line_to_pin() const;
+  const std::vector<HoleCard>& card() const { return card_; }
+  int total_strokes() const;
+  int total_par() const { return course_.par(); }
+
+  /// The shot the stroke would play, as every other shot is specified.
+  ShotSpec spec_for(const StrokeInput& in) const;
+  /// Plays the stroke at the current hole: the shot, the rules, the score. Throws InputError
+  /// (naming the field) for a club not in the bag or a meter input out of range.
+  /// `shot`, when given, receives the physics result (for drawing it). The record stays
+  /// valid until the next play().
+  const StrokeRecord& play(const StrokeInput& in, ShotResult* shot = nullptr);
+  /// The shot without playing it (bots plan with it). Deterministic.
+  ShotResult simulate(const StrokeInput& in, bool record_samples = false) const;
+
+ private:
+  Vec3 drop_back_on_line(const Vec3& in_water, const Vec3& from) const;
+  std::string surface_at(const Vec3& p) const;
+  void finish_hole();
+
+  const Assets& assets_;
+  Course course_;
+  GolferSkill golfer_;
+  std::size_t hole_ = 0;
+  Vec3 ball_ = Vec3::Zero();
+  bool teed_ = true;
+  std::vector<HoleCard> card_;
+};
+
+}  // namespace sweetspot

@@ -1,0 +1,30 @@
+#include "game/modes/golf/swing_meter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+
+void validate_meter(const MeterInput& m) {
+  check_range("meter.power", m.power, MeterInput::kPower, "");
+  check_range("meter.accuracy", m.accuracy_ms, MeterInput::kAccuracy, "ms");
+}
+
+GolfSwing meter_swing(const MeterInput& m, const ClubSpec& club, const ClubInfo& info, double full_speed) {
+  validate_meter(m);
+  GolfSwing s;
+  s.club_speed = m.power * full_speed;
+  s.attack_angle = info.tour_attack;
+  if (info.kind == "putter") return s;  // putting: power only; the aim is the line
+  const double over = std::max(0.0, m.power - 1.0);
+  const double err = m.accuracy_ms * (club.length / kDriverLength) * (1.0 + 4.0 * over);
+  s.face_angle = std::clamp(kFacePerMs * err, GolfSwing::kFaceAngle.min, GolfSwing::kFaceAngle.max);
+  s.club_path = std::clamp(kPathPerMs * err, GolfSwing::kClubPath.min, GolfSwing::kClubPath.max);
+  s.impact_toe = std::clamp(-kHeelPerMs * err, GolfSwing::kImpactToe.min, GolfSwing::kImpactToe.max);
+  s.impact_up = std::clamp(club.strike_height - 0.030 * over, GolfSwing::kImpactUp.min, GolfSwing::kImpactUp.max);
+  return s;
+}
+
+}  // namespace sweetspot

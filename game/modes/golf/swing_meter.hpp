@@ -1,0 +1,41 @@
+// The three-click swing meter (DESIGN §9): the first click starts the swing, the second sets
+// the power, the third the accuracy. What the clicks become is a swing the physics then
+// plays: power sets club speed; the accuracy click's timing error opens or closes the face,
+// moves the path and the strike across the face (so a mishit is gear effect, not a dice
+// roll); over-swinging past 100 % adds speed but thins the strike and magnifies the error.
+#pragma once
+
+#include "game/content/equipment_file.hpp"
+#include "physics/delivery.hpp"
+#include "physics/range.hpp"
+
+namespace sweetspot {
+
+struct MeterInput {
+  double power = 1.0;          ///< fraction of a full swing; 1 = full, up to 1.1 over-swung
+  static constexpr Range kPower{0.0, 1.1, true};  ///< (0, 110 %]
+  /// ms the accuracy click missed the mark; + late (face open: push and slice for a
+  /// right-hander), − early (closed: pull and hook). A good player is within ~10 ms.
+  double accuracy_ms = 0.0;
+  static constexpr Range kAccuracy{-200.0, 200.0};
+};
+
+/// The mapping, per ms of timing error at the driver's tempo (a shorter club's slower
+/// tempo shrinks it by its length ratio): the face turns 0.08°, the path 0.04° the other
+/// way, the strike moves 0.15 mm toward the heel when late (toe when early). Over-swing
+/// p > 1 multiplies the error by 1 + 4 (p − 1) and moves the strike down 30 mm × (p − 1)
+/// from the club's usual spot (a thin contact). These are the game's feel, not physics:
+/// 20 ms late with a driver opens the face 1.6° — a push-fade of ~20 yd on a tour drive.
+inline constexpr double kFacePerMs = 0.0013962634;   // rad (0.08°)
+inline constexpr double kPathPerMs = -0.00069813170; // rad (−0.04°)
+inline constexpr double kHeelPerMs = 0.00015;        // m toward the heel per late ms
+inline constexpr double kDriverLength = 1.1557;      // m (45.5 in): the tempo reference
+
+/// Throws InputError naming meter.power / meter.accuracy and the range.
+void validate_meter(const MeterInput& m);
+
+/// The swing a meter result delivers with `club` (its ClubSpec and ClubInfo) for a golfer
+/// whose full swing with it is `full_speed` m/s. A putter takes the power only.
+GolfSwing meter_swing(const MeterInput& m, const ClubSpec& club, const ClubInfo& info, double full_speed);
+
+}  // namespace sweetspot

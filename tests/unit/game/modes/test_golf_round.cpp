@@ -1,0 +1,205 @@
+// The golf game (DESIGN §9): the course file, the stroke loop's penalties and scoring, the
+// putt that lips out too fast and drops slower, the lie changing the strike, bad files.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "game/content/course_file.hpp"
+#include "game/content/swings_file.hpp"
+#include "game/modes/golf/bot.hpp"
+#include "game/modes/golf/round.hpp"
+#include "physics/error.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+using Catch::Matchers::Contains;
+namespace fs = std::filesystem;
+
+namespace {
+
+const Course& links() {
+  static const Course c = load_course(test::assets(), "links");
+  return c;
+}
+
+// The links with only hole `n` (1-based), its tee moved to `tee` (x, z) when given.
+Course one_hole(int n, std::optional<std::pair<double, double>> tee = std::nullopt) {
+  Course c = links();
+  c.holes = {links().holes[static_cast<std::size_t>(n - 1)]};
+  c.holes[0].number = 1;
+  if (tee) {
+    SurfaceContact hit;
+    const WorldAsset& w = *c.holes[0].world;
+    REQUIRE(ground_under(*w.world, tee->first, tee->second, 400.0, 420.0, &hit));
+    c.holes[0].tee = hit.point;
+  }
+  return c;
+}
+
+StrokeInput stroke(const char* club, double power, double accuracy_ms = 0.0, double aim = 0.0) {
+  StrokeInput in;
+  in.club = club;
+  in.meter.power = power;
+  in.meter.accuracy_ms = accuracy_ms;
+  in.aim = aim;
+  return in;
+}
+
+struct TempFile {
+  fs::path path;
+  explicit TempFile(const std::string& name, const std::string& text)
+      : path(fs::temp_directory_path() / ("sweetspot_" + std::to_string(::getpid()) + "_" + name)) {
+    std::ofstream(path) << text;
+  }
+  ~TempFile() { fs::remove(path); }
+};
+
+}  // namespace
+
+TEST_CASE("the Sweetspot Links: a par 3, a par 4 and a par 5 with tees and cups", "[golf][course]") {
+  const Course& c = links();
+  REQUIRE(c.holes.size() == 3);
+  CHECK(c.holes[0].par == 3);
+  CHECK(c.holes[1].par == 4);
+  CHECK(c.holes[2].par == 5);
+  CHECK(c.par() == 12);
+  for (const CourseHole& h : c.holes) {
+    INFO(h.world_name);
+    CHECK(h.length() > 100.0);
+    SurfaceContact hit;
+    REQUIRE(ground_under(*h.world->world, h.pin.x(), h.pin.z(), 400.0, 420.0, &hit));
+    CHECK(h.world->world->material(hit.material).kind == SurfaceKind::Green);
+    REQUIRE(ground_under(*h.world->world, h.tee.x(), h.tee.z(), 400.0, 420.0, &hit));
+    CHECK(h.world->world->material(hit.material).kind == SurfaceKind::Tee);
+  }
+  // The par lengths of the USGA's guidance: a par 3 up to ~260 yd, par 4 ~240-490, par 5 ~450-710.
+  CHECK(c.holes[0].length() < 238.0);
+  CHECK(c.holes[1].length() > 219.0);
+  CHECK(c.holes[2].length() > 411.0);
+}
+
+TEST_CASE("out of bounds costs stroke and distance; water a stroke and a drop", "[golf][round][rules]") {
+  // Hole 3: out of bounds all along the right. A driver 150 ms late opens the face ~12°.
+  GolfRound ob(test::assets(), one_hole(3), golfer_skill("tour"));
+  const StrokeRecord first = ob.play(stroke("driver", 1.0, 150.0, 0.25));
+  CHECK(first.end == StrokeEnd::OutOfBounds);
+  CHECK(first.penalty == 1);
+  CHECK(ob.card()[0].strokes == 2);  // the shot and the penalty
+  CHECK(ob.teed());                  // played again from the tee
+  CHECK((ob.ball() - links().holes[2].tee).norm() < 1e-9);
+
+  // Hole 1: the pond fills the approach short of the green; a soft 7-iron finds it.
+  GolfRound water(test::assets(), one_hole(1), golfer_skill("tour"));
+  const StrokeRecord wet = water.play(stroke("7-iron", 0.72));
+  REQUIRE(wet.end == StrokeEnd::Water);
+  CHECK(wet.penalty == 1);
+  CHECK(water.card()[0].strokes == 2);
+  CHECK(water.card()[0].penalties == 1);
+  // The drop: out of the water, back on the line toward where it was struck.
+  CHECK(water.lie() != "water");
+  CHECK(water.ball().x() < wet.rest.x());
+  CHECK(!water.teed());
+}
+
+TEST_CASE("a putt lips out at too high a speed and drops at a lower one", "[golf][round][putting]") {
+  // Hole 1's green, 3 m short of the cup on its line.
+  const CourseHole& h = links().holes[0];
+  const auto tee = std::make_pair(h.pin.x() - 3.0, h.pin.z());
+  GolfRound probe(test::assets(), one_hole(1, tee), golfer_skill("tour"));
+  REQUIRE(probe.lie() == "green");
+  // The bot's caddie finds the line and speed that hole it; then the same line twice as hard.
+  GolfBot caddie(test::assets(), golfer_skill("tour"), 1);
+  const StrokeInput good = caddie.intend(probe);
+  CHECK(probe.simulate(good).end == ShotEnd::Holed);
+  // Twice as hard, on the line that now runs over the middle of the cup (a faster putt
+  // breaks less): it crosses the hole and does not drop.
+  const auto closest_approach = [&](const ShotResult& r) {
+    double closest = 1e9;
+    const auto& sm = r.trajectory.samples;
+    for (std::size_t k = 1; k < sm.size(); ++k) {
+      const Vec3 a(sm[k - 1].position.x() - h.pin.x(), 0, sm[k - 1].position.z() - h.pin.z());
+      const Vec3 d(sm[k].position.x() - sm[k - 1].position.x(), 0, sm[k].position.z() - sm[k - 1].position.z());
+      const double t = d.squaredNorm() > 0 ? std::clamp(-a.dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      closest = std::min(closest, (a + t * d).norm());
+    }
+    return closest;
+  };
+  StrokeInput hard = good;
+  hard.meter.power = std::min(1.1, good.meter.power * 2.0);
+  double best = 1e9, best_aim = 0.0;
+  for (int i = -40; i <= 40; ++i) {
+    hard.aim = good.aim + 0.0025 * i;
+    const double c = closest_approach(probe.simulate(hard, true));
+    if (c < best) {
+      best = c;
+      best_aim = hard.aim;
+    }
+  }
+  hard.aim = best_aim;
+  const ShotResult fast = probe.simulate(hard, true);
+  CHECK(best < 0.02);
+  CHECK(fast.end != ShotEnd::Holed);
+  // Played, the good one counts one putt and ends the hole.
+  GolfRound play(test::assets(), one_hole(1, tee), golfer_skill("tour"));
+  const StrokeRecord r = play.play(good);
+  CHECK(r.end == StrokeEnd::Holed);
+  CHECK(play.card()[0].putts == 1);
+  CHECK(play.card()[0].holed);
+  CHECK(play.finished());
+}
+
+TEST_CASE("the lie is the surface under the ball and changes the strike", "[golf][round][lie]") {
+  const CourseHole& h = links().holes[1];
+  GolfRound fairway(test::assets(), one_hole(2, std::make_pair(150.0, -2.0)), golfer_skill("tour"));
+  GolfRound rough(test::assets(), one_hole(2, std::make_pair(150.0, 40.0)), golfer_skill("tour"));
+  REQUIRE(fairway.lie() == "fairway");
+  REQUIRE(rough.lie() == "rough");
+  (void)h;
+  const ShotResult a = fairway.simulate(stroke("8-iron", 1.0));
+  const ShotResult b = rough.simulate(stroke("8-iron", 1.0));
+  CHECK(a.lie == "fairway");
+  CHECK(b.lie == "rough");
+  CHECK(b.launch.spin.total < 0.6 * a.launch.spin.total);  // the flyer
+}
+
+TEST_CASE("a hole ends at the 10-stroke pick-up", "[golf][round][rules]") {
+  GolfRound r(test::assets(), one_hole(3), golfer_skill("beginner"));
+  for (int i = 0; i < 12 && !r.finished(); ++i) r.play(stroke("driver", 1.0, 150.0, 0.25));  // OB every time
+  REQUIRE(r.finished());
+  CHECK(r.card()[0].strokes == GolfRound::kPickUp);
+  CHECK_FALSE(r.card()[0].holed);
+}
+
+TEST_CASE("a bot round is the same bit for bit for the same seed, and holes out", "[golf][bot]") {
+  auto play = [](std::uint64_t seed) {
+    GolfRound round(test::assets(), links(), golfer_skill("tour"));
+    GolfBot bot(test::assets(), golfer_skill("tour"), seed);
+    std::vector<Vec3> rests;
+    while (!round.finished()) rests.push_back(round.play(bot.plan(round)).rest);
+    return std::make_pair(rests, round.card());
+  };
+  const auto a = play(7), b = play(7);
+  REQUIRE(a.first.size() == b.first.size());
+  for (std::size_t i = 0; i < a.first.size(); ++i) CHECK(a.first[i] == b.first[i]);
+  for (const HoleCard& h : a.second) CHECK(h.holed);
+}
+
+TEST_CASE("bad course and swings files name file:line and the range", "[golf][input]") {
+  TempFile no_tee("no_tee.toml", "name = \"x\"\n[[hole]]\nnumber = 1\npar = 4\nworld = \"links_2\"\n");
+  CHECK_THROWS_WITH(load_course(test::assets(), no_tee.path.string()), Contains(":2") && Contains("tee"));
+  TempFile bad_par("bad_par.toml", "name = \"x\"\n[[hole]]\nnumber = 1\npar = 9\nworld = \"links_2\"\ntee = [\"0m\", \"0m\"]\n");
+  CHECK_THROWS_WITH(load_course(test::assets(), bad_par.path.string()), Contains(":4") && Contains("par") && Contains("[3, 6]"));
+  // A world that has no cup, and a hole that names none.
+  const fs::path worlds = test::assets().root() / "worlds";
+  TempFile world("nopin.toml", "name = \"nopin\"\nsport = \"golf\"\nmesh = \"" + (worlds / "links_2.obj").string() +
+                                   "\"\norigin = [\"0m\", \"0m\", \"0m\"]\nbounds_min = [\"-25m\", \"-10m\", \"-65m\"]\n"
+                                   "bounds_max = [\"410m\", \"400m\", \"55m\"]\n");
+  TempFile no_pin("no_pin.toml", "name = \"x\"\n[[hole]]\nnumber = 1\npar = 4\nworld = \"" + world.path.string() +
+                                     "\"\ntee = [\"0m\", \"0m\"]\n");
+  CHECK_THROWS_WITH(load_course(test::assets(), no_pin.path.string()), Contains(":2") && Contains("missing pin"));
+  TempFile swings("swings.toml", "[[stroke]]\npower = \"95%\"\n[[stroke]]\nclub = \"driver\"\npower = \"140%\"\n");
+  CHECK_THROWS_WITH(load_swings(swings.path), Contains(":5") && Contains("power = 140 %") && Contains("(0, 110] %"));
+}

@@ -1,10 +1,15 @@
 #include "game/app/play_app.hpp"
 
+#include <GLFW/glfw3.h>
+
 #include <chrono>
 #include <cmath>
 #include <optional>
 
 #include "game/app/game_window.hpp"
+#include "game/app/golf_app.hpp"
+#include "game/content/course_file.hpp"
+#include "game/modes/golf/golfer.hpp"
 #include "game/render/shot_view.hpp"
 #include "game/render/gl.hpp"
 #include "game/render/image.hpp"
@@ -79,17 +84,13 @@ int run_play_headless(const Assets& assets, const PlayOptions& o, std::ostream& 
   return 0;
 }
 
-int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& out) {
-  UiState st = ui_state_from(o);
-  Shot shot = compute(assets, st);  // bad input fails here, before a window opens
-  UiState good = st;
+namespace {
 
-  WindowOptions wo;
-  wo.width = o.width;
-  wo.height = o.height;
-  wo.vsync = o.frames == 0;
-  GameWindow win(wo);
-  Renderer renderer(win.framebuffer_width(), win.framebuffer_height());
+WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& renderer, const PlayOptions& o,
+                        FrameStats& stats, std::ostream& out) {
+  UiState st = ui_state_from(o);
+  Shot shot = compute(assets, st);
+  UiState good = st;
   auto scene = std::make_unique<ShotScene>(scene_input_for(assets, shot.scenario.resolved, shot.result));
   scene->set_shot(shot.result.trajectory, impactor_placement(shot.result));
 
@@ -97,8 +98,6 @@ int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& ou
   CameraKind camera = CameraKind::Behind;
   Orbit orbit;
   std::string status, save_path = "my-shot.toml";
-  int frame = 0;
-  double ms_total = 0.0;
   auto last = std::chrono::steady_clock::now();
 
   while (!win.should_close()) {
@@ -106,6 +105,8 @@ int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& ou
     const double dt = std::chrono::duration<double>(t0 - last).count();
     last = t0;
     const FrameInput in = win.begin_frame();
+    for (const int key : in.keys)
+      if (key == GLFW_KEY_TAB) return WindowNext::Golf;
     if (in.camera >= 0 && static_cast<CameraKind>(in.camera) != camera) {
       camera = static_cast<CameraKind>(in.camera);
       orbit.reset();
@@ -147,20 +148,38 @@ int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& ou
       renderer.blit_to(0, w, h);
     }
     win.render_ui();
-    ++frame;
-    const bool last_frame = o.frames > 0 && frame >= o.frames;
-    if (last_frame && !o.screenshot.empty()) {
-      int sw = 0, sh = 0;
-      std::vector<unsigned char> rgba;
-      win.read_pixels(sw, sh, rgba);
-      write_png_atomic(o.screenshot, sw, sh, rgba);
-      out << "screenshot: " << o.screenshot << " (" << sw << "x" << sh << ")\n";
-    }
-    win.present();
-    ms_total += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (last_frame) break;
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (end_frame(win, o, stats, ms, out)) return WindowNext::Quit;
   }
-  if (frame > 0) out << "play: " << frame << " frames, " << ms_total / frame << " ms per frame\n";
+  return WindowNext::Quit;
+}
+
+}  // namespace
+
+int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& out) {
+  // Bad input fails here, before a window opens.
+  if (o.mode == "golf") {
+    load_course(assets, o.course);
+    golfer_skill(o.skill);
+  } else if (o.mode == "lab") {
+    UiState st = ui_state_from(o);
+    (void)compute(assets, st);
+  } else {
+    throw InputError("--mode " + o.mode + ": unknown mode (allowed: lab, golf)");
+  }
+  WindowOptions wo;
+  wo.width = o.width;
+  wo.height = o.height;
+  wo.vsync = o.frames == 0;
+  GameWindow win(wo);
+  Renderer renderer(win.framebuffer_width(), win.framebuffer_height());
+  FrameStats stats;
+  WindowNext next = o.mode == "golf" ? WindowNext::Golf : WindowNext::Lab;
+  while (next != WindowNext::Quit) {
+    next = next == WindowNext::Lab ? run_lab_loop(assets, win, renderer, o, stats, out)
+                                   : run_golf_loop(assets, win, renderer, o, stats, out);
+  }
+  if (stats.frames > 0) out << "play: " << stats.frames << " frames, " << stats.ms_total / stats.frames << " ms per frame\n";
   return 0;
 }
 

@@ -1,0 +1,65 @@
+// The three-click meter (DESIGN §9): clicks in time become power and accuracy; the
+// accuracy error becomes face, path and strike; over-swing thins the strike.
+#include <catch2/catch.hpp>
+
+#include "game/modes/golf/meter_clock.hpp"
+#include "game/modes/golf/swing_meter.hpp"
+#include "physics/error.hpp"
+#include "physics/units.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+TEST_CASE("meter clicks: power where the second lands, accuracy against the mark", "[golf][meter]") {
+  MeterClock m(1.0, false);  // 1 s from 0 to 100 %
+  m.click(10.0);
+  CHECK(m.position(10.5) == Approx(0.5));
+  m.click(10.9);  // 90 %
+  CHECK(m.power() == Approx(0.9));
+  // Back down at 1.5x: the mark (0) is crossed 0.6 s later; clicking 20 ms after it is late.
+  m.click(10.9 + 0.6 + 0.020);
+  REQUIRE(m.result());
+  CHECK(m.result()->power == Approx(0.9));
+  CHECK(m.result()->accuracy_ms == Approx(20.0).margin(1e-6));
+}
+
+TEST_CASE("a meter left alone finishes at 110 % and the latest miss", "[golf][meter]") {
+  MeterClock m(1.0, false);
+  m.click(0.0);
+  m.update(5.0);
+  CHECK(m.power() == Approx(1.1));
+  m.update(10.0);
+  REQUIRE(m.result());
+  CHECK(m.result()->accuracy_ms == MeterInput::kAccuracy.max);
+  MeterClock putt(1.2, true);
+  putt.click(0.0);
+  putt.click(0.6);
+  REQUIRE(putt.result());
+  CHECK(putt.result()->power == Approx(0.5));
+  CHECK(putt.result()->accuracy_ms == 0.0);
+}
+
+TEST_CASE("the accuracy error opens the face late and closes it early; a putter takes power only", "[golf][meter]") {
+  const EquipmentCatalog& eq = test::assets().equipment();
+  const ClubSpec& d = eq.club("driver");
+  const ClubInfo& di = eq.club_info_of("driver");
+  MeterInput late;
+  late.accuracy_ms = 20.0;
+  const GolfSwing s = meter_swing(late, d, di, 50.0);
+  CHECK(rad_to_deg(s.face_angle) == Approx(1.6).epsilon(0.02));  // 0.08°/ms at the driver's tempo
+  CHECK(s.club_path < 0.0);
+  CHECK(s.impact_toe < 0.0);  // toward the heel
+  MeterInput early = late;
+  early.accuracy_ms = -20.0;
+  CHECK(meter_swing(early, d, di, 50.0).face_angle < 0.0);
+  MeterInput over;
+  over.power = 1.1;
+  const GolfSwing o = meter_swing(over, d, di, 50.0);
+  CHECK(o.club_speed == Approx(55.0));
+  CHECK(o.impact_up < d.strike_height);  // thinned
+  const GolfSwing p = meter_swing(late, eq.club("putter"), eq.club_info_of("putter"), 3.0);
+  CHECK(p.face_angle == 0.0);
+  MeterInput bad;
+  bad.power = 1.4;
+  CHECK_THROWS_AS(validate_meter(bad), InputError);
+}

@@ -226,11 +226,25 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
 
 Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwing& swing, const Pitch& pitch,
                           const ImpactMaterial& material) {
+  validate_pitch(pitch);
+  // The pitch: from +x toward the plate, descending at the approach angle, spinning with
+  // DESIGN §2's decomposition (backspin axis for v̂ = -x is -z).
+  const Vec3 ball_centre(0.0, kBaseballContactHeight, 0.0);
+  const LaunchState pitched = launch_from_metrics(pitch.speed, -pitch.approach_angle, kPi, pitch.spin,
+                                                  pitch.spin_axis, ball_centre);
+  return deliver_baseball(ball, bat, swing, pitched.velocity, pitched.spin, material);
+}
+
+Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwing& swing, const Vec3& pitch_velocity,
+                          const Vec3& pitch_spin, const ImpactMaterial& material) {
   validate_ball(ball);
   validate_bat(bat);
   validate_material(material, "impact");
   validate_bat_swing(swing, bat, ball);
-  validate_pitch(pitch);
+  if (!pitch_velocity.allFinite() || !pitch_spin.allFinite())
+    throw InputError("pitch: velocity and spin must be finite numbers");
+  check_range("pitch speed", pitch_velocity.norm(), Pitch::kSpeed, "m/s");
+  check_range("pitch spin", pitch_spin.norm(), Pitch::kSpin, "rad/s");
   const double from_knob = bat.length - swing.impact_from_tip;
   const double r_bat = bat.radius_at(from_knob);
   const double reach_r = r_bat + ball.radius;
@@ -269,16 +283,12 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   batb.velocity = omega.cross(batb.position - pivot);
   batb.angular_velocity = omega;
 
-  // The pitch: from +x toward the plate, descending at the approach angle, spinning with
-  // DESIGN §2's decomposition (backspin axis for v̂ = -x is -z).
-  const LaunchState pitched = launch_from_metrics(pitch.speed, -pitch.approach_angle, kPi, pitch.spin,
-                                                  pitch.spin_axis, ball_centre);
   RigidBody b;
   b.mass = ball.mass;
   b.inertia_body = Mat3::Identity() * ball.inertia;
   b.position = ball_centre;
-  b.velocity = pitched.velocity;
-  b.angular_velocity = pitched.spin;
+  b.velocity = pitch_velocity;
+  b.angular_velocity = pitch_spin;
 
   Delivery dl;
   dl.impact_input.impactor = make_impact_body(batb, contact, "bat '" + bat.name + "'");

@@ -113,6 +113,11 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
 Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwing& swing,
                           const Pitch& pitch, const ImpactMaterial& material);
 
+/// The same with the ball's velocity and spin as it arrives (a pitch flown to the plate), m/s
+/// and rad/s; its speed and spin within Pitch's ranges.
+Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwing& swing, const Vec3& pitch_velocity,
+                          const Vec3& pitch_spin, const ImpactMaterial& material);
+
 /// Height of the baseball's centre at contact, m.
 inline constexpr double kBaseballContactHeight = 0.9;
 

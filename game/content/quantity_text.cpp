@@ -53,4 +53,20 @@ std::vector<double> read_quantity_list(std::string_view text, Dimension dim) {
   return out;
 }
 
+double flag_quantity(std::string_view flag, std::string_view text, Dimension dim, const Range* range) {
+  const std::string where = std::string(flag) + " " + std::string(text);
+  double v = 0.0;
+  try {
+    v = read_quantity(text, dim);
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  }
+  if (range != nullptr) {
+    if (const std::string why = range_refusal(std::string(flag).substr(flag.find_first_not_of('-')), v, *range, si_unit_name(dim));
+        !why.empty())
+      throw InputError(where + ": " + why);
+  }
+  return v;
+}
+
 }  // namespace sweetspot

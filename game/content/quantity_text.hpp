@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "physics/range.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -22,6 +23,10 @@ bool has_unit(std::string_view text);
 /// origin; callers prefix the file:line, key or flag): "missing unit in '113' (a speed needs
 /// one of: m/s, mph, ...)", or the parser's message.
 double read_quantity(std::string_view text, Dimension dim);
+
+/// A command-line flag's quantity: read_quantity, then the range. InputError names the
+/// flag as written ("--speed 130mph: pitch speed = 58.1 m/s is out of range ...").
+double flag_quantity(std::string_view flag, std::string_view text, Dimension dim, const Range* range = nullptr);
 
 /// "[10mm, 0mm]" or "10mm, 0mm": each element by read_quantity.
 std::vector<double> read_quantity_list(std::string_view text, Dimension dim);

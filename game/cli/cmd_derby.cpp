@@ -1,0 +1,61 @@
+// `sweetspot derby`: a bot batter in a home-run derby (until N outs), an at-bat or batting
+// practice, headless (DESIGN §9 JSON); `--plot FILE.png` draws the session's spray chart.
+#include <iostream>
+#include <memory>
+
+#include "game/cli/command.hpp"
+#include "game/modes/baseball/session.hpp"
+#include "game/render/spray_chart.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot::cli {
+namespace {
+
+struct DerbyOptions {
+  std::string bot = "pro";
+  std::uint64_t seed = 1;
+  SessionOptions session;
+  bool json = false;
+  std::string plot;
+};
+
+RunFn setup_derby(CLI::App& sub) {
+  auto o = std::make_shared<DerbyOptions>();
+  sub.add_option("--bot", o->bot, "batter skill: pro or amateur (default pro)");
+  sub.add_option("--seed", o->seed, "seed of the pitcher's and the batter's errors (default 1)");
+  sub.add_option("--outs", o->session.outs, "derby: outs before it ends, 1..50 (default 10)");
+  sub.add_option("--mode", o->session.mode, "derby (default), at-bat or practice");
+  sub.add_option("--swings", o->session.swings, "practice: pitches, 1..500 (default 20)");
+  sub.add_flag("--left", o->session.left_handed, "a left-handed batter");
+  sub.add_flag("--json", o->json, "print the DESIGN §9 JSON");
+  sub.add_option("--plot", o->plot, "write the session's spray chart (PNG)");
+  return [o](const Assets& assets) -> int {
+    BotBatter bot(assets, batter_skill(o->bot), o->seed);
+    const std::vector<SwingRecord> swings = run_session(assets, o->session, bot, o->seed);
+    const nlohmann::json j = session_json(swings, o->session, o->seed);
+    if (!o->plot.empty()) write_spray_chart(assets, swings, o->plot);
+    if (o->json) {
+      std::cout << j.dump(2) << "\n";
+      return 0;
+    }
+    for (const SwingRecord& s : swings) {
+      std::printf("%-10s %5.1f mph  timing %+5.1f ms  ", s.call.type.type.c_str(), mps_to_mph(s.call.type.speed), s.timing_ms);
+      if (s.result.contact)
+        std::printf("EV %5.1f mph LA %+5.1f deg  %5.0f ft  %s%s\n", mps_to_mph(s.result.shot.launch.ball_speed),
+                    rad_to_deg(s.result.shot.launch.vertical_angle), m_to_ft(s.result.shot.trajectory.summary.carry_m),
+                    s.call_text.c_str(), s.result.barrel ? " (barrel)" : "");
+      else
+        std::printf("%s\n", s.call_text.c_str());
+    }
+    if (o->session.mode == "derby")
+      std::printf("home runs: %d in %d swings\n", j["home_runs"].get<int>(), static_cast<int>(swings.size()));
+    if (o->session.mode == "at-bat") std::printf("result: %s\n", j["result"].get<std::string>().c_str());
+    if (!o->plot.empty()) std::printf("spray chart: %s\n", o->plot.c_str());
+    return 0;
+  };
+}
+
+const CommandRegistrar reg{45, "derby", "a bot batter: home-run derby, at-bat or batting practice (§9 JSON, --plot)", setup_derby};
+
+}  // namespace
+}  // namespace sweetspot::cli

@@ -1,0 +1,139 @@
+#include "game/modes/baseball/pitching.hpp"
+
+#include <cmath>
+
+#include "game/content/toml_file.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+
+std::vector<PitchType> load_pitch_types(const Assets& assets) {
+  const TomlFile f = TomlFile::read(assets.root() / "pitches.toml", "pitch types");
+  f.only_keys(f.root(), "", {"pitch"});
+  std::vector<PitchType> out;
+  static constexpr Range kFraction{0.0, 1.0};
+  static constexpr Range kDirection{-kPi, kPi};
+  static constexpr Range kHeight{0.5, 3.0};
+  static constexpr Range kSide{-1.5, 1.5};
+  static constexpr Range kExtension{0.5, 3.0};
+  for (const toml::table* t : f.tables(f.root(), "pitch", true)) {
+    f.only_keys(*t, "pitch", {"type", "speed", "spin", "active_spin", "movement_direction", "release_height",
+                              "release_side", "extension", "usage"});
+    PitchType p;
+    p.type = f.text(f.required(*t, "type", "the pitch's name"), "type");
+    p.speed = f.quantity(f.required(*t, "speed", "out-of-hand speed"), "speed", Dimension::Speed, &PitchType::kSpeed);
+    p.spin = f.quantity(f.required(*t, "spin", "total spin"), "spin", Dimension::AngularVelocity, &PitchType::kSpin);
+    p.active_spin = f.quantity(f.required(*t, "active_spin", "transverse share"), "active_spin", Dimension::Fraction, &kFraction);
+    p.movement_direction = f.quantity(f.required(*t, "movement_direction", "deg from up"), "movement_direction",
+                                      Dimension::Angle, &kDirection);
+    p.release_height = f.quantity(f.required(*t, "release_height", "m"), "release_height", Dimension::Length, &kHeight);
+    p.release_side = f.quantity(f.required(*t, "release_side", "m"), "release_side", Dimension::Length, &kSide);
+    p.extension = f.quantity(f.required(*t, "extension", "m"), "extension", Dimension::Length, &kExtension);
+    p.usage = f.quantity(f.required(*t, "usage", "share of pitches"), "usage", Dimension::Fraction, &kFraction);
+    for (const PitchType& o : out)
+      if (o.type == p.type) f.fail(*t->get("type"), "type", "'" + p.type + "' is defined twice");
+    out.push_back(p);
+  }
+  return out;
+}
+
+const PitchType& pitch_type(const std::vector<PitchType>& types, std::string_view name) {
+  std::string names;
+  for (const PitchType& p : types) {
+    if (p.type == name) return p;
+    names += (names.empty() ? "" : ", ") + p.type;
+  }
+  throw InputError("unknown pitch type '" + std::string(name) + "' (allowed: " + names + ")");
+}
+
+namespace {
+
+struct Crossing {
+  double t = 0.0;
+  Vec3 p = Vec3::Zero(), v = Vec3::Zero(), w = Vec3::Zero();
+  ShotTrajectory trajectory;
+};
+
+// Flies a ball from `release` at `velocity` with `spin` until it crosses x = 0.
+Crossing fly_to_plate(const ShotModel& model, const Vec3& release, const Vec3& velocity, const Vec3& spin, bool record) {
+  LaunchState l;
+  l.position = release;
+  l.velocity = velocity;
+  l.spin = spin;
+  ShotState s = start_state(l);
+  TrajectoryRecorder rec(s, record, 1.0 / 240.0);
+  Crossing c;
+  for (int i = 0; i < 2000 && !s.ended; ++i) {
+    const ShotState before = s;
+    const ShotEvent ev = step(model, s, s.t + 0.002);
+    rec.add(before, s, ev);
+    if (s.position().x() <= 0.0) {
+      // Between the two states: the crossing by Hermite interpolation (bisection on x).
+      double lo = before.t, hi = s.t;
+      for (int k = 0; k < 50; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        const Vec3 p = flight_position_between(before.position(), before.velocity(), before.t, s.position(), s.velocity(),
+                                               s.t, mid);
+        (p.x() > 0.0 ? lo : hi) = mid;
+      }
+      c.t = 0.5 * (lo + hi);
+      c.p = flight_position_between(before.position(), before.velocity(), before.t, s.position(), s.velocity(), s.t, c.t);
+      const double f = (c.t - before.t) / std::max(s.t - before.t, 1e-12);
+      c.v = before.velocity() + f * (s.velocity() - before.velocity());
+      c.w = before.spin() + f * (s.spin() - before.spin());
+      c.trajectory = rec.finish(s);
+      return c;
+    }
+  }
+  throw InputError("the pitch never reached the plate (it landed short): check its speed and target");
+}
+
+}  // namespace
+
+PitchFlight throw_pitch(const Assets& assets, const PitchCall& call) {
+  const PitchType& t = call.type;
+  check_range("pitch.speed", t.speed, PitchType::kSpeed, "m/s");
+  check_range("pitch.spin", t.spin, PitchType::kSpin, "rad/s");
+  const BallSpec& ball = assets.equipment().ball("mlb");
+  // The pitch is read where it crosses the plate, in the air: ground far below it, so a
+  // pitch in the dirt or a trial aim that falls short still reaches the plane.
+  static const FlatGround ground(default_fairway(), -50.0);
+  const ShotModel model = make_shot_model(BallProperties{ball.mass, ball.radius, ball.inertia},
+                                          assets.aero(assets.sport("baseball").default_aero), Environment{}, &ground);
+  const double hand = call.left_handed ? -1.0 : 1.0;
+  PitchFlight out;
+  out.release = Vec3(kRubberToPlate - t.extension, t.release_height, hand * t.release_side);
+  // The spin: its transverse part pushes the ball toward the movement direction (seen from
+  // the catcher: up and toward first base), for a ball travelling toward −x; the rest is gyro
+  // spin along the flight, which makes no Magnus force.
+  const double dir = hand * t.movement_direction;
+  const double wt = t.spin * t.active_spin;
+  const double wg = t.spin * std::sqrt(std::max(0.0, 1.0 - t.active_spin * t.active_spin));
+  out.spin = Vec3(-wg, wt * std::sin(dir), -wt * std::cos(dir));
+  const Vec3 target(0.0, call.target_height, call.target_side);
+  // Aim: the release direction that crosses the plate at the target, by a few corrections
+  // of the straight line (gravity, drag and break bend it).
+  Vec3 aim = target;
+  Crossing c;
+  for (int i = 0; i < 8; ++i) {
+    const Vec3 v = t.speed * (aim - out.release).normalized();
+    c = fly_to_plate(model, out.release, v, out.spin, false);
+    const Vec3 miss = c.p - target;
+    if (std::abs(miss.y()) < 1e-5 && std::abs(miss.z()) < 1e-5) break;
+    aim -= Vec3(0.0, miss.y(), miss.z());  // the aim point moves by the miss: a near-unit Jacobian
+  }
+  out.release_velocity = t.speed * (aim - out.release).normalized();
+  c = fly_to_plate(model, out.release, out.release_velocity, out.spin, true);
+  out.flight_time = c.t;
+  out.plate = c.p;
+  out.plate_velocity = c.v;
+  out.plate_spin = c.w;
+  out.trajectory = std::move(c.trajectory);
+  // Statcast's convention: against the same release without spin.
+  const Crossing still = fly_to_plate(model, out.release, out.release_velocity, Vec3::Zero(), false);
+  out.induced_vertical_break = c.p.y() - still.p.y();
+  out.horizontal_break = c.p.z() - still.p.z();
+  return out;
+}
+
+}  // namespace sweetspot

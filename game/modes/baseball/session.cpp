@@ -1,0 +1,209 @@
+#include "game/modes/baseball/session.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "game/report/flight_json.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+constexpr double kPlateHalf = 0.2159;          // m, 17 in / 2
+constexpr double kZoneLow = 1.6 * 0.3048, kZoneHigh = 3.5 * 0.3048;
+constexpr double kDerbySpeed = 27.7;           // m/s, ~62 mph
+
+}  // namespace
+
+bool in_zone(const Vec3& p, double r) {
+  return std::abs(p.z()) <= kPlateHalf + r && p.y() >= kZoneLow - r && p.y() <= kZoneHigh + r;
+}
+
+PitchCall derby_pitch(const std::vector<PitchType>& types, Rng& rng) {
+  PitchCall c;
+  c.type = pitch_type(types, "four-seam");
+  c.type.speed = kDerbySpeed;
+  c.type.spin = rpm_to_radps(1800.0);  // a lob spins less (ESTIMATE)
+  c.target_height = 0.80 + rng.normal(0.05);
+  c.target_side = rng.normal(0.05);
+  return c;
+}
+
+BotBatter::BotBatter(const Assets& assets, const BatterSkill& skill, std::uint64_t seed)
+    : assets_(assets), skill_(skill), rng_(seed) {}
+
+SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_handed) {
+  SwingInput s;
+  s.left_handed = left_handed;
+  double timing = 0.0;
+  if (derby) {
+    // Where to meet the ball to clear the fence by the most: how early (pulling toward the
+    // shorter fence down the line) and how far under it — found once by trying, as a hitter
+    // learns it in batting practice.
+    if (derby_undercut_ < 0.0) {
+      const WorldAsset* park = assets_.world("ballpark");
+      // The margin by which it clears (or falls short of) the fence, and the worst of it over
+      // the batter's usual timing spread: a plan that a few ms turn foul is a bad plan.
+      const auto margin = [&](double t, double u) {
+        SwingInput trial = s;
+        trial.timing_ms = t;
+        trial.undercut = u;
+        const SwingResult r = swing_at(assets_, pitch, trial, skill_.bat_speed);
+        if (!r.contact || r.outcome == BattedOutcome::Foul) return -200.0;
+        const Vec3& land = r.shot.trajectory.summary.landing_position;
+        return (r.outcome == BattedOutcome::HomeRun ? 30.0 : 0.0) + std::hypot(land.x(), land.z()) -
+               fence_distance(*park, std::atan2(land.z(), land.x()));
+      };
+      double best = -1e9;
+      for (double t = -24.0; t <= 0.0; t += 4.0) {
+        for (double u = 0.006; u <= 0.036; u += 0.003) {
+          const double sd = skill_.timing_sd_ms;
+          const double m = std::min({margin(t - sd, u), margin(t, u), margin(t + sd, u)});
+          if (m > best) {
+            best = m;
+            derby_undercut_ = u;
+            derby_timing_ = t;
+          }
+        }
+      }
+      if (derby_undercut_ < 0.0) derby_undercut_ = 0.02;
+    }
+    s.undercut = derby_undercut_;
+    timing = derby_timing_;
+  } else {
+    s.undercut = 0.010;  // a line drive: launch ~15-20°
+  }
+  s.timing_ms = std::clamp(timing + rng_.normal(skill_.timing_sd_ms), SwingInput::kTiming.min, SwingInput::kTiming.max);
+  s.undercut = std::clamp(s.undercut + rng_.normal(skill_.height_sd), SwingInput::kUndercut.min, SwingInput::kUndercut.max);
+  return s;
+}
+
+bool BotBatter::swings_at(const PitchFlight& pitch, int strikes) {
+  Vec3 seen = pitch.plate;
+  seen.y() += rng_.normal(skill_.eye_sd);
+  seen.z() += rng_.normal(skill_.eye_sd);
+  const double r = 0.0369;
+  if (in_zone(seen, r)) return true;
+  // With two strikes, protect the plate: swing at anything close.
+  return strikes >= 2 && in_zone(seen, r + 0.08);
+}
+
+std::vector<SwingRecord> run_session(const Assets& assets, const SessionOptions& o, BotBatter& bot, std::uint64_t seed) {
+  if (o.mode != "derby" && o.mode != "at-bat" && o.mode != "practice")
+    throw InputError("mode '" + o.mode + "' (allowed: derby, at-bat, practice)");
+  check_range("outs", o.outs, SessionOptions::kOuts, "");
+  check_range("swings", o.swings, SessionOptions::kSwings, "");
+  const std::vector<PitchType> types = load_pitch_types(assets);
+  Rng pitcher(seed ^ 0x5EEDBA5EBA11ULL);
+  std::vector<SwingRecord> out;
+  if (o.mode == "derby" || o.mode == "practice") {
+    int outs = 0;
+    while (o.mode == "derby" ? outs < o.outs : static_cast<int>(out.size()) < o.swings) {
+      SwingRecord rec;
+      rec.call = derby_pitch(types, pitcher);
+      rec.pitch = throw_pitch(assets, rec.call);
+      const SwingInput s = bot.plan(rec.pitch, o.mode == "derby", o.left_handed);
+      rec.timing_ms = s.timing_ms;
+      rec.undercut = s.undercut;
+      rec.result = swing_at(assets, rec.pitch, s, bot.skill().bat_speed);
+      rec.call_text = to_string(rec.result.outcome);
+      if (rec.result.outcome != BattedOutcome::HomeRun) ++outs;
+      out.push_back(std::move(rec));
+    }
+    return out;
+  }
+  // An at-bat: the pitcher mixes his types by league usage and aims in or around the zone.
+  int balls = 0, strikes = 0;
+  double total_usage = 0.0;
+  for (const PitchType& t : types) total_usage += t.usage;
+  while (balls < 4 && strikes < 3) {
+    SwingRecord rec;
+    double u = pitcher.uniform() * total_usage;
+    rec.call.type = types.back();
+    for (const PitchType& t : types) {
+      if (u < t.usage) {
+        rec.call.type = t;
+        break;
+      }
+      u -= t.usage;
+    }
+    // About half the pitches in the zone (Statcast's zone rate is ~48 %).
+    const bool zone = pitcher.uniform() < 0.5;
+    rec.call.target_height = zone ? 0.5 * (kZoneLow + kZoneHigh) + pitcher.normal(0.12)
+                                  : (pitcher.uniform() < 0.5 ? kZoneLow - 0.12 : kZoneHigh + 0.12) + pitcher.normal(0.08);
+    rec.call.target_side = zone ? pitcher.normal(0.12) : (pitcher.uniform() < 0.5 ? -1.0 : 1.0) * (kPlateHalf + 0.12);
+    rec.pitch = throw_pitch(assets, rec.call);
+    rec.swung = bot.swings_at(rec.pitch, strikes);
+    if (!rec.swung) {
+      const bool strike = in_zone(rec.pitch.plate, 0.0369);
+      rec.call_text = strike ? "called_strike" : "ball";
+      (strike ? strikes : balls) += 1;
+      out.push_back(std::move(rec));
+      continue;
+    }
+    const SwingInput s = bot.plan(rec.pitch, false, o.left_handed);
+    rec.timing_ms = s.timing_ms;
+    rec.undercut = s.undercut;
+    rec.result = swing_at(assets, rec.pitch, s, bot.skill().bat_speed);
+    const BattedOutcome r = rec.result.outcome;
+    if (r == BattedOutcome::Strike) {
+      rec.call_text = "swinging_strike";
+      ++strikes;
+    } else if (r == BattedOutcome::Foul) {
+      rec.call_text = "foul";
+      if (strikes < 2) ++strikes;
+    } else {
+      rec.call_text = to_string(r);
+      out.push_back(std::move(rec));
+      break;
+    }
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+nlohmann::json session_json(const std::vector<SwingRecord>& swings, const SessionOptions& o, std::uint64_t seed) {
+  using nlohmann::json;
+  json list = json::array();
+  int outs = 0, hrs = 0;
+  for (const SwingRecord& s : swings) {
+    json pitch = {{"type", s.call.type.type},
+                  {"speed_mps", s.call.type.speed},
+                  {"spin_rpm", radps_to_rpm(s.call.type.spin)},
+                  {"plate_position_m", {s.pitch.plate.x(), s.pitch.plate.y(), s.pitch.plate.z()}}};
+    json j = {{"pitch", pitch}, {"timing_ms", s.timing_ms}, {"contact", s.result.contact}, {"outcome", s.call_text},
+              {"barrel", s.result.barrel}, {"hard_hit", s.result.hard_hit}, {"swung", s.swung}};
+    if (s.result.contact) {
+      j["launch"] = launch_json(s.result.shot.launch, -1.0);
+      j["flight"] = flight_json(s.result.shot.trajectory.summary);
+      j["flight"]["end"] = to_string(s.result.shot.end);
+      if (!s.result.fielder.empty()) j["fielder"] = s.result.fielder;
+    } else {
+      j["launch"] = nullptr;
+      j["flight"] = nullptr;
+    }
+    if (s.result.outcome == BattedOutcome::HomeRun) ++hrs;
+    else if (s.swung) ++outs;
+    list.push_back(j);
+  }
+  json out = {{"mode", o.mode}, {"seed", seed}, {"swings", list}};
+  if (o.mode == "derby") {
+    out["outs"] = outs;
+    out["home_runs"] = hrs;
+  } else if (o.mode == "at-bat") {
+    int balls = 0, strikes = 0;
+    std::string result;
+    for (const SwingRecord& s : swings) {
+      if (s.call_text == "ball") ++balls;
+      else if (s.call_text == "called_strike" || s.call_text == "swinging_strike") ++strikes;
+      else if (s.call_text == "foul") strikes = std::min(2, strikes + 1);
+      else result = s.call_text;
+    }
+    out["balls"] = balls;
+    out["strikes"] = strikes;
+    out["result"] = !result.empty() ? result : balls >= 4 ? "walk" : "strikeout";
+  }
+  return out;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,141 @@
+// The baseball game (DESIGN §9): pitches whose break comes out of the flight, the swing,
+// Statcast's classes, fair and foul, home runs over the fence, seeded determinism.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "game/modes/baseball/session.hpp"
+#include "physics/error.hpp"
+#include "physics/units.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+const std::vector<PitchType>& types() {
+  static const std::vector<PitchType> t = load_pitch_types(test::assets());
+  return t;
+}
+PitchFlight pitch(const char* type, double speed_mph = 0.0) {
+  PitchCall c;
+  c.type = pitch_type(types(), type);
+  if (speed_mph > 0.0) c.type.speed = mph_to_mps(speed_mph);
+  return throw_pitch(test::assets(), c);
+}
+double inches(double m) { return m / 0.0254; }
+}  // namespace
+
+TEST_CASE("a four-seamer and a curveball move as Statcast measures them", "[baseball][pitch][reference]") {
+  // 2023 league averages (Statcast pitch-level data, TJStats): four-seam IVB 15.7 in with a
+  // between-pitcher spread of ~2.9 in, 7.7 in of arm-side run (Savant 2024 movement
+  // leaderboard); curveball IVB -9.4 in, 9.0 in glove side, drop spread 7.1 in.
+  const PitchFlight ff = pitch("four-seam");
+  INFO("four-seam IVB " << inches(ff.induced_vertical_break) << " in, HB " << inches(ff.horizontal_break) << " in");
+  CHECK(std::abs(inches(ff.induced_vertical_break) - 15.7) <= 2.9);
+  CHECK(inches(ff.horizontal_break) < 0.0);  // a right-hander's fastball runs to the third-base side
+  CHECK(std::abs(-inches(ff.horizontal_break) - 7.7) <= 3.0);
+  const PitchFlight cu = pitch("curveball");
+  INFO("curveball IVB " << inches(cu.induced_vertical_break) << " in, HB " << inches(cu.horizontal_break) << " in");
+  CHECK(std::abs(inches(cu.induced_vertical_break) - (-9.4)) <= 7.1);
+  CHECK(inches(cu.horizontal_break) > 0.0);  // glove side
+  // Flight time: "a typical pitch is airborne for about 400 ms" (Healey & Wang 2021); the
+  // 94 mph four-seamer from 6.5 ft of extension takes 0.39-0.42 s.
+  CHECK(ff.flight_time > 0.39);
+  CHECK(ff.flight_time < 0.42);
+  CHECK(pitch("four-seam", 100.0).flight_time < ff.flight_time);
+  CHECK(cu.flight_time > ff.flight_time);
+  // It crosses where it was aimed (the middle of the zone).
+  CHECK(std::abs(ff.plate.y() - 0.76) < 1e-3);
+  CHECK(std::abs(ff.plate.z()) < 1e-3);
+}
+
+TEST_CASE("the pitch types order their rise as Statcast's leaderboard does", "[baseball][pitch]") {
+  // Savant 2024 pitch movement: the four-seamer rises most, then the sinker, the slider,
+  // and the curveball drops (vertical drop with gravity FF < SI < SL < CU).
+  const auto ivb = [](const char* t) { return pitch(t).induced_vertical_break; };
+  CHECK(ivb("four-seam") > ivb("sinker"));
+  CHECK(ivb("sinker") > ivb("slider"));
+  CHECK(ivb("slider") > ivb("curveball"));
+  // Sinkers and changeups run arm side about twice as far as four-seamers.
+  const double ff = -pitch("four-seam").horizontal_break;
+  CHECK(-pitch("sinker").horizontal_break > 1.5 * ff);
+  CHECK(-pitch("changeup").horizontal_break > 1.5 * ff);
+}
+
+TEST_CASE("Statcast's barrel, hard-hit and sweet-spot classes", "[baseball]") {
+  // The closed form (baseballr): LA <= 50, EV >= 98, 1.5 EV - LA >= 117, EV + LA >= 124.
+  CHECK(is_barrel(98.0, 28.0));
+  CHECK_FALSE(is_barrel(97.9, 28.0));
+  CHECK_FALSE(is_barrel(98.0, 31.0));
+  CHECK(is_barrel(116.0, 8.0));
+  CHECK_FALSE(is_barrel(116.0, 51.0));
+}
+
+TEST_CASE("timing sends the ball: early pulls, late goes the other way; a late miss is a strike", "[baseball][swing]") {
+  const PitchFlight p = pitch("four-seam");
+  SwingInput s;
+  s.undercut = 0.010;
+  s.timing_ms = -15.0;
+  const SwingResult early = swing_at(test::assets(), p, s, mph_to_mps(71.5));
+  s.timing_ms = 15.0;
+  const SwingResult late = swing_at(test::assets(), p, s, mph_to_mps(71.5));
+  REQUIRE(early.contact);
+  REQUIRE(late.contact);
+  CHECK(early.shot.launch.horizontal_angle < -deg_to_rad(10.0));  // pulled to left field (right-handed batter)
+  CHECK(late.shot.launch.horizontal_angle > deg_to_rad(10.0));
+  s.left_handed = true;
+  s.timing_ms = -15.0;
+  CHECK(swing_at(test::assets(), p, s, mph_to_mps(71.5)).shot.launch.horizontal_angle > deg_to_rad(10.0));
+  s.timing_ms = 60.0;
+  const SwingResult miss = swing_at(test::assets(), p, s, mph_to_mps(71.5));
+  CHECK_FALSE(miss.contact);
+  CHECK(miss.outcome == BattedOutcome::Strike);
+}
+
+TEST_CASE("derby swings: home runs cross the fence in flight, fouls land outside the lines, same seed same swings",
+          "[baseball][derby]") {
+  SessionOptions o;
+  o.outs = 6;
+  const auto run = [&](std::uint64_t seed) {
+    BotBatter bot(test::assets(), batter_skill("pro"), seed);
+    return run_session(test::assets(), o, bot, seed);
+  };
+  const std::vector<SwingRecord> a = run(2), b = run(2);
+  REQUIRE(a.size() == b.size());
+  CHECK(session_json(a, o, 2) == session_json(b, o, 2));
+  const WorldAsset& park = *test::assets().world("ballpark");
+  int home_runs = 0;
+  for (const SwingRecord& s : a) {
+    if (s.result.outcome == BattedOutcome::HomeRun) {
+      ++home_runs;
+      // Somewhere in flight it is beyond the fence's line and above its top.
+      bool over = false;
+      for (const TrajectorySample& t : s.result.shot.trajectory.samples) {
+        const double r = std::hypot(t.position.x(), t.position.z());
+        if (r > fence_distance(park, std::atan2(t.position.z(), t.position.x())) && t.position.y() > park.fence_height)
+          over = true;
+      }
+      CHECK(over);
+    }
+    if (s.result.outcome == BattedOutcome::Foul) {
+      const Vec3& land = s.result.shot.trajectory.summary.landing_position;
+      const Vec3& rest = s.result.shot.trajectory.summary.rest_position;
+      const bool outside = [](const Vec3& p) { return p.x() < 0.0 || std::abs(std::atan2(p.z(), p.x())) > 0.25 * kPi; }(
+          std::hypot(land.x(), land.z()) > 27.432 ? land : rest);
+      CHECK(outside);
+    }
+  }
+  CHECK(home_runs > 0);
+}
+
+TEST_CASE("bad baseball input names the value and its range", "[baseball][input]") {
+  PitchCall c;
+  c.type = pitch_type(types(), "four-seam");
+  c.type.speed = mph_to_mps(130.0);
+  CHECK_THROWS_WITH(throw_pitch(test::assets(), c), Catch::Contains("pitch.speed") && Catch::Contains("allowed"));
+  CHECK_THROWS_WITH(pitch_type(types(), "knuckler"), Catch::Contains("four-seam"));
+  SessionOptions o;
+  o.outs = 0;
+  BotBatter bot(test::assets(), batter_skill("pro"), 1);
+  CHECK_THROWS_WITH(run_session(test::assets(), o, bot, 1), Catch::Contains("outs = 0") && Catch::Contains("[1, 50]"));
+}

@@ -167,7 +167,7 @@ void draw_hud(GolfView& v, int w, int h, double now) {
     ImGui::Text("Aim: %.1f deg %s of the pin", std::abs(rad_to_deg(v.aim)), v.aim >= 0 ? "right" : "left");
     ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
     ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
-    ImGui::TextDisabled("Tab: Lab");
+    ImGui::TextDisabled("Tab: batting cage");
     int total = 0, par = 0;
     for (const HoleCard& c : r.card())
       if (&c != &r.card().back()) {
@@ -294,7 +294,7 @@ WindowNext run_golf_loop(const Assets& assets, GameWindow& win, Renderer& render
     const FrameInput in = win.begin_frame();
     GolfView& g = *v;
     for (const int key : in.keys) {
-      if (key == GLFW_KEY_TAB) return WindowNext::Lab;
+      if (key == GLFW_KEY_TAB) return WindowNext::Baseball;
       switch (g.stage) {
         case GolfView::Stage::Aiming:
           if (key == GLFW_KEY_LEFT) g.aim -= deg_to_rad(g.club_name() == "putter" ? 0.25 : 1.0);

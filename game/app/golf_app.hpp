@@ -11,7 +11,7 @@
 namespace sweetspot {
 
 /// What a window loop hands back to play_app: close, or switch to the other mode.
-enum class WindowNext { Quit, Lab, Golf };
+enum class WindowNext { Quit, Lab, Golf, Baseball };
 
 /// Frames run so far and their time, shared by the modes (the `--frames` budget is one).
 struct FrameStats {

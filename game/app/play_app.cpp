@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "game/app/game_window.hpp"
+#include "game/app/bat_app.hpp"
 #include "game/app/golf_app.hpp"
 #include "game/content/course_file.hpp"
 #include "game/modes/golf/golfer.hpp"
@@ -161,11 +162,13 @@ int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& ou
   if (o.mode == "golf") {
     load_course(assets, o.course);
     golfer_skill(o.skill);
+  } else if (o.mode == "baseball") {
+    assets.world("ballpark");
   } else if (o.mode == "lab") {
     UiState st = ui_state_from(o);
     (void)compute(assets, st);
   } else {
-    throw InputError("--mode " + o.mode + ": unknown mode (allowed: lab, golf)");
+    throw InputError("--mode " + o.mode + ": unknown mode (allowed: lab, golf, baseball)");
   }
   WindowOptions wo;
   wo.width = o.width;
@@ -174,10 +177,14 @@ int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& ou
   GameWindow win(wo);
   Renderer renderer(win.framebuffer_width(), win.framebuffer_height());
   FrameStats stats;
-  WindowNext next = o.mode == "golf" ? WindowNext::Golf : WindowNext::Lab;
+  WindowNext next = o.mode == "golf" ? WindowNext::Golf : o.mode == "baseball" ? WindowNext::Baseball : WindowNext::Lab;
   while (next != WindowNext::Quit) {
-    next = next == WindowNext::Lab ? run_lab_loop(assets, win, renderer, o, stats, out)
-                                   : run_golf_loop(assets, win, renderer, o, stats, out);
+    switch (next) {
+      case WindowNext::Lab: next = run_lab_loop(assets, win, renderer, o, stats, out); break;
+      case WindowNext::Golf: next = run_golf_loop(assets, win, renderer, o, stats, out); break;
+      case WindowNext::Baseball: next = run_bat_loop(assets, win, renderer, o, stats, out); break;
+      case WindowNext::Quit: break;
+    }
   }
   if (stats.frames > 0) out << "play: " << stats.frames << " frames, " << stats.ms_total / stats.frames << " ms per frame\n";
   return 0;

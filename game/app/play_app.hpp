@@ -16,12 +16,14 @@ struct PlayOptions {
   int frames = 0;                         ///< window: run this many frames then exit (0 = until closed)
   std::string screenshot;                 ///< window: PNG of the last frame; headless: the shot's PNG
   int width = 1280, height = 800;         ///< px, window size
-  /// "lab" (the shot and its tuning panels) or "golf" (a round on `course`); Tab switches.
+  /// "lab" (the shot and its tuning panels), "golf" (a round on `course`) or "baseball"
+  /// (the batting cage); Tab cycles through them.
   std::string mode = "lab";
   std::string course = "links";          ///< golf: a course of assets/courses or a .toml
   std::string skill = "scratch";         ///< golf: the player's swing speed (and the bot opponent's skill)
   int holes = 0;                         ///< golf: play only the first N holes (0 = all)
-  bool exit_when_done = false;           ///< golf: close the window once the round's card has shown
+  bool exit_when_done = false;           ///< golf / baseball: close the window once the round or the pitches are done
+  int pitches = 0;                       ///< baseball: pitches in the session (0 = until closed)
 };
 
 /// Opens the window and runs until closed (or `frames`). Returns the exit code. Prints the

@@ -19,13 +19,14 @@ RunFn setup_play(CLI::App& sub) {
   sub.add_option("--screenshot", o->screenshot, "save the last frame to FILE.png (headless: the shot's image)");
   sub.add_option("--width", o->width, "window width in px")->check(CLI::Range(640, 7680))->capture_default_str();
   sub.add_option("--height", o->height, "window height in px")->check(CLI::Range(480, 4320))->capture_default_str();
-  sub.add_option("--mode", o->mode, "lab (the shot and its tuning) or golf (a round on --course); Tab switches")
+  sub.add_option("--mode", o->mode, "lab (the shot and its tuning), golf (a round on --course) or baseball (the batting cage); Tab switches")
       ->capture_default_str();
   sub.add_option("--course", o->course, "golf: a course of assets/courses or a .toml")->capture_default_str();
   sub.add_option("--skill", o->skill, "golf: tour, scratch, amateur or beginner (swing speed; the bot opponent)")
       ->capture_default_str();
   sub.add_option("--holes", o->holes, "golf: play only the first N holes")->check(CLI::Range(1, 18));
-  sub.add_flag("--exit-when-done", o->exit_when_done, "golf: close once the round's scorecard has shown (automation)");
+  sub.add_flag("--exit-when-done", o->exit_when_done, "golf, baseball: close once the round or the pitches are done (automation)");
+  sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(CLI::Range(1, 1000));
   return [o](const Assets& assets) -> int {
     std::string why;
     if (!display_available(&why)) {

@@ -1,11 +1,19 @@
 // `sweetspot shot SCENARIO`: one shot, printed as a launch-monitor table (default), the
 // DESIGN §6 JSON, a GSPro OpenConnect v1 message or a CSV row.
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "game/cli/command.hpp"
 #include "game/report/report.hpp"
 #include "game/content/scenario.hpp"
+#include "game/content/toml_file.hpp"
+#include "game/util/atomic_file.hpp"
+#include "physics/error.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -16,7 +24,36 @@ struct ShotOptions {
   std::vector<std::string> sets;
   bool json = false, gspro = false, csv = false;
   std::string units = "imperial";
+  int shot_number = 0;       // 0: 1, or the session's next
+  std::string session;       // a JSON-lines file the message is appended to
 };
+
+constexpr int kMaxShotNumber = 1000000000;
+
+// The highest ShotNumber among the session file's lines (0 for a missing or empty file).
+// A line that is not an Open Connect message is refused with its file:line: appending to a
+// file we cannot read would number the shot wrongly and break `sweetspot send`.
+int last_shot_number(const std::string& path, std::string& contents) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return 0;  // a new session
+  contents = read_data_file(path, "session", 256u << 20);
+  int last = 0, line_no = 0;
+  std::istringstream lines(contents);
+  for (std::string line; std::getline(lines, line);) {
+    ++line_no;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const auto j = nlohmann::json::parse(line, nullptr, false);
+    const auto n = j.is_object() ? j.find("ShotNumber") : j.end();
+    if (!j.is_object() || n == j.end() || !n->is_number_integer() || n->get<long long>() < 0 ||
+        n->get<long long>() > kMaxShotNumber)
+      throw InputError(path + ":" + std::to_string(line_no) +
+                       ": not an Open Connect shot line with a ShotNumber in [0, 1000000000] (--session appends to "
+                       "files it wrote)");
+    last = std::max(last, n->get<int>());
+  }
+  if (!contents.empty() && contents.back() != '\n') contents += '\n';
+  return last;
+}
 
 RunFn setup_shot(CLI::App& sub) {
   auto o = std::make_shared<ShotOptions>();
@@ -30,6 +67,13 @@ RunFn setup_shot(CLI::App& sub) {
   auto* csv = sub.add_flag("--csv", o->csv, "print a CSV header and row (Statcast names for baseball)");
   json->excludes(gspro)->excludes(csv);
   gspro->excludes(csv);
+  auto* number = sub.add_option("--shot-number", o->shot_number, "--gspro: the message's ShotNumber, 1..1000000000 (default 1, or the session's next)")
+      ->check(CLI::Range(1, kMaxShotNumber));
+  auto* session = sub.add_option("--session", o->session,
+                                 "--gspro: append the message as one line to this JSON-lines file, numbered after its "
+                                 "last shot (replay it with `sweetspot send`)");
+  number->needs(gspro);
+  session->needs(gspro);
   sub.add_option("--units", o->units, "display units of the table and CSV: imperial or metric")
       ->capture_default_str();
   return [o](const Assets& assets) -> int {
@@ -45,7 +89,14 @@ RunFn setup_shot(CLI::App& sub) {
     if (o->json) {
       std::cout << shot_json(r).dump(2) << "\n";
     } else if (o->gspro) {
-      std::cout << gspro_json(r).dump(2) << "\n";
+      std::string contents;
+      const int last = o->session.empty() ? 0 : last_shot_number(o->session, contents);
+      const int number = o->shot_number > 0 ? o->shot_number : last + 1;
+      if (number > kMaxShotNumber)
+        throw InputError(o->session + ": the session is full (ShotNumber would pass 1000000000)");
+      const nlohmann::json message = gspro_json(r, number);
+      if (!o->session.empty()) write_file_atomic(o->session, contents + message.dump() + "\n");
+      std::cout << message.dump(2) << "\n";
     } else if (o->csv) {
       std::cout << csv_header(sport, units) << csv_row(r, sport, units);
     } else {

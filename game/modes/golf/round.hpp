@@ -75,10 +75,14 @@ class GolfRound {
   /// `shot`, when given, receives the physics result (for drawing it). The record stays
   /// valid until the next play().
   const StrokeRecord& play(const StrokeInput& in, ShotResult* shot = nullptr);
+  /// Plays a stroke a launch monitor measured: its launch numbers fly from where the ball
+  /// lies (on the tee, teed up), `club` is what the player holds (for the card).
+  const StrokeRecord& play_launch(const std::string& club, const LaunchNumbers& numbers, ShotResult* shot = nullptr);
   /// The shot without playing it (bots plan with it). Deterministic.
   ShotResult simulate(const StrokeInput& in, bool record_samples = false) const;
 
  private:
+  const StrokeRecord& play_spec(const ShotSpec& spec, const std::string& club, ShotResult* shot);
   Vec3 drop_back_on_line(const Vec3& in_water, const Vec3& from) const;
   std::string surface_at(const Vec3& p) const;
   void finish_hole();

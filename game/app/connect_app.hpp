@@ -1,0 +1,25 @@
+// `sweetspot connect` with a window: the launch monitor plays the round or the range, each
+// shot replayed as it arrives (the device's shot replaces the swing meter), with the device's
+// numbers beside the result and, when it sends club data, beside our impact model's launch.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "game/core/assets.hpp"
+#include "game/net/connect_server.hpp"
+
+namespace sweetspot {
+
+struct ConnectWindowOptions {
+  ConnectOptions server;
+  int frames = 0;          ///< run this many frames then exit (0 = until closed)
+  std::string screenshot;  ///< PNG of the last frame
+  int width = 1280, height = 800;
+};
+
+/// Serves and draws until the window closes (or `frames`, or the server stops). Shot lines
+/// go to `out` as headless; server events to `log`. Returns 0.
+int run_connect_window(const Assets& assets, const ConnectWindowOptions& o, std::ostream& out, std::ostream& log);
+
+}  // namespace sweetspot

@@ -1,0 +1,66 @@
+// `sweetspot connect`: a GSPro Open Connect v1 server (DESIGN §10). A launch monitor's
+// connector (Garmin R10, MLM2Pro, Square, PiTrac, ...) points at it as it would at GSPro;
+// each shot flies on the course round (`--course`) or the range (`--world`), headless as one
+// JSON line per shot on stdout, or in the window.
+#include <iostream>
+#include <memory>
+
+#include "game/app/connect_app.hpp"
+#include "game/app/display.hpp"
+#include "game/cli/command.hpp"
+#include "game/content/quantity_text.hpp"
+#include "game/net/connect_server.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot::cli {
+namespace {
+
+struct ConnectCliOptions {
+  ConnectOptions server;
+  std::string idle = "30min";
+  bool headless = false;
+  std::string screenshot;
+  int frames = 0;
+};
+
+RunFn setup_connect(CLI::App& sub) {
+  auto o = std::make_shared<ConnectCliOptions>();
+  sub.add_option("--port", o->server.port, "TCP port, 0..65535 (GSPro's is 921; below 1024 needs root; 0 = any free port)")
+      ->capture_default_str();
+  sub.add_option("--bind", o->server.bind, "address to listen on (0.0.0.0 for a launch monitor on another machine)")
+      ->capture_default_str();
+  sub.add_flag("--headless", o->headless, "no window: one JSON line per shot on stdout");
+  auto* course = sub.add_option("--course", o->server.table.course, "play this course's round (a name of assets/courses or a .toml)");
+  auto* world = sub.add_option("--world", o->server.table.world, "a range on this world: every shot from its tee (default: the golf hole)");
+  course->excludes(world);
+  sub.add_option("--idle-timeout", o->idle, "drop a client silent this long, 1s..24h (some connectors never send a heartbeat)")
+      ->capture_default_str();
+  sub.add_option("--record", o->server.record, "append each shot message received to FILE (JSON lines; replay it with `sweetspot send`)");
+  sub.add_option("--max-shots", o->server.max_shots, "stop after N shots (replays, tests; 0 = never)")->check(CLI::Range(0, 100000000));
+  sub.add_option("--frames", o->frames, "window: run N frames then exit (automation)")->check(CLI::Range(1, 1000000));
+  sub.add_option("--screenshot", o->screenshot, "window: save the last frame to FILE.png");
+  return [o](const Assets& assets) -> int {
+    const Range idle_range{ConnectOptions::kMinIdle, ConnectOptions::kMaxIdle};
+    o->server.idle_timeout = flag_quantity("--idle-timeout", o->idle, Dimension::Time, &idle_range);
+    std::string why;
+    if (!o->headless && !display_available(&why)) {
+      std::cerr << "sweetspot connect: " << why << "; running headless.\n";
+      o->headless = true;
+    }
+    if (o->headless) {
+      ConnectServer server(assets, o->server, std::cout, std::cerr);
+      return server.run();
+    }
+    ConnectWindowOptions w;
+    w.server = o->server;
+    w.frames = o->frames;
+    w.screenshot = o->screenshot;
+    return run_connect_window(assets, w, std::cout, std::cerr);
+  };
+}
+
+const CommandRegistrar reg{37, "connect", "serve a launch monitor (GSPro Open Connect v1): its shots play the course or the range",
+                           setup_connect};
+
+}  // namespace
+}  // namespace sweetspot::cli

@@ -1,0 +1,391 @@
+#include "game/net/connect_server.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <csignal>
+#include <deque>
+#include <fstream>
+
+#include <asio.hpp>
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+using asio::ip::tcp;
+using Clock = std::chrono::steady_clock;
+
+// Replies produced by one read go out this far apart: connectors that parse one JSON object
+// per recv() (the survey: the Node and PiTrac clients) fail on replies that arrive
+// coalesced. 5 ms is far below any connector's reply timeout (the strictest waits 2 s).
+constexpr auto kReplyGap = std::chrono::milliseconds(5);
+// The player information (201, on connect and on a club change) goes out only once the
+// client has been quiet this long. Connectors take the first object they read after a send
+// as its answer (gc2-connect-desktop: raw_decode of one recv; MLM: one recv), so a 201 must
+// never overtake the 200 of a message already on its way: gc2-connect-desktop connects and
+// writes a heartbeat and a shot back to back (< 1 ms apart), which a greeting sent at once
+// would precede. 50 ms is above such gaps and below MLM's 250 ms poller that handles 201.
+constexpr auto kPlayerInfoQuiet = std::chrono::milliseconds(50);
+// A client that stops reading while we queue more than this is dropped (a reply is ~60 B).
+constexpr std::size_t kMaxQueuedBytes = 1 << 20;
+// A connection silent this long is presumed dead when another launch monitor knocks: a
+// connector whose PC lost its Wi-Fi or slept leaves a socket with no FIN behind, and it
+// reconnects within ~5 s (the R10 adapter, travislang) - without this it would be refused
+// until the idle timeout. A live connector between shots is silent too, but then nobody
+// else is knocking. 60 s is longer than any connector's heartbeat period (3-6 s).
+constexpr auto kStaleAfter = std::chrono::seconds(60);
+
+std::string endpoint_text(const tcp::socket& s) {
+  asio::error_code ec;
+  const tcp::endpoint e = s.remote_endpoint(ec);
+  return ec ? std::string("?") : e.address().to_string() + ":" + std::to_string(e.port());
+}
+
+}  // namespace
+
+class Session;
+
+struct ConnectServer::Impl : std::enable_shared_from_this<ConnectServer::Impl> {
+  const Assets& assets;
+  ConnectOptions options;
+  std::ostream& out;
+  std::ostream& log;
+  ShotTable table;
+  asio::io_context io;
+  tcp::acceptor acceptor{io};
+  std::optional<asio::signal_set> signals;
+  std::weak_ptr<Session> current;
+  std::function<void(const ShotTable::Played&)> shot_hook;
+  std::ofstream record;
+  int shots = 0;
+  bool stopping = false;
+
+  Impl(const Assets& a, const ConnectOptions& o, std::ostream& out_, std::ostream& log_)
+      : assets(a), options(o), out(out_), log(log_), table(a, o.table) {}
+
+  void listen();
+  void accept();
+  void refuse(tcp::socket socket);
+  void shutdown();
+};
+
+class Session : public std::enable_shared_from_this<Session> {
+ public:
+  Session(tcp::socket socket, ConnectServer::Impl& server)
+      : socket_(std::move(socket)), server_(server), idle_(server.io), gap_(server.io), player_(server.io),
+        framer_(server.options.max_message), peer_(endpoint_text(socket_)) {}
+
+  void start() {
+    asio::error_code ec;
+    socket_.set_option(tcp::no_delay(true), ec);  // one reply per segment, sent at once
+    server_.log << "sweetspot connect: " << peer_ << " connected; " << server_.table.where() << "\n";
+    last_heard_ = Clock::now();
+    arm_idle();
+    want_player_info();  // the greeting: which club the game expects
+    read();
+  }
+
+  void close(const std::string& why) {
+    if (closed_) return;
+    closed_ = true;
+    server_.log << "sweetspot connect: " << peer_ << " " << why << "\n";
+    asio::error_code ec;
+    socket_.shutdown(tcp::socket::shutdown_both, ec);
+    socket_.close(ec);
+    idle_.cancel();
+    gap_.cancel();
+    player_.cancel();
+  }
+
+  bool open() const { return !closed_; }
+  Clock::duration silent_for() const { return Clock::now() - last_heard_; }
+  bool idle_writer() const { return out_.empty() && !writing_; }
+
+ private:
+  void read() {
+    auto self = shared_from_this();
+    socket_.async_read_some(asio::buffer(buf_), [this, self](const asio::error_code& ec, std::size_t n) {
+      if (closed_) return;
+      if (ec) {
+        close(ec == asio::error::eof ? "disconnected" : "dropped: " + ec.message());
+        return;
+      }
+      last_heard_ = Clock::now();
+      on_bytes(std::string_view(buf_.data(), n));
+      if (!closed_) read();
+    });
+  }
+
+  void on_bytes(std::string_view bytes) {
+    Clock::duration delay{0};
+    bool answered_garbage = false;
+    for (const MessageFramer::Piece& piece : framer_.feed(bytes)) {
+      if (closed_) return;
+      using Kind = MessageFramer::Piece::Kind;
+      if (piece.kind != Kind::Message) {
+        // At most one complaint per read about bytes that are not a message.
+        if (piece.kind == Kind::Garbage && answered_garbage) continue;
+        answered_garbage = answered_garbage || piece.kind == Kind::Garbage;
+        const std::string why = piece.kind == Kind::Oversized
+                                    ? "message longer than " + std::to_string(server_.options.max_message) + " bytes"
+                                : piece.kind == Kind::TooDeep
+                                    ? "objects nested deeper than " + std::to_string(MessageFramer::kMaxDepth)
+                                    : "bytes outside a JSON object";
+        server_.log << "sweetspot connect: " << peer_ << ": bad format: " << why << "\n";
+        send(reply_status(501, "Bad format: " + why), delay);
+        delay += kReplyGap;
+        continue;
+      }
+      handle(piece.text, delay);
+      delay += kReplyGap;
+    }
+  }
+
+  void handle(const std::string& text, Clock::duration delay) {
+    OcMessage m;
+    try {
+      m = parse_open_connect(text);
+    } catch (const InputError& e) {
+      server_.log << "sweetspot connect: " << peer_ << ": bad format: " << e.what() << "\n";
+      send(reply_status(501, std::string("Bad format: ") + e.what()), delay);
+      return;
+    }
+    if (m.kind == OcMessage::Kind::Heartbeat) {
+      send(reply_status(200, "Heartbeat received"), delay);
+      return;
+    }
+    if (m.kind == OcMessage::Kind::Status) {
+      send(reply_status(200, m.ready ? "Launch monitor ready" : "Status received"), delay);
+      return;
+    }
+    if (server_.record.is_open()) {
+      // The message as received, on one line (a connector may pretty-print).
+      const std::string line = nlohmann::json::parse(text).dump() + "\n";
+      server_.record.write(line.data(), static_cast<std::streamsize>(line.size()));
+      server_.record.flush();
+    }
+    ShotTable::Played played;
+    try {
+      played = server_.table.play(m, static_cast<bool>(server_.shot_hook));
+    } catch (const InputError& e) {
+      server_.log << "sweetspot connect: " << peer_ << ": shot " << m.shot_number << " refused: " << e.what() << "\n";
+      send(reply_status(501, std::string("Bad format: ") + e.what()), delay);
+      return;
+    }
+    send(reply_shot(m.club.has_value()), delay);
+    if (played.flown) {
+      server_.out << played.line.dump() << "\n" << std::flush;
+      if (server_.shot_hook) server_.shot_hook(played);
+    } else {
+      server_.log << "sweetspot connect: " << peer_ << ": shot " << m.shot_number << " has no ball speed: not flown\n";
+    }
+    if (played.round_over) send(reply_status(203, "GSPro round ended"), delay + kReplyGap);
+    if (played.club_changed) want_player_info();
+    ++server_.shots;
+    if (server_.options.max_shots > 0 && server_.shots >= server_.options.max_shots) server_.stopping = true;
+  }
+
+  // Queues a reply to go out no earlier than `delay` from now, after those queued before it.
+  void send(std::string text, Clock::duration delay) {
+    if (closed_) return;
+    queued_bytes_ += text.size();
+    if (queued_bytes_ > kMaxQueuedBytes) {
+      close("dropped: it does not read its replies");
+      return;
+    }
+    out_.push_back({std::move(text), Clock::now() + delay});
+    if (!writing_) write_next();
+  }
+
+  void write_next() {
+    if (closed_) return;
+    if (out_.empty()) {
+      writing_ = false;
+      // Stopping (max_shots): once the last replies, the player information included, are out.
+      if (server_.stopping && !player_due_) server_.shutdown();
+      return;
+    }
+    writing_ = true;
+    auto self = shared_from_this();
+    if (Clock::now() < out_.front().not_before) {
+      gap_.expires_at(out_.front().not_before);
+      gap_.async_wait([this, self](const asio::error_code& ec) {
+        if (!ec) write_next();
+      });
+      return;
+    }
+    asio::async_write(socket_, asio::buffer(out_.front().text), [this, self](const asio::error_code& ec, std::size_t) {
+      if (closed_) return;
+      if (ec) {
+        close("dropped while writing: " + ec.message());
+        return;
+      }
+      queued_bytes_ -= out_.front().text.size();
+      out_.pop_front();
+      last_written_ = Clock::now();
+      write_next();
+    });
+  }
+
+  // Sends the 201 once the client has been quiet for kPlayerInfoQuiet (the club as it is
+  // then: several changes in a burst give one message).
+  void want_player_info() {
+    player_due_ = true;
+    arm_player(quiet_from());
+  }
+  // The line is quiet once nothing was received or written for kPlayerInfoQuiet (a shot's
+  // 200 may leave long after its bytes came in: the flight is played first).
+  Clock::time_point quiet_from() const { return std::max(last_heard_, last_written_) + kPlayerInfoQuiet; }
+  void arm_player(Clock::time_point when) {
+    auto self = shared_from_this();
+    player_.expires_at(when);
+    player_.async_wait([this, self](const asio::error_code& ec) {
+      if (ec || closed_ || !player_due_) return;
+      if (!idle_writer() || Clock::now() < quiet_from()) {
+        // The client spoke, or a reply is still going out: wait again.
+        arm_player(idle_writer() ? quiet_from() : Clock::now() + kPlayerInfoQuiet);
+        return;
+      }
+      player_due_ = false;
+      send(server_.table.player_reply(), Clock::duration{0});
+      if (server_.stopping && idle_writer()) server_.shutdown();
+    });
+  }
+
+  void arm_idle() {
+    auto self = shared_from_this();
+    const auto limit = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(server_.options.idle_timeout));
+    idle_.expires_at(last_heard_ + limit);
+    idle_.async_wait([this, self, limit](const asio::error_code& ec) {
+      if (ec || closed_) return;
+      if (Clock::now() - last_heard_ >= limit) {
+        close("timed out: silent for " + std::to_string(static_cast<int>(server_.options.idle_timeout)) + " s");
+        return;
+      }
+      arm_idle();
+    });
+  }
+
+  struct Outgoing {
+    std::string text;
+    Clock::time_point not_before;
+  };
+  tcp::socket socket_;
+  ConnectServer::Impl& server_;
+  asio::steady_timer idle_, gap_, player_;
+  MessageFramer framer_;
+  std::array<char, 16 * 1024> buf_{};
+  std::deque<Outgoing> out_;
+  std::size_t queued_bytes_ = 0;
+  bool writing_ = false, closed_ = false, player_due_ = false;
+  Clock::time_point last_heard_, last_written_;
+  std::string peer_;
+};
+
+void ConnectServer::Impl::listen() {
+  asio::error_code ec;
+  const asio::ip::address address = asio::ip::make_address(options.bind, ec);
+  if (ec) throw InputError("--bind " + options.bind + ": not an IP address (e.g. 127.0.0.1, or 0.0.0.0 for every interface)");
+  if (options.port < 0 || options.port > ConnectOptions::kMaxPort)
+    throw InputError("--port " + std::to_string(options.port) + " is out of range (allowed [0, 65535])");
+  const tcp::endpoint endpoint(address, static_cast<unsigned short>(options.port));
+  acceptor.open(endpoint.protocol(), ec);
+  if (!ec) acceptor.set_option(tcp::acceptor::reuse_address(true), ec);
+  if (!ec) acceptor.bind(endpoint, ec);
+  if (!ec) acceptor.listen(asio::socket_base::max_listen_connections, ec);
+  if (ec) {
+    std::string hint;
+    if (ec == asio::error::access_denied && options.port < 1024)
+      hint = " (ports below 1024 need root on Linux: use --port 9210 and point the connector at it)";
+    throw InputError("cannot listen on " + options.bind + ":" + std::to_string(options.port) + ": " + ec.message() + hint);
+  }
+  if (options.handle_signals) {
+    signals.emplace(io, SIGINT, SIGTERM);
+    signals->async_wait([this](const asio::error_code& e, int signal) {
+      if (e) return;
+      log << "sweetspot connect: " << (signal == SIGINT ? "SIGINT" : "SIGTERM") << ": closing\n";
+      shutdown();
+    });
+  }
+}
+
+void ConnectServer::Impl::accept() {
+  acceptor.async_accept([this](const asio::error_code& ec, tcp::socket socket) {
+    if (ec) return;  // closed by shutdown()
+    const auto live = current.lock();
+    if (live && live->open() && live->silent_for() < kStaleAfter) {
+      refuse(std::move(socket));
+    } else {
+      if (live && live->open()) live->close("replaced: silent for over 60 s while another launch monitor connected");
+      auto session = std::make_shared<Session>(std::move(socket), *this);
+      current = session;
+      session->start();
+    }
+    accept();
+  });
+}
+
+void ConnectServer::Impl::refuse(tcp::socket socket) {
+  // GSPro serves one launch monitor; tell the second why before closing.
+  auto s = std::make_shared<tcp::socket>(std::move(socket));
+  auto text = std::make_shared<std::string>(reply_status(503, "Another launch monitor is connected"));
+  log << "sweetspot connect: " << endpoint_text(*s) << " refused: another launch monitor is connected\n";
+  asio::async_write(*s, asio::buffer(*text), [s, text](const asio::error_code&, std::size_t) {
+    asio::error_code ignored;
+    s->shutdown(tcp::socket::shutdown_both, ignored);
+    s->close(ignored);
+  });
+}
+
+void ConnectServer::Impl::shutdown() {
+  asio::error_code ec;
+  acceptor.close(ec);
+  if (signals) signals->cancel(ec);
+  if (const auto live = current.lock()) live->close("closed by the server");
+  io.stop();
+}
+
+ConnectServer::ConnectServer(const Assets& assets, const ConnectOptions& o, std::ostream& out, std::ostream& log) {
+  if (!(o.idle_timeout >= ConnectOptions::kMinIdle && o.idle_timeout <= ConnectOptions::kMaxIdle))
+    throw InputError("--idle-timeout " + std::to_string(o.idle_timeout) + " s is out of range (allowed [1, 86400] s)");
+  impl_ = std::make_shared<Impl>(assets, o, out, log);
+  impl_->listen();  // first: a port that cannot be bound leaves no record file behind
+  if (!o.record.empty()) {
+    impl_->record.open(o.record, std::ios::binary | std::ios::app);
+    if (!impl_->record) throw InputError("--record " + o.record + ": cannot open for writing");
+  }
+  impl_->accept();
+}
+
+ConnectServer::~ConnectServer() {
+  if (impl_) {
+    impl_->shutdown();
+    // Let the closed sockets' handlers run so that nothing outlives the server.
+    impl_->io.restart();
+    impl_->io.poll();
+  }
+}
+
+int ConnectServer::port() const { return impl_->acceptor.is_open() ? impl_->acceptor.local_endpoint().port() : 0; }
+
+int ConnectServer::run() {
+  impl_->log << "sweetspot connect: listening on " << impl_->options.bind << ":" << port() << "; "
+             << impl_->table.where() << "\n";
+  impl_->io.run();
+  return 0;
+}
+
+void ConnectServer::poll() { impl_->io.poll(); }
+
+void ConnectServer::stop() {
+  asio::post(impl_->io, [impl = impl_] { impl->shutdown(); });
+}
+
+bool ConnectServer::stopped() const { return impl_->io.stopped(); }
+int ConnectServer::shots() const { return impl_->shots; }
+const ShotTable& ConnectServer::table() const { return impl_->table; }
+void ConnectServer::on_shot(std::function<void(const ShotTable::Played&)> f) { impl_->shot_hook = std::move(f); }
+
+}  // namespace sweetspot

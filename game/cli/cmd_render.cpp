@@ -12,9 +12,11 @@
 #include "game/cli/command.hpp"
 #include "game/cli/launch_flags.hpp"
 #include "game/content/quantity_text.hpp"
+#include "game/content/scenario.hpp"
 #include "game/render/render_command.hpp"
 #include "game/render/render_error.hpp"
 #include "game/render/shot_view.hpp"
+#include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot::cli {
@@ -60,6 +62,7 @@ RunFn setup_render(CLI::App& sub) {
     if (!o->scenario.empty()) {
       if (has_launch_numbers(o->launch))
         throw InputError("render: give a SCENARIO or the launch flags (--ball-speed, --launch-angle, --spin), not both");
+      refuse_output_over_input(o->output, resolve_scenario(assets, o->scenario), "-o");
       scenario = load_scenario(assets, o->scenario, o->launch.sets);
     } else {
       scenario = launch_scenario(assets, o->launch, "render");

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "game/cli/command.hpp"
+#include "game/content/scenario.hpp"
 #include "game/content/scenario_schema.hpp"
 #include "game/tuning/sweep.hpp"
 #include "game/util/atomic_file.hpp"
@@ -44,6 +45,7 @@ RunFn setup_sweep(CLI::App& sub) {
       throw InputError("--e " + o->e + " --mu " + o->mu + ": " + std::to_string(points) +
                        " grid points exceed the limit of " + std::to_string(kMaxSweepPoints));
     }
+    if (!o->csv.empty()) refuse_output_over_input(o->csv, resolve_scenario(assets, o->scenario), "--csv");
     const Scenario base = load_scenario(assets, o->scenario, o->sets);
     if (::isatty(STDERR_FILENO) != 0) {
       so.progress = [](std::size_t done, std::size_t total) {

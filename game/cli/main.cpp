@@ -46,7 +46,15 @@ int main(int argc, char** argv) {
   try {
     const sweetspot::Assets assets;  // the one asset context; each part loads on first use
     for (auto& [sub, run] : runs) {
-      if (sub->parsed()) return run(assets);
+      if (!sub->parsed()) continue;
+      const int code = run(assets);
+      // Output that never arrived is a failure: a full disk, /dev/full, a closed stdout.
+      std::cout.flush();
+      if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+        std::cerr << "sweetspot: error: writing the output to stdout failed (disk full, or stdout closed)\n";
+        return 2;
+      }
+      return code;
     }
   } catch (const sweetspot::InputError& e) {
     std::cerr << "sweetspot: error: " << e.what() << "\n";

@@ -37,6 +37,15 @@ constexpr std::size_t kMaxQueuedBytes = 1 << 20;
 // else is knocking. 60 s is longer than any connector's heartbeat period (3-6 s).
 constexpr auto kStaleAfter = std::chrono::seconds(60);
 
+// What a client sent, made safe for a terminal: control bytes (an escape sequence could
+// rewrite the operator's screen) and bytes beyond ASCII shown as '?'.
+std::string printable(std::string_view text) {
+  std::string out(text.substr(0, 200));
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+  return out;
+}
+
 std::string endpoint_text(const tcp::socket& s) {
   asio::error_code ec;
   const tcp::endpoint e = s.remote_endpoint(ec);
@@ -113,7 +122,14 @@ class Session : public std::enable_shared_from_this<Session> {
         return;
       }
       last_heard_ = Clock::now();
-      on_bytes(std::string_view(buf_.data(), n));
+      try {
+        on_bytes(std::string_view(buf_.data(), n));
+      } catch (const std::exception& e) {
+        // A bug of ours must not take the server (and the player's round) down: say so
+        // and go on with the next message.
+        server_.log << "sweetspot connect: " << peer_ << ": internal error: " << printable(e.what()) << "\n";
+        send(reply_status(500, "Internal error"), Clock::duration{0});
+      }
       if (!closed_) read();
     });
   }
@@ -148,7 +164,7 @@ class Session : public std::enable_shared_from_this<Session> {
     try {
       m = parse_open_connect(text);
     } catch (const InputError& e) {
-      server_.log << "sweetspot connect: " << peer_ << ": bad format: " << e.what() << "\n";
+      server_.log << "sweetspot connect: " << peer_ << ": bad format: " << printable(e.what()) << "\n";
       send(reply_status(501, std::string("Bad format: ") + e.what()), delay);
       return;
     }
@@ -170,13 +186,13 @@ class Session : public std::enable_shared_from_this<Session> {
     try {
       played = server_.table.play(m, static_cast<bool>(server_.shot_hook));
     } catch (const InputError& e) {
-      server_.log << "sweetspot connect: " << peer_ << ": shot " << m.shot_number << " refused: " << e.what() << "\n";
+      server_.log << "sweetspot connect: " << peer_ << ": shot " << m.shot_number << " refused: " << printable(e.what()) << "\n";
       send(reply_status(501, std::string("Bad format: ") + e.what()), delay);
       return;
     }
     send(reply_shot(m.club.has_value()), delay);
     if (played.flown) {
-      server_.out << played.line.dump() << "\n" << std::flush;
+      server_.out << played.line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n" << std::flush;
       if (server_.shot_hook) server_.shot_hook(played);
     } else {
       server_.log << "sweetspot connect: " << peer_ << ": shot " << m.shot_number << " has no ball speed: not flown\n";

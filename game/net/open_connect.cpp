@@ -213,19 +213,24 @@ OcMessage parse_open_connect(std::string_view text) {
   return m;
 }
 
+namespace {
+// Compact JSON; bytes that are not UTF-8 (a parse error quotes what the client sent) become
+// U+FFFD instead of making the serializer throw (a fuzz finding: it took the server down).
+std::string compact(const nlohmann::json& j) { return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
+}  // namespace
+
 std::string reply_shot(bool with_club) {
-  return nlohmann::json{{"Code", 200}, {"Message", with_club ? "Club & Ball Data received" : "Ball Data received"}, {"Player", nullptr}}
-      .dump();
+  return compact({{"Code", 200}, {"Message", with_club ? "Club & Ball Data received" : "Ball Data received"}, {"Player", nullptr}});
 }
 
 std::string reply_player(const std::string& handed, const std::string& club_code, std::optional<double> distance_yd) {
   nlohmann::json player = {{"Handed", handed}, {"Club", club_code}};
   if (distance_yd) player["DistanceToTarget"] = *distance_yd;
-  return nlohmann::json{{"Code", 201}, {"Message", "GSPro Player Information"}, {"Player", player}}.dump();
+  return compact({{"Code", 201}, {"Message", "GSPro Player Information"}, {"Player", player}});
 }
 
 std::string reply_status(int code, const std::string& message) {
-  return nlohmann::json{{"Code", code}, {"Message", message}, {"Player", nullptr}}.dump();
+  return compact({{"Code", code}, {"Message", message}, {"Player", nullptr}});
 }
 
 std::string gspro_club_code(const std::string& c) {

@@ -1,7 +1,5 @@
 #include "game/render/image.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -10,6 +8,7 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -28,27 +27,15 @@ void write_png_atomic(const std::filesystem::path& path, int width, int height, 
     throw InputError("PNG " + path.string() + ": pixel buffer does not match " + std::to_string(width) + "x" +
                      std::to_string(height) + " RGBA");
   }
-  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::is_directory(dir)) {
-    throw InputError("cannot write " + path.string() + ": folder " + dir.string() + " does not exist");
-  }
-  // Hidden temporary name in the same folder (rename is atomic only within a file system).
-  std::string tmp_name = path.filename().string();
-  tmp_name.insert(0, 1, '.');
-  tmp_name.append(".tmp").append(std::to_string(::getpid()));
-  const std::filesystem::path tmp = dir / tmp_name;
-  if (stbi_write_png(tmp.c_str(), width, height, 4, rgba.data(), width * 4) == 0) {
-    std::error_code ignore;
-    std::filesystem::remove(tmp, ignore);
-    throw InputError("cannot write " + path.string() + " (writing " + tmp.string() + " failed)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignore;
-    std::filesystem::remove(tmp, ignore);
-    throw InputError("cannot write " + path.string() + ": " + ec.message());
-  }
+  // Encoded in memory, then written by the one atomic writer (exclusive temporary, every
+  // write checked, the old file kept on failure).
+  std::string png;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+  };
+  if (stbi_write_png_to_func(append, &png, width, height, 4, rgba.data(), width * 4) == 0 || png.empty())
+    throw InputError("cannot write " + path.string() + ": PNG encoding failed");
+  write_file_atomic(path, png);
 }
 
 std::vector<std::uint8_t> read_png_rgba(const std::filesystem::path& path, int* width, int* height) {

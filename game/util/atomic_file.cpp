@@ -4,11 +4,16 @@
 #include "game/util/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <limits.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
+#include <functional>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -17,64 +22,152 @@
 namespace sweetspot {
 namespace {
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what, int err) {
-  throw InputError("cannot write '" + path.string() + "': " + what + ": " + std::strerror(err));
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const fs::path& path, const std::string& what, int err) {
+  throw InputError("cannot write '" + path.string() + "': " + what + (err != 0 ? std::string(": ") + std::strerror(err) : ""));
 }
 
-}  // namespace
+// The temporary file being written, for the signal handler to remove. A fixed buffer and a
+// lock-free flag because a handler may only call async-signal-safe functions (unlink).
+// One slot: the writers in this program run one at a time (the UI thread or the CLI).
+char g_temp_path[PATH_MAX];
+std::atomic<bool> g_temp_live{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
 
-void write_file_atomic(const std::filesystem::path& path, std::string_view contents) {
-  if (path.empty()) throw InputError("cannot write a file with an empty name");
-  if (std::filesystem::is_directory(path)) {
-    throw InputError("cannot write '" + path.string() + "': it is a directory");
+extern "C" void remove_temp_and_reraise(int sig) {
+  if (g_temp_live.load()) ::unlink(g_temp_path);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+// Installs the cleanup handler for SIGINT/SIGTERM unless someone else (the connect server's
+// Asio signal_set, a test runner) already handles them.
+void install_cleanup_handlers() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (const int sig : {SIGINT, SIGTERM}) {
+      struct sigaction old {};
+      if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_DFL) std::signal(sig, remove_temp_and_reraise);
+    }
+    // Over a file-size limit (ulimit -f) write() must fail with EFBIG, reported like a full
+    // disk; by default SIGXFSZ would kill the process and leave the temporary behind.
+    struct sigaction old {};
+    if (::sigaction(SIGXFSZ, nullptr, &old) == 0 && old.sa_handler == SIG_DFL) std::signal(SIGXFSZ, SIG_IGN);
+  });
+}
+
+struct TempRegistration {
+  explicit TempRegistration(const std::string& p) {
+    if (p.size() >= sizeof g_temp_path) return;  // cannot be longer: mkstemp's path fits PATH_MAX
+    std::memcpy(g_temp_path, p.c_str(), p.size() + 1);
+    g_temp_live.store(true);
   }
-  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
-  std::string leaf = ".";  // hidden temporary: ".NAME.tmpXXXXXX"
-  leaf += path.filename().string();
-  leaf += ".tmpXXXXXX";
-  const std::string tmpl = (dir / leaf).string();
-  std::vector<char> name(tmpl.begin(), tmpl.end());
-  name.push_back('\0');
-  const int fd = ::mkstemp(name.data());
-  if (fd < 0) fail(path, "cannot create a temporary file in '" + dir.string() + "'", errno);
-  const std::string tmp(name.data());
+  ~TempRegistration() { g_temp_live.store(false); }
+};
 
-  auto abandon = [&](const std::string& what) {
-    const int err = errno;
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    fail(path, what, err);
-  };
+// The file a path finally names after its symlinks (relative links resolve against the
+// link's folder). A dangling link names the file it would create.
+fs::path follow_links(const fs::path& path) {
+  fs::path p = path;
+  for (int hops = 0;; ++hops) {
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
+    if (hops == 40) fail(path, "too many levels of symbolic links", ELOOP);
+    std::error_code ec;
+    const fs::path target = fs::read_symlink(p, ec);
+    if (ec) fail(path, "cannot read the symbolic link", ec.value());
+    p = target.is_absolute() ? target : p.parent_path() / target;
+  }
+}
+
+void write_all(int fd, std::string_view contents, const std::function<void(const char*)>& on_error) {
   const char* p = contents.data();
   std::size_t left = contents.size();
   while (left > 0) {
     const ssize_t n = ::write(fd, p, left);
     if (n < 0) {
       if (errno == EINTR) continue;
-      abandon("write failed");
+      on_error("write failed");
+    }
+    if (n == 0) {
+      errno = ENOSPC;
+      on_error("write failed");
     }
     p += n;
     left -= static_cast<std::size_t>(n);
   }
-  // mkstemp creates 0600; outputs are meant to be shared, so rw-r--r-- (reading the umask
-  // would mean setting it, which is not thread-safe).
-  if (::fchmod(fd, 0644) != 0) abandon("chmod failed");
+}
+
+}  // namespace
+
+void write_file_atomic(const fs::path& path, std::string_view contents) {
+  if (path.empty()) throw InputError("cannot write a file with an empty name");
+  const fs::path target = follow_links(path);
+  struct stat st {};
+  const bool exists = ::stat(target.c_str(), &st) == 0;
+  mode_t mode = 0644;
+  if (exists) {
+    if (S_ISDIR(st.st_mode)) fail(path, "it is a directory", 0);
+    if (S_ISCHR(st.st_mode)) {
+      // A device is written in place (replacing /dev/null with a file would be a disaster).
+      const int fd = ::open(target.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+      if (fd < 0) fail(path, "cannot open the device", errno);
+      write_all(fd, contents, [&](const char* what) {
+        const int err = errno;
+        ::close(fd);
+        fail(path, what, err);
+      });
+      if (::close(fd) != 0) fail(path, "close failed", errno);
+      return;
+    }
+    if (!S_ISREG(st.st_mode)) fail(path, "not a regular file (a FIFO, socket or block device): refusing to replace it", 0);
+    mode = st.st_mode & 07777;
+  }
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::string leaf = ".";  // hidden temporary: ".NAME.tmpXXXXXX"
+  leaf += target.filename().string();
+  leaf += ".tmpXXXXXX";
+  const std::string tmpl = (dir / leaf).string();
+  std::vector<char> name(tmpl.begin(), tmpl.end());
+  name.push_back('\0');
+  install_cleanup_handlers();
+  const int fd = ::mkostemp(name.data(), O_CLOEXEC);
+  if (fd < 0) fail(path, "cannot create a temporary file in '" + dir.string() + "'", errno);
+  const std::string tmp(name.data());
+  TempRegistration registered(tmp);
+
+  auto abandon = [&](const char* what) {
+    const int err = errno;
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    fail(path, what, err);
+  };
+  write_all(fd, contents, abandon);
+  if (::fchmod(fd, mode) != 0) abandon("chmod failed");
   if (::fsync(fd) != 0) abandon("fsync failed");
   if (::close(fd) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());
     fail(path, "close failed", err);
   }
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+  if (::rename(tmp.c_str(), target.c_str()) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());
     fail(path, "rename failed", err);
   }
-  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dfd >= 0) {  // best effort: some file systems refuse fsync on directories
     (void)::fsync(dfd);
     ::close(dfd);
   }
+}
+
+void refuse_output_over_input(const fs::path& output, const fs::path& input, const char* flag) {
+  std::error_code ec;
+  if (fs::equivalent(output, input, ec) && !ec)
+    throw InputError(std::string(flag) + " " + output.string() + " is the input file " + input.string() +
+                     ": refusing to overwrite it");
 }
 
 }  // namespace sweetspot

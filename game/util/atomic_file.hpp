@@ -1,5 +1,6 @@
 // Atomic file output: a reader (or a crash) never sees a half-written file. Every file the
-// CLI writes (CSV, updated regression cases, PNGs) goes through here.
+// program writes (CSV, PNG, updated regression cases, saved scenarios, sessions) goes
+// through here.
 #pragma once
 
 #include <filesystem>
@@ -7,11 +8,24 @@
 
 namespace sweetspot {
 
-/// Writes `contents` to `path` atomically: a temporary file in the same directory is
-/// written, flushed to disk (fsync) and renamed over `path`, so `path` holds either the old
-/// contents or the new ones, never a mix. On failure the temporary file is removed, `path`
-/// is untouched, and InputError names `path` and the reason (missing directory, no
-/// permission, disk full).
+/// Writes `contents` to `path` atomically: an exclusive temporary file with an unpredictable
+/// name (mkstemp: O_EXCL, so a planted symlink cannot redirect it) in the same directory is
+/// written (every write checked), flushed to disk (fsync), closed (checked) and renamed over
+/// the target, so the target holds either the old contents or the new ones, never a mix.
+///  - A symlink is followed (to depth 40): the file it names is replaced, the link stays.
+///  - An existing file keeps its permission bits; a new one is rw-r--r--.
+///  - A character device (/dev/null, /dev/stdout, a tty) is written directly, never replaced;
+///    a FIFO, socket or block device is refused (a FIFO would block, the others are not files).
+///  - On any failure the temporary file is removed and the target untouched; so is it when
+///    SIGINT or SIGTERM arrives mid-write (the signal then ends the process as usual).
+/// Throws InputError naming `path` and the reason (missing directory, no permission, disk
+/// full, file-size limit).
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents);
+
+/// Refuses (InputError naming `flag`) an output that is the same file as `input` (after
+/// symlinks and hard links): `render x.toml -o x.toml` must not destroy the scenario.
+/// Nothing is checked when either does not exist yet.
+void refuse_output_over_input(const std::filesystem::path& output, const std::filesystem::path& input,
+                              const char* flag);
 
 }  // namespace sweetspot

@@ -6,6 +6,7 @@
 #include "game/cli/command.hpp"
 #include "game/tuning/regression.hpp"
 #include "game/util/atomic_file.hpp"
+#include "physics/error.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -32,10 +33,16 @@ RunFn setup_regress(CLI::App& sub) {
     }
     if (o->update) {
       int written = 0;
+      std::string done;  // the files already rewritten, named if a later one fails
       for (const auto& r : results) {
         if (r.updated_text == r.original_text) continue;
-        write_file_atomic(r.path, r.updated_text);
-        ++written;
+        try {
+          write_file_atomic(r.path, r.updated_text);
+        } catch (const InputError& e) {
+          throw InputError(std::string(e.what()) + (written == 0 ? "; no case file was changed"
+                                                                 : "; already updated: " + done + " (the others are unchanged)"));
+        }
+        done += (written++ ? ", " : "") + r.path.string();
       }
       std::cout << "updated " << written << " of " << results.size() << " case files\n";
       return 0;

@@ -82,7 +82,7 @@ std::vector<MessageFramer::Piece> MessageFramer::feed(std::string_view bytes) {
           skipping_ = true;
           continue;
         }
-      } else if (ch == '}' && --depth_ == 0) {
+      } else if (ch == '}' && --depth_ == 0 && buf_.size() <= max_) {
         out.push_back({Piece::Kind::Message, std::move(buf_)});
         buf_.clear();
         continue;
@@ -91,7 +91,7 @@ std::vector<MessageFramer::Piece> MessageFramer::feed(std::string_view bytes) {
     if (buf_.size() > max_) {
       out.push_back({Piece::Kind::Oversized, buf_.substr(0, 64)});
       buf_.clear();
-      skipping_ = true;
+      skipping_ = depth_ > 0;  // at depth 0 the refused message is already complete
     }
   }
   flush_garbage();

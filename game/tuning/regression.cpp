@@ -3,6 +3,7 @@
 #include "game/tuning/regression.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -86,26 +87,51 @@ std::string value_text(const std::vector<double>& si, const std::string& unit, D
   return out + "]";
 }
 
-// Replaces the value on `line` (1-based) of `text`, keeping the key and any comment.
-void replace_value(std::vector<std::string>& lines, int line, const std::string& value, const std::string& where) {
+// Replaces the value of key `leaf` on `line` (1-based), keeping everything else on the line:
+// the key as written (bare, dotted or quoted), other keys of an inline table
+// (`expect = { ball_speed = "167mph", spin = ... }`), the comment.
+void replace_value(std::vector<std::string>& lines, int line, const std::string& leaf, const std::string& value,
+                   const std::string& where) {
   std::string& l = lines.at(static_cast<std::size_t>(line - 1));
-  const auto eq = l.find('=');
-  if (eq == std::string::npos) throw InputError(where + ": cannot update: no '=' on this line");
-  bool quoted = false;
-  std::size_t end = l.size();
-  for (std::size_t i = eq + 1; i < l.size(); ++i) {
-    if (l[i] == '"') quoted = !quoted;
-    if (l[i] == '#' && !quoted) {
-      end = i;
-      break;
+  const auto is_key_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
+  // The key: `leaf` (optionally quoted) not inside a string, followed by spaces and '='.
+  std::size_t value_start = std::string::npos;
+  bool in_string = false;
+  for (std::size_t i = 0; i < l.size() && value_start == std::string::npos; ++i) {
+    const char c = l[i];
+    if (c == '#' && !in_string) break;
+    const bool quoted_key = c == '"' && l.compare(i + 1, leaf.size(), leaf) == 0 && i + 1 + leaf.size() < l.size() &&
+                            l[i + 1 + leaf.size()] == '"';
+    if (!quoted_key && c == '"') {
+      in_string = !in_string;
+      continue;
     }
+    if (in_string) continue;
+    const std::size_t name_at = quoted_key ? i + 1 : i;
+    if (l.compare(name_at, leaf.size(), leaf) != 0) continue;
+    if (!quoted_key && i > 0 && is_key_char(l[i - 1])) continue;
+    std::size_t j = name_at + leaf.size() + (quoted_key ? 1 : 0);
+    if (!quoted_key && j < l.size() && is_key_char(l[j])) continue;  // "spin" must not match "spin_tol"
+    while (j < l.size() && (l[j] == ' ' || l[j] == '\t')) ++j;
+    if (j < l.size() && l[j] == '=') value_start = j + 1;
   }
-  std::string rest = l.substr(eq + 1, end - eq - 1);
-  const auto open = std::count(rest.begin(), rest.end(), '[');
-  const auto close = std::count(rest.begin(), rest.end(), ']');
-  if (open != close) throw InputError(where + ": cannot update a value that spans several lines; write it on one line");
-  std::string comment = end < l.size() ? "  " + l.substr(end) : "";
-  l = l.substr(0, eq + 1) + " " + value + comment;
+  if (value_start == std::string::npos) throw InputError(where + ": cannot update: '" + leaf + " =' not found on this line");
+  // The value ends at a ',' or '}' outside strings and brackets, a comment, or the line's end.
+  std::size_t end = value_start;
+  int depth = 0;
+  in_string = false;
+  for (; end < l.size(); ++end) {
+    const char c = l[end];
+    if (c == '"') in_string = !in_string;
+    if (in_string) continue;
+    if (c == '[') ++depth;
+    if (c == ']') --depth;
+    if (c == '#' || (depth == 0 && (c == ',' || c == '}'))) break;
+  }
+  if (depth != 0 || in_string) throw InputError(where + ": cannot update a value that spans several lines; write it on one line");
+  std::string tail;
+  if (end < l.size()) tail = (l[end] == '#' ? "  " : "") + l.substr(end);  // ", next = ..." / "}" / "# comment"
+  l = l.substr(0, value_start) + " " + value + tail;
 }
 
 struct ExpectName {
@@ -214,7 +240,7 @@ RegressionCaseResult run_regression_case(const Assets& assets, const std::filesy
     const auto origin = doc.origin(key);
     const auto colon = origin.rfind(':');
     const int line = std::atoi(origin.c_str() + colon + 1);
-    replace_value(lines, line, value_text(got, unit, e.dim, e.list_size > 0), origin);
+    replace_value(lines, line, e.name, value_text(got, unit, e.dim, e.list_size > 0), origin);
   }
   if (doc.has("expect.contact")) {
     RegressionRow row;
@@ -224,7 +250,7 @@ RegressionCaseResult run_regression_case(const Assets& assets, const std::filesy
     row.pass = row.expected == row.got;
     res.rows.push_back(row);
     const auto origin = doc.origin("expect.contact");
-    replace_value(lines, std::atoi(origin.c_str() + origin.rfind(':') + 1), "\"" + m.contact + "\"", origin);
+    replace_value(lines, std::atoi(origin.c_str() + origin.rfind(':') + 1), "contact", "\"" + m.contact + "\"", origin);
   }
   if (res.rows.empty()) throw InputError(path.string() + ": no [expect] entries; the case would check nothing");
   if (!doc.flag("update")) {

@@ -277,3 +277,20 @@ TEST_CASE("a round plays the device's shots from where the ball lies", "[net][ta
   CHECK(p.club_changed);  // the caddie hands over a shorter club for the next one
   CHECK(table.round()->to_pin() < to_pin);
 }
+
+TEST_CASE("a message whose closing brace passes the bound is oversized, and the next is whole", "[net][framer][hostile]") {
+  // A fuzz finding: the byte that closed the message was not counted against the bound.
+  const std::string exact = R"({"DeviceID":")" + std::string(64 - 15, 'x') + R"("})";  // 64 bytes
+  REQUIRE(exact.size() == 64);
+  MessageFramer f(64);
+  auto pieces = f.feed(exact);
+  REQUIRE(pieces.size() == 1);
+  CHECK(pieces[0].kind == Kind::Message);
+  const std::string over = R"({"DeviceID":")" + std::string(64 - 14, 'x') + R"("})";  // 65 bytes
+  pieces = f.feed(over + "x" + R"({"a":1})");
+  REQUIRE(pieces.size() == 3);
+  CHECK(pieces[0].kind == Kind::Oversized);
+  CHECK(pieces[1].kind == Kind::Garbage);
+  CHECK(pieces[2].kind == Kind::Message);
+  CHECK(pieces[2].text == R"({"a":1})");
+}

@@ -44,3 +44,23 @@ TEST_CASE("regression cases detect drift and --update rewrites only pinned value
   CHECK_THROWS_WITH(regression_paths({"/nonexistent/case.toml"}), Contains("/nonexistent/case.toml"));
 }
 
+
+TEST_CASE("--update rewrites values inside an inline expect table, keeping the table", "[regression][hostile]") {
+  // A hostile-input finding: the whole `expect = { ... }` line became one string.
+  const Assets& A = test::assets();
+  const auto dir = std::filesystem::temp_directory_path() / "sweetspot_regress_inline";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "c.toml") << "sport = \"baseball\"\n"
+                                   "expect = { ball_speed = \"100mph\", ball_speed_tol = \"0.1mph\", \"spin\" = \"1500rpm\", "
+                                   "spin_tol = \"10rpm\" }  # pinned\n"
+                                   "[bat]\nname = \"maple\"\n[swing]\nspeed = \"70mph\"\n[pitch]\nspeed = \"90mph\"\n"
+                                   "[world]\nname = \"none\"\n";
+  const auto first = run_regression_case(A, dir / "c.toml");
+  CHECK_FALSE(first.passed());
+  CHECK_THAT(first.updated_text, Contains("expect = { ball_speed = \"") && Contains("\"spin\" = \"") &&
+                                     Contains(", ball_speed_tol = \"0.1mph\"") && Contains("spin_tol = \"10rpm\" }  # pinned"));
+  std::ofstream(dir / "c.toml") << first.updated_text;
+  CHECK(run_regression_case(A, dir / "c.toml").passed());
+  std::filesystem::remove_all(dir);
+}

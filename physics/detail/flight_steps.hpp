@@ -91,6 +91,12 @@ inline double hop_step(const ShotState& s) {
 ShotEvent air_step(const ShotModel& m, ShotState& s, double until);
 /// The ball at contact `c` (its position on the contact): land, bounce, sink or start to roll.
 ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& c);
+
+/// Two faces that hold the ball between them (a ditch's floor, a V between facets, a trough
+/// between steep walls): both face up, they are not parallel, and their mean normal is one
+/// a ball can roll on. Then the ball rolls in the crease (roll_step), moving along n1 × n2
+/// only; returns false (and changes nothing) otherwise.
+bool enter_crease(ShotState& s, const Vec3& n1, const Vec3& n2);
 /// One rolling step (the skid to pure rolling first, when due).
 ShotEvent roll_step(const ShotModel& m, ShotState& s, double until);
 

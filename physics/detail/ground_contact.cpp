@@ -6,6 +6,19 @@
 
 namespace sweetspot::detail {
 
+bool enter_crease(ShotState& s, const Vec3& n1, const Vec3& n2) {
+  if (n1.dot(up_axis()) <= 0.05 || n2.dot(up_axis()) <= 0.05) return false;
+  if (n1.cross(n2).norm() < 1e-3) return false;  // (nearly) one plane: no crease
+  const Vec3 nc = (n1 + n2).normalized();
+  if (nc.dot(up_axis()) < kFollowCos * 0.5) return false;  // the pair is a wall, not a floor
+  s.crease_n1 = n1;
+  s.crease_n2 = n2;
+  s.phase = Phase::Roll;
+  s.skidding = false;
+  s.chatter = 0;
+  return true;
+}
+
 ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& c) {
   ShotEvent ev;
   ev.contact = c;
@@ -39,6 +52,40 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
       return ev;
     }
   }
+  // Wedged: a ball that keeps touching surfaces slower than the roll threshold without ever
+  // settling into a roll is held between faces too steep to roll on (the floor of a narrow
+  // V, a ball between a wall and a bank). Between such touches it rises at most
+  // roll_speed²/2g (3 mm at 0.25 m/s), so it is at rest where it is, as a rigid-body engine
+  // puts a body to sleep once its motion stays below a threshold (Box2D, Jolt). 20 touches:
+  // a live micro-hop along a slope gains speed and breaks the run long before.
+  // A crease: gentle touches alternating between two faces (the ball bounces from one wall
+  // of a trough to the other while it runs along it, 200 000 times to the step limit before
+  // this). After a few such touches it rolls in the crease, held by both.
+  constexpr int kChatterTouches = 6;
+  const Vec3 previous = s.last_touch_normal;
+  s.last_touch_normal = c.normal;
+  const bool gentle = -ev.velocity_in.dot(c.normal) < m.settings.roll_speed;
+  const bool other_face = previous != Vec3::Zero() && (c.normal - previous).norm() > 1e-6;
+  s.chatter = gentle && other_face ? s.chatter + 1 : (gentle ? s.chatter : 0);
+  if (s.chatter >= kChatterTouches && enter_crease(s, previous, c.normal)) {
+    const Vec3 d = previous.cross(c.normal).normalized();
+    const Vec3 v = ev.velocity_in.dot(d) * d;
+    s.y.segment<3>(3) = v;
+    s.y.segment<3>(6) = (previous + c.normal).normalized().cross(v) / m.ball.radius;
+    s.support = c;
+    s.rate_valid = false;
+    return ev;
+  }
+  constexpr int kWedgedTouches = 20;
+  s.slow_touches = ev.velocity_in.norm() < m.settings.roll_speed ? s.slow_touches + 1 : 0;
+  if (s.slow_touches >= kWedgedTouches) {
+    s.y.segment<6>(3).setZero();
+    s.support = c;
+    s.phase = Phase::Rest;
+    end_shot(s, EndReason::Rest);
+    ev.kind = ShotEventKind::Rest;
+    return ev;
+  }
   const BounceResult b = bounce_on_surface(mat, c.normal, s.velocity(), s.spin(), m.ball, m.settings.ground_firmness);
   ++s.bounces;
   Vec3 v = b.velocity;
@@ -51,6 +98,7 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
   s.rate_valid = false;
   const bool walkable = c.normal.dot(up_axis()) > kFollowCos * 0.5;  // < ~63° slope
   if (walkable && std::max(vn, 0.0) < m.settings.roll_speed) {
+    s.chatter = 0;
     s.support = c;
     s.phase = Phase::Roll;
     s.skidding = true;

@@ -82,6 +82,90 @@ void skid(const ShotModel& m, ShotState& s) {
   s.skidding = false;
 }
 
+/// Rolling resistance per unit weight on a surface (stimp-derived on greens).
+double rolling_resistance_on(const ShotModel& m, const SurfaceMaterial& mat) {
+  const double stimp = mat.kind == SurfaceKind::Green && m.settings.green_stimp > 0.0 ? m.settings.green_stimp : mat.stimp;
+  return stimp > 0.0 ? rolling_resistance_from_stimp(stimp, stimp_air_drag(m)) : mat.rolling_resistance;
+}
+
+/// One step along a crease (see enter_crease): the ball moves along d = n1 × n2 only; the
+/// velocity into either face is taken by the two contacts, the slope of the crease line
+/// pulls it (5/7 of gravity's component, a rolling sphere), rolling resistance holds it with
+/// the weight the two faces carry together (their mean normal). It leaves the crease when
+/// the ground under it is no longer one of the two faces (the crease ended: plain rolling
+/// again, or a fall over an edge), and rests where the crease's slope cannot move it.
+ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
+  ShotEvent ev;
+  const Terrain& terrain = *m.terrain;
+  const double r = m.ball.radius;
+  const Vec3 n1 = s.crease_n1, n2 = s.crease_n2;
+  const Vec3 d = n1.cross(n2).normalized();
+  const Vec3 nc = (n1 + n2).normalized();
+  const double g_along = -(5.0 / 7.0) * kGravity * up_axis().dot(d);
+  const double resist = rolling_resistance_on(m, terrain.material(s.support.material)) * kGravity *
+                        std::max(nc.dot(up_axis()), 0.0);
+  const Vec3 p = s.position();
+  double u = s.velocity().dot(d);
+  const double limit = std::min(m.settings.max_time, until) - s.t;
+  const double dt = std::min(std::clamp(0.25 / std::max(std::abs(u), 1e-3), 1.0 / 240.0, 0.1), limit);
+  const double dir = u != 0.0 ? (u > 0.0 ? 1.0 : -1.0) : (g_along > 0.0 ? 1.0 : -1.0);
+  const double a = g_along - resist * dir;
+  double step = dt;
+  bool stops = false;
+  if (std::abs(g_along) <= resist && (std::abs(u) < m.settings.rest_speed || (u + a * dt) * u <= 0.0)) {
+    step = std::abs(u) > 0.0 && a != 0.0 ? std::min(std::abs(u / a), dt) : 0.0;
+    stops = true;
+  }
+  const Vec3 p1 = p + d * (u * step + 0.5 * a * step * step);
+  const double u1 = stops ? 0.0 : u + a * step;
+  const Vec3 v1 = u1 * d;
+  const auto leave_crease = [&] { s.crease_n1 = s.crease_n2 = Vec3::Zero(); };
+  // A wall across the crease: strike it.
+  SurfaceContact hit;
+  Vec3 hit_normal;
+  if (!stops && terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p, p1, r, &hit, &hit_normal)) &&
+      (hit.normal - n1).norm() > 1e-6 && (hit.normal - n2).norm() > 1e-6) {
+    leave_crease();
+    s.t += hit.fraction * step;
+    set_rolling(s, p + hit.fraction * (p1 - p), u * d, nc, r);
+    s.phase = Phase::Bounce;
+    return touch_surface(m, s, hit);
+  }
+  SurfaceContact under = s.support;
+  if (!terrain.support(p1, r, kLeaveGap + 0.1 * std::abs(u) * step + r, &under)) {
+    leave_crease();
+    return go_airborne(s, step, p1, v1);
+  }
+  const bool same_face = (under.normal - n1).norm() < 1e-6 || (under.normal - n2).norm() < 1e-6;
+  s.t += step;
+  s.y.segment<3>(0) = p1;
+  s.y.segment<3>(3) = v1;
+  s.y.segment<3>(6) = nc.cross(v1) / r;
+  if (!same_face) {
+    // The crease ended: roll (or fly) on from the face now under the ball.
+    leave_crease();
+    const double gap = under.normal.dot(p1 - under.point) - r;
+    if (gap > kLeaveGap) return go_airborne(s, 0.0, p1, v1);
+    s.support = under;
+    set_rolling(s, p1 - gap * under.normal, v1 - v1.dot(under.normal) * under.normal, under.normal, r);
+    return ev;
+  }
+  s.support = under;
+  if (!terrain.inside(p1)) {
+    end_shot(s, EndReason::LeftWorld);
+    ev.kind = ShotEventKind::LeftWorld;
+    return ev;
+  }
+  if (stops) {
+    s.y.segment<6>(3).setZero();
+    s.phase = Phase::Rest;
+    end_shot(s, EndReason::Rest);
+    ev.kind = ShotEventKind::Rest;
+    ev.contact = under;
+  }
+  return ev;
+}
+
 }  // namespace
 
 ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
@@ -96,6 +180,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     return ev;
   }
   ++s.counters.roll_steps;
+  if (s.crease_n1 != Vec3::Zero()) return crease_step(m, s, until);
   const Terrain& terrain = *m.terrain;
   const double r = m.ball.radius;
   const SurfaceContact c = s.support;
@@ -106,9 +191,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
 
   const double cos_t = n.dot(up_axis());
   const Vec3 slope_acc = (5.0 / 7.0) * -kGravity * (up_axis() - cos_t * n);  // rolling sphere
-  const double stimp = mat.kind == SurfaceKind::Green && m.settings.green_stimp > 0.0 ? m.settings.green_stimp : mat.stimp;
-  const double rolling = stimp > 0.0 ? rolling_resistance_from_stimp(stimp, stimp_air_drag(m)) : mat.rolling_resistance;
-  const double resist = rolling * kGravity * cos_t;
+  const double resist = rolling_resistance_on(m, mat) * kGravity * cos_t;
   const double speed = v.norm();
   const bool holds = slope_acc.norm() <= resist;  // static: the slope cannot start it
   if (speed == 0.0 && holds) {
@@ -178,6 +261,12 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   SurfaceContact hit;
   if (terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p, p1, r, &hit, &n))) {
     const double f = hit.fraction;
+    if (-(v + f * (v1 - v)).dot(hit.normal) < m.settings.roll_speed && enter_crease(s, n, hit.normal)) {
+      // Rolled gently into a second face that also carries it: a crease (no bounce).
+      s.t += f * step_t;
+      set_rolling(s, p + f * (p1 - p), v + f * (v1 - v), n, r);
+      return crease_step(m, s, until);
+    }
     s.t += f * step_t;
     set_rolling(s, p + f * (p1 - p), v + f * (v1 - v), n, r);
     s.phase = Phase::Bounce;

@@ -114,3 +114,83 @@ TEST_CASE("hostile files: a FIFO, a device or a directory is refused before read
   CHECK_THROWS_WITH(load(dir.write("usespipe.obj", "mtllib pipe.mtl\nusemtl fairway\nv 0 0 0\nv 10 0 0\nv 0 0 10\nf 1 3 2\n")),
                     Catch::Contains("pipe.mtl") && Catch::Contains("not a regular file"));
 }
+
+namespace {
+// A V-shaped ditch along z at x = 30 m: the ground falls from y = 0 at x = 0 to -depth at the
+// crease and rises again to y = 0 at x = 60 m (the issue's example of a ball falling through).
+std::string v_ditch(double depth, double half_width = 30.0) {
+  const double a = 30.0 - half_width, b = 30.0 + half_width;
+  std::string s = "mtllib w.mtl\nusemtl fairway\n";
+  const auto v = [&](double x, double y, double z) {
+    s += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+  };
+  v(-20, 0, -40), v(-20, 0, 40), v(a, 0, 40), v(a, 0, -40);               // 1-4: flat before
+  v(30, -depth, -40), v(30, -depth, 40);                                // 5-6: the crease
+  v(b, 0, -40), v(b, 0, 40), v(200, 0, 40), v(200, 0, -40);              // 7-10: flat after
+  s += "f 1 2 3\nf 1 3 4\nf 4 3 6\nf 4 6 5\nf 5 6 8\nf 5 8 7\nf 7 8 9\nf 7 9 10\n";
+  return s;
+}
+double ditch_floor(double x, double depth, double half_width) {
+  const double d = std::abs(x - 30.0);
+  return d >= half_width ? 0.0 : -depth * (1.0 - d / half_width);
+}
+}  // namespace
+
+TEST_CASE("hostile world: a ball in a V-shaped crease comes to rest in it, above the ground", "[assets][world][hostile]") {
+  const TempDir dir;
+  // Gentle to knife-edge creases; chips that land in them, putts that roll in, a drive over.
+  struct Case { double depth, half_width, mph, launch_deg, rpm; };
+  for (const Case c : {Case{1.0, 30.0, 50, 30, 5000}, Case{3.0, 6.0, 45, 35, 6000}, Case{5.0, 2.0, 45, 35, 6000},
+                       Case{8.0, 1.0, 43, 40, 7000}, Case{2.0, 0.3, 45, 35, 6000}, Case{1.0, 30.0, 10, 1, 0},
+                       Case{3.0, 6.0, 20, 2, 0}, Case{5.0, 2.0, 75, 25, 7500}}) {
+    const WorldAsset asset = load(dir.write("ditch.obj", v_ditch(c.depth, c.half_width)));
+    const test::FlightCase in = test::golf_launch(c.mph, c.launch_deg, c.rpm);
+    const ShotTrajectory t = test::fly(in, asset.world.get());
+    const Vec3 p = t.summary.rest_position;
+    INFO("depth " << c.depth << " m, half width " << c.half_width << " m, " << c.mph << " mph: end "
+                  << to_string(t.summary.end) << " at " << p.transpose() << ", " << t.summary.bounces << " bounces, "
+                  << t.stats.flight_steps + t.stats.roll_steps << " steps");
+    CHECK(t.summary.end == EndReason::Rest);
+    // Above the ground everywhere along the path (1 mm of contact slop).
+    for (const auto& s : t.samples) {
+      if (s.position.x() < -20.0 || s.position.x() > 200.0) continue;
+      const double floor = ditch_floor(s.position.x(), c.depth, c.half_width);
+      if (s.position.y() < floor - 1e-3) {
+        FAIL_CHECK("below the ground at t = " << s.t << " s: y " << s.position.y() << " < floor " << floor);
+        break;
+      }
+    }
+    CHECK(t.stats.flight_steps + t.stats.roll_steps < in.settings.max_steps / 2);
+    CHECK(t.summary.bounces < 100);
+  }
+}
+
+TEST_CASE("hostile world: a ball running along a steep trough rolls in it and rests, not 200 000 bounces", "[assets][world][hostile]") {
+  // A trough along the line of play (x): walls from z = -w to the floor line at z = 0,
+  // depth h (the attack's 5 m deep, 1 m half-width ditch: 79 deg walls), flat ground before.
+  const TempDir dir;
+  for (const double h : {5.0, 10.0, 0.5}) {
+    const double w = h == 10.0 ? 10.0 : 1.0;
+    std::string obj = "mtllib w.mtl\nusemtl fairway\n";
+    for (const double x : {-30.0, 0.0, 20.0, 450.0})
+      for (const double z : {-70.0, -w, 0.0, w, 70.0})
+        obj += "v " + std::to_string(x) + " " + (z == 0.0 && x >= 20.0 ? std::to_string(-h) : "0") + " " + std::to_string(z) + "\n";
+    // Quads (as triangles) between rows of 5 vertices, winding up.
+    for (int row = 0; row < 3; ++row)
+      for (int col = 0; col < 4; ++col) {
+        const int a = row * 5 + col + 1, b = a + 1, c = a + 6, d = a + 5;
+        obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\nf " + std::to_string(a) +
+               " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+      }
+    const WorldAsset asset = load(dir.write("trough.obj", obj));
+    for (const auto& shot : {test::golf_launch(10, 0, 0), test::golf_launch(167.1, 10.9, 2686), test::golf_launch(60, 30, 6000)}) {
+      const ShotTrajectory t = test::fly(shot, asset.world.get());
+      const Vec3 p = t.summary.rest_position;
+      INFO("depth " << h << " m: end " << to_string(t.summary.end) << " at " << p.transpose() << " after "
+                    << t.summary.bounces << " bounces");
+      CHECK(t.summary.end == EndReason::Rest);
+      CHECK(p.y() > -h);  // above the trough's floor
+      CHECK(t.summary.bounces < 100);
+    }
+  }
+}

@@ -131,6 +131,9 @@ void write_file_atomic(const fs::path& path, std::string_view contents) {
   const std::string tmpl = (dir / leaf).string();
   std::vector<char> name(tmpl.begin(), tmpl.end());
   name.push_back('\0');
+  if (std::error_code ec; !fs::is_directory(dir, ec)) fail(path, "the folder '" + dir.string() + "' does not exist", 0);
+  // A read-only file is not ours to replace (rename would, the folder being writable).
+  if (exists && ::access(target.c_str(), W_OK) != 0) fail(path, "the file is read-only", errno);
   install_cleanup_handlers();
   const int fd = ::mkostemp(name.data(), O_CLOEXEC);
   if (fd < 0) fail(path, "cannot create a temporary file in '" + dir.string() + "'", errno);

@@ -14,6 +14,7 @@
 #include "game/render/render_command.hpp"
 #include "game/render/render_error.hpp"
 #include "game/cli/command.hpp"
+#include "game/report/report.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -83,7 +84,7 @@ RunFn setup_bench(CLI::App& sub) {
       for (const auto& r : rows) j[r.key] = r.value;
       j["quick"] = opts->quick;
       if (!frame_note.empty()) j["frame_ms_1280x720"] = nullptr, j["frame_note"] = frame_note;
-      std::cout << j.dump(2) << "\n";
+      std::cout << json_text(j) << "\n";
     } else {
       for (const auto& r : rows) {
         std::cout << std::left << std::setw(52) << r.label << std::right << std::setprecision(4) << r.value << "\n";

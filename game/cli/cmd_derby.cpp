@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "game/cli/command.hpp"
+#include "game/report/report.hpp"
 #include "game/modes/baseball/session.hpp"
 #include "game/render/spray_chart.hpp"
 #include "physics/error.hpp"
@@ -35,7 +36,7 @@ RunFn setup_derby(CLI::App& sub) {
     const nlohmann::json j = session_json(swings, o->session, o->seed);
     if (!o->plot.empty()) write_spray_chart(assets, swings, o->plot);
     if (o->json) {
-      std::cout << j.dump(2) << "\n";
+      std::cout << json_text(j) << "\n";
       return 0;
     }
     for (const SwingRecord& s : swings) {

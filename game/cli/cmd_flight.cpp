@@ -35,7 +35,7 @@ RunFn setup_flight(CLI::App& sub) {
       nlohmann::json j = shot_json(r);
       j["aero"] = s.resolved.aero->name;
       j["air_density_kgm3"] = air_density(s.spec.environment);
-      std::cout << j.dump(2) << "\n";
+      std::cout << json_text(j) << "\n";
     } else {
       std::cout << launch_table(r, *s.resolved.sport, units);
     }

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "game/cli/command.hpp"
+#include "game/report/report.hpp"
 #include "game/content/quantity_text.hpp"
 #include "game/modes/baseball/pitching.hpp"
 #include "physics/error.hpp"
@@ -44,7 +45,7 @@ RunFn setup_pitch(CLI::App& sub) {
                                 {"plate_position_m", {f.plate.x(), f.plate.y(), f.plate.z()}},
                                 {"induced_vertical_break_m", f.induced_vertical_break},
                                 {"horizontal_break_m", f.horizontal_break}};
-      std::cout << j.dump(2) << "\n";
+      std::cout << json_text(j) << "\n";
     } else {
       std::printf("%s (%s-handed)\n  release speed  %.1f mph\n  spin           %.0f rpm\n  flight time    %.3f s\n"
                   "  plate speed    %.1f mph\n  crosses at     %.2f ft high, %+.2f ft (+ first-base side)\n"

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "game/cli/command.hpp"
+#include "game/report/report.hpp"
 #include "game/content/course_file.hpp"
 #include "game/content/swings_file.hpp"
 #include "game/modes/golf/bot.hpp"
@@ -63,7 +64,7 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
     }
   }
   const std::string name = o.swings.empty() ? skill + " bot" : "swings " + o.swings;
-  if (o.json) std::cout << round_json(round, name, o.seed).dump(2) << "\n";
+  if (o.json) std::cout << json_text(round_json(round, name, o.seed)) << "\n";
   else std::cout << round_table(round, name);
   return 0;
 }
@@ -99,7 +100,7 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
                       {"seed", o.seed}, {"balls", balls}};
   if ((ctp && best < 1e9) || (!ctp && best > 0.0)) j[ctp ? "best_to_pin_m" : "best_distance_m"] = best;
   if (o.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << json_text(j) << "\n";
   } else {
     std::cout << (ctp ? "closest to the pin" : "long drive") << " on " << course.name << " (" << hole.world_name
               << "), " << skill << " bot\n";

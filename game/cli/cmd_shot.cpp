@@ -87,7 +87,7 @@ RunFn setup_shot(CLI::App& sub) {
     const ShotResult r = run_scenario(scenario, RunOptions{true, false});
     const SportProfile& sport = *scenario.resolved.sport;
     if (o->json) {
-      std::cout << shot_json(r).dump(2) << "\n";
+      std::cout << json_text(shot_json(r)) << "\n";
     } else if (o->gspro) {
       std::string contents;
       const int last = o->session.empty() ? 0 : last_shot_number(o->session, contents);
@@ -95,8 +95,8 @@ RunFn setup_shot(CLI::App& sub) {
       if (number > kMaxShotNumber)
         throw InputError(o->session + ": the session is full (ShotNumber would pass 1000000000)");
       const nlohmann::json message = gspro_json(r, number);
-      if (!o->session.empty()) write_file_atomic(o->session, contents + message.dump() + "\n");
-      std::cout << message.dump(2) << "\n";
+      if (!o->session.empty()) write_file_atomic(o->session, contents + json_text(message, -1) + "\n");
+      std::cout << json_text(message) << "\n";
     } else if (o->csv) {
       std::cout << csv_header(sport, units) << csv_row(r, sport, units);
     } else {

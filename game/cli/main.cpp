@@ -1,6 +1,7 @@
 // `sweetspot`: dispatches to the subcommands registered in game/cli/cmd_*.cpp.
 #include <algorithm>
 #include <string>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -18,6 +19,9 @@ std::vector<CommandInfo>& command_registry() {
 
 int main(int argc, char** argv) {
   using namespace sweetspot::cli;
+  // Over a file-size limit (ulimit -f) a write must fail with EFBIG and be reported, not
+  // kill the process with SIGXFSZ halfway through a file.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"Sweetspot — golf and baseball impact simulation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "sweetspot 0.1");

@@ -1,5 +1,7 @@
 #include "game/content/mesh_file.hpp"
 
+#include <cmath>
+
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -94,7 +96,23 @@ ImportedMesh import_mesh_file(const std::filesystem::path& path, const char* wha
   auto* io = new BoundedFileSystem(max_bytes);  // owned by the importer
   out.importer->SetIOHandler(io);
   if (flags == 0) flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
-  out.scene = out.importer->ReadFile(path.string(), flags);
+  // Read first without post-processing and check every vertex as the file gives it:
+  // triangulating a polygon with a NaN corner drops the corner and its triangles silently
+  // (an issue-20 finding: a hole in the ground, the ball fell through it).
+  out.scene = out.importer->ReadFile(path.string(), 0);
+  if (!io->refusal().empty()) throw InputError(io->refusal() + " (named by " + path.string() + ")");
+  if (out.scene != nullptr) {
+    for (unsigned mi = 0; mi < out.scene->mNumMeshes; ++mi) {
+      const aiMesh* m = out.scene->mMeshes[mi];
+      for (unsigned v = 0; v < m->mNumVertices; ++v) {
+        const aiVector3D& p = m->mVertices[v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+          throw InputError(path.string() + ": " + what + " '" + m->mName.C_Str() + "' has a vertex that is not a " +
+                           "finite number (NaN or infinity); fix the file");
+      }
+    }
+    out.scene = out.importer->ApplyPostProcessing(flags);
+  }
   // A material library that could not be opened is reported even when assimp carried on
   // without it (the surfaces would be wrong).
   if (!io->refusal().empty()) throw InputError(io->refusal() + " (named by " + path.string() + ")");

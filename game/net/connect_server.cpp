@@ -5,10 +5,13 @@
 #include <chrono>
 #include <csignal>
 #include <deque>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <asio.hpp>
 
+#include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -68,6 +71,8 @@ struct ConnectServer::Impl : std::enable_shared_from_this<ConnectServer::Impl> {
   std::weak_ptr<Session> current;
   std::function<void(const ShotTable::Played&)> shot_hook;
   std::ofstream record;
+  bool record_failed = false;
+  std::uintmax_t record_bytes = 0;  ///< the record file's size after its last whole line
   int shots = 0;
   bool stopping = false;
 
@@ -181,6 +186,18 @@ class Session : public std::enable_shared_from_this<Session> {
       const std::string line = nlohmann::json::parse(text).dump() + "\n";
       server_.record.write(line.data(), static_cast<std::streamsize>(line.size()));
       server_.record.flush();
+      if (!server_.record) {
+        // Disk full, a file-size limit: say so now (the shots still play) and exit non-zero.
+        server_.log << "sweetspot connect: error: --record " << server_.options.record
+                    << ": writing failed (disk full or file too large); recording stopped\n";
+        server_.record.close();
+        server_.record_failed = true;
+        // No half line: cut the file back to its last whole shot.
+        std::error_code ec;
+        std::filesystem::resize_file(server_.options.record, server_.record_bytes, ec);
+      } else {
+        server_.record_bytes += line.size();
+      }
     }
     ShotTable::Played played;
     try {
@@ -369,6 +386,22 @@ ConnectServer::ConnectServer(const Assets& assets, const ConnectOptions& o, std:
   impl_ = std::make_shared<Impl>(assets, o, out, log);
   impl_->listen();  // first: a port that cannot be bound leaves no record file behind
   if (!o.record.empty()) {
+    // Appending to a file that is not a session would mix shots into someone's data:
+    // an existing file must be a regular file of JSON objects, one per line.
+    std::error_code ec;
+    if (std::filesystem::exists(o.record, ec)) {
+      const std::string text = read_data_file(o.record, "--record session", 256u << 20);
+      std::istringstream lines(text);
+      int n = 0;
+      for (std::string line; std::getline(lines, line);) {
+        ++n;
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        if (!nlohmann::json::parse(line, nullptr, false).is_object())
+          throw InputError(o.record + ":" + std::to_string(n) +
+                           ": not a recorded session line (--record appends only to files of JSON objects, one per line)");
+      }
+    }
+    impl_->record_bytes = std::filesystem::exists(o.record, ec) ? std::filesystem::file_size(o.record, ec) : 0;
     impl_->record.open(o.record, std::ios::binary | std::ios::app);
     if (!impl_->record) throw InputError("--record " + o.record + ": cannot open for writing");
   }
@@ -390,7 +423,7 @@ int ConnectServer::run() {
   impl_->log << "sweetspot connect: listening on " << impl_->options.bind << ":" << port() << "; "
              << impl_->table.where() << "\n";
   impl_->io.run();
-  return 0;
+  return impl_->record_failed ? 2 : 0;
 }
 
 void ConnectServer::poll() { impl_->io.poll(); }

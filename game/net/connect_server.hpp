@@ -57,7 +57,7 @@ class ConnectServer {
 
   /// The port listened on (the chosen one when the options said 0).
   int port() const;
-  /// Serves until stop(), a signal or max_shots. Returns 0.
+  /// Serves until stop(), a signal or max_shots. Returns 0, or 2 when --record failed.
   int run();
   /// Runs the handlers that are ready, without waiting (the window's frame loop).
   void poll();

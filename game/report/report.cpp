@@ -77,6 +77,10 @@ nlohmann::json shot_json(const ShotResult& r) {
   return j;
 }
 
+std::string json_text(const nlohmann::json& j, int indent) {
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 nlohmann::json gspro_json(const ShotResult& r, int shot_number) {
   using nlohmann::json;
   const auto& L = r.launch;

@@ -27,6 +27,9 @@ nlohmann::json shot_json(const ShotResult& r);
 /// GSPro Open Connect API v1 shot message (golf; baseball sends the same ball fields).
 /// Units as GSPro expects with "Units": "Yards": mph, degrees, rpm, yards; face impact
 /// offsets in millimetres; closure rate in deg/s.
+/// JSON as text for output (indent -1 = compact). Strings that are not UTF-8 (a file name in
+/// another encoding) have their bad bytes replaced by U+FFFD instead of failing the write.
+std::string json_text(const nlohmann::json& j, int indent = 2);
 nlohmann::json gspro_json(const ShotResult& r, int shot_number = 1);
 
 /// CSV header and one row: the sport profile's csv columns. Baseball uses Statcast names

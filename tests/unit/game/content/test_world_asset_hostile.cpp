@@ -194,3 +194,12 @@ TEST_CASE("hostile world: a ball running along a steep trough rolls in it and re
     }
   }
 }
+
+TEST_CASE("hostile OBJ: a NaN corner of a quad is refused, not triangulated away", "[assets][input][hostile]") {
+  // An attack finding: assimp's triangulation dropped the corner and its triangles, leaving
+  // a hole in the ground with only a note about a zero-area triangle.
+  const TempDir dir;
+  const std::string obj = dir.write("nanquad.obj", "mtllib w.mtl\nusemtl fairway\nv -30 0 -70\nv -30 0 70\nv 450 nan 70\n"
+                                                   "v 450 0 -70\nf 1 2 3 4\n");
+  CHECK_THROWS_WITH(load(obj), Catch::Contains("nanquad.obj") && Catch::Contains("not a finite number"));
+}

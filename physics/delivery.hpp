@@ -18,8 +18,10 @@ namespace sweetspot {
 /// Each field's allowed range sits beside it; validate_golf_swing() checks them all.
 struct GolfSwing {
   double club_speed = 50.5;    ///< m/s of the face centre; tour driver 113 mph = 50.5 m/s, a 3 m putt ~1.5 m/s
-  /// From a tap-in putt to beyond the long-drive record (~68 m/s, 152 mph).
-  static constexpr Range kClubSpeed{0.0, 90.0, true};
+  /// From a tap-in putt to beyond the long-drive record (~68 m/s, 152 mph). The floor: a
+  /// putter head at 0.1 m/s starts the ball at ~0.15 m/s, which rolls ~2 cm on a stimp-10
+  /// green; slower is no stroke (and 1e-300 m/s made the smash factor infinite).
+  static constexpr Range kClubSpeed{0.1, 90.0};
   double attack_angle = 0;     ///< rad, + up; tour driver -1.3°, 7-iron -4.3°, putter ~+2°
   static constexpr Range kAttackAngle{deg_to_rad(-30.0), deg_to_rad(30.0)};
   double club_path = 0;        ///< rad, + right (in-to-out for a right-hander)
@@ -42,7 +44,9 @@ struct GolfSwing {
 /// A bat swing at impact. Defaults: a line drive with a wood bat.
 struct BatSwing {
   double bat_speed = 31.3;     ///< m/s at the sweet spot (70 mph, Statcast average)
-  static constexpr Range kBatSpeed{0.0, 60.0, true};  ///< Statcast's fastest swings ~90 mph (40 m/s)
+  /// Statcast's fastest swings ~90 mph (40 m/s); the floor is a bunt's bat barely moving
+  /// (0.5 m/s: slower is no swing, and denormal speeds made the smash factor infinite).
+  static constexpr Range kBatSpeed{0.5, 60.0};
   double attack_angle = 0.15;  ///< rad, + up: tilt of the swing plane (velocity of the sweet spot)
   static constexpr Range kAttackAngle{deg_to_rad(-45.0), deg_to_rad(60.0)};
   double direction = 0;        ///< rad, + toward right field: horizontal direction of the swing

@@ -37,8 +37,8 @@ expect_bad "unknown unit" "--set swing.speed=50knots|unknown unit 'knots'|m/s" -
 expect_bad "e out of range" "--e 1.5|0 <= impact.e <= 1" -- shot golf/driver --e 1.5
 expect_bad "e_t out of range" "--set impact.e_t=-0.2|0 <= impact.e_t <= 1" -- shot golf/driver --set impact.e_t=-0.2
 expect_bad "mu out of range" "--mu -0.1|0 <= impact.mu" -- shot golf/driver --mu -0.1
-expect_bad "negative speed" "swing.speed|out of range|0 mph < swing.speed" -- shot golf/driver --set swing.speed=-10mph
-expect_bad "speed bound" "swing.speed|201.324 mph|(0, 90] m/s" -- shot golf/driver --set swing.speed=400mph
+expect_bad "negative speed" "swing.speed|out of range|0.223694 mph <= swing.speed" -- shot golf/driver --set swing.speed=-10mph
+expect_bad "speed bound" "swing.speed|201.324 mph|[0.1, 90] m/s" -- shot golf/driver --set swing.speed=400mph
 expect_bad "negative mass" "ball.mass|out of range|10 g <= ball.mass" -- shot golf/driver --set ball.mass=-45g
 expect_bad "spin bound" "pitch.spin|4000 rpm" -- shot baseball/line-drive --set pitch.spin=25000rpm
 expect_bad "NaN" "--set swing.speed=nanmph|NaN" -- shot golf/driver --set swing.speed=nanmph

@@ -27,8 +27,8 @@ expect_refused() {
   done
 }
 
-expect_refused "club speed 1e9 m/s" "swing.speed|(0, 90] m/s" -- shot golf/driver --set 'swing.speed=1e9m/s'
-expect_refused "bat speed 1e9 m/s" "swing.speed|(0, 60] m/s" -- shot baseball/line-drive --set 'swing.speed=1e9m/s'
+expect_refused "club speed 1e9 m/s" "swing.speed|[0.1, 90] m/s" -- shot golf/driver --set 'swing.speed=1e9m/s'
+expect_refused "bat speed 1e9 m/s" "swing.speed|[0.5, 60] m/s" -- shot baseball/line-drive --set 'swing.speed=1e9m/s'
 expect_refused "pitch spin 1e9 rpm" "pitch.spin|4000 rpm" -- shot baseball/line-drive --set 'pitch.spin=1e9rpm'
 expect_refused "pitch speed 1e9 m/s" "pitch.speed|[0, 49.1744] m/s" -- shot baseball/line-drive --set 'pitch.speed=1e9m/s'
 expect_refused "flight ball speed 1e9 m/s" "ball-speed" -- flight --sport golf --ball-speed 1e9m/s --launch-angle 10deg --spin 2500rpm

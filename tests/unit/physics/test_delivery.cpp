@@ -286,7 +286,7 @@ TEST_CASE("the club pose is reported in the head (mesh) frame", "[delivery][golf
 TEST_CASE("bad swings are rejected naming the field and range", "[delivery][validation]") {
   GolfSwing s;
   s.club_speed = -5;
-  CHECK_THROWS_WITH(golf("driver", s), Contains("swing.speed = -5 m/s is out of range (allowed (0, 90] m/s)"));
+  CHECK_THROWS_WITH(golf("driver", s), Contains("swing.speed = -5 m/s is out of range (allowed [0.1, 90] m/s)"));
   s = GolfSwing{};
   s.impact_toe = 0.2;
   CHECK_THROWS_WITH(golf("driver", s), Contains("swing.impact_offset[0] (toe)") && Contains("[-0.05, 0.05] m"));

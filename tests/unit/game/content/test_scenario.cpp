@@ -38,7 +38,7 @@ TEST_CASE("load_scenario builds a ShotSpec from the file and overrides, resolved
   CHECK_THROWS_WITH(load_scenario(A, "golf/driver", {"aero.model=magic"}), Contains("aero.model") && Contains("ferguson2022"));
   // One range per key: the schema refuses with the physics parameter's range, naming the flag.
   CHECK_THROWS_WITH(load_scenario(A, "golf/driver", {"swing.speed=210mph"}),
-                    Contains("--set swing.speed=210mph") && Contains("(0, 90] m/s"));
+                    Contains("--set swing.speed=210mph") && Contains("[0.1, 90] m/s"));
   CHECK_THROWS_WITH(load_scenario(A, "baseball/line-drive", {"pitch.spin=5000rpm"}),
                     Contains("pitch.spin") && Contains("4000 rpm"));
 }

@@ -45,7 +45,7 @@ TEST_CASE("resolve picks the sport's defaults and refuses a strike of the other 
   CHECK_THROWS_WITH(resolve(bad, A), Contains("bat strike") && Contains("golf"));
   ShotSpec fast;
   std::get<ClubStrike>(fast.strike).swing.club_speed = 200.0;
-  CHECK_THROWS_WITH(resolve(fast, A), Contains("swing.speed") && Contains("(0, 90] m/s"));
+  CHECK_THROWS_WITH(resolve(fast, A), Contains("swing.speed") && Contains("[0.1, 90] m/s"));
   ShotSpec odd;
   odd.impact.mu = 5.0;
   CHECK_THROWS_WITH(resolve(odd, A), Contains("impact.mu = 5"));

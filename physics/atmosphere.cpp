@@ -47,7 +47,7 @@ std::string validate_environment(const Environment& e) {
       !w.empty())
     return w;
   if (auto w = bad("wind_roughness_length (at most wind_reference_height / 10 for the log law)",
-                   e.wind_roughness_length, Range{0.0, e.wind_reference_height / 10.0}, "m");
+                   e.wind_roughness_length, Range{Environment::kWindRoughnessLength.min, e.wind_reference_height / 10.0}, "m");
       !w.empty())
     return w;
   if (auto w = bad("wind_power_exponent", e.wind_power_exponent, Environment::kWindPowerExponent, ""); !w.empty())

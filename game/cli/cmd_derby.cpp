@@ -23,7 +23,7 @@ struct DerbyOptions {
 RunFn setup_derby(CLI::App& sub) {
   auto o = std::make_shared<DerbyOptions>();
   sub.add_option("--bot", o->bot, "batter skill: pro or amateur (default pro)");
-  sub.add_option("--seed", o->seed, "seed of the pitcher's and the batter's errors (default 1)");
+  sub.add_option("--seed", o->seed, "seed of the pitcher's and the batter's errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   sub.add_option("--outs", o->session.outs, "derby: outs before it ends, 1..50 (default 10)");
   sub.add_option("--mode", o->session.mode, "derby (default), at-bat or practice");
   sub.add_option("--swings", o->session.swings, "practice: pitches, 1..500 (default 20)");

@@ -117,7 +117,7 @@ RunFn setup_round(CLI::App& sub) {
   auto o = std::make_shared<RoundOptions>();
   sub.add_option("course", o->course, "a course of assets/courses (default links) or a .toml file");
   sub.add_option("--bot", o->bot, "golfer skill: tour, scratch, amateur or beginner (default tour)");
-  sub.add_option("--seed", o->seed, "seed of the bot's swing errors (default 1)");
+  sub.add_option("--seed", o->seed, "seed of the bot's swing errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   sub.add_option("--swings", o->swings, "scripted meter inputs, one [[stroke]] per stroke (TOML)");
   sub.add_option("--mode", o->mode, "stroke (default), ctp (closest to the pin) or long-drive");
   sub.add_option("--balls", o->balls, "balls for ctp and long-drive, 1..100 (default 5)");

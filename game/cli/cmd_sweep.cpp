@@ -46,6 +46,11 @@ RunFn setup_sweep(CLI::App& sub) {
                        " grid points exceed the limit of " + std::to_string(kMaxSweepPoints));
     }
     if (!o->csv.empty()) refuse_output_over_input(o->csv, resolve_scenario(assets, o->scenario), "--csv");
+    // The grid sets e and mu: a --set of either would be overwritten without a word.
+    for (const auto& set : o->sets)
+      for (const char* key : {"impact.e=", "impact.mu="})
+        if (set.rfind(key, 0) == 0)
+          throw InputError("--set " + set + ": the sweep's grid (--e / --mu) sets this value; leave the --set out");
     const Scenario base = load_scenario(assets, o->scenario, o->sets);
     if (::isatty(STDERR_FILENO) != 0) {
       so.progress = [](std::size_t done, std::size_t total) {

@@ -8,6 +8,9 @@
 // an internal error, exit 4.
 #pragma once
 
+#include <charconv>
+#include <cstdint>
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,6 +22,19 @@
 namespace sweetspot::cli {
 
 using RunFn = std::function<int(const Assets&)>;
+
+/// A seed flag's text: a whole number in [0, 2^64 - 1], nothing else. CLI11 alone would wrap
+/// "-1" and clamp "99999999999999999999" to the largest value, silently.
+inline const CLI::Validator kSeedText(
+    [](std::string& text) -> std::string {
+      std::uint64_t v = 0;
+      const char* end = text.data() + text.size();
+      const auto [p, ec] = std::from_chars(text.data(), end, v);
+      if (text.empty() || ec != std::errc() || p != end)
+        return "'" + text + "' is not a whole number in [0, 18446744073709551615]";
+      return {};
+    },
+    "UINT64");
 using SetupFn = RunFn (*)(CLI::App& sub);
 
 struct CommandInfo {

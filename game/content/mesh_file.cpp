@@ -66,7 +66,7 @@ class BoundedFileSystem final : public Assimp::IOSystem {
       return nullptr;
     }
     try {
-      return new BufferStream(read_data_file(file, "mesh file", max_bytes_));
+      return new BufferStream(read_data_file(file, "mesh or material library", max_bytes_));
     } catch (const InputError& e) {
       if (refusal_.empty()) refusal_ = e.what();
       return nullptr;

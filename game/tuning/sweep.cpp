@@ -55,6 +55,8 @@ GridAxis parse_grid_axis(std::string_view text, std::string_view flag, const Ran
     throw InputError(where + ": N = " + std::string(n) + " is out of range" + range);
   }
   g.count = static_cast<int>(count);
+  if (g.count == 1 && g.from != g.to)
+    throw InputError(where + ": N = 1 would run A alone and drop B; give N >= 2, or A:A:1 for one value");
   if (g.from < lo || g.from > hi || g.to < lo || g.to > hi) throw InputError(where + ": out of range" + range);
   return g;
 }

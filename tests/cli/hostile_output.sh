@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Hostile outputs and arguments (issue 20): every output goes through the one atomic writer.
+# Symlinks are written through (the link stays), the mode is kept, a device is written in
+# place (never replaced), an output that is the input is refused, a file-size limit or a
+# full or closed stdout is an error (exit 2) that keeps the old file and leaves no temporary;
+# seeds and sweep grids are checked, not clamped; non-UTF-8 file names do not break JSON.
+set -euo pipefail
+bin=$(realpath "$1")
+fail() { echo "FAIL: $*" >&2; exit 1; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp"
+cp "$SWEETSPOT_ROOT/assets/scenarios/golf/pw.toml" s.toml
+grid=(--e 0.7:0.8:2 --mu 0.3:0.4:2)
+
+expect_rc() {  # expect_rc RC PATTERN -- command...
+  local want="$1" pattern="$2"; shift 3
+  local rc=0
+  "$@" >out.txt 2>err.txt || rc=$?
+  [ "$rc" = "$want" ] || fail "$*: exit $rc (want $want): $(cat err.txt)"
+  [ -z "$pattern" ] || grep -q -- "$pattern" err.txt || fail "$*: message '$(cat err.txt)' lacks '$pattern'"
+}
+
+# A symlink is written through and stays a symlink; the target keeps its mode.
+echo old > real.csv; chmod 640 real.csv; ln -s real.csv link.csv
+expect_rc 0 "" -- "$bin" sweep s.toml "${grid[@]}" --csv link.csv
+[ -L link.csv ] || fail "the symlink was replaced by a file"
+grep -q "^e,mu\|e,\|mu" real.csv || fail "the link's target was not written: $(head -2 real.csv)"
+[ "$(stat -c %a real.csv)" = 640 ] || fail "mode changed to $(stat -c %a real.csv)"
+
+# A device is written in place, never replaced by a regular file.
+expect_rc 0 "" -- "$bin" sweep s.toml "${grid[@]}" --csv /dev/null
+[ -c /dev/null ] || fail "/dev/null is no longer a device"
+if [ -e /dev/full ]; then
+  expect_rc 2 "/dev/full" -- "$bin" sweep s.toml "${grid[@]}" --csv /dev/full
+  [ -c /dev/full ] || fail "/dev/full is no longer a device"
+  # stdout that cannot be written is an error too.
+  rc=0; "$bin" shot golf/pw >/dev/full 2>err.txt || rc=$?
+  [ "$rc" = 2 ] && grep -q "stdout" err.txt || fail "stdout to /dev/full: exit $rc $(cat err.txt)"
+fi
+rc=0; "$bin" list >&- 2>err.txt || rc=$?
+[ "$rc" = 2 ] || fail "closed stdout: exit $rc"
+mkfifo pipe
+expect_rc 2 "not a regular file" -- timeout 20 "$bin" sweep s.toml "${grid[@]}" --csv pipe
+
+# The output is the input: refused, the scenario untouched (also through a link).
+cp s.toml s.before; ln -s s.toml s_link.toml
+expect_rc 2 "is the input file" -- "$bin" sweep s.toml "${grid[@]}" --csv s.toml
+expect_rc 2 "is the input file" -- "$bin" sweep s_link.toml "${grid[@]}" --csv ./s.toml
+expect_rc 2 "is the input file" -- "$bin" render s.toml -o s.toml --width 64 --height 64
+cmp -s s.toml s.before || fail "the scenario was overwritten"
+
+# A file-size limit: exit 2 naming the file, the old file kept, no temporary left behind.
+echo old > big.csv
+rc=0; (ulimit -f 1; exec "$bin" sweep s.toml --e 0.5:0.9:6 --mu 0.2:0.6:6 --csv big.csv) >/dev/null 2>err.txt || rc=$?
+[ "$rc" = 2 ] && grep -q "big.csv" err.txt || fail "ulimit -f: exit $rc $(cat err.txt)"
+[ "$(cat big.csv)" = old ] || fail "ulimit -f: the old file was lost"
+ls -A | grep -q '\.tmp' && fail "a temporary file was left: $(ls -A)"
+
+# Seeds and grids are checked, not wrapped or clamped; a --set the grid overrides is refused.
+expect_rc 2 "--seed" -- "$bin" round --seed -1
+expect_rc 2 "--seed" -- "$bin" round --seed 18446744073709551616
+expect_rc 2 "--seed" -- "$bin" derby --seed 1.5
+expect_rc 2 "drop B" -- "$bin" sweep s.toml --e 0.7:0.8:1 --mu 0.3:0.4:2
+expect_rc 2 "--set impact.mu" -- "$bin" sweep s.toml "${grid[@]}" --set impact.mu=0.5
+expect_rc 2 "out of range" -- "$bin" shot golf/driver --set swing.speed=1e-300mph
+
+# A file name that is not UTF-8 does not break the JSON writer (was: exit 4).
+cp s.toml "$(printf 'd\xff.toml')"
+expect_rc 0 "" -- "$bin" shot "$(printf 'd\xff.toml')" --json
+python3 -c 'import json,sys; json.load(open("out.txt"))' || fail "--json output is not JSON"
+echo "hostile_output: ok"

@@ -433,6 +433,30 @@ bool World::support(const Vec3& centre, double radius, double reach, SurfaceCont
     if (w.over_triangle(hit->mesh, hit->triangle, centre)) {
       mesh = hit->mesh;  // still over the same triangle: no Bullet query
       tri = hit->triangle;
+      // At a concave edge a rising neighbour can already cut into the ball while the contact
+      // point is still on this triangle (a random-world soak finding: rolling centres 1-9 cm
+      // inside the ground). The neighbour the ball overlaps most becomes the support; the
+      // roll then steps onto it or strikes it. Concave only: a neighbour beyond a ridge lies
+      // below this plane and never lifts the ball.
+      const CollisionMesh& cm = w.meshes[static_cast<size_t>(mesh)];
+      const Vec3 n0 = cm.normals[static_cast<size_t>(tri)];
+      const Vec3 c0 = (cm.vertex(tri, 0) + cm.vertex(tri, 1) + cm.vertex(tri, 2)) / 3.0;
+      double deepest = n0.dot(centre - cm.vertex(tri, 0)) - radius;
+      const auto neighbours = cm.neighbours[static_cast<size_t>(tri)];
+      for (const TriRef& nb : neighbours) {
+        if (nb.mesh < 0) continue;
+        const CollisionMesh& nm = w.meshes[static_cast<size_t>(nb.mesh)];
+        const Vec3& nn = nm.normals[static_cast<size_t>(nb.tri)];
+        const Vec3 a = nm.vertex(nb.tri, 0), b = nm.vertex(nb.tri, 1), c = nm.vertex(nb.tri, 2);
+        if (nn.y() <= 0.1 || n0.dot((a + b + c) / 3.0 - c0) <= 0.0) continue;  // not a rising floor
+        if ((closest_point_on_triangle(centre, a, b, c) - centre).squaredNorm() >= radius * radius) continue;
+        const double g = nn.dot(centre - a) - radius;
+        if (g < deepest) {
+          deepest = g;
+          mesh = nb.mesh;
+          tri = nb.tri;
+        }
+      }
     } else {
       for (const TriRef& nb : w.meshes[static_cast<size_t>(hit->mesh)].neighbours[static_cast<size_t>(hit->triangle)]) {
         if (nb.mesh >= 0 && w.meshes[static_cast<size_t>(nb.mesh)].normals[static_cast<size_t>(nb.tri)].y() > 0.1 &&

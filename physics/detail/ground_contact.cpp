@@ -24,8 +24,19 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
   ev.contact = c;
   ev.velocity_in = s.velocity();
   ev.kind = s.landed ? ShotEventKind::Bounce : ShotEventKind::Landing;
-  s.landed = true;
   const SurfaceMaterial& mat = m.terrain->material(c.material);
+  if (mat.kind != SurfaceKind::Water && c.fraction < 1e-6 && ev.velocity_in.dot(c.normal) >= 0.0 && s.landed) {
+    // Already touching the face and not closing in on it (sliding along a trough's wall,
+    // leaving a bank): nothing to bounce. The sweep reports such a touch at fraction 0 every
+    // step, so a bounce that changes nothing would repeat for ever (a soak finding: 200 000
+    // zero-time bounces to the step limit). Set the ball just clear of the face and fly on.
+    const double clearance = c.normal.dot(s.position() - c.point) - m.ball.radius;
+    if (clearance < 1e-6) s.y.segment<3>(0) += (1e-6 - clearance) * c.normal;
+    s.rate_valid = false;
+    ev.kind = ShotEventKind::Step;
+    return ev;
+  }
+  s.landed = true;
   if (mat.kind == SurfaceKind::Water) {
     // Water holds the ball where it touches: it sinks (the rules decide the penalty).
     s.y.segment<6>(3).setZero();

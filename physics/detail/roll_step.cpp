@@ -28,6 +28,17 @@ void set_rolling(ShotState& s, const Vec3& p, const Vec3& v, const Vec3& n, doub
   s.y.segment<3>(6) = n.cross(v) / r;
 }
 
+/// The ground under a ball that moved from p to p1 along its support's plane. Past a concave
+/// edge (the plane turns up: a bank, the far side of a hollow, a slope meeting the flat) the
+/// plane's extension runs into the next facet, p1 up to |p1 - p| inside it; the query starts
+/// that much higher so the facet is still found above the ball's bottom (a soak finding: a
+/// ball rolling down a slope onto the flat started its search under the flat and fell out of
+/// the world). The gap is then measured from p1 itself by the caller.
+bool ground_under(const Terrain& terrain, const Vec3& p, const Vec3& p1, double r, double reach, SurfaceContact* under) {
+  const double lift = (p1 - p).norm();
+  return terrain.support(p1 + lift * up_axis(), r, reach + lift, under);
+}
+
 ShotEvent go_airborne(ShotState& s, double dt, const Vec3& p1, const Vec3& v1) {
   s.t += dt;
   s.y.segment<3>(0) = p1;
@@ -45,8 +56,12 @@ ShotEvent go_airborne(ShotState& s, double dt, const Vec3& p1, const Vec3& v1) {
 /// slope the slip turns as it shrinks. For a solid sphere the slip changes at
 /// (1 + m R²/I) µ g cosθ = 3.5 µ g cosθ from friction. Integrated in steps of at most 1 ms
 /// (a putt skids ~0.1 s); on the flat this is the closed form (slip falls linearly, v ends
-/// at 5/7 of v0 for a ball struck without spin).
-void skid(const ShotModel& m, ShotState& s) {
+/// at 5/7 of v0 for a ball struck without spin). The skid follows the ground like the roll:
+/// at most kSkidChunk at a time on one facet, then the ground under the ball is found again
+/// (an issue-20 soak finding: a 0.7 s skid ran on along one facet's plane beyond its edge,
+/// under the neighbouring facet, and the ball fell out of the world).
+constexpr double kSkidChunk = 0.02;  // s; at the fastest skid (~80 m/s) 1.6 m, a facet or two
+ShotEvent skid(const ShotModel& m, ShotState& s) {
   const double r = m.ball.radius;
   const SurfaceContact& c = s.support;
   const Vec3 n = c.normal;
@@ -60,10 +75,15 @@ void skid(const ShotModel& m, ShotState& s) {
   const Vec3 pull = -kGravity * (up_axis() - n.dot(up_axis()) * n);  // along the slope
   const double k = 1.0 + m.ball.mass * r * r / m.ball.inertia;
   const double decel = mat.mu * kGravity * cos_slope;
-  for (int i = 0; i < 2000 && mat.mu > 0.0; ++i) {
+  bool gripped = mat.mu <= 0.0;
+  double elapsed = 0.0;
+  for (int i = 0; i < 2000 && !gripped && elapsed < kSkidChunk; ++i) {
     const Vec3 slip = v + w.cross(-r * n);
     const double slip_speed = slip.norm();
-    if (slip_speed < 1e-6) break;
+    if (slip_speed < 1e-6) {
+      gripped = true;
+      break;
+    }
     // Time to grip if friction alone acted; steps of ≤ 1 ms follow the slope's turning.
     const double t_grip = slip_speed / (k * decel);
     const double dt = std::min(t_grip, 1e-3);
@@ -72,14 +92,49 @@ void skid(const ShotModel& m, ShotState& s) {
     v += (f + pull) * dt;
     // The friction torque: ω changes by (R n × m f)/I · dt... as a contact at -R n.
     w += (m.ball.mass / m.ball.inertia) * (-r * n).cross(f) * dt;
-    s.t += dt;
-    if (dt == t_grip) break;
+    elapsed += dt;
+    if (dt == t_grip) gripped = true;
   }
-  w = w.dot(n) * n + n.cross(v) / r;
+  s.t += elapsed;
+  if (gripped) w = w.dot(n) * n + n.cross(v) / r;
+  // Follow the ground under the new position, as a roll step does.
+  SurfaceContact under = c;
+  const double reach = kLeaveGap + 0.1 * v.norm() * elapsed;
+  const bool found = ground_under(*m.terrain, s.position(), p, r, reach, &under);
+  if (found && under.normal.dot(n) < kFollowCos && under.normal.dot(p - under.point) - r < 0.0 &&
+      v.dot(under.normal) < 0.0) {
+    // Skidded into a face that turns up sharply (a concave edge): strike it from outside.
+    p -= (under.normal.dot(p - under.point) - r) * under.normal;
+    s.y.segment<3>(0) = p;
+    s.y.segment<3>(3) = v;
+    s.y.segment<3>(6) = w;
+    s.skidding = false;
+    s.phase = Phase::Bounce;
+    under.fraction = 0.0;
+    return touch_surface(m, s, under);
+  }
+  if (!found || under.normal.dot(p - under.point) - r > kLeaveGap || under.normal.dot(n) < kFollowCos) {
+    s.y.segment<3>(6) = w;
+    s.skidding = false;
+    return go_airborne(s, 0.0, p, v);  // over an edge or onto a much steeper face
+  }
+  p -= (under.normal.dot(p - under.point) - r) * under.normal;
+  if (under.normal != n) {
+    const double speed = v.norm();
+    v -= v.dot(under.normal) * under.normal;
+    if (v.norm() > 0.0) v *= speed / v.norm();
+  }
+  s.support = under;
   s.y.segment<3>(0) = p;
   s.y.segment<3>(3) = v;
   s.y.segment<3>(6) = w;
-  s.skidding = false;
+  s.skidding = !gripped;
+  ShotEvent ev;
+  if (!m.terrain->inside(p)) {
+    end_shot(s, EndReason::LeftWorld);
+    ev.kind = ShotEventKind::LeftWorld;
+  }
+  return ev;
 }
 
 /// Rolling resistance per unit weight on a surface (stimp-derived on greens).
@@ -132,7 +187,7 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
     return touch_surface(m, s, hit);
   }
   SurfaceContact under = s.support;
-  if (!terrain.support(p1, r, kLeaveGap + 0.1 * std::abs(u) * step + r, &under)) {
+  if (!ground_under(terrain, p, p1, r, kLeaveGap + 0.1 * std::abs(u) * step + r, &under)) {
     leave_crease();
     return go_airborne(s, step, p1, v1);
   }
@@ -170,10 +225,7 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
 
 ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   ShotEvent ev;
-  if (s.skidding) {
-    skid(m, s);
-    return ev;
-  }
+  if (s.skidding) return skid(m, s);
   if (out_of_budget(m, s)) {
     end_shot(s, EndReason::StepLimit);
     ev.kind = ShotEventKind::StepLimit;
@@ -259,9 +311,25 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   }
   // Walls and banks in the way: a rolling ball that strikes one bounces off it into the air.
   SurfaceContact hit;
-  if (terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p, p1, r, &hit, &n))) {
-    const double f = hit.fraction;
-    if (-(v + f * (v1 - v)).dot(hit.normal) < m.settings.roll_speed && enter_crease(s, n, hit.normal)) {
+  // A face met on the way (p -> p1): a crease when it carries the ball too, else a bounce.
+  const auto strike = [&](const SurfaceContact& met) {
+    const double f = met.fraction;
+    if (met.normal.dot(n) >= kFollowCos) {
+      // A gentle concave bend (a slope meeting the flat, the far side of a hollow): roll on
+      // onto the new face from where the ball meets it, keeping its speed.
+      const Vec3 at = p + f * (p1 - p);
+      Vec3 vb = v + f * (v1 - v);
+      const double sp = vb.norm();
+      vb -= vb.dot(met.normal) * met.normal;
+      if (vb.norm() > 0.0) vb *= sp / vb.norm();
+      s.t += f * step_t;
+      s.support = met;
+      set_rolling(s, at, vb, met.normal, r);
+      ShotEvent bend;
+      bend.contact = met;
+      return bend;
+    }
+    if (-(v + f * (v1 - v)).dot(met.normal) < m.settings.roll_speed && enter_crease(s, n, met.normal)) {
       // Rolled gently into a second face that also carries it: a crease (no bounce).
       s.t += f * step_t;
       set_rolling(s, p + f * (p1 - p), v + f * (v1 - v), n, r);
@@ -270,21 +338,43 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     s.t += f * step_t;
     set_rolling(s, p + f * (p1 - p), v + f * (v1 - v), n, r);
     s.phase = Phase::Bounce;
-    ShotEvent touched = touch_surface(m, s, hit);
+    ShotEvent touched = touch_surface(m, s, met);
     if (!s.ended) {
       s.phase = Phase::Bounce;
       s.skidding = false;
     }
     return touched;
-  }
+  };
+  if (terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p, p1, r, &hit, &n))) return strike(hit);
   // Follow the ground under the new position.
   SurfaceContact under = c;  // the current support is the cache hint
-  if (!terrain.support(p1, r, kLeaveGap + 0.1 * speed * step_t, &under)) return go_airborne(s, step_t, p1, v1);
+  if (!ground_under(terrain, p, p1, r, kLeaveGap + 0.1 * speed * step_t, &under)) return go_airborne(s, step_t, p1, v1);
   const double gap = under.normal.dot(p1 - under.point) - r;
+  if (under.normal.dot(n) < kFollowCos && gap < 0.0) {
+    // The ground turned up sharply ahead (a concave edge: the far wall of a hollow, a bank
+    // not steep enough to count as a wall) and p1 is inside it: meet it where the ball
+    // first touches it instead of flying on from inside it (a random-world soak finding).
+    ++s.counters.sweeps;
+    if (terrain.sweep(p, p1, r, &hit, &n)) return strike(hit);
+  }
   // The ground fell away (or turned sharply): the ball leaves it and flies.
   if (gap > kLeaveGap || under.normal.dot(n) < kFollowCos) return go_airborne(s, step_t, p1, v1);
   p1 -= gap * under.normal;
   if (under.normal != n) {
+    // Rolling back and forth across the same edge between two faces: a valley whose faces
+    // are each too steep to hold the ball but gentle enough to roll on (a soak finding: it
+    // crept along the valley for a minute to the time limit). Held by both, it rolls along
+    // their crease line instead, and rests where that line is flat enough.
+    const bool back = s.last_touch_normal != Vec3::Zero() && (under.normal - s.last_touch_normal).norm() < 1e-9;
+    s.chatter = back ? s.chatter + 1 : 1;
+    s.last_touch_normal = n;
+    constexpr int kValleyCrossings = 4;
+    if (s.chatter >= kValleyCrossings && v1.dot(under.normal) < 0.0 && enter_crease(s, n, under.normal)) {
+      s.t += step_t;
+      s.support = under;
+      set_rolling(s, p1, v1 - v1.dot(under.normal) * under.normal, under.normal, r);
+      return crease_step(m, s, until);
+    }
     // Onto a differently sloped facet: turn the velocity into its plane, keeping speed.
     const double s1 = v1.norm();
     v1 -= v1.dot(under.normal) * under.normal;

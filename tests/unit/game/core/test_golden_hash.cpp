@@ -16,7 +16,9 @@
 //
 // History: 0x63b5a773493afb15 hashed the shots' JSON text; issue 14 moved the hash to state
 // bytes on purpose (and the driver now sits on a tee: assets/equipment/clubs.toml
-// tee_height), giving the value below.
+// tee_height), giving 0x4fb851b779b78c7b; issue 20 made the skid follow the ground in 20 ms
+// chunks and a rolling ball meet a rising neighbour facet (same distances to the millimetre
+// on the built-in shots, last bits differ), giving the value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -47,7 +49,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x4fb851b779b78c7bULL;
+constexpr std::uint64_t kGoldenHash = 0x3999954e4693b67aULL;
 
 }  // namespace
 

@@ -80,6 +80,15 @@ std::string validate_surface_material(const SurfaceMaterial& m) {
   if (m.stimp != 0.0) {
     if (auto w = bad("stimp", m.stimp, SurfaceMaterial::kStimp, "m"); !w.empty()) return w + " (or 0 = unset)";
   }
+  // A surface a ball can roll on must be able to stop it: on a frictionless floor a ball in a
+  // hollow swings for ever (a world-fuzz finding: a mesh whose faces fell back to the wall
+  // material rolled to the time limit). Water takes the ball and a decoration is never touched.
+  if (m.kind != SurfaceKind::Water && m.kind != SurfaceKind::Decoration && m.stimp == 0.0 &&
+      m.rolling_resistance < SurfaceMaterial::kMinRollingResistance) {
+    s << where << "rolling_resistance = " << m.rolling_resistance << " cannot stop a rolling ball (allowed ["
+      << SurfaceMaterial::kMinRollingResistance << ", 5] for a surface the ball touches)";
+    return s.str();
+  }
   if (auto w = bad("crater_tilt", m.crater_tilt, SurfaceMaterial::kCraterTilt, "rad"); !w.empty()) return w;
   if (auto w = bad("lie_friction", m.lie_friction, SurfaceMaterial::kLieFriction, ""); !w.empty()) return w;
   if (auto w = bad("lie_speed_loss", m.lie_speed_loss, SurfaceMaterial::kLieSpeedLoss, ""); !w.empty()) return w;

@@ -40,6 +40,9 @@ struct SurfaceMaterial {
   /// Green (stimp 10 ft) ~0.055, fairway ~0.16, rough ~0.3, sand ~1. Ignored when stimp > 0.
   double rolling_resistance = 0.12;
   static constexpr Range kRollingResistance{0.0, 5.0};
+  /// The least for a surface the ball can roll on (water and decorations excepted): a
+  /// stimp-15 green, the fastest surface in golf, is ~0.037; 0.01 still stops any roll.
+  static constexpr double kMinRollingResistance = 0.01;
   double stimp = 0.0;                    ///< m; Stimpmeter reading (tour greens 3.0–4.0 m); > 0 sets rolling_resistance
   /// When set (> 0): 0.5 m (shaggy) to 6 m, beyond the fastest greens ever measured (~4.3 m).
   static constexpr Range kStimp{0.5, 6.0};

@@ -176,9 +176,11 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
   const Vec3 v1 = u1 * d;
   const auto leave_crease = [&] { s.crease_n1 = s.crease_n2 = Vec3::Zero(); };
   // A wall across the crease: strike it.
+  // Swept from just off both faces (nc leans away from each), so the two faces it rests on are
+  // not met at the start and a wall across the crease is.
   SurfaceContact hit;
-  Vec3 hit_normal;
-  if (!stops && terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p, p1, r, &hit, &hit_normal)) &&
+  const Vec3 off = 1e-5 * nc;
+  if (!stops && terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p + off, p1 + off, r, &hit, nullptr)) &&
       (hit.normal - n1).norm() > 1e-6 && (hit.normal - n2).norm() > 1e-6) {
     leave_crease();
     s.t += hit.fraction * step;

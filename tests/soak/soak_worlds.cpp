@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
       if (std::getenv("SOAK_STEPS") != nullptr && std::atol(std::getenv("SOAK_STEPS")) == s) {
         ShotModel m = make_shot_model(c.ball, *c.aero, c.environment, &world, c.settings);
         ShotState st = start_state(c.launch);
-        for (int n = 0; n < 300 && !st.ended; ++n) {
+        for (int n = 0; n < 400 && !st.ended; ++n) {
           const ShotEvent e = step(m, st);
           std::printf("%3d t %.4f %-7s %-9s p %8.4f %8.5f %8.4f v %7.3f %7.3f %7.3f sup n %.3f %.3f %.3f pt %.3f %.3f %.3f\n", n, st.t,
                       to_string(st.phase), to_string(e.kind), st.position().x(), st.position().y(), st.position().z(),

@@ -1,17 +1,15 @@
 // `sweetspot shot SCENARIO`: one shot, printed as a launch-monitor table (default), the
 // DESIGN §6 JSON, a GSPro OpenConnect v1 message or a CSV row.
 #include <algorithm>
-#include <filesystem>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "game/cli/command.hpp"
 #include "game/report/report.hpp"
 #include "game/content/scenario.hpp"
-#include "game/content/toml_file.hpp"
+#include "game/net/session_file.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
@@ -33,25 +31,16 @@ constexpr int kMaxShotNumber = 1000000000;
 // The highest ShotNumber among the session file's lines (0 for a missing or empty file).
 // A line that is not an Open Connect message is refused with its file:line: appending to a
 // file we cannot read would number the shot wrongly and break `sweetspot send`.
-int last_shot_number(const std::string& path, std::string& contents) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return 0;  // a new session
-  contents = read_data_file(path, "session", 256u << 20);
-  int last = 0, line_no = 0;
-  std::istringstream lines(contents);
-  for (std::string line; std::getline(lines, line);) {
-    ++line_no;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const auto j = nlohmann::json::parse(line, nullptr, false);
-    const auto n = j.is_object() ? j.find("ShotNumber") : j.end();
-    if (!j.is_object() || n == j.end() || !n->is_number_integer() || n->get<long long>() < 0 ||
-        n->get<long long>() > kMaxShotNumber)
-      throw InputError(path + ":" + std::to_string(line_no) +
+int last_shot_number(const SessionFile& f, const std::string& path) {
+  int last = 0;
+  for (const auto& [number, j] : f.lines) {
+    const auto n = j.find("ShotNumber");
+    if (n == j.end() || !n->is_number_integer() || n->get<long long>() < 0 || n->get<long long>() > kMaxShotNumber)
+      throw InputError(path + ":" + std::to_string(number) +
                        ": not an Open Connect shot line with a ShotNumber in [0, 1000000000] (--session appends to "
                        "files it wrote)");
     last = std::max(last, n->get<int>());
   }
-  if (!contents.empty() && contents.back() != '\n') contents += '\n';
   return last;
 }
 
@@ -89,13 +78,14 @@ RunFn setup_shot(CLI::App& sub) {
     if (o->json) {
       std::cout << json_text(shot_json(r)) << "\n";
     } else if (o->gspro) {
-      std::string contents;
-      const int last = o->session.empty() ? 0 : last_shot_number(o->session, contents);
+      const SessionFile session = o->session.empty() ? SessionFile{}
+                                                     : read_session_file(o->session, "--session appends to files it wrote");
+      const int last = last_shot_number(session, o->session);
       const int number = o->shot_number > 0 ? o->shot_number : last + 1;
       if (number > kMaxShotNumber)
         throw InputError(o->session + ": the session is full (ShotNumber would pass 1000000000)");
       const nlohmann::json message = gspro_json(r, number);
-      if (!o->session.empty()) write_file_atomic(o->session, contents + json_text(message, -1) + "\n");
+      if (!o->session.empty()) write_file_atomic(o->session, session.text + json_text(message, -1) + "\n");
       std::cout << json_text(message) << "\n";
     } else if (o->csv) {
       std::cout << csv_header(sport, units) << csv_row(r, sport, units);

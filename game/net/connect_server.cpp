@@ -7,11 +7,10 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <asio.hpp>
 
-#include "game/content/toml_file.hpp"
+#include "game/net/session_file.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -386,21 +385,9 @@ ConnectServer::ConnectServer(const Assets& assets, const ConnectOptions& o, std:
   impl_ = std::make_shared<Impl>(assets, o, out, log);
   impl_->listen();  // first: a port that cannot be bound leaves no record file behind
   if (!o.record.empty()) {
-    // Appending to a file that is not a session would mix shots into someone's data:
-    // an existing file must be a regular file of JSON objects, one per line.
+    // Appending to a file that is not a session would mix shots into someone's data.
+    read_session_file(o.record, "--record appends only to files of JSON objects, one per line");
     std::error_code ec;
-    if (std::filesystem::exists(o.record, ec)) {
-      const std::string text = read_data_file(o.record, "--record session", 256u << 20);
-      std::istringstream lines(text);
-      int n = 0;
-      for (std::string line; std::getline(lines, line);) {
-        ++n;
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        if (!nlohmann::json::parse(line, nullptr, false).is_object())
-          throw InputError(o.record + ":" + std::to_string(n) +
-                           ": not a recorded session line (--record appends only to files of JSON objects, one per line)");
-      }
-    }
     impl_->record_bytes = std::filesystem::exists(o.record, ec) ? std::filesystem::file_size(o.record, ec) : 0;
     impl_->record.open(o.record, std::ios::binary | std::ios::app);
     if (!impl_->record) throw InputError("--record " + o.record + ": cannot open for writing");

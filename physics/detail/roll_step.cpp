@@ -137,6 +137,25 @@ ShotEvent skid(const ShotModel& m, ShotState& s) {
   return ev;
 }
 
+/// The end of a roll or crease step at p1 on `under`: out of the world's box, at rest where
+/// the step stopped, or rolling on.
+ShotEvent end_of_roll_step(const Terrain& terrain, ShotState& s, const Vec3& p1, bool stops, const SurfaceContact& under) {
+  ShotEvent ev;
+  if (!terrain.inside(p1)) {
+    end_shot(s, EndReason::LeftWorld);
+    ev.kind = ShotEventKind::LeftWorld;
+    return ev;
+  }
+  if (stops) {
+    s.y.segment<6>(3).setZero();
+    s.phase = Phase::Rest;
+    end_shot(s, EndReason::Rest);
+    ev.kind = ShotEventKind::Rest;
+    ev.contact = under;
+  }
+  return ev;
+}
+
 /// Rolling resistance per unit weight on a surface (stimp-derived on greens).
 double rolling_resistance_on(const ShotModel& m, const SurfaceMaterial& mat) {
   const double stimp = mat.kind == SurfaceKind::Green && m.settings.green_stimp > 0.0 ? m.settings.green_stimp : mat.stimp;
@@ -208,19 +227,7 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
     return ev;
   }
   s.support = under;
-  if (!terrain.inside(p1)) {
-    end_shot(s, EndReason::LeftWorld);
-    ev.kind = ShotEventKind::LeftWorld;
-    return ev;
-  }
-  if (stops) {
-    s.y.segment<6>(3).setZero();
-    s.phase = Phase::Rest;
-    end_shot(s, EndReason::Rest);
-    ev.kind = ShotEventKind::Rest;
-    ev.contact = under;
-  }
-  return ev;
+  return end_of_roll_step(terrain, s, p1, stops, under);
 }
 
 }  // namespace
@@ -388,19 +395,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   set_rolling(s, p1, v1, under.normal, r);
   const SurfaceMaterial& now = terrain.material(under.material);
   if (now.kind == SurfaceKind::Water) stops = true;  // rolled into water: it sinks there
-  if (!terrain.inside(p1)) {
-    end_shot(s, EndReason::LeftWorld);
-    ev.kind = ShotEventKind::LeftWorld;
-    return ev;
-  }
-  if (stops) {
-    s.y.segment<6>(3).setZero();
-    s.phase = Phase::Rest;
-    end_shot(s, EndReason::Rest);
-    ev.kind = ShotEventKind::Rest;
-    ev.contact = under;
-  }
-  return ev;
+  return end_of_roll_step(terrain, s, p1, stops, under);
 }
 
 }  // namespace sweetspot::detail

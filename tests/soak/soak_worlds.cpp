@@ -26,24 +26,14 @@
 #include "physics/launch.hpp"
 #include "physics/units.hpp"
 #include "physics/world.hpp"
+#include "soak/soak_rng.hpp"
 #include "support/test_assets.hpp"
 
 namespace {
 
 using namespace sweetspot;
 
-struct Rng {  // SplitMix64: identical on every compiler
-  std::uint64_t s;
-  std::uint64_t next() {
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  double in(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
-};
+using soak::Rng;
 
 // A heightfield on an nx x nz grid of square cells over x in [x0, x0 + nx h], z centred.
 struct Field {

@@ -89,8 +89,10 @@ struct ShotState {
   bool over_cup = false;              ///< rolled over the hole and out: ignore it until clear of it
   int bounces = 0;
   int slow_touches = 0;               ///< consecutive touches slower than roll_speed (a wedged ball)
-  int chatter = 0;                    ///< consecutive gentle touches alternating between two faces
-  Vec3 last_touch_normal = Vec3::Zero();  ///< the face of the previous touch (crease detection)
+  /// Crease detection: consecutive gentle touches alternating between two faces (airborne),
+  /// or crossings back and forth over one edge (rolling); the face the ball was last on.
+  int chatter = 0;
+  Vec3 last_touch_normal = Vec3::Zero();
   /// Roll in a crease: the two faces that hold the ball (both zero when not in one). The
   /// ball moves along their line n1 × n2 only (physics/detail/roll_step.cpp).
   Vec3 crease_n1 = Vec3::Zero(), crease_n2 = Vec3::Zero();

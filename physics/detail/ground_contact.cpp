@@ -5,6 +5,17 @@
 #include "physics/detail/flight_steps.hpp"
 
 namespace sweetspot::detail {
+namespace {
+
+// The ball stops at its position on `c`: sunk in water, in the cup, wedged.
+void settle(ShotState& s, const SurfaceContact& c, EndReason why) {
+  s.y.segment<6>(3).setZero();
+  s.support = c;
+  s.phase = Phase::Rest;
+  end_shot(s, why);
+}
+
+}  // namespace
 
 bool enter_crease(ShotState& s, const Vec3& n1, const Vec3& n2) {
   if (n1.dot(up_axis()) <= 0.05 || n2.dot(up_axis()) <= 0.05) return false;
@@ -39,10 +50,7 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
   s.landed = true;
   if (mat.kind == SurfaceKind::Water) {
     // Water holds the ball where it touches: it sinks (the rules decide the penalty).
-    s.y.segment<6>(3).setZero();
-    s.support = c;
-    s.phase = Phase::Rest;
-    end_shot(s, EndReason::Rest);
+    settle(s, c, EndReason::Rest);
     return ev;
   }
   if (m.cup) {
@@ -55,20 +63,11 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
     const double along = (v - v.dot(c.normal) * c.normal).norm();
     if (offset < m.cup->radius && along < cup_capture_speed(*m.cup, m.ball.radius, offset)) {
       s.y.segment<3>(0) = m.cup->centre - (m.cup->depth - m.ball.radius) * c.normal;
-      s.y.segment<6>(3).setZero();
-      s.support = c;
-      s.phase = Phase::Rest;
-      end_shot(s, EndReason::InCup);
+      settle(s, c, EndReason::InCup);
       ev.kind = ShotEventKind::InCup;
       return ev;
     }
   }
-  // Wedged: a ball that keeps touching surfaces slower than the roll threshold without ever
-  // settling into a roll is held between faces too steep to roll on (the floor of a narrow
-  // V, a ball between a wall and a bank). Between such touches it rises at most
-  // roll_speed²/2g (3 mm at 0.25 m/s), so it is at rest where it is, as a rigid-body engine
-  // puts a body to sleep once its motion stays below a threshold (Box2D, Jolt). 20 touches:
-  // a live micro-hop along a slope gains speed and breaks the run long before.
   // A crease: gentle touches alternating between two faces (the ball bounces from one wall
   // of a trough to the other while it runs along it, 200 000 times to the step limit before
   // this). After a few such touches it rolls in the crease, held by both.
@@ -87,13 +86,16 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
     s.rate_valid = false;
     return ev;
   }
+  // Wedged: a ball that keeps touching surfaces slower than the roll threshold without ever
+  // settling into a roll is held between faces too steep to roll on (the floor of a narrow
+  // V, a ball between a wall and a bank). Between such touches it rises at most
+  // roll_speed²/2g (3 mm at 0.25 m/s), so it is at rest where it is, as a rigid-body engine
+  // puts a body to sleep once its motion stays below a threshold (Box2D, Jolt). 20 touches:
+  // a live micro-hop along a slope gains speed and breaks the run long before.
   constexpr int kWedgedTouches = 20;
   s.slow_touches = ev.velocity_in.norm() < m.settings.roll_speed ? s.slow_touches + 1 : 0;
   if (s.slow_touches >= kWedgedTouches) {
-    s.y.segment<6>(3).setZero();
-    s.support = c;
-    s.phase = Phase::Rest;
-    end_shot(s, EndReason::Rest);
+    settle(s, c, EndReason::Rest);
     ev.kind = ShotEventKind::Rest;
     return ev;
   }

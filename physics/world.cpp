@@ -51,6 +51,9 @@ struct World::Impl {
   WorldDescription desc;
   std::vector<CollisionMesh> meshes;
   int triangles = 0;
+  /// m: below this no collidable triangle (nor the tee) can be reached again, so a ball
+  /// under it has left the world whatever bounds the file declared (see inside()).
+  double floor_y = -1e300;
   double follow_cos = std::cos(kFollowAngle);
   SweepMethod method = SweepMethod::BvhExact;
 
@@ -342,6 +345,13 @@ World::World(WorldDescription description, SweepMethod method) : impl_(std::make
   w.meshes.erase(std::remove_if(w.meshes.begin(), w.meshes.end(),
                                 [](const CollisionMesh& m) { return m.indices.empty(); }),
                  w.meshes.end());
+  // The floor: 1 m (many ball diameters) under the lowest collidable vertex and the origin.
+  // A ball that falls past the edge of the ground would otherwise fall to the declared
+  // bounds (±10 km by default) and run into the step limit (a fuzz_world finding).
+  double lowest = d.origin.y();
+  for (const CollisionMesh& m : w.meshes)
+    for (size_t k = 1; k < m.vertices.size(); k += 3) lowest = std::min(lowest, m.vertices[k]);
+  w.floor_y = lowest - 1.0;
 
   for (size_t i = 0; i < w.meshes.size(); ++i) {
     CollisionMesh& m = w.meshes[i];
@@ -506,7 +516,8 @@ const SurfaceMaterial& World::material(int index) const {
 
 bool World::inside(const Vec3& c) const {
   const WorldDescription& d = impl_->desc;
-  return (c.array() >= d.bounds_min.array()).all() && (c.array() <= d.bounds_max.array()).all();
+  return (c.array() >= d.bounds_min.array()).all() && (c.array() <= d.bounds_max.array()).all() &&
+         c.y() >= impl_->floor_y;
 }
 
 double World::reference_height() const { return impl_->desc.origin.y(); }

@@ -76,6 +76,8 @@ class World final : public Terrain {
   bool may_touch(const Vec3& from, const Vec3& to, double radius) const override;
   bool may_touch_steep(const Vec3& from, const Vec3& to, double radius) const override;
   const SurfaceMaterial& material(int index) const override;
+  /// In the declared bounds and not below the floor: 1 m under the lowest collidable vertex
+  /// (or the origin, if lower), where nothing can be touched again.
   bool inside(const Vec3& centre) const override;
   double reference_height() const override;
 

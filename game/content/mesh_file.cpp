@@ -1,18 +1,22 @@
 #include "game/content/mesh_file.hpp"
 
 #include <cmath>
-
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <assimp/IOStream.hpp>
 #include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include "game/content/toml_file.hpp"
+#include "game/util/isolated_call.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -80,30 +84,144 @@ class BoundedFileSystem final : public Assimp::IOSystem {
   std::string refusal_;
 };
 
-}  // namespace
 
-ImportedMesh::ImportedMesh() = default;
-ImportedMesh::ImportedMesh(ImportedMesh&&) noexcept = default;
-ImportedMesh& ImportedMesh::operator=(ImportedMesh&&) noexcept = default;
-ImportedMesh::~ImportedMesh() = default;
+// ---- the answer's bytes: the child writes them, the parent reads them back ---------------
+void put_u32(std::string* out, std::uint32_t v) { out->append(reinterpret_cast<const char*>(&v), sizeof v); }
+void put_string(std::string* out, const std::string& s) {
+  put_u32(out, static_cast<std::uint32_t>(s.size()));
+  out->append(s);
+}
+template <class T>
+void put_array(std::string* out, const std::vector<T>& v) {
+  put_u32(out, static_cast<std::uint32_t>(v.size()));
+  if (!v.empty()) out->append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
 
-ImportedMesh import_mesh_file(const std::filesystem::path& path, const char* what, std::uintmax_t max_bytes,
-                              unsigned flags) {
-  // The OBJ itself is checked before assimp sees it, for a message naming its role.
-  check_data_file(path, what, max_bytes);
-  ImportedMesh out;
-  out.importer = std::make_unique<Assimp::Importer>();
+std::string encode(const MeshFile& m) {
+  std::string out;
+  put_u32(&out, m.incomplete ? 1 : 0);
+  put_u32(&out, static_cast<std::uint32_t>(m.parts.size()));
+  for (const MeshPart& p : m.parts) {
+    put_string(&out, p.name);
+    put_string(&out, p.material);
+    put_u32(&out, p.has_diffuse ? 1 : 0);
+    out.append(reinterpret_cast<const char*>(p.diffuse.data()), sizeof p.diffuse);
+    put_array(&out, p.positions);
+    put_array(&out, p.normals);
+    put_array(&out, p.triangles);
+  }
+  return out;
+}
+
+/// Reads the child's answer back, every length checked against what is left.
+class Decoder {
+ public:
+  explicit Decoder(const std::string& bytes) : bytes_(bytes) {}
+  MeshFile mesh_file() {
+    MeshFile m;
+    m.incomplete = u32() != 0;
+    const std::uint32_t parts = u32();
+    for (std::uint32_t k = 0; k < parts; ++k) {
+      MeshPart p;
+      p.name = string();
+      p.material = string();
+      p.has_diffuse = u32() != 0;
+      take(p.diffuse.data(), sizeof p.diffuse);
+      array(&p.positions);
+      array(&p.normals);
+      array(&p.triangles);
+      m.parts.push_back(std::move(p));
+    }
+    if (pos_ != bytes_.size()) fail();
+    return m;
+  }
+
+ private:
+  [[noreturn]] static void fail() { throw std::runtime_error("the mesh importer's answer is malformed"); }
+  void take(void* out, std::size_t n) {
+    if (n == 0) return;  // an empty vector's data() may be null
+    if (n > bytes_.size() - pos_) fail();
+    std::memcpy(out, bytes_.data() + pos_, n);
+    pos_ += n;
+  }
+  std::uint32_t u32() {
+    std::uint32_t v = 0;
+    take(&v, sizeof v);
+    return v;
+  }
+  std::string string() {
+    const std::uint32_t n = u32();
+    if (n > bytes_.size() - pos_) fail();
+    std::string s = bytes_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  template <class T>
+  void array(std::vector<T>* v) {
+    const std::uint32_t n = u32();
+    if (n > (bytes_.size() - pos_) / sizeof(T)) fail();
+    v->resize(n);
+    take(v->data(), n * sizeof(T));
+  }
+  const std::string& bytes_;
+  std::size_t pos_ = 0;
+};
+
+// ---- in the child: assimp's scene to plain data -----------------------------------------
+void add_node(const aiScene* scene, const aiNode* node, const aiMatrix4x4& parent, MeshFile* out) {
+  const aiMatrix4x4 xf = parent * node->mTransformation;
+  const aiMatrix3x3 turn(xf);
+  for (unsigned k = 0; k < node->mNumMeshes; ++k) {
+    if (node->mMeshes[k] >= scene->mNumMeshes) continue;
+    const aiMesh* am = scene->mMeshes[node->mMeshes[k]];
+    MeshPart p;
+    p.name = am->mName.C_Str();
+    if (am->mMaterialIndex < scene->mNumMaterials) {
+      const aiMaterial* mat = scene->mMaterials[am->mMaterialIndex];
+      aiString name;
+      if (mat->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) p.material = name.C_Str();
+      aiColor3D kd;
+      if (mat->Get(AI_MATKEY_COLOR_DIFFUSE, kd) == AI_SUCCESS) {
+        p.has_diffuse = true;
+        p.diffuse = {kd.r, kd.g, kd.b};
+      }
+    }
+    p.positions.reserve(am->mNumVertices);
+    for (unsigned v = 0; v < am->mNumVertices; ++v) {
+      const aiVector3D q = xf * am->mVertices[v];
+      p.positions.push_back({q.x, q.y, q.z});
+    }
+    if (am->HasNormals()) {
+      p.normals.reserve(am->mNumVertices);
+      for (unsigned v = 0; v < am->mNumVertices; ++v) {
+        const aiVector3D n = turn * am->mNormals[v];
+        p.normals.push_back({n.x, n.y, n.z});
+      }
+    }
+    for (unsigned f = 0; f < am->mNumFaces; ++f) {
+      const aiFace& face = am->mFaces[f];
+      if (face.mNumIndices == 3) p.triangles.push_back({face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+    }
+    out->parts.push_back(std::move(p));
+  }
+  for (unsigned c = 0; c < node->mNumChildren; ++c) add_node(scene, node->mChildren[c], xf, out);
+}
+
+/// The import itself, run in the child.
+std::string import_in_child(const std::filesystem::path& path, const char* what, std::uintmax_t max_bytes,
+                            unsigned flags) {
+  Assimp::Importer importer;
   auto* io = new BoundedFileSystem(max_bytes);  // owned by the importer
-  out.importer->SetIOHandler(io);
+  importer.SetIOHandler(io);
   if (flags == 0) flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
   // Read first without post-processing and check every vertex as the file gives it:
   // triangulating a polygon with a NaN corner drops the corner and its triangles silently
   // (an issue-20 finding: a hole in the ground, the ball fell through it).
-  out.scene = out.importer->ReadFile(path.string(), 0);
+  const aiScene* scene = importer.ReadFile(path.string(), 0);
   if (!io->refusal().empty()) throw InputError(io->refusal() + " (named by " + path.string() + ")");
-  if (out.scene != nullptr) {
-    for (unsigned mi = 0; mi < out.scene->mNumMeshes; ++mi) {
-      const aiMesh* m = out.scene->mMeshes[mi];
+  if (scene != nullptr) {
+    for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi) {
+      const aiMesh* m = scene->mMeshes[mi];
       for (unsigned v = 0; v < m->mNumVertices; ++v) {
         const aiVector3D& p = m->mVertices[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -111,14 +229,38 @@ ImportedMesh import_mesh_file(const std::filesystem::path& path, const char* wha
                            "finite number (NaN or infinity); fix the file");
       }
     }
-    out.scene = out.importer->ApplyPostProcessing(flags);
+    scene = importer.ApplyPostProcessing(flags);
   }
   // A material library that could not be opened is reported even when assimp carried on
   // without it (the surfaces would be wrong).
   if (!io->refusal().empty()) throw InputError(io->refusal() + " (named by " + path.string() + ")");
-  if (out.scene == nullptr || out.scene->mRootNode == nullptr)
-    throw InputError(path.string() + ": cannot read the " + what + ": " + out.importer->GetErrorString());
-  return out;
+  if (scene == nullptr || scene->mRootNode == nullptr)
+    throw InputError(path.string() + ": cannot read the " + what + ": " + importer.GetErrorString());
+  MeshFile out;
+  out.incomplete = (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0;
+  add_node(scene, scene->mRootNode, aiMatrix4x4(), &out);
+  return encode(out);
+}
+
+}  // namespace
+
+MeshFile import_mesh_file(const std::filesystem::path& path, const char* what, std::uintmax_t max_bytes,
+                          unsigned flags) {
+  // The OBJ itself is checked before assimp sees it, for a message naming its role.
+  check_data_file(path, what, max_bytes);
+  std::string answer;
+  try {
+    answer = run_isolated([&] { return import_in_child(path, what, max_bytes, flags); });
+  } catch (const IsolationFailure& e) {
+    if (e.thrown_by_work()) throw InputError(e.what());
+    throw InputError(path.string() + ": the " + what + " importer (assimp) " + e.what() +
+                     " reading this file; it is malformed or hostile, so it was not loaded");
+  }
+  try {
+    return Decoder(answer).mesh_file();
+  } catch (const std::runtime_error& e) {
+    throw InputError(path.string() + ": " + e.what());
+  }
 }
 
 }  // namespace sweetspot

@@ -1,36 +1,51 @@
-// Mesh files through assimp, safely: every file assimp opens (the OBJ and each material
-// library it names) must be a regular file under the mesh size limit, read whole into
-// memory first, so a FIFO or /dev/zero named as `mtllib` is refused instead of blocking
-// the importer. The world loader and the renderer's mesh import both use it.
+// Mesh files through assimp, safely:
+// - every file assimp opens (the OBJ and each material library it names) must be a regular
+//   file under the mesh size limit, read whole into memory first, so a FIFO or /dev/zero
+//   named as `mtllib` is refused instead of blocking the importer;
+// - assimp runs in a child process (game/util/isolated_call): Debian 12's assimp 5.2.5 has
+//   memory-safety bugs a hostile OBJ/MTL reaches (fuzz_world found a wild write in its
+//   material-library parser), so a crash or hang there becomes a clear InputError naming
+//   the file instead of taking the game down;
+// - what comes back is plain data (MeshFile), checked for finite vertices before any
+//   post-processing could hide a bad one.
+// The world loader and the renderer's mesh import both use it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
-#include <memory>
 #include <string>
-
-struct aiScene;
-namespace Assimp {
-class Importer;
-}
+#include <vector>
 
 namespace sweetspot {
 
-/// An imported scene and the importer that owns it.
-struct ImportedMesh {
-  std::unique_ptr<Assimp::Importer> importer;
-  const aiScene* scene = nullptr;
-  ImportedMesh();
-  ImportedMesh(ImportedMesh&&) noexcept;
-  ImportedMesh& operator=(ImportedMesh&&) noexcept;
-  ~ImportedMesh();
+/// One mesh of an imported file, with its node transform applied.
+struct MeshPart {
+  std::string name;      ///< the mesh's name in the file (may be empty)
+  std::string material;  ///< its material's name (OBJ `usemtl`), "" when it has none
+  bool has_diffuse = false;
+  std::array<float, 3> diffuse{};  ///< the material's diffuse colour (MTL `Kd`), 0..1 each, when has_diffuse
+  /// Vertices in the file's frame and units (metres for our assets).
+  std::vector<std::array<float, 3>> positions;
+  /// Unit normals, one per position, or empty when the file has none and none were made.
+  std::vector<std::array<float, 3>> normals;
+  /// Triangles as indices into positions, as the importer gives them: callers check the
+  /// range (a truncated file can point past the end). Points and lines are left out.
+  std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 
-/// Imports `path` with assimp post-processing `flags` (default: triangulated, identical
-/// vertices joined). Throws InputError naming the file (or the material library) that is
-/// missing, not a regular file, over `max_bytes`, or unreadable, and assimp's message for a
-/// file it cannot parse. `what` names the role.
-ImportedMesh import_mesh_file(const std::filesystem::path& path, const char* what, std::uintmax_t max_bytes,
-                              unsigned flags = 0);
+/// Every mesh of a file, in node order (a mesh two nodes share appears twice).
+struct MeshFile {
+  std::vector<MeshPart> parts;
+  bool incomplete = false;  ///< assimp flagged the scene incomplete
+};
+
+/// Imports `path` with assimp post-processing `flags` (0: triangulated, identical vertices
+/// joined). Throws InputError naming the file (or the material library) that is missing,
+/// not a regular file, over `max_bytes` or unreadable; assimp's message for a file it
+/// cannot parse; and, naming the file, an importer that crashed or ran past its limits on
+/// it. `what` names the role ("world mesh", "mesh").
+MeshFile import_mesh_file(const std::filesystem::path& path, const char* what, std::uintmax_t max_bytes,
+                          unsigned flags = 0);
 
 }  // namespace sweetspot

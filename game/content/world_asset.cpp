@@ -5,8 +5,6 @@
 #include <cmath>
 #include <system_error>
 
-#include <assimp/scene.h>
-
 #include "game/content/mesh_file.hpp"
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
@@ -56,28 +54,22 @@ std::vector<SurfaceMaterial> load_materials(const fs::path& path) {
 // ---- 2. the mesh -----------------------------------------------------------------------
 namespace {
 
-void add_node_meshes(const aiScene* scene, const aiNode* node, const aiMatrix4x4& parent, const fs::path& file,
-                     WorldDescription* d, int* dropped) {
-  const aiMatrix4x4 xf = parent * node->mTransformation;
-  for (unsigned k = 0; k < node->mNumMeshes; ++k) {
-    const aiMesh* am = scene->mMeshes[node->mMeshes[k]];
-    aiString ainame;
-    scene->mMaterials[am->mMaterialIndex]->Get(AI_MATKEY_NAME, ainame);
-    const std::string mname = ainame.C_Str();
+void add_meshes(const MeshFile& file_meshes, const fs::path& file, WorldDescription* d, int* dropped) {
+  for (const MeshPart& part : file_meshes.parts) {
+    const std::string& mname = part.material;
     const auto it = std::find_if(d->materials.begin(), d->materials.end(),
                                  [&](const SurfaceMaterial& m) { return m.name == mname; });
     if (it == d->materials.end()) {
       std::string names;
       for (const auto& m : d->materials) names += (names.empty() ? "" : ", ") + m.name;
-      throw InputError(file.string() + ": mesh '" + std::string(am->mName.C_Str()) + "' uses material '" + mname +
+      throw InputError(file.string() + ": mesh '" + part.name + "' uses material '" + mname +
                        "', which materials.toml does not define (allowed: " + names + ")");
     }
     WorldMesh wm;
     wm.material = static_cast<int>(it - d->materials.begin());
-    wm.vertices.reserve(am->mNumVertices);
-    for (unsigned v = 0; v < am->mNumVertices; ++v) {
-      const aiVector3D p = xf * am->mVertices[v];
-      const Vec3 q(p.x, p.y, p.z);
+    wm.vertices.reserve(part.positions.size());
+    for (size_t v = 0; v < part.positions.size(); ++v) {
+      const Vec3 q(part.positions[v][0], part.positions[v][1], part.positions[v][2]);
       if (!q.allFinite())
         throw InputError(file.string() + ": mesh '" + mname + "' vertex " + std::to_string(v) +
                          " is not a finite number (NaN or infinity); fix the file");
@@ -89,33 +81,29 @@ void add_node_meshes(const aiScene* scene, const aiNode* node, const aiMatrix4x4
                          " m from the origin in some axis; fix the file");
       wm.vertices.push_back(q);
     }
-    for (unsigned fi = 0; fi < am->mNumFaces; ++fi) {
-      const aiFace& face = am->mFaces[fi];
-      if (face.mNumIndices != 3) continue;  // points and lines carry no surface
-      if (face.mIndices[0] >= am->mNumVertices || face.mIndices[1] >= am->mNumVertices ||
-          face.mIndices[2] >= am->mNumVertices)
-        throw InputError(file.string() + ": mesh '" + mname + "' face " + std::to_string(fi) +
+    for (size_t fi = 0; fi < part.triangles.size(); ++fi) {
+      const auto& tri = part.triangles[fi];
+      if (tri[0] >= wm.vertices.size() || tri[1] >= wm.vertices.size() || tri[2] >= wm.vertices.size())
+        throw InputError(file.string() + ": mesh '" + mname + "' triangle " + std::to_string(fi) +
                          " refers to a vertex that does not exist (truncated or corrupt file)");
-      const Vec3& a = wm.vertices[face.mIndices[0]];
-      const Vec3& b = wm.vertices[face.mIndices[1]];
-      const Vec3& c = wm.vertices[face.mIndices[2]];
+      const Vec3& a = wm.vertices[tri[0]];
+      const Vec3& b = wm.vertices[tri[1]];
+      const Vec3& c = wm.vertices[tri[2]];
       if (!((b - a).cross(c - a).norm() > 1e-12 * std::max((b - a).squaredNorm(), (c - a).squaredNorm()))) {
         ++*dropped;
         continue;
       }
-      wm.indices.insert(wm.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+      wm.indices.insert(wm.indices.end(), {tri[0], tri[1], tri[2]});
     }
     if (!wm.indices.empty()) d->meshes.push_back(std::move(wm));
   }
-  for (unsigned c = 0; c < node->mNumChildren; ++c) add_node_meshes(scene, node->mChildren[c], xf, file, d, dropped);
 }
 
 /// Every world mesh passes the same checks, whichever path named it: readable, finite,
 /// near the origin, indices in range, and at least one collidable triangle with area.
 void load_mesh(const fs::path& obj, WorldDescription* d) {
-  const ImportedMesh mesh = import_mesh_file(obj, "world mesh", kMaxWorldMeshBytes);
   int dropped = 0;
-  add_node_meshes(mesh.scene, mesh.scene->mRootNode, aiMatrix4x4(), obj, d, &dropped);
+  add_meshes(import_mesh_file(obj, "world mesh", kMaxWorldMeshBytes), obj, d, &dropped);
   if (dropped > 0)
     d->notes.push_back(obj.string() + ": dropped " + std::to_string(dropped) + " zero-area triangle" +
                        (dropped == 1 ? "" : "s"));

@@ -1,8 +1,6 @@
 #include "game/render/mesh_import.hpp"
 
-#include <assimp/material.h>
 #include <assimp/postprocess.h>
-#include <assimp/scene.h>
 
 #include <algorithm>
 #include <array>
@@ -64,25 +62,20 @@ std::optional<PaletteEntry> palette_color(std::string_view material) {
 MeshData import_mesh(const std::filesystem::path& path) {
   // Flat normals for files without them keep facets readable; pre-transform bakes node
   // transforms so the mesh is in the file's frame.
-  const ImportedMesh imported = import_mesh_file(
+  const MeshFile imported = import_mesh_file(
       path, "mesh", kMaxMeshBytes,
       aiProcess_Triangulate | aiProcess_GenNormals | aiProcess_PreTransformVertices |
           aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
-  const aiScene* scene = imported.scene;
-  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) throw InputError("mesh " + path.string() + " is incomplete");
+  if (imported.incomplete) throw InputError("mesh " + path.string() + " is incomplete");
   MeshData out;
-  for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi) {
-    const aiMesh* mesh = scene->mMeshes[mi];
-    if ((mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
-    const aiMaterial* mat = scene->mMaterials[mesh->mMaterialIndex];
-    aiString ai_name;
-    mat->Get(AI_MATKEY_NAME, ai_name);
-    const std::string name = ai_name.C_Str();
+  for (const MeshPart& part : imported.parts) {
+    if (part.triangles.empty()) continue;
+    const std::string& name = part.material;
     PaletteEntry entry{{0.7f, 0.7f, 0.7f}, 0.0f};
     if (auto p = palette_color(name)) {
       entry = *p;
-    } else if (aiColor3D kd; mat->Get(AI_MATKEY_COLOR_DIFFUSE, kd) == AI_SUCCESS) {
-      entry.color = {kd.r, kd.g, kd.b};
+    } else if (part.has_diffuse) {
+      entry.color = {part.diffuse[0], part.diffuse[1], part.diffuse[2]};
     }
     auto it = std::find(out.materials.begin(), out.materials.end(), name);
     if (it == out.materials.end()) {
@@ -91,18 +84,18 @@ MeshData import_mesh(const std::filesystem::path& path) {
     }
     const auto mat_index = static_cast<std::uint16_t>(it - out.materials.begin());
     const auto base = static_cast<std::uint32_t>(out.vertices.size());
-    for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+    for (size_t v = 0; v < part.positions.size(); ++v) {
       Vertex vx;
-      vx.position = {mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z};
-      if (mesh->HasNormals()) vx.normal = {mesh->mNormals[v].x, mesh->mNormals[v].y, mesh->mNormals[v].z};
+      vx.position = {part.positions[v][0], part.positions[v][1], part.positions[v][2]};
+      if (v < part.normals.size()) vx.normal = {part.normals[v][0], part.normals[v][1], part.normals[v][2]};
       vx.color = entry.color;
       vx.pattern = entry.pattern;
       out.vertices.push_back(vx);
     }
-    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-      const aiFace& face = mesh->mFaces[f];
-      if (face.mNumIndices != 3) continue;
-      for (int k = 0; k < 3; ++k) out.indices.push_back(base + face.mIndices[k]);
+    for (const auto& tri : part.triangles) {
+      if (tri[0] >= part.positions.size() || tri[1] >= part.positions.size() || tri[2] >= part.positions.size())
+        throw InputError("mesh " + path.string() + " has a triangle that refers to a vertex that does not exist");
+      for (int k = 0; k < 3; ++k) out.indices.push_back(base + tri[static_cast<size_t>(k)]);
       out.triangle_material.push_back(mat_index);
     }
   }

@@ -235,6 +235,12 @@ RegressionCaseResult run_regression_case(const Assets& assets, const std::filesy
       row.delta = number((got[i] - expected[i]) * scale, 3);
       row.tolerance = number(tol * scale, 3);
       row.pass = std::fabs(got[i] - expected[i]) <= tol;
+      row.unit = unit;
+      row.expected_si = expected[i];
+      row.got_si = got[i];
+      row.tolerance_si = tol;
+      row.si_unit = std::string(si_unit_name(e.dim));
+      row.origin = doc.origin(key);
       res.rows.push_back(row);
     }
     const auto origin = doc.origin(key);
@@ -248,6 +254,8 @@ RegressionCaseResult run_regression_case(const Assets& assets, const std::filesy
     row.expected = doc.text("expect.contact");
     row.got = m.contact;
     row.pass = row.expected == row.got;
+    row.numeric = false;
+    row.origin = doc.origin("expect.contact");
     res.rows.push_back(row);
     const auto origin = doc.origin("expect.contact");
     replace_value(lines, std::atoi(origin.c_str() + origin.rfind(':') + 1), "contact", "\"" + m.contact + "\"", origin);

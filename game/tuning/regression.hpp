@@ -19,6 +19,13 @@ struct RegressionRow {
   std::string delta;      ///< got - expected, same unit ("" for text)
   std::string tolerance;
   bool pass = false;
+  bool numeric = true;    ///< false for text rows (contact); the *_si fields are then 0
+  std::string unit;       ///< the unit of expected/got/delta/tolerance ("mph", "" for text)
+  double expected_si = 0; ///< SI (m/s, rad, rad/s, m ...): what machine readers compare
+  double got_si = 0;
+  double tolerance_si = 0;
+  std::string si_unit;    ///< the SI unit of the *_si fields ("m/s", "rad")
+  std::string origin;     ///< "file:line" of the expectation in the case file
 };
 
 struct RegressionCaseResult {

@@ -24,6 +24,35 @@ set -e
 [ $rc -eq 1 ] || fail "drift gave exit $rc, want 1"
 grep -E "^drift +spin " <<<"$out" | grep -q FAIL || fail "no FAIL row for the drifted spin"
 
+# --junit: valid XML, one testcase per check; the failure shows expected, actual, tolerance.
+# --json: the same checks, SI beside the case's units. Both written even on drift (exit 1).
+set +e
+"$bin" regress "$tmp" --junit "$tmp/report.xml" --json >"$tmp/report.json"; rc=$?
+set -e
+[ $rc -eq 1 ] || fail "--junit/--json on drift gave exit $rc, want 1"
+python3 - "$tmp/report.xml" "$tmp/report.json" <<'PY' || fail "JUnit/JSON report"
+import json, sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+assert root.tag == "testsuites", root.tag
+cases = root.findall("./testsuite/testcase")
+assert len(cases) == int(root.get("tests")) and len(cases) > 10, len(cases)
+bad = [c for c in cases if c.find("failure") is not None]
+assert len(bad) == 1 == int(root.get("failures")), len(bad)
+f = bad[0].find("failure")
+assert bad[0].get("name") == "spin" and bad[0].get("classname") == "regress.drift"
+for word in ("expected 6000 rpm", "actual", "tolerance"):
+    assert word in f.get("message"), f.get("message")
+j = json.load(open(sys.argv[2]))
+assert j["failed"] == 1 and j["checks"] == len(cases)
+spin = [c for k in j["cases"] for c in k["checks"] if not c["pass"]][0]
+assert spin["quantity"] == "spin" and spin["si_unit"] == "rad/s" and abs(spin["expected_si"] - 628.3185) < 0.01
+PY
+set +e
+"$bin" regress "$tmp" --junit "$tmp/drift.toml" >/dev/null 2>"$tmp/err"; rc=$?
+set -e
+[ $rc -eq 2 ] && grep -q -- "--junit" "$tmp/err" || fail "--junit over a case file: exit $rc, $(cat "$tmp/err")"
+rm -f "$tmp/report.xml" "$tmp/report.json" "$tmp/err"
+
 cp "$tmp/ref.toml" "$tmp/ref.before"
 "$bin" regress --update "$tmp" >/dev/null || fail "--update failed"
 "$bin" regress "$tmp" >/dev/null || fail "still drifting after --update"

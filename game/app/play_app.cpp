@@ -18,6 +18,7 @@
 #include "game/render/renderer.hpp"
 #include "game/report/report.hpp"
 #include "game/ui/panels.hpp"
+#include "game/tuning/grip.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -51,6 +52,8 @@ struct Shot {
 Shot compute(const Assets& assets, const UiState& st) {
   Shot s{load_ui_scenario(assets, st), {}};
   s.result = run_scenario(s.scenario);
+  // The Tuning panel says whether moving µ can change this launch (~1 ms of launches).
+  if (s.result.impact.present) s.result.impact.mu_grip = mu_grip(s.scenario.resolved);
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "game/cli/command.hpp"
+#include "game/tuning/grip.hpp"
 #include "game/report/report.hpp"
 #include "game/content/scenario.hpp"
 #include "game/net/session_file.hpp"
@@ -73,7 +74,8 @@ RunFn setup_shot(CLI::App& sub) {
     if (!o->e.empty()) apply_set(doc, "impact.e=" + o->e, "--e " + o->e);
     if (!o->mu.empty()) apply_set(doc, "impact.mu=" + o->mu, "--mu " + o->mu);
     const Scenario scenario = scenario_from_doc(assets, doc, o->scenario);
-    const ShotResult r = run_scenario(scenario, RunOptions{true, false});
+    ShotResult r = run_scenario(scenario, RunOptions{true, false});
+    if (r.impact.present) r.impact.mu_grip = mu_grip(scenario.resolved);
     const SportProfile& sport = *scenario.resolved.sport;
     if (o->json) {
       std::cout << json_text(shot_json(r)) << "\n";

@@ -1,4 +1,4 @@
-// `sweetspot sweep SCENARIO --e A:B:N --mu A:B:N [--csv FILE] [--threads N]`: the e × µ
+// `sweetspot sweep SCENARIO --e A:B:N --mu A:B:N [--csv FILE] [--threads N] [--units U]`: the e × µ
 // grid on all cores. Without --csv a table goes to stdout; with it the CSV is written
 // atomically (no partial file on any error). Progress goes to stderr only on a terminal.
 #include <unistd.h>
@@ -11,6 +11,7 @@
 #include "game/cli/command.hpp"
 #include "game/content/scenario.hpp"
 #include "game/content/scenario_schema.hpp"
+#include "game/report/metrics.hpp"
 #include "game/tuning/sweep.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/units.hpp"
@@ -20,6 +21,7 @@ namespace {
 
 struct SweepCliOptions {
   std::string scenario, e, mu, csv;
+  std::string units = "imperial";
   std::vector<std::string> sets;
   int threads = 0;
   bool no_flight = false;
@@ -34,7 +36,10 @@ RunFn setup_sweep(CLI::App& sub) {
   sub.add_option("--set", o->sets, "override a scenario key: key=value")->type_name("KEY=VALUE");
   sub.add_option("--threads", o->threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   sub.add_flag("--no-flight", o->no_flight, "launch numbers only, skip the flight (faster)");
+  sub.add_option("--units", o->units, "display units of the table: imperial or metric (the CSV is SI)")
+      ->capture_default_str();
   return [o](const Assets& assets) -> int {
+    const UnitSystem system = parse_unit_system(o->units);
     SweepOptions so;
     so.e = parse_grid_axis(o->e, "--e", ImpactMaterial::kE);
     so.mu = parse_grid_axis(o->mu, "--mu", ImpactMaterial::kMu);
@@ -68,15 +73,25 @@ RunFn setup_sweep(CLI::App& sub) {
                 << seconds << " s\n";
       return 0;
     }
-    std::printf("%-7s %-7s %10s %9s %9s %9s %-5s %9s\n", "e", "mu", "ball mph", "launch", "spin rpm", "axis", "cont",
-                "carry m");
+    // One unit per quantity, named in the header: speed and distance follow --units (the
+    // sport's distance unit in imperial), angles in degrees, spin in rpm. "cont" is the
+    // solver's contact (grip: the patch stuck at some time); "mu_eff" says whether µ still
+    // acts here: "live" below the row's µ_grip, "none" above it (the launch stops changing).
+    DisplayUnits u;
+    u.system = system;
+    u.distance = base.resolved.sport->distance_unit;
+    const std::string speed_head = std::string("ball ") + u.speed_unit();
+    const std::string carry_head = std::string("carry ") + u.distance_unit();
+    std::printf("%-7s %-7s %10s %10s %9s %9s %-5s %-6s %7s %10s\n", "e", "mu", speed_head.c_str(), "launch deg",
+                "spin rpm", "axis deg", "cont", "mu_eff", "mu_grip", carry_head.c_str());
     for (const auto& p : result) {
       const auto& L = p.shot.launch;
-      char carry[32] = "        -";  // --no-flight: not computed
-      if (so.fly) std::snprintf(carry, sizeof carry, "%9.2f", p.shot.trajectory.summary.carry_m);
-      std::printf("%-7.4g %-7.4g %10.2f %9.2f %9.0f %9.2f %-5s %s\n", p.e, p.mu, mps_to_mph(L.ball_speed),
+      char carry[32] = "         -";  // --no-flight: not computed
+      if (so.fly) std::snprintf(carry, sizeof carry, "%10.2f", u.dist(p.shot.trajectory.summary.carry_m));
+      const double g = p.shot.impact.mu_grip;
+      std::printf("%-7.4g %-7.4g %10.2f %10.2f %9.0f %9.2f %-5s %-6s %7.3f %s\n", p.e, p.mu, u.speed(L.ball_speed),
                   rad_to_deg(L.vertical_angle), radps_to_rpm(L.spin.total), rad_to_deg(L.spin.axis_rad),
-                  to_string(p.shot.impact.contact), carry);
+                  to_string(p.shot.impact.contact), p.mu >= g ? "none" : "live", g, carry);
     }
     return 0;
   };

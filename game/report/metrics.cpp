@@ -248,6 +248,14 @@ std::vector<Metric> build() {
     return fixed(r.impact.e, 3) + " / " + fixed(r.impact.e_t, 3);
   }));
   m.push_back(plain("friction", "Friction mu", struck, [](const ShotResult& r) { return r.impact.mu; }, 3, "", "mu"));
+  // The grip threshold, when the caller computed it: whether turning µ changes anything.
+  m.push_back(text("grip", "Grip threshold mu", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
+    if (!struck(r) || r.impact.mu_grip < 0.0) return std::nullopt;
+    const std::string t = fixed(r.impact.mu_grip, 3);
+    if (r.impact.mu_grip == 0.0) return t + " (friction does not change this launch)";
+    return t + (r.impact.mu >= r.impact.mu_grip ? " (grips: a higher mu changes nothing)"
+                                                : " (slips: mu up to " + t + " changes the launch)");
+  }));
   m.push_back(text("impulse", "Impulse n / t", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!struck(r)) return std::nullopt;
     return fixed(r.impact.normal_impulse, 3) + " / " + fixed(r.impact.tangential_impulse, 3) + " N*s";

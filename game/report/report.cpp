@@ -49,6 +49,10 @@ nlohmann::json shot_json(const ShotResult& r) {
         {"tangential_impulse_Ns", i.tangential_impulse},
         {"energy_loss_J", i.energy_loss},
     };
+    if (i.mu_grip >= 0.0) {
+      j["impact"]["mu_grip"] = i.mu_grip;
+      j["impact"]["grips"] = i.mu >= i.mu_grip;
+    }
     if (!r.club.club.empty()) {
       j["club"] = {
           {"name", r.club.club},

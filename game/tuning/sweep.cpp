@@ -2,6 +2,8 @@
 // writes only its own result slot, so no locks and a fixed output order.
 #include "game/tuning/sweep.hpp"
 
+#include "game/tuning/grip.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <charconv>
@@ -12,6 +14,7 @@
 #include <mutex>
 #include <thread>
 
+#include "game/tuning/grip.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 
@@ -114,6 +117,16 @@ std::vector<SweepPoint> run_sweep(const Scenario& base, const SweepOptions& o) {
   }
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+  if (o.grip) {
+    // µ_grip depends on e (a livelier normal impulse needs less friction to stick) but not
+    // on the µ being tried, so one search per row of the grid.
+    ResolvedShot s = base.resolved;
+    for (std::size_t ie = 0; ie < ne; ++ie) {
+      s.material.e = CorCurve::constant(o.e.at(static_cast<int>(ie)));
+      const double g = mu_grip(s);
+      for (std::size_t im = 0; im < nm; ++im) out[ie * nm + im].shot.impact.mu_grip = g;
+    }
+  }
   if (o.progress) o.progress(total, total);
   return out;
 }
@@ -121,7 +134,7 @@ std::vector<SweepPoint> run_sweep(const Scenario& base, const SweepOptions& o) {
 std::string sweep_csv(const std::vector<SweepPoint>& points) {
   std::string out =
       "e,mu,ball_speed_mps,vertical_angle_deg,horizontal_angle_deg,spin_rpm,backspin_rpm,sidespin_rpm,"
-      "spin_axis_deg,smash_factor,contact,carry_m,total_m,apex_m,lateral_m,end\n";
+      "spin_axis_deg,smash_factor,contact,mu_grip,grips,carry_m,total_m,apex_m,lateral_m,end\n";
   for (const auto& p : points) {
     const auto& L = p.shot.launch;
     const auto& F = p.shot.trajectory.summary;
@@ -129,7 +142,8 @@ std::string sweep_csv(const std::vector<SweepPoint>& points) {
            num(rad_to_deg(L.horizontal_angle)) + "," + num(radps_to_rpm(L.spin.total)) + "," +
            num(radps_to_rpm(L.spin.backspin)) + "," + num(radps_to_rpm(L.spin.sidespin_right)) + "," +
            num(rad_to_deg(L.spin.axis_rad)) + "," + num(p.shot.smash_factor) + "," + to_string(p.shot.impact.contact) +
-           "," + num(F.carry_m) + "," + num(F.total_m) + "," + num(F.apex_m) + "," + num(F.lateral_m) + "," +
+           "," + (p.shot.impact.mu_grip >= 0.0 ? num(p.shot.impact.mu_grip) : "") + "," +
+           (p.shot.impact.mu_grip >= 0.0 ? (p.mu >= p.shot.impact.mu_grip ? "true" : "false") : "") + "," + num(F.carry_m) + "," + num(F.total_m) + "," + num(F.apex_m) + "," + num(F.lateral_m) + "," +
            to_string(p.shot.end) + "\n";
   }
   return out;

@@ -38,6 +38,7 @@ struct SweepOptions {
   GridAxis e, mu;
   int threads = 0;      ///< 0 = all hardware threads
   bool fly = true;      ///< false: launch numbers only (much faster)
+  bool grip = true;     ///< find µ_grip for each e of the grid (game/tuning/grip.hpp; ~16 launches per e)
   /// Called from the calling thread about every 100 ms with (points done, total).
   std::function<void(std::size_t, std::size_t)> progress;
 };
@@ -46,7 +47,8 @@ struct SweepOptions {
 /// rejected by the physics (naming e and µ). Deterministic for any thread count.
 std::vector<SweepPoint> run_sweep(const Scenario& base, const SweepOptions& options);
 
-/// CSV with a header: e, mu, launch numbers, contact, flight summary (SI).
+/// CSV with a header: e, mu, launch numbers, contact, mu_grip and grips (µ ≥ µ_grip: the
+/// launch no longer changes with µ), flight summary (SI).
 std::string sweep_csv(const std::vector<SweepPoint>& points);
 
 }  // namespace sweetspot

@@ -234,6 +234,15 @@ bool tuning_panel(PanelContext& c) {
   else
     ImGui::TextDisabled("e_t %.3f (from the contact; rigid model to set it)", im.present ? im.e_t : 0.0);
   changed |= slider(st, k, "mu", "impact.mu", mat.mu, "%.3f");
+  if (im.present && im.mu_grip == 0.0) {
+    ImGui::TextDisabled("friction does not change this launch");
+  } else if (im.present && im.mu_grip > 0.0) {
+    // Green: the contact grips, the slider changes nothing above the threshold; amber: it slips.
+    const bool grips = mat.mu >= im.mu_grip;
+    ImGui::TextColored(grips ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : ImVec4(1.0f, 0.75f, 0.3f, 1.0f),
+                       grips ? "grip: mu above %.3f changes nothing" : "slip: mu changes the launch up to %.3f",
+                       im.mu_grip);
+  }
   int model = static_cast<int>(mat.friction);
   const char* models[] = {"none", "textbook", "coulomb"};
   if (ImGui::Combo("friction", &model, models, 3)) {

@@ -26,6 +26,18 @@ for mu, speeds in by_mu.items():
 PY
 table=$("$bin" sweep baseball/line-drive --e 0.4:0.5:2 --mu 0.5:0.5:1 --no-flight)
 [ "$(wc -l <<<"$table")" -eq 3 ] || fail "table rows"
+# Units: one per column, named in the header, following --units; the grip threshold shown.
+table=$("$bin" sweep golf/driver --e 0.8:0.8:1 --mu 0.01:2:2 --set impact.model=rigid)
+head -1 <<<"$table" | grep -qE "ball mph .*mu_eff +mu_grip +carry yd" || fail "imperial header: $(head -1 <<<"$table")"
+sed -n 2p <<<"$table" | grep -qE " live +0\.0[0-9]+ " || fail "mu 0.01 below the rigid driver's grip threshold: $(sed -n 2p <<<"$table")"
+sed -n 3p <<<"$table" | grep -qE " none +0\.0[0-9]+ " || fail "mu 2 above the grip threshold: $(sed -n 3p <<<"$table")"
+"$bin" sweep baseball/line-drive --e 0.5:0.5:1 --mu 0.5:0.5:1 --units metric | head -1 | grep -q "ball m/s .* carry m" || fail "metric header"
+python3 - "$tmp/one.csv" <<'PY' || fail "mu_grip/grips columns"
+import csv, sys
+for r in csv.DictReader(open(sys.argv[1])):
+    g = float(r["mu_grip"])
+    assert r["grips"] == ("true" if float(r["mu"]) >= g else "false"), r
+PY
 
 set +e
 "$bin" sweep golf/driver --e 0:1:1000 --mu 0:1:1000 --csv "$tmp/big.csv" >/dev/null 2>"$tmp/err"; rc=$?

@@ -62,14 +62,37 @@ struct FaceLaw {
   double reference_speed = 48.8, slope = 0.0;
   double shaft_tip_mass = 0.0;  // kg, from [shaft]
   ImpactMaterial material;
+  MeasuredRange measured;
 };
+
+/// A [*.measured] table: e, mu, e_t as [low, high] (each optional) and the pair and source
+/// text the warnings quote.
+MeasuredRange read_measured(const TomlFile& f, const toml::node& n, const std::string& key) {
+  const toml::table& t = f.table(n, key);
+  f.only_keys(t, key, {"e", "mu", "e_t", "pair", "source"});
+  MeasuredRange m;
+  const auto range = [&](const char* name, const Range& allowed, Range* out) {
+    const toml::node* v = t.get(name);
+    if (v == nullptr) return;
+    const std::vector<double> lh = f.quantities(*v, key + "." + name, Dimension::Dimensionless, 2, &allowed);
+    if (!(lh[0] <= lh[1])) f.fail(*v, key + "." + name, "expected [low, high] with low <= high");
+    *out = Range{lh[0], lh[1]};
+  };
+  range("e", ImpactMaterial::kE, &m.e);
+  range("mu", ImpactMaterial::kMu, &m.mu);
+  range("e_t", ImpactMaterial::kEt, &m.e_t);
+  m.pair = f.text(f.required(t, "pair", "what strikes what, for the warnings"), "pair");
+  m.source = f.text(f.required(t, "source", "where the ranges were measured"), "source");
+  return m;
+}
 
 FaceLaw read_face(const TomlFile& f, const toml::table& root) {
   FaceLaw law;
   const toml::node* n = root.get("face");
   if (n == nullptr) return law;
   const toml::table& t = f.table(*n, "face");
-  f.only_keys(t, "face", {"cor_reference_speed", "cor_slope", "mu", "e_t", "friction", "model"});
+  f.only_keys(t, "face", {"cor_reference_speed", "cor_slope", "mu", "e_t", "friction", "model", "measured"});
+  if (const toml::node* m = t.get("measured")) law.measured = read_measured(f, *m, "face.measured");
   law.reference_speed = f.quantity_or(t, "cor_reference_speed", Dimension::Speed, law.reference_speed);
   static constexpr Range kSlope{0.0, 0.05};
   law.slope = f.quantity_or(t, "cor_slope", Dimension::Dimensionless, 0.0, &kSlope);
@@ -99,6 +122,7 @@ void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, Clu
                                Dimension::Speed, &GolfSwing::kClubSpeed);
   info.tour_attack = f.quantity(f.required(t, "tour_attack", "a tour player's attack angle"), "tour_attack",
                                 Dimension::Angle, &GolfSwing::kAttackAngle);
+  info.measured = face.measured;
   k.loft = f.quantity(f.required(t, "loft", "static loft"), "loft", Dimension::Angle, &ClubSpec::kLoft);
   k.lie = f.quantity(f.required(t, "lie", "static lie"), "lie", Dimension::Angle, &ClubSpec::kLie);
   k.dynamic_loft = f.quantity(f.required(t, "dynamic_loft", "typical delivered loft"), "dynamic_loft",
@@ -162,7 +186,8 @@ void read_bat(const TomlFile& f, const toml::table& t, BatSpec& b, BatInfo& info
   b.sweet_spot_from_tip = f.quantity(f.required(t, "sweet_spot_from_tip", "m"), "sweet_spot_from_tip", Dimension::Length);
   b.pivot_from_knob = f.quantity(f.required(t, "pivot_from_knob", "m"), "pivot_from_knob", Dimension::Length);
   const toml::table& m = f.table(f.required(t, "material", "[bat.material]"), "material");
-  f.only_keys(m, "material", {"cor", "e_t", "mu", "friction", "cor_profile"});
+  f.only_keys(m, "material", {"cor", "e_t", "mu", "friction", "cor_profile", "measured"});
+  if (const toml::node* r = m.get("measured")) info.measured = read_measured(f, *r, "material.measured");
   b.material.e = curve(f, f.required(m, "cor", "[[normal speed, e], ...]"), "material.cor");
   b.material.e_t = f.quantity_or(m, "e_t", Dimension::Dimensionless, 0.0, &ImpactMaterial::kEt);
   b.material.mu = f.quantity_or(m, "mu", Dimension::Dimensionless, 0.5, &ImpactMaterial::kMu);

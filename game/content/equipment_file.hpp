@@ -14,6 +14,16 @@
 namespace sweetspot {
 
 /// The game's side of a club: how it is drawn and played.
+/// What laboratories measure for a ball against this impactor: a value of e, µ or e_t
+/// outside it still runs (tuning explores), with a warning naming the range and `source`.
+struct MeasuredRange {
+  Range e{0.0, 1.0};    ///< normal COR at the contact (after the speed curve and location factor)
+  Range mu{0.0, 2.0};   ///< face/barrel friction coefficient
+  Range e_t{0.0, 1.0};  ///< tangential restitution (the rigid model's input)
+  std::string pair;     ///< "a golf ball on a club face"
+  std::string source;   ///< where the ranges come from
+};
+
 struct ClubInfo {
   std::string name;            ///< as ClubSpec::name
   std::string kind;            ///< "wood", "hybrid", "iron", "wedge", "putter" (club choice, sound, camera)
@@ -26,12 +36,14 @@ struct ClubInfo {
   /// game scales the speed for every golfer by their driver speed.
   double tour_speed = 40.0;
   double tour_attack = 0.0;
+  MeasuredRange measured;      ///< clubs.toml [face.measured], the same for every club
 };
 
 /// The game's side of a bat.
 struct BatInfo {
   std::string name;
   std::string mesh;            ///< assets/meshes/<mesh>.obj, in the BAT FRAME
+  MeasuredRange measured;      ///< bats.toml [bat.material.measured]
 };
 
 struct EquipmentCatalog {

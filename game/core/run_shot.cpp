@@ -232,6 +232,31 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
 }
 
 // ---- 3. fly ---------------------------------------------------------------------------------
+namespace {
+
+/// Warns (never refuses) when the e the contact used, or the µ / e_t the scenario set, lies
+/// outside what laboratories measure for this ball and impactor (clubs.toml / bats.toml
+/// `measured`): tuning may explore, but the reader must know the shot is not a real one.
+void add_measured_range_warnings(const ResolvedShot& s, ShotResult& r) {
+  const MeasuredRange* m = s.club_info ? &s.club_info->measured : s.bat_info ? &s.bat_info->measured : nullptr;
+  if (m == nullptr || m->pair.empty()) return;
+  const auto check = [&](const char* name, double value, const Range& range) {
+    if (range.contains(value)) return;
+    char buf[400];
+    std::snprintf(buf, sizeof buf, "%s = %.3f is outside the %.2f-%.2f measured for %s (%s); the shot runs, but no real "
+                  "equipment does this", name, value, range.min, range.max, m->pair.c_str(), m->source.c_str());
+    r.warnings.emplace_back(buf);
+  };
+  check("e", r.impact.e, m->e);
+  if (s.material.friction != FrictionModel::None) check("mu", s.material.mu, m->mu);
+  // The compliant contact makes its own e_t; only the rigid model (and the textbook
+  // friction) take it as an input.
+  if (s.material.model == ImpactModel::Rigid || s.material.friction == FrictionModel::Textbook)
+    check("e_t", s.material.e_t, m->e_t);
+}
+
+}  // namespace
+
 ShotResult run_shot(const ResolvedShot& s, const std::string& name, const RunOptions& options) {
   ShotResult r = launch_shot(s, name);
   if (!options.fly) return r;
@@ -244,6 +269,7 @@ ShotResult run_shot(const ResolvedShot& s, const std::string& name, const RunOpt
     cup.flagstick = s.spec.flagstick;
     model.cup = cup;
   }
+  if (r.impact.present) add_measured_range_warnings(s, r);
   if (r.impact.present && r.impact.energy_loss < 0.0) {
     char buf[200];
     std::snprintf(buf, sizeof buf,

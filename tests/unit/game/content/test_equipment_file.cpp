@@ -120,6 +120,22 @@ TEST_CASE("unknown equipment names list the allowed ones", "[equipment]") {
 TEST_CASE("bad equipment files name file, line, entry, key and range", "[equipment][validation]") {
   {
     ScratchDir s;
+    s.replace("clubs.toml", "e = [0.65, 0.92]", "e = [0.92, 0.65]");
+    CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("face.measured.e") &&
+                                                 Contains("low <= high"));
+  }
+  {
+    ScratchDir s;
+    s.replace("bats.toml", "mu = [0.35, 0.65]", "mu = [0.35, 3.0]");
+    CHECK_THROWS_WITH(load_equipment(s.dir), Contains("bats.toml:") && Contains("material.measured.mu"));
+  }
+  {
+    ScratchDir s;
+    s.replace("clubs.toml", "pair = \"a golf ball on a club face\"", "");
+    CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("pair"));
+  }
+  {
+    ScratchDir s;
     s.replace("clubs.toml", "head_mass = \"204g\"", "head_mass = \"5000g\"");
     CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("club 'driver'") &&
                                                  Contains("head_mass") && Contains("[0.05, 1] kg"));

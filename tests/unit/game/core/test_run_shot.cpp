@@ -2,6 +2,7 @@
 // monitor build one) resolves against the Assets context and runs like a scenario file.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "game/content/scenario.hpp"
@@ -118,4 +119,26 @@ TEST_CASE("the lie acts on the strike: a flyer from the rough, a slowed club in 
   CHECK(speed < -0.02);
   CHECK(speed > -0.08);
   CHECK(rough.launch.vertical_angle > clean.launch.vertical_angle);
+}
+
+TEST_CASE("values outside what laboratories measure run, with a warning naming the range and source",
+          "[run_shot][plausibility]") {
+  const auto warnings_of = [](const char* scenario, std::vector<std::string> sets) {
+    sets.push_back("world.name=none");
+    return run_scenario(load_scenario(test::assets(), scenario, sets), RunOptions{true, false}).warnings;
+  };
+  const auto mentions = [](const std::vector<std::string>& w, const std::string& what) {
+    return std::any_of(w.begin(), w.end(), [&](const std::string& s) { return s.find(what) != std::string::npos; });
+  };
+  // Issue 21's example: e = 0.81 on a baseball gives 152 mph without a word.
+  const auto bat = warnings_of("baseball/line-drive", {"impact.e=0.81"});
+  CHECK(mentions(bat, "e = 0.810 is outside the 0.20-0.60 measured for a baseball on a bat"));
+  CHECK(mentions(bat, "Nathan 2000"));
+  CHECK(mentions(warnings_of("golf/driver", {"impact.mu=0.05"}), "mu = 0.050 is outside"));
+  // e_t is an input of the rigid model only; the compliant contact makes its own.
+  CHECK(mentions(warnings_of("golf/driver", {"impact.model=rigid", "impact.e_t=0.9"}), "e_t = 0.900"));
+  CHECK_FALSE(mentions(warnings_of("golf/driver", {"impact.e_t=0.9"}), "e_t"));
+  // The built-in deliveries are real ones.
+  for (const char* s : {"golf/driver", "golf/7-iron", "golf/pw", "baseball/line-drive"})
+    CHECK_FALSE(mentions(warnings_of(s, {}), "measured for"));
 }

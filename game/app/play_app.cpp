@@ -75,7 +75,11 @@ int run_play_headless(const Assets& assets, const PlayOptions& o, std::ostream& 
   UiState st = ui_state_from(o);
   const Shot shot = compute(assets, st);
   out << launch_table(shot.result, *shot.scenario.resolved.sport, UnitSystem::Imperial);
-  const std::string png = o.screenshot.empty() ? "sweetspot-play.png" : o.screenshot;
+  if (o.screenshot.empty()) {
+    out << "image: none (add --screenshot FILE.png to render the shot)\n";
+    return 0;
+  }
+  const std::string& png = o.screenshot;
   try {
     RenderRequest req = render_request_for(assets, shot.scenario.resolved, shot.result);
     req.width = o.width;

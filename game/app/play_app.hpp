@@ -31,8 +31,9 @@ struct PlayOptions {
 /// no window can be opened.
 int run_play_window(const Assets& assets, const PlayOptions& options, std::ostream& out);
 
-/// Runs the shot without a window: prints the launch-monitor table and writes a PNG of the
-/// shot through EGL (`screenshot`, default sweetspot-play.png). Without EGL the table is
+/// Runs the shot without a window: prints the launch-monitor table and, when `screenshot`
+/// names a file, writes a PNG of the shot there through EGL (nothing is written otherwise:
+/// a command run in some folder must not leave files in it). Without EGL the table is
 /// still printed and the PNG skipped with a note. Returns 0.
 int run_play_headless(const Assets& assets, const PlayOptions& options, std::ostream& out);
 

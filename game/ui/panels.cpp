@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <vector>
 
 #include <imgui.h>
@@ -37,7 +38,7 @@ bool slider(UiState& st, std::uint8_t strikes, const char* label, const std::str
   std::string shown = std::string(fmt) + " ";
   for (const char ch : unit) shown += ch == '%' ? std::string("%%") : std::string(1, ch);  // a format string
   if (ImGui::SliderFloat(label, &v, lo, hi, shown.c_str(), ImGuiSliderFlags_AlwaysClamp)) {
-    st.set(key, quantity_text(v, unit));
+    st.set(key, quantity_text(float_as_decimal(v), unit));
     return true;
   }
   return false;
@@ -269,14 +270,34 @@ bool tuning_panel(PanelContext& c) {
   ImGui::SetNextItemWidth(200);
   ImGui::InputText("##save", &c.save_path);
   ImGui::SameLine();
-  if (ImGui::Button("Save scenario")) {
+  // Saving never replaces a file silently: an existing one needs a second, explicit yes.
+  const auto save = [&c](const std::string& path) {
     try {
-      const std::string path = c.save_path;
       write_file_atomic(path, scenario_toml(c.scenario));
       c.status = "saved " + path;
     } catch (const std::exception& e) {
       c.status = e.what();
     }
+  };
+  if (ImGui::Button("Save scenario")) {
+    std::error_code ec;
+    if (std::filesystem::exists(c.save_path, ec))
+      ImGui::OpenPopup("Overwrite?");
+    else
+      save(c.save_path);
+  }
+  if (ImGui::BeginPopupModal("Overwrite?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s already exists.", c.save_path.c_str());
+    if (ImGui::Button("Overwrite")) {
+      save(c.save_path);
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      c.status = "not saved: " + c.save_path + " exists (pick another name)";
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
   }
   ImGui::End();
   return changed;

@@ -1,7 +1,10 @@
 #include "game/ui/ui_state.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace sweetspot {
@@ -14,9 +17,23 @@ std::vector<std::string> UiState::override_list() const {
 }
 
 std::string quantity_text(double value, const std::string& unit) {
+  // The shortest text that reads back as the same double: "0.808", never "0.808000028".
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", value);
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+    if (std::strtod(buf, nullptr) == value) break;
+  }
   return std::string(buf) + unit;
+}
+
+double float_as_decimal(float value) {
+  // A slider's 0.808f is 0.808000028... as a double; the user set 0.808.
+  char buf[32];
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, static_cast<double>(value));
+    if (static_cast<float>(std::strtod(buf, nullptr)) == value) break;
+  }
+  return std::strtod(buf, nullptr);
 }
 
 std::string quantity_list_text(const std::vector<double>& values, const std::string& unit) {
@@ -63,6 +80,14 @@ std::string toml_array(const std::string& text) {
   return out + "]";
 }
 
+/// True for text that is a finite number and nothing else ("0.808", "-1e-3"): TOML takes it
+/// bare. Quantities with a unit ("30mph") stay strings.
+bool is_plain_number(const std::string& text) {
+  // TOML's integer/float grammar: [+-] (0 | [1-9][0-9]*) [.[0-9]+] [(e|E)[+-][0-9]+].
+  static const std::regex kTomlNumber(R"([+-]?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?)");
+  return std::regex_match(text, kTomlNumber) && std::isfinite(std::strtod(text.c_str(), nullptr));
+}
+
 std::string toml_value(const DocEntry& e) {
   switch (e.kind) {
     case RawKind::Integer:
@@ -73,6 +98,7 @@ std::string toml_value(const DocEntry& e) {
       return toml_array(e.text);
     case RawKind::Text:
       if (!e.text.empty() && e.text.front() == '[' && e.text.back() == ']') return toml_array(e.text);
+      if (is_plain_number(e.text)) return e.text;  // a dimensionless override (e, µ): bare, as files write it
       return toml_string(e.text);
     default:
       return toml_string(e.text);

@@ -32,9 +32,12 @@ struct UiState {
   std::vector<std::string> override_list() const;
 };
 
-/// A number with its unit as scenario text: quantity_text(105, "mph") == "105mph". Uses up
-/// to 9 significant digits so a value survives the round trip through text.
+/// A number with its unit as scenario text: quantity_text(105, "mph") == "105mph". The
+/// shortest digits that read back as the same double, so a value survives the round trip.
 std::string quantity_text(double value, const std::string& unit);
+/// The decimal a float slider meant: the shortest decimal that is the same float (0.808f ->
+/// 0.808, not 0.80800002813).
+double float_as_decimal(float value);
 /// "[12.5mm, -3mm]".
 std::string quantity_list_text(const std::vector<double>& values, const std::string& unit);
 

@@ -24,9 +24,14 @@ rc=$?
 set -e
 [ "$rc" -eq 2 ] || { echo "expected exit 2 for an unknown scenario, got $rc"; cat "$work/bad.txt"; exit 1; }
 grep -q "no-such-scenario" "$work/bad.txt"
-# Headless (no DISPLAY): says so, prints the table, writes the PNG, exit 0.
-(cd "$work" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play golf/7-iron > headless.txt)
+# Headless (no DISPLAY): says so, prints the table, exit 0; it writes no file unless
+# --screenshot names one (issue 21: it used to drop sweetspot-play.png in the folder).
+mkdir "$work/quiet"
+(cd "$work/quiet" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play golf/7-iron > ../headless.txt)
 grep -q "no display" "$work/headless.txt"
 grep -qi "carry" "$work/headless.txt"
-if grep -q "^image: sweetspot-play.png" "$work/headless.txt"; then "$check" "$work/sweetspot-play.png" 1280 800 50; fi
+grep -q "^image: none" "$work/headless.txt"
+[ -z "$(ls -A "$work/quiet")" ] || { echo "headless play wrote files: $(ls -A "$work/quiet")"; exit 1; }
+(cd "$work" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play golf/7-iron --screenshot shot.png > headless2.txt)
+if grep -q "^image: shot.png" "$work/headless2.txt"; then "$check" "$work/shot.png" 1280 800 50; fi
 echo "play window test passed"

@@ -18,6 +18,23 @@ TEST_CASE("quantity text survives the round trip through the parser", "[ui]") {
   CHECK(parse_quantity(quantity_text(104.123456789, "mph"), Dimension::Speed) ==
         Approx(mph_to_mps(104.123456789)).epsilon(1e-8));
   CHECK(quantity_list_text({12.5, -3}, "mm") == "[12.5mm, -3mm]");
+  // Issue 21: a slider's float is saved as the decimal it shows, not as float noise.
+  CHECK(quantity_text(float_as_decimal(0.808f), "") == "0.808");
+  CHECK(quantity_text(float_as_decimal(113.3f), "mph") == "113.3mph");
+  CHECK(quantity_text(0.1 + 0.2, "") == "0.30000000000000004");  // exact: a double keeps its digits
+}
+
+TEST_CASE("a saved scenario writes bare numbers bare and quantities quoted", "[ui]") {
+  UiState st;
+  st.scenario = "golf/7-iron";
+  st.set("impact.e", quantity_text(float_as_decimal(0.808f), ""));
+  st.set("impact.mu", "0.31");
+  st.set("environment.temperature", "90F");
+  const std::string text = scenario_toml(load_ui_scenario(test::assets(), st));
+  CHECK(text.find("e = 0.808\n") != std::string::npos);
+  CHECK(text.find("mu = 0.31\n") != std::string::npos);
+  CHECK(text.find("temperature = \"90F\"\n") != std::string::npos);
+  CHECK(text.find("0.808000") == std::string::npos);
 }
 
 TEST_CASE("panel edits change the loaded scenario", "[ui]") {

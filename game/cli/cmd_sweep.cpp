@@ -5,12 +5,14 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "game/cli/command.hpp"
 #include "game/content/scenario.hpp"
 #include "game/content/scenario_schema.hpp"
+#include "game/render/sweep_plot.hpp"
 #include "game/report/metrics.hpp"
 #include "game/tuning/sweep.hpp"
 #include "game/util/atomic_file.hpp"
@@ -22,6 +24,7 @@ namespace {
 struct SweepCliOptions {
   std::string scenario, e, mu, csv;
   std::string units = "imperial";
+  std::string plot;
   std::vector<std::string> sets;
   int threads = 0;
   bool no_flight = false;
@@ -36,6 +39,9 @@ RunFn setup_sweep(CLI::App& sub) {
   sub.add_option("--set", o->sets, "override a scenario key: key=value")->type_name("KEY=VALUE");
   sub.add_option("--threads", o->threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   sub.add_flag("--no-flight", o->no_flight, "launch numbers only, skip the flight (faster)");
+  sub.add_option("--plot", o->plot,
+                 "also write FILE.png: heatmaps of ball speed, spin and carry over the grid with the grip boundary, "
+                 "and the landing dispersion");
   sub.add_option("--units", o->units, "display units of the table: imperial or metric (the CSV is SI)")
       ->capture_default_str();
   return [o](const Assets& assets) -> int {
@@ -51,6 +57,9 @@ RunFn setup_sweep(CLI::App& sub) {
                        " grid points exceed the limit of " + std::to_string(kMaxSweepPoints));
     }
     if (!o->csv.empty()) refuse_output_over_input(o->csv, resolve_scenario(assets, o->scenario), "--csv");
+    if (!o->plot.empty()) refuse_output_over_input(o->plot, resolve_scenario(assets, o->scenario), "--plot");
+    if (!o->csv.empty() && !o->plot.empty() && std::filesystem::path(o->csv) == std::filesystem::path(o->plot))
+      throw InputError("--csv " + o->csv + " --plot " + o->plot + ": the CSV and the plot would overwrite each other");
     // The grid sets e and mu: a --set of either would be overwritten without a word.
     for (const auto& set : o->sets)
       for (const char* key : {"impact.e=", "impact.mu="})
@@ -67,6 +76,13 @@ RunFn setup_sweep(CLI::App& sub) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto result = run_sweep(base, so);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    DisplayUnits u;
+    u.system = system;
+    u.distance = base.resolved.sport->distance_unit;
+    if (!o->plot.empty()) {
+      write_sweep_plot(result, so, u, o->scenario, o->plot);
+      std::cerr << "sweep: heatmaps written to " << o->plot << "\n";
+    }
     if (!o->csv.empty()) {
       write_file_atomic(o->csv, sweep_csv(result));
       std::cout << "sweep: " << result.size() << " points of " << o->scenario << " written to " << o->csv << " in "
@@ -77,9 +93,6 @@ RunFn setup_sweep(CLI::App& sub) {
     // sport's distance unit in imperial), angles in degrees, spin in rpm. "cont" is the
     // solver's contact (grip: the patch stuck at some time); "mu_eff" says whether µ still
     // acts here: "live" below the row's µ_grip, "none" above it (the launch stops changing).
-    DisplayUnits u;
-    u.system = system;
-    u.distance = base.resolved.sport->distance_unit;
     const std::string speed_head = std::string("ball ") + u.speed_unit();
     const std::string carry_head = std::string("carry ") + u.distance_unit();
     std::printf("%-7s %-7s %10s %10s %9s %9s %-5s %-6s %7s %10s\n", "e", "mu", speed_head.c_str(), "launch deg",

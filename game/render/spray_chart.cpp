@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "game/render/image.hpp"
+#include "game/render/canvas.hpp"
 
 namespace sweetspot {
 namespace {
@@ -12,33 +12,12 @@ namespace {
 constexpr int kSize = 800;
 constexpr double kMetresPerPixel = 150.0 / 700.0;  // 150 m (492 ft) of field over 700 px
 
-struct Canvas {
-  std::vector<std::uint8_t> rgba = std::vector<std::uint8_t>(static_cast<std::size_t>(kSize) * kSize * 4, 255);
-  void put(int x, int y, std::uint32_t c) {
-    if (x < 0 || y < 0 || x >= kSize || y >= kSize) return;
-    std::uint8_t* p = rgba.data() + (static_cast<std::size_t>(y) * kSize + x) * 4;
-    p[0] = static_cast<std::uint8_t>(c >> 16);
-    p[1] = static_cast<std::uint8_t>(c >> 8);
-    p[2] = static_cast<std::uint8_t>(c);
-    p[3] = 255;
-  }
-  void disc(double cx, double cy, double r, std::uint32_t c) {
-    for (int y = static_cast<int>(cy - r); y <= static_cast<int>(cy + r); ++y)
-      for (int x = static_cast<int>(cx - r); x <= static_cast<int>(cx + r); ++x)
-        if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) put(x, y, c);
-  }
-  void line(double x0, double y0, double x1, double y1, std::uint32_t c, double w = 1.5) {
-    const int n = static_cast<int>(std::hypot(x1 - x0, y1 - y0)) + 1;
-    for (int i = 0; i <= n; ++i) disc(x0 + (x1 - x0) * i / n, y0 + (y1 - y0) * i / n, w, c);
-  }
-};
-
 // Field metres (x toward centre field, z toward first base) to pixels: home plate at the
 // bottom centre, centre field up, first base to the right.
 double px(const Vec3& p) { return kSize / 2.0 + p.z() / kMetresPerPixel; }
 double py(const Vec3& p) { return kSize - 50.0 - p.x() / kMetresPerPixel; }
 
-std::uint32_t colour(BattedOutcome o) {
+Rgb colour(BattedOutcome o) {
   switch (o) {
     case BattedOutcome::HomeRun: return 0xD62828;
     case BattedOutcome::Triple: return 0xF77F00;
@@ -54,10 +33,8 @@ std::uint32_t colour(BattedOutcome o) {
 }  // namespace
 
 void write_spray_chart(const Assets& assets, const std::vector<SwingRecord>& swings, const std::filesystem::path& png) {
-  Canvas c;
   // Grass, the infield dirt, the foul lines and the fence of the ballpark.
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) c.put(x, y, 0x4F8A3C);
+  Canvas c(kSize, kSize, 0x4F8A3C);
   const Vec3 home = Vec3::Zero();
   c.disc(px(Vec3(18.44, 0, 0)), py(Vec3(18.44, 0, 0)), 29.0 / kMetresPerPixel, 0x9C6B46);
   const double far = 140.0;
@@ -75,7 +52,19 @@ void write_spray_chart(const Assets& assets, const std::vector<SwingRecord>& swi
     c.disc(px(p), py(p), 6.0, 0x000000);
     c.disc(px(p), py(p), 4.5, colour(s.result.outcome));
   }
-  write_png_atomic(png, kSize, kSize, c.rgba);
+  // Legend: each outcome's colour and how many balls in play had it.
+  int y = kSize - 20 * 6 - 8;
+  c.rect(8, y - 8, 150, kSize - 8, 0x3E6E30);
+  for (const BattedOutcome o : {BattedOutcome::HomeRun, BattedOutcome::Triple, BattedOutcome::Double,
+                                BattedOutcome::Single, BattedOutcome::Out, BattedOutcome::Foul}) {
+    const auto n = std::count_if(swings.begin(), swings.end(),
+                                 [&](const SwingRecord& s) { return s.result.contact && s.result.outcome == o; });
+    c.disc(24, y + 6, 6.0, 0x000000);
+    c.disc(24, y + 6, 4.5, colour(o));
+    c.text(38, y, std::string(to_string(o)) + " " + std::to_string(n), 0xFFFFFF);
+    y += 20;
+  }
+  c.write_png(png);
 }
 
 }  // namespace sweetspot

@@ -3,6 +3,7 @@
 # no progress line when stderr is not a terminal, the grid bound checked before any work.
 set -euo pipefail
 bin="$1"
+root="${SWEETSPOT_ROOT:?}"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -38,6 +39,23 @@ for r in csv.DictReader(open(sys.argv[1])):
     g = float(r["mu_grip"])
     assert r["grips"] == ("true" if float(r["mu"]) >= g else "false"), r
 PY
+
+# --plot: a 1200 x 940 PNG beside the CSV; never over the scenario file.
+"$bin" sweep golf/7-iron --e 0.7:0.9:3 --mu 0:0.3:4 --csv "$tmp/p.csv" --plot "$tmp/p.png" >/dev/null 2>&1
+python3 - "$tmp/p.png" <<'PY' || fail "--plot PNG"
+import struct, sys
+b = open(sys.argv[1], "rb").read()
+assert b[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+w, h = struct.unpack(">II", b[16:24])
+assert (w, h) == (1200, 940), (w, h)
+assert len(b) > 20000, "a nearly blank image: %d bytes" % len(b)
+PY
+cp "$root/assets/scenarios/golf/7-iron.toml" "$tmp/s.toml"
+set +e
+"$bin" sweep "$tmp/s.toml" --e 0.7:0.9:2 --mu 0:0.3:2 --plot "$tmp/s.toml" >/dev/null 2>"$tmp/err"; rc=$?
+set -e
+[ $rc -eq 2 ] && grep -q -- "--plot" "$tmp/err" || fail "--plot over the scenario: exit $rc"
+cmp -s "$tmp/s.toml" "$root/assets/scenarios/golf/7-iron.toml" || fail "--plot overwrote the scenario"
 
 set +e
 "$bin" sweep golf/driver --e 0:1:1000 --mu 0:1:1000 --csv "$tmp/big.csv" >/dev/null 2>"$tmp/err"; rc=$?

@@ -1,6 +1,7 @@
 // The metric registry. Display conversions happen here and in the other report writers only.
 #include "game/report/metrics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -141,22 +142,37 @@ Metric plain(std::string_view id, std::string_view label, std::function<bool(con
   return m;
 }
 
-// Statcast columns: fixed imperial units, Statcast's names, whatever --units says.
+// Statcast columns: Statcast's names and units (mph, ft) in imperial; with --units metric
+// the speed and distance columns are SI and say so in their name (launch_speed_mps,
+// hit_distance_sc_m). Angles, rpm and seconds are the same in both.
+enum class StatcastKind { Speed, Distance, Same };
+
 Metric statcast(std::string_view id, std::string_view column, std::function<bool(const ShotResult&)> has,
-                std::function<double(const ShotResult&)> value) {
+                StatcastKind kind, std::function<double(const ShotResult&)> si) {
   Metric m;
   m.id = id;
   m.label = column;
-  m.number = [=](const ShotResult& r, const DisplayUnits&) -> std::optional<double> {
+  m.number = [=](const ShotResult& r, const DisplayUnits& u) -> std::optional<double> {
     if (!has(r)) return std::nullopt;
-    return value(r);
+    const double v = si(r);
+    switch (kind) {
+      case StatcastKind::Speed: return u.imperial() ? mps_to_mph(v) : v;
+      case StatcastKind::Distance: return u.imperial() ? m_to_ft(v) : v;
+      case StatcastKind::Same: break;
+    }
+    return v;
   };
   m.show = [n = m.number](const ShotResult& r, const DisplayUnits& u) -> std::optional<std::string> {
     const auto v = n(r, u);
     if (!v) return std::nullopt;
     return num(*v);
   };
-  m.csv_name = [=](const DisplayUnits&) { return std::string(column); };
+  m.csv_name = [=](const DisplayUnits& u) {
+    std::string name(column);
+    if (u.imperial() || kind == StatcastKind::Same) return name;
+    if (name.size() > 3 && name.compare(name.size() - 3, 3, "_ft") == 0) name.resize(name.size() - 3);
+    return name + (kind == StatcastKind::Speed ? "_mps" : "_m");
+  };
   m.csv_value = [n = m.number](const ShotResult& r, const DisplayUnits& u) {
     const auto v = n(r, u);
     return v ? num(*v) : std::string();
@@ -165,6 +181,8 @@ Metric statcast(std::string_view id, std::string_view column, std::function<bool
 }
 
 const auto always = [](const ShotResult&) { return true; };
+
+
 
 std::vector<Metric> build() {
   std::vector<Metric> m;
@@ -176,9 +194,9 @@ std::vector<Metric> build() {
                     [](const ShotResult& r) { return r.launch.ball_speed; }, "ball_speed"));
   m.push_back(plain("smash_factor", "Smash factor", struck, [](const ShotResult& r) { return r.smash_factor; }, 2, "",
                     "smash_factor", "smash_factor"));
-  m.push_back(angle("launch_angle", "Launch angle", "launch_angle", always,
+  m.push_back(angle("launch_angle", "Launch angle", "vertical_angle", always,
                     [](const ShotResult& r) { return r.launch.vertical_angle; }, "", "vertical_angle"));
-  m.push_back(angle("launch_direction", "Launch direction", "launch_direction", always,
+  m.push_back(angle("launch_direction", "Launch direction", "horizontal_angle", always,
                     [](const ShotResult& r) { return r.launch.horizontal_angle; }, "(+ right)", "horizontal_angle"));
   m.push_back(angle("spray_angle", "Spray angle", "spray_angle", always,
                     [](const ShotResult& r) { return r.launch.horizontal_angle; }, "(+ right field)", "horizontal_angle"));
@@ -213,8 +231,15 @@ std::vector<Metric> build() {
   // ---- bat delivery ------------------------------------------------------------------
   m.push_back(speed("bat_speed", "Bat speed", "bat_speed", bat, [](const ShotResult& r) { return r.bat.speed; }));
   m.push_back(speed("pitch_speed", "Pitch speed", "pitch_speed", bat, [](const ShotResult& r) { return r.bat.pitch_speed; }));
-  m.push_back(angle("swing_plane", "Swing plane", "swing_plane", bat, [](const ShotResult& r) { return r.bat.attack_angle; }));
-  m.push_back(angle("swing_direction", "Swing direction", "swing_direction", bat,
+  // The batting convention (Nathan, "The Physics of Baseball"; Statcast's "collision
+  // efficiency"): q = (EV − bat)/(pitch + bat), so EV = q·pitch + (1 + q)·bat; a
+  // golf-style exit/bat speed ratio mixes the pitch's speed into the bat's.
+  m.push_back(plain("collision_efficiency", "Collision efficiency q", bat, collision_efficiency, 3, "",
+                    "collision_efficiency"));
+  // Statcast's bat-tracking words (2024): attack angle and attack direction; the JSON says
+  // bat.attack_angle_deg and bat.direction_deg.
+  m.push_back(angle("swing_plane", "Attack angle", "attack_angle", bat, [](const ShotResult& r) { return r.bat.attack_angle; }));
+  m.push_back(angle("swing_direction", "Attack direction", "attack_direction", bat,
                     [](const ShotResult& r) { return r.bat.direction; }, "(+ right field)"));
   m.push_back(plain("undercut", "Undercut", bat, [](const ShotResult& r) { return r.bat.undercut * 1000.0; }, 1, "mm",
                     "undercut_mm"));
@@ -235,6 +260,11 @@ std::vector<Metric> build() {
                     "s", "hang_time_s", "hang_time"));
   m.push_back(distance("lateral", "Lateral", "lateral", [](const ShotResult& r) { return r.trajectory.summary.lateral_m; },
                        "lateral"));
+  // TrackMan's Side and Side Total: metres right (+) of the target line at landing and at rest.
+  m.push_back(distance("side", "Side", "side", [](const ShotResult& r) { return side_of_aim(r, r.trajectory.summary.landing_position); },
+                       "", 1));
+  m.push_back(distance("side_total", "Side total", "side_total",
+                       [](const ShotResult& r) { return side_of_aim(r, r.trajectory.summary.rest_position); }, "", 1));
   m.push_back(text("end", "End", [](const ShotResult& r, const DisplayUnits&) {
     return std::optional<std::string>(to_string(r.end));
   }));
@@ -273,22 +303,28 @@ std::vector<Metric> build() {
   m.push_back(text("scenario", "Scenario", [](const ShotResult& r, const DisplayUnits&) {
     return std::optional<std::string>(r.scenario);
   }));
-  // ---- Statcast CSV columns (always imperial, Statcast's names) ------------------------
+  // ---- Statcast CSV columns (Statcast's names; imperial as Statcast, or SI) -------------
   // spray_angle, the spin, apex and hang-time columns are not in Statcast's CSV and use
-  // Statcast-style names.
+  // Statcast-style names; plate_speed is the pitch's speed as it meets the bat (Statcast's
+  // release_speed is measured at the hand, ~8 % faster).
   const auto& F = [](const ShotResult& r) -> const FlightSummary& { return r.trajectory.summary; };
-  m.push_back(statcast("sc_launch_speed", "launch_speed", always, [](const ShotResult& r) { return mps_to_mph(r.launch.ball_speed); }));
-  m.push_back(statcast("sc_launch_angle", "launch_angle", always, [](const ShotResult& r) { return r.launch.vertical_angle * kDeg; }));
-  m.push_back(statcast("sc_spray_angle", "spray_angle", always, [](const ShotResult& r) { return r.launch.horizontal_angle * kDeg; }));
-  m.push_back(statcast("sc_launch_spin_rate", "launch_spin_rate", always,
+  using K = StatcastKind;
+  m.push_back(statcast("sc_launch_speed", "launch_speed", always, K::Speed, [](const ShotResult& r) { return r.launch.ball_speed; }));
+  m.push_back(statcast("sc_launch_angle", "launch_angle", always, K::Same, [](const ShotResult& r) { return r.launch.vertical_angle * kDeg; }));
+  m.push_back(statcast("sc_spray_angle", "spray_angle", always, K::Same, [](const ShotResult& r) { return r.launch.horizontal_angle * kDeg; }));
+  m.push_back(statcast("sc_launch_spin_rate", "launch_spin_rate", always, K::Same,
                        [](const ShotResult& r) { return radps_to_rpm(r.launch.spin.total); }));
-  m.push_back(statcast("sc_hit_distance", "hit_distance_sc", always, [=](const ShotResult& r) { return m_to_ft(F(r).carry_m); }));
-  m.push_back(statcast("sc_apex", "apex_ft", always, [=](const ShotResult& r) { return m_to_ft(F(r).apex_m); }));
-  m.push_back(statcast("sc_hang_time", "hang_time", always, [=](const ShotResult& r) { return F(r).hang_time_s; }));
-  m.push_back(statcast("sc_bat_speed", "bat_speed", bat, [](const ShotResult& r) { return mps_to_mph(r.bat.speed); }));
-  m.push_back(statcast("sc_release_speed", "release_speed", bat, [](const ShotResult& r) { return mps_to_mph(r.bat.pitch_speed); }));
-  m.push_back(statcast("sc_release_spin_rate", "release_spin_rate", bat,
+  m.push_back(statcast("sc_hit_distance", "hit_distance_sc", always, K::Distance, [=](const ShotResult& r) { return F(r).carry_m; }));
+  m.push_back(statcast("sc_total_distance", "total_distance", always, K::Distance, [=](const ShotResult& r) { return F(r).total_m; }));
+  m.push_back(statcast("sc_apex", "apex_ft", always, K::Distance, [=](const ShotResult& r) { return F(r).apex_m; }));
+  m.push_back(statcast("sc_hang_time", "hang_time", always, K::Same, [=](const ShotResult& r) { return F(r).hang_time_s; }));
+  m.push_back(statcast("sc_bat_speed", "bat_speed", bat, K::Speed, [](const ShotResult& r) { return r.bat.speed; }));
+  m.push_back(statcast("sc_attack_angle", "attack_angle", bat, K::Same, [](const ShotResult& r) { return r.bat.attack_angle * kDeg; }));
+  m.push_back(statcast("sc_attack_direction", "attack_direction", bat, K::Same, [](const ShotResult& r) { return r.bat.direction * kDeg; }));
+  m.push_back(statcast("sc_plate_speed", "plate_speed", bat, K::Speed, [](const ShotResult& r) { return r.bat.pitch_speed; }));
+  m.push_back(statcast("sc_pitch_spin_rate", "pitch_spin_rate", bat, K::Same,
                        [](const ShotResult& r) { return radps_to_rpm(r.bat.pitch_spin); }));
+  m.push_back(plain("sc_collision_efficiency", "collision_efficiency", bat, collision_efficiency, 3, "", "collision_efficiency"));
   m.push_back(text("friction_model", "Friction model", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!struck(r)) return std::nullopt;
     return std::string(to_string(r.impact.friction));
@@ -327,16 +363,31 @@ std::string metric_ids() {
   return out;
 }
 
+double collision_efficiency(const ShotResult& r) {
+  const double closing = r.bat.pitch_speed + r.bat.speed;
+  return closing > 0.0 ? (r.launch.ball_speed - r.bat.speed) / closing : 0.0;
+}
+
+double side_of_aim(const ShotResult& r, const Vec3& p) {
+  const Vec3 right(-std::sin(r.aim), 0.0, std::cos(r.aim));
+  return (p - r.launch_state.position).dot(right);
+}
+
 std::string metric_table(const std::string& title, const std::vector<std::string>& rows, const ShotResult& r,
                          const DisplayUnits& u) {
   std::string out = title + "\n";
+  // The value column starts after the longest label (20 characters at least), so a long
+  // label never runs into its value.
+  std::size_t column = 22;
+  for (const std::string& id : rows)
+    if (const Metric* m = find_metric(id)) column = std::max(column, m->label.size() + 4);
   for (const std::string& id : rows) {
     const Metric* m = find_metric(id);
     if (m == nullptr) throw InputError("unknown launch-monitor metric '" + id + "' (allowed: " + metric_ids() + ")");
     const auto value = m->show(r, u);
     if (!value) continue;
     std::string line = "  " + std::string(m->label);
-    if (line.size() < 22) line.append(22 - line.size(), ' ');
+    line.append(column - line.size(), ' ');
     out += line + *value + "\n";
   }
   return out;

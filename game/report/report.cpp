@@ -1,10 +1,13 @@
 // Report writers. Display conversions happen here and only here.
 #include "game/report/report.hpp"
 
+#include "game/report/metrics.hpp"
+
 #include <cstdio>
 #include <vector>
 
 #include "game/report/flight_json.hpp"
+#include "game/report/metrics.hpp"
 #include "physics/error.hpp"
 #include "physics/math.hpp"
 #include "physics/units.hpp"
@@ -72,11 +75,15 @@ nlohmann::json shot_json(const ShotResult& r) {
           {"direction_deg", r.bat.direction * kDegPerRad},
           {"undercut_m", r.bat.undercut},
           {"pitch_speed_mps", r.bat.pitch_speed},
+          {"collision_efficiency", collision_efficiency(r)},
       };
     }
   }
   j["flight"] = flight_json(r.trajectory.summary);
   j["flight"]["end"] = to_string(r.end);
+  // TrackMan's Side / Side Total: from the target line, not the world axis (lateral_m).
+  j["flight"]["side_m"] = side_of_aim(r, r.trajectory.summary.landing_position);
+  j["flight"]["side_total_m"] = side_of_aim(r, r.trajectory.summary.rest_position);
   if (!r.warnings.empty()) j["warnings"] = r.warnings;
   return j;
 }

@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "game/report/metrics.hpp"
 #include "game/report/report.hpp"
 #include "physics/error.hpp"
 #include "physics/math.hpp"
@@ -170,4 +171,40 @@ TEST_CASE("every metric a sport's profile names exists, and a table row can be a
   CHECK_THAT(t, !Contains("Carry"));
   golf.report = {"no_such_metric"};
   CHECK_THROWS_WITH(launch_table(golf_shot(), golf, UnitSystem::Imperial), Contains("no_such_metric"));
+}
+
+TEST_CASE("one vocabulary: the CSV's golf columns are the JSON's names; baseball follows --units", "[report][units]") {
+  const SportProfile& golf = test::assets().sport("golf");
+  const SportProfile& baseball = test::assets().sport("baseball");
+  const std::string g = csv_header(golf, UnitSystem::Imperial);
+  CHECK_THAT(g, Contains("vertical_angle_deg") && Contains("horizontal_angle_deg") && Contains("side_yd") &&
+                    Contains("side_total_yd"));
+  CHECK(g.find("launch_angle_deg") == std::string::npos);
+  // Statcast's names and units in imperial; the SI columns say their unit in metric.
+  CHECK_THAT(csv_header(baseball, UnitSystem::Imperial), Contains(",launch_speed,") && Contains(",hit_distance_sc,") &&
+                                                            Contains(",apex_ft,") && Contains(",attack_angle,"));
+  CHECK_THAT(csv_header(baseball, UnitSystem::Metric), Contains(",launch_speed_mps,") &&
+                                                          Contains(",hit_distance_sc_m,") && Contains(",apex_m,") &&
+                                                          Contains(",launch_angle,"));
+}
+
+TEST_CASE("side and side total are measured from the target line, not the world axis", "[report][metrics]") {
+  ShotResult r = golf_shot();
+  r.launch_state.position = Vec3(10.0, 0.0, 20.0);
+  r.aim = 90.0 * kDeg;  // the target line runs along the world's +z
+  CHECK(side_of_aim(r, Vec3(10.0, 0.0, 220.0)) == Approx(0.0).margin(1e-12));  // on the line, 200 m out
+  CHECK(side_of_aim(r, Vec3(5.0, 0.0, 200.0)) == Approx(5.0));    // world -x is right of a +z target
+  r.aim = 0.0;
+  CHECK(side_of_aim(r, Vec3(200.0, 0.0, 17.0)) == Approx(-3.0));  // left of a +x target
+}
+
+TEST_CASE("batting's collision efficiency: EV = q pitch + (1 + q) bat (Nathan)", "[report][metrics]") {
+  ShotResult r = golf_shot();
+  r.bat.speed = mph_to_mps(70);
+  r.bat.pitch_speed = mph_to_mps(90);
+  const double q = 0.2;
+  r.launch.ball_speed = q * r.bat.pitch_speed + (1 + q) * r.bat.speed;  // 102 mph
+  CHECK(collision_efficiency(r) == Approx(q).epsilon(1e-12));
+  r.bat.pitch_speed = 0.0;  // a batting tee: q = EV/bat - 1
+  CHECK(collision_efficiency(r) == Approx(r.launch.ball_speed / r.bat.speed - 1.0).epsilon(1e-12));
 }

@@ -14,7 +14,9 @@
 #include "game/content/course_file.hpp"
 #include "game/content/swings_file.hpp"
 #include "game/modes/golf/bot.hpp"
+#include "game/render/dispersion_plot.hpp"
 #include "game/report/round_json.hpp"
+#include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot::cli {
@@ -28,6 +30,7 @@ struct RoundOptions {
   std::string mode = "stroke";
   int balls = 5;
   bool json = false;
+  std::string plot;
 };
 
 // The next stroke: from the script while it lasts, else the bot's.
@@ -64,6 +67,11 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
     }
   }
   const std::string name = o.swings.empty() ? skill + " bot" : "swings " + o.swings;
+  if (!o.plot.empty()) {
+    std::vector<StrokeRecord> strokes;
+    for (const HoleCard& h : round.card()) strokes.insert(strokes.end(), h.shots.begin(), h.shots.end());
+    write_dispersion_plot(strokes, name, DisplayUnits{}, o.plot);
+  }
   if (o.json) std::cout << json_text(round_json(round, name, o.seed)) << "\n";
   else std::cout << round_table(round, name);
   return 0;
@@ -84,11 +92,13 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
   GolfBot bot(assets, golfer_skill(skill), o.seed);
   nlohmann::json balls = nlohmann::json::array();
   double best = ctp ? 1e9 : 0.0;
+  std::vector<StrokeRecord> contest_strokes;
   for (int i = 0; i < o.balls; ++i) {
     GolfRound round(assets, one, golfer_skill(skill));
     StrokeInput in = bot.plan(round);
     if (!ctp) in.club = "driver";
     const StrokeRecord& r = round.play(in);
+    contest_strokes.push_back(r);
     const bool in_play = r.end == StrokeEnd::Rest || r.end == StrokeEnd::Holed;
     const double line = std::atan2(hole.pin.z() - hole.tee.z(), hole.pin.x() - hole.tee.x());
     const double along = (r.rest.x() - hole.tee.x()) * std::cos(line) + (r.rest.z() - hole.tee.z()) * std::sin(line);
@@ -99,6 +109,9 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
   nlohmann::json j = {{"mode", o.mode}, {"course", course.name}, {"hole", hole.world_name}, {"player", skill + " bot"},
                       {"seed", o.seed}, {"balls", balls}};
   if ((ctp && best < 1e9) || (!ctp && best > 0.0)) j[ctp ? "best_to_pin_m" : "best_distance_m"] = best;
+  if (!o.plot.empty())
+    write_dispersion_plot(contest_strokes, std::string(ctp ? "closest to the pin, " : "long drive, ") + skill + " bot",
+                          DisplayUnits{}, o.plot);
   if (o.json) {
     std::cout << json_text(j) << "\n";
   } else {
@@ -122,11 +135,13 @@ RunFn setup_round(CLI::App& sub) {
   sub.add_option("--mode", o->mode, "stroke (default), ctp (closest to the pin) or long-drive");
   sub.add_option("--balls", o->balls, "balls for ctp and long-drive, 1..100 (default 5)");
   sub.add_flag("--json", o->json, "print the DESIGN §9 JSON");
+  sub.add_option("--plot", o->plot, "also write the session's dispersion (carry vs side per club) to FILE.png");
   return [o](const Assets& assets) -> int {
     if (o->mode != "stroke" && o->mode != "ctp" && o->mode != "long-drive")
       throw InputError("--mode " + o->mode + ": unknown mode (allowed: stroke, ctp, long-drive)");
     if (o->balls < 1 || o->balls > 100) throw InputError("--balls " + std::to_string(o->balls) + " is out of range (allowed [1, 100])");
     if (!o->bot.empty()) golfer_skill(o->bot);  // refuse an unknown skill before any work
+    if (!o->plot.empty() && !o->swings.empty()) refuse_output_over_input(o->plot, o->swings, "--plot");
     return o->mode == "stroke" ? play_stroke_round(assets, *o) : play_contest(assets, *o);
   };
 }

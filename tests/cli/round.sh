@@ -82,4 +82,15 @@ j = json.load(sys.stdin); assert j["mode"] == "ctp" and len(j["balls"]) == 3 and
 "$bin" round --mode long-drive --balls 3 --json | python3 -c '
 import json, sys
 j = json.load(sys.stdin); assert j["mode"] == "long-drive" and j["best_distance_m"] > 200, j' || fail "long drive"
+# --plot: the session's dispersion as a 900 x 800 PNG, with the scorecard as usual.
+plot_dir=$(mktemp -d)
+"$bin" round --bot amateur --seed 2 --plot "$plot_dir/d.png" | grep -q "^total" || fail "--plot lost the scorecard"
+"$bin" round --mode long-drive --balls 4 --plot "$plot_dir/ld.png" >/dev/null || fail "long-drive --plot"
+python3 - "$plot_dir/d.png" "$plot_dir/ld.png" <<'PY' || fail "--plot PNG"
+import struct, sys
+for f in sys.argv[1:]:
+    b = open(f, "rb").read()
+    assert b[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", b[16:24]) == (900, 800), f
+PY
+rm -rf "$plot_dir"
 echo "round: ok"

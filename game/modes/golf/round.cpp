@@ -1,8 +1,11 @@
 #include "game/modes/golf/round.hpp"
 
+#include "game/report/metrics.hpp"
+
 #include <algorithm>
 #include <cmath>
 
+#include "game/report/metrics.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -126,6 +129,8 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
   rec.lie = resolved.start_surface;
   rec.start = resolved.ball_centre;
   rec.rest = r.trajectory.summary.rest_position;
+  rec.carry_m = r.trajectory.summary.carry_m;
+  rec.side_m = side_of_aim(r, r.trajectory.summary.landing_position);
   ++h.strokes;
   if (rec.lie == "green") ++h.putts;
   switch (r.end) {

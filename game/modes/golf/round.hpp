@@ -32,6 +32,8 @@ struct StrokeRecord {
   Vec3 rest = Vec3::Zero();   ///< m, where it came to rest (in the water or out of bounds: there)
   StrokeEnd end = StrokeEnd::Rest;
   double to_pin_m = 0.0;      ///< m from the rest position to the cup (0 when holed)
+  double carry_m = 0.0;       ///< m to the first landing
+  double side_m = 0.0;        ///< m right (+) of the stroke's aim line at landing (TrackMan's Side)
   int penalty = 0;            ///< penalty strokes this shot incurred
 };
 

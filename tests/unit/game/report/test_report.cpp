@@ -2,8 +2,10 @@
 // and display-unit conversion in the launch-monitor table.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <sstream>
 
+#include "game/content/scenario.hpp"
 #include "game/report/metrics.hpp"
 #include "game/report/report.hpp"
 #include "physics/error.hpp"
@@ -207,4 +209,15 @@ TEST_CASE("batting's collision efficiency: EV = q pitch + (1 + q) bat (Nathan)",
   CHECK(collision_efficiency(r) == Approx(q).epsilon(1e-12));
   r.bat.pitch_speed = 0.0;  // a batting tee: q = EV/bat - 1
   CHECK(collision_efficiency(r) == Approx(r.launch.ball_speed / r.bat.speed - 1.0).epsilon(1e-12));
+}
+
+TEST_CASE("the JSON reports the restitution the solver used, the nominal e_t beside it", "[report][impact]") {
+  // The compliant driver: its contact makes its own tangential restitution.
+  const ShotResult r = run_scenario(load_scenario(test::assets(), "golf/driver", {"world.name=none"}), RunOptions{false, false});
+  const auto j = shot_json(r);
+  CHECK(j["impact"]["e"].get<double>() == r.impact.e);
+  CHECK(j["impact"]["e_t"].get<double>() == r.impact.e_t);
+  CHECK(j["impact"]["e_t_nominal"].get<double>() == 0.25);  // clubs.toml [face] e_t
+  CHECK(std::fabs(r.impact.e_t - 0.25) > 0.01);              // what the contact produced differs
+  CHECK(r.impact.e < 0.83);  // the USGA-limit face at the driver's ~49.5 m/s normal speed, 11.5 mm up
 }

@@ -21,7 +21,8 @@ namespace sweetspot {
 namespace {
 
 constexpr float kLeftWidth = 360.0f;
-constexpr float kRightWidth = 380.0f;
+constexpr float kRightWidth = 420.0f;
+constexpr float kMonitorHeight = 416.0f;  // the Launch monitor panel; the Trajectory panel sits below it
 
 // A slider over a scenario key's value (SI) shown in the key's display unit, bounded by the
 // key's one range (the physics parameter's, through the schema); on change writes the
@@ -201,8 +202,8 @@ bool shot_panel(PanelContext& c) {
     }
     const BatStrike& b = std::get<BatStrike>(s.spec.strike);
     changed |= slider(st, k, "bat speed", "swing.speed", b.swing.bat_speed);
-    changed |= slider(st, k, "swing plane", "swing.attack_angle", b.swing.attack_angle);
-    changed |= slider(st, k, "direction", "swing.direction", b.swing.direction);
+    changed |= slider(st, k, "attack angle", "swing.attack_angle", b.swing.attack_angle);
+    changed |= slider(st, k, "attack direction", "swing.direction", b.swing.direction);
     changed |= slider(st, k, "pitch speed", "pitch.speed", b.pitch.speed);
     changed |= slider(st, k, "pitch spin", "pitch.spin", b.pitch.spin, "%.0f");
     ImGui::Text("impact: %.1f in from tip, undercut %+.0f mm", b.swing.impact_from_tip / 0.0254, b.swing.undercut * 1000);
@@ -309,14 +310,28 @@ void monitor_panel(PanelContext& c) {
   const SportProfile& sport = *s.resolved.sport;
   const float x = ImGui::GetIO().DisplaySize.x - kRightWidth - 8;
   ImGui::SetNextWindowPos(ImVec2(x, 8), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(kRightWidth, 0), ImGuiCond_Always);
+  // Fixed height down to the Trajectory panel; the rows scroll (the impact rows are last).
+  ImGui::SetNextWindowSize(ImVec2(kRightWidth, kMonitorHeight), ImGuiCond_Always);
   ImGui::Begin("Launch monitor", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+  // Warnings first, where they are seen (values outside what labs measure, energy created,
+  // spin past the aero fits), as `shot` prints them.
+  for (const std::string& w : r.warnings) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    ImGui::TextWrapped("warning: %s", w.c_str());
+    ImGui::PopStyleColor();
+  }
   const DisplayUnits u = display_units(sport, UnitSystem::Imperial);
-  if (ImGui::BeginTable("monitor", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
-    ImGui::TableSetupColumn("");
-    ImGui::TableSetupColumn("shot");
-    ImGui::TableSetupColumn("ref");
-    ImGui::TableSetupColumn("diff");
+  // The label column fits the longest label of this sport (no "Landing angl" cut-offs);
+  // the reference and difference columns fit a number; the shot's value takes the rest.
+  float label_width = 0.0f;
+  for (const std::string& id : sport.report)
+    if (const Metric* m = find_metric(id)) label_width = std::max(label_width, ImGui::CalcTextSize(std::string(m->label).c_str()).x);
+  const float number_width = ImGui::CalcTextSize("-0000.0").x;
+  if (ImGui::BeginTable("monitor", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, label_width);
+    ImGui::TableSetupColumn("shot", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("ref", ImGuiTableColumnFlags_WidthFixed, number_width);
+    ImGui::TableSetupColumn("diff", ImGuiTableColumnFlags_WidthFixed, number_width);
     ImGui::TableHeadersRow();
     // The sport's launch-monitor rows, with the scenario's expected value when it has one.
     for (const std::string& id : sport.report) {
@@ -350,7 +365,7 @@ void monitor_panel(PanelContext& c) {
 
 void trajectory_panel(PanelContext& c) {
   const float x = ImGui::GetIO().DisplaySize.x - kRightWidth - 8;
-  ImGui::SetNextWindowPos(ImVec2(x, 430), ImGuiCond_Always);
+  ImGui::SetNextWindowPos(ImVec2(x, 8 + kMonitorHeight + 6), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(kRightWidth, 0), ImGuiCond_Always);
   ImGui::Begin("Trajectory", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
   draw_trajectory_plots(c.result.trajectory, c.replay.time);

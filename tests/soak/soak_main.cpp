@@ -38,7 +38,7 @@ using namespace sweetspot;
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-using soak::Rng;
+using SoakRng = soak::Rng;  // not sweetspot::Rng, which it builds on
 
 struct Counts {
   long accepted = 0, refused_ok = 0, flight_refused = 0, world_shots = 0, misses = 0;
@@ -83,7 +83,7 @@ void check_flight(long i, const LaunchState& launch, const FlightSettings& setti
       fail(i, "non-finite trajectory sample at t = " + std::to_string(p.t));
 }
 
-Environment random_environment(Rng& r) {
+Environment random_environment(SoakRng& r) {
   Environment e;
   e.temperature = r.in(263.15, 318.15);  // -10..45 C
   e.altitude = r.in(0.0, 3000.0);
@@ -100,7 +100,7 @@ struct Worlds {
 
 // One shot; returns normally when it was accepted or correctly refused.
 void soak_one(long i, std::uint64_t seed, const EquipmentCatalog& eq, const Worlds& worlds, Counts& c) {
-  Rng r{seed ^ (static_cast<std::uint64_t>(i) * 0xD1B54A32D192ED03ULL)};
+  SoakRng r{seed ^ (static_cast<std::uint64_t>(i) * 0xD1B54A32D192ED03ULL)};
   const int kind = static_cast<int>(i % 4);  // golf delivery, baseball delivery, golf launch, baseball launch
   const bool golf = kind == 0 || kind == 2;
   const bool outside = r.below(8) == 0;

@@ -33,7 +33,7 @@ namespace {
 
 using namespace sweetspot;
 
-using soak::Rng;
+using SoakRng = soak::Rng;  // not sweetspot::Rng, which it builds on
 
 // A heightfield on an nx x nz grid of square cells over x in [x0, x0 + nx h], z centred.
 struct Field {
@@ -53,7 +53,7 @@ struct Field {
   }
 };
 
-Field random_field(Rng& g) {
+Field random_field(SoakRng& g) {
   Field f;
   f.nx = 40;
   f.nz = 16;
@@ -87,7 +87,7 @@ Field random_field(Rng& g) {
   return f;
 }
 
-WorldDescription describe(const Field& f, Rng& g) {
+WorldDescription describe(const Field& f, SoakRng& g) {
   WorldDescription d;
   d.name = "soak";
   d.materials = test::assets().materials();
@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
   long flown = 0, failures = 0, rest = 0, left = 0, cup = 0, dipped = 0;
   double worst_dip = 0.0;
   for (long w = first; w < first + count; ++w) {
-    Rng g{seed * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(w)};
+    SoakRng g{seed * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(w)};
     const Field field = random_field(g);
     World world(describe(field, g));
     for (long s = 0; s < shots; ++s) {

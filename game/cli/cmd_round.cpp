@@ -70,7 +70,7 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
   if (!o.plot.empty()) {
     std::vector<StrokeRecord> strokes;
     for (const HoleCard& h : round.card()) strokes.insert(strokes.end(), h.shots.begin(), h.shots.end());
-    write_dispersion_plot(strokes, name, DisplayUnits{}, o.plot);
+    write_dispersion_plot(strokes, name, display_units(assets.sport("golf"), UnitSystem::Imperial), o.plot);
   }
   if (o.json) std::cout << json_text(round_json(round, name, o.seed)) << "\n";
   else std::cout << round_table(round, name);
@@ -111,7 +111,7 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
   if ((ctp && best < 1e9) || (!ctp && best > 0.0)) j[ctp ? "best_to_pin_m" : "best_distance_m"] = best;
   if (!o.plot.empty())
     write_dispersion_plot(contest_strokes, std::string(ctp ? "closest to the pin, " : "long drive, ") + skill + " bot",
-                          DisplayUnits{}, o.plot);
+                          display_units(assets.sport("golf"), UnitSystem::Imperial), o.plot);
   if (o.json) {
     std::cout << json_text(j) << "\n";
   } else {

@@ -14,6 +14,7 @@
 #include "game/content/scenario_schema.hpp"
 #include "game/render/sweep_plot.hpp"
 #include "game/report/metrics.hpp"
+#include "game/report/report.hpp"
 #include "game/tuning/sweep.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/units.hpp"
@@ -76,9 +77,7 @@ RunFn setup_sweep(CLI::App& sub) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto result = run_sweep(base, so);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    DisplayUnits u;
-    u.system = system;
-    u.distance = base.resolved.sport->distance_unit;
+    const DisplayUnits u = display_units(*base.resolved.sport, system);
     if (!o->plot.empty()) {
       write_sweep_plot(result, so, u, o->scenario, o->plot);
       std::cerr << "sweep: heatmaps written to " << o->plot << "\n";

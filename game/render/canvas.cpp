@@ -69,6 +69,11 @@ void Canvas::disc(double cx, double cy, double r, Rgb c) {
       if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) put(x, y, c);
 }
 
+void Canvas::marker(double cx, double cy, double outer, double inner, Rgb fill, Rgb ring) {
+  disc(cx, cy, outer, ring);
+  disc(cx, cy, inner, fill);
+}
+
 void Canvas::line(double x0, double y0, double x1, double y1, Rgb c, double half_width) {
   const int n = static_cast<int>(std::hypot(x1 - x0, y1 - y0)) + 1;
   for (int i = 0; i <= n; ++i) disc(x0 + (x1 - x0) * i / n, y0 + (y1 - y0) * i / n, half_width, c);

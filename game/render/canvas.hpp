@@ -21,6 +21,8 @@ class Canvas {
   void put(int x, int y, Rgb c);
   void rect(int x0, int y0, int x1, int y1, Rgb c);  ///< filled, [x0, x1) × [y0, y1)
   void disc(double cx, double cy, double r, Rgb c);
+  /// A chart marker: a disc of `fill` with radius `inner` inside a `ring` out to `outer`.
+  void marker(double cx, double cy, double outer, double inner, Rgb fill, Rgb ring = 0x000000);
   void line(double x0, double y0, double x1, double y1, Rgb c, double half_width = 1.5);
   /// Text with its top-left at (x, y), each font pixel drawn `scale` × `scale`; ASCII only
   /// (other bytes draw the font's fallback). Returns the width drawn, px.

@@ -56,8 +56,7 @@ void write_dispersion_plot(const std::vector<StrokeRecord>& strokes, const std::
   for (const auto* s : full) {
     const auto k = static_cast<std::size_t>(std::find(clubs.begin(), clubs.end(), s->club) - clubs.begin());
     const double x = X(u.dist(s->side_m)), y = Y(u.dist(s->carry_m));
-    c.disc(x, y, 6.0, 0x000000);
-    c.disc(x, y, 4.5, kClubColours[k % std::size(kClubColours)]);
+    c.marker(x, y, 6.0, 4.5, kClubColours[k % std::size(kClubColours)]);
   }
   c.text(x0, y1 + 8, fmt(-side_max) + " (left)", kInk);
   const std::string right = fmt(side_max) + " (right)";
@@ -70,8 +69,7 @@ void write_dispersion_plot(const std::vector<StrokeRecord>& strokes, const std::
     int n = 0;
     for (const auto* s : full)
       if (s->club == clubs[k]) carry += u.dist(s->carry_m), side += u.dist(s->side_m), ++n;
-    c.disc(x1 + 22, y + 6, 6.0, 0x000000);
-    c.disc(x1 + 22, y + 6, 4.5, kClubColours[k % std::size(kClubColours)]);
+    c.marker(x1 + 22, y + 6, 6.0, 4.5, kClubColours[k % std::size(kClubColours)]);
     c.text(x1 + 34, y, clubs[k] + " x" + std::to_string(n), kInk);
     char b[64];
     std::snprintf(b, sizeof b, "%.0f, %+.1f", carry / n, side / n);

@@ -49,8 +49,7 @@ void write_spray_chart(const Assets& assets, const std::vector<SwingRecord>& swi
     const FlightSummary& f = s.result.shot.trajectory.summary;
     const bool air = s.result.outcome == BattedOutcome::HomeRun || f.carry_m > 40.0;
     const Vec3 p = air ? f.landing_position : f.rest_position;
-    c.disc(px(p), py(p), 6.0, 0x000000);
-    c.disc(px(p), py(p), 4.5, colour(s.result.outcome));
+    c.marker(px(p), py(p), 6.0, 4.5, colour(s.result.outcome));
   }
   // Legend: each outcome's colour and how many balls in play had it.
   int y = kSize - 20 * 6 - 8;
@@ -59,8 +58,7 @@ void write_spray_chart(const Assets& assets, const std::vector<SwingRecord>& swi
                                 BattedOutcome::Single, BattedOutcome::Out, BattedOutcome::Foul}) {
     const auto n = std::count_if(swings.begin(), swings.end(),
                                  [&](const SwingRecord& s) { return s.result.contact && s.result.outcome == o; });
-    c.disc(24, y + 6, 6.0, 0x000000);
-    c.disc(24, y + 6, 4.5, colour(o));
+    c.marker(24, y + 6, 6.0, 4.5, colour(o));
     c.text(38, y, std::string(to_string(o)) + " " + std::to_string(n), 0xFFFFFF);
     y += 20;
   }

@@ -137,8 +137,7 @@ void dispersion(Canvas& c, const Box& b, const std::vector<SweepPoint>& pts, con
     const double x = b.x0 + (xs[k] - x_lo) / (x_hi - x_lo) * (b.x1 - b.x0);
     const double y = b.y1 - (ys[k] - y_lo) / (y_hi - y_lo) * (b.y1 - b.y0);
     const double t = o.e.to > o.e.from ? (pts[k].e - o.e.from) / (o.e.to - o.e.from) : 0.5;
-    c.disc(x, y, 4.5, kInk);
-    c.disc(x, y, 3.5, ramp(t));
+    c.marker(x, y, 4.5, 3.5, ramp(t), kInk);
   }
   c.text(b.x0, b.y1 + 6, fmt(x_lo, 1) + " (left)", kInk);
   const std::string r = fmt(x_hi, 1) + " (right)";

@@ -8,23 +8,43 @@
 #include "physics/units.hpp"
 
 namespace sweetspot {
-AeroCoefficients AeroModel::coefficients(double s, double spin, double re) const {
-  const double sc = std::min(s, s_max);
+namespace {
+
+// The coefficient and spin-decay laws, inlined into aero_effect: it runs ~120 times per golf
+// shot inside the integrator (issue 22), where a call and a dependent chain of divisions
+// were a fifth of a shot's time.
+[[gnu::always_inline]] inline AeroCoefficients coefficients_of(const AeroModel& m, double s, double spin, double re) {
+  const double sc = std::min(s, m.s_max);
   AeroCoefficients c;
-  c.cd = d0 + d1 * sc + d2 * sc * sc + d_krpm * (radps_to_rpm(spin) / 1000.0);
-  if (crisis_rise > 0.0) c.cd += crisis_rise / (1.0 + std::exp(std::clamp((re - crisis_re) / crisis_width, -50.0, 50.0)));
-  switch (lift) {
-    case LiftLaw::Quadratic: c.cl = l0 + l1 * sc + l2 * sc * sc; break;
-    case LiftLaw::Power: c.cl = sc > 0.0 ? l1 * std::pow(sc, l2) : 0.0; break;
-    case LiftLaw::Saturating: c.cl = l1 * sc / (l0 + l2 * sc); break;
+  c.cd = m.d0 + m.d1 * sc + m.d2 * sc * sc;
+  if (m.d_krpm != 0.0) c.cd += m.d_krpm * (radps_to_rpm(spin) / 1000.0);
+  if (m.crisis_rise > 0.0) {
+    // Above the crisis by more than kCrisisTail widths the term is under rise·e^-40 ≈ 4e-18·rise,
+    // far below one ulp of any Cd (> 0.05): skip the exp.
+    constexpr double kCrisisTail = 40.0;
+    const double x = (re - m.crisis_re) / m.crisis_width;
+    if (x < kCrisisTail) c.cd += m.crisis_rise / (1.0 + std::exp(std::max(x, -50.0)));
   }
-  if (lift_onset > 0.0 && sc < lift_onset) c.cl *= sc / lift_onset;
+  switch (m.lift) {
+    case LiftLaw::Quadratic: c.cl = m.l0 + m.l1 * sc + m.l2 * sc * sc; break;
+    case LiftLaw::Power: c.cl = sc > 0.0 ? m.l1 * std::pow(sc, m.l2) : 0.0; break;
+    case LiftLaw::Saturating: c.cl = m.l1 * sc / (m.l0 + m.l2 * sc); break;
+  }
+  if (m.lift_onset > 0.0 && sc < m.lift_onset) c.cl *= sc / m.lift_onset;
   return c;
 }
 
-double AeroModel::spin_decay_rate(double speed) const {
-  return decay_per_metre * speed + (decay_tau > 0.0 ? 1.0 / decay_tau : 0.0);
+[[gnu::always_inline]] inline double spin_decay_rate_of(const AeroModel& m, double speed) {
+  return m.decay_per_metre * speed + (m.decay_tau > 0.0 ? 1.0 / m.decay_tau : 0.0);
 }
+
+}  // namespace
+
+AeroCoefficients AeroModel::coefficients(double s, double spin, double re) const {
+  return coefficients_of(*this, s, spin, re);
+}
+
+double AeroModel::spin_decay_rate(double speed) const { return spin_decay_rate_of(*this, speed); }
 
 const char* to_string(LiftLaw l) {
   switch (l) {
@@ -69,17 +89,20 @@ AeroEffect aero_effect(const AeroModel& model, double density, double radius, co
                        const Vec3& omega, double viscosity) {
   AeroEffect fx;
   const double speed = v_rel.norm();
-  const double spin = omega.norm();
-  fx.spin_rate = -model.spin_decay_rate(speed) * omega;
+  fx.spin_rate = -spin_decay_rate_of(model, speed) * omega;
   if (speed <= 0.0) return fx;
+  const double inv_speed = 1.0 / speed;
+  const double spin = model.d_krpm != 0.0 ? omega.norm() : 0.0;  // only the Nathan drag term reads it
   const Vec3 lift_dir_unnorm = omega.cross(v_rel);  // |ω × v_r| = ω⊥ |v_r|
-  const double w_perp = lift_dir_unnorm.norm() / speed;
-  const double s = radius * w_perp / speed;
-  const double re = density * speed * 2.0 * radius / viscosity;
-  const AeroCoefficients c = model.coefficients(s, spin, re);
+  const double cross_norm = lift_dir_unnorm.norm();
+  const double w_perp = cross_norm * inv_speed;
+  const double s = radius * w_perp * inv_speed;
+  const double re = speed * (density * 2.0 * radius / viscosity);
+  const AeroCoefficients c = coefficients_of(model, s, spin, re);
   const double q_area = 0.5 * density * kPi * radius * radius;  // ½ρA
   fx.force = -q_area * c.cd * speed * v_rel;
-  if (w_perp > 0.0) fx.force += q_area * c.cl * speed * speed * (lift_dir_unnorm / (w_perp * speed));
+  // Lift ½ρA·Cl·|v_r|² along (ω × v_r)/|ω × v_r|.
+  if (cross_norm > 0.0) fx.force += (q_area * c.cl * speed * speed / cross_norm) * lift_dir_unnorm;
   return fx;
 }
 

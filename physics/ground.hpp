@@ -151,6 +151,11 @@ class Terrain {
   virtual bool inside(const Vec3& centre) const = 0;
   /// Height (m) of the ground reference for wind profiles and carry (flat ground: 0).
   virtual double reference_height() const { return 0.0; }
+  /// The normal a bounce at contact `c` uses: the surface the facets approximate, smooth
+  /// across the edges between faces of one surface (flat ground: c.normal). A ball landing
+  /// a hair to either side of an edge between two slightly different facets then bounces
+  /// alike, instead of in two directions ~0.1° apart that later hops amplify into cm.
+  virtual Vec3 bounce_normal(const SurfaceContact& c) const { return c.normal; }
 };
 
 /// The ground straight below (x, from_y, z), searching `depth` m down: the surface's contact

@@ -27,17 +27,16 @@ struct TriRef {
   int tri = -1;
 };
 
-/// Triangles of one material handed to Bullet. Bullet reads the arrays in place, so they
-/// must outlive the shape and never reallocate after it is built.
+/// Triangles of one material: one part of the world's single Bullet shape (the part index
+/// is the mesh index). Bullet reads the arrays in place, so they must outlive the shape and
+/// never reallocate after it is built.
 struct CollisionMesh {
   int material = 0;
   std::vector<double> vertices;  // xyz
   std::vector<int> indices;      // 3 per triangle
   std::vector<Vec3> normals;     // unit face normal per triangle
   std::vector<std::array<TriRef, 3>> neighbours;  // across edge k = (corner k, corner k+1), any mesh
-  std::unique_ptr<btTriangleIndexVertexArray> array;
-  std::unique_ptr<btBvhTriangleMeshShape> shape;
-  std::unique_ptr<btCollisionObject> object;
+  std::vector<std::array<Vec3, 3>> corner_normals;  // per corner: the smooth surface's normal (bounce_normal)
 
   Vec3 vertex(int tri, int corner) const {
     const auto i = static_cast<size_t>(indices[static_cast<size_t>(3 * tri + corner)]) * 3;
@@ -45,11 +44,25 @@ struct CollisionMesh {
   }
 };
 
+struct CellTriangle {
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  ///< the triangle's box
+  int mesh = 0;
+  int tri = 0;
+};
+
+/// Sweeps whose boxes cover more grid cells than this walk Bullet's tree instead.
+constexpr int kMaxGridCells = 16;
+
 }  // namespace
 
 struct World::Impl {
   WorldDescription desc;
   std::vector<CollisionMesh> meshes;
+  /// All meshes as the parts of one Bullet BVH: a query walks one tree, not one per
+  /// material (six trees on golf_hole made the sweeps a third of a shot's cost, issue 22).
+  std::unique_ptr<btTriangleIndexVertexArray> array;
+  std::unique_ptr<btBvhTriangleMeshShape> shape;
+  std::unique_ptr<btCollisionObject> object;
   int triangles = 0;
   /// m: below this no collidable triangle (nor the tee) can be reached again, so a ball
   /// under it has left the world whatever bounds the file declared (see inside()).
@@ -68,8 +81,17 @@ struct World::Impl {
   double cell = 4.0;
   double gx0 = 0.0, gz0 = 0.0;
   int nx = 0, nz = 0;
+  /// Per cell (compressed rows: cell c's entries are [cell_start[c], cell_start[c + 1])) the
+  /// collidable triangles whose boxes overlap it, with their boxes: a short sweep tests
+  /// these instead of walking Bullet's tree (a walk cost ~5k instructions on golf_hole's
+  /// 21k triangles, a cell's list ~10 box tests; issue 22). Exact either way: a triangle
+  /// whose box misses the sweep's box (which holds the whole swept sphere) cannot be hit.
+  std::vector<int> cell_start;
+  std::vector<CellTriangle> cell_triangles;
   std::vector<double> top;        // -inf where empty
   std::vector<double> steep_top;  // -inf where no steep triangle
+  double top_max = -std::numeric_limits<double>::infinity();    // max of top
+  double steep_max = -std::numeric_limits<double>::infinity();  // max of steep_top
 
   /// Cell range covering [x0, x1] × [z0, z1]; false when it misses the grid entirely.
   bool cells(double x0, double x1, double z0, double z1, int* i0, int* i1, int* k0, int* k1) const {
@@ -86,6 +108,9 @@ struct World::Impl {
   }
 
   double highest(const std::vector<double>& grid, const Vec3& a, const Vec3& b, double r) const {
+    // Most airborne chords pass above everything: one comparison instead of a cell walk.
+    const double grid_top = &grid == &top ? top_max : steep_max;
+    if (std::min(a.y(), b.y()) - r > grid_top) return grid_top;
     int i0, i1, k0, k1;
     if (!cells(std::min(a.x(), b.x()) - r, std::max(a.x(), b.x()) + r, std::min(a.z(), b.z()) - r,
                std::max(a.z(), b.z()) + r, &i0, &i1, &k0, &k1))
@@ -114,28 +139,82 @@ struct World::Impl {
     const double empty = -std::numeric_limits<double>::infinity();
     top.assign(static_cast<size_t>(nx * nz), empty);
     steep_top.assign(static_cast<size_t>(nx * nz), empty);
-    for (const auto& m : meshes) {
-      const int n = static_cast<int>(m.indices.size() / 3);
-      for (int t = 0; t < n; ++t) {
-        const Vec3 a = m.vertex(t, 0), b = m.vertex(t, 1), c = m.vertex(t, 2);
-        const double ytop = std::max({a.y(), b.y(), c.y()});
-        const bool steep = m.normals[static_cast<size_t>(t)].y() < follow_cos;
-        int i0, i1, k0, k1;
-        if (!cells(std::min({a.x(), b.x(), c.x()}), std::max({a.x(), b.x(), c.x()}),
-                   std::min({a.z(), b.z(), c.z()}), std::max({a.z(), b.z(), c.z()}), &i0, &i1, &k0, &k1))
-          continue;
-        for (int k = k0; k <= k1; ++k)
-          for (int i = i0; i <= i1; ++i) {
-            const auto idx = static_cast<size_t>(k * nx + i);
-            top[idx] = std::max(top[idx], ytop);
-            if (steep) steep_top[idx] = std::max(steep_top[idx], ytop);
-          }
+    // Two passes over the triangles: count the entries per cell, then fill them.
+    cell_start.assign(static_cast<size_t>(nx * nz) + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<int> fill;
+      if (pass == 1) {
+        for (size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
+        cell_triangles.resize(static_cast<size_t>(cell_start.back()));
+        fill.assign(cell_start.begin(), cell_start.end() - 1);
+      }
+      for (size_t mi = 0; mi < meshes.size(); ++mi) {
+        const CollisionMesh& m = meshes[mi];
+        const int n = static_cast<int>(m.indices.size() / 3);
+        for (int t = 0; t < n; ++t) {
+          const Vec3 a = m.vertex(t, 0), b = m.vertex(t, 1), c = m.vertex(t, 2);
+          const Vec3 lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+          const bool steep = m.normals[static_cast<size_t>(t)].y() < follow_cos;
+          int i0, i1, k0, k1;
+          if (!cells(lo.x(), hi.x(), lo.z(), hi.z(), &i0, &i1, &k0, &k1)) continue;
+          for (int k = k0; k <= k1; ++k)
+            for (int i = i0; i <= i1; ++i) {
+              const auto idx = static_cast<size_t>(k * nx + i);
+              if (pass == 0) {
+                top[idx] = std::max(top[idx], hi.y());
+                if (steep) steep_top[idx] = std::max(steep_top[idx], hi.y());
+                ++cell_start[idx + 1];
+              } else {
+                cell_triangles[static_cast<size_t>(fill[idx]++)] = CellTriangle{lo, hi, static_cast<int>(mi), t};
+              }
+            }
+        }
       }
     }
+    for (const double h : top) top_max = std::max(top_max, h);
+    for (const double h : steep_top) steep_max = std::max(steep_max, h);
   }
 
   /// Edge adjacency across all meshes (edges matched by their end points), so a rolling
   /// ball that leaves its triangle usually finds the next one without a Bullet query.
+  /// Corner normals for bounce_normal: at each corner, the faces (any mesh) sharing that
+  /// vertex position and within kSmoothAngle of the corner's own face, weighted by their
+  /// angle at the vertex (the usual weighting: independent of how a face is split). Facets
+  /// of gently rolling ground differ by a degree or two (golf_hole: under 3°); a bend of
+  /// more than 10° is a feature the ball should meet as modelled (a bank, a lip, a ditch).
+  static constexpr double kSmoothCos = 0.98480775301220802;  // cos 10°
+  void build_corner_normals() {
+    using Key = std::array<double, 3>;
+    std::map<Key, std::vector<std::pair<Vec3, double>>> at;  // face normal, corner angle
+    const auto angle_at = [](const CollisionMesh& m, int t, int k) {
+      const Vec3 p = m.vertex(t, k);
+      const Vec3 a = (m.vertex(t, (k + 1) % 3) - p).normalized(), b = (m.vertex(t, (k + 2) % 3) - p).normalized();
+      return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+    };
+    for (const CollisionMesh& m : meshes) {
+      const int n = static_cast<int>(m.indices.size() / 3);
+      for (int t = 0; t < n; ++t)
+        for (int k = 0; k < 3; ++k) {
+          const Vec3 p = m.vertex(t, k);
+          at[Key{p.x(), p.y(), p.z()}].push_back({m.normals[static_cast<size_t>(t)], angle_at(m, t, k)});
+        }
+    }
+    for (CollisionMesh& m : meshes) {
+      const int n = static_cast<int>(m.indices.size() / 3);
+      m.corner_normals.assign(static_cast<size_t>(n), {});
+      for (int t = 0; t < n; ++t) {
+        const Vec3& own = m.normals[static_cast<size_t>(t)];
+        for (int k = 0; k < 3; ++k) {
+          const Vec3 p = m.vertex(t, k);
+          Vec3 sum = Vec3::Zero();
+          for (const auto& [normal, angle] : at[Key{p.x(), p.y(), p.z()}])
+            if (normal.dot(own) >= kSmoothCos) sum += angle * normal;
+          m.corner_normals[static_cast<size_t>(t)][static_cast<size_t>(k)] = sum.norm() > 0.0 ? Vec3(sum.normalized()) : own;
+        }
+      }
+    }
+  }
+
   void build_adjacency() {
     using Key = std::array<double, 6>;
     std::map<Key, std::vector<std::pair<TriRef, int>>> edges;
@@ -186,9 +265,10 @@ struct World::Impl {
 namespace {
 
 /// Bullet's BVH hands over the triangles whose boxes overlap the sweep's box; each is tested
-/// exactly (sphere_triangle_sweep) and the earliest face the ball moves into is kept.
+/// exactly (sphere_triangle_sweep) and the earliest face the ball moves into is kept. Ties
+/// (a shared edge met exactly) go to the lowest (mesh, triangle), whatever the walk's order.
 struct SweepCallback final : btTriangleCallback {
-  const CollisionMesh* mesh = nullptr;
+  const std::vector<CollisionMesh>* meshes = nullptr;
   Vec3 from = Vec3::Zero();
   Vec3 motion = Vec3::Zero();
   Vec3 direction = Vec3::Zero();
@@ -196,17 +276,20 @@ struct SweepCallback final : btTriangleCallback {
   const Vec3* follow = nullptr;
   double follow_cos = 1.0;
   double best = 1.0;
+  int mesh = -1;
   int triangle = -1;
 
-  void processTriangle(btVector3* /*corners*/, int /*part*/, int t) override {
-    const Vec3& n = mesh->normals[static_cast<size_t>(t)];
+  void processTriangle(btVector3* /*corners*/, int part, int t) override {
+    const CollisionMesh& m = (*meshes)[static_cast<size_t>(part)];
+    const Vec3& n = m.normals[static_cast<size_t>(t)];
     // Only faces the ball moves into; edge or corner normals are ignored on purpose.
     if (n.dot(direction) >= -1e-9) return;
     if (follow != nullptr && n.dot(*follow) >= follow_cos) return;
     double f = 0.0;
-    if (sphere_triangle_sweep(from, motion, radius, mesh->vertex(t, 0), mesh->vertex(t, 1), mesh->vertex(t, 2), &f) &&
-        (triangle < 0 ? f <= best : f < best)) {
+    if (sphere_triangle_sweep(from, motion, radius, m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2), &f) &&
+        (mesh < 0 || f < best || (f == best && std::make_pair(part, t) < std::make_pair(mesh, triangle)))) {
       best = f;
+      mesh = part;
       triangle = t;
     }
   }
@@ -222,7 +305,7 @@ struct ConvexSweepCallback final : btCollisionWorld::ConvexResultCallback {
 
   btScalar addSingleResult(btCollisionWorld::LocalConvexResult& r, bool /*normal_in_world*/) override {
     if (r.m_localShapeInfo == nullptr) return m_closestHitFraction;
-    const int m = r.m_hitCollisionObject->getUserIndex2();
+    const int m = r.m_localShapeInfo->m_shapePart;
     const int t = r.m_localShapeInfo->m_triangleIndex;
     const Vec3& n = (*meshes)[static_cast<size_t>(m)].normals[static_cast<size_t>(t)];
     // Same filter as SweepCallback: faces the ball moves into, Bullet's own normal ignored.
@@ -240,17 +323,21 @@ struct ConvexSweepCallback final : btCollisionWorld::ConvexResultCallback {
 /// Bullet's per-shape ray cast (the BVH walk and the ray-triangle test are Bullet's); only
 /// faces that look up count as ground. Reads the shape only, so queries may run in parallel.
 struct RayCallback final : btTriangleRaycastCallback {
-  const CollisionMesh* mesh = nullptr;
+  const std::vector<CollisionMesh>* meshes = nullptr;
+  int mesh = -1;
   int triangle = -1;
 
   RayCallback(const btVector3& from, const btVector3& to, double best) : btTriangleRaycastCallback(from, to) {
     m_hitFraction = best;
   }
 
-  btScalar reportHit(const btVector3& /*normal*/, btScalar fraction, int /*part*/, int t) override {
+  btScalar reportHit(const btVector3& /*normal*/, btScalar fraction, int part, int t) override {
     // Ground only: a face that looks up (walls are met by sweeps, not stood on).
-    if (mesh->normals[static_cast<size_t>(t)].y() <= 0.1) return m_hitFraction;
-    if (fraction < m_hitFraction) triangle = t;
+    if ((*meshes)[static_cast<size_t>(part)].normals[static_cast<size_t>(t)].y() <= 0.1) return m_hitFraction;
+    if (fraction < m_hitFraction) {
+      mesh = part;
+      triangle = t;
+    }
     return std::min(fraction, m_hitFraction);
   }
 };
@@ -353,6 +440,7 @@ World::World(WorldDescription description, SweepMethod method) : impl_(std::make
     for (size_t k = 1; k < m.vertices.size(); k += 3) lowest = std::min(lowest, m.vertices[k]);
   w.floor_y = lowest - 1.0;
 
+  w.array = std::make_unique<btTriangleIndexVertexArray>();
   for (size_t i = 0; i < w.meshes.size(); ++i) {
     CollisionMesh& m = w.meshes[i];
     btIndexedMesh im;
@@ -364,23 +452,23 @@ World::World(WorldDescription description, SweepMethod method) : impl_(std::make
     im.m_vertexStride = 3 * static_cast<int>(sizeof(double));
     im.m_indexType = PHY_INTEGER;
     im.m_vertexType = PHY_DOUBLE;
-    m.array = std::make_unique<btTriangleIndexVertexArray>();
-    m.array->addIndexedMesh(im, PHY_INTEGER);
-    m.shape = std::make_unique<btBvhTriangleMeshShape>(m.array.get(), true, true);
-    m.object = std::make_unique<btCollisionObject>();
-    m.object->setCollisionShape(m.shape.get());
-    m.object->setUserIndex(m.material);
-    m.object->setUserIndex2(static_cast<int>(i));
-    w.world.addCollisionObject(m.object.get());
+    w.array->addIndexedMesh(im, PHY_INTEGER);  // part i
     w.triangles += im.m_numTriangles;
+  }
+  if (!w.meshes.empty()) {
+    w.shape = std::make_unique<btBvhTriangleMeshShape>(w.array.get(), true, true);
+    w.object = std::make_unique<btCollisionObject>();
+    w.object->setCollisionShape(w.shape.get());
+    w.world.addCollisionObject(w.object.get());
   }
   w.world.updateAabbs();
   w.build_grid();
   w.build_adjacency();
+  w.build_corner_normals();
 }
 
 World::~World() {
-  for (auto& m : impl_->meshes) impl_->world.removeCollisionObject(m.object.get());
+  if (impl_->object) impl_->world.removeCollisionObject(impl_->object.get());
 }
 
 const WorldDescription& World::description() const { return impl_->desc; }
@@ -412,27 +500,35 @@ bool World::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContac
   }
   const Vec3 lo = from.cwiseMin(to) - Vec3::Constant(radius + 1e-6);
   const Vec3 hi = from.cwiseMax(to) + Vec3::Constant(radius + 1e-6);
-  int best_mesh = -1, best_tri = -1;
-  double best = 1.0;
-  for (size_t i = 0; i < w.meshes.size(); ++i) {
-    SweepCallback cb;
-    cb.mesh = &w.meshes[i];
-    cb.from = from;
-    cb.motion = motion;
-    cb.direction = motion / len;
-    cb.radius = radius;
-    cb.follow = follow;
-    cb.follow_cos = w.follow_cos;
-    cb.best = best;
-    w.meshes[i].shape->processAllTriangles(&cb, bt(lo), bt(hi));
-    if (cb.triangle >= 0 && (best_mesh < 0 || cb.best < best)) {
-      best = cb.best;
-      best_mesh = static_cast<int>(i);
-      best_tri = cb.triangle;
-    }
+  if (!w.shape) return false;
+  SweepCallback cb;
+  cb.meshes = &w.meshes;
+  cb.from = from;
+  cb.motion = motion;
+  cb.direction = motion / len;
+  cb.radius = radius;
+  cb.follow = follow;
+  cb.follow_cos = w.follow_cos;
+  int i0, i1, k0, k1;
+  if (!w.cells(lo.x(), hi.x(), lo.z(), hi.z(), &i0, &i1, &k0, &k1)) return false;  // off the grid: no triangle
+  if ((i1 - i0 + 1) * (k1 - k0 + 1) > kMaxGridCells) {
+    w.shape->processAllTriangles(&cb, bt(lo), bt(hi));  // a long sweep: Bullet's tree walk
+  } else {
+    // A short sweep (every sweep near the ground): the triangles listed in the cells under
+    // its box, each box-tested first. A triangle in two cells is tested twice, harmlessly
+    // (same f; SweepCallback keeps the first of equals by index).
+    for (int k = k0; k <= k1; ++k)
+      for (int i = i0; i <= i1; ++i) {
+        const auto cell = static_cast<size_t>(k * w.nx + i);
+        for (int e = w.cell_start[cell]; e < w.cell_start[cell + 1]; ++e) {
+          const CellTriangle& c = w.cell_triangles[static_cast<size_t>(e)];
+          if ((c.lo.array() <= hi.array()).all() && (c.hi.array() >= lo.array()).all())
+            cb.processTriangle(nullptr, c.mesh, c.tri);
+        }
+      }
   }
-  if (best_mesh < 0) return false;
-  w.fill(hit, best_mesh, best_tri, from + best * motion, best);
+  if (cb.mesh < 0) return false;
+  w.fill(hit, cb.mesh, cb.triangle, from + cb.best * motion, cb.best);
   return true;
 }
 
@@ -459,13 +555,12 @@ bool World::support(const Vec3& centre, double radius, double reach, SurfaceCont
         const Vec3& nn = nm.normals[static_cast<size_t>(nb.tri)];
         const Vec3 a = nm.vertex(nb.tri, 0), b = nm.vertex(nb.tri, 1), c = nm.vertex(nb.tri, 2);
         if (nn.y() <= 0.1 || n0.dot((a + b + c) / 3.0 - c0) <= 0.0) continue;  // not a rising floor
-        if ((closest_point_on_triangle(centre, a, b, c) - centre).squaredNorm() >= radius * radius) continue;
         const double g = nn.dot(centre - a) - radius;
-        if (g < deepest) {
-          deepest = g;
-          mesh = nb.mesh;
-          tri = nb.tri;
-        }
+        if (!(g < deepest)) continue;  // its plane cuts the ball no deeper: it cannot win (cheap test first)
+        if ((closest_point_on_triangle(centre, a, b, c) - centre).squaredNorm() >= radius * radius) continue;
+        deepest = g;
+        mesh = nb.mesh;
+        tri = nb.tri;
       }
     } else {
       for (const TriRef& nb : w.meshes[static_cast<size_t>(hit->mesh)].neighbours[static_cast<size_t>(hit->triangle)]) {
@@ -482,18 +577,13 @@ bool World::support(const Vec3& centre, double radius, double reach, SurfaceCont
     // Straight down far enough to find a 60° slope under the ball.
     const btVector3 top = bt(centre + Vec3(0.0, radius, 0.0));
     const btVector3 bottom = bt(centre - Vec3(0.0, 2.0 * radius + reach + 0.05, 0.0));
-    double best = 1.0;
-    for (size_t i = 0; i < w.meshes.size(); ++i) {
-      RayCallback cb(top, bottom, best);
-      cb.mesh = &w.meshes[i];
-      w.meshes[i].shape->performRaycast(&cb, top, bottom);
-      if (cb.triangle >= 0) {
-        best = cb.m_hitFraction;
-        mesh = static_cast<int>(i);
-        tri = cb.triangle;
-      }
-    }
-    if (mesh < 0) return false;
+    if (!w.shape) return false;
+    RayCallback cb(top, bottom, 1.0);
+    cb.meshes = &w.meshes;
+    w.shape->performRaycast(&cb, top, bottom);
+    if (cb.mesh < 0) return false;
+    mesh = cb.mesh;
+    tri = cb.triangle;
   }
   const CollisionMesh& m = w.meshes[static_cast<size_t>(mesh)];
   const double gap = m.normals[static_cast<size_t>(tri)].dot(centre - m.vertex(tri, 0)) - radius;
@@ -521,5 +611,26 @@ bool World::inside(const Vec3& c) const {
 }
 
 double World::reference_height() const { return impl_->desc.origin.y(); }
+
+Vec3 World::bounce_normal(const SurfaceContact& c) const {
+  const Impl& w = *impl_;
+  if (c.mesh < 0 || c.triangle < 0 || static_cast<size_t>(c.mesh) >= w.meshes.size()) return c.normal;
+  const CollisionMesh& m = w.meshes[static_cast<size_t>(c.mesh)];
+  const Vec3 a = m.vertex(c.triangle, 0), b = m.vertex(c.triangle, 1), d = m.vertex(c.triangle, 2);
+  // Barycentric weights of the contact point (clamped: a sweep can meet an edge's outside).
+  const Vec3 n = (b - a).cross(d - a);
+  const double area2 = n.squaredNorm();
+  double wa = std::max(0.0, n.dot((b - c.point).cross(d - c.point)) / area2);
+  double wb = std::max(0.0, n.dot((d - c.point).cross(a - c.point)) / area2);
+  double wd = std::max(0.0, n.dot((a - c.point).cross(b - c.point)) / area2);
+  const double total = wa + wb + wd;
+  if (!(total > 0.0)) return c.normal;
+  wa /= total;
+  wb /= total;
+  wd /= total;
+  const auto& cn = m.corner_normals[static_cast<size_t>(c.triangle)];
+  const Vec3 smooth = wa * cn[0] + wb * cn[1] + wd * cn[2];
+  return smooth.norm() > 0.0 ? Vec3(smooth.normalized()) : c.normal;
+}
 
 }  // namespace sweetspot

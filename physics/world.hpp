@@ -80,6 +80,10 @@ class World final : public Terrain {
   /// (or the origin, if lower), where nothing can be touched again.
   bool inside(const Vec3& centre) const override;
   double reference_height() const override;
+  /// The vertex normals interpolated over c's triangle at c.point (Phong's rule), each
+  /// vertex normal the angle-weighted mean of the faces at that vertex within 10° of c's
+  /// face (sharper bends, banks, lips and walls, keep their edge).
+  Vec3 bounce_normal(const SurfaceContact& c) const override;
 
  private:
   struct Impl;

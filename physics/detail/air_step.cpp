@@ -104,7 +104,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   Segment seg;
   double t1 = s.t;
   State9 y1 = s.y;
-  const Dynamics f(m);
+  const Dynamics f(m, ContactLayer::of(m, s));
   s.counters.rejected_steps += dopri_step(f, tol, carry, t1, y1, std::min(until, set.max_time), seg);
   ++s.counters.flight_steps;
   s.step_size = carry.h;
@@ -125,6 +125,22 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     s.y = seg.at(hit.t);
     s.max_height = std::max(s.max_height, s.y[1]);
     return touch_surface(m, s, hit.contact);
+  }
+  if (!m.terrain->inside(y1.segment<3>(0)) && m.terrain->inside(seg.r1.segment<3>(0))) {
+    // Left the world during the step: end where it crossed the bounds, found by bisection
+    // on the dense output, so where a shot leaves does not depend on the step size (it
+    // used to be the step's end, metres past the bounds at the tolerance's step lengths).
+    double lo = seg.t0, hi = seg.t1();
+    for (int i = 0; i < 60 && hi - lo > 1e-12; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (m.terrain->inside(position_at(seg, mid)) ? lo : hi) = mid;
+    }
+    s.t = hi;
+    s.y = seg.at(hi);
+    s.max_height = std::max(s.max_height, s.y[1]);
+    end_shot(s, EndReason::LeftWorld);
+    ev.kind = ShotEventKind::LeftWorld;
+    return ev;
   }
   s.t = t1;
   s.y = y1;

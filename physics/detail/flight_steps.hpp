@@ -18,24 +18,78 @@ using Segment = DenseSegment<9>;
 /// (wall, bank) is struck.
 inline const double kFollowCos = std::cos(kFollowAngle);
 
-/// dy/dt of (position, velocity, spin) under gravity, drag, Magnus lift and spin decay.
+/// Rolling resistance per unit weight on a surface (stimp-derived on greens).
+double rolling_resistance_on(const ShotModel& m, const SurfaceMaterial& mat);
+
+/// The surface's contact layer: a hop that never rises above it still meets what resists a
+/// roll (grass blades, the turf it presses), so it is slowed as a roll is. The layer is as
+/// high as the highest hop the roll threshold turns into a roll, h = roll_speed²/2g (3.2 mm
+/// at 0.25 m/s): a hop just above the threshold then loses what the roll just below it
+/// loses, and a shot no longer jumps by a hop's length (25 cm for a 5 m/s ball, issue 22's
+/// random-launch sample) when a rounding turns one bounce into a roll. The share fades
+/// linearly with the hop's apex, v_n²/2g at the bounce, from all of it at h to none at 2h;
+/// it is fixed for the hop (ShotState::hop_layer), so the equations stay smooth and the
+/// result does not depend on where the integrator's steps fall. A ball that rolls off an
+/// edge is in the air: no layer. Like the roll's resistance it slows the spin with the
+/// centre, so a rolling ball's hop keeps it rolling.
+inline double hop_layer_share(const ShotModel& m, double vn) {
+  if (m.settings.roll_speed <= 0.0) return 0.0;
+  return std::clamp(2.0 - (vn * vn) / (m.settings.roll_speed * m.settings.roll_speed), 0.0, 1.0);
+}
+
+struct ContactLayer {
+  bool on = false;
+  Vec3 normal = Vec3::UnitY();
+  double decel = 0.0;  ///< m/s², the roll's resistance (rolling resistance · g · cos slope) times the share
+
+  static ContactLayer of(const ShotModel& m, const ShotState& s) {
+    ContactLayer l;
+    if (!s.landed || s.hop_layer <= 0.0) return l;
+    l.on = true;
+    l.normal = s.support.normal;
+    l.decel = s.hop_layer * rolling_resistance_on(m, m.terrain->material(s.support.material)) * kGravity *
+              std::max(l.normal.dot(up_axis()), 0.0);
+    return l;
+  }
+
+  /// Acceleration on a ball moving at v: against its motion along the surface.
+  Vec3 acceleration(const Vec3& v) const {
+    const Vec3 vt = v - v.dot(normal) * normal;
+    // Full strength above 5 cm/s (the rest speed's scale); linear below, so a ball hopping
+    // straight up is not shaken by a force that flips with its tiny sideways speed.
+    constexpr double kFullBelow = 0.05;  // m/s
+    return (-decel / std::max(vt.norm(), kFullBelow)) * vt;
+  }
+};
+
+/// dy/dt of (position, velocity, spin) under gravity, drag, Magnus lift and spin decay, and
+/// the contact layer's resistance on the hops after landing.
 struct Dynamics {
   const ShotModel* model;
   double inv_mass;
   double ground_height;
+  ContactLayer layer;
 
-  explicit Dynamics(const ShotModel& m)
-      : model(&m), inv_mass(1.0 / m.ball.mass), ground_height(m.terrain->reference_height()) {}
+  explicit Dynamics(const ShotModel& m, ContactLayer l = {})
+      : model(&m), inv_mass(1.0 / m.ball.mass), ground_height(m.terrain->reference_height()), layer(l) {}
 
   State9 operator()(double /*t*/, const State9& y) const {
     const Vec3 v = y.segment<3>(3);
     const Vec3 w = y.segment<3>(6);
-    const Vec3 v_rel = v - wind_at(model->environment, y[1] - ground_height);
+    // Still air needs no profile (wind_at is a call with logs or powers otherwise).
+    const Vec3 v_rel = model->environment.wind_speed == 0.0 ? v : Vec3(v - wind_at(model->environment, y[1] - ground_height));
     const AeroEffect fx = aero_effect(*model->aero, model->air_density, model->ball.radius, v_rel, w, model->air_viscosity);
     State9 d;
     d.segment<3>(0) = v;
     d.segment<3>(3) = fx.force * inv_mass - kGravity * up_axis();
     d.segment<3>(6) = fx.spin_rate;
+    if (layer.on) {
+      // As on a roll, the resistance slows the spin with the centre (ω = n × v / R kept), or
+      // the spin left over would drive the ball on at the next touch.
+      const Vec3 a = layer.acceleration(v);
+      d.segment<3>(3) += a;
+      d.segment<3>(6) += layer.normal.cross(a) / model->ball.radius;
+    }
     return d;
   }
 };
@@ -84,7 +138,7 @@ inline void end_shot(ShotState& s, EndReason why) {
 /// First trial step after a bounce: a tenth of the hop's vacuum flight time.
 inline double hop_step(const ShotState& s) {
   const double hop = 2.0 * std::max(s.y[4], 0.0) / kGravity;
-  return std::clamp(0.1 * hop, 1e-3, 0.05);
+  return std::clamp(1.0 * hop, 1e-3, 1.0);
 }
 
 /// One airborne step: an integrator step, cut at the first contact (which is resolved).

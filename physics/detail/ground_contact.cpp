@@ -99,8 +99,16 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
     ev.kind = ShotEventKind::Rest;
     return ev;
   }
-  const BounceResult b = bounce_on_surface(mat, c.normal, s.velocity(), s.spin(), m.ball, m.settings.ground_firmness);
+  // The smooth surface's normal decides the bounce and whether it rolls on: a landing a
+  // hair to either side of a facet edge then ends alike (issue 22's random-launch sample).
+  // A ball grazing in toward the facet but away from the smooth surface (at a bend the smooth
+  // normal leans over) bounces off the facet: an impact must separate it from what it touches.
+  const Vec3 smooth = m.terrain->bounce_normal(c);
+  const Vec3 surface_normal = s.velocity().dot(smooth) < 0.0 ? smooth : c.normal;
+  const BounceResult b =
+      bounce_on_surface(mat, surface_normal, s.velocity(), s.spin(), m.ball, m.settings.ground_firmness);
   ++s.bounces;
+  s.support = c;  // the surface the hop leaves (its contact layer, ContactLayer)
   Vec3 v = b.velocity;
   const double vn = v.dot(c.normal);
   if (vn < 0.0) v -= vn * c.normal;  // the crater tilt never sends the ball into the ground
@@ -110,7 +118,12 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
   s.step_size = hop_step(s);
   s.rate_valid = false;
   const bool walkable = c.normal.dot(up_axis()) > kFollowCos * 0.5;  // < ~63° slope
-  if (walkable && std::max(vn, 0.0) < m.settings.roll_speed) {
+  // Leaving speed off the smooth surface; but a ball not moving away from the facet it
+  // touches at all (running along it, at a bend the smooth normal leans over) cannot fly:
+  // it would touch the same facet again at once, over and over.
+  const double leaving = v.dot(c.normal) > 0.0 ? std::max(v.dot(surface_normal), 0.0) : 0.0;
+  s.hop_layer = walkable ? hop_layer_share(m, leaving) : 0.0;  // a wall has no layer to skim
+  if (walkable && leaving < m.settings.roll_speed) {
     s.chatter = 0;
     s.support = c;
     s.phase = Phase::Roll;

@@ -44,6 +44,7 @@ ShotEvent go_airborne(ShotState& s, double dt, const Vec3& p1, const Vec3& v1) {
   s.y.segment<3>(0) = p1;
   s.y.segment<3>(3) = v1;
   s.phase = Phase::Bounce;
+  s.hop_layer = 0.0;  // off an edge: in the air, no contact layer
   s.step_size = hop_step(s);
   s.rate_valid = false;
   ShotEvent ev;
@@ -113,6 +114,16 @@ ShotEvent skid(const ShotModel& m, ShotState& s) {
     under.fraction = 0.0;
     return touch_surface(m, s, under);
   }
+  if (found && under.normal.dot(n) < kFollowCos && under.normal.dot(p - under.point) - r <= 0.0 &&
+      enter_crease(s, n, under.normal)) {
+    // Skidded along into a steeper face that holds it too (not into it: that is struck
+    // above): a crease, rolled along as roll_step does. Flying off here touched the first
+    // face again at once, for ever (a random-world soak finding, 200 000 zero-time touches).
+    s.y.segment<3>(0) = p;
+    s.y.segment<3>(3) = v;
+    s.y.segment<3>(6) = w;
+    return ShotEvent{};
+  }
   if (!found || under.normal.dot(p - under.point) - r > kLeaveGap || under.normal.dot(n) < kFollowCos) {
     s.y.segment<3>(6) = w;
     s.skidding = false;
@@ -154,12 +165,6 @@ ShotEvent end_of_roll_step(const Terrain& terrain, ShotState& s, const Vec3& p1,
     ev.contact = under;
   }
   return ev;
-}
-
-/// Rolling resistance per unit weight on a surface (stimp-derived on greens).
-double rolling_resistance_on(const ShotModel& m, const SurfaceMaterial& mat) {
-  const double stimp = mat.kind == SurfaceKind::Green && m.settings.green_stimp > 0.0 ? m.settings.green_stimp : mat.stimp;
-  return stimp > 0.0 ? rolling_resistance_from_stimp(stimp, stimp_air_drag(m)) : mat.rolling_resistance;
 }
 
 /// One step along a crease (see enter_crease): the ball moves along d = n1 × n2 only; the
@@ -231,6 +236,11 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
 }
 
 }  // namespace
+
+double rolling_resistance_on(const ShotModel& m, const SurfaceMaterial& mat) {
+  const double stimp = mat.kind == SurfaceKind::Green && m.settings.green_stimp > 0.0 ? m.settings.green_stimp : mat.stimp;
+  return stimp > 0.0 ? rolling_resistance_from_stimp(stimp, stimp_air_drag(m)) : mat.rolling_resistance;
+}
 
 ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   ShotEvent ev;

@@ -153,8 +153,8 @@ TEST_CASE("carry converges to a tight-tolerance reference", "[flight][convergenc
   in.settings.abs_tol = 1e-7;
   CHECK(std::abs(fly(in).summary.carry_m - reference) < 0.01);
   in.settings = FlightSettings{};
-  // The default tolerance is what the bench reports; it is far inside the 1 cm contract.
-  CHECK(std::abs(fly(in).summary.carry_m - reference) < 1e-5);
+  // The defaults are aimed at the 1 cm contract (issue 22): carry within 4 mm.
+  CHECK(std::abs(fly(in).summary.carry_m - reference) < 0.004);
 }
 
 TEST_CASE("wind: headwind shortens, tailwind lengthens, crosswind drifts", "[flight][wind]") {
@@ -275,7 +275,7 @@ TEST_CASE("step(): simulate_shot is a loop over step, and a saved state replays 
   int n = 0;
   while (!s.ended) {
     kinds.push_back(step(model, s).kind);
-    if (++n == 40) saved = s;  // a plain copy is a save
+    if (++n == 10) saved = s;  // a plain copy is a save
   }
   CHECK(s.position() == whole.summary.rest_position);
   CHECK(s.t == whole.summary.total_time_s);
@@ -285,8 +285,8 @@ TEST_CASE("step(): simulate_shot is a loop over step, and a saved state replays 
   CHECK(*first_touch == ShotEventKind::Landing);
   CHECK(std::count(kinds.begin(), kinds.end(), ShotEventKind::Landing) == 1);
   CHECK(kinds.back() == ShotEventKind::Rest);
-  // Resuming from the copy taken at step 40 ends in exactly the same bytes.
-  REQUIRE(n > 40);
+  // Resuming from the copy taken at step 10 ends in exactly the same bytes.
+  REQUIRE(n > 10);
   ShotState r = saved;
   while (!r.ended) step(model, r);
   CHECK(std::memcmp(r.y.data(), s.y.data(), sizeof(double) * 9) == 0);

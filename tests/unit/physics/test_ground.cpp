@@ -7,6 +7,7 @@
 
 #include "physics/flight.hpp"
 #include "physics/ground.hpp"
+#include "physics/impact.hpp"
 #include "physics/units.hpp"
 #include "support/test_assets.hpp"
 
@@ -47,6 +48,53 @@ TEST_CASE("an oblique bounce that grips leaves the ball rolling (v = ωR) and lo
   // Rolling contact: the bottom of the ball is at rest, v + ω × (-R ŷ) has no x part.
   CHECK((b.velocity + b.spin.cross(-ball.radius * Vec3::UnitY())).x() == Approx(0.0).margin(1e-9));
   CHECK(ke(ball, b.velocity, b.spin) < ke(ball, Vec3(1, -10, 0), Vec3::Zero()));
+}
+
+TEST_CASE("the closed-form bounce is the impact solver's rigid Coulomb impulse with the ground as an infinite mass",
+          "[ground][bounce][property]") {
+  // bounce_on_surface solves the sphere-on-plane impulse by scalar formulas (issue 22); the
+  // general solver (physics/impact.cpp) is the reference: same contact kind, same velocity
+  // and spin to rounding, over grip and slip, any spin, slope and restitution curve.
+  const BallProperties ball = golf_ball_properties();
+  std::uint64_t s = 11;
+  auto u = [&s] {
+    s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(s >> 11) * 0x1.0p-53;
+  };
+  int grips = 0, slips = 0;
+  for (int i = 0; i < 20000; ++i) {
+    SurfaceMaterial m = default_fairway();  // its speed-dependent e curve
+    m.crater_tilt = 0.0;
+    m.mu = 1.5 * u();
+    const Vec3 n = Vec3(0.6 * (u() - 0.5), 1.0, 0.6 * (u() - 0.5)).normalized();
+    const Vec3 v(60.0 * (u() - 0.5), -30.0 * u() - 0.1, 60.0 * (u() - 0.5));
+    const Vec3 w(800.0 * (u() - 0.5), 800.0 * (u() - 0.5), 800.0 * (u() - 0.5));
+    if (v.dot(n) >= 0.0) continue;  // leaving the plane: no impact (bounce_on_surface returns it as is)
+    ImpactInput in;
+    in.impactor.inv_mass = 0.0;
+    in.impactor.inv_inertia = Mat3::Zero();
+    in.ball.inv_mass = 1.0 / ball.mass;
+    in.ball.inv_inertia = Mat3::Identity() * (1.0 / ball.inertia);
+    in.ball.r = -ball.radius * n;
+    in.ball.velocity = v;
+    in.ball.angular_velocity = w;
+    in.normal = n;
+    in.material.e = m.e;
+    in.material.e_t = 0.0;
+    in.material.mu = m.mu;
+    in.material.friction = FrictionModel::Coulomb;
+    in.material.model = ImpactModel::Rigid;
+    const ImpactResult ref = solve_impact(in);
+    const BounceResult b = bounce_on_surface(m, n, v, w, ball);
+    INFO(i);
+    REQUIRE(b.impact.contact == ref.contact);
+    (ref.contact == ContactKind::Grip ? grips : slips) += 1;
+    REQUIRE((b.velocity - ref.ball_after.velocity).norm() <= 1e-12 * (1.0 + v.norm()));
+    REQUIRE((b.spin - ref.ball_after.angular_velocity).norm() <= 1e-12 * (1.0 + w.norm() + v.norm() / ball.radius));
+    REQUIRE(b.impact.energy_loss == Approx(ref.energy_loss).epsilon(1e-9).margin(1e-12));
+  }
+  CHECK(grips > 1000);
+  CHECK(slips > 1000);
 }
 
 TEST_CASE("bounces never create energy, whatever the spin, angle or surface", "[ground][bounce][property]") {

@@ -18,7 +18,10 @@
 // bytes on purpose (and the driver now sits on a tee: assets/equipment/clubs.toml
 // tee_height), giving 0x4fb851b779b78c7b; issue 20 made the skid follow the ground in 20 ms
 // chunks and a rolling ball meet a rising neighbour facet (same distances to the millimetre
-// on the built-in shots, last bits differ), giving the value below.
+// on the built-in shots, last bits differ), giving 0x3999954e4693b67a; issue 22 set the
+// default tolerances to the 1 cm contract (rel 1e-6, hops 1e-3), bounced off the smooth
+// surface's normal, slowed low hops in the contact layer and solved the ground bounce in
+// closed form (TrackMan regressions unchanged within their tolerances), giving the value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -49,7 +52,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x3999954e4693b67aULL;
+constexpr std::uint64_t kGoldenHash = 0x4bf021f5174a60b4ULL;
 
 }  // namespace
 

@@ -1,0 +1,95 @@
+// The integrator's error where a player sees it (issue 22): carry and rest position of whole
+// shots on the golf_hole terrain at the default tolerances against the same model at 1e-13.
+// The defaults were loosened from 1e-8 to what this contract needs; these tests hold them to
+// it. The error is not just the integrator's: a bounce turned into a roll, or a landing on
+// the other side of a facet edge, used to move the rest by up to 25 cm for a 0.1 mm change
+// (the contact layer and the smooth bounce normal made both continuous).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "game/util/rng.hpp"
+#include "physics/flight.hpp"
+#include "physics/units.hpp"
+#include "physics/world.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+struct Pair {
+  ShotModel fast, tight;
+};
+
+Pair golf_hole_models() {
+  const World& world = *test::assets().world("golf_hole")->world;
+  FlightSettings tight;
+  tight.rel_tol = 1e-13;
+  tight.abs_tol = 1e-14;
+  tight.bounce_rel_tol = 1e-13;
+  return {test::golf_model(&world), test::golf_model(&world, {}, tight)};
+}
+
+struct Errors {
+  double carry = 0.0, rest = 0.0;
+};
+
+Errors errors(const Pair& p, const LaunchState& launch) {
+  const FlightSummary a = simulate_shot(p.fast, launch, false).summary;
+  const FlightSummary b = simulate_shot(p.tight, launch, false).summary;
+  return {std::abs(a.carry_m - b.carry_m), (a.rest_position - b.rest_position).norm()};
+}
+
+Vec3 tee() { return Vec3(0.0, golf_ball_properties().radius, 0.0); }  // ball on the ground at the origin
+
+}  // namespace
+
+TEST_CASE("default tolerances: the tour launches carry and rest within 1 cm of a 1e-13 reference",
+          "[flight][accuracy]") {
+  // TrackMan PGA Tour averages (DESIGN §4), the bench's set.
+  const Pair p = golf_hole_models();
+  const struct {
+    double mph, deg, rpm;
+  } set[] = {{167.0, 10.9, 2686.0}, {120.0, 16.3, 7097.0}, {102.0, 24.2, 9304.0}};
+  for (const auto& l : set) {
+    const Errors e = errors(p, launch_from_metrics(mph_to_mps(l.mph), deg_to_rad(l.deg), 0.0, rpm_to_radps(l.rpm), 0.0, tee()));
+    INFO(l.mph << " mph: carry error " << e.carry << " m, rest error " << e.rest << " m");
+    CHECK(e.carry < 0.004);
+    CHECK(e.rest < 0.01);
+  }
+}
+
+TEST_CASE("default tolerances: 1000 random golf launches on golf_hole, carry and rest against a 1e-13 reference",
+          "[flight][accuracy]") {
+  // 60-180 mph, 5-40° up, ±8° aim, 1500-10500 rpm, ±25° spin axis: every club from a wedge
+  // to a long drive, slices and hooks, into fairway, rough, sand, green, water and out of the
+  // world's bounds (the leaving point is found on the dense output, not at a step's end).
+  const Pair p = golf_hole_models();
+  Rng rng(2026);
+  double worst_carry = 0.0, worst_rest = 0.0;
+  int rest_over_1cm = 0;
+  constexpr int kLaunches = 1000;
+  for (int i = 0; i < kLaunches; ++i) {
+    const double mph = 60.0 + 120.0 * rng.uniform(), deg = 5.0 + 35.0 * rng.uniform();
+    const double aim = -8.0 + 16.0 * rng.uniform(), rpm = 1500.0 + 9000.0 * rng.uniform();
+    const double axis = -25.0 + 50.0 * rng.uniform();
+    const LaunchState launch = launch_from_metrics(mph_to_mps(mph), deg_to_rad(deg), deg_to_rad(aim),
+                                                   rpm_to_radps(rpm), deg_to_rad(axis), tee());
+    const Errors e = errors(p, launch);
+    INFO("launch " << i << ": " << mph << " mph, " << deg << "°, aim " << aim << "°, " << rpm << " rpm, axis "
+                   << axis << "°: carry error " << e.carry << " m, rest error " << e.rest << " m");
+    CHECK(e.carry < 0.01);
+    // Measured worst: 1.8 cm (launch 950, a drive bouncing from the fairway onto the sloped
+    // green, whose meshes share no vertices, so the seam's facets are not smoothed). 2.5 cm
+    // fails on any return of the 5-25 cm jumps.
+    CHECK(e.rest < 0.025);
+    worst_carry = std::max(worst_carry, e.carry);
+    worst_rest = std::max(worst_rest, e.rest);
+    if (e.rest >= 0.01) ++rest_over_1cm;
+  }
+  INFO("worst carry error " << worst_carry << " m, worst rest error " << worst_rest << " m, " << rest_over_1cm
+                            << " rests over 1 cm");
+  CHECK(rest_over_1cm <= kLaunches / 100);  // at most 1 % over 1 cm (measured: 5 in 1000, 2 with another seed)
+}

@@ -88,6 +88,34 @@ ShotBenchResult bench_golf_shots(const Assets& assets, double min_seconds, Sweep
   });
 }
 
+namespace {
+
+FlightSettings reference_tolerances() {
+  FlightSettings tight;
+  tight.rel_tol = 1e-13;
+  tight.abs_tol = 1e-14;
+  tight.bounce_rel_tol = 1e-13;
+  return tight;
+}
+
+ShotBenchResult time_tour_launches(const ShotModel& model, double min_seconds) {
+  const std::vector<BenchLaunch> launches = bench_tour_launches();
+  std::size_t next = 0;
+  return time_shots(min_seconds, [&] {
+    return simulate_shot(model, launches[next++ % launches.size()].launch, false).summary.total_m;
+  });
+}
+
+}  // namespace
+
+ShotBenchResult bench_golf_shots_flat(const Assets& assets, double min_seconds) {
+  return time_tour_launches(golf_model(assets, nullptr), min_seconds);
+}
+
+ShotBenchResult bench_golf_shots_tight(const Assets& assets, double min_seconds) {
+  return time_tour_launches(golf_model(assets, assets.world("golf_hole")->world.get(), reference_tolerances()), min_seconds);
+}
+
 ShotBenchResult bench_baseball_shots(const Assets& assets, double min_seconds) {
   const ShotModel model = make_shot_model(baseball_properties(), assets.aero("nathan"), Environment{},
                                           assets.world("ballpark")->world.get());
@@ -113,10 +141,7 @@ CarryErrors golf_carry_errors(const Assets& assets) {
   const WorldAsset& w = *assets.world("golf_hole");
   const BaselineGround ground = golf_ground(w.description());
   const ShotModel model = golf_model(assets, w.world.get());
-  FlightSettings tight;
-  tight.rel_tol = 1e-13;
-  tight.abs_tol = 1e-14;
-  const ShotModel reference = golf_model(assets, w.world.get(), tight);
+  const ShotModel reference = golf_model(assets, w.world.get(), reference_tolerances());
   CarryErrors e;
   for (const BenchLaunch& l : bench_tour_launches()) {
     CarryError c;

@@ -33,6 +33,11 @@ std::vector<BenchLaunch> bench_tour_launches();
 /// `min_seconds`. The world is loaded and built once, outside the timing. `method` picks the
 /// world's sweep narrow phase (BulletConvexSweep is DESIGN §5's convexSweepTest).
 ShotBenchResult bench_golf_shots(const Assets& assets, double min_seconds, SweepMethod method = SweepMethod::BvhExact);
+/// The same launches over the flat default fairway (no world): what the terrain costs.
+ShotBenchResult bench_golf_shots_flat(const Assets& assets, double min_seconds);
+/// The same launches on golf_hole at the reference tolerance (rel 1e-13, as
+/// golf_carry_errors' reference): what the default tolerances save.
+ShotBenchResult bench_golf_shots_tight(const Assets& assets, double min_seconds);
 /// 103 mph, 28°, 2000 rpm on the ballpark (a home run: flight to the field-level landing).
 ShotBenchResult bench_baseball_shots(const Assets& assets, double min_seconds);
 /// The same tour launches through the Bullet-dynamics baseline on golf_hole's ground, to rest.

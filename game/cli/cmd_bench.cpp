@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "game/bench/impact_bench.hpp"
+#include "game/bench/mode_bench.hpp"
 #include "game/bench/shot_bench.hpp"
 #include "game/bench/sweep_bench.hpp"
 #include "game/render/render_command.hpp"
@@ -46,8 +47,14 @@ RunFn setup_bench(CLI::App& sub) {
     const bench::ShotBenchResult baseball = bench::bench_baseball_shots(assets, seconds);
     const bench::ShotBenchResult baseline = bench::bench_baseline_golf_shots(assets, seconds);
     const bench::CarryErrors carry = bench::golf_carry_errors(assets);
+    const bench::ShotBenchResult flat = bench::bench_golf_shots_flat(assets, seconds);
+    const bench::ShotBenchResult tight = bench::bench_golf_shots_tight(assets, seconds);
     rows.push_back({"golf_shots_per_s", golf.shots_per_second, "golf shots/s (tour driver/7-iron/PW, to rest)"});
-    rows.push_back({"golf_us_per_shot", golf.us_per_shot, "us per golf shot"});
+    rows.push_back({"golf_us_per_shot", golf.us_per_shot, "us per golf shot (golf_hole)"});
+    rows.push_back({"golf_us_per_shot_flat", flat.us_per_shot, "us per golf shot (flat ground, no world)"});
+    rows.push_back({"terrain_cost_ratio", golf.us_per_shot / flat.us_per_shot, "golf_hole / flat ground time"});
+    rows.push_back({"golf_us_per_shot_tight", tight.us_per_shot, "us per golf shot, reference tolerance 1e-13"});
+    rows.push_back({"tolerance_speedup", tight.us_per_shot / golf.us_per_shot, "speed-up of the default tolerances"});
     rows.push_back({"golf_shots_per_s_convex_sweep", golf_gjk.shots_per_second,
                     "golf shots/s, Bullet convexSweepTest narrow phase"});
     rows.push_back({"exact_sweep_speedup", golf.shots_per_second / golf_gjk.shots_per_second,
@@ -63,6 +70,10 @@ RunFn setup_bench(CLI::App& sub) {
       rows.push_back({"carry_error_m_" + n, c.ours_error_m, "  " + n + " carry error, ours (m)"});
       rows.push_back({"baseline_carry_error_m_" + n, c.baseline_error_m, "  " + n + " carry error, baseline (m)"});
     }
+
+    // Game modes: what a player waits for while the bots play.
+    rows.push_back({"bot_round_ms", bench::bench_bot_round_ms(assets, opts->quick ? 1 : 5), "ms per bot round of the links (tour bot)"});
+    rows.push_back({"derby_ms", bench::bench_derby_ms(assets, opts->quick ? 1 : 5), "ms per home-run derby (pro bot, 10 outs)"});
 
     const int axis = opts->quick ? 6 : 60;
     const SweepThroughput s1 = measure_sweep(assets, 1, axis);

@@ -12,8 +12,13 @@ j = json.loads(sys.argv[1])
 v = j["impact_solves_per_s"]
 assert isinstance(v, (int, float)) and v > 1e5, f"impact_solves_per_s = {v}"
 for k in ("golf_shots_per_s", "baseball_shots_per_s", "baseline_golf_shots_per_s", "speedup_vs_baseline",
-          "carry_error_m", "baseline_carry_error_m", "frame_ms_1280x720"):
+          "carry_error_m", "baseline_carry_error_m", "frame_ms_1280x720", "golf_us_per_shot_flat",
+          "golf_us_per_shot_tight", "terrain_cost_ratio", "tolerance_speedup", "bot_round_ms", "derby_ms"):
     assert k in j, f"missing key {k}"
+for k in ("golf_us_per_shot", "golf_us_per_shot_flat", "golf_us_per_shot_tight", "bot_round_ms", "derby_ms"):
+    assert j[k] > 0, f"{k} = {j[k]}"
+# Accuracy at the default tolerances is a contract (issue 22): carry within 4 mm of the reference.
+assert j["carry_error_m"] < 0.004, j["carry_error_m"]
 for k in ("golf_shots_per_s", "golf_shots_per_s_convex_sweep", "exact_sweep_speedup", "baseball_shots_per_s", "baseline_golf_shots_per_s", "speedup_vs_baseline"):
     assert j[k] > 0, f"{k} = {j[k]}"
 # Accuracy is not timing: ours must beat the baseline's carry error and stay within 5 cm.

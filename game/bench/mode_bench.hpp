@@ -1,0 +1,16 @@
+// Game-mode benchmarks (DESIGN §8, issue 22): what a player waits for when a bot plays. A
+// bot round of the links (every stroke flown and rolled to rest on the holes' worlds) and a
+// home-run derby (every pitch flown, struck and flown to the field), in ms of wall time.
+#pragma once
+
+#include "game/core/assets.hpp"
+
+namespace sweetspot::bench {
+
+/// ms per round of the default course played by the tour bot (seed 1), worlds loaded before
+/// timing; the mean over `rounds` rounds (≥ 1).
+double bench_bot_round_ms(const Assets& assets, int rounds);
+/// ms per home-run derby (10 outs) of the pro bot batter (seed 2), the mean over `derbies`.
+double bench_derby_ms(const Assets& assets, int derbies);
+
+}  // namespace sweetspot::bench

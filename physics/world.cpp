@@ -52,6 +52,12 @@ struct CellTriangle {
 
 /// Sweeps whose boxes cover more grid cells than this walk Bullet's tree instead.
 constexpr int kMaxGridCells = 16;
+/// A triangle over more cells than this (a big flat quad, a hostile mesh of world-sized
+/// triangles) is kept in one list every short sweep tests, not in each cell: the lists
+/// stay linear in the triangle count whatever the mesh.
+constexpr int kMaxCellsPerTriangle = 64;
+/// More such triangles than this and short sweeps walk Bullet's tree too.
+constexpr std::size_t kMaxLargeTriangles = 256;
 
 }  // namespace
 
@@ -88,6 +94,8 @@ struct World::Impl {
   /// whose box misses the sweep's box (which holds the whole swept sphere) cannot be hit.
   std::vector<int> cell_start;
   std::vector<CellTriangle> cell_triangles;
+  std::vector<CellTriangle> large_triangles;  // over more than kMaxCellsPerTriangle cells
+  bool grid_sweeps = true;                     // false: too many large triangles, walk the tree
   std::vector<double> top;        // -inf where empty
   std::vector<double> steep_top;  // -inf where no steep triangle
   double top_max = -std::numeric_limits<double>::infinity();    // max of top
@@ -157,20 +165,23 @@ struct World::Impl {
           const bool steep = m.normals[static_cast<size_t>(t)].y() < follow_cos;
           int i0, i1, k0, k1;
           if (!cells(lo.x(), hi.x(), lo.z(), hi.z(), &i0, &i1, &k0, &k1)) continue;
+          const bool large = (i1 - i0 + 1) * (k1 - k0 + 1) > kMaxCellsPerTriangle;
+          if (large && pass == 1) large_triangles.push_back(CellTriangle{lo, hi, static_cast<int>(mi), t});
           for (int k = k0; k <= k1; ++k)
             for (int i = i0; i <= i1; ++i) {
               const auto idx = static_cast<size_t>(k * nx + i);
               if (pass == 0) {
                 top[idx] = std::max(top[idx], hi.y());
                 if (steep) steep_top[idx] = std::max(steep_top[idx], hi.y());
-                ++cell_start[idx + 1];
-              } else {
+                if (!large) ++cell_start[idx + 1];
+              } else if (!large) {
                 cell_triangles[static_cast<size_t>(fill[idx]++)] = CellTriangle{lo, hi, static_cast<int>(mi), t};
               }
             }
         }
       }
     }
+    grid_sweeps = large_triangles.size() <= kMaxLargeTriangles;
     for (const double h : top) top_max = std::max(top_max, h);
     for (const double h : steep_top) steep_max = std::max(steep_max, h);
   }
@@ -511,9 +522,11 @@ bool World::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContac
   cb.follow_cos = w.follow_cos;
   int i0, i1, k0, k1;
   if (!w.cells(lo.x(), hi.x(), lo.z(), hi.z(), &i0, &i1, &k0, &k1)) return false;  // off the grid: no triangle
-  if ((i1 - i0 + 1) * (k1 - k0 + 1) > kMaxGridCells) {
+  if (!w.grid_sweeps || (i1 - i0 + 1) * (k1 - k0 + 1) > kMaxGridCells) {
     w.shape->processAllTriangles(&cb, bt(lo), bt(hi));  // a long sweep: Bullet's tree walk
   } else {
+    for (const CellTriangle& c : w.large_triangles)
+      if ((c.lo.array() <= hi.array()).all() && (c.hi.array() >= lo.array()).all()) cb.processTriangle(nullptr, c.mesh, c.tri);
     // A short sweep (every sweep near the ground): the triangles listed in the cells under
     // its box, each box-tested first. A triangle in two cells is tested twice, harmlessly
     // (same f; SweepCallback keeps the first of equals by index).

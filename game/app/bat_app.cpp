@@ -77,9 +77,10 @@ void draw_stats(const Cage& c, int w, int h) {
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::Text("Pitch: %s %.0f mph", c.call.type.type.c_str(), mps_to_mph(c.call.type.speed));
   ImGui::Text("Swing: %s, %s-handed", c.power ? "power" : "contact", c.lefty ? "left" : "right");
+  // One short line each: the panel is 360 px wide and cut "B: the pro swings" to "B: the pro swi".
   ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height");
-  ImGui::TextDisabled("C: power/contact  L: batter's side  B: the pro swings");
-  ImGui::TextDisabled("Tab: Lab");
+  ImGui::TextDisabled("C: power/contact  L: batter's side");
+  ImGui::TextDisabled("B: the pro swings  Tab: Lab");
   ImGui::Separator();
   int n = 0, contact = 0, hard = 0, hr = 0;
   double ev = 0.0, la = 0.0, longest = 0.0;

@@ -158,15 +158,7 @@ ImpactResult bounce_impulse(const SurfaceMaterial& m, const Vec3& n, const Vec3&
   if (gain(pn, pt) > 0.0) {
     // As solve_impact: back toward the frictionless impulse until no energy is created
     // (unreachable for e <= 1, kept so the two never disagree).
-    const double a = gain(pn, Vec3::Zero()), b = pt.dot(ut), c = 0.5 * pt.squaredNorm() * k_t;
-    const double disc = std::sqrt(std::max(0.0, b * b - 4.0 * a * c));
-    double lambda = 0.0;
-    if (b > 0.0) {
-      lambda = (-2.0 * a) / (b + disc);
-    } else if (c > 0.0) {
-      lambda = (-b + disc) / (2.0 * c);
-    }
-    pt *= std::clamp(lambda, 0.0, 1.0);
+    pt *= energy_limit_fraction(gain(pn, Vec3::Zero()), pt.dot(ut), 0.5 * pt.squaredNorm() * k_t);
     res.energy_limited = true;
   }
   const Vec3 p = pn * n + pt;

@@ -66,6 +66,17 @@ double CorCurve::at(double vn) const {
   return cor[static_cast<size_t>(count - 1)];
 }
 
+double energy_limit_fraction(double a, double b, double c) {
+  const double disc = std::sqrt(std::max(0.0, b * b - 4.0 * a * c));
+  double lambda = 0.0;
+  if (b > 0.0) {
+    lambda = (-2.0 * a) / (b + disc);  // the stable form of the root when b > 0
+  } else if (c > 0.0) {
+    lambda = (-b + disc) / (2.0 * c);
+  }
+  return std::clamp(lambda, 0.0, 1.0);
+}
+
 Mat3 collision_matrix(const ImpactBody& impactor, const ImpactBody& ball) {
   const Mat3 r1x = cross_matrix(impactor.r);
   const Mat3 r2x = cross_matrix(ball.r);
@@ -177,15 +188,7 @@ ImpactResult solve_impact(const ImpactInput& in) noexcept {
         const double a = energy_gain(k, u, p_frictionless);  // ≤ 0
         const double b = q.dot(u) + p_frictionless.dot(k * q);
         const double c = 0.5 * q.dot(k * q);
-        const double disc = std::sqrt(std::max(0.0, b * b - 4.0 * a * c));
-        double lambda = 0.0;
-        if (b > 0.0) {
-          lambda = (-2.0 * a) / (b + disc);
-        } else if (c > 0.0) {
-          lambda = (-b + disc) / (2.0 * c);
-        }
-        lambda = std::clamp(lambda, 0.0, 1.0);
-        p = p_frictionless + lambda * q;
+        p = p_frictionless + energy_limit_fraction(a, b, c) * q;
         res.energy_limited = true;
       }
       break;

@@ -115,6 +115,12 @@ struct ImpactResult {
   ImpactBody ball_after;
 };
 
+/// The energy limit of a Coulomb impulse: along p(λ) = p_frictionless + λ q the kinetic
+/// energy gain is a + bλ + cλ² with a ≤ 0 (the frictionless end never creates energy);
+/// returns the largest λ in [0, 1] where the gain is still ≤ 0 (solve_impact and the closed-
+/// form ground bounce both pull an energy-creating impulse back by it).
+double energy_limit_fraction(double a, double b, double c);
+
 /// Collision matrix K: an impulse p on the ball changes u by K p.
 Mat3 collision_matrix(const ImpactBody& impactor, const ImpactBody& ball);
 

@@ -126,7 +126,8 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     s.max_height = std::max(s.max_height, s.y[1]);
     return touch_surface(m, s, hit.contact);
   }
-  if (!m.terrain->inside(y1.segment<3>(0)) && m.terrain->inside(seg.r1.segment<3>(0))) {
+  const bool inside_at_end = m.terrain->inside(y1.segment<3>(0));
+  if (!inside_at_end && m.terrain->inside(seg.r1.segment<3>(0))) {
     // Left the world during the step: end where it crossed the bounds, found by bisection
     // on the dense output, so where a shot leaves does not depend on the step size (it
     // used to be the step's end, metres past the bounds at the tolerance's step lengths).
@@ -145,7 +146,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   s.t = t1;
   s.y = y1;
   s.max_height = std::max(s.max_height, s.y[1]);
-  if (!m.terrain->inside(s.position())) {
+  if (!inside_at_end) {  // started outside too (an input placed out of bounds)
     end_shot(s, EndReason::LeftWorld);
     ev.kind = ShotEventKind::LeftWorld;
   }

@@ -94,6 +94,14 @@ int run_play_headless(const Assets& assets, const PlayOptions& o, std::ostream& 
 
 namespace {
 
+// The window behind the panels: the ImGui dark grey, so the columns read as one surface.
+void clear_window(int w, int h) {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, w, h);
+  glClearColor(0.10f, 0.11f, 0.12f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+
 WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& renderer, const PlayOptions& o,
                         FrameStats& stats, std::ostream& out) {
   UiState st = ui_state_from(o);
@@ -106,6 +114,7 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
   CameraKind camera = CameraKind::Behind;
   Orbit orbit;
   std::string status, save_path = "my-shot.toml";
+  bool panels_hidden = false;
   auto last = std::chrono::steady_clock::now();
 
   while (!win.should_close()) {
@@ -113,9 +122,12 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
     const double dt = std::chrono::duration<double>(t0 - last).count();
     last = t0;
     const FrameInput in = win.begin_frame();
-    for (const int key : in.keys)
+    for (const int key : in.keys) {
       if (key == GLFW_KEY_TAB) return WindowNext::Golf;
-    if (in.camera >= 0 && static_cast<CameraKind>(in.camera) != camera) {
+      if (key == GLFW_KEY_H) panels_hidden = !panels_hidden;
+    }
+    // A camera key always resets that camera, the current one too (undoes a mouse orbit).
+    if (in.camera >= 0) {
       camera = static_cast<CameraKind>(in.camera);
       orbit.reset();
     }
@@ -125,8 +137,10 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
     if (in.zoom != 0.0) orbit.zoom = std::clamp(orbit.zoom * std::pow(0.9, in.zoom), 0.1, 5.0);
 
     const CameraKind before = camera;
+    const int w = win.framebuffer_width(), h = win.framebuffer_height();
+    const PanelLayout layout = lay_out_panels(static_cast<float>(w), static_cast<float>(h), panels_hidden);
     PanelContext ctx{assets, st, shot.scenario, shot.result, replay, camera, status, save_path};
-    const bool changed = draw_panels(ctx) || in.hit_again;
+    const bool changed = draw_panels(ctx, layout) || in.hit_again;
     if (camera != before) orbit.reset();
     if (changed) {
       // Recompute in the same frame, so the trail drawn below is the new shot's.
@@ -148,12 +162,15 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
     }
     replay.advance(dt, duration(shot.result.trajectory));
 
-    const int w = win.framebuffer_width(), h = win.framebuffer_height();
-    if (w > 0 && h > 0) {
-      if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);
-      const Camera cam = orbit.apply(scene->camera(camera, replay.time, w, h));
-      renderer.draw(scene->build(cam, replay.time, w, h), cam);
-      renderer.blit_to(0, w, h);
+    // The 3D view fills the layout's view rectangle only: nothing of the shot is under a
+    // panel, and a software rasteriser shades no pixel a panel covers.
+    const int vw = static_cast<int>(layout.view.w), vh = static_cast<int>(layout.view.h);
+    if (w > 0 && h > 0 && vw >= 16 && vh >= 16) {
+      if (vw != renderer.width() || vh != renderer.height()) renderer.resize(vw, vh);
+      const Camera cam = scene->keep_above_ground(orbit.apply(scene->camera(camera, replay.time, vw, vh)));
+      renderer.draw(scene->build(cam, replay.time, vw, vh), cam);
+      clear_window(w, h);
+      renderer.blit_to(0, static_cast<int>(layout.view.x), h - static_cast<int>(layout.view.y) - vh, vw, vh);
     }
     win.render_ui();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

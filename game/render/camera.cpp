@@ -56,6 +56,51 @@ Camera look_along(const std::vector<Vec3>& points, const Vec3& forward, const Ve
   return c;
 }
 
+// Behind and above the ball, looking along its horizontal motion: the chase view.
+Camera chase_camera(const ShotFraming& framing) {
+  Camera c;
+  Vec3 dir = framing.ball_velocity;
+  dir.y() = 0;
+  dir = dir.norm() > 0.5 ? dir.normalized() : framing.aim;
+  // Close enough that the club or bat at impact reads at t = 0.
+  c.eye = framing.ball - 3.5 * dir + Vec3(0, 1.3, 0);
+  c.target = framing.ball + 4.0 * dir;
+  c.near_m = 0.1;
+  return c;
+}
+
+// The landing area from behind and above, along the shot's aim, 25 degrees down: the
+// descending leg, the bounces and the ball all in view.
+Camera landing_camera(const ShotFraming& framing, double aspect) {
+  const Vec3 f = (framing.aim * std::cos(deg_to_rad(25.0)) - Vec3::UnitY() * std::sin(deg_to_rad(25.0))).normalized();
+  std::vector<Vec3> points = framing.finish;
+  // At least ~12 m of ground around the ball, so a ball that stopped by the landing point
+  // is seen on its patch of grass, not as a speck filling the image.
+  for (const Vec3& d : {Vec3(6, 0, 0), Vec3(-6, 0, 0), Vec3(0, 0, 6), Vec3(0, 0, -6)}) points.push_back(framing.ball + d);
+  return look_along(points, f, Vec3::UnitY(), aspect);
+}
+
+double smoothstep01(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
+
+Camera follow_camera(const ShotFraming& framing, double aspect) {
+  const Camera chase = chase_camera(framing);
+  // Like a broadcast cutting to the landing camera: the turn starts one second before the
+  // landing and ends at it (a home run's shot ends there), eased at both ends.
+  if (framing.finish.empty() || framing.since_landing < -1.0) return chase;
+  const Camera land = landing_camera(framing, aspect);
+  const double w = smoothstep01(framing.since_landing + 1.0);
+  if (w >= 1.0) return land;
+  Camera c = land;
+  c.eye = chase.eye + w * (land.eye - chase.eye);
+  c.target = chase.target + w * (land.target - chase.target);
+  c.fov_y = chase.fov_y + w * (land.fov_y - chase.fov_y);
+  c.near_m = std::min(chase.near_m, land.near_m);
+  return c;
+}
+
 }  // namespace
 
 CameraKind parse_camera_kind(std::string_view name) {
@@ -176,6 +221,17 @@ ShotFraming shot_framing(const ShotTrajectory& trajectory, double t) {
   const TrajectorySample at = sample_at(trajectory, t);
   f.ball = at.position;
   f.ball_velocity = at.velocity;
+  const double land = trajectory.summary.hang_time_s;
+  if (land > 0.0) {
+    f.since_landing = t - land;
+    // The descending leg: the last third of the flight's time (the ball falls from about
+    // its apex height there), then everything up to the time shown.
+    const double from = s.front().t + (2.0 / 3.0) * (land - s.front().t);
+    const std::size_t fine = std::max<std::size_t>(1, s.size() / 800);
+    for (std::size_t i = 0; i < s.size() && s[i].t <= std::max(t, land); i += fine)
+      if (s[i].t >= from) f.finish.push_back(s[i].position);
+    f.finish.push_back(f.ball);
+  }
   return f;
 }
 
@@ -193,20 +249,23 @@ Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int he
       return look_along(framing.points, f, up, aspect);
     }
     case CameraKind::Top: {
-      // Straight down would make the up hint degenerate; the hint is the shot direction.
-      return look_along(framing.points, -up, aim, aspect);
+      // Straight down. The up hint picks which way downrange runs: along the image's long
+      // axis when the shot is longer than it is wide (a straight drive fills a wide image
+      // instead of a thin strip up its middle).
+      double along_lo = 1e300, along_hi = -1e300, across_lo = 1e300, across_hi = -1e300;
+      for (const Vec3& p : framing.points) {
+        along_lo = std::min(along_lo, p.dot(aim));
+        along_hi = std::max(along_hi, p.dot(aim));
+        across_lo = std::min(across_lo, p.dot(right));
+        across_hi = std::max(across_hi, p.dot(right));
+      }
+      const bool long_shot = along_hi - along_lo >= across_hi - across_lo;
+      const bool downrange_right = long_shot == (aspect >= 1.0);
+      // up hint -z: image right = (-y) x (-z) = +x (downrange right, the target line's left up).
+      return look_along(framing.points, -up, downrange_right ? Vec3(-right) : aim, aspect);
     }
-    case CameraKind::Follow: {
-      Camera c;
-      Vec3 dir = framing.ball_velocity;
-      dir.y() = 0;
-      dir = dir.norm() > 0.5 ? dir.normalized() : framing.aim;
-      // Close enough that the club or bat at impact reads at t = 0.
-      c.eye = framing.ball - 3.5 * dir + Vec3(0, 1.3, 0);
-      c.target = framing.ball + 4.0 * dir;
-      c.near_m = 0.1;
-      return c;
-    }
+    case CameraKind::Follow:
+      return follow_camera(framing, aspect);
     case CameraKind::Behind:
       break;
   }
@@ -214,7 +273,10 @@ Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int he
   // extent; it steps back until the extent fits a field of view of at most 60°.
   Camera c;
   for (double back : {14.0, 20.0, 30.0, 45.0, 70.0, 110.0, 170.0, 260.0, 420.0}) {
-    c.eye = framing.launch - back * aim + Vec3(0, 3.0 + 0.25 * back, 0);
+    // A little to the right of the line (like a TV tower behind the tee), so a straight
+    // shot's near rising leg and far falling leg separate by parallax instead of drawing
+    // one vertical hairpin.
+    c.eye = framing.launch - back * aim + 0.18 * back * right + Vec3(0, 3.0 + 0.25 * back, 0);
     double yaw_lo = 1e9, yaw_hi = -1e9, pitch_lo = 1e9, pitch_hi = -1e9;
     for (const Vec3& p : framing.points) {
       const Vec3 r = p - c.eye;

@@ -63,11 +63,23 @@ struct ShotFraming {
   Vec3 aim = Vec3::UnitX();           ///< unit, horizontal: launch -> rest (or +x); Follow uses it at rest
   Vec3 ball = Vec3::Zero();           ///< m, ball centre at the time shown
   Vec3 ball_velocity = Vec3::Zero();  ///< m/s at the time shown (Follow looks along it)
+  /// s since the first landing at the time shown (negative before it); -1e9 when the shot
+  /// never lands. Follow turns from chasing the ball to the landing area in the last second
+  /// before the landing.
+  double since_landing = -1e9;
+  /// m; what the landing view frames: the descending leg (the last third of the flight's
+  /// time) and every sample after the landing up to the time shown.
+  std::vector<Vec3> finish;
 };
 ShotFraming shot_framing(const ShotTrajectory& trajectory, double t);
 
 /// The camera of `kind` for a width x height image. Behind, Side and Top keep every framing
-/// point inside the image with a margin of about 8 % per side; Follow sits behind the ball.
+/// point inside the image with a margin of about 8 % per side. Top lays the shot's long
+/// axis along the image's long axis (downrange to the right in a landscape image when the
+/// shot is longer than wide, up the image otherwise). Behind stands a little to the right
+/// of the line so a straight shot's rising and falling legs do not overlap. Follow chases
+/// the ball in the air and, in the last second before the landing, turns to frame the landing
+/// area (the descending leg, the bounces and the ball).
 Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height);
 
 /// Convenience: frame_shot(kind, shot_framing(trajectory, t), width, height).

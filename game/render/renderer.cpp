@@ -188,10 +188,10 @@ std::vector<std::uint8_t> Renderer::read_pixels() const {
   return rgba;
 }
 
-void Renderer::blit_to(unsigned framebuffer, int w, int h) const {
+void Renderer::blit_to(unsigned framebuffer, int x, int y, int w, int h) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, impl_->resolve_fbo);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
-  glBlitFramebuffer(0, 0, width_, height_, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
+  glBlitFramebuffer(0, 0, width_, height_, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT,
                     (w == width_ && h == height_) ? GL_NEAREST : GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -49,7 +49,10 @@ class Renderer {
   /// The resolved image, RGBA8, top row first (GL's bottom-up rows flipped).
   std::vector<std::uint8_t> read_pixels() const;
   /// Copies the resolved image into `framebuffer` (0 = the window) scaled to w x h.
-  void blit_to(unsigned framebuffer, int w, int h) const;
+  void blit_to(unsigned framebuffer, int w, int h) const { blit_to(framebuffer, 0, 0, w, h); }
+  /// Copies the resolved image into the rectangle (x, y, w, h) of `framebuffer`, GL window
+  /// coordinates (origin bottom-left): the 3D view beside the panels.
+  void blit_to(unsigned framebuffer, int x, int y, int w, int h) const;
   /// The resolved colour texture (RGBA8), e.g. for an ImGui image.
   unsigned resolved_texture() const;
 

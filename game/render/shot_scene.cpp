@@ -155,7 +155,14 @@ std::optional<double> ShotScene::ground_height(double x, double z) const {
 Camera ShotScene::camera(CameraKind kind, double t, int width, int height) const {
   ShotFraming f = shot_framing(trajectory_, t);
   if (impactor_) f.points.push_back(impactor_->position);
-  return frame_shot(kind, f, width, height);
+  // Follow sits close to the ball and may dip to grass height; 0.3 m keeps it off the blades.
+  return keep_above_ground(frame_shot(kind, f, width, height), kind == CameraKind::Follow ? 0.3 : 1.0);
+}
+
+Camera ShotScene::keep_above_ground(Camera c, double clearance) const {
+  const double ground = ground_height(c.eye.x(), c.eye.z()).value_or(impl_->plane_y);
+  if (c.eye.y() < ground + clearance) c.eye.y() = ground + clearance;
+  return c;
 }
 
 Scene ShotScene::build(const Camera& camera, double t, int width, int height) const {

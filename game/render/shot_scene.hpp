@@ -59,8 +59,13 @@ class ShotScene {
   void set_shot(const ShotTrajectory& trajectory, const std::optional<ImpactorPlacement>& impactor);
   const ShotTrajectory& trajectory() const { return trajectory_; }
 
-  /// The camera of `kind` at time t (s) for a width x height image.
+  /// The camera of `kind` at time t (s) for a width x height image, its eye kept above
+  /// the ground (keep_above_ground).
   Camera camera(CameraKind kind, double t, int width, int height) const;
+  /// `c` with its eye raised, if needed, to `clearance` m above the ground under it (the
+  /// world's, or the surrounding plane's), the target kept: a mouse orbit or a framing
+  /// never looks from under the turf.
+  Camera keep_above_ground(Camera c, double clearance = 1.0) const;
   /// Everything to draw at time t (s; clamped to the shot) seen by `camera`.
   Scene build(const Camera& camera, double t, int width, int height) const;
 

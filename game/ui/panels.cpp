@@ -20,10 +20,6 @@
 namespace sweetspot {
 namespace {
 
-constexpr float kLeftWidth = 360.0f;
-constexpr float kRightWidth = 420.0f;
-constexpr float kMonitorHeight = 416.0f;  // the Launch monitor panel; the Trajectory panel sits below it
-
 // A slider over a scenario key's value (SI) shown in the key's display unit, bounded by the
 // key's one range (the physics parameter's, through the schema); on change writes the
 // override. Ctrl+click types a value.
@@ -147,13 +143,10 @@ bool impact_picker(PanelContext& c) {
   return false;
 }
 
-bool shot_panel(PanelContext& c) {
+bool shot_section(PanelContext& c) {
   bool changed = false;
   const Scenario& s = c.scenario;
   UiState& st = c.state;
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(kLeftWidth, 0), ImGuiCond_Always);
-  ImGui::Begin("Shot", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
 
   const std::string& sport = s.resolved.sport->name;
   bool first = true;
@@ -210,18 +203,14 @@ bool shot_panel(PanelContext& c) {
     ImGui::TextDisabled("click the barrel: along = impact point, up = undercut");
   }
   changed |= impact_picker(c);
-  ImGui::End();
   return changed;
 }
 
-bool tuning_panel(PanelContext& c) {
+bool tuning_section(PanelContext& c) {
   bool changed = false;
   const Scenario& s = c.scenario;
   UiState& st = c.state;
   const std::uint8_t k = strikes_of(s);
-  ImGui::SetNextWindowPos(ImVec2(8, 470), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(kLeftWidth, 0), ImGuiCond_Always);
-  ImGui::Begin("Tuning", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
   const ImpactSummary& im = c.result.impact;
   const ImpactMaterial& mat = s.resolved.material;
   changed |= slider(st, k, "e", "impact.e", im.present ? im.e : 0.8, "%.3f");
@@ -300,19 +289,13 @@ bool tuning_panel(PanelContext& c) {
     }
     ImGui::EndPopup();
   }
-  ImGui::End();
   return changed;
 }
 
-void monitor_panel(PanelContext& c) {
+void monitor_section(PanelContext& c) {
   const ShotResult& r = c.result;
   const Scenario& s = c.scenario;
   const SportProfile& sport = *s.resolved.sport;
-  const float x = ImGui::GetIO().DisplaySize.x - kRightWidth - 8;
-  ImGui::SetNextWindowPos(ImVec2(x, 8), ImGuiCond_Always);
-  // Fixed height down to the Trajectory panel; the rows scroll (the impact rows are last).
-  ImGui::SetNextWindowSize(ImVec2(kRightWidth, kMonitorHeight), ImGuiCond_Always);
-  ImGui::Begin("Launch monitor", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
   // Warnings first, where they are seen (values outside what labs measure, energy created,
   // spin past the aero fits), as `shot` prints them.
   for (const std::string& w : r.warnings) {
@@ -360,24 +343,9 @@ void monitor_panel(PanelContext& c) {
   }
   ImGui::Text("end: %s   contact: %s   energy lost %.1f J", to_string(r.end),
               r.impact.present ? to_string(r.impact.contact) : "-", r.impact.energy_loss);
-  ImGui::End();
 }
 
-void trajectory_panel(PanelContext& c) {
-  const float x = ImGui::GetIO().DisplaySize.x - kRightWidth - 8;
-  ImGui::SetNextWindowPos(ImVec2(x, 8 + kMonitorHeight + 6), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(kRightWidth, 0), ImGuiCond_Always);
-  ImGui::Begin("Trajectory", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-  draw_trajectory_plots(c.result.trajectory, c.replay.time);
-  ImGui::End();
-}
-
-void replay_panel(PanelContext& c) {
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  const float w = size.x - kLeftWidth - kRightWidth - 32;
-  ImGui::SetNextWindowPos(ImVec2(kLeftWidth + 16, size.y - 96), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(w, 0), ImGuiCond_Always);
-  ImGui::Begin("Replay", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+void replay_section(PanelContext& c) {
   const double end = duration(c.result.trajectory);
   if (ImGui::Button(c.replay.playing ? "Pause" : "Play")) {
     if (!c.replay.playing && c.replay.time >= end) c.replay.time = 0.0;
@@ -398,17 +366,74 @@ void replay_panel(PanelContext& c) {
   ImGui::SetNextItemWidth(-1);
   if (ImGui::SliderFloat("##time", &t, 0.0f, static_cast<float>(end), "%.2f s")) c.replay.scrub(t, end);
   if (!c.status.empty()) ImGui::TextWrapped("%s", c.status.c_str());
+}
+
+constexpr ImGuiWindowFlags kColumnFlags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar;
+
+void begin_column(const char* id, const Rect& r) {
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+  ImGui::Begin(id, nullptr, kColumnFlags);
+}
+
+bool section(const char* title, bool open_at_start) {
+  return ImGui::CollapsingHeader(title, open_at_start ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+}
+
+// The hidden layout's HUD: the numbers a player looks at, and the keys.
+void hud(PanelContext& c, const Rect& view) {
+  ImGui::SetNextWindowPos(ImVec2(view.x + 10, view.y + 10), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.45f);
+  ImGui::Begin("##hud", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  const ShotResult& r = c.result;
+  const SportProfile& sport = *c.scenario.resolved.sport;
+  const DisplayUnits u = display_units(sport, UnitSystem::Imperial);
+  std::string line;
+  for (const char* id : {"ball_speed", "launch_angle", "spin_rate", "carry", "total"}) {
+    const Metric* m = find_metric(id);
+    if (m == nullptr) continue;
+    const auto text = m->show(r, u);
+    if (!text) continue;
+    line += (line.empty() ? "" : "   ") + std::string(m->label) + " " + *text;
+  }
+  ImGui::TextUnformatted(line.c_str());
+  ImGui::TextDisabled("H: panels   1-4: cameras (again: reset)   R: replay   Space: hit again");
+  if (!c.status.empty()) ImGui::TextWrapped("%s", c.status.c_str());
   ImGui::End();
 }
 
 }  // namespace
 
-bool draw_panels(PanelContext& ctx) {
-  bool changed = shot_panel(ctx);
-  changed |= tuning_panel(ctx);
-  monitor_panel(ctx);
-  trajectory_panel(ctx);
-  replay_panel(ctx);
+bool draw_panels(PanelContext& ctx, const PanelLayout& layout) {
+  bool changed = false;
+  switch (layout.kind) {
+    case LayoutKind::Hidden:
+      hud(ctx, layout.view);
+      break;
+    case LayoutKind::Wide:
+      begin_column("##left", layout.left);
+      if (section("Shot", true)) changed |= shot_section(ctx);
+      if (section("Tuning", true)) changed |= tuning_section(ctx);
+      ImGui::End();
+      begin_column("##right", layout.right);
+      if (section("Replay", true)) replay_section(ctx);
+      if (section("Launch monitor", true)) monitor_section(ctx);
+      if (section("Trajectory", true)) draw_trajectory_plots(ctx.result.trajectory, ctx.replay.time);
+      ImGui::End();
+      break;
+    case LayoutKind::Sidebar:
+      begin_column("##sidebar", layout.right);
+      if (section("Replay", true)) replay_section(ctx);
+      if (section("Launch monitor", true)) monitor_section(ctx);
+      if (section("Shot", true)) changed |= shot_section(ctx);
+      if (section("Tuning", false)) changed |= tuning_section(ctx);
+      if (section("Trajectory", false)) draw_trajectory_plots(ctx.result.trajectory, ctx.replay.time);
+      ImGui::End();
+      break;
+  }
   return changed;
 }
 

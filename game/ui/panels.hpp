@@ -6,6 +6,7 @@
 #include <string>
 
 #include "game/render/camera.hpp"
+#include "game/ui/layout.hpp"
 #include "game/ui/replay.hpp"
 #include "game/ui/ui_state.hpp"
 
@@ -23,8 +24,8 @@ struct PanelContext {
   std::string& save_path;         ///< Save box text
 };
 
-/// Lays the panels out for the current display size (left column: Shot, Tuning; right
-/// column: Launch monitor, Trajectory, Replay). Returns true when the shot must be recomputed.
-bool draw_panels(PanelContext& ctx);
+/// Draws the panels where `layout` puts them (layout.hpp: two columns, one sidebar, or
+/// only a HUD). Returns true when the shot must be recomputed.
+bool draw_panels(PanelContext& ctx, const PanelLayout& layout);
 
 }  // namespace sweetspot

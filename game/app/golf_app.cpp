@@ -387,6 +387,10 @@ WindowNext run_golf_loop(const Assets& assets, GameWindow& win, Renderer& render
     if (gv.stage == GolfView::Stage::Aiming || gv.stage == GolfView::Stage::Swinging) {
       gv.ensure_scene(assets);
       gv.scene->set_shot(resting(gv.ball_centre()), std::nullopt);
+      // The 50 yd lines run from the ball along the player's aim: the aiming aid.
+      gv.scene->set_aim(gv.aim_dir());
+    } else if (gv.scene) {
+      gv.scene->set_aim(std::nullopt);  // the shot's own line from where it was hit
     }
     if (w > 0 && h > 0 && gv.scene) {
       if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);

@@ -15,7 +15,7 @@ struct Vertex {
   Eigen::Vector3f position = Eigen::Vector3f::Zero();  ///< m
   Eigen::Vector3f normal = Eigen::Vector3f::UnitY();   ///< unit; ignored by unlit shaders
   Eigen::Vector3f color = Eigen::Vector3f::Ones();     ///< linear-ish RGB 0..1
-  float pattern = 0.0f;  ///< 1 = mown-grass stripes (fairway, green, tee), 0 = plain
+  float pattern = 0.0f;  ///< lit meshes: a surface_look code (mesh_import.hpp); ribbons: the across-ribbon coordinate
 };
 
 struct MeshData {

@@ -15,9 +15,20 @@
 
 namespace sweetspot {
 
+/// How lit.frag textures a surface procedurally (the vertex `pattern`, as a float): the
+/// detail that makes a flat colour read as turf, sand, water or dirt.
+namespace surface_look {
+inline constexpr float kPlain = 0.0f;      ///< equipment, walls: the colour only
+inline constexpr float kMown = 1.0f;       ///< tee, fairway, green, infield grass: mowing stripes, fine blade noise
+inline constexpr float kLongGrass = 2.0f;  ///< rough, out of bounds: patchy, no stripes
+inline constexpr float kSand = 3.0f;       ///< bunkers: fine grain and wind ripples
+inline constexpr float kWater = 4.0f;      ///< ponds: the sky reflected at grazing angles, sun glints
+inline constexpr float kDirt = 5.0f;       ///< infield skin, warning track: clods and raked grain
+}  // namespace surface_look
+
 struct PaletteEntry {
   Eigen::Vector3f color;  ///< RGB 0..1 as lit under the noon sun
-  float pattern;          ///< 1 = mown stripes
+  float pattern;          ///< a surface_look code
 };
 
 /// The palette colour for a material name (tee, fairway, rough, sand, green, water, dirt,

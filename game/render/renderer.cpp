@@ -130,18 +130,32 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
   m.lit.set("u_sun_dir", scene.sun_direction);
   m.lit.set("u_haze", scene.sky_horizon);
   m.lit.set("u_haze_range", scene.haze_range);
-  for (const auto& inst : scene.meshes) {
+  // Front to back, so the depth test rejects hidden fragments before they are shaded (a
+  // software rasteriser's cost is the fragments it shades): small meshes first, then the
+  // ground paint from its top layer down, then the terrain under it all.
+  std::vector<const MeshInstance*> order;
+  order.reserve(scene.meshes.size());
+  for (const auto& inst : scene.meshes) order.push_back(&inst);
+  auto rank = [](const MeshInstance* i) { return i->terrain ? 1000000 : i->decal > 0 ? 1000 - i->decal : 0; };
+  std::stable_sort(order.begin(), order.end(), [&](const MeshInstance* a, const MeshInstance* b) { return rank(a) < rank(b); });
+  for (const MeshInstance* instance : order) {
+    const MeshInstance& inst = *instance;
     if (inst.mesh == nullptr) continue;
     // Terrain is pushed back a little in depth so markers lying on it win the depth test.
     if (inst.terrain) {
       glEnable(GL_POLYGON_OFFSET_FILL);
       glPolygonOffset(1.0f, 4.0f);
+    } else if (inst.decal > 0) {
+      // Each decal layer one step in front of the one below (terrain is 1, 4), still behind
+      // the ground overlays, which are lifted by centimetres.
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(1.0f - 0.5f * static_cast<float>(inst.decal), 4.0f - 4.0f * static_cast<float>(inst.decal));
     }
-    m.lit.set("u_specular", inst.terrain ? 0.0f : 1.0f);
+    m.lit.set("u_specular", inst.terrain || inst.decal > 0 ? 0.0f : 1.0f);
     m.lit.set("u_model", inst.model);
     m.lit.set("u_normal_matrix", normal_matrix(inst.model));
     inst.mesh->draw();
-    if (inst.terrain) glDisable(GL_POLYGON_OFFSET_FILL);
+    if (inst.terrain || inst.decal > 0) glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
   // Sky after the opaque meshes, at the far plane with LEQUAL: only pixels nothing covered

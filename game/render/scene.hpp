@@ -15,6 +15,9 @@ struct MeshInstance {
   const GpuMesh* mesh = nullptr;                      ///< not owned
   Eigen::Matrix4f model = Eigen::Matrix4f::Identity();  ///< mesh frame -> world, m
   bool terrain = false;  ///< drawn with a depth offset so ground markers sit on it
+  /// 1, 2, ...: flat paint lying on the terrain (a ballpark's skin, bases), each layer drawn
+  /// over the terrain and the layers below it by a depth offset; 0 = an ordinary mesh.
+  int decal = 0;
 };
 
 struct Scene {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "game/render/ballpark_dressing.hpp"
 #include "game/render/gpu_mesh.hpp"
 #include "game/render/mesh_import.hpp"
 #include "game/render/overlay_geometry.hpp"
@@ -25,6 +26,8 @@ const Eigen::Vector3f kRestColor{1.00f, 1.00f, 1.00f};
 const Eigen::Vector3f kFenceLabelColor{1.00f, 0.92f, 0.30f};
 const Eigen::Vector3f kShadowColor{0.05f, 0.07f, 0.05f};
 const Eigen::Vector3f kTrackColor{0.10f, 0.22f, 0.08f};
+const Eigen::Vector3f kBallShadowColor{0.06f, 0.11f, 0.05f};
+const Eigen::Vector3f kLegendText{0.92f, 0.92f, 0.92f};
 
 // Where the ray from `origin` along `dir` (xz) first meets the polyline `line` (xz), in m.
 std::optional<double> ray_polyline(const Vec3& origin, const Vec3& dir, const std::vector<Vec3>& line) {
@@ -75,10 +78,11 @@ struct ShotScene::Impl {
   ShotSceneInput input;
   SceneStyle style;
   bool golf = true;
-  std::unique_ptr<GpuMesh> world, surroundings, ball, tee, flag, impactor;
+  std::unique_ptr<GpuMesh> world, surroundings, ball, tee, flag, impactor, poles;
+  std::vector<std::unique_ptr<GpuMesh>> dressing;  // a ballpark's diamond, lowest layer first
   std::optional<Vec3> flag_position;
   std::vector<std::pair<double, Vec3>> fence_marks;  // (distance m, label anchor)
-  double world_x_max = 0;
+  Vec3 world_min = Vec3::Zero(), world_max = Vec3::Zero();  // the world mesh's box, m
   double plane_y = 0;  // the surrounding grass plane, m
 };
 
@@ -101,12 +105,14 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
     const WorldDescription& d = input.world->description();
     m.world = std::make_unique<GpuMesh>(world_mesh_data(d));
     ground_min_y = 1e300;
-    m.world_x_max = -1e300;
+    m.world_min = Vec3::Constant(1e300);
+    m.world_max = Vec3::Constant(-1e300);
     for (const WorldMesh& wm : d.meshes)
       for (const Vec3& p : wm.vertices) {
-        ground_min_y = std::min(ground_min_y, p.y());
-        m.world_x_max = std::max(m.world_x_max, p.x());
+        m.world_min = m.world_min.cwiseMin(p);
+        m.world_max = m.world_max.cwiseMax(p);
       }
+    ground_min_y = m.world_min.y();
     m.flag_position = input.flag ? input.flag : input.world->pin;
     // Fence distances where the foul lines, the gaps and centre field meet the fence line.
     if (!input.world->fence_line.empty()) {
@@ -118,9 +124,14 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
           m.fence_marks.emplace_back(*hit, origin + *hit * dir);
         }
       }
+      if (input.distance_unit == "ft") {
+        const Vec3 home(d.origin.x(), ground_height(d.origin.x(), d.origin.z()).value_or(d.origin.y()), d.origin.z());
+        const BallparkDressing dress = ballpark_dressing(home, input.world->fence_line, input.world->fence_height);
+        for (const MeshData& layer : dress.layers) m.dressing.push_back(std::make_unique<GpuMesh>(layer));
+        m.poles = std::make_unique<GpuMesh>(dress.poles);
+      }
     }
   } else {
-    m.world_x_max = 0;
     m.flag_position = input.flag;
   }
   // Beyond the world mesh: a grass plane just below its lowest point, out to the horizon.
@@ -155,6 +166,9 @@ std::optional<double> ShotScene::ground_height(double x, double z) const {
 Camera ShotScene::camera(CameraKind kind, double t, int width, int height) const {
   ShotFraming f = shot_framing(trajectory_, t);
   if (impactor_) f.points.push_back(impactor_->position);
+  // From above, a ballpark shows the whole park, fence to fence (a spray chart's view).
+  if (kind == CameraKind::Top && impl_->input.world != nullptr)
+    for (const Vec3& p : impl_->input.world->fence_line) f.points.push_back(p);
   // Follow sits close to the ball and may dip to grass height; 0.3 m keeps it off the blades.
   return keep_above_ground(frame_shot(kind, f, width, height), kind == CameraKind::Follow ? 0.3 : 1.0);
 }
@@ -174,6 +188,9 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   auto px = [&](const Vec3& p, double pixels) { return style_scale * pixels * camera.metres_per_pixel(p, height); };
 
   if (m.world) scene.meshes.push_back({m.world.get(), Eigen::Matrix4f::Identity(), true});
+  for (std::size_t i = 0; i < m.dressing.size(); ++i)
+    scene.meshes.push_back({m.dressing[i].get(), Eigen::Matrix4f::Identity(), false, static_cast<int>(i) + 1});
+  if (m.poles) scene.meshes.push_back({m.poles.get(), Eigen::Matrix4f::Identity(), false});
   scene.meshes.push_back({m.surroundings.get(), Eigen::Matrix4f::Identity(), true});
 
   const auto& samples = trajectory_.samples;
@@ -196,6 +213,12 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   const Vec3 ball = have_shot ? at.position : launch;
   const double radius = std::max(m.input.ball_radius, px(ball, m.style.ball_min_radius_px));
   scene.meshes.push_back({m.ball.get(), translate_scale(ball, radius / 0.021335), false});
+  // Its shadow straight below (the sun near noon), as big as the ball is drawn: the eye
+  // reads the ball's height from the gap between them, as on television.
+  {
+    const Vec3 g(ball.x(), ground_at(ball.x(), ball.z()) + 0.02, ball.z());
+    append_ring(scene.ground_overlay, g, 0.0, 1.1 * radius, kBallShadowColor, 20);
+  }
 
   // A line on the ground `pixels` wide, widened across the line of sight (so it reads from
   // a grazing behind view as well as from above) and lifted by half its width.
@@ -206,7 +229,9 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   // Trail up to t, and its ground track (the flight's shadow at noon) so the eye can tell
   // height from distance in the behind view.
   if (have_shot) {
-    append_trail(scene.top_overlay, trajectory_, t, camera, {m.style.trail_width_px * std::max(1.0, style_scale), height});
+    TrailStyle trail{m.style.trail_width_px * std::max(1.0, style_scale), height};
+    trail.glow_px = m.style.trail_glow_px * std::max(1.0, style_scale);
+    append_trail(scene.top_overlay, trajectory_, t, camera, trail);
     std::size_t last = 0;
     sample_at(trajectory_, t, &last);
     const std::size_t stride = std::max<std::size_t>(1, samples.size() / 300);
@@ -246,6 +271,31 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     append_text(scene.top_overlay, text, shadow, cam_right, cam_up, h, kShadowColor);
     append_text(scene.top_overlay, text, origin, cam_right, cam_up, h, color);
   };
+  // The trail colours' key, bottom-left, claimed first so no label covers it.
+  if (samples.size() >= 2 && m.style.legend) {
+    // A point `depth` m in front of the eye under pixel (x, y): screen-fixed geometry drawn
+    // with the overlays (no depth test), sized in pixels.
+    const double depth = 2.0 * camera.near_m;
+    const double mpp = 2.0 * depth * std::tan(camera.fov_y / 2) / height;
+    const Vec3 f = camera.forward();
+    auto screen = [&](double x, double y) {
+      return Vec3(camera.eye + depth * f + (x - 0.5 * width) * mpp * cam_right - (y - 0.5 * height) * mpp * cam_up);
+    };
+    const double h_px = style_scale * 12.0, gap = style_scale * 8.0, swatch = style_scale * 18.0;
+    double x = style_scale * 12.0;
+    const double y = height - style_scale * 12.0;
+    const double x_start = x;
+    for (const auto& [phase, name] : {std::pair{Phase::Flight, "flight"}, std::pair{Phase::Bounce, "bounce"},
+                                      std::pair{Phase::Roll, "roll"}}) {
+      const double mid = y - 0.5 * h_px;
+      append_band(scene.top_overlay, screen(x, mid), screen(x + swatch, mid), 0.4 * h_px * mpp, -f, phase_color(phase));
+      x += swatch + 0.5 * gap;
+      append_text(scene.top_overlay, name, screen(x + 1.0, y + 1.0), cam_right, cam_up, h_px * mpp, kShadowColor);
+      append_text(scene.top_overlay, name, screen(x, y), cam_right, cam_up, h_px * mpp, kLegendText);
+      x += text_width(name, h_px) + 1.5 * gap;
+    }
+    taken.emplace_back(x_start - 4.0, y - h_px - 4.0, x, y + 4.0);
+  }
   // Landing ring with the carry, rest pin with the total (golf yards, baseball feet).
   if (have_shot) {
     const auto& s = trajectory_.summary;
@@ -267,19 +317,34 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   }
 
   if (m.golf) {
-    const Bounds b = shot_bounds(trajectory_);
-    const double reach = std::max({b.max.x() + 20.0, m.world_x_max, 60.0});
+    // One reference for every distance: the ball's start. Lines across the shot's aim every
+    // 50 yd from there, out past the shot and to the end of the world.
+    Vec3 aim = aim_.value_or(Vec3::UnitX());
+    if (!aim_ && have_shot) {
+      Vec3 d = samples.back().position - launch;
+      d.y() = 0;
+      if (d.norm() > 1.0) aim = d.normalized();
+    }
+    aim.y() = 0;
+    aim = aim.norm() > 1e-9 ? aim.normalized() : Vec3::UnitX();
+    const Vec3 across(-aim.z(), 0.0, aim.x());  // right of the aim line
+    double reach = 60.0;
+    for (const auto& q : samples) reach = std::max(reach, (q.position - launch).dot(aim) + 20.0);
+    if (m.world) {
+      for (double x : {m.world_min.x(), m.world_max.x()})
+        for (double z : {m.world_min.z(), m.world_max.z()}) reach = std::max(reach, (Vec3(x, 0, z) - launch).dot(aim));
+    }
     const double half = 22.0;
     for (int k = 1; k * 50 * kYard <= reach && k <= 20; ++k) {
-      const double x = k * 50 * kYard;
-      if (m.world && !ground_height(x, 0.0)) continue;  // off the world
+      const Vec3 mid = launch + k * 50 * kYard * aim;
+      if (m.world && !ground_height(mid.x(), mid.z())) continue;  // off the world
       constexpr int n = 22;
-      for (int i = 0; i < n; ++i) {
-        const double z0 = -half + 2 * half * i / n, z1 = -half + 2 * half * (i + 1) / n;
-        ground_line(Vec3(x, ground_at(x, z0), z0), Vec3(x, ground_at(x, z1), z1), 2.0, kWhite);
-      }
-      const Vec3 anchor(x, ground_at(x, -half - 3.0) + 1.0, -half - 3.0);
-      label(std::to_string(k * 50), anchor, kWhite);
+      auto at = [&](double off) {
+        const Vec3 q = mid + off * across;
+        return Vec3(q.x(), ground_at(q.x(), q.z()), q.z());
+      };
+      for (int i = 0; i < n; ++i) ground_line(at(-half + 2 * half * i / n), at(-half + 2 * half * (i + 1) / n), 2.0, kWhite);
+      label(std::to_string(k * 50), at(-half - 3.0) + Vec3(0, 1.0, 0), kWhite);
     }
   } else {
     for (const auto& [dist, at_wall] : m.fence_marks) {

@@ -41,6 +41,8 @@ struct ShotSceneInput {
 /// Sizes of the screen-constant decorations, in pixels of the output image.
 struct SceneStyle {
   double trail_width_px = 5.0;
+  double trail_glow_px = 18.0;      ///< the tracer's soft halo (0 = none)
+  bool legend = true;               ///< the trail colours' key in the image's bottom-left corner
   double ball_min_radius_px = 4.0;  ///< the ball is drawn at least this big (true size is sub-pixel far away)
   double label_height_px = 16.0;
   double marker_radius_px = 11.0;
@@ -57,6 +59,11 @@ class ShotScene {
 
   /// Replaces the shot (the game recomputes it whenever a parameter changes).
   void set_shot(const ShotTrajectory& trajectory, const std::optional<ImpactorPlacement>& impactor);
+  /// The horizontal direction the golf distance lines run along from the ball's start
+  /// (every 50 yd, across it). Nothing = the shot's own direction (launch to rest), or +x
+  /// (the world's target line) for a ball that did not move. The golf game sets the
+  /// player's aim while the ball waits to be hit.
+  void set_aim(const std::optional<Vec3>& aim) { aim_ = aim; }
   const ShotTrajectory& trajectory() const { return trajectory_; }
 
   /// The camera of `kind` at time t (s) for a width x height image, its eye kept above
@@ -78,6 +85,7 @@ class ShotScene {
   std::unique_ptr<Impl> impl_;
   ShotTrajectory trajectory_;
   std::optional<ImpactorPlacement> impactor_;
+  std::optional<Vec3> aim_;
 };
 
 }  // namespace sweetspot

@@ -18,6 +18,7 @@
 #include "game/render/render_error.hpp"
 #include "game/render/render_paths.hpp"
 #include "game/render/renderer.hpp"
+#include "game/render/shot_scene.hpp"
 #include "game/render/synthetic_shot.hpp"
 #include "game/render/trail_geometry.hpp"
 #include "physics/error.hpp"
@@ -329,4 +330,30 @@ TEST_CASE("without an EGL vendor the context fails with a clear RenderUnavailabl
     CHECK_THAT(e.what(), Catch::Contains("cannot create an off-screen OpenGL context"));
   }
   CHECK_THROWS_AS(render_shot_rgba(synthetic_shot(), range_request(64, 64, CameraKind::Side)), RenderUnavailable);
+}
+
+TEST_CASE("no camera looks from under the ground: framings and a mouse orbit are lifted above it", "[render]") {
+  OffscreenContext context;
+  ShotSceneInput input;
+  input.assets = &test::assets();
+  input.world = &test_world("test_range.obj");
+  ShotScene scene(input);
+  const ShotTrajectory shot = synthetic_shot();
+  scene.set_shot(shot, std::nullopt);
+  for (CameraKind k : {CameraKind::Behind, CameraKind::Side, CameraKind::Top, CameraKind::Follow}) {
+    for (double t : {0.0, 2.0, shot.samples.back().t}) {
+      INFO(to_string(k) << " t=" << t);
+      const Camera c = scene.camera(k, t, 640, 360);
+      const double ground = scene.ground_height(c.eye.x(), c.eye.z()).value_or(-1e9);
+      CHECK(c.eye.y() >= ground + 0.3 - 1e-9);
+    }
+  }
+  // A camera dragged 5 m under the turf (what a 40 px mouse drag used to do) comes back up
+  // to 1 m above it, still looking at its target.
+  Camera under = scene.camera(CameraKind::Behind, 0.0, 640, 360);
+  const Vec3 target = under.target;
+  under.eye.y() = scene.ground_height(under.eye.x(), under.eye.z()).value() - 5.0;
+  const Camera lifted = scene.keep_above_ground(under);
+  CHECK(lifted.eye.y() == Approx(scene.ground_height(lifted.eye.x(), lifted.eye.z()).value() + 1.0));
+  CHECK(lifted.target == target);
 }

@@ -63,12 +63,29 @@ TEST_CASE("default cameras frame the whole shot inside the image", "[render][uni
     CHECK(ymax < 0.97 * h);
     CHECK(std::max((xmax - xmin) / w, (ymax - ymin) / h) > 0.5);
   }
-  // Side: downrange runs left to right. Top: downrange runs up the image, right is right.
+  // Side: downrange runs left to right.
   const Camera side = frame_shot(CameraKind::Side, shot, 0.0, w, h);
   CHECK(side.project(Vec3(200, 0, 0), w, h)->x() > side.project(Vec3(0, 0, 0), w, h)->x() + 300);
+  // Top: the shot's long axis along the image's long axis. A drive (long, narrow) in a
+  // landscape image runs left to right, the right of the target line down the image (a map
+  // turned so the tee is on the left); in a portrait image it runs up, right is right.
   const Camera top = frame_shot(CameraKind::Top, shot, 0.0, w, h);
-  CHECK(top.project(Vec3(200, 0, 0), w, h)->y() < top.project(Vec3(0, 0, 0), w, h)->y() - 300);
-  CHECK(top.project(Vec3(100, 0, 20), w, h)->x() > top.project(Vec3(100, 0, -20), w, h)->x());
+  CHECK(top.project(Vec3(200, 0, 0), w, h)->x() > top.project(Vec3(0, 0, 0), w, h)->x() + 600);
+  CHECK(top.project(Vec3(100, 0, 20), w, h)->y() > top.project(Vec3(100, 0, -20), w, h)->y());
+  const Camera tall = frame_shot(CameraKind::Top, shot, 0.0, h, w);
+  CHECK(tall.project(Vec3(200, 0, 0), h, w)->y() < tall.project(Vec3(0, 0, 0), h, w)->y() - 600);
+  CHECK(tall.project(Vec3(100, 0, 20), h, w)->x() > tall.project(Vec3(100, 0, -20), h, w)->x());
+  // The drive fills the landscape image along its length (it used to sit in a thin strip
+  // up the middle, 60 % of the frame empty).
+  {
+    double lo = 1e9, hi = -1e9;
+    for (const auto& s : shot.samples) {
+      const double x = top.project(s.position, w, h)->x();
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+    CHECK(hi - lo > 0.8 * w);
+  }
   // Behind: the launch point is low in the image, the apex above it.
   const Camera behind = frame_shot(CameraKind::Behind, shot, 0.0, w, h);
   CHECK(behind.project(shot.samples.front().position, w, h)->y() > 0.6 * h);
@@ -177,9 +194,15 @@ TEST_CASE("every world surface material has a distinct palette colour", "[render
   }
   CHECK(seen.size() == std::size(names));
   CHECK_FALSE(palette_color("no_such_material"));
-  // Fairway and green carry mowing stripes, rough does not.
-  CHECK(palette_color("fairway")->pattern == 1.0f);
-  CHECK(palette_color("rough")->pattern == 0.0f);
+  // Each surface has its procedural look: fairway and green mown (stripes), rough long
+  // grass, then sand, water, dirt; walls and equipment plain.
+  CHECK(palette_color("fairway")->pattern == surface_look::kMown);
+  CHECK(palette_color("green")->pattern == surface_look::kMown);
+  CHECK(palette_color("rough")->pattern == surface_look::kLongGrass);
+  CHECK(palette_color("sand")->pattern == surface_look::kSand);
+  CHECK(palette_color("water")->pattern == surface_look::kWater);
+  CHECK(palette_color("dirt")->pattern == surface_look::kDirt);
+  CHECK(palette_color("wall")->pattern == surface_look::kPlain);
 }
 
 TEST_CASE("label text: every marker character has a glyph, width grows per character", "[render][unit]") {
@@ -190,4 +213,37 @@ TEST_CASE("label text: every marker character has a glyph, width grows per chara
   CHECK(wd == Approx(17.0));  // 3 glyphs of 5 cells + 2 gaps, cell = 1 m
   // "1" has 10 lit cells, "0" has 19: 48 quads.
   CHECK(m.vertices.size() == 48 * 4);
+}
+
+TEST_CASE("the tracer's halo lies under the core and fades from the ball back to the launch", "[render][unit]") {
+  ShotTrajectory s;
+  for (int i = 0; i < 5; ++i) {
+    TrajectorySample x;
+    x.t = i;
+    x.position = Vec3(10.0 * i, 4.0 * i * (4 - i), 0);
+    x.phase = Phase::Flight;
+    s.samples.push_back(x);
+  }
+  Camera c;
+  c.eye = Vec3(20, 5, 80);
+  c.target = Vec3(20, 5, 0);
+  TrailStyle style{5.0, 720};
+  style.glow_px = 18.0;
+  MeshData out;
+  append_trail(out, s, 100.0, c, style);
+  // Four halo quads first (drawn under), then the four core quads.
+  REQUIRE(out.vertices.size() == 2 * 4 * 4);
+  for (int q = 0; q < 4; ++q) {
+    CHECK(out.vertices[std::size_t(4 * q)].normal.x() == 2.0f);      // halo
+    CHECK(out.vertices[std::size_t(16 + 4 * q)].normal.x() == 1.0f); // feathered core
+  }
+  // Opacity grows toward the ball: 40 % of the full opacity at the launch, all of it at the ball.
+  CHECK(out.vertices[0].normal.y() == Approx(0.4 * style.glow_opacity));
+  CHECK(out.vertices[14].normal.y() == Approx(style.glow_opacity));
+  for (int q = 0; q + 1 < 4; ++q)
+    CHECK(out.vertices[std::size_t(4 * (q + 1))].normal.y() > out.vertices[std::size_t(4 * q)].normal.y());
+  // The halo is glow_px wide on screen, the core width_px + 1.
+  const auto a = c.project(out.vertices[0].position.cast<double>(), 1280, 720);
+  const auto b = c.project(out.vertices[1].position.cast<double>(), 1280, 720);
+  CHECK((*a - *b).norm() == Approx(18.0).epsilon(0.05));
 }

@@ -1,0 +1,70 @@
+// Every camera on real shots (issue 19): a driver, a wedge and a home run, early in the
+// flight, at the apex, at the landing and at the end. What must be in the frame is in it:
+// the ball always; the trail drawn so far for the cameras that frame the shot; the landing
+// point once Follow has turned to the landing area.
+#include <catch2/catch.hpp>
+
+#include "game/content/scenario.hpp"
+#include "game/render/camera.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+bool in_frame(const Camera& c, const Vec3& p, int w, int h, double margin = 0.0) {
+  const auto q = c.project(p, w, h);
+  return q && q->x() >= margin && q->x() <= w - margin && q->y() >= margin && q->y() <= h - margin;
+}
+
+}  // namespace
+
+TEST_CASE("every camera keeps the ball and the trail in the frame on a driver, a wedge and a home run", "[render][unit]") {
+  const int w = 960, h = 540;
+  for (const char* name : {"golf/driver", "golf/pw", "baseball/home-run"}) {
+    const ShotResult r = run_scenario(load_scenario(test::assets(), name, {}));
+    const ShotTrajectory& shot = r.trajectory;
+    REQUIRE(shot.samples.size() > 10);
+    const double land = shot.summary.hang_time_s, end = shot.samples.back().t;
+    REQUIRE(land > 0);
+    for (const double t : {0.15 * land, 0.5 * land, land, end}) {
+      for (const CameraKind k : {CameraKind::Behind, CameraKind::Side, CameraKind::Top, CameraKind::Follow}) {
+        INFO(name << " t=" << t << " s, camera " << to_string(k));
+        const Camera c = frame_shot(k, shot, t, w, h);
+        const Vec3 ball = sample_at(shot, t).position;
+        CHECK(in_frame(c, ball, w, h, 2.0));
+        if (k != CameraKind::Follow) {
+          // The whole trail up to t (the framing covers the whole shot).
+          std::size_t outside = 0;
+          for (const auto& s : shot.samples)
+            if (s.t <= t && !in_frame(c, s.position, w, h)) ++outside;
+          CHECK(outside == 0);
+        } else if (t >= land) {
+          // Follow has turned to the landing area: the landing point and the ball.
+          CHECK(in_frame(c, shot.summary.landing_position, w, h, 2.0));
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("follow turns smoothly from the chase to the landing view", "[render][unit]") {
+  const ShotResult r = run_scenario(load_scenario(test::assets(), "golf/driver", {}));
+  const ShotTrajectory& shot = r.trajectory;
+  const double land = shot.summary.hang_time_s;
+  const int w = 960, h = 540;
+  // No jump between frames 1/60 s apart through the turn: the eye moves less than the ball
+  // travels in a frame plus the turn's own share (the eye travels ~60 m over the second).
+  Vec3 prev = frame_shot(CameraKind::Follow, shot, land - 1.2, w, h).eye;
+  double worst = 0;
+  for (double t = land - 1.2 + 1.0 / 60; t <= land + 0.2; t += 1.0 / 60) {
+    const Vec3 eye = frame_shot(CameraKind::Follow, shot, t, w, h).eye;
+    worst = std::max(worst, (eye - prev).norm());
+    prev = eye;
+  }
+  CHECK(worst < 3.0);
+  // Before the turn it chases: the eye a few metres behind the ball.
+  const double t = land - 2.0;
+  const Vec3 ball = sample_at(shot, t).position;
+  CHECK((frame_shot(CameraKind::Follow, shot, t, w, h).eye - ball).norm() < 6.0);
+}

@@ -258,6 +258,7 @@ bool end_frame(GameWindow& win, const PlayOptions& o, FrameStats& stats, double 
                bool force_last) {
   ++stats.frames;
   stats.ms_total += frame_ms;
+  stats.frame_ms.push_back(frame_ms);
   const bool last = force_last || (o.frames > 0 && stats.frames >= o.frames);
   if (last && !o.screenshot.empty()) {
     int sw = 0, sh = 0;

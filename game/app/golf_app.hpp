@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ostream>
+#include <vector>
 
 #include "game/app/game_window.hpp"
 #include "game/app/play_app.hpp"
@@ -17,6 +18,7 @@ enum class WindowNext { Quit, Lab, Golf, Baseball };
 struct FrameStats {
   int frames = 0;
   double ms_total = 0.0;
+  std::vector<double> frame_ms;  ///< each frame's time (ms), in order
 };
 
 /// Ends a frame: the screenshot on the last automated frame, then the swap. True when

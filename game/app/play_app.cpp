@@ -2,9 +2,12 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <sstream>
+#include <stdexcept>
 
 #include "game/app/game_window.hpp"
 #include "game/app/bat_app.hpp"
@@ -181,7 +184,9 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
 
 }  // namespace
 
-int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& out) {
+namespace {
+
+FrameStats run_window(const Assets& assets, const PlayOptions& o, std::ostream& out) {
   // Bad input fails here, before a window opens.
   if (o.mode == "golf") {
     load_course(assets, o.course);
@@ -210,8 +215,31 @@ int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& ou
       case WindowNext::Quit: break;
     }
   }
+  return stats;
+}
+
+}  // namespace
+
+int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& out) {
+  const FrameStats stats = run_window(assets, o, out);
   if (stats.frames > 0) out << "play: " << stats.frames << " frames, " << stats.ms_total / stats.frames << " ms per frame\n";
   return 0;
+}
+
+double measure_window_frame_ms(const Assets& assets, int width, int height, int frames) {
+  constexpr int kWarmUp = 10;
+  PlayOptions o;
+  o.mode = "lab";
+  o.width = width;
+  o.height = height;
+  o.frames = kWarmUp + std::max(frames, 1);
+  std::ostringstream quiet;
+  FrameStats stats = run_window(assets, o, quiet);
+  std::vector<double> ms(stats.frame_ms.begin() + std::min<std::ptrdiff_t>(kWarmUp, static_cast<std::ptrdiff_t>(stats.frame_ms.size())),
+                         stats.frame_ms.end());
+  if (ms.empty()) throw std::runtime_error("the window ran no frames");
+  std::nth_element(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(ms.size() / 2), ms.end());
+  return ms[ms.size() / 2];
 }
 
 }  // namespace sweetspot

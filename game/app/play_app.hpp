@@ -31,6 +31,12 @@ struct PlayOptions {
 /// no window can be opened.
 int run_play_window(const Assets& assets, const PlayOptions& options, std::ostream& out);
 
+/// The lab window's frame time (ms): golf/driver with its panels at width x height, vsync
+/// off, the median of `frames` frames after 10 warm-up frames (shader compiles, the first
+/// shot). What `bench` reports as frame_ms_window_WxH. Throws std::runtime_error when no
+/// window can be opened (no display).
+double measure_window_frame_ms(const Assets& assets, int width, int height, int frames);
+
 /// Runs the shot without a window: prints the launch-monitor table and, when `screenshot`
 /// names a file, writes a PNG of the shot there through EGL (nothing is written otherwise:
 /// a command run in some folder must not leave files in it). Without EGL the table is

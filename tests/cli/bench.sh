@@ -33,6 +33,23 @@ for club, yd in (("driver", 275), ("7-iron", 172), ("pw", 136)):
     assert j[f"baseline_carry_error_m_{club}"] <= j["baseline_carry_error_m"]
 PY
 "$bin" bench --quick | grep -q "impact solves/s" || fail "table output"
+# The game window's frame (issue 19): measured when there is a display, else absent with a
+# note saying why. Under Xvfb it is a positive number of ms.
+python3 - "$out" <<'PY' || fail "window frame key"
+import json, sys
+j = json.loads(sys.argv[1])
+assert "frame_ms_window_1280x800" in j
+assert j["frame_ms_window_1280x800"] is not None or j.get("window_note"), j.get("window_note")
+PY
+if command -v xvfb-run >/dev/null; then
+  win=$(xvfb-run -a -s "-screen 0 1280x800x24" "$bin" bench --quick --json)
+  python3 - "$win" <<'PY' || fail "window frame under Xvfb"
+import json, sys
+j = json.loads(sys.argv[1])
+v = j["frame_ms_window_1280x800"]
+assert isinstance(v, (int, float)) and 0 < v < 1000, v
+PY
+fi
 set +e
 "$bin" bench --bogus >/dev/null 2>&1
 rc=$?

@@ -28,6 +28,8 @@ const Eigen::Vector3f kShadowColor{0.05f, 0.07f, 0.05f};
 const Eigen::Vector3f kTrackColor{0.10f, 0.22f, 0.08f};
 const Eigen::Vector3f kBallShadowColor{0.06f, 0.11f, 0.05f};
 const Eigen::Vector3f kLegendText{0.92f, 0.92f, 0.92f};
+const Eigen::Vector3f kPathColor{0.55f, 0.95f, 1.00f};  // club path (with attack angle)
+const Eigen::Vector3f kFaceColor{1.00f, 0.30f, 0.25f};  // face normal
 
 // Where the ray from `origin` along `dir` (xz) first meets the polyline `line` (xz), in m.
 std::optional<double> ray_polyline(const Vec3& origin, const Vec3& dir, const std::vector<Vec3>& line) {
@@ -80,6 +82,8 @@ struct ShotScene::Impl {
   bool golf = true;
   std::unique_ptr<GpuMesh> world, surroundings, ball, tee, flag, impactor, poles;
   std::vector<std::unique_ptr<GpuMesh>> dressing;  // a ballpark's diamond, lowest layer first
+  double impactor_size = 0.0;  // m, the impactor mesh's longest box side
+  bool impactor_is_bat = false;
   std::optional<Vec3> flag_position;
   std::vector<std::pair<double, Vec3>> fence_marks;  // (distance m, label anchor)
   Vec3 world_min = Vec3::Zero(), world_max = Vec3::Zero();  // the world mesh's box, m
@@ -141,7 +145,17 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
   m.ball = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, "golf_ball")));
   if (input.tee) m.tee = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, "tee")));
   if (m.flag_position) m.flag = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, "flag")));
-  if (!input.impactor_mesh.empty()) m.impactor = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, input.impactor_mesh)));
+  if (!input.impactor_mesh.empty()) {
+    const MeshData club = import_mesh(mesh_path(root, input.impactor_mesh));
+    Eigen::Vector3f lo = Eigen::Vector3f::Constant(1e30f), hi = Eigen::Vector3f::Constant(-1e30f);
+    for (const Vertex& v : club.vertices) {
+      lo = lo.cwiseMin(v.position);
+      hi = hi.cwiseMax(v.position);
+    }
+    m.impactor_size = club.vertices.empty() ? 0.0 : static_cast<double>((hi - lo).maxCoeff());
+    m.impactor_is_bat = input.impactor_mesh == "bat";
+    m.impactor = std::make_unique<GpuMesh>(club);
+  }
   impactor_ = input.impactor;
 }
 
@@ -203,10 +217,16 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     scene.meshes.push_back({m.tee.get(), translate_scale(launch - Vec3(0, m.input.ball_radius, 0), 1.0), false});
   }
   if (m.flag) scene.meshes.push_back({m.flag.get(), translate_scale(*m.flag_position, 1.0), false});
+  // The club or bat at impact, at least impactor_min_px on screen: scaled about the ball's
+  // centre at launch (the ball is drawn as big at that moment), so face and ball still touch.
+  double strike_scale = 1.0;
   if (m.impactor && impactor_) {
+    if (m.impactor_size > 0.0)
+      strike_scale = std::max({1.0, px(launch, m.style.impactor_min_px) / m.impactor_size,
+                               px(launch, m.style.ball_min_radius_px) / m.input.ball_radius});
     Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
-    model.block<3, 3>(0, 0) = impactor_->orientation.normalized().toRotationMatrix().cast<float>();
-    model.block<3, 1>(0, 3) = impactor_->position.cast<float>();
+    model.block<3, 3>(0, 0) = static_cast<float>(strike_scale) * impactor_->orientation.normalized().toRotationMatrix().cast<float>();
+    model.block<3, 1>(0, 3) = (launch + strike_scale * (impactor_->position - launch)).cast<float>();
     scene.meshes.push_back({m.impactor.get(), model, false});
   }
   // The ball: true size close up, never smaller than ball_min_radius_px on screen.
@@ -218,6 +238,20 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   {
     const Vec3 g(ball.x(), ground_at(ball.x(), ball.z()) + 0.02, ball.z());
     append_ring(scene.ground_overlay, g, 0.0, 1.1 * radius, kBallShadowColor, 20);
+  }
+  // The delivery at the ball, as a coach draws it: the club path (with its attack angle)
+  // through the back of the ball, and for a club the face's normal. Sized with the strike.
+  const bool show_delivery = m.impactor && impactor_ && impactor_->velocity.norm() > 1.0;
+  if (show_delivery) {
+    const Vec3 v = impactor_->velocity.normalized();
+    const Vec3 back = launch - strike_scale * m.input.ball_radius * v;
+    const double len = 0.5 * strike_scale, w = px(back, 3.0);
+    append_band(scene.top_overlay, back - len * v, back + 0.4 * len * v, w, back - camera.eye, kPathColor);
+    if (!m.impactor_is_bat) {
+      // HEAD FRAME: the face normal is the mesh's +x (shot_view.cpp nominal_impactor).
+      const Vec3 face = impactor_->orientation.normalized() * Vec3::UnitX();
+      append_band(scene.top_overlay, back, back + 0.7 * len * face, w, back - camera.eye, kFaceColor);
+    }
   }
 
   // A line on the ground `pixels` wide, widened across the line of sight (so it reads from
@@ -285,10 +319,13 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     double x = style_scale * 12.0;
     const double y = height - style_scale * 12.0;
     const double x_start = x;
-    for (const auto& [phase, name] : {std::pair{Phase::Flight, "flight"}, std::pair{Phase::Bounce, "bounce"},
-                                      std::pair{Phase::Roll, "roll"}}) {
+    std::vector<std::pair<Eigen::Vector3f, const char*>> keys = {
+        {phase_color(Phase::Flight), "flight"}, {phase_color(Phase::Bounce), "bounce"}, {phase_color(Phase::Roll), "roll"}};
+    if (show_delivery) keys.emplace_back(kPathColor, "path");
+    if (show_delivery && !m.impactor_is_bat) keys.emplace_back(kFaceColor, "face");
+    for (const auto& [colour, name] : keys) {
       const double mid = y - 0.5 * h_px;
-      append_band(scene.top_overlay, screen(x, mid), screen(x + swatch, mid), 0.4 * h_px * mpp, -f, phase_color(phase));
+      append_band(scene.top_overlay, screen(x, mid), screen(x + swatch, mid), 0.4 * h_px * mpp, -f, colour);
       x += swatch + 0.5 * gap;
       append_text(scene.top_overlay, name, screen(x + 1.0, y + 1.0), cam_right, cam_up, h_px * mpp, kShadowColor);
       append_text(scene.top_overlay, name, screen(x, y), cam_right, cam_up, h_px * mpp, kLegendText);

@@ -22,6 +22,9 @@ namespace sweetspot {
 struct ImpactorPlacement {
   Vec3 position = Vec3::Zero();          ///< m, mesh-frame origin in the world
   Quat orientation = Quat::Identity();   ///< mesh frame -> world
+  /// m/s, the head's (or the bat's contact point's) velocity at impact: the club path and
+  /// attack angle drawn through the ball (~50 m/s for a tour driver); zero = not known.
+  Vec3 velocity = Vec3::Zero();
 };
 
 struct ShotSceneInput {
@@ -46,6 +49,10 @@ struct SceneStyle {
   double ball_min_radius_px = 4.0;  ///< the ball is drawn at least this big (true size is sub-pixel far away)
   double label_height_px = 16.0;
   double marker_radius_px = 11.0;
+  /// The club head or bat is drawn at least this big (px, its longest extent): from a TV
+  /// distance a real 12 cm head is a few pixels. It grows about the ball's centre, with the
+  /// ball, so the strike keeps its geometry.
+  double impactor_min_px = 28.0;
 };
 
 class ShotScene {

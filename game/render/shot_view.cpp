@@ -10,6 +10,7 @@ std::optional<ImpactorPlacement> impactor_placement(const ShotResult& r) {
   ImpactorPlacement p;
   p.position = r.impactor_at_impact.position;
   p.orientation = r.impactor_at_impact.orientation;
+  p.velocity = r.impactor_at_impact.velocity;
   return p;
 }
 

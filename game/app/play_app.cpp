@@ -114,6 +114,8 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
   scene->set_shot(shot.result.trajectory, impactor_placement(shot.result));
 
   ReplayState replay;
+  replay.pre_roll = scene->pre_roll();
+  replay.restart();
   CameraKind camera = CameraKind::Behind;
   Orbit orbit;
   std::string status, save_path = "my-shot.toml";
@@ -156,6 +158,7 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
         good = st;
         if (new_scene) scene = std::make_unique<ShotScene>(scene_input_for(assets, shot.scenario.resolved, shot.result));
         scene->set_shot(shot.result.trajectory, impactor_placement(shot.result));
+        replay.pre_roll = scene->pre_roll();
         replay.restart();
         status.clear();
       } catch (const InputError& e) {

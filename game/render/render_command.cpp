@@ -8,6 +8,7 @@
 #include "game/render/image.hpp"
 #include "game/render/renderer.hpp"
 #include "game/render/render_paths.hpp"
+#include "game/render/swing_pose.hpp"
 #include "game/render/synthetic_shot.hpp"
 #include "physics/error.hpp"
 
@@ -17,8 +18,11 @@ std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, con
   if (trajectory.samples.empty()) throw InputError("render: the shot has no trajectory samples");
   const double end = trajectory.samples.back().t;
   const double t = request.at_seconds.value_or(end);
-  if (!std::isfinite(t) || t < 0.0 || t > end + 1e-9) {
-    throw InputError("--at " + std::to_string(t) + " s is outside the shot (0.." + std::to_string(end) + " s)");
+  // Before launch only as far back as the downswing the scene can show.
+  const double start = -swing_pre_roll(request.impactor, request.impactor_mesh);
+  if (!std::isfinite(t) || t < start || t > end + 1e-9) {
+    throw InputError("--at " + std::to_string(t) + " s is outside the shot (" + std::to_string(start) + ".." +
+                     std::to_string(end) + " s)");
   }
   if (request.width < 16 || request.width > 8192 || request.height < 16 || request.height > 8192) {
     throw InputError("image size " + std::to_string(request.width) + "x" + std::to_string(request.height) +

@@ -11,6 +11,7 @@
 #include "game/render/mesh_import.hpp"
 #include "game/render/overlay_geometry.hpp"
 #include "game/render/render_paths.hpp"
+#include "game/render/swing_pose.hpp"
 #include "game/render/trail_geometry.hpp"
 #include "physics/error.hpp"
 
@@ -187,6 +188,8 @@ Camera ShotScene::camera(CameraKind kind, double t, int width, int height) const
   return keep_above_ground(frame_shot(kind, f, width, height), kind == CameraKind::Follow ? 0.3 : 1.0);
 }
 
+double ShotScene::pre_roll() const { return swing_pre_roll(impactor_, impl_->input.impactor_mesh); }
+
 Camera ShotScene::keep_above_ground(Camera c, double clearance) const {
   const double ground = ground_height(c.eye.x(), c.eye.z()).value_or(impl_->plane_y);
   if (c.eye.y() < ground + clearance) c.eye.y() = ground + clearance;
@@ -224,9 +227,18 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     if (m.impactor_size > 0.0)
       strike_scale = std::max({1.0, px(launch, m.style.impactor_min_px) / m.impactor_size,
                                px(launch, m.style.ball_min_radius_px) / m.input.ball_radius});
+    // Before launch (the replay's pre-roll, t < 0) it is on its downswing (swing_pose.hpp).
+    ImpactorPlacement pose = *impactor_;
+    if (t < 0.0 && impactor_->velocity.norm() > 1.0) {
+      const Vec3 v = impactor_->velocity.normalized();
+      const Vec3 contact = launch - m.input.ball_radius * v;
+      const Vec3 shaft = m.impactor_is_bat ? Vec3(-(impactor_->orientation * Vec3::UnitX()))
+                                           : Vec3(impactor_->orientation * head_frame_shaft_axis());
+      pose = swing_pose(*impactor_, contact, shaft, t, m.impactor_is_bat ? kBatSwing : kClubSwing);
+    }
     Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
-    model.block<3, 3>(0, 0) = static_cast<float>(strike_scale) * impactor_->orientation.normalized().toRotationMatrix().cast<float>();
-    model.block<3, 1>(0, 3) = (launch + strike_scale * (impactor_->position - launch)).cast<float>();
+    model.block<3, 3>(0, 0) = static_cast<float>(strike_scale) * pose.orientation.normalized().toRotationMatrix().cast<float>();
+    model.block<3, 1>(0, 3) = (launch + strike_scale * (pose.position - launch)).cast<float>();
     scene.meshes.push_back({m.impactor.get(), model, false});
   }
   // The ball: true size close up, never smaller than ball_min_radius_px on screen.

@@ -64,6 +64,9 @@ class ShotScene {
   ShotScene(const ShotScene&) = delete;
   ShotScene& operator=(const ShotScene&) = delete;
 
+  /// The replay's pre-roll (s) that shows the downswing before launch: 0 without a club or
+  /// bat velocity.
+  double pre_roll() const;
   /// Replaces the shot (the game recomputes it whenever a parameter changes).
   void set_shot(const ShotTrajectory& trajectory, const std::optional<ImpactorPlacement>& impactor);
   /// The horizontal direction the golf distance lines run along from the ball's start
@@ -80,7 +83,8 @@ class ShotScene {
   /// world's, or the surrounding plane's), the target kept: a mouse orbit or a framing
   /// never looks from under the turf.
   Camera keep_above_ground(Camera c, double clearance = 1.0) const;
-  /// Everything to draw at time t (s; clamped to the shot) seen by `camera`.
+  /// Everything to draw at time t (s; clamped to the shot) seen by `camera`. A negative t
+  /// is the pre-roll: the ball waits at launch and the club or bat comes down its swing.
   Scene build(const Camera& camera, double t, int width, int height) const;
 
   /// Ground height (m) under (x, z): the physics world's support query, if any ground

@@ -348,7 +348,7 @@ void monitor_section(PanelContext& c) {
 void replay_section(PanelContext& c) {
   const double end = duration(c.result.trajectory);
   if (ImGui::Button(c.replay.playing ? "Pause" : "Play")) {
-    if (!c.replay.playing && c.replay.time >= end) c.replay.time = 0.0;
+    if (!c.replay.playing && c.replay.time >= end) c.replay.time = -c.replay.pre_roll;
     c.replay.playing = !c.replay.playing;
   }
   ImGui::SameLine();
@@ -364,7 +364,8 @@ void replay_section(PanelContext& c) {
   if (ImGui::Combo("camera (1-4)", &cam, cams, 4)) c.camera = static_cast<CameraKind>(cam);
   float t = static_cast<float>(c.replay.time);
   ImGui::SetNextItemWidth(-1);
-  if (ImGui::SliderFloat("##time", &t, 0.0f, static_cast<float>(end), "%.2f s")) c.replay.scrub(t, end);
+  if (ImGui::SliderFloat("##time", &t, static_cast<float>(-c.replay.pre_roll), static_cast<float>(end), "%.2f s"))
+    c.replay.scrub(t, end);
   if (!c.status.empty()) ImGui::TextWrapped("%s", c.status.c_str());
 }
 

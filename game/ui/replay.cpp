@@ -14,7 +14,7 @@ void ReplayState::advance(double dt, double duration) {
 }
 
 void ReplayState::scrub(double t, double duration) {
-  time = std::clamp(t, 0.0, std::max(0.0, duration));
+  time = std::clamp(t, -pre_roll, std::max(0.0, duration));
 }
 
 double duration(const ShotTrajectory& shot) {

@@ -10,18 +10,21 @@
 namespace sweetspot {
 
 struct ReplayState {
-  double time = 0.0;    ///< s since launch; 0 .. duration
+  double time = 0.0;    ///< s since launch; -pre_roll .. duration
   double speed = 1.0;   ///< playback rate; the UI offers 0.1 .. 4 (1 = real time)
   bool playing = true;  ///< false = paused (also set when the end is reached)
+  /// s before launch a replay starts: the club's or bat's downswing (ShotScene::pre_roll,
+  /// 0.25 s for a club); 0 = start at launch.
+  double pre_roll = 0.0;
 
-  /// R / Space: back to launch and playing.
+  /// R / Space: back to the start of the pre-roll (launch without one) and playing.
   void restart() {
-    time = 0.0;
+    time = -pre_roll;
     playing = true;
   }
   /// Advances by wall-clock `dt` seconds scaled by `speed`; stops (paused) at `duration`.
   void advance(double dt, double duration);
-  /// Scrub to `t`, held inside [0, duration]. The UI's slider cannot exceed the range, so
+  /// Scrub to `t`, held inside [-pre_roll, duration]. The UI's slider cannot exceed the range, so
   /// holding it here is a bound, not a silent correction of user input.
   void scrub(double t, double duration);
 };

@@ -63,3 +63,16 @@ TEST_CASE("plot map keeps the trajectory inside its box with equal axes", "[ui][
   const PlotMap top = fit_plot(s, PlotView::Top, 0.0, 100.0, 400.0, 100.0);
   CHECK(top.to_px_y(plot_y(Vec3(20, 0, 2), PlotView::Top)) > top.to_px_y(0.0));
 }
+
+TEST_CASE("a replay with a pre-roll starts before launch and scrubs down to it", "[ui][replay]") {
+  ReplayState r;
+  r.pre_roll = 0.25;
+  r.restart();
+  CHECK(r.time == -0.25);
+  r.advance(0.1, 4.0);
+  CHECK(r.time == Approx(-0.15));
+  r.scrub(-1.0, 4.0);
+  CHECK(r.time == -0.25);  // held at the start of the pre-roll
+  r.scrub(2.0, 4.0);
+  CHECK(r.time == 2.0);
+}

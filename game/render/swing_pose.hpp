@@ -1,0 +1,43 @@
+// The club head or bat before impact, for the replay's pre-roll (issue 19: the strike
+// animated with the delivery we simulate). The impactor swings on an arc about a pivot (the
+// lead shoulder, the batter's hands) that lies up the shaft from the contact (the shaft's
+// part square to the velocity), in the plane of the shaft and the delivered velocity, speeding up from rest at the top to the delivered
+// speed at impact: it arrives along the club path and attack angle the impact solve used,
+// with the face the solve used. Pure geometry; visual only (the physics starts at impact).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "game/render/shot_scene.hpp"
+
+namespace sweetspot {
+
+/// Visual swing constants: the arc's radius from the contact to the pivot (a tour driver's
+/// lead arm plus its 45 in shaft is ~1.7 m, an iron's less; a bat's sweet spot is ~0.7 m
+/// from the knob plus the arms) and the downswing's duration (tour golfers ~0.25 s, the
+/// "3:1" tempo of a 0.75 s backswing; a major-league swing ~0.15 s from launch to contact).
+struct SwingShape {
+  double radius = 1.5;     ///< m, contact to pivot
+  double downswing = 0.25; ///< s, from rest at the top to impact
+};
+inline constexpr SwingShape kClubSwing{1.5, 0.25};
+inline constexpr SwingShape kBatSwing{1.2, 0.15};
+
+/// The impactor at time t (s, t <= 0; impact at 0) given its pose and velocity at impact.
+/// `contact` is the point of the impactor touching the ball (m); `shaft` the unit direction
+/// from the contact toward the grip or knob. At t = 0 it is `impact`; just before, it moves
+/// at impact.velocity; before -shape.downswing it rests at the top of the swing. An impact
+/// without a velocity is returned unchanged.
+ImpactorPlacement swing_pose(const ImpactorPlacement& impact, const Vec3& contact, const Vec3& shaft, double t,
+                             const SwingShape& shape);
+
+/// How long before launch a replay (or `render --at`) may show the downswing: the swing's
+/// duration when the impactor has a mesh and a delivered velocity, else 0.
+double swing_pre_roll(const std::optional<ImpactorPlacement>& impactor, const std::string& impactor_mesh);
+
+/// HEAD FRAME's shaft axis (scripts/gen_meshes.py: up the ~60 deg lie toward the heel,
+/// tilted back a little), unit.
+Vec3 head_frame_shaft_axis();
+
+}  // namespace sweetspot

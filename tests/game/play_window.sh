@@ -17,6 +17,12 @@ for scenario in golf/driver baseball/home-run; do
   "$check" "$out" 1280 800
   [ -n "${SWEETSPOT_GAME_ARTIFACTS:-}" ] && cp "$out" "$SWEETSPOT_GAME_ARTIFACTS/" || true
 done
+# A small window (issue 19): one sidebar beside the 3D view, which keeps half the window.
+small="$work/small.png"
+xvfb-run -a -s "-screen 0 1280x800x24" "$bin" play golf/pw --frames 30 --width 800 --height 600 --screenshot "$small" \
+  > "$work/log.txt" 2>&1 || { cat "$work/log.txt"; exit 1; }
+"$check" "$small" 800 600
+[ -n "${SWEETSPOT_GAME_ARTIFACTS:-}" ] && cp "$small" "$SWEETSPOT_GAME_ARTIFACTS/" || true
 # A bad scenario fails before any window opens, exit 2.
 set +e
 xvfb-run -a "$bin" play golf/no-such-scenario --frames 2 > "$work/bad.txt" 2>&1

@@ -118,6 +118,10 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
   replay.restart();
   CameraKind camera = CameraKind::Behind;
   Orbit orbit;
+  // A camera change glides from the last camera drawn over kCameraGlide s, eased.
+  constexpr double kCameraGlide = 0.6;
+  std::optional<Camera> last_camera, glide_from;
+  double since_switch = kCameraGlide;
   std::string status, save_path = "my-shot.toml";
   bool panels_hidden = false;
   auto last = std::chrono::steady_clock::now();
@@ -135,6 +139,8 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
     if (in.camera >= 0) {
       camera = static_cast<CameraKind>(in.camera);
       orbit.reset();
+      glide_from = last_camera;
+      since_switch = 0.0;
     }
     if (in.replay || in.hit_again) replay.restart();
     orbit.yaw -= in.orbit_dx * 0.005;
@@ -146,7 +152,12 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
     const PanelLayout layout = lay_out_panels(static_cast<float>(w), static_cast<float>(h), panels_hidden);
     PanelContext ctx{assets, st, shot.scenario, shot.result, replay, camera, status, save_path};
     const bool changed = draw_panels(ctx, layout) || in.hit_again;
-    if (camera != before) orbit.reset();
+    if (camera != before) {
+      orbit.reset();
+      glide_from = last_camera;
+      since_switch = 0.0;
+    }
+    since_switch += dt;
     if (changed) {
       // Recompute in the same frame, so the trail drawn below is the new shot's.
       try {
@@ -173,7 +184,12 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
     const int vw = static_cast<int>(layout.view.w), vh = static_cast<int>(layout.view.h);
     if (w > 0 && h > 0 && vw >= 16 && vh >= 16) {
       if (vw != renderer.width() || vh != renderer.height()) renderer.resize(vw, vh);
-      const Camera cam = scene->keep_above_ground(orbit.apply(scene->camera(camera, replay.time, vw, vh)));
+      Camera cam = scene->keep_above_ground(orbit.apply(scene->camera(camera, replay.time, vw, vh)));
+      if (glide_from && since_switch < kCameraGlide) {
+        const double x = since_switch / kCameraGlide;
+        cam = scene->keep_above_ground(blend_cameras(*glide_from, cam, x * x * (3.0 - 2.0 * x)));
+      }
+      last_camera = cam;
       renderer.draw(scene->build(cam, replay.time, vw, vh), cam);
       clear_window(w, h);
       renderer.blit_to(0, static_cast<int>(layout.view.x), h - static_cast<int>(layout.view.y) - vh, vw, vh);

@@ -300,6 +300,20 @@ Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int he
   return c;
 }
 
+Camera blend_cameras(const Camera& a, const Camera& b, double w) {
+  w = std::clamp(w, 0.0, 1.0);
+  Camera c = b;
+  c.eye = a.eye + w * (b.eye - a.eye);
+  c.target = a.target + w * (b.target - a.target);
+  c.fov_y = a.fov_y + w * (b.fov_y - a.fov_y);
+  c.near_m = std::min(a.near_m, b.near_m);
+  const Vec3 up = a.true_up() + w * (b.true_up() - a.true_up());
+  // Opposite ups (never from our cameras) would cancel: keep b's.
+  c.up = up.norm() > 1e-6 ? Vec3(up.normalized()) : b.up;
+  if ((c.target - c.eye).norm() < 1e-9) c.target = c.eye + b.forward();
+  return c;
+}
+
 Camera frame_shot(CameraKind kind, const ShotTrajectory& trajectory, double t, int width, int height) {
   return frame_shot(kind, shot_framing(trajectory, t), width, height);
 }

@@ -82,6 +82,10 @@ ShotFraming shot_framing(const ShotTrajectory& trajectory, double t);
 /// area (the descending leg, the bounces and the ball).
 Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height);
 
+/// The camera a fraction w (0..1) of the way from a to b: eye, target, up and field of view
+/// interpolated, w eased at both ends by the caller. For a smooth cut between cameras.
+Camera blend_cameras(const Camera& a, const Camera& b, double w);
+
 /// Convenience: frame_shot(kind, shot_framing(trajectory, t), width, height).
 Camera frame_shot(CameraKind kind, const ShotTrajectory& trajectory, double t, int width, int height);
 

@@ -247,3 +247,26 @@ TEST_CASE("the tracer's halo lies under the core and fades from the ball back to
   const auto b = c.project(out.vertices[1].position.cast<double>(), 1280, 720);
   CHECK((*a - *b).norm() == Approx(18.0).epsilon(0.05));
 }
+
+TEST_CASE("a camera change glides: blend_cameras runs from one camera to the other without a flip", "[render][unit]") {
+  const ShotTrajectory shot = synthetic_shot();
+  const int w = 1280, h = 720;
+  for (CameraKind from : {CameraKind::Behind, CameraKind::Side, CameraKind::Top, CameraKind::Follow}) {
+    for (CameraKind to : {CameraKind::Behind, CameraKind::Side, CameraKind::Top, CameraKind::Follow}) {
+      INFO(to_string(from) << " -> " << to_string(to));
+      const Camera a = frame_shot(from, shot, 3.0, w, h), b = frame_shot(to, shot, 3.0, w, h);
+      CHECK((blend_cameras(a, b, 0.0).eye - a.eye).norm() < 1e-9);
+      CHECK((blend_cameras(a, b, 1.0).eye - b.eye).norm() < 1e-9);
+      CHECK((blend_cameras(a, b, 1.0).target - b.target).norm() < 1e-9);
+      Vec3 prev = a.eye;
+      for (int i = 1; i <= 20; ++i) {
+        const Camera c = blend_cameras(a, b, i / 20.0);
+        // A usable camera all the way: a unit up not along the view, the eye moving steadily.
+        CHECK(std::abs(c.up.norm() - 1.0) < 1e-9);
+        CHECK(std::abs(c.forward().dot(c.up)) < 0.999);
+        CHECK((c.eye - prev).norm() <= (b.eye - a.eye).norm() / 20.0 + 1e-9);
+        prev = c.eye;
+      }
+    }
+  }
+}

@@ -10,12 +10,15 @@ in vec3 v_normal;
 in vec3 v_color;
 in float v_pattern;
 in float v_patch;
+in vec4 v_light;
 
 uniform vec3 u_eye;
 uniform vec3 u_sun_dir;      // unit, toward the sun
 uniform vec3 u_haze;         // colour of the far distance (the sky at the horizon)
 uniform float u_haze_range;  // m, distance at which haze reaches 63 %
 uniform float u_specular;    // 0 for terrain (grass has no sun glint), 1 for ball and equipment
+uniform float u_shadows;     // 1: sample the sun's shadow map; 0: no shadows (software rasterisers by default)
+uniform sampler2DShadow u_shadow_map;  // depth from the sun, compared in hardware (2x2 filtered)
 
 out vec4 frag_color;
 
@@ -73,9 +76,15 @@ void main() {
   }
 
   float diffuse = max(dot(n, u_sun_dir), 0.0);
+  float sunlit = 1.0;
+  if (u_shadows > 0.5) {
+    vec3 p = v_light.xyz / v_light.w * 0.5 + 0.5;
+    if (all(greaterThan(p, vec3(0.0))) && all(lessThan(p, vec3(1.0)))) sunlit = texture(u_shadow_map, p);
+  }
+  diffuse *= sunlit;
   vec3 sky_ambient = mix(vec3(0.35, 0.33, 0.30), vec3(0.55, 0.62, 0.75), 0.5 + 0.5 * n.y);
   vec3 h = normalize(u_sun_dir + v);
-  float spec = pow(max(dot(n, h), 0.0), shininess) * 0.18 * specular;
+  float spec = pow(max(dot(n, h), 0.0), shininess) * 0.18 * specular * sunlit;
   vec3 lit = albedo * (0.72 * diffuse * vec3(1.0, 0.97, 0.90) + 0.52 * sky_ambient) + spec;
 
   float haze = 1.0 - exp(-dist / u_haze_range);

@@ -32,6 +32,7 @@ struct RenderOptions {
   std::string at;  // time with its unit, e.g. 2.5s or 2500ms; "" = the shot's end
   std::string impactor;  // "" = the shot's own (or the sport's default for launch numbers)
   int samples = 0;
+  std::string shadows = "auto";
 };
 
 RunFn setup_render(CLI::App& sub) {
@@ -47,6 +48,8 @@ RunFn setup_render(CLI::App& sub) {
       ->check(CLI::IsMember({"driver_head", "iron_head", "putter_head", "bat", "none"}));
   sub.add_option("--msaa", o->samples, "multisample count: 0 = auto (4 on a GPU, 1 on llvmpipe), 1, 2, 4, 8")
       ->capture_default_str()->check(CLI::IsMember({0, 1, 2, 4, 8}));
+  sub.add_option("--shadows", o->shadows, "sun shadows: auto (on with a GPU, off on llvmpipe for speed), on or off")
+      ->capture_default_str()->check(CLI::IsMember({"auto", "on", "off"}));
   return [o](const Assets& assets) -> int {
     RenderRequest r;
     r.camera = parse_camera_kind(o->camera);
@@ -74,6 +77,7 @@ RunFn setup_render(CLI::App& sub) {
     r.width = o->width;
     r.height = o->height;
     r.samples = o->samples;
+    r.shadows = o->shadows == "on" ? 1 : o->shadows == "off" ? 0 : -1;
     const bool bat = scenario.resolved.sport->impactor == ImpactorKind::Bat;
     if (!r.impactor) {
       // Launch numbers only: draw the sport's impactor in an illustrative pose.

@@ -42,6 +42,7 @@ std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, con
   scene.set_shot(trajectory, request.impactor);
   RendererOptions options;
   options.samples = request.samples;
+  options.shadows = request.shadows;
   Renderer renderer(request.width, request.height, options);
   const Camera camera = scene.camera(request.camera, t, request.width, request.height);
   renderer.draw(scene.build(camera, t, request.width, request.height), camera);
@@ -53,7 +54,7 @@ void render_shot_png(const ShotTrajectory& trajectory, const RenderRequest& requ
   write_png_atomic(out, request.width, request.height, rgba);
 }
 
-double measure_frame_ms(const Assets& assets, int w, int h, int frames) {
+double measure_frame_ms(const Assets& assets, int w, int h, int frames, int shadows) {
   if (frames < 1) throw InputError("frames " + std::to_string(frames) + " must be at least 1");
   OffscreenContext context;
   ShotSceneInput input;
@@ -65,7 +66,9 @@ double measure_frame_ms(const Assets& assets, int w, int h, int frames) {
   ImpactorPlacement club;
   club.position = Vec3(-0.0214, 0.0214, 0.0);
   scene.set_shot(synthetic_shot(), club);
-  Renderer renderer(w, h);
+  RendererOptions options;
+  options.shadows = shadows;
+  Renderer renderer(w, h, options);
   const double end = scene.trajectory().samples.back().t;
   auto frame = [&](int i) {
     const double t = end * (0.5 + 0.5 * (i % 8) / 8.0);  // the trail changes as in a replay

@@ -27,6 +27,7 @@ struct RenderRequest {
   CameraKind camera = CameraKind::Behind;
   std::optional<double> at_seconds; ///< s since launch, 0..end; nothing = the shot's end
   int samples = 0;                  ///< MSAA samples, 0 = auto (see RendererOptions)
+  int shadows = -1;                 ///< sun shadows: 1 on, 0 off, -1 auto (see RendererOptions)
   EglPlatform platform = EglPlatform::Auto;
 };
 
@@ -40,7 +41,7 @@ void render_shot_png(const ShotTrajectory& trajectory, const RenderRequest& requ
 
 /// Mean ms per warm w x h off-screen frame — scene build + draw + MSAA resolve + read-back —
 /// over `frames` frames after 3 warm-up frames, for a synthetic drive on the golf_hole world.
-/// Throws RenderUnavailable without EGL.
-double measure_frame_ms(const Assets& assets, int w, int h, int frames);
+/// Throws RenderUnavailable without EGL. `shadows` as RendererOptions::shadows.
+double measure_frame_ms(const Assets& assets, int w, int h, int frames, int shadows = -1);
 
 }  // namespace sweetspot

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "game/render/camera.hpp"
 #include "game/render/gl.hpp"
 #include "game/render/image.hpp"
 #include "game/render/render_error.hpp"
@@ -13,19 +14,25 @@
 namespace sweetspot {
 
 struct Renderer::Impl {
-  ShaderProgram lit, flat, sky;
+  ShaderProgram lit, flat, sky, depth;
   GpuMesh ground_overlay, top_overlay;
   GLuint empty_vao = 0;
   GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
   GLuint resolve_fbo = 0, resolve_color = 0;
+  GLuint shadow_fbo = 0, shadow_depth = 0;  // the sun's shadow map (depth texture)
+  int shadow_size = 0;
 
-  explicit Impl(const std::filesystem::path& dir) : lit(dir, "lit"), flat(dir, "flat"), sky(dir, "sky") {
+  explicit Impl(const std::filesystem::path& dir)
+      : lit(dir, "lit"), flat(dir, "flat"), sky(dir, "sky"), depth(dir, "depth") {
     glGenVertexArrays(1, &empty_vao);
   }
   ~Impl() {
     release_targets();
     glDeleteVertexArrays(1, &empty_vao);
+    if (shadow_fbo != 0) glDeleteFramebuffers(1, &shadow_fbo);
+    if (shadow_depth != 0) glDeleteTextures(1, &shadow_depth);
   }
+  void make_shadow_map(int size);
   void release_targets() {
     if (msaa_fbo != 0) glDeleteFramebuffers(1, &msaa_fbo);
     if (resolve_fbo != 0) glDeleteFramebuffers(1, &resolve_fbo);
@@ -69,10 +76,40 @@ Renderer::Renderer(int width, int height, const RendererOptions& options) {
               name.find("swrast") != std::string::npos;
   const int wanted = options.samples > 0 ? options.samples : (software_ ? 1 : 4);
   samples_ = std::clamp(wanted, 1, std::max(1, static_cast<int>(max_samples)));
+  shadows_ = options.shadows > 0 || (options.shadows < 0 && !software_);
+  if (shadows_) {
+    if (options.shadow_map_size < 256 || options.shadow_map_size > 8192)
+      throw InputError("shadow map size " + std::to_string(options.shadow_map_size) + " is outside 256..8192 texels");
+    GLint max_tex = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
+    impl_->make_shadow_map(std::min(options.shadow_map_size, static_cast<int>(max_tex)));
+  }
   resize(width, height);
 }
 
 Renderer::~Renderer() = default;
+
+void Renderer::Impl::make_shadow_map(int size) {
+  shadow_size = size;
+  glGenTextures(1, &shadow_depth);
+  glBindTexture(GL_TEXTURE_2D, shadow_depth);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  // Hardware depth comparison, 2x2 filtered: soft-edged shadows for one fetch.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glGenFramebuffers(1, &shadow_fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_depth, 0);
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(GL_NONE);
+  check_fbo("shadow map");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
 
 void Renderer::resize(int width, int height) {
   check_size(width, height);
@@ -113,6 +150,46 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
   const Eigen::Matrix4f view_proj = view_proj_d.cast<float>();
   const Eigen::Vector3f eye = camera.eye.cast<float>();
 
+  // The sun's shadow map: an orthographic view along the sunlight over the scene's shadow
+  // square, depth only, every mesh a caster (the ground too: hills shade). A slope-scaled
+  // depth offset keeps lit surfaces from shadowing themselves (acne).
+  const bool shadows = shadows_ && scene.shadow_radius > 0.0f;
+  Eigen::Matrix4f light_view_proj = Eigen::Matrix4f::Identity();
+  if (shadows) {
+    const double r = scene.shadow_radius;
+    Camera sun;
+    const Vec3 centre = scene.shadow_centre.cast<double>();
+    const Vec3 to_sun = scene.sun_direction.cast<double>().normalized();
+    sun.eye = centre + 4.0 * r * to_sun;
+    sun.target = centre;
+    sun.up = std::abs(to_sun.y()) < 0.99 ? Vec3::UnitY() : Vec3::UnitX();
+    Eigen::Matrix4d ortho = Eigen::Matrix4d::Identity();
+    const double n = 0.1, f = 8.0 * r;
+    ortho(0, 0) = 1.0 / r;
+    ortho(1, 1) = 1.0 / r;
+    ortho(2, 2) = -2.0 / (f - n);
+    ortho(2, 3) = -(f + n) / (f - n);
+    light_view_proj = (ortho * sun.view()).cast<float>();
+    glBindFramebuffer(GL_FRAMEBUFFER, m.shadow_fbo);
+    glViewport(0, 0, m.shadow_size, m.shadow_size);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(2.0f, 4.0f);
+    m.depth.use();
+    m.depth.set("u_light_view_proj", light_view_proj);
+    for (const auto& inst : scene.meshes) {
+      if (inst.mesh == nullptr || inst.decal > 0) continue;  // flat paint casts nothing
+      m.depth.set("u_model", inst.model);
+      inst.mesh->draw();
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+
   glBindFramebuffer(GL_FRAMEBUFFER, m.msaa_fbo);
   glViewport(0, 0, width_, height_);
   glDisable(GL_CULL_FACE);
@@ -130,6 +207,13 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
   m.lit.set("u_sun_dir", scene.sun_direction);
   m.lit.set("u_haze", scene.sky_horizon);
   m.lit.set("u_haze_range", scene.haze_range);
+  m.lit.set("u_light_view_proj", light_view_proj);
+  m.lit.set("u_shadows", shadows ? 1.0f : 0.0f);
+  if (shadows) {
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, m.shadow_depth);
+    glUniform1i(glGetUniformLocation(m.lit.id(), "u_shadow_map"), 0);
+  }
   // Front to back, so the depth test rejects hidden fragments before they are shaded (a
   // software rasteriser's cost is the fragments it shades): small meshes first, then the
   // ground paint from its top layer down, then the terrain under it all.

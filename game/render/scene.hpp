@@ -25,6 +25,11 @@ struct Scene {
   Eigen::Vector3f sky_horizon{0.74f, 0.84f, 0.93f};
   Eigen::Vector3f sun_direction = Eigen::Vector3f(-0.35f, 0.85f, 0.40f).normalized();  ///< toward the sun
   float haze_range = 2500.0f;  ///< m
+  /// The sun's shadow map covers a square of 2 shadow_radius m (seen from the sun) about
+  /// shadow_centre; 0 = no shadows. Typical: the framed shot (~150 m), 30 m around the ball
+  /// when following it.
+  Eigen::Vector3f shadow_centre = Eigen::Vector3f::Zero();
+  float shadow_radius = 0.0f;
   std::vector<MeshInstance> meshes;  ///< lit
   MeshData ground_overlay;  ///< unlit, depth-tested: rings and stripes lying on the ground
   MeshData top_overlay;     ///< unlit, drawn over everything: trail, pins, labels

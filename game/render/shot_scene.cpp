@@ -204,6 +204,20 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   const double style_scale = std::max(0.5, height / 720.0);
   auto px = [&](const Vec3& p, double pixels) { return style_scale * pixels * camera.metres_per_pixel(p, height); };
 
+  // The sun's shadow map covers what the camera frames: the whole shot (and the park) from
+  // afar, the few metres in view when the camera is close to the ball.
+  {
+    const Vec3 focus = camera.target;
+    const double reach = (camera.target - camera.eye).norm();
+    Bounds b = shot_bounds(trajectory_);
+    b.add(camera.target);
+    const double span = 0.5 * (b.max - b.min).norm() + 10.0;
+    // Close up, a square twice the view distance: ~1 cm texels on the 2048 map for the
+    // follow camera, so a shaft's shadow is a line, not dashes.
+    const bool close = reach < 40.0;
+    scene.shadow_centre = (close ? focus : b.centre()).cast<float>();
+    scene.shadow_radius = static_cast<float>(close ? std::max(8.0, reach) : std::min(span, 300.0));
+  }
   if (m.world) scene.meshes.push_back({m.world.get(), Eigen::Matrix4f::Identity(), true});
   for (std::size_t i = 0; i < m.dressing.size(); ++i)
     scene.meshes.push_back({m.dressing[i].get(), Eigen::Matrix4f::Identity(), false, static_cast<int>(i) + 1});

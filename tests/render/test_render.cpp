@@ -260,7 +260,7 @@ TEST_CASE("a missing or broken shader names the file and the compiler log", "[re
   } catch (const RenderError& e) {
     CHECK_THAT(e.what(), Catch::Contains((dir / "lit.vert").string()));
   }
-  for (const char* f : {"lit.vert", "lit.frag", "flat.vert", "flat.frag", "sky.vert", "sky.frag"}) {
+  for (const char* f : {"lit.vert", "lit.frag", "flat.vert", "flat.frag", "sky.vert", "sky.frag", "depth.vert", "depth.frag"}) {
     std::filesystem::copy_file(shader_dir() / f, dir / f);
   }
   {
@@ -356,4 +356,40 @@ TEST_CASE("no camera looks from under the ground: framings and a mouse orbit are
   const Camera lifted = scene.keep_above_ground(under);
   CHECK(lifted.eye.y() == Approx(scene.ground_height(lifted.eye.x(), lifted.eye.z()).value() + 1.0));
   CHECK(lifted.target == target);
+}
+
+TEST_CASE("sun shadows: the flag and the club shade the turf and nothing gets brighter", "[render]") {
+  // Close behind the ball at impact (follow at t = 0), the driver head and shaft at address.
+  const int w = 960, h = 540;
+  RenderRequest r = range_request(w, h, CameraKind::Follow);
+  r.samples = 1;
+  r.impactor_mesh = "driver_head";
+  r.impactor = ImpactorPlacement{Vec3(-0.0214, 0.0214, 0.0), Quat::Identity()};
+  r.at_seconds = 0.0;
+  r.flag = Vec3(5.0, 0.0, 1.0);  // a flagstick just ahead: its cloth and pole cast a clear shadow
+  r.shadows = 0;
+  const auto off = render_shot_rgba(synthetic_shot(), r);
+  r.shadows = 1;
+  const auto on = render_shot_rgba(synthetic_shot(), r);
+  std::size_t darker = 0, brighter = 0;
+  for (std::size_t i = 0; i < on.size(); i += 4) {
+    int sum_on = 0, sum_off = 0, up = 0;
+    for (int c = 0; c < 3; ++c) {
+      sum_on += on[i + c];
+      sum_off += off[i + c];
+      up = std::max(up, int(on[i + c]) - int(off[i + c]));
+    }
+    if (sum_on < 0.8 * sum_off) ++darker;
+    if (up > 8) ++brighter;
+  }
+  INFO("darker " << darker << ", brighter " << brighter);
+  // The flag's, the head's and the shaft's shadows on the turf: ~260 px at this size (the
+  // low camera foreshortens them); half of that is a clear margin over zero.
+  CHECK(darker > 120);
+  CHECK(brighter == 0);    // a shadow only ever takes light away
+  // Forced off, the image is the auto image on a software rasteriser (auto = off there).
+  r.shadows = -1;
+  OffscreenContext probe;
+  Renderer auto_renderer(64, 64);
+  if (auto_renderer.software()) CHECK(render_shot_rgba(synthetic_shot(), r) == off);
 }

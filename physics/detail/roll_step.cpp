@@ -127,6 +127,22 @@ ShotEvent skid(const ShotModel& m, ShotState& s) {
   if (!found || under.normal.dot(p - under.point) - r > kLeaveGap || under.normal.dot(n) < kFollowCos) {
     s.y.segment<3>(6) = w;
     s.skidding = false;
+    // Did the chunk run into a face on the way? The far side of a V can rise more steeply
+    // than the ground query's lift sees: p ends under it, nothing is found, and the ball
+    // used to fly on from inside the ground (a random-world soak finding). Then it meets
+    // that face where the sweep says, at the chunk's time there.
+    const Vec3 p0 = s.position();
+    SurfaceContact hit;
+    Vec3 along = n;
+    ++s.counters.sweeps;
+    if (m.terrain->sweep(p0, p, r, &hit, &along)) {
+      s.t -= (1.0 - hit.fraction) * elapsed;
+      s.y.segment<3>(0) = p0 + hit.fraction * (p - p0);
+      s.y.segment<3>(3) = v;
+      s.phase = Phase::Bounce;
+      hit.fraction = 0.0;
+      return touch_surface(m, s, hit);
+    }
     return go_airborne(s, 0.0, p, v);  // over an edge or onto a much steeper face
   }
   p -= (under.normal.dot(p - under.point) - r) * under.normal;
@@ -215,6 +231,15 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
   SurfaceContact under = s.support;
   if (!ground_under(terrain, p, p1, r, kLeaveGap + 0.1 * std::abs(u) * step + r, &under)) {
     leave_crease();
+    // As in the skid: a face met on the way (p1 under it, so the query saw nothing).
+    ++s.counters.sweeps;
+    if (terrain.sweep(p + off, p1 + off, r, &hit, nullptr) && (hit.normal - n1).norm() > 1e-6 &&
+        (hit.normal - n2).norm() > 1e-6) {
+      s.t += hit.fraction * step;
+      set_rolling(s, p + hit.fraction * (p1 - p), u * d, nc, r);
+      s.phase = Phase::Bounce;
+      return touch_surface(m, s, hit);
+    }
     return go_airborne(s, step, p1, v1);
   }
   const bool same_face = (under.normal - n1).norm() < 1e-6 || (under.normal - n2).norm() < 1e-6;
@@ -367,7 +392,16 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   if (terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p, p1, r, &hit, &n))) return strike(hit);
   // Follow the ground under the new position.
   SurfaceContact under = c;  // the current support is the cache hint
-  if (!ground_under(terrain, p, p1, r, kLeaveGap + 0.1 * speed * step_t, &under)) return go_airborne(s, step_t, p1, v1);
+  // Leaving the ground: first make sure the step did not run into a face on the way (a V
+  // whose far side rises more steeply than the step's lift can see: p1 ends under it, the
+  // ground query from there finds nothing, and the ball used to fly on from inside the
+  // ground, out of the world: random-world soak findings).
+  const auto leave = [&]() {
+    ++s.counters.sweeps;
+    if (terrain.sweep(p, p1, r, &hit, &n)) return strike(hit);
+    return go_airborne(s, step_t, p1, v1);
+  };
+  if (!ground_under(terrain, p, p1, r, kLeaveGap + 0.1 * speed * step_t, &under)) return leave();
   const double gap = under.normal.dot(p1 - under.point) - r;
   if (under.normal.dot(n) < kFollowCos && gap < 0.0) {
     // The ground turned up sharply ahead (a concave edge: the far wall of a hollow, a bank
@@ -375,9 +409,15 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     // first touches it instead of flying on from inside it (a random-world soak finding).
     ++s.counters.sweeps;
     if (terrain.sweep(p, p1, r, &hit, &n)) return strike(hit);
+    // No first touch on the way: the ball began the step already against that face (at the
+    // crease between the faces, within a rounding of it). It meets the face where the step
+    // began; flying on from p1, inside the ground, let it fall through the world (a
+    // random-world soak finding: a ball rolling down into a V-shaped ditch).
+    under.fraction = 0.0;
+    return strike(under);
   }
   // The ground fell away (or turned sharply): the ball leaves it and flies.
-  if (gap > kLeaveGap || under.normal.dot(n) < kFollowCos) return go_airborne(s, step_t, p1, v1);
+  if (gap > kLeaveGap || under.normal.dot(n) < kFollowCos) return leave();
   p1 -= gap * under.normal;
   if (under.normal != n) {
     // Rolling back and forth across the same edge between two faces: a valley whose faces

@@ -156,8 +156,10 @@ int main(int argc, char** argv) {
         ShotState st = start_state(c.launch);
         for (int n = 0; n < 400 && !st.ended; ++n) {
           const ShotEvent e = step(m, st);
-          std::printf("%3d t %.4f %-7s %-9s p %8.4f %8.5f %8.4f v %7.3f %7.3f %7.3f sup n %.3f %.3f %.3f pt %.3f %.3f %.3f\n", n, st.t,
-                      to_string(st.phase), to_string(e.kind), st.position().x(), st.position().y(), st.position().z(),
+          double under = 0.0;
+          if (!field.height(st.position().x(), st.position().z(), &under)) under = std::nan("");
+          std::printf("%3d t %.4f %-7s %-9s p %8.4f %8.5f %8.4f (ground %8.4f) v %7.3f %7.3f %7.3f sup n %.3f %.3f %.3f pt %.3f %.3f %.3f\n", n, st.t,
+                      to_string(st.phase), to_string(e.kind), st.position().x(), st.position().y(), st.position().z(), under,
                       st.velocity().x(), st.velocity().y(), st.velocity().z(), st.support.normal.x(), st.support.normal.y(),
                       st.support.normal.z(), st.support.point.x(), st.support.point.y(), st.support.point.z());
         }

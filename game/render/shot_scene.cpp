@@ -8,6 +8,7 @@
 
 #include "game/render/ballpark_dressing.hpp"
 #include "game/render/gpu_mesh.hpp"
+#include "game/render/legend.hpp"
 #include "game/render/mesh_import.hpp"
 #include "game/render/overlay_geometry.hpp"
 #include "game/render/render_paths.hpp"
@@ -28,7 +29,6 @@ const Eigen::Vector3f kFenceLabelColor{1.00f, 0.92f, 0.30f};
 const Eigen::Vector3f kShadowColor{0.05f, 0.07f, 0.05f};
 const Eigen::Vector3f kTrackColor{0.10f, 0.22f, 0.08f};
 const Eigen::Vector3f kBallShadowColor{0.06f, 0.11f, 0.05f};
-const Eigen::Vector3f kLegendText{0.92f, 0.92f, 0.92f};
 const Eigen::Vector3f kPathColor{0.55f, 0.95f, 1.00f};  // club path (with attack angle)
 const Eigen::Vector3f kFaceColor{1.00f, 0.30f, 0.25f};  // face normal
 
@@ -333,31 +333,11 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   };
   // The trail colours' key, bottom-left, claimed first so no label covers it.
   if (samples.size() >= 2 && m.style.legend) {
-    // A point `depth` m in front of the eye under pixel (x, y): screen-fixed geometry drawn
-    // with the overlays (no depth test), sized in pixels.
-    const double depth = 2.0 * camera.near_m;
-    const double mpp = 2.0 * depth * std::tan(camera.fov_y / 2) / height;
-    const Vec3 f = camera.forward();
-    auto screen = [&](double x, double y) {
-      return Vec3(camera.eye + depth * f + (x - 0.5 * width) * mpp * cam_right - (y - 0.5 * height) * mpp * cam_up);
-    };
-    const double h_px = style_scale * 12.0, gap = style_scale * 8.0, swatch = style_scale * 18.0;
-    double x = style_scale * 12.0;
-    const double y = height - style_scale * 12.0;
-    const double x_start = x;
-    std::vector<std::pair<Eigen::Vector3f, const char*>> keys = {
+    std::vector<LegendEntry> keys = {
         {phase_color(Phase::Flight), "flight"}, {phase_color(Phase::Bounce), "bounce"}, {phase_color(Phase::Roll), "roll"}};
-    if (show_delivery) keys.emplace_back(kPathColor, "path");
-    if (show_delivery && !m.impactor_is_bat) keys.emplace_back(kFaceColor, "face");
-    for (const auto& [colour, name] : keys) {
-      const double mid = y - 0.5 * h_px;
-      append_band(scene.top_overlay, screen(x, mid), screen(x + swatch, mid), 0.4 * h_px * mpp, -f, colour);
-      x += swatch + 0.5 * gap;
-      append_text(scene.top_overlay, name, screen(x + 1.0, y + 1.0), cam_right, cam_up, h_px * mpp, kShadowColor);
-      append_text(scene.top_overlay, name, screen(x, y), cam_right, cam_up, h_px * mpp, kLegendText);
-      x += text_width(name, h_px) + 1.5 * gap;
-    }
-    taken.emplace_back(x_start - 4.0, y - h_px - 4.0, x, y + 4.0);
+    if (show_delivery) keys.push_back({kPathColor, "path"});
+    if (show_delivery && !m.impactor_is_bat) keys.push_back({kFaceColor, "face"});
+    taken.push_back(append_legend(scene.top_overlay, keys, camera, width, height, style_scale));
   }
   // Landing ring with the carry, rest pin with the total (golf yards, baseball feet).
   if (have_shot) {

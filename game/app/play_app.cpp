@@ -186,8 +186,7 @@ WindowNext run_lab_loop(const Assets& assets, GameWindow& win, Renderer& rendere
       if (vw != renderer.width() || vh != renderer.height()) renderer.resize(vw, vh);
       Camera cam = scene->keep_above_ground(orbit.apply(scene->camera(camera, replay.time, vw, vh)));
       if (glide_from && since_switch < kCameraGlide) {
-        const double x = since_switch / kCameraGlide;
-        cam = scene->keep_above_ground(blend_cameras(*glide_from, cam, x * x * (3.0 - 2.0 * x)));
+        cam = scene->keep_above_ground(blend_cameras(*glide_from, cam, ease_in_out(since_switch / kCameraGlide)));
       }
       last_camera = cam;
       renderer.draw(scene->build(cam, replay.time, vw, vh), cam);

@@ -30,9 +30,10 @@ struct Paint {
   float look;
 };
 
-Paint paint(const char* material, const Eigen::Vector3f& fallback, float look) {
-  if (const auto p = palette_color(material)) return {p->color, p->pattern};
-  return {fallback, look};
+// The palette's colour and look for a surface it names (every name used here is in it).
+Paint paint(const char* material) {
+  const PaletteEntry p = palette_color(material).value();
+  return {p.color, p.pattern};
 }
 
 void vertex(MeshData& m, const Vec3& p, const Paint& c, const Vec3& normal = Vec3::UnitY()) {
@@ -84,31 +85,32 @@ void chalk_box(MeshData& m, const Vec3& home, double x0, double x1, double z0, d
 // Distance from home along the horizontal direction at spray angle phi to the fence line;
 // past the poles, the nearer pole's distance.
 double fence_distance(const Vec3& home, const std::vector<Vec3>& fence, double phi) {
-  const Vec3 d(std::cos(phi), 0.0, std::sin(phi));
-  std::optional<double> best;
-  for (std::size_t i = 0; i + 1 < fence.size(); ++i) {
-    const double ax = fence[i].x() - home.x(), az = fence[i].z() - home.z();
-    const double sx = fence[i + 1].x() - fence[i].x(), sz = fence[i + 1].z() - fence[i].z();
-    const double den = d.x() * sz - d.z() * sx;
-    if (std::abs(den) < 1e-12) continue;
-    const double t = (ax * sz - az * sx) / den, u = (ax * d.z() - az * d.x()) / den;
-    if (t > 0.0 && u >= -1e-9 && u <= 1.0 + 1e-9 && (!best || t < *best)) best = t;
-  }
-  if (best) return *best;
+  if (const auto d = ray_polyline(home, Vec3(std::cos(phi), 0.0, std::sin(phi)), fence)) return *d;
   const Vec3& end = phi < 0.0 ? fence.front() : fence.back();
   return std::hypot(end.x() - home.x(), end.z() - home.z());
 }
 
 }  // namespace
 
+std::optional<double> ray_polyline(const Vec3& origin, const Vec3& dir, const std::vector<Vec3>& line) {
+  std::optional<double> best;
+  for (size_t i = 0; i + 1 < line.size(); ++i) {
+    const double sx = line[i + 1].x() - line[i].x(), sz = line[i + 1].z() - line[i].z();
+    const double den = dir.x() * sz - dir.z() * sx;
+    if (std::abs(den) < 1e-12) continue;
+    const double qx = line[i].x() - origin.x(), qz = line[i].z() - origin.z();
+    const double t = (qx * sz - qz * sx) / den;
+    const double u = (qx * dir.z() - qz * dir.x()) / den;
+    if (t > 0 && u >= -1e-9 && u <= 1 + 1e-9 && (!best || t < *best)) best = t;
+  }
+  return best;
+}
+
 BallparkDressing ballpark_dressing(const Vec3& home, const std::vector<Vec3>& fence_line, double fence_height) {
   BallparkDressing out;
   if (fence_line.size() < 2) return out;
-  const Paint grass = paint("grass", {0.30f, 0.58f, 0.22f}, surface_look::kMown);
-  const Paint dirt = paint("dirt", {0.62f, 0.43f, 0.27f}, surface_look::kDirt);
-  const Paint track = paint("warning_track", {0.52f, 0.36f, 0.24f}, surface_look::kDirt);
+  const Paint grass = paint("grass"), dirt = paint("dirt"), track = paint("warning_track"), pole = paint("foul_pole");
   const Paint chalk{{0.95f, 0.95f, 0.92f}, surface_look::kPlain};
-  const Paint pole = paint("foul_pole", {0.95f, 0.85f, 0.10f}, surface_look::kPlain);
   const double quarter = kPi / 4;
   auto ray = [&](double phi, double r) { return Vec3(home + r * Vec3(std::cos(phi), 0.0, std::sin(phi))); };
 

@@ -8,6 +8,7 @@
 // toward +x, first base toward +z.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "game/render/mesh_data.hpp"
@@ -21,6 +22,10 @@ struct BallparkDressing {
   /// The foul poles (lit boxes standing at the fence's ends).
   MeshData poles;
 };
+
+/// Distance (m) from `origin` along the horizontal direction `dir` (xz used) to where it
+/// first crosses the polyline `line` (xz), if it does: where a spray angle meets the fence.
+std::optional<double> ray_polyline(const Vec3& origin, const Vec3& dir, const std::vector<Vec3>& line);
 
 /// `fence_line`: foot of the fence, left-field pole to right-field pole (WorldAsset);
 /// `fence_height` m. The field is taken as flat at home's height.

@@ -80,25 +80,12 @@ Camera landing_camera(const ShotFraming& framing, double aspect) {
   return look_along(points, f, Vec3::UnitY(), aspect);
 }
 
-double smoothstep01(double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  return x * x * (3.0 - 2.0 * x);
-}
-
 Camera follow_camera(const ShotFraming& framing, double aspect) {
   const Camera chase = chase_camera(framing);
   // Like a broadcast cutting to the landing camera: the turn starts one second before the
   // landing and ends at it (a home run's shot ends there), eased at both ends.
   if (framing.finish.empty() || framing.since_landing < -1.0) return chase;
-  const Camera land = landing_camera(framing, aspect);
-  const double w = smoothstep01(framing.since_landing + 1.0);
-  if (w >= 1.0) return land;
-  Camera c = land;
-  c.eye = chase.eye + w * (land.eye - chase.eye);
-  c.target = chase.target + w * (land.target - chase.target);
-  c.fov_y = chase.fov_y + w * (land.fov_y - chase.fov_y);
-  c.near_m = std::min(chase.near_m, land.near_m);
-  return c;
+  return blend_cameras(chase, landing_camera(framing, aspect), ease_in_out(framing.since_landing + 1.0));
 }
 
 }  // namespace
@@ -300,15 +287,22 @@ Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int he
   return c;
 }
 
+double ease_in_out(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
+
 Camera blend_cameras(const Camera& a, const Camera& b, double w) {
   w = std::clamp(w, 0.0, 1.0);
+  if (w >= 1.0) return b;
   Camera c = b;
   c.eye = a.eye + w * (b.eye - a.eye);
   c.target = a.target + w * (b.target - a.target);
   c.fov_y = a.fov_y + w * (b.fov_y - a.fov_y);
   c.near_m = std::min(a.near_m, b.near_m);
-  const Vec3 up = a.true_up() + w * (b.true_up() - a.true_up());
-  // Opposite ups (never from our cameras) would cancel: keep b's.
+  // The up hints blended: equal hints (the chase and landing views) stay exactly as they
+  // are; opposite ones (never from our cameras) would cancel, so b's is kept.
+  const Vec3 up = a.up + w * (b.up - a.up);
   c.up = up.norm() > 1e-6 ? Vec3(up.normalized()) : b.up;
   if ((c.target - c.eye).norm() < 1e-9) c.target = c.eye + b.forward();
   return c;

@@ -83,8 +83,12 @@ ShotFraming shot_framing(const ShotTrajectory& trajectory, double t);
 Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height);
 
 /// The camera a fraction w (0..1) of the way from a to b: eye, target, up and field of view
-/// interpolated, w eased at both ends by the caller. For a smooth cut between cameras.
+/// interpolated, w eased at both ends by the caller (ease_in_out). For a smooth cut between
+/// cameras; w = 1 is b exactly.
 Camera blend_cameras(const Camera& a, const Camera& b, double w);
+
+/// Smoothstep: 0 at x <= 0, 1 at x >= 1, zero slope at both ends.
+double ease_in_out(double x);
 
 /// Convenience: frame_shot(kind, shot_framing(trajectory, t), width, height).
 Camera frame_shot(CameraKind kind, const ShotTrajectory& trajectory, double t, int width, int height);

@@ -212,7 +212,7 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
   if (shadows) {
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, m.shadow_depth);
-    glUniform1i(glGetUniformLocation(m.lit.id(), "u_shadow_map"), 0);
+    m.lit.set("u_shadow_map", 0);
   }
   // Front to back, so the depth test rejects hidden fragments before they are shaded (a
   // software rasteriser's cost is the fragments it shades): small meshes first, then the

@@ -95,5 +95,6 @@ void ShaderProgram::set(const char* name, const Eigen::Vector3f& v) const {
   glUniform3f(glGetUniformLocation(program_, name), v.x(), v.y(), v.z());
 }
 void ShaderProgram::set(const char* name, float v) const { glUniform1f(glGetUniformLocation(program_, name), v); }
+void ShaderProgram::set(const char* name, int v) const { glUniform1i(glGetUniformLocation(program_, name), v); }
 
 }  // namespace sweetspot

@@ -25,6 +25,7 @@ class ShaderProgram {
   void set(const char* name, const Eigen::Matrix3f& m) const;
   void set(const char* name, const Eigen::Vector3f& v) const;
   void set(const char* name, float v) const;
+  void set(const char* name, int v) const;  ///< ints and sampler texture units
 
  private:
   unsigned program_ = 0;

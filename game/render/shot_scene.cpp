@@ -32,21 +32,6 @@ const Eigen::Vector3f kBallShadowColor{0.06f, 0.11f, 0.05f};
 const Eigen::Vector3f kPathColor{0.55f, 0.95f, 1.00f};  // club path (with attack angle)
 const Eigen::Vector3f kFaceColor{1.00f, 0.30f, 0.25f};  // face normal
 
-// Where the ray from `origin` along `dir` (xz) first meets the polyline `line` (xz), in m.
-std::optional<double> ray_polyline(const Vec3& origin, const Vec3& dir, const std::vector<Vec3>& line) {
-  std::optional<double> best;
-  for (size_t i = 0; i + 1 < line.size(); ++i) {
-    const double sx = line[i + 1].x() - line[i].x(), sz = line[i + 1].z() - line[i].z();
-    const double den = dir.x() * sz - dir.z() * sx;
-    if (std::abs(den) < 1e-12) continue;
-    const double qx = line[i].x() - origin.x(), qz = line[i].z() - origin.z();
-    const double t = (qx * sz - qz * sx) / den;
-    const double u = (qx * dir.z() - qz * dir.x()) / den;
-    if (t > 0 && u >= -1e-9 && u <= 1 + 1e-9 && (!best || t < *best)) best = t;
-  }
-  return best;
-}
-
 Eigen::Matrix4f translate_scale(const Vec3& p, double s) {
   Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
   m.block<3, 3>(0, 0) *= static_cast<float>(s);
@@ -237,13 +222,16 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   // The club or bat at impact, at least impactor_min_px on screen: scaled about the ball's
   // centre at launch (the ball is drawn as big at that moment), so face and ball still touch.
   double strike_scale = 1.0;
+  // The delivery is known (a solved impact, not launch numbers drawn in a nominal pose):
+  // exactly when there is a downswing to show.
+  const bool delivered = pre_roll() > 0.0;
   if (m.impactor && impactor_) {
     if (m.impactor_size > 0.0)
       strike_scale = std::max({1.0, px(launch, m.style.impactor_min_px) / m.impactor_size,
                                px(launch, m.style.ball_min_radius_px) / m.input.ball_radius});
     // Before launch (the replay's pre-roll, t < 0) it is on its downswing (swing_pose.hpp).
     ImpactorPlacement pose = *impactor_;
-    if (t < 0.0 && impactor_->velocity.norm() > 1.0) {
+    if (t < 0.0 && delivered) {
       const Vec3 v = impactor_->velocity.normalized();
       const Vec3 contact = launch - m.input.ball_radius * v;
       const Vec3 shaft = m.impactor_is_bat ? Vec3(-(impactor_->orientation * Vec3::UnitX()))
@@ -267,8 +255,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   }
   // The delivery at the ball, as a coach draws it: the club path (with its attack angle)
   // through the back of the ball, and for a club the face's normal. Sized with the strike.
-  const bool show_delivery = m.impactor && impactor_ && impactor_->velocity.norm() > 1.0;
-  if (show_delivery) {
+  if (delivered) {
     const Vec3 v = impactor_->velocity.normalized();
     const Vec3 back = launch - strike_scale * m.input.ball_radius * v;
     const double len = 0.5 * strike_scale, w = px(back, 3.0);
@@ -335,8 +322,8 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   if (samples.size() >= 2 && m.style.legend) {
     std::vector<LegendEntry> keys = {
         {phase_color(Phase::Flight), "flight"}, {phase_color(Phase::Bounce), "bounce"}, {phase_color(Phase::Roll), "roll"}};
-    if (show_delivery) keys.push_back({kPathColor, "path"});
-    if (show_delivery && !m.impactor_is_bat) keys.push_back({kFaceColor, "face"});
+    if (delivered) keys.push_back({kPathColor, "path"});
+    if (delivered && !m.impactor_is_bat) keys.push_back({kFaceColor, "face"});
     taken.push_back(append_legend(scene.top_overlay, keys, camera, width, height, style_scale));
   }
   // Landing ring with the carry, rest pin with the total (golf yards, baseball feet).

@@ -220,26 +220,29 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
   // not met at the start and a wall across the crease is.
   SurfaceContact hit;
   const Vec3 off = 1e-5 * nc;
-  if (!stops && terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p + off, p1 + off, r, &hit, nullptr)) &&
-      (hit.normal - n1).norm() > 1e-6 && (hit.normal - n2).norm() > 1e-6) {
+  bool swept = false, met = false;  // the sweep below, done at most once a step
+  const auto met_on_way = [&] {
+    if (!swept) {
+      swept = true;
+      ++s.counters.sweeps;
+      met = terrain.sweep(p + off, p1 + off, r, &hit, nullptr) && (hit.normal - n1).norm() > 1e-6 &&
+            (hit.normal - n2).norm() > 1e-6;
+    }
+    return met;
+  };
+  const auto strike = [&] {
     leave_crease();
     s.t += hit.fraction * step;
     set_rolling(s, p + hit.fraction * (p1 - p), u * d, nc, r);
     s.phase = Phase::Bounce;
     return touch_surface(m, s, hit);
-  }
+  };
+  if (!stops && terrain.may_touch_steep(p, p1, r) && met_on_way()) return strike();
   SurfaceContact under = s.support;
   if (!ground_under(terrain, p, p1, r, kLeaveGap + 0.1 * std::abs(u) * step + r, &under)) {
-    leave_crease();
     // As in the skid: a face met on the way (p1 under it, so the query saw nothing).
-    ++s.counters.sweeps;
-    if (terrain.sweep(p + off, p1 + off, r, &hit, nullptr) && (hit.normal - n1).norm() > 1e-6 &&
-        (hit.normal - n2).norm() > 1e-6) {
-      s.t += hit.fraction * step;
-      set_rolling(s, p + hit.fraction * (p1 - p), u * d, nc, r);
-      s.phase = Phase::Bounce;
-      return touch_surface(m, s, hit);
-    }
+    if (met_on_way()) return strike();
+    leave_crease();
     return go_airborne(s, step, p1, v1);
   }
   const bool same_face = (under.normal - n1).norm() < 1e-6 || (under.normal - n2).norm() < 1e-6;
@@ -389,26 +392,31 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     }
     return touched;
   };
-  if (terrain.may_touch_steep(p, p1, r) && (++s.counters.sweeps, terrain.sweep(p, p1, r, &hit, &n))) return strike(hit);
+  // A face met on the way p -> p1 (other than the one rolled on): swept at most once a step.
+  bool swept = false, met = false;
+  const auto met_on_way = [&] {
+    if (!swept) {
+      swept = true;
+      ++s.counters.sweeps;
+      met = terrain.sweep(p, p1, r, &hit, &n);
+    }
+    return met;
+  };
+  if (terrain.may_touch_steep(p, p1, r) && met_on_way()) return strike(hit);
   // Follow the ground under the new position.
   SurfaceContact under = c;  // the current support is the cache hint
   // Leaving the ground: first make sure the step did not run into a face on the way (a V
   // whose far side rises more steeply than the step's lift can see: p1 ends under it, the
   // ground query from there finds nothing, and the ball used to fly on from inside the
   // ground, out of the world: random-world soak findings).
-  const auto leave = [&]() {
-    ++s.counters.sweeps;
-    if (terrain.sweep(p, p1, r, &hit, &n)) return strike(hit);
-    return go_airborne(s, step_t, p1, v1);
-  };
+  const auto leave = [&]() { return met_on_way() ? strike(hit) : go_airborne(s, step_t, p1, v1); };
   if (!ground_under(terrain, p, p1, r, kLeaveGap + 0.1 * speed * step_t, &under)) return leave();
   const double gap = under.normal.dot(p1 - under.point) - r;
   if (under.normal.dot(n) < kFollowCos && gap < 0.0) {
     // The ground turned up sharply ahead (a concave edge: the far wall of a hollow, a bank
     // not steep enough to count as a wall) and p1 is inside it: meet it where the ball
     // first touches it instead of flying on from inside it (a random-world soak finding).
-    ++s.counters.sweeps;
-    if (terrain.sweep(p, p1, r, &hit, &n)) return strike(hit);
+    if (met_on_way()) return strike(hit);
     // No first touch on the way: the ball began the step already against that face (at the
     // crease between the faces, within a rounding of it). It meets the face where the step
     // began; flying on from p1, inside the ground, let it fall through the world (a

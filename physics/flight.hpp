@@ -46,7 +46,10 @@ struct FlightSettings {
   /// 1e-3 a hop is one step and its rest error under a millimetre (the sample above).
   double bounce_rel_tol = 1e-3;
   static constexpr Range kBounceRelTol{1e-14, 1e-2};
-  double max_time = 60.0;        ///< s; a shot that has not ended by then ends with StepLimit
+  /// s; a shot that has not ended by then ends with StepLimit. Five minutes: a ball creeping
+  /// down a long slope whose pull barely beats the turf's rolling resistance (a = g(sinθ −
+  /// c cosθ) of a few mm/s²) takes minutes to stop or leave (random-world soak, issue 20).
+  double max_time = 300.0;
   static constexpr Range kMaxTime{0.0, 600.0, true};
   int max_steps = 200000;        ///< integrator + roll steps bound
   static constexpr Range kMaxSteps{1.0, 1e7};
@@ -97,6 +100,9 @@ struct ShotState {
   /// or crossings back and forth over one edge (rolling); the face the ball was last on.
   int chatter = 0;
   Vec3 last_touch_normal = Vec3::Zero();
+  /// Consecutive steps that did not advance the clock (a ball the faces hold, passed from a
+  /// touch to a roll and back at one instant): see step().
+  int stalled = 0;
   /// Roll in a crease: the two faces that hold the ball (both zero when not in one). The
   /// ball moves along their line n1 × n2 only (physics/detail/roll_step.cpp).
   Vec3 crease_n1 = Vec3::Zero(), crease_n2 = Vec3::Zero();

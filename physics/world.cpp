@@ -271,6 +271,55 @@ struct World::Impl {
     return n.dot((b - a).cross(p - a)) >= eps && n.dot((c - b).cross(p - b)) >= eps &&
            n.dot((a - c).cross(p - c)) >= eps;
   }
+
+  /// At a concave edge a rising face can already cut into the ball while the foot of its
+  /// centre is still on the support triangle (*mesh, *tri): random-world soak findings, rolling
+  /// centres 1-9 cm inside the ground, and a ball whose V's far face met the support at a
+  /// corner only (no shared edge) rolling on under it and out of the world. Every triangle
+  /// near the ball (the grid's cells under its box; the support's edge neighbours when the
+  /// grid is off) that rises from the support's plane and cuts the ball deeper than the
+  /// support becomes the support; the roll then steps onto it or strikes it. Concave only: a
+  /// face beyond a ridge lies below the support's plane and never lifts the ball.
+  void deepest_rising_floor(const Vec3& centre, double radius, int* mesh, int* tri) const {
+    const CollisionMesh& cm = meshes[static_cast<size_t>(*mesh)];
+    const Vec3 n0 = cm.normals[static_cast<size_t>(*tri)];
+    const Vec3 c0 = (cm.vertex(*tri, 0) + cm.vertex(*tri, 1) + cm.vertex(*tri, 2)) / 3.0;
+    double deepest = n0.dot(centre - cm.vertex(*tri, 0)) - radius;
+    int best_mesh = *mesh, best_tri = *tri;
+    const auto consider = [&](int nb_mesh, int nb_tri) {
+      if (nb_mesh < 0 || (nb_mesh == best_mesh && nb_tri == best_tri)) return;
+      const CollisionMesh& nm = meshes[static_cast<size_t>(nb_mesh)];
+      const Vec3& nn = nm.normals[static_cast<size_t>(nb_tri)];
+      if (nn.y() <= 0.1) return;  // a wall or an overhang is struck, never stood on
+      const Vec3 a = nm.vertex(nb_tri, 0);
+      const double g = nn.dot(centre - a) - radius;
+      if (!(g < deepest)) return;  // its plane cuts the ball no deeper: it cannot win (cheap test first)
+      const Vec3 b = nm.vertex(nb_tri, 1), c = nm.vertex(nb_tri, 2);
+      if (n0.dot((a + b + c) / 3.0 - c0) <= 0.0) return;  // not rising from the support
+      if ((closest_point_on_triangle(centre, a, b, c) - centre).squaredNorm() >= radius * radius) return;
+      deepest = g;
+      best_mesh = nb_mesh;
+      best_tri = nb_tri;
+    };
+    const Vec3 lo = centre - Vec3::Constant(radius), hi = centre + Vec3::Constant(radius);
+    int i0, i1, k0, k1;
+    if (grid_sweeps && cells(lo.x(), hi.x(), lo.z(), hi.z(), &i0, &i1, &k0, &k1)) {
+      for (const CellTriangle& c : large_triangles)
+        if ((c.lo.array() <= hi.array()).all() && (c.hi.array() >= lo.array()).all()) consider(c.mesh, c.tri);
+      for (int k = k0; k <= k1; ++k)
+        for (int i = i0; i <= i1; ++i) {
+          const auto cell = static_cast<size_t>(k * nx + i);
+          for (int e = cell_start[cell]; e < cell_start[cell + 1]; ++e) {
+            const CellTriangle& c = cell_triangles[static_cast<size_t>(e)];
+            if ((c.lo.array() <= hi.array()).all() && (c.hi.array() >= lo.array()).all()) consider(c.mesh, c.tri);
+          }
+        }
+    } else {
+      for (const TriRef& nb : cm.neighbours[static_cast<size_t>(*tri)]) consider(nb.mesh, nb.tri);
+    }
+    *mesh = best_mesh;
+    *tri = best_tri;
+  }
 };
 
 namespace {
@@ -552,29 +601,6 @@ bool World::support(const Vec3& centre, double radius, double reach, SurfaceCont
     if (w.over_triangle(hit->mesh, hit->triangle, centre)) {
       mesh = hit->mesh;  // still over the same triangle: no Bullet query
       tri = hit->triangle;
-      // At a concave edge a rising neighbour can already cut into the ball while the contact
-      // point is still on this triangle (a random-world soak finding: rolling centres 1-9 cm
-      // inside the ground). The neighbour the ball overlaps most becomes the support; the
-      // roll then steps onto it or strikes it. Concave only: a neighbour beyond a ridge lies
-      // below this plane and never lifts the ball.
-      const CollisionMesh& cm = w.meshes[static_cast<size_t>(mesh)];
-      const Vec3 n0 = cm.normals[static_cast<size_t>(tri)];
-      const Vec3 c0 = (cm.vertex(tri, 0) + cm.vertex(tri, 1) + cm.vertex(tri, 2)) / 3.0;
-      double deepest = n0.dot(centre - cm.vertex(tri, 0)) - radius;
-      const auto neighbours = cm.neighbours[static_cast<size_t>(tri)];
-      for (const TriRef& nb : neighbours) {
-        if (nb.mesh < 0) continue;
-        const CollisionMesh& nm = w.meshes[static_cast<size_t>(nb.mesh)];
-        const Vec3& nn = nm.normals[static_cast<size_t>(nb.tri)];
-        const Vec3 a = nm.vertex(nb.tri, 0), b = nm.vertex(nb.tri, 1), c = nm.vertex(nb.tri, 2);
-        if (nn.y() <= 0.1 || n0.dot((a + b + c) / 3.0 - c0) <= 0.0) continue;  // not a rising floor
-        const double g = nn.dot(centre - a) - radius;
-        if (!(g < deepest)) continue;  // its plane cuts the ball no deeper: it cannot win (cheap test first)
-        if ((closest_point_on_triangle(centre, a, b, c) - centre).squaredNorm() >= radius * radius) continue;
-        deepest = g;
-        mesh = nb.mesh;
-        tri = nb.tri;
-      }
     } else {
       for (const TriRef& nb : w.meshes[static_cast<size_t>(hit->mesh)].neighbours[static_cast<size_t>(hit->triangle)]) {
         if (nb.mesh >= 0 && w.meshes[static_cast<size_t>(nb.mesh)].normals[static_cast<size_t>(nb.tri)].y() > 0.1 &&
@@ -598,6 +624,7 @@ bool World::support(const Vec3& centre, double radius, double reach, SurfaceCont
     mesh = cb.mesh;
     tri = cb.triangle;
   }
+  w.deepest_rising_floor(centre, radius, &mesh, &tri);
   const CollisionMesh& m = w.meshes[static_cast<size_t>(mesh)];
   const double gap = m.normals[static_cast<size_t>(tri)].dot(centre - m.vertex(tri, 0)) - radius;
   if (gap > reach) return false;

@@ -36,7 +36,16 @@ void set_rolling(ShotState& s, const Vec3& p, const Vec3& v, const Vec3& n, doub
 /// the world). The gap is then measured from p1 itself by the caller.
 bool ground_under(const Terrain& terrain, const Vec3& p, const Vec3& p1, double r, double reach, SurfaceContact* under) {
   const double lift = (p1 - p).norm();
-  return terrain.support(p1 + lift * up_axis(), r, reach + lift, under);
+  if (!terrain.support(p1 + lift * up_axis(), r, reach + lift, under)) return false;
+  // The lifted query passes over a face that rises steeply enough to hold p1 more than the
+  // lift deep (the far side of a V met at a corner: a random-world soak finding, a ball that
+  // rolled on under it and out of the world). Asked again from p1 itself, such a face cuts
+  // the ball deepest and becomes the support.
+  SurfaceContact at = *under;
+  if (terrain.support(p1, r, reach, &at) && (at.mesh != under->mesh || at.triangle != under->triangle) &&
+      at.normal.dot(p1 - at.point) < under->normal.dot(p1 - under->point))
+    *under = at;
+  return true;
 }
 
 ShotEvent go_airborne(ShotState& s, double dt, const Vec3& p1, const Vec3& v1) {
@@ -102,8 +111,23 @@ ShotEvent skid(const ShotModel& m, ShotState& s) {
   SurfaceContact under = c;
   const double reach = kLeaveGap + 0.1 * v.norm() * elapsed;
   const bool found = ground_under(*m.terrain, s.position(), p, r, reach, &under);
-  if (found && under.normal.dot(n) < kFollowCos && under.normal.dot(p - under.point) - r < 0.0 &&
-      v.dot(under.normal) < 0.0) {
+  const bool into_face = found && under.normal.dot(n) < kFollowCos && under.normal.dot(p - under.point) - r < 0.0 &&
+                         v.dot(under.normal) < 0.0;
+  if (into_face && -v.dot(under.normal) < m.settings.roll_speed) {
+    p -= (under.normal.dot(p - under.point) - r) * under.normal;
+    s.y.segment<3>(0) = p;
+    s.y.segment<3>(3) = v;
+    s.y.segment<3>(6) = w;
+    if (enter_crease(s, n, under.normal)) {
+      // Skidded gently into a second face that carries it too: a crease, as a roll that
+      // meets one gently (roll_step). Struck instead, each touch put the ball back into a
+      // skid on the face it came from, which ran it into the other again some µs later: a
+      // random-world soak finding, 2 850 touches down a 60° V before it stopped.
+      s.support = under;
+      return ShotEvent{};
+    }
+  }
+  if (into_face) {
     // Skidded into a face that turns up sharply (a concave edge): strike it from outside.
     p -= (under.normal.dot(p - under.point) - r) * under.normal;
     s.y.segment<3>(0) = p;
@@ -272,13 +296,13 @@ double rolling_resistance_on(const ShotModel& m, const SurfaceMaterial& mat) {
 
 ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   ShotEvent ev;
-  if (s.skidding) return skid(m, s);
   if (out_of_budget(m, s)) {
     end_shot(s, EndReason::StepLimit);
     ev.kind = ShotEventKind::StepLimit;
     return ev;
   }
   ++s.counters.roll_steps;
+  if (s.skidding) return skid(m, s);
   if (s.crease_n1 != Vec3::Zero()) return crease_step(m, s, until);
   const Terrain& terrain = *m.terrain;
   const double r = m.ball.radius;

@@ -237,13 +237,13 @@ TEST_CASE("bad flight input throws naming the field", "[flight][input]") {
 TEST_CASE("a ball skidding out fast is slowed by the air as well as the turf", "[flight][rest][soak]") {
   // Found by the soak (shot 440310): launched almost flat at 115 m/s with 8700 rpm of
   // hook spin, it barely bounced and rolled. With turf resistance alone (0.16 g) it would
-  // roll for over a minute and 3 km, past the 60 s bound; the air takes most of that speed.
+  // roll for over a minute and 3 km; the air takes most of that speed.
   FlightCase in = golf_launch(10.0, 0.0, 0.0);
   in.launch.velocity = Vec3(115.09913326282135, 0.048463062991829557, -27.298052483953086);
   in.launch.spin = Vec3(42.321380599357468, 913.88188691470668, 180.06572973709996);
   const ShotTrajectory t = fly(in);
   CHECK(t.summary.end == EndReason::Rest);
-  CHECK(t.summary.total_time_s < 0.5 * in.settings.max_time);
+  CHECK(t.summary.total_time_s < 30.0);
   CHECK(t.summary.total_m < 1500.0);
   // A slow roll feels the air only as much as its drag at the start says: a ball rolling at
   // 5 m/s stops short of where turf resistance alone (c·g) would stop it, v²/(2cg), and no

@@ -21,7 +21,11 @@
 // on the built-in shots, last bits differ), giving 0x3999954e4693b67a; issue 22 set the
 // default tolerances to the 1 cm contract (rel 1e-6, hops 1e-3), bounced off the smooth
 // surface's normal, slowed low hops in the contact layer and solved the ground bounce in
-// closed form (TrackMan regressions unchanged within their tolerances), giving the value below.
+// closed form (TrackMan regressions unchanged within their tolerances), giving
+// 0x4bf021f5174a60b4; issue 20's random-world soak fixes (a rolling ball takes the deepest
+// rising face under it as its support, the centre's path is kept in front of the ground, a
+// held ball sleeps; driver total 256.6256 -> 256.6258 m, the rest within 0.1 mm), giving the
+// value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -52,7 +56,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x4bf021f5174a60b4ULL;
+constexpr std::uint64_t kGoldenHash = 0xd3a7a887d381f9c4ULL;
 
 }  // namespace
 

@@ -36,16 +36,7 @@ void set_rolling(ShotState& s, const Vec3& p, const Vec3& v, const Vec3& n, doub
 /// the world). The gap is then measured from p1 itself by the caller.
 bool ground_under(const Terrain& terrain, const Vec3& p, const Vec3& p1, double r, double reach, SurfaceContact* under) {
   const double lift = (p1 - p).norm();
-  if (!terrain.support(p1 + lift * up_axis(), r, reach + lift, under)) return false;
-  // The lifted query passes over a face that rises steeply enough to hold p1 more than the
-  // lift deep (the far side of a V met at a corner: a random-world soak finding, a ball that
-  // rolled on under it and out of the world). Asked again from p1 itself, such a face cuts
-  // the ball deepest and becomes the support.
-  SurfaceContact at = *under;
-  if (terrain.support(p1, r, reach, &at) && (at.mesh != under->mesh || at.triangle != under->triangle) &&
-      at.normal.dot(p1 - at.point) < under->normal.dot(p1 - under->point))
-    *under = at;
-  return true;
+  return terrain.support(p1 + lift * up_axis(), r, reach + lift, under);
 }
 
 ShotEvent go_airborne(ShotState& s, double dt, const Vec3& p1, const Vec3& v1) {

@@ -24,8 +24,10 @@
 // closed form (TrackMan regressions unchanged within their tolerances), giving
 // 0x4bf021f5174a60b4; issue 20's random-world soak fixes (a rolling ball takes the deepest
 // rising face under it as its support, the centre's path is kept in front of the ground, a
-// held ball sleeps; driver total 256.6256 -> 256.6258 m, the rest within 0.1 mm), giving the
-// value below.
+// held ball sleeps; driver total 256.6256 -> 256.6258 m, the rest within 0.1 mm), gave
+// 0xd3a7a887d381f9c4; dropping the roll step's second ground query from the step's end (the
+// centre-path guard already catches what it caught; the soak stays clean) gives back the
+// value below, 0x4bf021f5174a60b4: that query alone moved the driver's rest.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -56,7 +58,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0xd3a7a887d381f9c4ULL;
+constexpr std::uint64_t kGoldenHash = 0x4bf021f5174a60b4ULL;
 
 }  // namespace
 

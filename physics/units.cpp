@@ -59,6 +59,7 @@ constexpr std::array kUnits{
     UnitDef{Dimension::Time, "ms", 1e-3, 0.0},
     UnitDef{Dimension::Time, "us", 1e-6, 0.0},
     UnitDef{Dimension::Time, "min", 60.0, 0.0},
+    UnitDef{Dimension::Time, "h", 3600.0, 0.0},
     UnitDef{Dimension::Inertia, "kg*m^2", 1.0, 0.0},
     UnitDef{Dimension::Inertia, "kgm2", 1.0, 0.0},
     UnitDef{Dimension::Inertia, "g*cm^2", 1e-7, 0.0},

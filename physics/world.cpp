@@ -37,6 +37,7 @@ struct CollisionMesh {
   std::vector<Vec3> normals;     // unit face normal per triangle
   std::vector<std::array<TriRef, 3>> neighbours;  // across edge k = (corner k, corner k+1), any mesh
   std::vector<std::array<Vec3, 3>> corner_normals;  // per corner: the smooth surface's normal (bounce_normal)
+  std::vector<char> twinned;     // per triangle: a copy with the same corners faces the other way
 
   Vec3 vertex(int tri, int corner) const {
     const auto i = static_cast<size_t>(indices[static_cast<size_t>(3 * tri + corner)]) * 3;
@@ -226,6 +227,41 @@ struct World::Impl {
     }
   }
 
+  /// A two-sided sheet is modelled as two triangles on the same corners, facing opposite
+  /// ways. Faces are one-sided (a ball meets a face it moves into), so a ball resting on
+  /// the sheet and lifting off moves into the back copy while touching it and would be
+  /// stopped dead (a hostile-mesh finding: a two-sided ground ended every drive at the tee).
+  /// Such twins are marked; a sweep meets a twin only from its front (SweepCallback).
+  void build_twins() {
+    using Key = std::array<double, 9>;  // the three corners, sorted
+    std::map<Key, std::vector<TriRef>> by_corners;
+    for (size_t mi = 0; mi < meshes.size(); ++mi) {
+      CollisionMesh& m = meshes[mi];
+      const int n = static_cast<int>(m.indices.size() / 3);
+      m.twinned.assign(static_cast<size_t>(n), 0);
+      for (int t = 0; t < n; ++t) {
+        std::array<std::array<double, 3>, 3> c;
+        for (int k = 0; k < 3; ++k) {
+          const Vec3 p = m.vertex(t, k);
+          c[static_cast<size_t>(k)] = {p.x(), p.y(), p.z()};
+        }
+        std::sort(c.begin(), c.end());
+        by_corners[Key{c[0][0], c[0][1], c[0][2], c[1][0], c[1][1], c[1][2], c[2][0], c[2][1], c[2][2]}].push_back(
+            TriRef{static_cast<int>(mi), t});
+      }
+    }
+    for (const auto& [key, list] : by_corners)
+      for (size_t i = 0; i < list.size(); ++i)
+        for (size_t j = i + 1; j < list.size(); ++j) {
+          CollisionMesh& a = meshes[static_cast<size_t>(list[i].mesh)];
+          CollisionMesh& b = meshes[static_cast<size_t>(list[j].mesh)];
+          if (a.normals[static_cast<size_t>(list[i].tri)].dot(b.normals[static_cast<size_t>(list[j].tri)]) < 0.0) {
+            a.twinned[static_cast<size_t>(list[i].tri)] = 1;
+            b.twinned[static_cast<size_t>(list[j].tri)] = 1;
+          }
+        }
+  }
+
   void build_adjacency() {
     using Key = std::array<double, 6>;
     std::map<Key, std::vector<std::pair<TriRef, int>>> edges;
@@ -345,6 +381,8 @@ struct SweepCallback final : btTriangleCallback {
     // Only faces the ball moves into; edge or corner normals are ignored on purpose.
     if (n.dot(direction) >= -1e-9) return;
     if (follow != nullptr && n.dot(*follow) >= follow_cos) return;
+    // One side of a two-sided sheet: met only by a ball whose centre is in front of it.
+    if (m.twinned[static_cast<size_t>(t)] != 0 && n.dot(from - m.vertex(t, 0)) < 0.0) return;
     double f = 0.0;
     if (sphere_triangle_sweep(from, motion, radius, m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2), &f) &&
         (mesh < 0 || f < best || (f == best && std::make_pair(part, t) < std::make_pair(mesh, triangle)))) {
@@ -357,6 +395,7 @@ struct SweepCallback final : btTriangleCallback {
 
 struct ConvexSweepCallback final : btCollisionWorld::ConvexResultCallback {
   const std::vector<CollisionMesh>* meshes = nullptr;
+  Vec3 from = Vec3::Zero();
   Vec3 direction = Vec3::Zero();
   const Vec3* follow = nullptr;
   double follow_cos = 1.0;
@@ -369,8 +408,10 @@ struct ConvexSweepCallback final : btCollisionWorld::ConvexResultCallback {
     const int t = r.m_localShapeInfo->m_triangleIndex;
     const Vec3& n = (*meshes)[static_cast<size_t>(m)].normals[static_cast<size_t>(t)];
     // Same filter as SweepCallback: faces the ball moves into, Bullet's own normal ignored.
+    const CollisionMesh& cm = (*meshes)[static_cast<size_t>(m)];
     if (n.dot(direction) >= -1e-9) return m_closestHitFraction;
     if (follow != nullptr && n.dot(*follow) >= follow_cos) return m_closestHitFraction;
+    if (cm.twinned[static_cast<size_t>(t)] != 0 && n.dot(from - cm.vertex(t, 0)) < 0.0) return m_closestHitFraction;
     if (r.m_hitFraction < m_closestHitFraction) {
       m_closestHitFraction = r.m_hitFraction;
       mesh = m;
@@ -525,6 +566,7 @@ World::World(WorldDescription description, SweepMethod method) : impl_(std::make
   w.build_grid();
   w.build_adjacency();
   w.build_corner_normals();
+  w.build_twins();
 }
 
 World::~World() {
@@ -544,6 +586,7 @@ bool World::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContac
     w.sphere.setUnscaledRadius(radius);
     ConvexSweepCallback cb;
     cb.meshes = &w.meshes;
+    cb.from = from;
     cb.direction = motion / len;
     cb.follow = follow;
     cb.follow_cos = w.follow_cos;

@@ -10,6 +10,7 @@
 #include "game/cli/command.hpp"
 #include "game/content/quantity_text.hpp"
 #include "game/net/connect_server.hpp"
+#include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot::cli {
@@ -43,10 +44,17 @@ RunFn setup_connect(CLI::App& sub) {
     const Range idle_range{ConnectOptions::kMinIdle, ConnectOptions::kMaxIdle};
     o->server.idle_timeout = flag_quantity("--idle-timeout", o->idle, Dimension::Time, &idle_range);
     std::string why;
+    const bool window_only = o->frames > 0 || !o->screenshot.empty();
+    const char* window_flag = o->frames > 0 ? "--frames" : "--screenshot";
+    if (o->headless && window_only)
+      throw InputError(std::string(window_flag) + ": a window option; --headless serves until --max-shots or Ctrl-C");
     if (!o->headless && !display_available(&why)) {
+      // Headless, --frames would be ignored and the server would run forever: refuse.
+      if (window_only) throw InputError(std::string(window_flag) + " needs a window, and " + why);
       std::cerr << "sweetspot connect: " << why << "; running headless.\n";
       o->headless = true;
     }
+    if (!o->screenshot.empty()) check_output_path(o->screenshot, "--screenshot");
     if (o->headless) {
       ConnectServer server(assets, o->server, std::cout, std::cerr);
       return server.run();

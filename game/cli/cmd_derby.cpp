@@ -7,7 +7,9 @@
 #include "game/report/report.hpp"
 #include "game/modes/baseball/session.hpp"
 #include "game/render/spray_chart.hpp"
+#include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
+#include "physics/range.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -24,13 +26,23 @@ RunFn setup_derby(CLI::App& sub) {
   auto o = std::make_shared<DerbyOptions>();
   sub.add_option("--bot", o->bot, "batter skill: pro or amateur (default pro)");
   sub.add_option("--seed", o->seed, "seed of the pitcher's and the batter's errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
-  sub.add_option("--outs", o->session.outs, "derby: outs before it ends, 1..50 (default 10)");
+  auto* outs = sub.add_option("--outs", o->session.outs, "derby: outs before it ends, 1..50 (default 10)");
   sub.add_option("--mode", o->session.mode, "derby (default), at-bat or practice");
-  sub.add_option("--swings", o->session.swings, "practice: pitches, 1..500 (default 20)");
+  auto* swings = sub.add_option("--swings", o->session.swings, "practice: pitches, 1..500 (default 20)");
   sub.add_flag("--left", o->session.left_handed, "a left-handed batter");
   sub.add_flag("--json", o->json, "print the DESIGN §9 JSON");
   sub.add_option("--plot", o->plot, "write the session's spray chart (PNG)");
-  return [o](const Assets& assets) -> int {
+  return [o, outs, swings](const Assets& assets) -> int {
+    // A flag of another mode would be ignored without a word: refuse it.
+    const std::string& mode = o->session.mode;  // an unknown one is refused by run_session
+    const bool known = mode == "derby" || mode == "at-bat" || mode == "practice";
+    if (known && outs->count() > 0 && mode != "derby")
+      throw InputError("--outs: only the derby counts outs (--mode " + o->session.mode + ")");
+    if (known && swings->count() > 0 && mode != "practice")
+      throw InputError("--swings: only practice has a set number of pitches (--mode " + o->session.mode + ")");
+    check_range("--outs", o->session.outs, SessionOptions::kOuts, "");
+    check_range("--swings", o->session.swings, SessionOptions::kSwings, "");
+    if (!o->plot.empty()) check_output_path(o->plot, "--plot");
     BotBatter bot(assets, batter_skill(o->bot), o->seed);
     const std::vector<SwingRecord> swings = run_session(assets, o->session, bot, o->seed);
     const nlohmann::json j = session_json(swings, o->session, o->seed);

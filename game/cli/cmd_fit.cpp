@@ -5,7 +5,9 @@
 #include <memory>
 
 #include "game/cli/command.hpp"
+#include "game/content/scenario_doc.hpp"
 #include "game/tuning/fit.hpp"
+#include "physics/error.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot::cli {
@@ -24,6 +26,10 @@ RunFn setup_fit(CLI::App& sub) {
   sub.add_option("--set", o->sets, "override a scenario key: key=value")->type_name("KEY=VALUE");
   return [o](const Assets& assets) -> int {
     const FitTarget t = parse_fit_target(o->target);
+    // The fit solves e and mu: a --set of either would be overwritten without a word.
+    for (const auto& set : o->sets)
+      if (const std::string key = set_key(set); key == "impact.e" || key == "impact.mu")
+        throw InputError("--set " + set + ": the fit solves this value; leave the --set out");
     const Scenario s = load_scenario(assets, o->scenario, o->sets);
     const FitResult r = fit_e_mu(s, t);
     std::printf("fit %s: e = %.4f, mu = %.4f  (%s, %d deliveries solved)\n", o->scenario.c_str(), r.e, r.mu,

@@ -6,6 +6,7 @@
 #include "game/app/play_app.hpp"
 #include "game/cli/command.hpp"
 #include "game/app/display.hpp"
+#include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot::cli {
@@ -28,6 +29,7 @@ RunFn setup_play(CLI::App& sub) {
   sub.add_flag("--exit-when-done", o->exit_when_done, "golf, baseball: close once the round or the pitches are done (automation)");
   sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(CLI::Range(1, 1000));
   return [o](const Assets& assets) -> int {
+    if (!o->screenshot.empty()) check_output_path(o->screenshot, "--screenshot");  // before the frames run
     std::string why;
     if (!display_available(&why)) {
       std::cout << "sweetspot play: " << why << "; running " << o->scenario << " headless.\n";

@@ -133,12 +133,15 @@ RunFn setup_round(CLI::App& sub) {
   sub.add_option("--seed", o->seed, "seed of the bot's swing errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   sub.add_option("--swings", o->swings, "scripted meter inputs, one [[stroke]] per stroke (TOML)");
   sub.add_option("--mode", o->mode, "stroke (default), ctp (closest to the pin) or long-drive");
-  sub.add_option("--balls", o->balls, "balls for ctp and long-drive, 1..100 (default 5)");
+  auto* balls = sub.add_option("--balls", o->balls, "balls for ctp and long-drive, 1..100 (default 5)");
   sub.add_flag("--json", o->json, "print the DESIGN §9 JSON");
   sub.add_option("--plot", o->plot, "also write the session's dispersion (carry vs side per club) to FILE.png");
-  return [o](const Assets& assets) -> int {
+  return [o, balls](const Assets& assets) -> int {
     if (o->mode != "stroke" && o->mode != "ctp" && o->mode != "long-drive")
       throw InputError("--mode " + o->mode + ": unknown mode (allowed: stroke, ctp, long-drive)");
+    if (balls->count() > 0 && o->mode == "stroke")
+      throw InputError("--balls: a stroke round plays one ball to each cup; --balls is for --mode ctp or long-drive");
+    if (!o->plot.empty()) check_output_path(o->plot, "--plot");
     if (o->balls < 1 || o->balls > 100) throw InputError("--balls " + std::to_string(o->balls) + " is out of range (allowed [1, 100])");
     if (!o->bot.empty()) golfer_skill(o->bot);  // refuse an unknown skill before any work
     if (!o->plot.empty() && !o->swings.empty()) refuse_output_over_input(o->plot, o->swings, "--plot");

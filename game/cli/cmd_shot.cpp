@@ -83,6 +83,10 @@ RunFn setup_shot(CLI::App& sub) {
       const SessionFile session = o->session.empty() ? SessionFile{}
                                                      : read_session_file(o->session, "--session appends to files it wrote");
       const int last = last_shot_number(session, o->session);
+      if (!o->session.empty() && o->shot_number > 0 && o->shot_number <= last)
+        throw InputError("--shot-number " + std::to_string(o->shot_number) + ": " + o->session + " already holds shot " +
+                         std::to_string(last) + "; a session's numbers rise (leave --shot-number out for " +
+                         std::to_string(last + 1) + ")");
       const int number = o->shot_number > 0 ? o->shot_number : last + 1;
       if (number > kMaxShotNumber)
         throw InputError(o->session + ": the session is full (ShotNumber would pass 1000000000)");

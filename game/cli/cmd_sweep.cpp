@@ -41,7 +41,7 @@ RunFn setup_sweep(CLI::App& sub) {
   sub.add_option("--threads", o->threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   sub.add_flag("--no-flight", o->no_flight, "launch numbers only, skip the flight (faster)");
   sub.add_option("--plot", o->plot,
-                 "also write FILE.png: heatmaps of ball speed, spin and carry over the grid with the grip boundary, "
+                 "also write a PNG image to FILE (name it .png): heatmaps of ball speed, spin and carry over the grid with the grip boundary, "
                  "and the landing dispersion");
   sub.add_option("--units", o->units, "display units of the table: imperial or metric (the CSV is SI)")
       ->capture_default_str();
@@ -57,15 +57,16 @@ RunFn setup_sweep(CLI::App& sub) {
       throw InputError("--e " + o->e + " --mu " + o->mu + ": " + std::to_string(points) +
                        " grid points exceed the limit of " + std::to_string(kMaxSweepPoints));
     }
+    if (!o->csv.empty()) check_output_path(o->csv, "--csv");
+    if (!o->plot.empty()) check_output_path(o->plot, "--plot");
     if (!o->csv.empty()) refuse_output_over_input(o->csv, resolve_scenario(assets, o->scenario), "--csv");
     if (!o->plot.empty()) refuse_output_over_input(o->plot, resolve_scenario(assets, o->scenario), "--plot");
-    if (!o->csv.empty() && !o->plot.empty() && std::filesystem::path(o->csv) == std::filesystem::path(o->plot))
+    if (!o->csv.empty() && !o->plot.empty() && same_output_file(o->csv, o->plot))
       throw InputError("--csv " + o->csv + " --plot " + o->plot + ": the CSV and the plot would overwrite each other");
     // The grid sets e and mu: a --set of either would be overwritten without a word.
     for (const auto& set : o->sets)
-      for (const char* key : {"impact.e=", "impact.mu="})
-        if (set.rfind(key, 0) == 0)
-          throw InputError("--set " + set + ": the sweep's grid (--e / --mu) sets this value; leave the --set out");
+      if (const std::string key = set_key(set); key == "impact.e" || key == "impact.mu")
+        throw InputError("--set " + set + ": the sweep's grid (--e / --mu) sets this value; leave the --set out");
     const Scenario base = load_scenario(assets, o->scenario, o->sets);
     if (::isatty(STDERR_FILENO) != 0) {
       so.progress = [](std::size_t done, std::size_t total) {

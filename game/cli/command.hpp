@@ -35,6 +35,12 @@ inline const CLI::Validator kSeedText(
       return {};
     },
     "UINT64");
+/// Every option that takes a value refuses "" (main.cpp adds it to all of them).
+inline const CLI::Validator kNotEmpty(
+    [](std::string& text) -> std::string {
+      return text.empty() ? "an empty value: give one, or leave the option out for its default" : std::string();
+    },
+    "");
 using SetupFn = RunFn (*)(CLI::App& sub);
 
 struct CommandInfo {

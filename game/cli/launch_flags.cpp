@@ -34,7 +34,10 @@ Scenario launch_scenario(const Assets& assets, const LaunchFlags& f, const std::
     apply_set(doc, std::string(key) + "=" + value, std::string(name_of_flag) + " " + value);
   };
   flag("sport", f.sport, "--sport");
-  if (f.ball_speed.empty()) throw InputError("--ball-speed is required (e.g. --ball-speed 167mph --launch-angle 10.9deg --spin 2686rpm)");
+  if (f.ball_speed.empty() || f.launch_angle.empty() || f.spin.empty())
+    throw InputError(std::string(f.ball_speed.empty() ? "--ball-speed" : f.launch_angle.empty() ? "--launch-angle" : "--spin") +
+                     " is required: a launch is --ball-speed, --launch-angle and --spin together (e.g. --ball-speed "
+                     "167mph --launch-angle 10.9deg --spin 2686rpm)");
   flag("launch.ball_speed", f.ball_speed, "--ball-speed");
   flag("launch.vertical_angle", f.launch_angle, "--launch-angle");
   flag("launch.spin", f.spin, "--spin");

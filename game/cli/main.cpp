@@ -17,6 +17,32 @@ std::vector<CommandInfo>& command_registry() {
 }
 }  // namespace sweetspot::cli
 
+namespace {
+
+/// An error message quotes what the user wrote, often twice (the flag and the key's value);
+/// a 100 kB argument would bury the reason. Any run of over 240 characters without a space
+/// keeps its first 160 and last 40, with the count of what was left out between.
+std::string shorten_long_runs(const std::string& message) {
+  constexpr std::size_t kLong = 240, kHead = 160, kTail = 40;
+  std::string out;
+  std::size_t i = 0;
+  while (i < message.size()) {
+    const std::size_t end = std::min(message.find_first_of(" \n", i), message.size());
+    if (end - i > kLong) {
+      out.append(message, i, kHead);
+      out += "...(" + std::to_string(end - i - kHead - kTail) + " more characters)...";
+      out.append(message, end - kTail, kTail);
+    } else {
+      out.append(message, i, end - i);
+    }
+    if (end < message.size()) out += message[end];
+    i = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace sweetspot::cli;
   // Over a file-size limit (ulimit -f) a write must fail with EFBIG and be reported, not
@@ -37,13 +63,33 @@ int main(int argc, char** argv) {
   for (const auto& c : registry) {
     CLI::App* sub = app.add_subcommand(c.name, c.summary);
     runs.emplace_back(sub, c.setup(*sub));
+    // One rule for empty values: `--world ""` is a mistake (an unset variable in a script),
+    // never a way to ask for the default, so every option that takes a value refuses "".
+    for (CLI::Option* opt : sub->get_options())
+      if (opt->get_type_size() > 0) opt->check(kNotEmpty);
   }
 
+  // A mistyped command (`sweetspot fly`) is named, with the commands there are; CLI11 alone
+  // would only say that a subcommand is required.
+  const auto is_command = [&](const char* word) {
+    return std::any_of(registry.begin(), registry.end(), [&](const CommandInfo& c) { return std::string(c.name) == word; });
+  };
+  if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
+    std::string names;
+    for (const auto& c : registry) names += std::string(names.empty() ? "" : ", ") + c.name;
+    std::cerr << "sweetspot: error: unknown command '" << argv[1] << "' (commands: " << names
+              << ")\nRun with --help for the options and their ranges.\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // CLI11 prints usage errors; map every bad flag to exit 2 (help/version stay 0).
     const int code = app.exit(e);
+    if (code == 0 && (std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !(std::cout << std::flush))) {
+      std::cerr << "sweetspot: error: writing the output to stdout failed (disk full, or stdout closed)\n";
+      return 2;
+    }
     return code == 0 ? 0 : 2;
   }
 
@@ -61,7 +107,7 @@ int main(int argc, char** argv) {
       return code;
     }
   } catch (const sweetspot::InputError& e) {
-    std::cerr << "sweetspot: error: " << e.what() << "\n";
+    std::cerr << "sweetspot: error: " << shorten_long_runs(e.what()) << "\n";
     return 2;
   } catch (const std::filesystem::filesystem_error& e) {
     // A path the OS refuses is the user's input, not our bug; loaders report most as

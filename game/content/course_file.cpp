@@ -30,8 +30,16 @@ int Course::par() const {
 }
 
 Course load_course(const Assets& assets, std::string_view name_or_path) {
+  // A path (a '/' or a .toml name) is read as given; anything else is a built-in name.
   std::filesystem::path path(name_or_path);
-  if (path.extension() != ".toml") path = assets.root() / "courses" / (std::string(name_or_path) + ".toml");
+  if (name_or_path.find('/') == std::string_view::npos && path.extension() != ".toml") {
+    path = assets.root() / "courses" / (std::string(name_or_path) + ".toml");
+    if (std::error_code ec; !std::filesystem::exists(path, ec)) {
+      std::string names;
+      for (const auto& n : course_names(assets)) names += (names.empty() ? "" : ", ") + n;
+      throw InputError("unknown course '" + std::string(name_or_path) + "' (allowed: " + names + ", or a path to a .toml)");
+    }
+  }
   const TomlFile f = TomlFile::read(path, "course");
   f.only_keys(f.root(), "", {"name", "hole"});
   Course c;

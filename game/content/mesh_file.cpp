@@ -220,8 +220,20 @@ std::string import_in_child(const std::filesystem::path& path, const char* what,
   const aiScene* scene = importer.ReadFile(path.string(), 0);
   if (!io->refusal().empty()) throw InputError(io->refusal() + " (named by " + path.string() + ")");
   if (scene != nullptr) {
+    std::uint64_t triangles = 0;
     for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi) {
       const aiMesh* m = scene->mMeshes[mi];
+      for (unsigned f = 0; f < m->mNumFaces; ++f) {
+        const unsigned corners = m->mFaces[f].mNumIndices;
+        if (corners > kMaxFaceCorners)
+          throw InputError(path.string() + ": " + what + " '" + m->mName.C_Str() + "' face " + std::to_string(f) +
+                           " has " + std::to_string(corners) + " corners (allowed at most " +
+                           std::to_string(kMaxFaceCorners) + "); split it into smaller polygons");
+        triangles += corners >= 3 ? corners - 2 : 0;
+      }
+      if (triangles > kMaxMeshTriangles)
+        throw InputError(path.string() + ": " + what + " has over " + std::to_string(kMaxMeshTriangles) +
+                         " triangles (the limit); decimate it");
       for (unsigned v = 0; v < m->mNumVertices; ++v) {
         const aiVector3D& p = m->mVertices[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))

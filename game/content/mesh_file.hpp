@@ -40,10 +40,19 @@ struct MeshFile {
   bool incomplete = false;  ///< assimp flagged the scene incomplete
 };
 
+/// A polygon's corners, at most: triangulating an n-gon costs assimp O(n^2) to O(n^3) (a
+/// hostile OBJ with one 100 000-corner face kept the importer busy past its 120 s limit).
+/// Modelling tools write n-gons of a few dozen corners; 256 triangulates in milliseconds.
+inline constexpr unsigned kMaxFaceCorners = 256;
+/// Triangles in one file, at most: each costs the world ~0.4 kB (Bullet's tree, adjacency,
+/// grid), so 1 000 000 is ~0.4 GB, 50x our largest shipped world (golf_hole, 21 516).
+inline constexpr std::uint64_t kMaxMeshTriangles = 1'000'000;
+
 /// Imports `path` with assimp post-processing `flags` (0: triangulated, identical vertices
 /// joined). Throws InputError naming the file (or the material library) that is missing,
 /// not a regular file, over `max_bytes` or unreadable; assimp's message for a file it
-/// cannot parse; and, naming the file, an importer that crashed or ran past its limits on
+/// cannot parse; a face over kMaxFaceCorners or a file over kMaxMeshTriangles (checked
+/// before triangulating); and, naming the file, an importer that crashed or ran past its limits on
 /// it. `what` names the role ("world mesh", "mesh").
 MeshFile import_mesh_file(const std::filesystem::path& path, const char* what, std::uintmax_t max_bytes,
                           unsigned flags = 0);

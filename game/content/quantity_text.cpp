@@ -1,6 +1,7 @@
 #include "game/content/quantity_text.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <string>
 
 #include "physics/error.hpp"
@@ -61,10 +62,27 @@ double flag_quantity(std::string_view flag, std::string_view text, Dimension dim
   } catch (const InputError& e) {
     throw InputError(where + ": " + e.what());
   }
-  if (range != nullptr) {
-    if (const std::string why = range_refusal(std::string(flag).substr(flag.find_first_not_of('-')), v, *range, si_unit_name(dim));
-        !why.empty())
-      throw InputError(where + ": " + why);
+  if (range != nullptr && !range->contains(v)) {
+    // The refusal speaks the unit the value was written in ("--spin 9000rpm: ... allowed
+    // [0, 4000] rpm"), not SI: the unit's scale and offset come from reading 0 and 1 of it.
+    const std::string_view t = trim(text);
+    const char* first = t.data();
+    const char* last = t.data() + t.size();
+    if (first != last && (*first == '+' || *first == '-')) ++first;
+    double ignored = 0.0;
+    const char* number_end = std::from_chars(first, last, ignored).ptr;
+    const std::string unit(trim(std::string_view(number_end, static_cast<std::size_t>(last - number_end))));
+    const std::string name(std::string(flag).substr(flag.find_first_not_of('-')));
+    std::string why = range_refusal(name, v, *range, si_unit_name(dim));
+    if (!unit.empty()) {
+      const double offset = parse_quantity("0" + unit, dim), scale = parse_quantity("1" + unit, dim) - offset;
+      const auto shown = [&](double si) { return std::isfinite(si) ? (si - offset) / scale : si; };
+      Range in_unit = *range;
+      in_unit.min = shown(range->min);
+      in_unit.max = shown(range->max);
+      if (scale > 0.0) why = range_refusal(name, shown(v), in_unit, unit);
+    }
+    throw InputError(where + ": " + why);
   }
   return v;
 }

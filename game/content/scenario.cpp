@@ -47,6 +47,19 @@ ShotSpec spec_from(const CheckedDoc& doc) {
   s.ball_mass = doc.quantity_if_set("ball.mass");
   s.ball_radius = doc.quantity_if_set("ball.radius");
   if (auto speed = doc.quantity_if_set("launch.ball_speed")) {
+    // A launch is three measured numbers; a default angle or spin of 0 would fly a shot
+    // nobody asked for. Direction and spin axis default to 0 (straight), as on a monitor.
+    for (const char* k : {"launch.vertical_angle", "launch.spin"})
+      if (!doc.has(k))
+        throw InputError(doc.origin("launch.ball_speed") + ": " + k +
+                         " is missing: a launch needs ball_speed, vertical_angle and spin");
+    // The launch replaces the strike, so a club, bat, swing, pitch or impact key would be
+    // ignored without a word.
+    for (const std::string& k : doc.keys())
+      for (const char* family : {"club.", "bat.", "swing.", "pitch.", "impact."})
+        if (k.rfind(family, 0) == 0)
+          throw InputError(doc.origin(k) + ": " + k + ": a launch-only scenario has no strike; leave out " + family +
+                           "* or the [launch] table");
     LaunchStrike l;
     l.numbers.ball_speed = *speed;
     l.numbers.vertical_angle = doc.quantity("launch.vertical_angle");

@@ -156,6 +156,11 @@ ScenarioDoc read_toml_doc(const std::filesystem::path& path) {
   return parse_toml_doc(read_data_file(path, "scenario"), path.string());
 }
 
+std::string set_key(std::string_view assignment) {
+  const auto eq = assignment.find('=');
+  return eq == std::string_view::npos ? std::string() : std::string(trim(assignment.substr(0, eq)));
+}
+
 void apply_set(ScenarioDoc& doc, std::string_view assignment, std::string_view origin_in) {
   const std::string origin = origin_in.empty() ? "--set " + std::string(assignment) : std::string(origin_in);
   const auto eq = assignment.find('=');
@@ -173,6 +178,10 @@ void apply_set(ScenarioDoc& doc, std::string_view assignment, std::string_view o
   e.origin = origin;
   for (auto& existing : doc.entries) {
     if (existing.key == key) {
+      // A command-line value replaces the file's; two command-line values for one key
+      // would silently drop one of them (and with it any error it has), so they are refused.
+      if (existing.line == 0)
+        throw InputError(origin + ": " + key + " is already set by " + existing.origin + "; give each key once");
       existing = e;
       return;
     }

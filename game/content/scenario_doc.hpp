@@ -52,6 +52,9 @@ ScenarioDoc read_toml_doc(const std::filesystem::path& path);
 /// "--e 0.7").
 void apply_set(ScenarioDoc& doc, std::string_view assignment, std::string_view origin = {});
 
+/// The key of a `--set key=value` assignment as apply_set reads it (trimmed); "" without '='.
+std::string set_key(std::string_view assignment);
+
 /// A validated value in SI.
 struct CheckedValue {
   const KeySpec* spec = nullptr;

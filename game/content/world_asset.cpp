@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "game/content/mesh_file.hpp"
+#include "game/core/sport.hpp"
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
@@ -128,8 +129,11 @@ fs::path resolve_world(const fs::path& root, const std::string& name_or_path) {
   return p;
 }
 
+/// Every coordinate of a world file lies within the same limit as its mesh's vertices.
+const Range kWorldCoordinate{-kMaxWorldExtent, kMaxWorldExtent};
+
 Vec3 vec3(const TomlFile& f, const toml::node& n, std::string_view key) {
-  const auto v = f.quantities(n, key, Dimension::Length, 3);
+  const auto v = f.quantities(n, key, Dimension::Length, 3, &kWorldCoordinate);
   return Vec3(v[0], v[1], v[2]);
 }
 
@@ -137,7 +141,7 @@ Vec3 vec3(const TomlFile& f, const toml::node& n, std::string_view key) {
 
 // ---- 3. the world .toml ----------------------------------------------------------------
 WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_path,
-                            const std::vector<SurfaceMaterial>& materials) {
+                            const std::vector<SurfaceMaterial>& materials, const SportCatalog* sports) {
   const fs::path path = resolve_world(root, name_or_path);
   WorldAsset a;
   a.source = path;
@@ -165,6 +169,12 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
                         "fence_line"});
     d.name = f.text_or(t, "name", path.stem().string());
     a.sport = f.text_or(t, "sport", "");
+    if (sports != nullptr && t.get("sport") != nullptr) {
+      const auto known = std::find_if(sports->sports.begin(), sports->sports.end(),
+                                       [&](const SportProfile& p) { return p.name == a.sport; });
+      if (known == sports->sports.end())
+        f.fail(*t.get("sport"), "sport", "unknown sport '" + a.sport + "' (allowed: " + sports->names() + ")");
+    }
     const std::string mesh = f.text(f.required(t, "mesh", "the .obj file, relative to the .toml"), "mesh");
     if (const toml::node* n = t.get("origin")) d.origin = vec3(f, *n, "origin");
     if (const toml::node* n = t.get("bounds_min")) d.bounds_min = vec3(f, *n, "bounds_min");
@@ -175,7 +185,7 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
       const toml::array* arr = n->as_array();
       if (arr == nullptr || arr->size() < 2) f.fail(*n, "fence_line", "expected [[x, z], ...] with 2 or more points");
       for (const toml::node& p : *arr) {
-        const auto xz = f.quantities(p, "fence_line", Dimension::Length, 2);
+        const auto xz = f.quantities(p, "fence_line", Dimension::Length, 2, &kWorldCoordinate);
         a.fence_line.emplace_back(xz[0], d.origin.y(), xz[1]);
       }
     }

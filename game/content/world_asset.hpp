@@ -20,6 +20,10 @@
 #include "physics/world.hpp"
 
 namespace sweetspot {
+struct SportCatalog;
+}
+
+namespace sweetspot {
 
 /// Surface materials from a materials.toml. Throws InputError naming the file, line and
 /// key with the allowed values.
@@ -52,8 +56,9 @@ struct WorldAsset {
 /// non-finite or far-flung vertices, dangling indices and unknown material names
 /// (InputError naming file and mesh); drops zero-area triangles and says so in the
 /// description's notes.
+/// `sports`, when given, is what the file's `sport` key may name.
 WorldAsset load_world_asset(const std::filesystem::path& root, const std::string& name_or_path,
-                            const std::vector<SurfaceMaterial>& materials);
+                            const std::vector<SurfaceMaterial>& materials, const SportCatalog* sports = nullptr);
 
 /// Names of the worlds in <root>/worlds (the .toml files), sorted.
 std::vector<std::string> world_names(const std::filesystem::path& root);

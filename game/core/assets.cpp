@@ -82,11 +82,12 @@ const std::vector<SurfaceMaterial>& Assets::materials() const {
 const WorldAsset* Assets::world(const std::string& name_or_path) const {
   if (name_or_path == kFlatWorld) return nullptr;
   const auto& mats = materials();
+  const SportCatalog& catalog = sports();
   std::lock_guard<std::mutex> lock(impl_->mutex);
   auto it = impl_->worlds.find(name_or_path);
   if (it != impl_->worlds.end()) return it->second.get();
   // Reading the OBJ (~100 ms for a hole) and building Bullet's trees (~30 ms) happen once.
-  auto asset = std::make_unique<const WorldAsset>(load_world_asset(impl_->root, name_or_path, mats));
+  auto asset = std::make_unique<const WorldAsset>(load_world_asset(impl_->root, name_or_path, mats, &catalog));
   const WorldAsset* out = asset.get();
   impl_->worlds.emplace(name_or_path, std::move(asset));
   return out;

@@ -68,11 +68,18 @@ FitTarget parse_fit_target(std::string_view text) {
   FitTarget t;
   std::string_view rest = text;
   bool any = false;
-  while (!rest.empty()) {
+  // Items are split at every comma, so "a,", ",a" and "a,,b" hold an empty item: refused
+  // like any other malformed item rather than skipped.
+  for (bool more = true; more;) {
     const auto comma = rest.find(',');
     const std::string_view item = rest.substr(0, comma);
-    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+    more = comma != std::string_view::npos;
+    if (more) rest = rest.substr(comma + 1);
+    if (item.empty() && !more && !any && text.empty()) break;
     const std::string origin = "--target " + std::string(item);
+    if (item.empty())
+      throw InputError("--target " + std::string(text) + ": an empty item (a stray comma); expected e.g. "
+                       "ball_speed=167mph,launch_angle=10.9deg,spin=2686rpm");
     const auto eq = item.find('=');
     if (eq == std::string_view::npos) {
       throw InputError(origin + ": expected key=value; keys: ball_speed, launch_angle, spin");

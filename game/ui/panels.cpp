@@ -209,6 +209,12 @@ bool shot_section(PanelContext& c) {
 bool tuning_section(PanelContext& c) {
   bool changed = false;
   const Scenario& s = c.scenario;
+  if (std::holds_alternative<LaunchStrike>(s.spec.strike)) {
+    // Launch numbers replace the strike: there is no e or mu to tune (and the scenario
+    // refuses impact keys rather than ignore them).
+    ImGui::TextDisabled("launch numbers given: no impact to tune");
+    return false;
+  }
   UiState& st = c.state;
   const std::uint8_t k = strikes_of(s);
   const ImpactSummary& im = c.result.impact;

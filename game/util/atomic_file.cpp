@@ -173,4 +173,32 @@ void refuse_output_over_input(const fs::path& output, const fs::path& input, con
                      ": refusing to overwrite it");
 }
 
+void check_output_path(const fs::path& path, const char* flag) {
+  const std::string where = std::string(flag) + " " + path.string();
+  const fs::path target = follow_links(path);
+  struct stat st {};
+  if (::stat(target.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) throw InputError(where + ": it is a directory");
+    if (!S_ISREG(st.st_mode) && !S_ISCHR(st.st_mode))
+      throw InputError(where + ": not a regular file (a FIFO, socket or block device)");
+  }
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  if (std::error_code ec; !fs::is_directory(dir, ec))
+    throw InputError(where + ": the folder '" + dir.string() + "' does not exist");
+}
+
+bool same_output_file(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (fs::equivalent(a, b, ec) && !ec) return true;  // both exist: same inode
+  // Not both existing: compare the names the files would get, symlinks followed and the
+  // folders made canonical ("./x" and "x", "d/../x").
+  const auto final_name = [](const fs::path& p) {
+    std::error_code e;
+    const fs::path t = follow_links(p);
+    const fs::path c = fs::weakly_canonical(t, e);
+    return (e ? fs::absolute(t, e) : c).lexically_normal();
+  };
+  return final_name(a) == final_name(b);
+}
+
 }  // namespace sweetspot

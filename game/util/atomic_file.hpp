@@ -13,7 +13,10 @@ namespace sweetspot {
 /// written (every write checked), flushed to disk (fsync), closed (checked) and renamed over
 /// the target, so the target holds either the old contents or the new ones, never a mix.
 ///  - A symlink is followed (to depth 40): the file it names is replaced, the link stays.
-///  - An existing file keeps its permission bits; a new one is rw-r--r--.
+///  - An existing file keeps its permission bits; a new one is rw-r--r--. The rename gives
+///    it a new inode, so another hard link to the old file keeps the old contents (the
+///    price of never showing a half-written file; the old inode is what such a link named).
+///    Owner and extended attributes are not carried over either.
 ///  - A character device (/dev/null, /dev/stdout, a tty) is written directly, never replaced;
 ///    a FIFO, socket or block device is refused (a FIFO would block, the others are not files).
 ///  - On any failure the temporary file is removed and the target untouched; so is it when
@@ -21,6 +24,14 @@ namespace sweetspot {
 /// Throws InputError naming `path` and the reason (missing directory, no permission, disk
 /// full, file-size limit).
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents);
+
+/// Checks before a long run that `path` can be written later: its folder exists and it is
+/// not a directory, FIFO, socket or block device. InputError naming `flag` otherwise.
+void check_output_path(const std::filesystem::path& path, const char* flag);
+
+/// True when two output paths name one file (after symlinks, dangling ones included, and
+/// hard links), so writing both would lose one: `--csv x --plot link-to-x`.
+bool same_output_file(const std::filesystem::path& a, const std::filesystem::path& b);
 
 /// Refuses (InputError naming `flag`) an output that is the same file as `input` (after
 /// symlinks and hard links): `render x.toml -o x.toml` must not destroy the scenario.

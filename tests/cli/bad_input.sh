@@ -67,5 +67,37 @@ expect_bad "sweep unwritable csv" "$tmp/missing-dir/out.csv" -- sweep golf/drive
 expect_bad "fit bad target" "--target spin=30000rpm|20000 rpm" -- fit golf/driver --target spin=30000rpm
 expect_bad "fit missing unit" "--target ball_speed=150|missing unit" -- fit golf/driver --target ball_speed=150
 expect_bad "regress missing case" "$tmp/none.toml" -- regress "$tmp/none.toml"
+
+# One rule for empty values, repeated keys, ignored flags and partial launches (issue 20).
+expect_bad "empty --world" "--world|an empty value" -- flight --ball-speed 160mph --launch-angle 10deg --spin 2500rpm --world ""
+expect_bad "empty --spin-axis" "--spin-axis|an empty value" -- flight --ball-speed 160mph --launch-angle 10deg --spin 2500rpm --spin-axis ""
+expect_bad "empty --plot" "--plot|an empty value" -- derby --plot ""
+expect_bad "empty --host" "--host|an empty value" -- send --host "" "$tmp/none.jsonl"
+expect_bad "key set twice" "--set impact.e=0.5|already set by --set impact.e=2" -- shot golf/driver --set impact.e=2 --set impact.e=0.5
+expect_bad "--e over --set" "--e 0.5|already set by --set impact.e=2" -- shot golf/driver --set impact.e=2 --e 0.5
+expect_bad "fit --set e" "--set impact.e=0.5|the fit solves" -- fit golf/driver --target ball_speed=160mph --set impact.e=0.5
+expect_bad "fit stray comma" "stray comma" -- fit golf/driver --target ball_speed=160mph,
+expect_bad "round --balls in stroke play" "--balls|ctp or long-drive" -- round --balls 5
+expect_bad "derby --swings" "--swings|practice" -- derby --swings 5
+expect_bad "practice --outs" "--outs|only the derby" -- derby --mode practice --outs 5
+expect_bad "derby --outs range" "--outs = 0|[1, 50]" -- derby --outs 0
+expect_bad "render partial launch" "--launch-angle is required" -- render --ball-speed 100mph -o "$tmp/x.png"
+[ ! -e "$tmp/x.png" ] || fail "render wrote a PNG for a partial launch"
+scenario half_launch.toml 'sport = "golf"\n[launch]\nball_speed = "100mph"\n'
+expect_bad "launch without angle" "half_launch.toml:3|launch.vertical_angle is missing" -- shot "$tmp/half_launch.toml"
+scenario club_launch.toml 'sport = "golf"\n[club]\nname = "7-iron"\n[launch]\nball_speed = "100mph"\nvertical_angle = "10deg"\nspin = "3000rpm"\n'
+expect_bad "club and launch" "club_launch.toml:3|club.name|no strike" -- shot "$tmp/club_launch.toml"
+expect_bad "unknown command" "unknown command 'fly'|shot, flight" -- fly
+expect_bad "pitch range in its unit" "--spin 9000rpm|[0, 4000] rpm" -- pitch four-seam --spin 9000rpm
+expect_bad "course path" "/dev/zero|not a regular file" -- round /dev/zero
+expect_bad "unknown course" "unknown course 'linx'|links" -- round linx
+printf 'sport = "golf"\nname = "x"\nmesh = "x.obj"\n' > "$tmp/sport_world.toml"
+sed -i 's/sport = "golf"/sport = "tennis"/' "$tmp/sport_world.toml"
+expect_bad "world sport" "sport_world.toml:1|unknown sport 'tennis'" -- shot golf/driver --set world.name="$tmp/sport_world.toml"
+printf 'sport = "golf"\nmesh = "x.obj"\npin = ["1e300m", "0m", "0m"]\n' > "$tmp/far_world.toml"
+expect_bad "world pin far away" "far_world.toml:3|pin|out of range" -- shot golf/driver --set world.name="$tmp/far_world.toml"
+long=$(head -c 100000 /dev/zero | tr '\0' 9)
+expect_bad "a 100 kB value" "more characters" -- shot golf/driver --set "swing.speed=${long}mph"
+[ "$(wc -c < "$tmp/err")" -lt 2000 ] || fail "a 100 kB value is echoed whole: $(wc -c < "$tmp/err") bytes"
 [ -z "$(ls -A "$tmp" | grep -v -E '\.toml$|^(out|err)$')" ] || fail "stray files: $(ls -A "$tmp")"
 echo "bad_input: ok"

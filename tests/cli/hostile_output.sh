@@ -50,6 +50,32 @@ expect_rc 2 "is the input file" -- "$bin" sweep s_link.toml "${grid[@]}" --csv .
 expect_rc 2 "is the input file" -- "$bin" render s.toml -o s.toml --width 64 --height 64
 cmp -s s.toml s.before || fail "the scenario was overwritten"
 
+# Two outputs that are one file (a link to the other, dangling or not) are refused.
+expect_rc 2 "overwrite each other" -- "$bin" sweep s.toml "${grid[@]}" --csv real.csv --plot link.csv
+ln -s not_yet.csv dangling.png
+expect_rc 2 "overwrite each other" -- "$bin" sweep s.toml "${grid[@]}" --csv not_yet.csv --plot dangling.png
+[ ! -e not_yet.csv ] || fail "the refused sweep wrote its CSV"
+expect_rc 2 "does not exist" -- "$bin" sweep s.toml "${grid[@]}" --plot nodir/x.png
+# Window-only flags are refused headless instead of being ignored (connect would serve on).
+expect_rc 2 "--frames" -- env -u DISPLAY -u WAYLAND_DISPLAY timeout 20 "$bin" connect --port 0 --frames 1
+expect_rc 2 "--screenshot" -- timeout 20 "$bin" connect --headless --port 0 --screenshot x.png
+# A session's shot numbers rise: an explicit number at or below its last is refused.
+expect_rc 0 "" -- "$bin" shot golf/pw --gspro --session sess.jsonl
+expect_rc 2 "already holds shot 1" -- "$bin" shot golf/pw --gspro --session sess.jsonl --shot-number 1
+[ "$(wc -l < sess.jsonl)" = 1 ] || fail "the refused shot was appended to the session"
+# A regress folder whose *.toml is a FIFO or a dangling link is refused, not skipped.
+mkdir cases; cp "$SWEETSPOT_ROOT/tests/regression/trackman_pw_launch.toml" cases/
+mkfifo cases/fifo.toml
+expect_rc 2 "not a regular file" -- timeout 20 "$bin" regress cases
+rm cases/fifo.toml; ln -s nowhere cases/dangling.toml
+expect_rc 2 "dangling.toml" -- "$bin" regress cases
+if [ -e /dev/full ]; then  # help and version are output too
+  rc=0; "$bin" --help >/dev/full 2>err.txt || rc=$?
+  [ "$rc" = 2 ] || fail "--help to /dev/full: exit $rc"
+  rc=0; "$bin" --version >/dev/full 2>err.txt || rc=$?
+  [ "$rc" = 2 ] || fail "--version to /dev/full: exit $rc"
+fi
+
 # A file-size limit: exit 2 naming the file, the old file kept, no temporary left behind.
 echo old > big.csv
 rc=0; (ulimit -f 1; exec "$bin" sweep s.toml --e 0.5:0.9:6 --mu 0.2:0.6:6 --csv big.csv) >/dev/null 2>err.txt || rc=$?

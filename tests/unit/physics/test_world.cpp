@@ -65,6 +65,41 @@ TEST_CASE("a world plane gives the same shot as the analytic flat ground", "[wor
   CHECK(mesh.end == EndReason::Rest);
 }
 
+TEST_CASE("a two-sided sheet (each triangle twice, opposite windings) is solid from both sides", "[world][input]") {
+  // Hostile-mesh finding (issue 20): with the back copy of a two-sided ground, a ball
+  // lifting off the tee moved into the back face it was touching and every drive ended
+  // at the tee with 0 carry.
+  const auto flipped = [](WorldMesh m) {
+    for (size_t i = 0; i < m.indices.size(); i += 3) std::swap(m.indices[i + 1], m.indices[i + 2]);
+    return m;
+  };
+  WorldDescription d = plane_world(600.0, 1);
+  d.meshes.push_back(flipped(d.meshes[0]));
+  const World two_sided(d);
+  const FlightCase in = golf(167.0, 10.9, 2686.0);
+  const FlightSummary flat = fly(in).summary;
+  const FlightSummary mesh = fly(in, &two_sided).summary;
+  CHECK(std::abs(mesh.carry_m - flat.carry_m) < 1e-6);
+  CHECK(std::abs(mesh.total_m - flat.total_m) < 1e-3);
+
+  // A sheet 10 m up: a ball thrown up from the ground below meets its underside, bounces
+  // down and never passes above it.
+  WorldDescription roof = plane_world(100.0, 1);
+  WorldMesh sheet = grid_plane(0, 100.0, 2, 10.0);
+  roof.meshes.push_back(flipped(sheet));
+  roof.meshes.push_back(sheet);
+  const World covered(roof);
+  FlightCase up;
+  up.aero = &vacuum();
+  up.launch = launch_from_metrics(20.0, deg_to_rad(80.0), 0.0, 0.0, 0.0, Vec3(0.0, up.ball.radius, 0.0));
+  const ShotTrajectory tr = fly(up, &covered);
+  double top = 0.0;
+  for (const auto& s : tr.samples) top = std::max(top, s.position.y());
+  CHECK(top <= 10.0 - up.ball.radius + 1e-9);
+  CHECK(top > 9.0);  // it did reach the sheet (free flight would rise to ~19.7 m)
+  CHECK(tr.summary.end == EndReason::Rest);
+}
+
 TEST_CASE("no tunnelling through a thin ground at 80 m/s", "[world][bullet-trap]") {
   WorldDescription d = plane_world(400.0, 1);  // two triangles, zero thickness
   const World world(d);

@@ -3,11 +3,14 @@
 // world whose ground is missing ends shots out of bounds instead of hanging.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "game/content/mesh_file.hpp"
 #include "game/content/world_asset.hpp"
+#include "game/core/sport.hpp"
 #include "physics/aero.hpp"
 #include "physics/error.hpp"
 #include "physics/flight.hpp"
@@ -202,4 +205,43 @@ TEST_CASE("hostile OBJ: a NaN corner of a quad is refused, not triangulated away
   const std::string obj = dir.write("nanquad.obj", "mtllib w.mtl\nusemtl fairway\nv -30 0 -70\nv -30 0 70\nv 450 nan 70\n"
                                                    "v 450 0 -70\nf 1 2 3 4\n");
   CHECK_THROWS_WITH(load(obj), Catch::Contains("nanquad.obj") && Catch::Contains("not a finite number"));
+}
+
+TEST_CASE("hostile OBJ: a polygon of more than kMaxFaceCorners corners is refused before triangulating",
+          "[assets][input][hostile]") {
+  // An attack finding: one 100 000-corner face kept assimp's triangulation busy past the
+  // importer's 120 s limit. The corner count is checked first; 256 corners still load.
+  const TempDir dir;
+  const auto polygon = [&](const std::string& name, unsigned corners) {
+    std::string text = "mtllib w.mtl\nusemtl fairway\n";
+    for (unsigned i = 0; i < corners; ++i) {
+      const double a = 2.0 * kPi * i / corners;
+      text += "v " + std::to_string(100.0 * std::cos(a)) + " 0 " + std::to_string(-100.0 * std::sin(a)) + "\n";
+    }
+    text += "f";
+    for (unsigned i = 1; i <= corners; ++i) text += " " + std::to_string(i);
+    return dir.write(name, text + "\n");
+  };
+  CHECK_THROWS_WITH(load(polygon("many.obj", kMaxFaceCorners + 1)),
+                    Catch::Contains("many.obj") && Catch::Contains("257 corners") && Catch::Contains("at most 256"));
+  const WorldAsset ok = load(polygon("ok.obj", kMaxFaceCorners));
+  CHECK(ok.world->collision_triangles() == static_cast<int>(kMaxFaceCorners) - 2);
+}
+
+TEST_CASE("hostile world TOML: coordinates beyond the world limit and an unknown sport are refused at their line",
+          "[assets][input][hostile]") {
+  const TempDir dir;
+  dir.write("g.obj", "mtllib w.mtl\nusemtl fairway\nv -30 0 -70\nv -30 0 70\nv 450 0 70\nf 1 2 3\n");
+  CHECK_THROWS_WITH(load(dir.write("pin.toml", "mesh = \"g.obj\"\npin = [\"1e300m\", \"0m\", \"0m\"]\n")),
+                    Catch::Contains("pin.toml:2") && Catch::Contains("out of range"));
+  CHECK_THROWS_WITH(load(dir.write("box.toml", "mesh = \"g.obj\"\nbounds_min = [\"-1e15m\", \"-10m\", \"-70m\"]\n")),
+                    Catch::Contains("box.toml:2") && Catch::Contains("bounds_min"));
+  CHECK_THROWS_WITH(load(dir.write("fence.toml", "mesh = \"g.obj\"\nfence_line = [[\"0m\", \"0m\"], [\"1e9m\", \"0m\"]]\n")),
+                    Catch::Contains("fence.toml:2") && Catch::Contains("fence_line"));
+  const SportCatalog& sports = test::assets().sports();
+  CHECK_THROWS_WITH(load_world_asset(fs::temp_directory_path(), dir.write("tennis.toml", "sport = \"tennis\"\nmesh = \"g.obj\"\n"),
+                                     test::assets().materials(), &sports),
+                    Catch::Contains("tennis.toml:1") && Catch::Contains("unknown sport 'tennis'"));
+  CHECK_NOTHROW(load_world_asset(fs::temp_directory_path(), dir.write("golf.toml", "sport = \"golf\"\nmesh = \"g.obj\"\n"),
+                                 test::assets().materials(), &sports));
 }

@@ -25,6 +25,7 @@ struct BallCompliance {
   /// deliveries then use the instantaneous impulse of physics/impact.hpp.
   double stiffness = 0.0;
   static constexpr Range kStiffness{0.0, 1e12};
+  static constexpr double kMinStiffness = 1e5;  ///< N/m^1.5, for a stiffness other than 0 (validate_ball)
   /// Poisson's ratio of the ball's rubber; the Mindlin ratio of tangential to normal contact
   /// stiffness is 2(1−ν)/(2−ν) (0.67 for ν = 0.5). Rubber cores ~0.48.
   double poisson = 0.48;

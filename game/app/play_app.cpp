@@ -77,21 +77,21 @@ UiState ui_state_from(const PlayOptions& o) {
 int run_play_headless(const Assets& assets, const PlayOptions& o, std::ostream& out) {
   UiState st = ui_state_from(o);
   const Shot shot = compute(assets, st);
-  out << launch_table(shot.result, *shot.scenario.resolved.sport, UnitSystem::Imperial);
-  if (o.screenshot.empty()) {
-    out << "image: none (add --screenshot FILE.png to render the shot)\n";
-    return 0;
+  // The image first: a refused output (a bad path, the scenario itself) leaves stdout empty.
+  std::string image = "image: none (add --screenshot FILE.png to render the shot)\n";
+  if (!o.screenshot.empty()) {
+    const std::string& png = o.screenshot;
+    try {
+      RenderRequest req = render_request_for(assets, shot.scenario.resolved, shot.result);
+      req.width = o.width;
+      req.height = o.height;
+      render_shot_png(shot.result.trajectory, req, png);
+      image = "image: " + png + " (" + std::to_string(req.width) + "x" + std::to_string(req.height) + ", off-screen EGL)\n";
+    } catch (const RenderUnavailable& e) {
+      image = std::string("image: skipped, no off-screen OpenGL here (") + e.what() + ")\n";
+    }
   }
-  const std::string& png = o.screenshot;
-  try {
-    RenderRequest req = render_request_for(assets, shot.scenario.resolved, shot.result);
-    req.width = o.width;
-    req.height = o.height;
-    render_shot_png(shot.result.trajectory, req, png);
-    out << "image: " << png << " (" << req.width << "x" << req.height << ", off-screen EGL)\n";
-  } catch (const RenderUnavailable& e) {
-    out << "image: skipped, no off-screen OpenGL here (" << e.what() << ")\n";
-  }
+  out << launch_table(shot.result, *shot.scenario.resolved.sport, UnitSystem::Imperial) << image;
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include "game/app/connect_app.hpp"
 #include "game/app/display.hpp"
 #include "game/cli/command.hpp"
+#include "game/render/image.hpp"
 #include "game/content/quantity_text.hpp"
 #include "game/net/connect_server.hpp"
 #include "game/util/atomic_file.hpp"
@@ -54,7 +55,7 @@ RunFn setup_connect(CLI::App& sub) {
       std::cerr << "sweetspot connect: " << why << "; running headless.\n";
       o->headless = true;
     }
-    if (!o->screenshot.empty()) check_output_path(o->screenshot, "--screenshot");
+    if (!o->screenshot.empty()) check_png_output(o->screenshot, "--screenshot");
     if (o->headless) {
       ConnectServer server(assets, o->server, std::cout, std::cerr);
       return server.run();

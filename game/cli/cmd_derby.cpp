@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "game/cli/command.hpp"
+#include "game/render/image.hpp"
 #include "game/report/report.hpp"
 #include "game/modes/baseball/session.hpp"
 #include "game/render/spray_chart.hpp"
@@ -42,7 +43,7 @@ RunFn setup_derby(CLI::App& sub) {
       throw InputError("--swings: only practice has a set number of pitches (--mode " + o->session.mode + ")");
     check_range("--outs", o->session.outs, SessionOptions::kOuts, "");
     check_range("--swings", o->session.swings, SessionOptions::kSwings, "");
-    if (!o->plot.empty()) check_output_path(o->plot, "--plot");
+    if (!o->plot.empty()) check_png_output(o->plot, "--plot");
     BotBatter bot(assets, batter_skill(o->bot), o->seed);
     const std::vector<SwingRecord> swings = run_session(assets, o->session, bot, o->seed);
     const nlohmann::json j = session_json(swings, o->session, o->seed);

@@ -5,6 +5,7 @@
 
 #include "game/app/play_app.hpp"
 #include "game/cli/command.hpp"
+#include "game/render/image.hpp"
 #include "game/app/display.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
@@ -20,19 +21,27 @@ RunFn setup_play(CLI::App& sub) {
   sub.add_option("--screenshot", o->screenshot, "save the last frame to FILE.png (headless: the shot's image)");
   sub.add_option("--width", o->width, "window width in px")->check(CLI::Range(640, 7680))->capture_default_str();
   sub.add_option("--height", o->height, "window height in px")->check(CLI::Range(480, 4320))->capture_default_str();
-  sub.add_option("--mode", o->mode, "lab (the shot and its tuning), golf (a round on --course) or baseball (the batting cage); Tab switches")
-      ->capture_default_str();
-  sub.add_option("--course", o->course, "golf: a course of assets/courses or a .toml")->capture_default_str();
-  sub.add_option("--skill", o->skill, "golf: tour, scratch, amateur or beginner (swing speed; the bot opponent)")
-      ->capture_default_str();
-  sub.add_option("--holes", o->holes, "golf: play only the first N holes")->check(CLI::Range(1, 18));
-  sub.add_flag("--exit-when-done", o->exit_when_done, "golf, baseball: close once the round or the pitches are done (automation)");
-  sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(CLI::Range(1, 1000));
-  return [o](const Assets& assets) -> int {
-    if (!o->screenshot.empty()) check_output_path(o->screenshot, "--screenshot");  // before the frames run
+  std::vector<const CLI::Option*> window_only;
+  window_only.push_back(sub.add_option("--mode", o->mode, "lab (the shot and its tuning), golf (a round on --course) or baseball (the batting cage); Tab switches")
+      ->capture_default_str());
+  window_only.push_back(sub.add_option("--course", o->course, "golf: a course of assets/courses or a .toml")->capture_default_str());
+  window_only.push_back(sub.add_option("--skill", o->skill, "golf: tour, scratch, amateur or beginner (swing speed; the bot opponent)")
+      ->capture_default_str());
+  window_only.push_back(sub.add_option("--holes", o->holes, "golf: play only the first N holes")->check(CLI::Range(1, 18)));
+  window_only.push_back(sub.add_flag("--exit-when-done", o->exit_when_done, "golf, baseball: close once the round or the pitches are done (automation)"));
+  window_only.push_back(sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(CLI::Range(1, 1000)));
+  return [o, window_only](const Assets& assets) -> int {
+    if (!o->screenshot.empty()) check_png_output(o->screenshot, "--screenshot");  // before the frames run
     std::string why;
+    // Headless plays the lab's one shot: the game modes' options would be ignored, so
+    // they are refused (--frames and --screenshot have a headless meaning).
+    const auto refuse_window_options = [&](const std::string& reason) {
+      for (const CLI::Option* opt : window_only)
+        if (opt->count() > 0) throw InputError(opt->get_name() + " needs the game window, and " + reason);
+    };
     if (!display_available(&why)) {
-      std::cout << "sweetspot play: " << why << "; running " << o->scenario << " headless.\n";
+      refuse_window_options(why);
+      std::cerr << "sweetspot play: " << why << "; running " << o->scenario << " headless.\n";
       return run_play_headless(assets, *o, std::cout);
     }
     try {
@@ -41,7 +50,8 @@ RunFn setup_play(CLI::App& sub) {
       throw;
     } catch (const std::runtime_error& e) {
       // A display was named but no GL window opened (e.g. a stale DISPLAY): fall back.
-      std::cout << "sweetspot play: " << e.what() << "; running " << o->scenario << " headless.\n";
+      refuse_window_options(e.what());
+      std::cerr << "sweetspot play: " << e.what() << "; running " << o->scenario << " headless.\n";
       return run_play_headless(assets, *o, std::cout);
     }
   };

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "game/cli/command.hpp"
+#include "game/render/image.hpp"
 #include "game/cli/launch_flags.hpp"
 #include "game/content/quantity_text.hpp"
 #include "game/content/scenario.hpp"
@@ -44,13 +45,17 @@ RunFn setup_render(CLI::App& sub) {
   sub.add_option("--camera", o->camera, "behind, side, top or follow")->capture_default_str();
   sub.add_option("--at", o->at, "time since launch with its unit, e.g. 2.5s or 2500ms (default: the shot's end)");
   add_launch_flags(sub, o->launch, false);
+  // The launch flags that describe a launch's setting; a SCENARIO brings its own.
+  std::vector<const CLI::Option*> launch_only;
+  for (const char* name : {"--sport", "--spin-axis", "--direction", "--aero", "--world"})
+    launch_only.push_back(sub.get_option(name));
   sub.add_option("--impactor", o->impactor, "driver_head, iron_head, putter_head, bat or none (default: the shot's)")
       ->check(CLI::IsMember({"driver_head", "iron_head", "putter_head", "bat", "none"}));
   sub.add_option("--msaa", o->samples, "multisample count: 0 = auto (4 on a GPU, 1 on llvmpipe), 1, 2, 4, 8")
       ->capture_default_str()->check(CLI::IsMember({0, 1, 2, 4, 8}));
   sub.add_option("--shadows", o->shadows, "sun shadows: auto (on with a GPU, off on llvmpipe for speed), on or off")
       ->capture_default_str()->check(CLI::IsMember({"auto", "on", "off"}));
-  return [o](const Assets& assets) -> int {
+  return [o, launch_only](const Assets& assets) -> int {
     RenderRequest r;
     r.camera = parse_camera_kind(o->camera);
     std::optional<double> at;
@@ -61,10 +66,15 @@ RunFn setup_render(CLI::App& sub) {
         throw InputError(std::string("--at ") + o->at + ": " + e.what());
       }
     }
+    check_png_output(o->output, "-o");
     Scenario scenario;
     if (!o->scenario.empty()) {
       if (has_launch_numbers(o->launch))
         throw InputError("render: give a SCENARIO or the launch flags (--ball-speed, --launch-angle, --spin), not both");
+      for (const CLI::Option* opt : launch_only)
+        if (opt->count() > 0)
+          throw InputError(opt->get_name() + ": a launch flag; the scenario " + o->scenario +
+                           " sets its own (change it with --set, e.g. --set world.name=...)");
       refuse_output_over_input(o->output, resolve_scenario(assets, o->scenario), "-o");
       scenario = load_scenario(assets, o->scenario, o->launch.sets);
     } else {

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "game/cli/command.hpp"
+#include "game/render/image.hpp"
 #include "game/report/report.hpp"
 #include "game/content/course_file.hpp"
 #include "game/content/swings_file.hpp"
@@ -139,9 +140,11 @@ RunFn setup_round(CLI::App& sub) {
   return [o, balls](const Assets& assets) -> int {
     if (o->mode != "stroke" && o->mode != "ctp" && o->mode != "long-drive")
       throw InputError("--mode " + o->mode + ": unknown mode (allowed: stroke, ctp, long-drive)");
+    if (!o->swings.empty() && o->mode != "stroke")
+      throw InputError("--swings: scripted strokes play a stroke round; --mode " + o->mode + " is the bot's");
     if (balls->count() > 0 && o->mode == "stroke")
       throw InputError("--balls: a stroke round plays one ball to each cup; --balls is for --mode ctp or long-drive");
-    if (!o->plot.empty()) check_output_path(o->plot, "--plot");
+    if (!o->plot.empty()) check_png_output(o->plot, "--plot");
     if (o->balls < 1 || o->balls > 100) throw InputError("--balls " + std::to_string(o->balls) + " is out of range (allowed [1, 100])");
     if (!o->bot.empty()) golfer_skill(o->bot);  // refuse an unknown skill before any work
     if (!o->plot.empty() && !o->swings.empty()) refuse_output_over_input(o->plot, o->swings, "--plot");

@@ -91,7 +91,7 @@ RunFn setup_shot(CLI::App& sub) {
       if (number > kMaxShotNumber)
         throw InputError(o->session + ": the session is full (ShotNumber would pass 1000000000)");
       const nlohmann::json message = gspro_json(r, number);
-      if (!o->session.empty()) write_file_atomic(o->session, session.text + json_text(message, -1) + "\n");
+      if (!o->session.empty()) write_file_atomic(o->session, session.text + json_text(message, -1) + "\n", OverInput::Allow);
       std::cout << json_text(message) << "\n";
     } else if (o->csv) {
       std::cout << csv_header(sport, units) << csv_row(r, sport, units);

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "game/cli/command.hpp"
+#include "game/render/image.hpp"
 #include "game/content/scenario.hpp"
 #include "game/content/scenario_schema.hpp"
 #include "game/render/sweep_plot.hpp"
@@ -58,7 +59,7 @@ RunFn setup_sweep(CLI::App& sub) {
                        " grid points exceed the limit of " + std::to_string(kMaxSweepPoints));
     }
     if (!o->csv.empty()) check_output_path(o->csv, "--csv");
-    if (!o->plot.empty()) check_output_path(o->plot, "--plot");
+    if (!o->plot.empty()) check_png_output(o->plot, "--plot");
     if (!o->csv.empty()) refuse_output_over_input(o->csv, resolve_scenario(assets, o->scenario), "--csv");
     if (!o->plot.empty()) refuse_output_over_input(o->plot, resolve_scenario(assets, o->scenario), "--plot");
     if (!o->csv.empty() && !o->plot.empty() && same_output_file(o->csv, o->plot))

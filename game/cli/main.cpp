@@ -26,16 +26,29 @@ std::string shorten_long_runs(const std::string& message) {
   constexpr std::size_t kLong = 240, kHead = 160, kTail = 40;
   std::string out;
   std::size_t i = 0;
-  while (i < message.size()) {
-    const std::size_t end = std::min(message.find_first_of(" \n", i), message.size());
-    if (end - i > kLong) {
-      out.append(message, i, kHead);
-      out += "...(" + std::to_string(end - i - kHead - kTail) + " more characters)...";
-      out.append(message, end - kTail, kTail);
+  // A control character the user typed (a newline inside a value) is shown escaped, so the
+  // message stays one line.
+  std::string text;
+  for (const char c : message) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      text += c == '\n' ? std::string("\\n") : c == '\t' ? std::string("\\t") : std::string(buf);
     } else {
-      out.append(message, i, end - i);
+      text += c;
     }
-    if (end < message.size()) out += message[end];
+  }
+  const std::string& message_text = text;
+  while (i < message_text.size()) {
+    const std::size_t end = std::min(message_text.find(' ', i), message_text.size());
+    if (end - i > kLong) {
+      out.append(message_text, i, kHead);
+      out += "...(" + std::to_string(end - i - kHead - kTail) + " more characters)...";
+      out.append(message_text, end - kTail, kTail);
+    } else {
+      out.append(message_text, i, end - i);
+    }
+    if (end < message_text.size()) out += message_text[end];
     i = end + 1;
   }
   return out;
@@ -53,7 +66,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "sweetspot 0.1");
   // Usage errors read like every other error: prefixed, one per line, pointing at --help.
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
-    return std::string("sweetspot: error: ") + e.what() + "\nRun with --help for the options and their ranges.\n";
+    return std::string("sweetspot: error: ") + e.what() + " (run with --help for the options and their ranges)\n";
   });
 
   auto& registry = command_registry();
@@ -77,8 +90,8 @@ int main(int argc, char** argv) {
   if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
     std::string names;
     for (const auto& c : registry) names += std::string(names.empty() ? "" : ", ") + c.name;
-    std::cerr << "sweetspot: error: unknown command '" << argv[1] << "' (commands: " << names
-              << ")\nRun with --help for the options and their ranges.\n";
+    std::cerr << "sweetspot: error: " << shorten_long_runs("unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")")
+              << "\n";
     return 2;
   }
   try {

@@ -50,13 +50,17 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
     f.only_keys(*t, "hole", {"number", "par", "world", "tee", "pin"});
     CourseHole h;
     static constexpr Range kNumber{1.0, 18.0};
-    h.number = static_cast<int>(f.quantity(f.required(*t, "number", "the hole's number, 1-18"), "number",
-                                           Dimension::Dimensionless, &kNumber));
+    h.number = f.whole_number(f.required(*t, "number", "the hole's number, 1-18"), "number", kNumber);
     if (h.number != last + 1) f.fail(*t->get("number"), "number", "holes must be numbered 1, 2, 3, ... in order");
     last = h.number;
-    h.par = static_cast<int>(f.quantity(f.required(*t, "par", "3 to 6"), "par", Dimension::Dimensionless, &CourseHole::kPar));
+    h.par = f.whole_number(f.required(*t, "par", "3 to 6"), "par", CourseHole::kPar);
     const toml::node& wn = f.required(*t, "world", "a world of assets/worlds");
     h.world_name = f.text(wn, "world");
+    // A world given as a relative path is found beside the course file, wherever it is run.
+    if ((h.world_name.find('/') != std::string::npos || h.world_name.ends_with(".toml") ||
+         h.world_name.ends_with(".obj")) &&
+        std::filesystem::path(h.world_name).is_relative())
+      h.world_name = (path.parent_path() / h.world_name).string();
     try {
       h.world = assets.world(h.world_name);
     } catch (const InputError& e) {

@@ -1,5 +1,6 @@
 #include "game/content/mesh_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -16,6 +17,7 @@
 #include <assimp/scene.h>
 
 #include "game/content/toml_file.hpp"
+#include "game/util/atomic_file.hpp"
 #include "game/util/isolated_call.hpp"
 #include "physics/error.hpp"
 
@@ -55,10 +57,13 @@ class BufferStream final : public Assimp::IOStream {
   size_t pos_ = 0;
 };
 
-/// Opens only regular files under the size limit, for reading; remembers why it refused.
+/// Opens only regular files under the size limit in the mesh's own folder tree (a
+/// material library named "../../etc/passwd" is refused), for reading; remembers why it
+/// refused and what it opened.
 class BoundedFileSystem final : public Assimp::IOSystem {
  public:
-  explicit BoundedFileSystem(std::uintmax_t max_bytes) : max_bytes_(max_bytes) {}
+  BoundedFileSystem(std::uintmax_t max_bytes, const std::filesystem::path& mesh)
+      : max_bytes_(max_bytes), mesh_(mesh), folder_(folder_of(mesh)) {}
   bool Exists(const char* file) const override {
     std::error_code ec;
     return std::filesystem::is_regular_file(file, ec);
@@ -70,7 +75,20 @@ class BoundedFileSystem final : public Assimp::IOSystem {
       return nullptr;
     }
     try {
-      return new BufferStream(read_data_file(file, "mesh or material library", max_bytes_));
+      const std::filesystem::path p(file);
+      std::error_code ec;
+      const bool is_mesh = std::filesystem::equivalent(p, mesh_, ec) && !ec;
+      if (!is_mesh) {
+        const std::filesystem::path real = std::filesystem::weakly_canonical(p, ec);
+        const auto [end, unused] = std::mismatch(folder_.begin(), folder_.end(), real.begin(), real.end());
+        (void)unused;
+        if (ec || end != folder_.end())
+          throw InputError(std::string(file) + ": a material library outside the mesh's folder " + folder_.string() +
+                           " (libraries must lie beside the mesh or below it)");
+      }
+      BufferStream* stream = new BufferStream(read_data_file(file, "mesh or material library", max_bytes_));
+      files_.push_back(file);
+      return stream;
     } catch (const InputError& e) {
       if (refusal_.empty()) refusal_ = e.what();
       return nullptr;
@@ -78,10 +96,18 @@ class BoundedFileSystem final : public Assimp::IOSystem {
   }
   void Close(Assimp::IOStream* stream) override { delete stream; }
   const std::string& refusal() const { return refusal_; }
+  const std::vector<std::string>& files() const { return files_; }
 
  private:
+  static std::filesystem::path folder_of(const std::filesystem::path& mesh) {
+    std::error_code ec;
+    const std::filesystem::path real = std::filesystem::weakly_canonical(mesh, ec);
+    return (ec ? std::filesystem::absolute(mesh, ec) : real).parent_path();
+  }
   std::uintmax_t max_bytes_;
+  std::filesystem::path mesh_, folder_;
   std::string refusal_;
+  std::vector<std::string> files_;
 };
 
 
@@ -110,6 +136,8 @@ std::string encode(const MeshFile& m) {
     put_array(&out, p.normals);
     put_array(&out, p.triangles);
   }
+  put_u32(&out, static_cast<std::uint32_t>(m.files_read.size()));
+  for (const std::string& f : m.files_read) put_string(&out, f);
   return out;
 }
 
@@ -132,6 +160,8 @@ class Decoder {
       array(&p.triangles);
       m.parts.push_back(std::move(p));
     }
+    const std::uint32_t files = u32();
+    for (std::uint32_t k = 0; k < files; ++k) m.files_read.push_back(string());
     if (pos_ != bytes_.size()) fail();
     return m;
   }
@@ -211,7 +241,7 @@ void add_node(const aiScene* scene, const aiNode* node, const aiMatrix4x4& paren
 std::string import_in_child(const std::filesystem::path& path, const char* what, std::uintmax_t max_bytes,
                             unsigned flags) {
   Assimp::Importer importer;
-  auto* io = new BoundedFileSystem(max_bytes);  // owned by the importer
+  auto* io = new BoundedFileSystem(max_bytes, path);  // owned by the importer
   importer.SetIOHandler(io);
   if (flags == 0) flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
   // Read first without post-processing and check every vertex as the file gives it:
@@ -251,6 +281,7 @@ std::string import_in_child(const std::filesystem::path& path, const char* what,
   MeshFile out;
   out.incomplete = (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0;
   add_node(scene, scene->mRootNode, aiMatrix4x4(), &out);
+  out.files_read = io->files();
   return encode(out);
 }
 
@@ -268,11 +299,14 @@ MeshFile import_mesh_file(const std::filesystem::path& path, const char* what, s
     throw InputError(path.string() + ": the " + what + " importer (assimp) " + e.what() +
                      " reading this file; it is malformed or hostile, so it was not loaded");
   }
+  MeshFile mesh;
   try {
-    return Decoder(answer).mesh_file();
+    mesh = Decoder(answer).mesh_file();
   } catch (const std::runtime_error& e) {
     throw InputError(path.string() + ": " + e.what());
   }
+  for (const std::string& f : mesh.files_read) note_input_file(f);  // no output may replace them
+  return mesh;
 }
 
 }  // namespace sweetspot

@@ -38,6 +38,9 @@ struct MeshPart {
 struct MeshFile {
   std::vector<MeshPart> parts;
   bool incomplete = false;  ///< assimp flagged the scene incomplete
+  /// Every file the importer opened (the mesh and its material libraries), for the
+  /// parent's note_input_file: the import runs in a child process.
+  std::vector<std::string> files_read;
 };
 
 /// A polygon's corners, at most: triangulating an n-gon costs assimp O(n^2) to O(n^3) (a

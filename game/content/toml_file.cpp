@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "game/content/quantity_text.hpp"
+#include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -27,6 +28,7 @@ std::uintmax_t check_data_file(const fs::path& path, std::string_view what, std:
     throw InputError(name + ": " + std::string(what) + " is " + std::to_string(bytes) + " bytes, over the limit of " +
                      std::to_string(max_bytes) + " bytes");
   }
+  note_input_file(path);  // no output of this process may replace it
   return bytes;
 }
 
@@ -157,6 +159,14 @@ double TomlFile::quantity(const toml::node& n, std::string_view key, Dimension d
     }
   }
   return v;
+}
+
+int TomlFile::whole_number(const toml::node& n, std::string_view key, const Range& range) const {
+  const auto v = n.value_exact<std::int64_t>();
+  if (!v) fail(n, key, std::string("expected a whole number such as 3, got ") + toml_type_name(n.type()));
+  const double x = static_cast<double>(*v);
+  if (const std::string why = range_refusal(key, x, range, ""); !why.empty()) throw InputError(where(n) + ": " + why);
+  return static_cast<int>(*v);
 }
 
 double TomlFile::quantity_or(const toml::table& t, std::string_view key, Dimension dim, double fallback,

@@ -59,6 +59,8 @@ class TomlFile {
   double quantity(const toml::node& n, std::string_view key, Dimension dim, const Range* range = nullptr) const;
   double quantity_or(const toml::table& t, std::string_view key, Dimension dim, double fallback,
                      const Range* range = nullptr) const;
+  /// A whole number written as a TOML integer (not 1.5, not "1"), within `range`.
+  int whole_number(const toml::node& n, std::string_view key, const Range& range) const;
   /// An array of exactly `count` quantities (count 0: any length ≥ 1).
   std::vector<double> quantities(const toml::node& n, std::string_view key, Dimension dim, std::size_t count,
                                  const Range* range = nullptr) const;

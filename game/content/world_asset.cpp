@@ -189,6 +189,20 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
         a.fence_line.emplace_back(xz[0], d.origin.y(), xz[1]);
       }
     }
+    // The tee (or home plate) and the cup lie in the world the shot is played in; a fence
+    // needs its line, and each of its segments a length.
+    const auto inside = [&](const Vec3& q) {
+      return (q.array() >= d.bounds_min.array()).all() && (q.array() <= d.bounds_max.array()).all();
+    };
+    if (t.get("origin") != nullptr && !inside(d.origin))
+      f.fail(*t.get("origin"), "origin", "lies outside the world's bounds_min .. bounds_max");
+    if (t.get("pin") != nullptr && !inside(*a.pin)) f.fail(*t.get("pin"), "pin", "lies outside the world's bounds_min .. bounds_max");
+    if (t.get("fence_height") != nullptr && a.fence_line.empty())
+      f.fail(*t.get("fence_height"), "fence_height", "a fence needs its fence_line = [[x, z], ...] too");
+    for (size_t i = 1; i < a.fence_line.size(); ++i)
+      if ((a.fence_line[i] - a.fence_line[i - 1]).norm() < 0.01)
+        f.fail(*t.get("fence_line"), "fence_line", "points " + std::to_string(i - 1) + " and " + std::to_string(i) +
+                                                       " coincide (each segment needs a length)");
     load_mesh(path.parent_path() / mesh, &d);
   }
   a.name = d.name;

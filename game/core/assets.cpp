@@ -38,7 +38,11 @@ Assets::Assets(fs::path root) : impl_(std::make_unique<Impl>()) { impl_->root = 
 Assets::~Assets() = default;
 
 fs::path Assets::default_root() {
-  if (const char* env = std::getenv("SWEETSPOT_ASSETS"); env != nullptr && *env != '\0') return env;
+  if (const char* env = std::getenv("SWEETSPOT_ASSETS"); env != nullptr) {
+    // Set but empty is a mistake (an unset variable in a script), not "the default".
+    if (*env == '\0') throw InputError("SWEETSPOT_ASSETS is set but empty: unset it, or name the assets directory");
+    return env;
+  }
 #ifdef SWEETSPOT_SOURCE_DIR
   const fs::path src = fs::path(SWEETSPOT_SOURCE_DIR) / "assets";
   if (std::error_code e; fs::is_directory(src, e)) return src;

@@ -104,6 +104,11 @@ ResolvedShot resolve(const ShotSpec& spec, const Assets& assets) {
   });
   r.world_name = spec.world.empty() ? r.sport->default_world : spec.world;
   r.world = checked("world.name", [&] { return assets.world(r.world_name); });
+  // A world is built for one sport (a ballpark's fence, a hole's cup): another sport's shot
+  // on it would be scored by the wrong rules.
+  if (r.world != nullptr && !r.world->sport.empty() && r.world->sport != r.sport->name)
+    throw InputError("world.name: '" + r.world_name + "' is a " + r.world->sport + " world; a " + r.sport->name +
+                     " shot needs a " + r.sport->name + " world (e.g. " + r.sport->default_world + ") or none");
 
   // Where the ball is: resting on the ground at the placement (teed up by the club's tee
   // height), or held at the sport's contact height above the world's origin.
@@ -117,12 +122,15 @@ ResolvedShot resolve(const ShotSpec& spec, const Assets& assets) {
     r.ball_centre = origin + Vec3(0.0, *r.sport->contact_height, 0.0);
     return r;
   }
-  r.ground = Vec3(p.x, 0.0, p.z);
+  // BallPlacement is measured from the world's origin (the tee of a hole).
+  const Vec3 origin = r.world ? r.world->description().origin : Vec3::Zero();
+  r.ground = Vec3(origin.x() + p.x, 0.0, origin.z() + p.z);
   r.start_surface = "fairway";
   if (r.world != nullptr) {
     const WorldDescription& d = r.world->description();
     SurfaceContact hit;
-    if (!ground_under(*r.world->world, p.x, p.z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit)) {
+    if (!ground_under(*r.world->world, r.ground.x(), r.ground.z(), d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(),
+                      &hit)) {
       throw InputError("world.ball_position: no ground under [" + std::to_string(p.x) + " m, " + std::to_string(p.z) +
                        " m] in world " + r.world_name);
     }

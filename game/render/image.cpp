@@ -1,5 +1,9 @@
 #include "game/render/image.hpp"
 
+#include <sys/stat.h>
+
+#include <cctype>
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -22,7 +26,25 @@ void flip_rows(std::vector<std::uint8_t>& pixels, int width, int height, int cha
   }
 }
 
+namespace {
+
+bool names_png(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".png") return true;
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && S_ISCHR(st.st_mode);  // /dev/null, /dev/stdout
+}
+
+}  // namespace
+
+void check_png_output(const std::filesystem::path& path, const char* flag) {
+  check_output_path(path, flag);
+  if (!names_png(path)) throw InputError(std::string(flag) + " " + path.string() + ": the image is a PNG; name it FILE.png");
+}
+
 void write_png_atomic(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
+  if (!names_png(path)) throw InputError("cannot write " + path.string() + ": the image is a PNG; name it FILE.png");
   if (width <= 0 || height <= 0 || rgba.size() != static_cast<std::size_t>(width) * height * 4) {
     throw InputError("PNG " + path.string() + ": pixel buffer does not match " + std::to_string(width) + "x" +
                      std::to_string(height) + " RGBA");

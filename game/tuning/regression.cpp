@@ -178,6 +178,9 @@ std::vector<std::filesystem::path> regression_paths(const std::vector<std::strin
       if (files.empty()) throw InputError("regression directory '" + p.string() + "' holds no .toml cases");
       out.insert(out.end(), files.begin(), files.end());
     } else if (std::filesystem::exists(p, ec)) {
+      for (const auto& q : out)
+        if (std::filesystem::equivalent(p, q, ec) && !ec)
+          throw InputError("regression case '" + p.string() + "' is given twice (as '" + q.string() + "')");
       out.push_back(p);
     } else {
       throw InputError("cannot read regression case '" + p.string() + "': no such file or directory");

@@ -269,7 +269,7 @@ bool tuning_section(PanelContext& c) {
   // Saving never replaces a file silently: an existing one needs a second, explicit yes.
   const auto save = [&c](const std::string& path) {
     try {
-      write_file_atomic(path, scenario_toml(c.scenario));
+      write_file_atomic(path, scenario_toml(c.scenario), OverInput::Allow);  // saving over the loaded scenario is the point
       c.status = "saved " + path;
     } catch (const std::exception& e) {
       c.status = e.what();

@@ -14,6 +14,8 @@
 #include <cstring>
 #include <functional>
 #include <mutex>
+#include <set>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -66,6 +68,14 @@ struct TempRegistration {
   ~TempRegistration() { g_temp_live.store(false); }
 };
 
+// Files read as input, by (device, inode): note_input_file / write_file_atomic.
+// The change time is part of the key: a file read, deleted and replaced by a new one (an
+// inode number reused) is not the input any more.
+std::mutex g_inputs_mutex;
+using InputKey = std::tuple<dev_t, ino_t, time_t, long>;
+std::set<InputKey> g_inputs;
+InputKey input_key(const struct stat& st) { return {st.st_dev, st.st_ino, st.st_ctim.tv_sec, st.st_ctim.tv_nsec}; }
+
 // The file a path finally names after its symlinks (relative links resolve against the
 // link's folder). A dangling link names the file it would create.
 fs::path follow_links(const fs::path& path) {
@@ -101,12 +111,26 @@ void write_all(int fd, std::string_view contents, const std::function<void(const
 
 }  // namespace
 
-void write_file_atomic(const fs::path& path, std::string_view contents) {
+void note_input_file(const fs::path& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return;
+  const std::lock_guard<std::mutex> lock(g_inputs_mutex);
+  g_inputs.insert(input_key(st));
+}
+
+void write_file_atomic(const fs::path& path, std::string_view contents, OverInput over_input) {
   if (path.empty()) throw InputError("cannot write a file with an empty name");
   const fs::path target = follow_links(path);
   struct stat st {};
   const bool exists = ::stat(target.c_str(), &st) == 0;
   mode_t mode = 0644;
+  if (exists && over_input == OverInput::Refuse && !S_ISCHR(st.st_mode)) {
+    const std::lock_guard<std::mutex> lock(g_inputs_mutex);
+    if (g_inputs.count(input_key(st)) != 0)
+      fail(path, "it is an input file of this command (a scenario, world, mesh, material library or course it read); "
+                 "refusing to overwrite it",
+           0);
+  }
   if (exists) {
     if (S_ISDIR(st.st_mode)) fail(path, "it is a directory", 0);
     if (S_ISCHR(st.st_mode)) {

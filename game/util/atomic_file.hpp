@@ -23,7 +23,18 @@ namespace sweetspot {
 ///    SIGINT or SIGTERM arrives mid-write (the signal then ends the process as usual).
 /// Throws InputError naming `path` and the reason (missing directory, no permission, disk
 /// full, file-size limit).
-void write_file_atomic(const std::filesystem::path& path, std::string_view contents);
+/// Whether an output may replace a file this process read as input (note_input_file).
+enum class OverInput : unsigned char {
+  Refuse,  ///< every output: `render x.toml -o world.obj` must not destroy the world
+  Allow,   ///< a command whose output is its input by design (regress --update, a session)
+};
+void write_file_atomic(const std::filesystem::path& path, std::string_view contents,
+                       OverInput over_input = OverInput::Refuse);
+
+/// Notes a file the process reads (scenario, world, mesh, material library, course, case),
+/// by device and inode, so that write_file_atomic can refuse to replace it, however the
+/// output path names it (a symlink, a hard link, "./x"). Thread-safe.
+void note_input_file(const std::filesystem::path& path);
 
 /// Checks before a long run that `path` can be written later: its folder exists and it is
 /// not a directory, FIFO, socket or block device. InputError naming `flag` otherwise.

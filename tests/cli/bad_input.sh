@@ -99,5 +99,23 @@ expect_bad "world pin far away" "far_world.toml:3|pin|out of range" -- shot golf
 long=$(head -c 100000 /dev/zero | tr '\0' 9)
 expect_bad "a 100 kB value" "more characters" -- shot golf/driver --set "swing.speed=${long}mph"
 [ "$(wc -c < "$tmp/err")" -lt 2000 ] || fail "a 100 kB value is echoed whole: $(wc -c < "$tmp/err") bytes"
+expect_bad "a newline in a value" 'swing.speed=113mph\n' -- shot golf/driver --set $'swing.speed=113mph\n'
+[ "$(wc -l < "$tmp/err")" = 1 ] || fail "a newline in a value split the message: $(cat "$tmp/err")"
+expect_bad "usage error on one line" "--world|run with --help" -- flight --ball-speed 160mph --launch-angle 10deg --spin 2500rpm --world ""
+[ "$(wc -l < "$tmp/err")" = 1 ] || fail "a usage error takes $(wc -l < "$tmp/err") lines"
+expect_bad "play's game options headless" "--mode needs the game window" -- play --mode golf
+expect_bad "render: a launch flag with a scenario" "--spin-axis|sets its own" -- render golf/driver -o "$tmp/a.png" --spin-axis 30deg
+expect_bad "a golf shot on the ballpark" "'ballpark' is a baseball world" -- flight --ball-speed 100mph --launch-angle 20deg --spin 2000rpm --world ballpark
+expect_bad "a case given twice" "given twice" -- regress "$SWEETSPOT_ROOT/tests/regression/golf_pw.toml" "$SWEETSPOT_ROOT/tests/regression/golf_pw.toml"
+export SWEETSPOT_ASSETS=""
+expect_bad "empty SWEETSPOT_ASSETS" "SWEETSPOT_ASSETS is set but empty" -- list
+unset SWEETSPOT_ASSETS
+sed 's/^number = 1$/number = 1.5/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$tmp/course.toml"
+expect_bad "a fractional hole number" "course.toml:|number|whole number" -- round "$tmp/course.toml"
+printf 'sport = "baseball"\nmesh = "x.obj"\nfence_height = "3m"\n' > "$tmp/fence.toml"
+expect_bad "a fence without its line" "fence.toml:3|fence_line" -- shot baseball/home-run --set world.name="$tmp/fence.toml"
+printf 'sport = "golf"\nmesh = "x.obj"\nbounds_max = ["450m", "400m", "70m"]\npin = ["9000m", "0m", "0m"]\n' > "$tmp/pin.toml"
+expect_bad "a pin outside the world" "pin.toml:4|outside the world" -- shot golf/driver --set world.name="$tmp/pin.toml"
+expect_bad "a plot that is not a PNG" "name it FILE.png" -- derby --plot "$tmp/spray.jpg"
 [ -z "$(ls -A "$tmp" | grep -v -E '\.toml$|^(out|err)$')" ] || fail "stray files: $(ls -A "$tmp")"
 echo "bad_input: ok"

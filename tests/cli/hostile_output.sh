@@ -47,11 +47,15 @@ expect_rc 2 "not a regular file" -- timeout 20 "$bin" sweep s.toml "${grid[@]}" 
 cp s.toml s.before; ln -s s.toml s_link.toml
 expect_rc 2 "is the input file" -- "$bin" sweep s.toml "${grid[@]}" --csv s.toml
 expect_rc 2 "is the input file" -- "$bin" sweep s_link.toml "${grid[@]}" --csv ./s.toml
-expect_rc 2 "is the input file" -- "$bin" render s.toml -o s.toml --width 64 --height 64
+expect_rc 2 "name it FILE.png" -- "$bin" render s.toml -o s.toml --width 64 --height 64
+ln -s s.toml s_as.png
+expect_rc 2 "is the input file" -- "$bin" render s.toml -o s_as.png --width 64 --height 64
 cmp -s s.toml s.before || fail "the scenario was overwritten"
 
 # Two outputs that are one file (a link to the other, dangling or not) are refused.
-expect_rc 2 "overwrite each other" -- "$bin" sweep s.toml "${grid[@]}" --csv real.csv --plot link.csv
+ln -s real.csv alias.png
+expect_rc 2 "overwrite each other" -- "$bin" sweep s.toml "${grid[@]}" --csv real.csv --plot alias.png
+expect_rc 2 "name it FILE.png" -- "$bin" sweep s.toml "${grid[@]}" --plot grid.csv
 ln -s not_yet.csv dangling.png
 expect_rc 2 "overwrite each other" -- "$bin" sweep s.toml "${grid[@]}" --csv not_yet.csv --plot dangling.png
 [ ! -e not_yet.csv ] || fail "the refused sweep wrote its CSV"
@@ -75,6 +79,25 @@ if [ -e /dev/full ]; then  # help and version are output too
   rc=0; "$bin" --version >/dev/full 2>err.txt || rc=$?
   [ "$rc" = 2 ] || fail "--version to /dev/full: exit $rc"
 fi
+
+# No output replaces a file the command read, however it is named: the course, the world's
+# mesh behind a scenario, the scenario under play --screenshot (the second attack, issue 20).
+cp "$SWEETSPOT_ROOT/assets/courses/links.toml" c.toml; cp c.toml c.before; ln -s c.toml c_as.png
+expect_rc 2 "input file of this command" -- "$bin" round c.toml --plot c_as.png
+cmp -s c.toml c.before || fail "round --plot replaced the course"
+mkdir w; printf 'usemtl fairway\nv -30 0 -70\nv -30 0 70\nv 450 0 70\nv 450 0 -70\nf 1 2 3\nf 1 3 4\n' > w/flat.obj
+printf 'sport = "golf"\nmesh = "flat.obj"\n' > w/flat.toml; cp w/flat.obj w/flat.before; ln -s flat.obj w/mesh_as.png
+printf 'sport = "golf"\n[world]\nname = "w/flat.toml"\n' > on_flat.toml
+expect_rc 2 "input file of this command" -- "$bin" render on_flat.toml -o w/mesh_as.png --width 64 --height 64
+cmp -s w/flat.obj w/flat.before || fail "render -o replaced the world's mesh"
+ln -s s.toml s_shot.png
+expect_rc 2 "input file of this command" -- env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play s.toml --screenshot s_shot.png
+[ ! -s out.txt ] || fail "a refused play printed on stdout: $(head -3 out.txt)"
+cmp -s s.toml s.before || fail "play --screenshot replaced the scenario"
+# A material library must lie beside the mesh (or below it).
+printf 'mtllib ../../../../../../etc/passwd\nusemtl fairway\nv -30 0 -70\nv -30 0 70\nv 450 0 70\nf 1 2 3\n' > w/far.obj
+printf 'sport = "golf"\nmesh = "far.obj"\n' > w/far.toml
+expect_rc 2 "outside the mesh's folder" -- "$bin" shot golf/driver --set world.name=w/far.toml
 
 # A file-size limit: exit 2 naming the file, the old file kept, no temporary left behind.
 echo old > big.csv

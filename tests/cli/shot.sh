@@ -77,4 +77,12 @@ set +e
 "$bin" shot golf/driver --json --csv >/dev/null 2>&1; rc=$?
 set -e
 [ $rc -eq 2 ] || fail "--json --csv accepted (exit $rc)"
+# world.ball_position is measured from the world's origin (was: the origin's x/z ignored).
+wdir=$(mktemp -d); trap 'rm -rf "$wdir"' EXIT
+printf 'usemtl fairway\nv -200 0 -100\nv -200 0 100\nv 600 0 100\nv 600 0 -100\nf 1 2 3\nf 1 3 4\n' > "$wdir/p.obj"
+printf 'sport = "golf"\nmesh = "p.obj"\n' > "$wdir/at0.toml"
+printf 'sport = "golf"\nmesh = "p.obj"\norigin = ["100m", "0m", "0m"]\n' > "$wdir/at100.toml"
+x0=$("$bin" shot golf/driver --set world.name="$wdir/at0.toml" --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["flight"]["rest_position_m"][0])')
+x100=$("$bin" shot golf/driver --set world.name="$wdir/at100.toml" --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["flight"]["rest_position_m"][0])')
+python3 -c "assert abs(($x100) - ($x0) - 100.0) < 1e-6, ($x0, $x100)" || fail "the world's origin does not move the ball ($x0 -> $x100)"
 echo "shot: ok"

@@ -33,8 +33,10 @@ grep -q "no-such-scenario" "$work/bad.txt"
 # Headless (no DISPLAY): says so, prints the table, exit 0; it writes no file unless
 # --screenshot names one (issue 21: it used to drop sweetspot-play.png in the folder).
 mkdir "$work/quiet"
-(cd "$work/quiet" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play golf/7-iron > ../headless.txt)
-grep -q "no display" "$work/headless.txt"
+(cd "$work/quiet" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play golf/7-iron > ../headless.txt 2> ../headless.err)
+# The fallback is said on stderr; stdout holds only the shot (issue 20: a refused run prints nothing there).
+grep -q "no display" "$work/headless.err"
+if grep -q "no display" "$work/headless.txt"; then echo "the fallback note went to stdout"; exit 1; fi
 grep -qi "carry" "$work/headless.txt"
 grep -q "^image: none" "$work/headless.txt"
 [ -z "$(ls -A "$work/quiet")" ] || { echo "headless play wrote files: $(ls -A "$work/quiet")"; exit 1; }

@@ -63,8 +63,10 @@ ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
   c.club = in.club;
   c.swing = meter_swing(in.meter, eq.club(in.club), eq.club_info_of(in.club), full_swing_speed(golfer_, eq.club_info_of(in.club)));
   s.strike = c;
-  s.placement.x = ball_.x();
-  s.placement.z = ball_.z();
+  // The ball is kept in world coordinates; a placement is measured from the world's origin.
+  const Vec3& origin = hole().world->description().origin;
+  s.placement.x = ball_.x() - origin.x();
+  s.placement.z = ball_.z() - origin.z();
   // The aim line: from the ball toward the cup, turned by the player's aim.
   double aim = line_to_pin() + in.aim;
   aim = std::remainder(aim, 2.0 * kPi);

@@ -25,6 +25,15 @@ TEST_CASE("physics-side validation names the field and range", "[equipment][vali
   BallSpec b;
   b.inertia = 1.0;
   CHECK_THROWS_WITH(validate_ball(b), Contains("inertia must be in"));
+  // A compliant ball softer than 1e5 N/m^1.5 never leaves the face (a hostile balls.toml
+  // launched at 0 mph); 0 means rigid and is allowed.
+  b = BallSpec{};
+  b.compliance.stiffness = 1e-3;
+  CHECK_THROWS_WITH(validate_ball(b), Contains("compliance.stiffness") && Contains("too soft"));
+  b.compliance.stiffness = 0.0;
+  CHECK_NOTHROW(validate_ball(b));
+  b.compliance.stiffness = 2.36e7;  // the tour ball
+  CHECK_NOTHROW(validate_ball(b));
   BatSpec bat;
   bat.barrel_profile = {{0.0, 0.02}, {0.84, 0.033}};
   CHECK_NOTHROW(validate_bat(bat));

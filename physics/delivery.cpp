@@ -122,6 +122,12 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   check_range("swing.impact_offset[0] (toe)", w.impact_toe, GolfSwing::kImpactToe, "m");
   check_range("swing.impact_offset[1] (up)", std::isnan(w.impact_up) ? club.strike_height : w.impact_up,
               GolfSwing::kImpactUp, "m");
+  // And on this club's face: a putter's is 24 mm tall, an iron's 76 x 46 mm (face_size).
+  const Range toe_on_face{-club.face_half_width, club.face_half_width};
+  const Range up_on_face{-club.face_half_height, club.face_half_height};
+  check_range("swing.impact_offset[0] (toe) on the " + club.name + "'s face", w.impact_toe, toe_on_face, "m");
+  check_range("swing.impact_offset[1] (up) on the " + club.name + "'s face",
+              std::isnan(w.impact_up) ? club.strike_height : w.impact_up, up_on_face, "m");
   check_range("swing.closure_rate", w.closure_rate, GolfSwing::kClosureRate, "rad/s");
 }
 

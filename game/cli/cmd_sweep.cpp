@@ -69,6 +69,9 @@ RunFn setup_sweep(CLI::App& sub) {
       if (const std::string key = set_key(set); key == "impact.e" || key == "impact.mu")
         throw InputError("--set " + set + ": the sweep's grid (--e / --mu) sets this value; leave the --set out");
     const Scenario base = load_scenario(assets, o->scenario, o->sets);
+    if (base.resolved.material.friction == FrictionModel::None && so.mu.count > 1)
+      throw InputError("--mu " + o->mu + ": the impact's friction model is none, so mu changes nothing; "
+                       "sweep --mu A:A:1 or pick a friction model (--set impact.friction=coulomb)");
     if (::isatty(STDERR_FILENO) != 0) {
       so.progress = [](std::size_t done, std::size_t total) {
         std::fprintf(stderr, "\rsweep: %zu/%zu points", done, total);

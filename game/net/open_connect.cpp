@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 #include "physics/error.hpp"
 
@@ -114,6 +115,13 @@ const nlohmann::json* field(const nlohmann::json& o, const char* key) {
   return nullptr;
 }
 
+// A number for a message: %g, so 1e308 is not echoed as 309 digits.
+std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 std::optional<double> number(const nlohmann::json& o, const char* key, const char* where, double lo, double hi) {
   const nlohmann::json* v = field(o, key);
   if (v == nullptr) return std::nullopt;
@@ -130,8 +138,8 @@ std::optional<double> number(const nlohmann::json& o, const char* key, const cha
     throw InputError(std::string(where) + "." + key + ": not a number");
   }
   if (!std::isfinite(d) || d < lo || d > hi)
-    throw InputError(std::string(where) + "." + key + " = " + std::to_string(d) + " is out of range (allowed [" +
-                     std::to_string(lo) + ", " + std::to_string(hi) + "])");
+    throw InputError(std::string(where) + "." + key + " = " + short_number(d) + " is out of range (allowed [" +
+                     short_number(lo) + ", " + short_number(hi) + "])");
   return d;
 }
 
@@ -152,7 +160,21 @@ OcMessage parse_open_connect(std::string_view text) {
   if (!j.is_object()) throw InputError("a message must be a JSON object");
   OcMessage m;
   if (const nlohmann::json* d = field(j, "DeviceID"); d && d->is_string()) m.device_id = d->get<std::string>();
-  if (const auto n = number(j, "ShotNumber", "message", -1e9, 1e9)) m.shot_number = static_cast<int>(*n);
+  if (const auto n = number(j, "ShotNumber", "message", -1e9, 1e9)) {
+    if (*n != std::floor(*n)) throw InputError("message.ShotNumber = " + short_number(*n) + " is not a whole number");
+    m.shot_number = static_cast<int>(*n);
+  }
+  // The header's version and units: v1 only; its speeds are mph and angles degrees whatever
+  // the distance unit ("Yards" or "Meters"), so any other word is a client we do not speak.
+  if (const nlohmann::json* v = field(j, "APIversion"); v != nullptr) {
+    const std::string text = v->is_string() ? v->get<std::string>() : v->dump();
+    if (text != "1") throw InputError("message.APIversion = " + v->dump() + ": this server speaks Open Connect v1 (\"1\")");
+  }
+  if (const nlohmann::json* u = field(j, "Units"); u != nullptr) {
+    const std::string text = u->is_string() ? lower(u->get<std::string>()) : std::string();
+    if (text != "yards" && text != "meters")
+      throw InputError("message.Units = " + u->dump() + " (allowed: \"Yards\", \"Meters\")");
+  }
   const nlohmann::json* opts = field(j, "ShotDataOptions");
   const nlohmann::json empty = nlohmann::json::object();
   const nlohmann::json& o = opts ? *opts : empty;
@@ -173,12 +195,21 @@ OcMessage parse_open_connect(std::string_view text) {
     const auto speed = number(*b, "Speed", "BallData", 0.0, 250.0);
     if (!speed) throw InputError("BallData.Speed is missing");
     ball.speed_mph = *speed;
-    ball.vla_deg = number(*b, "VLA", "BallData", -90.0, 90.0).value_or(0.0);
+    // A launch angle is what makes a shot: a message without one is refused, never flown
+    // as a 0° skimmer. A missing HLA is a straight shot (some connectors omit it then).
+    const auto vla = number(*b, "VLA", "BallData", -90.0, 90.0);
+    if (!vla) throw InputError("BallData.VLA is missing");
+    ball.vla_deg = *vla;
     ball.hla_deg = number(*b, "HLA", "BallData", -90.0, 90.0).value_or(0.0);
     const auto total = number(*b, "TotalSpin", "BallData", 0.0, 20000.0);
     const auto axis = number(*b, "SpinAxis", "BallData", -180.0, 180.0);
     const auto back = number(*b, "BackSpin", "BallData", -20000.0, 20000.0);
     const auto side = number(*b, "SideSpin", "BallData", -20000.0, 20000.0);
+    if (!total && !back && !side)
+      throw InputError("BallData has no spin: give TotalSpin (and SpinAxis), or BackSpin and SideSpin");
+    // Both forms given: TotalSpin and SpinAxis win. They need not agree with BackSpin and
+    // SideSpin: the vendor page's own example sends 3250 rpm with 2500 back and -800 side
+    // (2625 rpm together), so refusing a disagreement would refuse the reference message.
     if (total && *total > 0.0) {
       ball.total_spin_rpm = *total;
       ball.spin_axis_deg = axis.value_or(back && side ? std::atan2(*side, *back) * 180.0 / 3.14159265358979323846 : 0.0);

@@ -117,5 +117,7 @@ expect_bad "a fence without its line" "fence.toml:3|fence_line" -- shot baseball
 printf 'sport = "golf"\nmesh = "x.obj"\nbounds_max = ["450m", "400m", "70m"]\npin = ["9000m", "0m", "0m"]\n' > "$tmp/pin.toml"
 expect_bad "a pin outside the world" "pin.toml:4|outside the world" -- shot golf/driver --set world.name="$tmp/pin.toml"
 expect_bad "a plot that is not a PNG" "name it FILE.png" -- derby --plot "$tmp/spray.jpg"
+expect_bad "a strike off the 7-iron's face" "on the 7-iron's face|[-0.023, 0.023] m" -- shot golf/7-iron --set "swing.impact_offset=[0mm,28mm]"
+expect_bad "sweep mu without friction" "--mu|friction model is none" -- sweep golf/driver --e 0.7:0.8:2 --mu 0.2:0.4:2 --set impact.friction=none --no-flight
 [ -z "$(ls -A "$tmp" | grep -v -E '\.toml$|^(out|err)$')" ] || fail "stray files: $(ls -A "$tmp")"
 echo "bad_input: ok"

@@ -125,8 +125,12 @@ void soak_one(long i, std::uint64_t seed, const EquipmentCatalog& eq, const Worl
       // NaN is the API's "use the club's own loft", so the non-finite probe here is -inf.
       if (std::isnan(s.dynamic_loft)) s.dynamic_loft = -std::numeric_limits<double>::infinity();
       s.face_angle = pick_in(3, GolfSwing::kFaceAngle);
-      s.impact_toe = pick_in(4, GolfSwing::kImpactToe);
-      s.impact_up = r.in(GolfSwing::kImpactUp.min, GolfSwing::kImpactUp.max);
+      // In range: on this club's face as well as within the swing's own bounds.
+      const Range toe{std::max(GolfSwing::kImpactToe.min, -club.face_half_width),
+                      std::min(GolfSwing::kImpactToe.max, club.face_half_width)};
+      s.impact_toe = pick_in(4, toe);
+      s.impact_up = r.in(std::max(GolfSwing::kImpactUp.min, -club.face_half_height),
+                         std::min(GolfSwing::kImpactUp.max, club.face_half_height));
       s.closure_rate = pick_in(5, GolfSwing::kClosureRate);
       ImpactMaterial m = club.face;
       m.mu = r.in(0.0, 0.8);

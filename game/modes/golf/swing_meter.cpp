@@ -22,8 +22,11 @@ GolfSwing meter_swing(const MeterInput& m, const ClubSpec& club, const ClubInfo&
   const double err = m.accuracy_ms * (club.length / kDriverLength) * (1.0 + 4.0 * over);
   s.face_angle = std::clamp(kFacePerMs * err, GolfSwing::kFaceAngle.min, GolfSwing::kFaceAngle.max);
   s.club_path = std::clamp(kPathPerMs * err, GolfSwing::kClubPath.min, GolfSwing::kClubPath.max);
-  s.impact_toe = std::clamp(-kHeelPerMs * err, GolfSwing::kImpactToe.min, GolfSwing::kImpactToe.max);
-  s.impact_up = std::clamp(club.strike_height - 0.030 * over, GolfSwing::kImpactUp.min, GolfSwing::kImpactUp.max);
+  // The worst miss still meets the face, at its edge (the edge is within the swing's ranges).
+  const double toe_edge = std::min(club.face_half_width, GolfSwing::kImpactToe.max);
+  const double up_edge = std::min(club.face_half_height, GolfSwing::kImpactUp.max);
+  s.impact_toe = std::clamp(-kHeelPerMs * err, -toe_edge, toe_edge);
+  s.impact_up = std::clamp(club.strike_height - 0.030 * over, -up_edge, up_edge);
   return s;
 }
 

@@ -185,7 +185,23 @@ TEST_CASE("bad numbers are refused with the key and the range", "[net][parser][h
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":1e999)")), Catch::Contains("malformed JSON") || Catch::Contains("Speed"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":[1])")), Catch::Contains("BallData.VLA: not a number"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("VLA":10)")), Catch::Contains("BallData.Speed is missing"));
-  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"TotalSpin":-5)")), Catch::Contains("TotalSpin"));
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":10,"TotalSpin":-5)")), Catch::Contains("TotalSpin"));
+  // Second attack (issue 20): a shot without its launch angle or any spin was flown as 0,
+  // a fractional shot number truncated, an unknown version or unit accepted.
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"TotalSpin":2500)")), Catch::Contains("BallData.VLA is missing"));
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":10)")), Catch::Contains("no spin"));
+  CHECK_NOTHROW(parse_open_connect(shot(R"("Speed":100,"VLA":10,"TotalSpin":0)")));  // a knuckler is a spin
+  CHECK_THROWS_WITH(parse_open_connect(R"({"ShotNumber":1.5,"BallData":{"Speed":100,"VLA":10,"TotalSpin":2500},)"
+                                       R"("ShotDataOptions":{"ContainsBallData":true}})"),
+                    Catch::Contains("ShotNumber") && Catch::Contains("whole number"));
+  CHECK_THROWS_WITH(parse_open_connect(R"({"APIversion":"2","ShotNumber":1,"BallData":{"Speed":100,"VLA":10,"TotalSpin":2500},)"
+                                       R"("ShotDataOptions":{"ContainsBallData":true}})"),
+                    Catch::Contains("APIversion"));
+  CHECK_THROWS_WITH(parse_open_connect(R"({"Units":"Furlongs","ShotNumber":1,"BallData":{"Speed":100,"VLA":10,"TotalSpin":2500},)"
+                                       R"("ShotDataOptions":{"ContainsBallData":true}})"),
+                    Catch::Contains("Units") && Catch::Contains("Yards"));
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":1e308,"TotalSpin":1)")),
+                    Catch::Contains("1e+308") && !Catch::Contains("000000000000"));
   CHECK_THROWS_WITH(parse_open_connect(R"({"ShotDataOptions":{"ContainsBallData":true}})"),
                     Catch::Contains("BallData is missing"));
   CHECK_THROWS_WITH(parse_open_connect("[1,2]"), Catch::Contains("JSON object"));

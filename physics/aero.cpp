@@ -73,14 +73,22 @@ std::string validate_aero_model(const AeroModel& m) {
   if (!(m.s_max > 0.0)) return who + "s_max must be > 0";
   if (!(m.decay_per_metre >= 0.0) || !(m.decay_tau >= 0.0)) return who + "spin decay terms must be >= 0";
   if (!(m.lift_onset >= 0.0 && m.lift_onset < m.s_max)) return who + "lift_onset must be in [0, s_max)";
-  if (!(m.crisis_rise >= 0.0 && m.crisis_re >= 0.0 && m.crisis_width > 0.0))
-    return who + "drag crisis: re and rise must be >= 0, width > 0";
+  if (!(m.crisis_rise >= 0.0 && m.crisis_rise <= 1.5 && m.crisis_re >= 0.0 && m.crisis_width > 0.0))
+    return who + "drag crisis: re >= 0, 0 <= rise <= 1.5 (a smooth sphere's Cd rises ~0.3 below its crisis), width > 0";
   if (m.lift == LiftLaw::Saturating && !(m.l0 > 0.0 && m.l2 >= 0.0))
     return who + "a saturating lift law needs l0 > 0 and l2 >= 0 (no pole at positive S)";
-  // Drag must stay positive over the fitted range, or the ball would be pushed forward.
+  // Spin decay faster than e-fold in 0.1 s or within 1 m of flight is no ball's (a golf
+  // ball's is ~20-30 s); a hostile file's 1e-300 s made the integrator's steps vanish.
+  if (m.decay_tau > 0.0 && m.decay_tau < 0.1) return who + "decay_tau must be 0 (none) or at least 0.1 s";
+  if (m.decay_per_metre > 1.0) return who + "decay_per_metre must be at most 1 per m";
+  // Drag must stay positive over the fitted range, or the ball would be pushed forward; and
+  // bounded: a sphere's Cd is ~0.1-0.6 and its Cl under 0.6 in any regime a ball flies in,
+  // so a coefficient past 2 is a typo (a hostile drag = [1e300, ...] sent the state to inf).
   for (int i = 0; i <= 100; ++i) {
     const double sp = m.s_max * i / 100.0;
-    if (!(m.coefficients(sp, 0.0).cd > 0.0)) return who + "Cd must be > 0 for every S in [0, s_max]";
+    const AeroCoefficients c = m.coefficients(sp, 0.0);
+    if (!(c.cd > 0.0)) return who + "Cd must be > 0 for every S in [0, s_max]";
+    if (!(c.cd <= 2.0) || !(std::abs(c.cl) <= 2.0)) return who + "Cd and |Cl| must stay at most 2 for every S in [0, s_max]";
   }
   return {};
 }

@@ -276,13 +276,19 @@ CheckedDoc::CheckedDoc(const ScenarioDoc& doc, const Schema& schema, const Sport
     }
   }
   const std::string sport_word = sport_ == nullptr ? std::string() : " for " + sport_->name;
+  // "unknown key (allowed in [swing] for golf: ...)", or, for a section this sport has no
+  // keys in ([bat] in a golf scenario), say so instead of listing nothing.
+  const auto unknown_in = [&](std::string_view section) {
+    const std::string keys = schema.keys_in_section(section, strikes_);
+    if (keys.empty()) return "unknown key ([" + std::string(section) + "] has no keys" + sport_word + ")";
+    return "unknown key (allowed in [" + std::string(section) + "]" + sport_word + ": " + keys + ")";
+  };
 
   for (const auto& s : doc.sections) {
     if (schema.has_section(s.key) || schema.find(s.key, kAnyStrike) != nullptr) continue;
     const auto parent = section_of(s.key);
     if (!parent.empty() && schema.has_section(parent)) {
-      fail(s.origin, s.key, "unknown key (allowed in [" + std::string(parent) + "]" + sport_word + ": " +
-                                schema.keys_in_section(parent, strikes_) + ")");
+      fail(s.origin, s.key, unknown_in(parent));
     }
     fail(s.origin, s.key, "unknown section (sections of a " + std::string(schema.name) + ": " +
                               schema.section_names() + ")");
@@ -298,8 +304,7 @@ CheckedDoc::CheckedDoc(const ScenarioDoc& doc, const Schema& schema, const Sport
       }
       const auto section = section_of(e.key);
       if (!section.empty() && schema.has_section(section)) {
-        fail(e.origin, e.key, "unknown key (allowed in [" + std::string(section) + "]" + sport_word + ": " +
-                                  schema.keys_in_section(section, strikes_) + ")");
+        fail(e.origin, e.key, unknown_in(section));
       }
       fail(e.origin, e.key, "unknown key (allowed sections of a " + std::string(schema.name) + ": " +
                                 schema.section_names() + ")");

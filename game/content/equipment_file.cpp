@@ -10,6 +10,16 @@
 namespace sweetspot {
 namespace {
 
+/// A mesh of assets/meshes by its plain name ("driver_head"): a path ("../../etc/passwd")
+/// would reach outside the assets, so it is refused here, at the file's line.
+std::string mesh_name(const TomlFile& f, const toml::node& n) {
+  const std::string name = f.text(n, "mesh");
+  const bool plain = name.find_first_of("/\\") == std::string::npos && name != "." && name != ".." &&
+                     name.find('\0') == std::string::npos;
+  if (!plain) f.fail(n, "mesh", "'" + name + "' is not a mesh name of assets/meshes (a plain name such as driver_head)");
+  return name;
+}
+
 // Runs a physics validator and re-throws its message with the file and line.
 template <class F>
 void validated(const TomlFile& f, const toml::node& where, F&& check) {
@@ -116,7 +126,7 @@ void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, Clu
   if (info.kind != "wood" && info.kind != "hybrid" && info.kind != "iron" && info.kind != "wedge" &&
       info.kind != "putter")
     f.fail(*t.get("kind"), "kind", "unknown kind '" + info.kind + "' (allowed: wood, hybrid, iron, wedge, putter)");
-  info.mesh = f.text(f.required(t, "mesh", "the head mesh in assets/meshes"), "mesh");
+  info.mesh = mesh_name(f, f.required(t, "mesh", "the head mesh in assets/meshes"));
   info.tee_height = f.quantity_or(t, "tee_height", Dimension::Length, 0.0, &ClubInfo::kTeeHeight);
   info.tour_speed = f.quantity(f.required(t, "tour_speed", "a tour player's full-swing club speed"), "tour_speed",
                                Dimension::Speed, &GolfSwing::kClubSpeed);
@@ -174,7 +184,7 @@ void read_bat(const TomlFile& f, const toml::table& t, BatSpec& b, BatInfo& info
                          "barrel_profile", "sweet_spot_from_tip", "pivot_from_knob", "material"});
   b.name = f.text(f.required(t, "name", "the bat's name"), "name");
   info.name = b.name;
-  info.mesh = f.text_or(t, "mesh", "bat");
+  info.mesh = t.get("mesh") != nullptr ? mesh_name(f, *t.get("mesh")) : std::string("bat");
   b.length = f.quantity(f.required(t, "length", "m"), "length", Dimension::Length, &BatSpec::kLength);
   b.mass = f.quantity(f.required(t, "mass", "kg"), "mass", Dimension::Mass, &BatSpec::kMass);
   b.cg_from_knob = f.quantity(f.required(t, "cg_from_knob", "m"), "cg_from_knob", Dimension::Length);

@@ -167,6 +167,14 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
       face.mu *= s.lie_friction;
       GolfSwing through = c->swing;
       through.club_speed *= 1.0 - s.lie_speed_loss;
+      // The swing is checked as written first, so a refusal names the value the user gave;
+      // then the speed the lie leaves, naming the lie.
+      validate_golf_swing(c->swing, *s.club);
+      if (!GolfSwing::kClubSpeed.contains(through.club_speed))
+        throw InputError("swing.speed: the " + s.start_surface + " lie takes " +
+                         std::to_string(static_cast<int>(std::lround(100.0 * s.lie_speed_loss))) +
+                         " % of it, leaving " + range_refusal("the speed at the ball", through.club_speed,
+                                                              GolfSwing::kClubSpeed, "m/s"));
       d = deliver_golf(s.ball, *s.club, through, face);
       r.lie = s.start_surface;
       const auto& w = c->swing;

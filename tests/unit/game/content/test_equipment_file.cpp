@@ -119,6 +119,17 @@ TEST_CASE("unknown equipment names list the allowed ones", "[equipment]") {
 
 TEST_CASE("bad equipment files name file, line, entry, key and range", "[equipment][validation]") {
   {
+    // A mesh is a name of assets/meshes, never a path out of the assets (issue 20).
+    ScratchDir s;
+    s.replace("clubs.toml", "mesh = \"driver_head\"", "mesh = \"../../../../etc/passwd\"");
+    CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("mesh") && Contains("not a mesh name"));
+  }
+  {
+    ScratchDir s;
+    s.replace("balls.toml", "stiffness = 2.36e7", "stiffness = 1e-3");
+    CHECK_THROWS_WITH(load_equipment(s.dir), Contains("stiffness") && Contains("too soft"));
+  }
+  {
     ScratchDir s;
     s.replace("clubs.toml", "e = [0.65, 0.92]", "e = [0.92, 0.65]");
     CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("face.measured.e") &&

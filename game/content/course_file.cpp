@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
@@ -9,13 +10,21 @@
 namespace sweetspot {
 namespace {
 
-// The ground point under [x, z] on the world, or InputError naming where it came from.
-Vec3 ground_at(const WorldAsset& w, double x, double z, const std::string& where, const std::string& what) {
+// The ground point under [x, z] on the world, or InputError naming where it came from; its
+// surface must be one of `allowed` (a cup on the green, a tee on dry ground).
+Vec3 ground_at(const WorldAsset& w, double x, double z, const std::string& where, const std::string& what,
+               std::initializer_list<SurfaceKind> allowed) {
   const WorldDescription& d = w.description();
   SurfaceContact hit;
+  const std::string spot = what + " [" + std::to_string(x) + " m, " + std::to_string(z) + " m]";
   if (!ground_under(*w.world, x, z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit))
-    throw InputError(where + ": " + what + " [" + std::to_string(x) + " m, " + std::to_string(z) +
-                     " m] is off the ground of world '" + w.name + "'");
+    throw InputError(where + ": " + spot + " is off the ground of world '" + w.name + "'");
+  const SurfaceKind kind = w.world->material(hit.material).kind;
+  if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end()) {
+    std::string names;
+    for (const SurfaceKind k : allowed) names += std::string(names.empty() ? "" : ", ") + to_string(k);
+    throw InputError(where + ": " + spot + " lies on " + to_string(kind) + " (allowed: " + names + ")");
+  }
   return Vec3(x, hit.point.y(), z);
 }
 
@@ -70,10 +79,11 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
       f.fail(wn, "world", "'" + h.world_name + "' is not a golf world (a hole needs a course world with a green)");
     const toml::node& tn = f.required(*t, "tee", "the tee spot [x, z] on the world");
     const auto tee = f.quantities(tn, "tee", Dimension::Length, 2);
-    h.tee = ground_at(*h.world, tee[0], tee[1], f.where(tn), "tee");
+    h.tee = ground_at(*h.world, tee[0], tee[1], f.where(tn), "tee",
+                      {SurfaceKind::Tee, SurfaceKind::Fairway, SurfaceKind::Rough, SurfaceKind::Grass});
     if (const toml::node* pn = t->get("pin")) {
       const auto pin = f.quantities(*pn, "pin", Dimension::Length, 2);
-      h.pin = ground_at(*h.world, pin[0], pin[1], f.where(*pn), "pin");
+      h.pin = ground_at(*h.world, pin[0], pin[1], f.where(*pn), "pin", {SurfaceKind::Green});
     } else if (h.world->pin) {
       h.pin = *h.world->pin;
     } else {

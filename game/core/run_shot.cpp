@@ -279,9 +279,9 @@ ShotResult run_shot(const ResolvedShot& s, const std::string& name, const RunOpt
   const BallProperties ball{s.ball.mass, s.ball.radius, s.ball.inertia};
   const Terrain* terrain = s.world ? s.world->world.get() : nullptr;
   ShotModel model = make_shot_model(ball, *s.aero, s.spec.environment, terrain, s.spec.flight);
-  if (s.world != nullptr && s.world->pin) {
+  if (s.world != nullptr && (s.spec.cup || s.world->pin)) {
     Cup cup;
-    cup.centre = *s.world->pin;
+    cup.centre = s.spec.cup ? *s.spec.cup : *s.world->pin;  // a course may move the world's pin
     cup.flagstick = s.spec.flagstick;
     model.cup = cup;
   }

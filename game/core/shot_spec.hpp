@@ -76,6 +76,9 @@ struct ShotSpec {
   BallPlacement placement;
   FlightSettings flight;
   bool flagstick = false;              ///< golf: the flagstick left in the hole (Rules of Golf 13.2a)
+  /// golf: the cup's centre on the green (m, world coordinates) when the round moves it (a
+  /// course's `pin`); unset = the world's own pin.
+  std::optional<Vec3> cup;
 };
 
 /// world name of the infinite flat fairway (no course or ballpark), as `flight --world none`.

@@ -92,5 +92,21 @@ for f in sys.argv[1:]:
     b = open(f, "rb").read()
     assert b[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", b[16:24]) == (900, 800), f
 PY
+
+# A course's `pin` moves the cup itself, not just the target: with hole 1's pin moved 4 m
+# short of the world's own (still on the green) the bots hole out there. Before, the cup
+# stayed at the world's pin and every putt rolled over the moved one until the pick-up.
+sed '0,/^tee = \["0m", "0m"\] .*/s//tee = ["0m", "0m"]\npin = ["150m", "0m"]/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$plot_dir/moved.toml"
+grep -q '^pin = \["150m"' "$plot_dir/moved.toml" || fail "the moved-pin course was not made"
+for seed in 1 2 3; do
+  "$bin" round "$plot_dir/moved.toml" --seed $seed --json | python3 -c '
+import json, sys
+h = json.load(sys.stdin)["holes"][0]
+assert h["holed"] and h["putts"] <= 3, h' || fail "moved pin, seed $seed: not holed"
+done
+# ... and a cup off the green is refused at its line.
+sed '0,/^tee = \["0m", "0m"\] .*/s//tee = ["0m", "0m"]\npin = ["100m", "0m"]/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$plot_dir/pond.toml"
+set +e; msg=$("$bin" round "$plot_dir/pond.toml" 2>&1); rc=$?; set -e
+[ $rc -eq 2 ] && grep -q "pond.toml:11: pin .* lies on water (allowed: green)" <<<"$msg" || fail "a pin in the pond: exit $rc, $msg"
 rm -rf "$plot_dir"
 echo "round: ok"

@@ -72,6 +72,7 @@ ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
   aim = std::remainder(aim, 2.0 * kPi);
   s.placement.aim = aim;
   s.placement.teed = teed_;
+  s.cup = hole().pin;  // the course's cup, which may not be the world's own pin
   return s;
 }
 

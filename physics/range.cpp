@@ -1,5 +1,6 @@
 #include "physics/range.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "physics/error.hpp"
@@ -18,9 +19,20 @@ std::string number(double v) {
 }  // namespace
 
 std::string range_text(const Range& r, std::string_view si_unit) {
-  std::string out = r.min_open ? "(" : "[";
-  out += number(r.min) + ", " + number(r.max);
-  out += r.max_open ? ")" : "]";
+  // A one-sided range reads as a bound ("> 0 m/s", ">= 0"), not as an interval to infinity.
+  // (Built with a stream: GCC 12 warns falsely, -Wrestrict, on assigning short literals.)
+  const bool no_min = std::isinf(r.min) && r.min < 0, no_max = std::isinf(r.max) && r.max > 0;
+  std::ostringstream text;
+  if (no_min && no_max) {
+    text << "any finite number";
+  } else if (no_max) {
+    text << (r.min_open ? "> " : ">= ") << number(r.min);
+  } else if (no_min) {
+    text << (r.max_open ? "< " : "<= ") << number(r.max);
+  } else {
+    text << (r.min_open ? "(" : "[") << number(r.min) << ", " << number(r.max) << (r.max_open ? ")" : "]");
+  }
+  std::string out = text.str();
   if (!si_unit.empty()) {
     out += ' ';
     out.append(si_unit);

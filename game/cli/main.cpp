@@ -19,15 +19,14 @@ std::vector<CommandInfo>& command_registry() {
 
 namespace {
 
-/// An error message quotes what the user wrote, often twice (the flag and the key's value);
-/// a 100 kB argument would bury the reason. Any run of over 240 characters without a space
-/// keeps its first 160 and last 40, with the count of what was left out between.
-std::string shorten_long_runs(const std::string& message) {
+/// An error message quotes what the user wrote, often twice (the flag and the key's value),
+/// and must stay one readable line: control characters are shown escaped ("\n"), and a
+/// run of over 240 characters without a space (a 100 kB argument) keeps its first 160 and
+/// last 40, with the count of what was left out between.
+std::string printable_message(const std::string& message) {
   constexpr std::size_t kLong = 240, kHead = 160, kTail = 40;
   std::string out;
   std::size_t i = 0;
-  // A control character the user typed (a newline inside a value) is shown escaped, so the
-  // message stays one line.
   std::string text;
   for (const char c : message) {
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
@@ -90,7 +89,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
     std::string names;
     for (const auto& c : registry) names += std::string(names.empty() ? "" : ", ") + c.name;
-    std::cerr << "sweetspot: error: " << shorten_long_runs("unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")")
+    std::cerr << "sweetspot: error: " << printable_message("unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")")
               << "\n";
     return 2;
   }
@@ -120,15 +119,15 @@ int main(int argc, char** argv) {
       return code;
     }
   } catch (const sweetspot::InputError& e) {
-    std::cerr << "sweetspot: error: " << shorten_long_runs(e.what()) << "\n";
+    std::cerr << "sweetspot: error: " << printable_message(e.what()) << "\n";
     return 2;
   } catch (const std::filesystem::filesystem_error& e) {
     // A path the OS refuses is the user's input, not our bug; loaders report most as
     // InputError already, this catches any that slip through.
-    std::cerr << "sweetspot: error: " << e.what() << "\n";
+    std::cerr << "sweetspot: error: " << printable_message(e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "sweetspot: internal error: " << e.what() << "\n";
+    std::cerr << "sweetspot: internal error: " << printable_message(e.what()) << "\n";
     return 4;
   }
   return 2;

@@ -24,33 +24,42 @@ namespace {
 /// run of over 240 characters without a space (a 100 kB argument) keeps its first 160 and
 /// last 40, with the count of what was left out between.
 std::string printable_message(const std::string& message) {
-  constexpr std::size_t kLong = 240, kHead = 160, kTail = 40;
-  std::string out;
-  std::size_t i = 0;
   std::string text;
   for (const char c : message) {
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+    if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) {
+      text += c;
+    } else if (c == '\n' || c == '\t') {
+      text += c == '\n' ? "\\n" : "\\t";
+    } else {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-      text += c == '\n' ? std::string("\\n") : c == '\t' ? std::string("\\t") : std::string(buf);
-    } else {
-      text += c;
+      text += buf;
     }
   }
-  const std::string& message_text = text;
-  while (i < message_text.size()) {
-    const std::size_t end = std::min(message_text.find(' ', i), message_text.size());
+  constexpr std::size_t kLong = 240, kHead = 160, kTail = 40;
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t end = std::min(text.find(' ', i), text.size());
     if (end - i > kLong) {
-      out.append(message_text, i, kHead);
+      out.append(text, i, kHead);
       out += "...(" + std::to_string(end - i - kHead - kTail) + " more characters)...";
-      out.append(message_text, end - kTail, kTail);
+      out.append(text, end - kTail, kTail);
     } else {
-      out.append(message_text, i, end - i);
+      out.append(text, i, end - i);
     }
-    if (end < message_text.size()) out += message_text[end];
+    if (end < text.size()) out += ' ';
     i = end + 1;
   }
   return out;
+}
+
+/// True when what was printed on stdout never arrived (a full disk, /dev/full, a closed
+/// stdout); the message is printed here.
+bool stdout_failed() {
+  std::cout.flush();
+  if (std::cout && std::fflush(stdout) == 0 && std::ferror(stdout) == 0) return false;
+  std::cerr << "sweetspot: error: writing the output to stdout failed (disk full, or stdout closed)\n";
+  return true;
 }
 
 }  // namespace
@@ -98,10 +107,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // CLI11 prints usage errors; map every bad flag to exit 2 (help/version stay 0).
     const int code = app.exit(e);
-    if (code == 0 && (std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !(std::cout << std::flush))) {
-      std::cerr << "sweetspot: error: writing the output to stdout failed (disk full, or stdout closed)\n";
-      return 2;
-    }
+    if (code == 0 && stdout_failed()) return 2;  // help and version are output too
     return code == 0 ? 0 : 2;
   }
 
@@ -110,13 +116,7 @@ int main(int argc, char** argv) {
     for (auto& [sub, run] : runs) {
       if (!sub->parsed()) continue;
       const int code = run(assets);
-      // Output that never arrived is a failure: a full disk, /dev/full, a closed stdout.
-      std::cout.flush();
-      if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
-        std::cerr << "sweetspot: error: writing the output to stdout failed (disk full, or stdout closed)\n";
-        return 2;
-      }
-      return code;
+      return stdout_failed() ? 2 : code;  // output that never arrived is a failure
     }
   } catch (const sweetspot::InputError& e) {
     std::cerr << "sweetspot: error: " << printable_message(e.what()) << "\n";

@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "game/content/toml_file.hpp"
+#include "game/content/world_asset.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -66,9 +67,7 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
     const toml::node& wn = f.required(*t, "world", "a world of assets/worlds");
     h.world_name = f.text(wn, "world");
     // A world given as a relative path is found beside the course file, wherever it is run.
-    if ((h.world_name.find('/') != std::string::npos || h.world_name.ends_with(".toml") ||
-         h.world_name.ends_with(".obj")) &&
-        std::filesystem::path(h.world_name).is_relative())
+    if (is_world_path(h.world_name) && std::filesystem::path(h.world_name).is_relative())
       h.world_name = (path.parent_path() / h.world_name).string();
     try {
       h.world = assets.world(h.world_name);

@@ -19,16 +19,24 @@ std::string_view trim(std::string_view s) {
 
 bool needs_unit(Dimension dim) { return dim != Dimension::Dimensionless; }
 
-bool has_unit(std::string_view t) {
+namespace {
+
+// The text after a quantity's number ("mph" of "113 mph"), trimmed; all of it when it does
+// not start with a number.
+std::string_view unit_part(std::string_view t) {
   t = trim(t);
   const char* first = t.data();
   const char* last = t.data() + t.size();
   if (first != last && (*first == '+' || *first == '-')) ++first;
   double v = 0.0;
   const auto res = std::from_chars(first, last, v);
-  if (res.ec == std::errc::invalid_argument) return true;
-  return !trim(std::string_view(res.ptr, static_cast<std::size_t>(last - res.ptr))).empty();
+  if (res.ec == std::errc::invalid_argument) return t;
+  return trim(std::string_view(res.ptr, static_cast<std::size_t>(last - res.ptr)));
 }
+
+}  // namespace
+
+bool has_unit(std::string_view t) { return trim(t).empty() || !unit_part(t).empty(); }
 
 double read_quantity(std::string_view text, Dimension dim) {
   const std::string_view t = trim(text);
@@ -65,13 +73,7 @@ double flag_quantity(std::string_view flag, std::string_view text, Dimension dim
   if (range != nullptr && !range->contains(v)) {
     // The refusal speaks the unit the value was written in ("--spin 9000rpm: ... allowed
     // [0, 4000] rpm"), not SI: the unit's scale and offset come from reading 0 and 1 of it.
-    const std::string_view t = trim(text);
-    const char* first = t.data();
-    const char* last = t.data() + t.size();
-    if (first != last && (*first == '+' || *first == '-')) ++first;
-    double ignored = 0.0;
-    const char* number_end = std::from_chars(first, last, ignored).ptr;
-    const std::string unit(trim(std::string_view(number_end, static_cast<std::size_t>(last - number_end))));
+    const std::string unit(unit_part(text));
     const std::string name(std::string(flag).substr(flag.find_first_not_of('-')));
     std::string why = range_refusal(name, v, *range, si_unit_name(dim));
     if (!unit.empty()) {

@@ -117,9 +117,7 @@ void load_mesh(const fs::path& obj, WorldDescription* d) {
 }
 
 fs::path resolve_world(const fs::path& root, const std::string& name_or_path) {
-  if (name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".toml") ||
-      name_or_path.ends_with(".obj"))
-    return name_or_path;
+  if (is_world_path(name_or_path)) return name_or_path;
   const fs::path p = root / "worlds" / (name_or_path + ".toml");
   if (std::error_code ec; !fs::is_regular_file(p, ec)) {
     std::string names;
@@ -138,6 +136,11 @@ Vec3 vec3(const TomlFile& f, const toml::node& n, std::string_view key) {
 }
 
 }  // namespace
+
+bool is_world_path(const std::string& name_or_path) {
+  return name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".toml") ||
+         name_or_path.ends_with(".obj");
+}
 
 // ---- 3. the world .toml ----------------------------------------------------------------
 WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_path,

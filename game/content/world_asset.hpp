@@ -56,6 +56,10 @@ struct WorldAsset {
 /// non-finite or far-flung vertices, dangling indices and unknown material names
 /// (InputError naming file and mesh); drops zero-area triangles and says so in the
 /// description's notes.
+/// Whether a world name is a path (it has a '/' or ends in .toml or .obj) rather than a
+/// name of <root>/worlds.
+bool is_world_path(const std::string& name_or_path);
+
 /// `sports`, when given, is what the file's `sport` key may name.
 WorldAsset load_world_asset(const std::filesystem::path& root, const std::string& name_or_path,
                             const std::vector<SurfaceMaterial>& materials, const SportCatalog* sports = nullptr);

@@ -4,47 +4,18 @@
 #include <array>
 #include <cmath>
 
+#include "physics/detail/aero_kernel.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
-namespace {
-
-// The coefficient and spin-decay laws, inlined into aero_effect: it runs ~120 times per golf
-// shot inside the integrator (issue 22), where a call and a dependent chain of divisions
-// were a fifth of a shot's time.
-[[gnu::always_inline]] inline AeroCoefficients coefficients_of(const AeroModel& m, double s, double spin, double re) {
-  const double sc = std::min(s, m.s_max);
-  AeroCoefficients c;
-  c.cd = m.d0 + m.d1 * sc + m.d2 * sc * sc;
-  if (m.d_krpm != 0.0) c.cd += m.d_krpm * (radps_to_rpm(spin) / 1000.0);
-  if (m.crisis_rise > 0.0) {
-    // Above the crisis by more than kCrisisTail widths the term is under rise·e^-40 ≈ 4e-18·rise,
-    // far below one ulp of any Cd (> 0.05): skip the exp.
-    constexpr double kCrisisTail = 40.0;
-    const double x = (re - m.crisis_re) / m.crisis_width;
-    if (x < kCrisisTail) c.cd += m.crisis_rise / (1.0 + std::exp(std::max(x, -50.0)));
-  }
-  switch (m.lift) {
-    case LiftLaw::Quadratic: c.cl = m.l0 + m.l1 * sc + m.l2 * sc * sc; break;
-    case LiftLaw::Power: c.cl = sc > 0.0 ? m.l1 * std::pow(sc, m.l2) : 0.0; break;
-    case LiftLaw::Saturating: c.cl = m.l1 * sc / (m.l0 + m.l2 * sc); break;
-  }
-  if (m.lift_onset > 0.0 && sc < m.lift_onset) c.cl *= sc / m.lift_onset;
-  return c;
-}
-
-[[gnu::always_inline]] inline double spin_decay_rate_of(const AeroModel& m, double speed) {
-  return m.decay_per_metre * speed + (m.decay_tau > 0.0 ? 1.0 / m.decay_tau : 0.0);
-}
-
-}  // namespace
-
 AeroCoefficients AeroModel::coefficients(double s, double spin, double re) const {
-  return coefficients_of(*this, s, spin, re);
+  return detail::aero_coefficients(*this, s, spin, re, 1.0 / crisis_width, lift_onset > 0.0 ? 1.0 / lift_onset : 0.0);
 }
 
-double AeroModel::spin_decay_rate(double speed) const { return spin_decay_rate_of(*this, speed); }
+double AeroModel::spin_decay_rate(double speed) const {
+  return decay_per_metre * speed + (decay_tau > 0.0 ? 1.0 / decay_tau : 0.0);
+}
 
 const char* to_string(LiftLaw l) {
   switch (l) {
@@ -95,22 +66,9 @@ std::string validate_aero_model(const AeroModel& m) {
 
 AeroEffect aero_effect(const AeroModel& model, double density, double radius, const Vec3& v_rel,
                        const Vec3& omega, double viscosity) {
+  // The integrator's kernel with a unit mass: its acceleration is the force.
   AeroEffect fx;
-  const double speed = v_rel.norm();
-  fx.spin_rate = -spin_decay_rate_of(model, speed) * omega;
-  if (speed <= 0.0) return fx;
-  const double inv_speed = 1.0 / speed;
-  const double spin = model.d_krpm != 0.0 ? omega.norm() : 0.0;  // only the Nathan drag term reads it
-  const Vec3 lift_dir_unnorm = omega.cross(v_rel);  // |ω × v_r| = ω⊥ |v_r|
-  const double cross_norm = lift_dir_unnorm.norm();
-  const double w_perp = cross_norm * inv_speed;
-  const double s = radius * w_perp * inv_speed;
-  const double re = speed * (density * 2.0 * radius / viscosity);
-  const AeroCoefficients c = coefficients_of(model, s, spin, re);
-  const double q_area = 0.5 * density * kPi * radius * radius;  // ½ρA
-  fx.force = -q_area * c.cd * speed * v_rel;
-  // Lift ½ρA·Cl·|v_r|² along (ω × v_r)/|ω × v_r|.
-  if (cross_norm > 0.0) fx.force += (q_area * c.cl * speed * speed / cross_norm) * lift_dir_unnorm;
+  detail::AeroKernel(model, density, radius, viscosity, 1.0).evaluate(v_rel, omega, &fx.force, &fx.spin_rate);
   return fx;
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/detail/aero_kernel.hpp"
 #include "physics/detail/integrator.hpp"
 #include "physics/flight.hpp"
 
@@ -66,23 +67,29 @@ struct ContactLayer {
 /// the contact layer's resistance on the hops after landing.
 struct Dynamics {
   const ShotModel* model;
-  double inv_mass;
+  AeroKernel aero;
   double ground_height;
+  bool still_air;
   ContactLayer layer;
 
   explicit Dynamics(const ShotModel& m, ContactLayer l = {})
-      : model(&m), inv_mass(1.0 / m.ball.mass), ground_height(m.terrain->reference_height()), layer(l) {}
+      : model(&m),
+        aero(*m.aero, m.air_density, m.ball.radius, m.air_viscosity, m.ball.mass),
+        ground_height(m.terrain->reference_height()),
+        still_air(m.environment.wind_speed == 0.0),
+        layer(l) {}
 
   State9 operator()(double /*t*/, const State9& y) const {
     const Vec3 v = y.segment<3>(3);
     const Vec3 w = y.segment<3>(6);
     // Still air needs no profile (wind_at is a call with logs or powers otherwise).
-    const Vec3 v_rel = model->environment.wind_speed == 0.0 ? v : Vec3(v - wind_at(model->environment, y[1] - ground_height));
-    const AeroEffect fx = aero_effect(*model->aero, model->air_density, model->ball.radius, v_rel, w, model->air_viscosity);
+    const Vec3 v_rel = still_air ? v : Vec3(v - wind_at(model->environment, y[1] - ground_height));
+    Vec3 accel, spin_rate;
+    aero.evaluate(v_rel, w, &accel, &spin_rate);
     State9 d;
     d.segment<3>(0) = v;
-    d.segment<3>(3) = fx.force * inv_mass - kGravity * up_axis();
-    d.segment<3>(6) = fx.spin_rate;
+    d.segment<3>(3) = accel - kGravity * up_axis();
+    d.segment<3>(6) = spin_rate;
     if (layer.on) {
       // As on a roll, the resistance slows the spin with the centre (ω = n × v / R kept), or
       // the spin left over would drive the ball on at the next touch.

@@ -27,7 +27,10 @@
 // held ball sleeps; driver total 256.6256 -> 256.6258 m, the rest within 0.1 mm), gave
 // 0xd3a7a887d381f9c4; dropping the roll step's second ground query from the step's end (the
 // centre-path guard already catches what it caught; the soak stays clean) gives back the
-// value below, 0x4bf021f5174a60b4: that query alone moved the driver's rest.
+// value 0x4bf021f5174a60b4: that query alone moved the driver's rest. Issue 22's aero kernel
+// (the same law with the shot's constants folded in once and the acceleration computed
+// directly, physics/detail/aero_kernel.hpp) rounds differently in the last bits: driver
+// carry 240.5801 m, total 256.6256 m as before; it gives the value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -58,7 +61,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x4bf021f5174a60b4ULL;
+constexpr std::uint64_t kGoldenHash = 0x19ee71f2cadd7e76ULL;
 
 }  // namespace
 

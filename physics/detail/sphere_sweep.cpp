@@ -42,12 +42,21 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
 bool sphere_triangle_sweep(const Vec3& from, const Vec3& motion, double radius, const Vec3& a, const Vec3& b,
                            const Vec3& c, double* fraction) {
   const double r2 = radius * radius;
+  const Vec3 cross = (b - a).cross(c - a);
+  const double area2 = cross.norm();
+  // The centre's distance to the triangle's plane is linear along the sweep: when both ends
+  // are farther than the radius on the same side, no point of the path comes within reach
+  // of the plane, let alone of the triangle. Most candidates of a sweep end here, before the
+  // closest-point search (issue 22: a sweep's triangles are ~4 m boxes, the ball's reach cm).
+  if (area2 > 0.0) {
+    const double s_from = cross.dot(from - a), s_to = s_from + cross.dot(motion);
+    const double reach = radius * area2;
+    if ((s_from > reach && s_to > reach) || (s_from < -reach && s_to < -reach)) return false;
+  }
   if ((closest_point_on_triangle(from, a, b, c) - from).squaredNorm() <= r2) {
     *fraction = 0.0;
     return true;
   }
-  const Vec3 cross = (b - a).cross(c - a);
-  const double area2 = cross.norm();
   if (!(area2 > 0.0)) return false;
   const Vec3 n = cross / area2;
 

@@ -48,7 +48,20 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
     ++st.counters.sweeps;
     if (terrain.sweep(pa, pb, radius, &c, nullptr)) {
       const double t_chord = ta + c.fraction * (tb - ta);
-      const auto gap = [&](double t) { return c.normal.dot(position_at(s, t) - c.point) - radius; };
+      // The gap to the face's plane along the step: the dense output's position projected
+      // on the normal is one scalar polynomial in θ, so a root-finding evaluation is a few
+      // flops and one division instead of three components' worth.
+      const Vec3& n = c.normal;
+      const double g1 = n.dot(s.r1.segment<3>(0) - c.point) - radius, g2 = n.dot(s.r2.segment<3>(0)),
+                   g3 = n.dot(s.r3.segment<3>(0)), g4 = n.dot(s.r4.segment<3>(0)), g5 = n.dot(s.r5.segment<3>(0));
+      const auto gap_and_rate = [&](double t) {
+        const double th = (t - s.t0) / s.h;
+        const double th1 = 1.0 - th;
+        const double a = g4 + th1 * g5, b = g3 + th * a, c2 = g2 + th1 * b;
+        const double da = -g5, db = a + th * da, dc = -b + th1 * db;  // d/dθ
+        return std::pair<double, double>(g1 + th * c2, (c2 + th * dc) / s.h);
+      };
+      const auto gap = [&](double t) { return gap_and_rate(t).first; };
       double ga = gap(ta);
       const double gb = gap(tb);
       double t_lo = ta;
@@ -68,7 +81,7 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
       }
       double th = t_chord;
       if (ga > 0.0 && gb <= 0.0) {
-        const double tr = find_root(gap, t_lo, tb, ga, gb);
+        const double tr = find_root_newton(gap_and_rate, t_lo, tb, t_chord);
         // The plane is met no later than the triangle; a root far earlier means the ball
         // grazed the triangle's edge instead of its face: keep the swept time then.
         if (t_lo > ta || (t_chord - tr) * (pb - pa).norm() / (tb - ta) < 0.01) th = tr;
@@ -114,8 +127,12 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     throw InputError("flight: the ball's state became non-finite at t = " + std::to_string(s.t) +
                      " s; the inputs are outside what the flight models can represent");
   }
-  // Apex: vertical velocity crossing zero inside the step.
-  if (seg.r1[4] > 0.0 && y1[4] <= 0.0) {
+  // Apex: vertical velocity crossing zero inside the step. The dense output's height is at
+  // most r1 + |r2| + |r3| + |r4| + |r5| (θ and 1 − θ lie in [0, 1]); a step that cannot rise
+  // above the highest point so far (every hop after a carry) needs no root.
+  const double height_bound = seg.r1[1] + std::abs(seg.r2[1]) + std::abs(seg.r3[1]) + std::abs(seg.r4[1]) +
+                              std::abs(seg.r5[1]);
+  if (seg.r1[4] > 0.0 && y1[4] <= 0.0 && height_bound > s.max_height) {
     const double ta = find_root([&](double t) { return seg.component(t, 4); }, seg.t0, seg.t1(), seg.r1[4], y1[4]);
     s.max_height = std::max(s.max_height, seg.component(ta, 1));
   }

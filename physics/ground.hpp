@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -143,6 +144,13 @@ class Terrain {
   virtual bool support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const = 0;
   /// Broad phase: false only when a sphere of `radius` on the segment certainly touches nothing.
   virtual bool may_touch(const Vec3& from, const Vec3& to, double radius) const = 0;
+  /// The broad phase's bound itself: no surface under the segment's box grown by `radius`
+  /// rises above this height (m; -inf when there is none). may_touch is min(from.y, to.y) -
+  /// radius <= top_under. One query bounds every sub-segment inside the box, so a step's
+  /// chords need no query of their own while they pass above it. +inf: no bound known.
+  virtual double top_under(const Vec3& /*from*/, const Vec3& /*to*/, double /*radius*/) const {
+    return std::numeric_limits<double>::infinity();
+  }
   /// Broad phase for a rolling ball: false only when no surface steeper than kFollowAngle
   /// (a wall, a bank) can be touched.
   virtual bool may_touch_steep(const Vec3& from, const Vec3& to, double radius) const = 0;
@@ -173,6 +181,7 @@ class FlatGround final : public Terrain {
              const Vec3* follow) const override;
   bool support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const override;
   bool may_touch(const Vec3& from, const Vec3& to, double radius) const override;
+  double top_under(const Vec3&, const Vec3&, double) const override { return height_; }
   bool may_touch_steep(const Vec3&, const Vec3&, double) const override { return false; }
   double reference_height() const override { return height_; }
   const SurfaceMaterial& material(int) const override { return material_; }

@@ -694,6 +694,10 @@ bool World::may_touch(const Vec3& from, const Vec3& to, double radius) const {
   return std::min(from.y(), to.y()) - radius <= impl_->highest(impl_->top, from, to, radius);
 }
 
+double World::top_under(const Vec3& from, const Vec3& to, double radius) const {
+  return impl_->highest(impl_->top, from, to, radius);
+}
+
 bool World::may_touch_steep(const Vec3& from, const Vec3& to, double radius) const {
   return std::min(from.y(), to.y()) - radius <= impl_->highest(impl_->steep_top, from, to, radius);
 }

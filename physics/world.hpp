@@ -74,6 +74,7 @@ class World final : public Terrain {
              const Vec3* follow) const override;
   bool support(const Vec3& centre, double radius, double reach, SurfaceContact* hit) const override;
   bool may_touch(const Vec3& from, const Vec3& to, double radius) const override;
+  double top_under(const Vec3& from, const Vec3& to, double radius) const override;
   bool may_touch_steep(const Vec3& from, const Vec3& to, double radius) const override;
   const SurfaceMaterial& material(int index) const override;
   /// In the declared bounds and not below the floor: 1 m under the lowest collidable vertex

@@ -31,17 +31,20 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
   const Vec3 p1 = y1.segment<3>(0);
   // The arc strays from its chord by at most |Δv|·h/8 (exact for constant acceleration).
   const double sag = (y1.segment<3>(3) - s.r1.segment<3>(3)).norm() * s.h / 8.0 + 1e-3;
-  if (!terrain.may_touch(p0, p1, radius + sag)) return false;
+  // The highest surface under the whole step (its box grown by the sag): a chord that
+  // passes above it cannot touch anything, so most chords of a hop need no query.
+  const double top = terrain.top_under(p0, p1, radius + sag);
+  if (std::min(p0.y(), p1.y()) - (radius + sag) > top) return false;
   const int chords = std::max(1, static_cast<int>(std::ceil(s.h / kChordDuration)));
   Vec3 pa = p0;
   for (int k = 0; k < chords; ++k) {
     const double ta = s.t0 + s.h * k / chords;
     const double tb = k + 1 == chords ? s.t1() : s.t0 + s.h * (k + 1) / chords;
-    const Vec3 pb = k + 1 == chords ? p1 : position_at(s, tb);
+    const Vec3 pb = k + 1 == chords ? p1 : position_at_fraction(s, static_cast<double>(k + 1) / chords);
     SurfaceContact c;
     // A sub-chord of 1/n of the step strays 1/n² as far.
     const double chord_sag = (sag - 1e-3) / (chords * chords) + 1e-3;
-    if (!terrain.may_touch(pa, pb, radius + chord_sag)) {
+    if (std::min(pa.y(), pb.y()) - (radius + chord_sag) > top || !terrain.may_touch(pa, pb, radius + chord_sag)) {
       pa = pb;
       continue;
     }

@@ -148,6 +148,13 @@ double find_root_newton(const GD& gd, double a, double b, double x0) {
   return b;
 }
 
+/// The position a fraction θ in [0, 1] of the way through the step (no division by h).
+inline Vec3 position_at_fraction(const Segment& s, double th) {
+  const double th1 = 1.0 - th;
+  return s.r1.segment<3>(0) +
+         th * (s.r2.segment<3>(0) + th1 * (s.r3.segment<3>(0) + th * (s.r4.segment<3>(0) + th1 * s.r5.segment<3>(0))));
+}
+
 inline Vec3 position_at(const Segment& s, double t) {
   return Vec3(s.component(t, 0), s.component(t, 1), s.component(t, 2));
 }

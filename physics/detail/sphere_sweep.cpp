@@ -43,16 +43,20 @@ bool sphere_triangle_sweep(const Vec3& from, const Vec3& motion, double radius, 
                            const Vec3& c, double* fraction) {
   const double r2 = radius * radius;
   const Vec3 cross = (b - a).cross(c - a);
-  const double area2 = cross.norm();
+  const double cross2 = cross.squaredNorm();
   // The centre's distance to the triangle's plane is linear along the sweep: when both ends
   // are farther than the radius on the same side, no point of the path comes within reach
   // of the plane, let alone of the triangle. Most candidates of a sweep end here, before the
   // closest-point search (issue 22: a sweep's triangles are ~4 m boxes, the ball's reach cm).
-  if (area2 > 0.0) {
+  // Compared squared (|s| > r·|cross| as s² > r²·|cross|²), so no square root is waited for.
+  {
     const double s_from = cross.dot(from - a), s_to = s_from + cross.dot(motion);
-    const double reach = radius * area2;
-    if ((s_from > reach && s_to > reach) || (s_from < -reach && s_to < -reach)) return false;
+    const double reach2 = r2 * cross2;
+    if (cross2 > 0.0 && ((s_from > 0.0 && s_to > 0.0) || (s_from < 0.0 && s_to < 0.0)) && s_from * s_from > reach2 &&
+        s_to * s_to > reach2)
+      return false;
   }
+  const double area2 = std::sqrt(cross2);
   if ((closest_point_on_triangle(from, a, b, c) - from).squaredNorm() <= r2) {
     *fraction = 0.0;
     return true;

@@ -34,8 +34,8 @@ namespace sweetspot {
 
 /// Integration and termination settings. The defaults aim at what a player sees, not at
 /// round-off (issue 22): carry within 4 mm of a 1e-13 reference, and the rest position
-/// within 1 cm for 99.5 % of a 1 000-launch random sample on golf_hole (worst 1.8 cm) and
-/// for the tour launches (tests/unit/physics/test_flight_accuracy.cpp).
+/// within 1 cm for every launch of a 1 000-launch random sample on golf_hole (worst 7.7 mm)
+/// and for the tour launches (tests/unit/physics/test_flight_accuracy.cpp).
 struct FlightSettings {
   double rel_tol = 1e-6;         ///< integrator relative tolerance per step
   static constexpr Range kRelTol{1e-14, 1e-2};

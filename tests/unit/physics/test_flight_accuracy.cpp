@@ -81,15 +81,17 @@ TEST_CASE("default tolerances: 1000 random golf launches on golf_hole, carry and
     INFO("launch " << i << ": " << mph << " mph, " << deg << "°, aim " << aim << "°, " << rpm << " rpm, axis "
                    << axis << "°: carry error " << e.carry << " m, rest error " << e.rest << " m");
     CHECK(e.carry < 0.01);
-    // Measured worst: 1.8 cm (launch 950, a drive bouncing from the fairway onto the sloped
-    // green, whose meshes share no vertices, so the seam's facets are not smoothed). 2.5 cm
-    // fails on any return of the 5-25 cm jumps.
-    CHECK(e.rest < 0.025);
+    // Issue 22's contract: every rest within 1 cm. Measured worst: 7.7 mm (worst carry 3.3
+    // mm). Before the touch's contact point was taken at the ball's centre on the arc rather
+    // than on the straight chord that found it, 4 of these launches rested 1.0-1.8 cm from
+    // the reference: the smooth bounce normal was read up to a chord's sag away, at a point
+    // that moved with where the integrator's steps fell.
+    CHECK(e.rest < 0.01);
     worst_carry = std::max(worst_carry, e.carry);
     worst_rest = std::max(worst_rest, e.rest);
     if (e.rest >= 0.01) ++rest_over_1cm;
   }
   INFO("worst carry error " << worst_carry << " m, worst rest error " << worst_rest << " m, " << rest_over_1cm
                             << " rests over 1 cm");
-  CHECK(rest_over_1cm <= kLaunches / 100);  // at most 1 % over 1 cm (measured: 5 in 1000, 2 with another seed)
+  CHECK(rest_over_1cm == 0);
 }

@@ -35,7 +35,10 @@
 // on the position (same |gap| < 1e-12 m stop; every built-in shot's carry, total and apex
 // unchanged to the micrometre) gave 0x4ef314c04ec9bae4. A step's chords sampled at fractions
 // k/n of the dense output instead of at times (no division; the touch found on them is the
-// same to 1e-12 m, the built-in shots unchanged to the micrometre) gives the value below.
+// same to 1e-12 m, the built-in shots unchanged to the micrometre) gave 0xabc3a8f3d2f50a52. A
+// touch's contact point taken at the ball's centre on the arc, not on the chord that found
+// it (the smooth bounce normal is read there; totals move by at most 0.13 mm: driver
+// 256.62554 m, heel-slice 252.95533 m, toe-hook 256.89649 m) gives the value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -66,7 +69,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0xabc3a8f3d2f50a52ULL;
+constexpr std::uint64_t kGoldenHash = 0x5e3014ddb95b821dULL;
 
 }  // namespace
 

@@ -164,6 +164,11 @@ class Terrain {
   /// a hair to either side of an edge between two slightly different facets then bounces
   /// alike, instead of in two directions ~0.1° apart that later hops amplify into cm.
   virtual Vec3 bounce_normal(const SurfaceContact& c) const { return c.normal; }
+  /// A touch `c` found by a sweep, given the ball's centre at the touch: where the sweep met
+  /// two faces of one surface at their shared edge at the same instant it reports one of
+  /// them; the touched face is the one the centre's foot lies on. Moves *c there (its
+  /// material, a fairway's or the rough's, with it). Flat ground: nothing to do.
+  virtual void refine_contact(const Vec3& /*centre*/, SurfaceContact* /*c*/) const {}
 };
 
 /// The ground straight below (x, from_y, z), searching `depth` m down: the surface's contact

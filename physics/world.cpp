@@ -714,6 +714,21 @@ bool World::inside(const Vec3& c) const {
 
 double World::reference_height() const { return impl_->desc.origin.y(); }
 
+void World::refine_contact(const Vec3& centre, SurfaceContact* c) const {
+  const Impl& w = *impl_;
+  if (c->mesh < 0 || c->triangle < 0 || static_cast<size_t>(c->mesh) >= w.meshes.size()) return;
+  if (w.over_triangle(c->mesh, c->triangle, centre)) return;
+  // Only a neighbour within the smoothing angle: the same surface across a seam, not a bank
+  // or a wall the ball may be touching at their edge.
+  for (const TriRef& nb : w.meshes[static_cast<size_t>(c->mesh)].neighbours[static_cast<size_t>(c->triangle)]) {
+    if (nb.mesh < 0) continue;
+    const Vec3& nn = w.meshes[static_cast<size_t>(nb.mesh)].normals[static_cast<size_t>(nb.tri)];
+    if (nn.dot(c->normal) < Impl::kSmoothCos || !w.over_triangle(nb.mesh, nb.tri, centre)) continue;
+    w.fill(c, nb.mesh, nb.tri, centre, c->fraction);
+    return;
+  }
+}
+
 Vec3 World::bounce_normal(const SurfaceContact& c) const {
   const Impl& w = *impl_;
   if (c.mesh < 0 || c.triangle < 0 || static_cast<size_t>(c.mesh) >= w.meshes.size()) return c.normal;

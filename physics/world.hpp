@@ -85,6 +85,7 @@ class World final : public Terrain {
   /// vertex normal the angle-weighted mean of the faces at that vertex within 10° of c's
   /// face (sharper bends, banks, lips and walls, keep their edge).
   Vec3 bounce_normal(const SurfaceContact& c) const override;
+  void refine_contact(const Vec3& centre, SurfaceContact* c) const override;
 
  private:
   struct Impl;

@@ -296,3 +296,39 @@ TEST_CASE("hop or roll: the rest moves continuously through the roll threshold",
   CHECK(flips >= 1);          // the sweep does cross the threshold
   CHECK(worst_step < 0.05);   // 2° of launch over 400 steps: ~2 cm of carry per step, no jump on top
 }
+
+TEST_CASE("a touch at a seam is on the face under the ball's centre, with that face's material", "[world][bounce]") {
+  // Issue 22: a sweep meeting a fairway and the rough at their shared edge reports one face;
+  // which one depended on the chord that found it, so a landing on the seam took the
+  // fairway's or the rough's bounce with the integrator's tolerance (19 cm apart at rest).
+  WorldDescription d;
+  d.name = "seam";
+  SurfaceMaterial rough = default_fairway();
+  rough.name = "rough";
+  rough.kind = SurfaceKind::Rough;
+  d.materials = {default_fairway(), rough};
+  WorldMesh fairway, rough_mesh;
+  fairway.material = 0;
+  fairway.vertices = {Vec3(-10, 0, -5), Vec3(-10, 0, 5), Vec3(0, 0, -5), Vec3(0, 0, 5)};
+  fairway.indices = {0, 1, 2, 2, 1, 3};
+  rough_mesh.material = 1;
+  rough_mesh.vertices = {Vec3(0, 0, -5), Vec3(0, 0, 5), Vec3(10, 0, -5), Vec3(10, 0, 5)};
+  rough_mesh.indices = {0, 1, 2, 2, 1, 3};
+  d.meshes = {fairway, rough_mesh};
+  d.bounds_min = Vec3(-10, -5, -5);
+  d.bounds_max = Vec3(10, 100, 5);
+  const World world(d);
+  const double r = golf_ball_properties().radius;
+  // A sweep straight down onto the fairway's side, then the centre's foot moved across the seam.
+  SurfaceContact c;
+  REQUIRE(world.sweep(Vec3(-1e-3, 1.0, 0.3), Vec3(-1e-3, -1.0, 0.3), r, &c, nullptr));
+  CHECK(c.material == 0);
+  SurfaceContact on_rough = c;
+  world.refine_contact(Vec3(1e-3, r, 0.3), &on_rough);
+  CHECK(on_rough.material == 1);
+  CHECK(on_rough.point.x() == Approx(1e-3));
+  SurfaceContact still_fairway = c;
+  world.refine_contact(Vec3(-2e-3, r, 0.3), &still_fairway);
+  CHECK(still_fairway.material == 0);
+  CHECK(still_fairway.triangle == c.triangle);
+}

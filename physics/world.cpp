@@ -103,7 +103,7 @@ struct World::Impl {
   double top_max = -std::numeric_limits<double>::infinity();    // max of top
   double steep_max = -std::numeric_limits<double>::infinity();  // max of steep_top
 
-  /// floor(x) as a cell index, clamped far outside any grid (a grid has at most 512 cells a
+  /// floor(x) as a cell index, clamped far outside any grid (a grid has at most 513 cells a
   /// side) so the conversion is always defined. Without SSE4.1 std::floor is a libm call: a
   /// truncation and one correction are exact and ~10 times cheaper (issue 22: four per query).
   static int floor_index(double x) {

@@ -1,7 +1,7 @@
 // The aero law of physics/aero.hpp in the form the integrator evaluates it: the shot's
 // constants (½ρA/m, ρD/µ, 1/width, 1/onset) folded in once per step instead of once per
-// evaluation, the acceleration returned instead of the force, and the two square roots and
-// two divisions of an evaluation independent of each other so they overlap in the pipeline.
+// evaluation, the acceleration returned instead of the force, and the square roots and
+// divisions of an evaluation independent of each other so they overlap in the pipeline.
 // A flight evaluates it ~130 times per shot: it was a fifth of a golf shot's time (issue 22).
 // The law itself lives here once; aero_effect() (physics/aero.cpp) is this kernel with a
 // unit mass.
@@ -64,7 +64,7 @@ struct AeroKernel {
     const double speed2 = v_rel.squaredNorm();
     const double speed = std::sqrt(speed2);
     *spin_rate = -(m.decay_per_metre * speed + decay_const) * omega;
-    if (!(speed > 0.0)) {
+    if (speed2 == 0.0) {  // (a NaN velocity goes on, so the integrator sees the NaN)
       *accel = Vec3::Zero();
       return;
     }

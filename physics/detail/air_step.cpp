@@ -149,8 +149,9 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     // with them that point (up to their sag, ~5 mm, away), depend on where the integrator's
     // steps fall. The smooth bounce normal is read at this point, so a bounce no longer
     // changes with the tolerance (the 1 000-launch sample's rests over 1 cm of the 1e-13
-    // reference came from here). Where two faces of the surface meet at that point, the one
-    // under the centre is the one touched (which side of a fairway/rough seam it landed on).
+    // reference came from here). Where two faces of one surface that share an edge meet at
+    // that point, the one under the centre is the one touched (which side of a fairway/rough
+    // seam it landed on; meshes that share no vertices are not matched).
     SurfaceContact c = hit.contact;
     const Vec3 centre = s.y.segment<3>(0);
     c.point = centre - c.normal * c.normal.dot(centre - c.point);

@@ -441,39 +441,48 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   }
   // The ground fell away (or turned sharply): the ball leaves it and flies.
   if (gap > kLeaveGap || under.normal.dot(n) < kFollowCos) return leave();
-  // Onto another material (a fairway's edge into the rough, the fringe onto the green): the
-  // step would run on with the old one's resistance past the seam, up to its whole length
-  // (~25 cm), so where the seam fell inside a step moved the rest by centimetres (issue 22's
-  // sample: 3.6 cm against the 1e-13 reference). The step ends at the seam instead, under
-  // the constant acceleration it was taken with, and the next starts there on the new
+  // Onto another material (a fairway's edge into the rough, the fringe onto the green, the
+  // edge of a pond): the step would run on with the old one's resistance past the seam, up
+  // to its whole length (~25 cm), so where the seam fell inside a step moved the rest by
+  // centimetres (issue 22's sample: 3.6 cm against the 1e-13 reference). The step ends at
+  // the seam instead, under the constant acceleration it was taken with (also a step that
+  // stops: the motion holds up to the stop), and the next starts there on the new
   // material. The seam is found by bisection on the ground's material along the way (the
   // faces of two materials need not share an edge: one may overlap the other): 8 halvings
-  // of a step of at most 25 cm place it within 1 mm. Only a step that changes material
-  // pays for it (about one in a shot).
-  if (!stops && under.material != c.material) {
+  // of a step of at most 25 cm place it within about 1 mm. Only a step that changes
+  // material pays for it (about one in a shot).
+  if (under.material != c.material) {
     double lo = 0.0, hi = step_t;
-    SurfaceContact at_hi = under;
+    SurfaceContact at = under;  // the ground the halvings last found on the new side
     for (int i = 0; i < 8; ++i) {
       const double mid = 0.5 * (lo + hi);
       const Vec3 pm = p + v * mid + 0.5 * a * mid * mid;
       SurfaceContact probe = c;  // the old support is the cache hint
-      if (ground_under(terrain, p, pm, r, kLeaveGap + 0.1 * speed * mid, &probe) && probe.material == c.material) {
+      const bool found = ground_under(terrain, p, pm, r, kLeaveGap + 0.1 * speed * mid, &probe);
+      if (found && probe.material == c.material) {
         lo = mid;
       } else {
         hi = mid;
-        if (probe.mesh >= 0) at_hi = probe;
+        if (found) at = probe;
       }
     }
-    if (hi < step_t && at_hi.material != c.material && at_hi.normal.dot(n) >= kFollowCos) {
-      const Vec3 pm = p + v * hi + 0.5 * a * hi * hi;
-      Vec3 vm = v + a * hi;
-      const double sm = vm.norm();
-      vm -= vm.dot(at_hi.normal) * at_hi.normal;
-      if (vm.norm() > 0.0) vm *= sm / vm.norm();
-      s.support = at_hi;
-      s.t += hi;
-      set_rolling(s, pm, vm, at_hi.normal, r);
-      return end_of_roll_step(terrain, s, pm, false, at_hi);
+    // (A query again at hi with another hint can answer the other of two overlapping faces:
+    // the halvings' own answer is kept.) On the new material, gently turned, within reach:
+    Vec3 pm = p + v * hi + 0.5 * a * hi * hi;
+    if (hi < step_t && at.material != c.material && at.normal.dot(n) >= kFollowCos) {
+      const double gm = at.normal.dot(pm - at.point) - r;
+      if (gm <= kLeaveGap) {
+        pm -= gm * at.normal;  // onto the new face, as a step's end is
+        Vec3 vm = v + a * hi;
+        const double sm = vm.norm();
+        vm -= vm.dot(at.normal) * at.normal;
+        if (vm.norm() > 0.0) vm *= sm / vm.norm();
+        s.support = at;
+        s.t += hi;
+        set_rolling(s, pm, vm, at.normal, r);
+        // Rolled into water: it sinks where it enters.
+        return end_of_roll_step(terrain, s, pm, terrain.material(at.material).kind == SurfaceKind::Water, at);
+      }
     }
   }
   p1 -= gap * under.normal;

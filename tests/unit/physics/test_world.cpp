@@ -373,3 +373,27 @@ TEST_CASE("a roll across a seam into the rough: the rest moves continuously with
   INFO("largest rest change between starts 1.25 mm apart: " << worst << " m");
   CHECK(worst < 0.005);  // measured 0.6 mm; 16 cm when the step ran on past the seam
 }
+
+TEST_CASE("a ball rolling into a pond sinks where it enters the water", "[world][roll]") {
+  // The seam split above ends a roll step at the water's edge: the ball sinks there, not up
+  // to a step (25 cm) further in.
+  WorldDescription d = seam_world();
+  d.materials[1].name = "water";
+  d.materials[1].kind = SurfaceKind::Water;
+  const World world(d);
+  const ShotModel model = make_shot_model(golf_ball_properties(), vacuum(), Environment{}, &world);
+  const double r = model.ball.radius;
+  for (double x0 : {-3.0, -2.9, -2.8}) {
+    ShotState s;
+    s.y << x0, r, 0.0, 4.0, 0.0, 0.0, 0.0, 0.0, -4.0 / r;
+    s.phase = Phase::Roll;
+    s.landed = true;
+    REQUIRE(world.support(s.position(), r, 0.01, &s.support));
+    while (!s.ended) step(model, s);
+    INFO("start " << x0 << " m: sank at x = " << s.position().x() << " m");
+    CHECK(s.end == EndReason::Rest);
+    CHECK(s.support.material == 1);
+    CHECK(s.position().x() >= 0.0);
+    CHECK(s.position().x() < 0.005);
+  }
+}

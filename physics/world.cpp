@@ -691,7 +691,7 @@ bool World::support(const Vec3& centre, double radius, double reach, SurfaceCont
 }
 
 bool World::may_touch(const Vec3& from, const Vec3& to, double radius) const {
-  return std::min(from.y(), to.y()) - radius <= impl_->highest(impl_->top, from, to, radius);
+  return std::min(from.y(), to.y()) - radius <= top_under(from, to, radius);
 }
 
 double World::top_under(const Vec3& from, const Vec3& to, double radius) const {

@@ -22,6 +22,16 @@ double stimp_air_drag(const ShotModel& m) {
   return (5.0 / 7.0) * f / (m.ball.mass * v * v);
 }
 
+/// `v` turned into the plane of normal `n`, keeping its speed: a ball rolling onto a
+/// differently sloped face.
+Vec3 turned_into_plane(Vec3 v, const Vec3& n) {
+  const double before = v.norm();
+  v -= v.dot(n) * n;
+  const double after = v.norm();
+  if (after > 0.0) v *= before / after;
+  return v;
+}
+
 void set_rolling(ShotState& s, const Vec3& p, const Vec3& v, const Vec3& n, double r) {
   s.y.segment<3>(0) = p;
   s.y.segment<3>(3) = v;
@@ -327,6 +337,8 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     drag_acc = (5.0 / 7.0) / m.ball.mass * (f - f.dot(n) * n);
   }
   const Vec3 a = slope_acc + drag_acc - resist * dir;
+  // The step's motion: constant acceleration along the face.
+  const auto position_after = [&](double t) { return p + v * t + 0.5 * a * t * t; };
   const double limit = std::min(m.settings.max_time, until) - s.t;
   const double dt = std::min(std::clamp(0.25 / std::max(speed, 1e-3), 1.0 / 240.0, 0.1), limit);
   Vec3 v1 = v + a * dt;
@@ -337,7 +349,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   if (holds && speed > 0.0 && along > 0.0 && (v1.dot(v) <= 0.0 || speed < m.settings.rest_speed)) {
     // Comes to rest inside the step: advance exactly to the stop.
     step_t = speed / along;
-    p1 = p + v * step_t + 0.5 * a * step_t * step_t;
+    p1 = position_after(step_t);
     v1 = Vec3::Zero();
     stops = true;
   }
@@ -380,10 +392,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
       // A gentle concave bend (a slope meeting the flat, the far side of a hollow): roll on
       // onto the new face from where the ball meets it, keeping its speed.
       const Vec3 at = p + f * (p1 - p);
-      Vec3 vb = v + f * (v1 - v);
-      const double sp = vb.norm();
-      vb -= vb.dot(met.normal) * met.normal;
-      if (vb.norm() > 0.0) vb *= sp / vb.norm();
+      const Vec3 vb = turned_into_plane(v + f * (v1 - v), met.normal);
       s.t += f * step_t;
       s.support = met;
       set_rolling(s, at, vb, met.normal, r);
@@ -456,7 +465,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     SurfaceContact at = under;  // the ground the halvings last found on the new side
     for (int i = 0; i < 8; ++i) {
       const double mid = 0.5 * (lo + hi);
-      const Vec3 pm = p + v * mid + 0.5 * a * mid * mid;
+      const Vec3 pm = position_after(mid);
       SurfaceContact probe = c;  // the old support is the cache hint
       const bool found = ground_under(terrain, p, pm, r, kLeaveGap + 0.1 * speed * mid, &probe);
       if (found && probe.material == c.material) {
@@ -468,15 +477,12 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     }
     // (A query again at hi with another hint can answer the other of two overlapping faces:
     // the halvings' own answer is kept.) On the new material, gently turned, within reach:
-    Vec3 pm = p + v * hi + 0.5 * a * hi * hi;
+    Vec3 pm = position_after(hi);
     if (hi < step_t && at.material != c.material && at.normal.dot(n) >= kFollowCos) {
       const double gm = at.normal.dot(pm - at.point) - r;
       if (gm <= kLeaveGap) {
         pm -= gm * at.normal;  // onto the new face, as a step's end is
-        Vec3 vm = v + a * hi;
-        const double sm = vm.norm();
-        vm -= vm.dot(at.normal) * at.normal;
-        if (vm.norm() > 0.0) vm *= sm / vm.norm();
+        const Vec3 vm = turned_into_plane(v + a * hi, at.normal);
         s.support = at;
         s.t += hi;
         set_rolling(s, pm, vm, at.normal, r);
@@ -502,10 +508,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
       return crease_step(m, s, until);
     }
     // Onto a differently sloped facet: turn the velocity into its plane, keeping speed.
-    const double s1 = v1.norm();
-    v1 -= v1.dot(under.normal) * under.normal;
-    const double s2 = v1.norm();
-    if (s2 > 0.0) v1 *= s1 / s2;
+    v1 = turned_into_plane(v1, under.normal);
   }
   s.support = under;
   s.t += step_t;

@@ -322,6 +322,18 @@ WorldDescription seam_world() {
   return d;
 }
 
+/// A ball set rolling along +x at `speed` from (x0, on the ground, 0), run to its end.
+ShotState roll_to_end(const World& world, const ShotModel& model, double x0, double speed) {
+  const double r = model.ball.radius;
+  ShotState s;
+  s.y << x0, r, 0.0, speed, 0.0, 0.0, 0.0, 0.0, -speed / r;  // spin of a rolling ball
+  s.phase = Phase::Roll;
+  s.landed = true;
+  REQUIRE(world.support(s.position(), r, 0.01, &s.support));
+  while (!s.ended) step(model, s);
+  return s;
+}
+
 }  // namespace
 
 TEST_CASE("a touch at a seam is on the face under the ball's centre, with that face's material", "[world][bounce]") {
@@ -350,16 +362,9 @@ TEST_CASE("a roll across a seam into the rough: the rest moves continuously with
   // between two runs 0.3 mm apart at the roll's start). The step now ends at the seam.
   const World world(seam_world());
   const ShotModel model = make_shot_model(golf_ball_properties(), vacuum(), Environment{}, &world);
-  const double r = model.ball.radius;
   const auto rest_x = [&](double x0) {
     constexpr double kSpeed = 4.0;  // m/s: crosses the seam at ~3 m/s, rests ~0.7 m into the rough
-    ShotState s;
-    s.y << x0, r, 0.0, kSpeed, 0.0, 0.0, 0.0, 0.0, -kSpeed / r;  // rolling along +x
-    s.phase = Phase::Roll;
-    s.landed = true;
-    REQUIRE(world.support(s.position(), r, 0.01, &s.support));
-    while (!s.ended) step(model, s);
-    return s.position().x();
+    return roll_to_end(world, model, x0, kSpeed).position().x();
   };
   // Starts 1.25 mm apart over one roll step's length (25 cm at these speeds), so the seam
   // falls everywhere inside a step: the rest moves smoothly, by about as much as the start.
@@ -382,14 +387,8 @@ TEST_CASE("a ball rolling into a pond sinks where it enters the water", "[world]
   d.materials[1].kind = SurfaceKind::Water;
   const World world(d);
   const ShotModel model = make_shot_model(golf_ball_properties(), vacuum(), Environment{}, &world);
-  const double r = model.ball.radius;
   for (double x0 : {-3.0, -2.9, -2.8}) {
-    ShotState s;
-    s.y << x0, r, 0.0, 4.0, 0.0, 0.0, 0.0, 0.0, -4.0 / r;
-    s.phase = Phase::Roll;
-    s.landed = true;
-    REQUIRE(world.support(s.position(), r, 0.01, &s.support));
-    while (!s.ended) step(model, s);
+    const ShotState s = roll_to_end(world, model, x0, 4.0);
     INFO("start " << x0 << " m: sank at x = " << s.position().x() << " m");
     CHECK(s.end == EndReason::Rest);
     CHECK(s.support.material == 1);

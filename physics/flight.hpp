@@ -112,7 +112,7 @@ struct ShotState {
   double hop_layer = 0.0;
   SurfaceContact support;             ///< Roll/Rest: the surface under the ball
   // Integrator carry (DopriCarry<9>): next trial step and the first-same-as-last derivative.
-  double step_size = 0.01;            ///< s
+  double step_size = 0.01;            ///< s; 0: the next air step chooses its own (a launch)
   Eigen::Matrix<double, 9, 1> rate = Eigen::Matrix<double, 9, 1>::Zero();
   bool rate_valid = false;
   FlightStats counters;               ///< work done so far (budget and benchmarks)

@@ -48,9 +48,21 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
       pa = pb;
       continue;
     }
-    ++st.counters.sweeps;
-    if (terrain.sweep(pa, pb, radius, &c, nullptr)) {
-      const double t_chord = ta + c.fraction * (tb - ta);
+    // The sweep of this chord from `from` (time t_from) to pb; on a hit, the touch time on
+    // the dense output. A ball that starts the chord on a surface and leaves it (launched
+    // off the ground, just bounced) but comes back to that surface's plane within the chord
+    // is swept again from the first moment it is clear of the plane: what it meets is then
+    // the first face on its way, not that plane where it returns (a launch at 0.6° toward a
+    // step in the ground crossed the step's riser and "landed" on the plane of the floor
+    // under it, inside the ground: a random-world soak finding once the launch's first step
+    // grew to 0.25 s).
+    bool retried = false;
+    Vec3 from = pa;
+    double t_from = ta;
+    for (;;) {
+      ++st.counters.sweeps;
+      if (!terrain.sweep(from, pb, radius, &c, nullptr)) break;
+      const double t_chord = t_from + c.fraction * (tb - t_from);
       // The gap to the face's plane along the step: the dense output's position projected
       // on the normal is one scalar polynomial in θ, so a root-finding evaluation is a few
       // flops and one division instead of three components' worth.
@@ -65,21 +77,27 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
         return std::pair<double, double>(g1 + th * c2, (c2 + th * dc) / s.h);
       };
       const auto gap = [&](double t) { return gap_and_rate(t).first; };
-      double ga = gap(ta);
+      double ga = gap(t_from);
       const double gb = gap(tb);
-      double t_lo = ta;
-      if (!(ga > 0.0) && gb <= 0.0 && c.normal.dot(velocity_at(s, ta)) > 0.0) {
+      double t_lo = t_from;
+      if (!(ga > 0.0) && gb <= 0.0 && c.normal.dot(velocity_at(s, t_from)) > 0.0) {
         // The step starts on the surface with the ball leaving it (just bounced) and ends
         // back on it: a hop shorter than the step (a heavy-topspin ball pressed down by
         // Magnus). The touch is where it comes back, not where it left: find the first
         // moment it is clear of the plane, then the root after it.
         for (const double f : {1.0 / 1024, 1.0 / 256, 1.0 / 64, 1.0 / 16, 1.0 / 4, 1.0 / 2, 3.0 / 4}) {
-          const double t = ta + f * (tb - ta);
+          const double t = t_from + f * (tb - t_from);
           if (gap(t) > 0.0) {
             t_lo = t;
             ga = gap(t);
             break;
           }
+        }
+        if (t_lo > t_from && !retried) {
+          retried = true;
+          from = position_at_fraction(s, (t_lo - s.t0) / s.h);
+          t_from = t_lo;
+          continue;
         }
       }
       double th = t_chord;
@@ -87,7 +105,7 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
         const double tr = find_root_newton(gap_and_rate, t_lo, tb, t_chord);
         // The plane is met no later than the triangle; a root far earlier means the ball
         // grazed the triangle's edge instead of its face: keep the swept time then.
-        if (t_lo > ta || (t_chord - tr) * (pb - pa).norm() / (tb - ta) < 0.01) th = tr;
+        if (t_lo > t_from || (t_chord - tr) * (pb - from).norm() / (tb - t_from) < 0.01) th = tr;
       }
       hit->t = th;
       hit->contact = c;
@@ -99,6 +117,17 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
 }
 
 bool finite(const State9& y) { return y.allFinite(); }
+
+/// The first trial step of a launch (s). At rel_tol 1e-6 the carry's accepted steps start
+/// at ~0.25 s and grow to ~0.9 s (golf and baseball alike: their flights are seconds long
+/// and smooth); DOPRI5's local error grows as h⁵, so the step that meets another tolerance
+/// scales as its fifth root (1e-13: 10 ms). A first trial that is too long costs one
+/// rejected trial; the 10 ms it replaces took two extra steps growing out of it (the step
+/// may grow at most 5x a step), ~4 % of a golf shot's time (issue 22).
+double launch_step(double rel_tol) {
+  constexpr double kStepAtMicro = 0.25;  // s, at rel_tol = 1e-6
+  return std::clamp(kStepAtMicro * std::pow(rel_tol / 1e-6, 0.2), 1e-4, 1.0);
+}
 
 }  // namespace
 
@@ -121,6 +150,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   double t1 = s.t;
   State9 y1 = s.y;
   const Dynamics f(m, ContactLayer::of(m, s));
+  if (!(carry.h > 0.0)) carry.h = launch_step(tol.rel_tol);  // a launch: no step taken yet
   s.counters.rejected_steps += dopri_step(f, tol, carry, t1, y1, std::min(until, set.max_time), seg);
   ++s.counters.flight_steps;
   s.step_size = carry.h;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sweetspot {
 namespace {
@@ -18,6 +19,19 @@ double cup_capture_speed(const Cup& cup, double ball_radius, double offset) {
   if (b >= cup.radius) return 0.0;
   const double chord = 2.0 * std::sqrt(cup.radius * cup.radius - b * b);
   return std::max(0.0, (chord - ball_radius) * std::sqrt(kGravity / (2.0 * ball_radius)));
+}
+
+double cup_entry(const Cup& cup, const Vec3& from, const Vec3& to, const Vec3& up) {
+  const auto flat = [&](const Vec3& p) { Vec3 d = p - cup.centre; return Vec3(d - d.dot(up) * up); };
+  const Vec3 a = flat(from), d = flat(to) - a;
+  const double len2 = d.squaredNorm();
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  if (len2 <= 0.0) return kNever;
+  const double s = -a.dot(d) / len2;  // closest approach to the axis
+  const double offset2 = (a + s * d).squaredNorm();
+  if (offset2 >= cup.radius * cup.radius) return kNever;
+  const double half = std::sqrt((cup.radius * cup.radius - offset2) / len2);
+  return s + half < 0.0 ? kNever : s - half;
 }
 
 CupPass pass_over_cup(const Cup& cup, double ball_radius, const Vec3& from, const Vec3& to, const Vec3& v,

@@ -46,6 +46,10 @@ struct CupPass {
   double fraction = 1.0;        ///< along from→to where it happened
   Vec3 velocity = Vec3::Zero(); ///< after (LipOut, Stick: the ball goes on)
 };
+/// Where the centre's straight path from→to enters the hole's circle (radius cup.radius
+/// about its axis), as a fraction of the way; +infinity when the path misses the circle or
+/// meets it only behind `from`. `up`: the green's normal there.
+double cup_entry(const Cup& cup, const Vec3& from, const Vec3& to, const Vec3& up);
 /// `up`: the green's normal there (the hole is cut perpendicular to it).
 CupPass pass_over_cup(const Cup& cup, double ball_radius, const Vec3& from, const Vec3& to, const Vec3& v,
                       const Vec3& up);

@@ -24,18 +24,18 @@ SurfaceMaterial stimp_green(double feet) {
   return g;
 }
 
-// A ball rolling (already gripping) along +x toward a hole 2 m away, `offset` m to the side,
-// arriving at about `arrive` m/s on a flat 10 ft green. Returns the shot's end.
-EndReason putt(double arrive, double offset, bool flagstick) {
+// A ball rolling (already gripping) along +x toward a hole `distance` m away, `offset` m to the
+// side, arriving at about `arrive` m/s on a flat 10 ft green. Returns the shot's end.
+EndReason putt(double arrive, double offset, bool flagstick, double distance = 2.0) {
   static const FlatGround green(stimp_green(10.0));
   ShotModel model = test::golf_model(&green);
   Cup cup;
-  cup.centre = Vec3(2.0, 0.0, offset);
+  cup.centre = Vec3(distance, 0.0, offset);
   cup.flagstick = flagstick;
   model.cup = cup;
   // Constant deceleration a (air included in the reading): v0² = v² + 2 a d.
   const double a = rolling_resistance_from_stimp(ft_to_m(10.0)) * kGravity;
-  const double v0 = std::sqrt(arrive * arrive + 2.0 * a * 2.0);
+  const double v0 = std::sqrt(arrive * arrive + 2.0 * a * distance);
   LaunchState l;
   l.position = Vec3(0.0, kR, 0.0);
   l.velocity = Vec3(v0, 0.0, 0.0);
@@ -71,6 +71,20 @@ TEST_CASE("a rolling putt drops below the capture speed and rides over above it"
   CHECK(putt(1.20, 0.030, false) != EndReason::InCup);
   // Past the rim: never.
   CHECK(putt(0.50, 0.060, false) != EndReason::InCup);
+}
+
+TEST_CASE("the hole judges the speed a putt arrives with, whatever its length", "[cup]") {
+  // A roll step is up to 0.5 m long; the hole used to be judged with the speed at the step's
+  // start, up to 0.15 m/s faster than at the rim on a 10 ft green, so whether a putt dropped
+  // depended on where its steps fell. Holmes's centred capture speed is 1.31 m/s (4 mm of
+  // the ball's path and ~1 % of its speed before the rim's circle are not resolved). Putts up
+  // to 3.4 m: `putt` sets the start speed for a constant deceleration, and the air's share,
+  // which grows with speed, slows a longer (faster) putt more than that.
+  for (const double distance : {0.4, 0.9, 1.7, 2.6, 3.35}) {
+    INFO("putt of " << distance << " m");
+    CHECK(putt(1.25, 0.0, false, distance) == EndReason::InCup);
+    CHECK(putt(1.37, 0.0, false, distance) != EndReason::InCup);
+  }
 }
 
 TEST_CASE("the flagstick stops a firm centred putt; a glancing one is turned aside", "[cup]") {

@@ -132,9 +132,20 @@ namespace {
 // (1/m + R²/I) t), so the sticking impulse, the cone test and the slip impulse are scalar
 // formulas. Same impulse as solve_impact to rounding (test_ground.cpp checks it); a bounce
 // costs ~60 flops instead of a 3x3 solve, and the crater's bisection below calls it 40 times.
-ImpactResult bounce_impulse(const SurfaceMaterial& m, const Vec3& n, const Vec3& velocity, const Vec3& spin,
-                            const BallProperties& ball) {
-  ImpactResult res;
+/// The impulse of a ground bounce (N·s on the ball), and what the result reports of it.
+struct GroundImpulse {
+  Vec3 p = Vec3::Zero();
+  double pn = 0.0;          ///< its normal part
+  Vec3 pt = Vec3::Zero();   ///< its tangential part
+  double e = 0.0;           ///< the normal COR used
+  double gain = 0.0;        ///< p·u + ½ pᵀK p: minus the energy lost
+  ContactKind contact = ContactKind::Grip;
+  bool energy_limited = false;
+};
+
+GroundImpulse ground_impulse(const SurfaceMaterial& m, const Vec3& n, const Vec3& velocity, const Vec3& spin,
+                             const BallProperties& ball) {
+  GroundImpulse g;
   const double inv_m = 1.0 / ball.mass;
   const double k_t = inv_m + ball.radius * ball.radius / ball.inertia;  // tangential compliance
   const Vec3 r = -ball.radius * n;                                       // centre to contact
@@ -142,15 +153,14 @@ ImpactResult bounce_impulse(const SurfaceMaterial& m, const Vec3& n, const Vec3&
   const double un = u.dot(n);
   const Vec3 ut = u - un * n;
   const double ut_norm = ut.norm();
-  res.e_used = m.e.at(-un);
-  res.e_t_used = 0.0;
-  const double pn = -(1.0 + res.e_used) * un / inv_m;  // frictionless normal impulse
-  Vec3 pt = -ut / k_t;                                  // ends the slip (e_t = 0)
+  g.e = m.e.at(-un);
+  const double pn = -(1.0 + g.e) * un / inv_m;  // frictionless normal impulse
+  Vec3 pt = -ut / k_t;                           // ends the slip (e_t = 0)
   if (ut_norm / k_t <= m.mu * pn) {
-    res.contact = ContactKind::Grip;
+    g.contact = ContactKind::Grip;
   } else {
     pt = ut * (-m.mu * pn / ut_norm);  // at the cone, against the slip
-    res.contact = ContactKind::Slip;
+    g.contact = ContactKind::Slip;
   }
   const auto gain = [&](double jn, const Vec3& jt) {  // p·u + ½ pᵀK p
     return jn * un + jt.dot(ut) + 0.5 * (jn * jn * inv_m + jt.squaredNorm() * k_t);
@@ -159,20 +169,36 @@ ImpactResult bounce_impulse(const SurfaceMaterial& m, const Vec3& n, const Vec3&
     // As solve_impact: back toward the frictionless impulse until no energy is created
     // (unreachable for e <= 1, kept so the two never disagree).
     pt *= energy_limit_fraction(gain(pn, Vec3::Zero()), pt.dot(ut), 0.5 * pt.squaredNorm() * k_t);
-    res.energy_limited = true;
+    g.energy_limited = true;
   }
-  const Vec3 p = pn * n + pt;
-  res.impulse = p;
-  res.normal_impulse = pn;
-  res.tangential_impulse = pt.norm();
+  g.p = pn * n + pt;
+  g.pn = pn;
+  g.pt = pt;
+  g.gain = gain(pn, pt);
+  return g;
+}
+
+ImpactResult bounce_impulse(const SurfaceMaterial& m, const Vec3& n, const Vec3& velocity, const Vec3& spin,
+                            const BallProperties& ball) {
+  const GroundImpulse g = ground_impulse(m, n, velocity, spin, ball);
+  const double inv_m = 1.0 / ball.mass;
+  const Vec3 r = -ball.radius * n;
+  ImpactResult res;
+  res.e_used = g.e;
+  res.e_t_used = 0.0;
+  res.contact = g.contact;
+  res.energy_limited = g.energy_limited;
+  res.impulse = g.p;
+  res.normal_impulse = g.pn;
+  res.tangential_impulse = g.pt.norm();
   res.impactor_after.inv_mass = 0.0;
   res.impactor_after.inv_inertia = Mat3::Zero();
   res.ball_after.inv_mass = inv_m;
   res.ball_after.inv_inertia = Mat3::Identity() * (1.0 / ball.inertia);
   res.ball_after.r = r;
-  res.ball_after.velocity = velocity + inv_m * p;
-  res.ball_after.angular_velocity = spin + r.cross(p) / ball.inertia;
-  res.energy_loss = -gain(pn, pt);
+  res.ball_after.velocity = velocity + inv_m * g.p;
+  res.ball_after.angular_velocity = spin + r.cross(g.p) / ball.inertia;
+  res.energy_loss = -g.gain;
   return res;
 }
 
@@ -213,8 +239,10 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
     // The far wall can stop a ball but not throw it back: only backspin can (Haake's balls
     // spun back only with backspin). Where the tilt would return a spinless ball of this
     // velocity backwards, it is lowered to the tilt that stops it dead.
+    // (The impulse alone: the crater's bisection asks this 40 times.)
     const auto forward = [&](double t) {
-      return bounce_impulse(m, tilted(face_normal, along, t), velocity, Vec3::Zero(), ball).ball_after.velocity.dot(along);
+      const GroundImpulse g = ground_impulse(m, tilted(face_normal, along, t), velocity, Vec3::Zero(), ball);
+      return (velocity + (1.0 / ball.mass) * g.p).dot(along);
     };
     if (tilt > 0.0 && forward(tilt) < 0.0) {
       double lo = 0.0, hi = tilt;

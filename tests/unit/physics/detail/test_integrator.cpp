@@ -2,7 +2,9 @@
 // dense output's accuracy between the steps.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "physics/detail/integrator.hpp"
 
@@ -72,4 +74,15 @@ TEST_CASE("the step controller meets its tolerance and never stalls on NaN", "[i
   State2 y2(1.0, 0.0);
   CHECK(dopri_step(Poison{}, tol, c2, t2, y2, 1.0, seg) == 0);
   CHECK(std::isnan(y2[0]));
+}
+
+TEST_CASE("the step controller's growth factor is 0.9 norm^-1/5 clamped to [0.2, 5]", "[integrator]") {
+  for (double x = 1e-6; x < 1e4; x *= 1.0007) {
+    const double expected = std::clamp(0.9 * std::pow(x, -0.2), 0.2, 5.0);
+    INFO("norm " << x);
+    CHECK(std::abs(step_growth(x) - expected) <= 1e-10 * expected);
+  }
+  CHECK(step_growth(0.0) == 5.0);
+  CHECK(step_growth(std::numeric_limits<double>::infinity()) == 0.2);
+  CHECK(std::isnan(step_growth(std::numeric_limits<double>::quiet_NaN())));  // a broken state is seen, not hidden
 }

@@ -122,12 +122,13 @@ bool finite(const State9& y) { return y.allFinite(); }
 /// allows it). A ball that leaves the ground at under kShortHopSpeed along the vertical (a
 /// hop under 5 cm high and 0.2 s long: most of a shot's 5-9 hops) moves through air that
 /// barely changes over the hop: drag and lift change by a few per cent of themselves, a
-/// fraction of a per cent of gravity. Its motion is taken at one constant acceleration, the
-/// one at the hop's middle (the midpoint rule: second order in the hop's length), which the
-/// segment `seg` holds exactly as a dense output (a parabola: r4 = r5 = 0), so the contact
-/// search, the apex and the world's bounds read it as they read a DOPRI step. The segment
-/// runs 1.25 hops (a hop off an edge goes on as a flight from its end). Two evaluations of
-/// the equations instead of seven. False (nothing changed) when the hop is not short.
+/// fraction of a per cent of gravity. The equations' rates are taken at the hop's start and
+/// middle and let change linearly between (third order in the hop's length), which makes
+/// position a cubic in time; the segment `seg` holds that exactly as a dense output (r5 = 0),
+/// so the contact search, the apex and the world's bounds read it as they read a DOPRI step.
+/// The segment runs 1.25 hops (a hop off an edge goes on as a flight from its end). Two
+/// evaluations of the equations instead of seven. False (nothing changed) when the hop is
+/// not short.
 bool short_hop(const ShotState& s, const Dynamics& f, double t_end, Segment* seg) {
   constexpr double kShortHopSpeed = 1.0;  // m/s up: a 5.1 cm, 0.20 s vacuum hop
   const double up_speed = s.y[4];

@@ -368,9 +368,10 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   // (the midpoint rule, second order in the step; the drag there scaled from the start's
   // with |v_r|², Cd held: a rolling ball's S stays at 1 and its Re far below the crisis).
   // The acceleration at the step's start (first order) left the drag's fall with speed to
-  // the step length: against a roll taken in steps a tenth as long, the rests of 3 000
-  // random golf launches on golf_hole were 3.3 mm off at the median and 25 mm at the 95th
-  // percentile (707 over 1 cm); at the middle, 0.4 mm and 2.8 mm (12 over 1 cm) (issue 22).
+  // the step length: in steps of 0.25 m and 0.1 s, against a roll in steps a tenth as long,
+  // the rests of 3 000 random golf launches on golf_hole were 3.3 mm off at the median and
+  // 25 mm at the 95th percentile (707 over 1 cm); at the middle, 0.4 mm and 2.8 mm (12 over
+  // 1 cm) (issue 22).
   // A ball that loses half its speed by the middle is about to stop (the stop below is
   // exact) and slow enough that drag no longer matters: there the middle's direction would
   // be the slope's and round-off's, not the motion's, so the start's acceleration is kept.
@@ -464,9 +465,9 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
       const Vec3 at = p + f * (p1 - p);
       const Vec3 vb = turned_into_plane(v + f * (v1 - v), met.normal);
       s.t += f * step_t;
-      // Back and forth across the same bend, as across an edge below: the floor of a valley
-      // between the two faces (a random-world soak finding: a ball rocked across a V's floor
-      // for 35 s to the step limit, each face sending it back onto the other).
+      // Back and forth across the same bend, as across an edge or a seam below: the floor of
+      // a valley between the two faces, each sending the ball back onto the other (at the
+      // seam a random-world soak finding rocked for 35 s to the step limit uncounted).
       if (count_valley_crossing(s, n, met.normal) && enter_crease(s, n, met.normal)) {
         s.support = met;
         set_rolling(s, at, vb, met.normal, r);

@@ -21,36 +21,55 @@ double cup_capture_speed(const Cup& cup, double ball_radius, double offset) {
   return std::max(0.0, (chord - ball_radius) * std::sqrt(kGravity / (2.0 * ball_radius)));
 }
 
-double cup_entry(const Cup& cup, const Vec3& from, const Vec3& to, const Vec3& up) {
+namespace {
+
+/// The centre's straight path from→to seen in the green's plane at the hole (`up` its normal):
+/// its closest approach to the hole's axis and where it crosses the hole's circle.
+struct CupChord {
+  Vec3 a = Vec3::Zero();        ///< from, relative to the axis, in the plane
+  Vec3 d = Vec3::Zero();        ///< the path's step in the plane
+  double len2 = 0.0;            ///< |d|²
+  double s = 0.0;               ///< closest approach, a fraction of the way
+  Vec3 closest = Vec3::Zero();  ///< a + s·d
+  double offset = 0.0;          ///< |closest|, m
+  double half = 0.0;            ///< half the crossing of the circle, a fraction of the way
+  bool crosses = false;         ///< the line meets the circle (offset < radius)
+};
+
+CupChord cup_chord(const Cup& cup, const Vec3& from, const Vec3& to, const Vec3& up) {
+  CupChord c;
   const auto flat = [&](const Vec3& p) { Vec3 d = p - cup.centre; return Vec3(d - d.dot(up) * up); };
-  const Vec3 a = flat(from), d = flat(to) - a;
-  const double len2 = d.squaredNorm();
-  constexpr double kNever = std::numeric_limits<double>::infinity();
-  if (len2 <= 0.0) return kNever;
-  const double s = -a.dot(d) / len2;  // closest approach to the axis
-  const double offset2 = (a + s * d).squaredNorm();
-  if (offset2 >= cup.radius * cup.radius) return kNever;
-  const double half = std::sqrt((cup.radius * cup.radius - offset2) / len2);
-  return s + half < 0.0 ? kNever : s - half;
+  c.a = flat(from);
+  c.d = flat(to) - c.a;
+  c.len2 = c.d.squaredNorm();
+  if (c.len2 <= 0.0) return c;
+  c.s = -c.a.dot(c.d) / c.len2;
+  c.closest = c.a + c.s * c.d;
+  c.offset = c.closest.norm();
+  if (c.offset >= cup.radius) return c;
+  c.half = std::sqrt(cup.radius * cup.radius - c.offset * c.offset) / std::sqrt(c.len2);
+  c.crosses = true;
+  return c;
+}
+
+}  // namespace
+
+double cup_entry(const Cup& cup, const Vec3& from, const Vec3& to, const Vec3& up) {
+  const CupChord c = cup_chord(cup, from, to, up);
+  if (!c.crosses || c.s + c.half < 0.0) return std::numeric_limits<double>::infinity();
+  return c.s - c.half;
 }
 
 CupPass pass_over_cup(const Cup& cup, double ball_radius, const Vec3& from, const Vec3& to, const Vec3& v,
                       const Vec3& up) {
   CupPass out;
   out.velocity = v;
-  // Work in the green's plane at the hole.
-  const auto flat = [&](const Vec3& p) { Vec3 d = p - cup.centre; return Vec3(d - d.dot(up) * up); };
-  const Vec3 a = flat(from), b = flat(to);
-  const Vec3 d = b - a;
-  const double len2 = d.squaredNorm();
-  if (len2 <= 0.0) return out;
-  // Closest approach of the centre's path (the line through this step) to the hole's axis.
-  const double s = -a.dot(d) / len2;
-  const Vec3 closest = a + s * d;
-  const double offset = closest.norm();
-  if (offset >= cup.radius) return out;
-  // Where the path enters the hole's circle; nothing happens unless this step reaches it.
-  const double half = std::sqrt(cup.radius * cup.radius - offset * offset) / std::sqrt(len2);
+  // Work in the green's plane at the hole; nothing happens unless this step reaches the
+  // hole's circle.
+  const CupChord c = cup_chord(cup, from, to, up);
+  if (!c.crosses) return out;
+  const Vec3 &a = c.a, &d = c.d, &closest = c.closest;
+  const double len2 = c.len2, s = c.s, offset = c.offset, half = c.half;
   const double enter = s - half;
   if (enter > 1.0 || s + half < 0.0) return out;
   const Vec3 vt = v - v.dot(up) * up;

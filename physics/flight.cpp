@@ -48,7 +48,7 @@ ShotState start_state(const LaunchState& launch) {
   s.y.segment<3>(3) = launch.velocity;
   s.y.segment<3>(6) = launch.spin;
   s.max_height = launch.position.y();
-  s.step_size = 0.0;  // the first air step chooses it (starting_step)
+  s.step_size = 0.0;  // the first air step chooses it (launch_step in air_step.cpp)
   return s;
 }
 

@@ -120,7 +120,7 @@ bool finite(const State9& y) { return y.allFinite(); }
 
 /// A short hop after a bounce (issue 22: the bounce and roll closed-form where the physics
 /// allows it). A ball that leaves the ground at under kShortHopSpeed along the vertical (a
-/// hop under 5 cm high and 0.2 s long: most of a shot's 5-9 hops) moves through air that
+/// hop under 5 cm high and 0.2 s long: half of a tour drive's hops) moves through air that
 /// barely changes over the hop: drag and lift change by a few per cent of themselves, a
 /// fraction of a per cent of gravity. The equations' rates are taken at the hop's start and
 /// middle and let change linearly between (third order in the hop's length), which makes

@@ -189,8 +189,6 @@ ShotEvent skid(const ShotModel& m, ShotState& s) {
   return ev;
 }
 
-/// The end of a roll or crease step at p1 on `under`: out of the world's box, at rest where
-/// the step stopped, or rolling on.
 /// Counts a roll from the face `from` onto `to`: true once the ball has gone back and forth
 /// between the same two faces kValleyCrossings times in a row (it is then held in the valley
 /// between them; the caller may put it in their crease).
@@ -202,6 +200,8 @@ bool count_valley_crossing(ShotState& s, const Vec3& from, const Vec3& to) {
   return s.chatter >= kValleyCrossings;
 }
 
+/// The end of a roll or crease step at p1 on `under`: out of the world's box, at rest where
+/// the step stopped, or rolling on.
 ShotEvent end_of_roll_step(const Terrain& terrain, ShotState& s, const Vec3& p1, bool stops, const SurfaceContact& under) {
   ShotEvent ev;
   if (!terrain.inside(p1)) {
@@ -410,8 +410,9 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
       return (d - d.dot(up) * up).norm();
     };
     if (s.over_cup && flat_dist(p) > m.cup->radius + r) s.over_cup = false;
+    const bool near_cup = !s.over_cup && flat_dist(p) < 2.0 * (m.cup->radius + speed * step_t + r);
     bool at_rim = false;
-    if (!s.over_cup && flat_dist(p) < 2.0 * (m.cup->radius + speed * step_t + r)) {
+    if (near_cup) {
       // A step that reaches the hole's rim ends there, so the hole judges the speed the ball
       // arrives with, not the speed it had up to 0.5 m before (at a putt's 0.6 m/s² that was up
       // to 0.15 m/s fast: a 1.2 m/s putt rode over a 1.31 m/s capture). Along the chord ĉ the
@@ -432,7 +433,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
         }
       }
     }
-    if (!at_rim && !s.over_cup && flat_dist(p) < 2.0 * (m.cup->radius + speed * step_t + r)) {
+    if (near_cup && !at_rim) {
       const CupPass pass = pass_over_cup(*m.cup, r, p, p1, v, up);
       if (pass.kind != CupPass::Kind::Miss) {
         const double f = pass.fraction;

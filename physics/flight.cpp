@@ -94,7 +94,13 @@ void keep_centre_above_ground(const ShotModel& m, ShotState& s, const Vec3& from
   // is under a quarter of the radius — a centre that close to the chord and behind a face
   // crossed it (its sphere, which the air step sweeps, could not have reached there in
   // front of it). A roll, skid or crease step moves along the ground and is short: always.
-  if (airborne && (s.velocity() - v_from).norm() * dt / 8.0 > 0.25 * m.ball.radius) return;
+  // An air step that ended at a touch ended its arc with the velocity it touched with, not
+  // the bounce's: a hop that leaves at 0.9 m/s up and bounces off again at 0.7 m/s up has
+  // swung through 1.8 m/s, not 0.2 (judged by the velocity after the bounce, every short hop
+  // was swept again here, ~1 200 instructions each; issue 22).
+  const bool touched = ev.kind == ShotEventKind::Landing || ev.kind == ShotEventKind::Bounce;
+  const Vec3 v_end = touched ? ev.velocity_in : s.velocity();
+  if (airborne && (v_end - v_from).norm() * dt / 8.0 > 0.25 * m.ball.radius) return;
   if (!m.terrain->may_touch(from, to, 0.0)) return;  // far above everything (most of a carry)
   SurfaceContact hit;
   ++s.counters.sweeps;

@@ -61,6 +61,11 @@ constexpr Finding kFindings[] = {
     // the ball's first direction drove it down the slope after it turned back; the step ends
     // where the ball turns (roll_step.cpp).
     {5, 1783, 0, "302 bounces (rocking across a V)"},
+    // A ball skimming up an 11.6° slope nearly along it: the chord's touch near the chord's
+    // start, the arc's return to that face's plane 2 m on, past a concave bend onto a 14°
+    // facet that the arc had passed through; the arc past a chord's touch is swept too
+    // (air_step.cpp, sweep_past_touch).
+    {6, 1556, 7, "3.6 cm inside a steeper facet (a skim past a concave bend)"},
 };
 
 }  // namespace

@@ -70,8 +70,13 @@ bool sphere_triangle_sweep(const Vec3& from, const Vec3& motion, double radius, 
   const double ds = n.dot(motion);
   if (s0 * ds < 0.0) {
     const double side = s0 > 0.0 ? 1.0 : -1.0;
-    const double t = (s0 - side * radius) / -ds;
-    if (t >= 0.0 && t <= 1.0) {
+    // A sphere already reaching the plane at the start (t < 0) touches it at once: the
+    // closest-point test above says so too, but only up to rounding. A ball placed exactly
+    // on the plane (its centre r off it) and moving into it could pass both tests by an ulp
+    // each (s0 a hair under r here, the distance a hair over r there) and the face was missed
+    // entirely: a launch along a slope passed 7 mm into it (test_world.cpp).
+    const double t = std::max((s0 - side * radius) / -ds, 0.0);
+    if (t <= 1.0) {
       const Vec3 q = from + t * motion - side * radius * n;
       const double eps = -1e-12 * area2;
       if (n.dot((b - a).cross(q - a)) >= eps && n.dot((c - b).cross(q - b)) >= eps &&

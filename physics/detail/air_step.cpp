@@ -119,10 +119,9 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
       if (!terrain.sweep(from, pb, radius, &c, nullptr)) break;
       const double t_chord = t_from + c.fraction * (tb - t_from);
       // The gap to the face's plane along the step.
-      const PlaneGap gap_and_rate(s, c.normal, c.point, radius);
-      const auto gap = [&](double t) { return gap_and_rate.gap(t); };
-      double ga = gap(t_from);
-      const double gb = gap(tb);
+      const PlaneGap plane(s, c.normal, c.point, radius);
+      double ga = plane.gap(t_from);
+      const double gb = plane.gap(tb);
       double t_lo = t_from;
       if (!(ga > 0.0) && gb <= 0.0 && c.normal.dot(velocity_at(s, t_from)) > 0.0) {
         // The step starts on the surface with the ball leaving it (just bounced) and ends
@@ -131,9 +130,9 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
         // moment it is clear of the plane, then the root after it.
         for (const double f : {1.0 / 1024, 1.0 / 256, 1.0 / 64, 1.0 / 16, 1.0 / 4, 1.0 / 2, 3.0 / 4}) {
           const double t = t_from + f * (tb - t_from);
-          if (gap(t) > 0.0) {
+          if (plane.gap(t) > 0.0) {
             t_lo = t;
-            ga = gap(t);
+            ga = plane.gap(t);
             break;
           }
         }
@@ -146,7 +145,7 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
       }
       double th = t_chord;
       if (ga > 0.0 && gb <= 0.0) {
-        const double tr = find_root_newton(gap_and_rate, t_lo, tb, t_chord);
+        const double tr = find_root_newton(plane, t_lo, tb, t_chord);
         // The plane is met no later than the triangle; a root far earlier means the ball
         // grazed the triangle's edge instead of its face: keep the swept time then.
         if (t_lo > t_from || (t_chord - tr) * (pb - from).norm() / (tb - t_from) < 0.01) th = tr;

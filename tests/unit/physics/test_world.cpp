@@ -231,20 +231,25 @@ TEST_CASE("degenerate meshes: NaN rejected with a clear message, zero-area trian
 
 namespace {
 
-/// Two strips meeting along x = 0: flat for x < 0, rising at `bend_deg` for x > 0.
-WorldDescription bent_world(double bend_deg) {
+/// Two strips meeting along x = bend_x across z in [-5, 5], from x0 to x1: rising at
+/// `lower_deg` (through the origin) before the bend, at `upper_deg` after it.
+WorldDescription two_slope_world(double lower_deg, double upper_deg, double bend_x, double x0, double x1) {
   WorldDescription d;
   d.name = "bend";
   d.materials = {default_fairway()};
   WorldMesh m;
-  const double rise = std::tan(deg_to_rad(bend_deg)) * 10.0;
-  m.vertices = {Vec3(-10, 0, -5), Vec3(-10, 0, 5), Vec3(0, 0, -5), Vec3(0, 0, 5), Vec3(10, rise, -5), Vec3(10, rise, 5)};
+  const double lower = std::tan(deg_to_rad(lower_deg)), upper = std::tan(deg_to_rad(upper_deg));
+  const double y0 = lower * x0, y_bend = lower * bend_x, y1 = y_bend + upper * (x1 - bend_x);
+  m.vertices = {Vec3(x0, y0, -5), Vec3(x0, y0, 5), Vec3(bend_x, y_bend, -5), Vec3(bend_x, y_bend, 5), Vec3(x1, y1, -5), Vec3(x1, y1, 5)};
   m.indices = {0, 1, 2, 2, 1, 3, 2, 3, 4, 4, 3, 5};  // counter-clockwise from above: normals up
   d.meshes = {m};
-  d.bounds_min = Vec3(-10, -5, -5);
-  d.bounds_max = Vec3(10, 100, 5);
+  d.bounds_min = Vec3(x0, -5, -5);
+  d.bounds_max = Vec3(x1, 100, 5);
   return d;
 }
+
+/// Two strips meeting along x = 0: flat for x < 0, rising at `bend_deg` for x > 0.
+WorldDescription bent_world(double bend_deg) { return two_slope_world(0.0, bend_deg, 0.0, -10.0, 10.0); }
 
 /// The contact on the ground straight under (x, 0, 0.3).
 SurfaceContact ground_at(const World& w, double x) {
@@ -402,20 +407,7 @@ namespace {
 /// A slope rising at `lower_deg` along +x up to x = bend_x, then more steeply at `upper_deg`:
 /// a concave bend across the ball's path.
 WorldDescription concave_bend_world(double lower_deg, double upper_deg, double bend_x) {
-  WorldDescription d;
-  d.name = "concave bend";
-  d.materials = {default_fairway()};
-  WorldMesh m;
-  const double y_bend = std::tan(deg_to_rad(lower_deg)) * bend_x;
-  const double x_end = 40.0, y_end = y_bend + std::tan(deg_to_rad(upper_deg)) * (x_end - bend_x);
-  m.vertices = {Vec3(-5, -std::tan(deg_to_rad(lower_deg)) * 5.0, -5), Vec3(-5, -std::tan(deg_to_rad(lower_deg)) * 5.0, 5),
-                Vec3(bend_x, y_bend, -5),                          Vec3(bend_x, y_bend, 5),
-                Vec3(x_end, y_end, -5),                            Vec3(x_end, y_end, 5)};
-  m.indices = {0, 1, 2, 2, 1, 3, 2, 3, 4, 4, 3, 5};  // counter-clockwise from above: normals up
-  d.meshes = {m};
-  d.bounds_min = Vec3(-5, -5, -5);
-  d.bounds_max = Vec3(40, 100, 5);
-  return d;
+  return two_slope_world(lower_deg, upper_deg, bend_x, -5.0, 40.0);
 }
 
 }  // namespace

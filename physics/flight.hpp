@@ -103,6 +103,9 @@ struct ShotState {
   /// Consecutive steps that did not advance the clock (a ball the faces hold, passed from a
   /// touch to a roll and back at one instant): see step().
   int stalled = 0;
+  /// s; the last time the ball was in the air or rolling at rest_speed or faster (a ball
+  /// slower than that for half a second is asleep: see step()).
+  double sleep_since = 0.0;
   /// Roll in a crease: the two faces that hold the ball (both zero when not in one). The
   /// ball moves along their line n1 × n2 only (physics/detail/roll_step.cpp).
   Vec3 crease_n1 = Vec3::Zero(), crease_n2 = Vec3::Zero();

@@ -11,6 +11,10 @@ namespace {
 
 /// Ball bottom more than this above the support plane: the ground fell away, fly.
 constexpr double kLeaveGap = 0.01;  // m
+/// A sweep along the face a ball rolls on starts this far off it (m), so that face, which
+/// the ball moves along, is not met at the start while any other is (1 µm: far below the
+/// centimetre the game resolves, far above the round-off of a position ~1 km from the origin).
+constexpr double kOffFace = 1e-6;
 
 /// The still air's deceleration per v² (1/m) of a ball rolling like the Stimpmeter's
 /// (1.83 m/s, spinning with the roll), along the ground: 5/7 of the drag on a free ball.
@@ -30,6 +34,32 @@ Vec3 turned_into_plane(Vec3 v, const Vec3& n) {
   const double after = v.norm();
   if (after > 0.0) v *= before / after;
   return v;
+}
+
+/// A ball rolling p + v·t + ½a·t² along one face's plane towards a concave bend: the first
+/// time in [0, limit] its centre comes within r of the plane of `face` (where it touches
+/// both faces), from g(t) = g0 + (n'·v)t + ½(n'·a)t², g0 > 0, in the form of the root that
+/// keeps its precision when the quadratic term is small. Negative when the ball starts on
+/// or under that plane, or does not reach it by `limit`.
+double time_to_plane(const SurfaceContact& face, double r, const Vec3& p, const Vec3& v, const Vec3& a, double limit) {
+  const double g0 = face.normal.dot(p - face.point) - r;
+  if (!(g0 > 0.0)) return -1.0;
+  const double qa = 0.5 * face.normal.dot(a), qb = face.normal.dot(v);
+  const double denom = -qb + std::sqrt(std::max(qb * qb - 4.0 * qa * g0, 0.0));
+  if (!(denom > 0.0)) return -1.0;
+  const double t = 2.0 * g0 / denom;
+  return t <= limit ? t : -1.0;
+}
+
+/// The velocity of a rolling ball whose centre was put `lift` m higher (a step's end moved
+/// out of a face it ended inside, at a corner of several faces where no single bend could be
+/// met first; up to a few mm): its speed pays for the height, ½·(7/5)·v² + g·h held, down to
+/// rest. Lifted for free, a ball rocking in such a corner gained ~0.02 J/kg a time.
+Vec3 paid_for_lift(const Vec3& v, double lift) {
+  const double v2 = v.squaredNorm();
+  if (!(lift > 0.0) || v2 == 0.0) return v;
+  const double left = v2 - (10.0 / 7.0) * kGravity * lift;
+  return left > 0.0 ? Vec3(v * std::sqrt(left / v2)) : Vec3::Zero();
 }
 
 void set_rolling(ShotState& s, const Vec3& p, const Vec3& v, const Vec3& n, double r) {
@@ -247,8 +277,14 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
     step = std::abs(u) > 0.0 && a != 0.0 ? std::min(std::abs(u / a), dt) : 0.0;
     stops = true;
   }
+  // Turns back inside the step (up a crease line that will carry it down again): the step
+  // ends where it turns, as a roll step's does. Held against the first direction for the
+  // whole step, the resistance drove the ball back down the line instead of braking it:
+  // up to 0.06 J/kg gained a turn, rocking a ball along a crease (random-world soak).
+  const bool turns = !stops && u != 0.0 && (u + a * dt) * u < 0.0;
+  if (turns) step = std::abs(u / a);
   const Vec3 p1 = p + d * (u * step + 0.5 * a * step * step);
-  const double u1 = stops ? 0.0 : u + a * step;
+  const double u1 = stops || turns ? 0.0 : u + a * step;
   const Vec3 v1 = u1 * d;
   const auto leave_crease = [&] { s.crease_n1 = s.crease_n2 = Vec3::Zero(); };
   // A wall across the crease: strike it.
@@ -292,7 +328,22 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
     const double gap = under.normal.dot(p1 - under.point) - r;
     if (gap > kLeaveGap) return go_airborne(s, 0.0, p1, v1);
     s.support = under;
-    set_rolling(s, p1 - gap * under.normal, v1 - v1.dot(under.normal) * under.normal, under.normal, r);
+    // Onto a face that rises ahead (gap < 0): from where the ball meets its plane, as a roll
+    // step does at a concave bend. Lifted onto it at the step's end with the speed it had
+    // gained below it, a ball gained ~0.6 mm of height each time it ran out of a crease, and
+    // ran back into the crease, out and in again to the time limit (a random-world soak
+    // finding, seed 8 world 298).
+    const double t_bend = gap < 0.0 ? time_to_plane(under, r, p, u * d, a * d, step) : -1.0;
+    if (t_bend >= 0.0) {
+      s.t -= step - t_bend;
+      const Vec3 vb = (u + a * t_bend) * d;
+      set_rolling(s, p + d * (u * t_bend + 0.5 * a * t_bend * t_bend), vb - vb.dot(under.normal) * under.normal,
+                  under.normal, r);
+      return ev;
+    }
+    if (gap < 0.0 && met_on_way()) return strike();  // other ground between (as in roll_step)
+    const Vec3 v_on = paid_for_lift(v1, -gap * under.normal.dot(up_axis()));
+    set_rolling(s, p1 - gap * under.normal, v_on - v_on.dot(under.normal) * under.normal, under.normal, r);
     return ev;
   }
   s.support = under;
@@ -363,7 +414,15 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   // rests within 1.2 mm (median) and 6.4 mm (95th percentile) of one in steps
   // a twentieth as long, 3 000 random golf launches on golf_hole, worst 4.4 cm (issue 22).
   constexpr double kStepLength = 0.5, kStepTime = 0.25;  // m, s
-  const double dt = std::min(std::clamp(kStepLength / std::max(speed, 1e-3), 1.0 / 240.0, kStepTime), limit);
+  double dt = std::min(std::clamp(kStepLength / std::max(speed, 1e-3), 1.0 / 240.0, kStepTime), limit);
+  Vec3 a = accel_at(v, dir);
+  // A ball the slope moves that the step would turn more than its own speed (starting from
+  // near rest, or slow across a slope): no direction holds over such a step for the turf's
+  // resistance, and a resistance held along a direction the motion left pushed the ball on
+  // (a random-world soak finding: a ball at 4 mm/s on a 14° slope gained 0.03 J/kg in one
+  // 0.25 s step). The step lasts the time the slope takes to change the velocity by its
+  // speed; from near rest that time doubles each step, 6 steps to the 0.25 s of a full one.
+  if (!holds && a.squaredNorm() * dt * dt > speed * speed) dt = std::min(dt, std::max(speed / a.norm(), 1.0 / 240.0));
   // The step's motion: constant acceleration along the face, the one at the step's middle
   // (the midpoint rule, second order in the step; the drag there scaled from the start's
   // with |v_r|², Cd held: a rolling ball's S stays at 1 and its Re far below the crisis).
@@ -375,7 +434,6 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   // A ball that loses half its speed by the middle is about to stop (the stop below is
   // exact) and slow enough that drag no longer matters: there the middle's direction would
   // be the slope's and round-off's, not the motion's, so the start's acceleration is kept.
-  Vec3 a = accel_at(v, dir);
   if (speed > 0.0) {
     const Vec3 vm = v + 0.5 * dt * a;
     if (vm.dot(v) >= 0.5 * speed * speed) a = accel_at(vm, vm.normalized());
@@ -460,11 +518,19 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   // A face met on the way (p -> p1): a crease when it carries the ball too, else a bounce.
   const auto strike = [&](const SurfaceContact& met) {
     const double f = met.fraction;
+    const Vec3 at = p + f * (p1 - p);
+    // The velocity where the ball meets the face: the step's, interpolated along the chord,
+    // with the speed the step's constant acceleration gives at that point, |v|² + 2a·(at − p).
+    // The chord's fraction is not the step's time's, and the interpolated velocity alone ran
+    // ahead of the ball's energy on a step that sped up (random-world soak: up to 0.07 J/kg
+    // gained on meeting a face, rocking a ball in a hollow).
+    Vec3 vf = v + f * (v1 - v);
+    const double vf2 = vf.squaredNorm();
+    if (vf2 > 0.0) vf *= std::sqrt(std::max(v.squaredNorm() + 2.0 * a.dot(at - p), 0.0) / vf2);
     if (met.normal.dot(n) >= kFollowCos) {
       // A gentle concave bend (a slope meeting the flat, the far side of a hollow): roll on
       // onto the new face from where the ball meets it, keeping its speed.
-      const Vec3 at = p + f * (p1 - p);
-      const Vec3 vb = turned_into_plane(v + f * (v1 - v), met.normal);
+      const Vec3 vb = turned_into_plane(vf, met.normal);
       s.t += f * step_t;
       // Back and forth across the same bend, as across an edge or a seam below: the floor of
       // a valley between the two faces, each sending the ball back onto the other (at the
@@ -480,14 +546,14 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
       bend.contact = met;
       return bend;
     }
-    if (-(v + f * (v1 - v)).dot(met.normal) < m.settings.roll_speed && enter_crease(s, n, met.normal)) {
+    if (-vf.dot(met.normal) < m.settings.roll_speed && enter_crease(s, n, met.normal)) {
       // Rolled gently into a second face that also carries it: a crease (no bounce).
       s.t += f * step_t;
-      set_rolling(s, p + f * (p1 - p), v + f * (v1 - v), n, r);
+      set_rolling(s, at, vf, n, r);
       return crease_step(m, s, until);
     }
     s.t += f * step_t;
-    set_rolling(s, p + f * (p1 - p), v + f * (v1 - v), n, r);
+    set_rolling(s, at, vf, n, r);
     s.phase = Phase::Bounce;
     ShotEvent touched = touch_surface(m, s, met);
     if (!s.ended) {
@@ -567,8 +633,25 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     if (hi < step_t && at.material != c.material && at.normal.dot(n) >= kFollowCos) {
       const double gm = at.normal.dot(pm - at.point) - r;
       if (gm <= kLeaveGap) {
-        pm -= gm * at.normal;  // onto the new face, as a step's end is
-        const Vec3 vm = turned_into_plane(v + a * hi, at.normal);
+        // Onto the new face, as a step's end is; across a concave bend (gm < 0) where the
+        // ball meets the new face's plane, before the seam: lifted onto it at the seam with
+        // the speed it had gained below it, a ball rocking in a hollow of two materials gained
+        // ~g·1 mm a crossing, as much as its motion at 0.1 m/s, and never came to rest (a
+        // random-world soak finding, seed 11 world 2355).
+        const double t_bend = gm < 0.0 ? time_to_plane(at, r, p, v, a, hi) : -1.0;
+        if (t_bend >= 0.0) {
+          hi = t_bend;
+          pm = position_after(hi);
+        } else {
+          SurfaceContact first;  // other ground between (as below)
+          if (gm < 0.0) {
+            ++s.counters.sweeps;
+            if (terrain.sweep(p + kOffFace * n, p1 + kOffFace * n, r, &first, nullptr)) return strike(first);
+          }
+          pm -= gm * at.normal;
+        }
+        const Vec3 vm = turned_into_plane(paid_for_lift(v + a * hi, t_bend >= 0.0 ? 0.0 : -gm * at.normal.dot(up_axis())),
+                                          at.normal);
         s.support = at;
         s.t += hi;
         set_rolling(s, pm, vm, at.normal, r);
@@ -584,6 +667,33 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
       }
     }
   }
+  if (under.normal != n && gap < 0.0) {
+    // A concave bend inside the step (a bowl's facets rise ahead of the ball). The step ran
+    // on along its start's plane, below the next facet's: put back onto the ground at its
+    // end, the ball rose by the gap with the speed it had gained along the lower plane, and
+    // every step up a faceted curve gained that potential energy (a ball in a faceted bowl
+    // rocked at ~2 m/s to the shot's 300 s: random-world soak, seed 14 world 655, seed 16
+    // world 619). The step ends where the ball meets the next facet's plane instead, as a
+    // sweep ends it at a steeper bend, and turns into it there.
+    const double t_bend = time_to_plane(under, r, p, v, a, step_t);
+    if (t_bend >= 0.0) {
+      const Vec3 at = position_after(t_bend);
+      const Vec3 vb = v + a * t_bend;
+      s.t += t_bend;
+      s.support = under;
+      set_rolling(s, at, turned_into_plane(vb, under.normal), under.normal, r);
+      if (count_valley_crossing(s, n, under.normal) && vb.dot(under.normal) < 0.0 && enter_crease(s, n, under.normal))
+        return crease_step(m, s, until);
+      return end_of_roll_step(terrain, s, at, false, under);
+    }
+    // The ball starts under that face's plane already: other ground lies between (the face
+    // is not the next one along). The first face the ball meets on the way ends the step, as
+    // a wall does; swept from just off the face rolled on, which it moves along.
+    SurfaceContact first;
+    ++s.counters.sweeps;
+    if (terrain.sweep(p + kOffFace * n, p1 + kOffFace * n, r, &first, nullptr)) return strike(first);
+  }
+  v1 = paid_for_lift(v1, -gap * under.normal.dot(up_axis()));
   p1 -= gap * under.normal;
   if (under.normal != n) {
     // Rolling back and forth across the same edge between two faces: a valley whose faces

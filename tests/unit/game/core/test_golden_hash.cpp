@@ -51,8 +51,13 @@
 // 0x252190d315758f3a. Short hops (under 1 m/s up) in closed form, their rates linear over the
 // hop (totals move at most 0.2 mm: driver 256.6338 m) gave 0xdcce2dd3172639e2. The step
 // controller's norm^-1/5 by Newton steps instead of std::pow (within 2e-11 of it: the step
-// sizes, and so the last bits, move; every built-in total unchanged to 0.1 mm) gives the
-// value below.
+// sizes, and so the last bits, move; every built-in total unchanged to 0.1 mm) gave
+// 0x987e7e3f233a107d. A rolling ball that never makes energy (a roll step ends where it
+// meets a concave facet's plane instead of being lifted onto it at its end; the speed where
+// a step meets a face from its acceleration; a slow ball's step no longer than it takes to
+// turn it; asleep after 0.5 s under rest_speed: physics/detail/roll_step.cpp, flight.cpp;
+// built-in totals move at most 2.2 mm: driver 256.6338 -> 256.6327 m, altitude 275.5538 ->
+// 275.5516 m) gives the value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -83,7 +88,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x987e7e3f233a107dULL;
+constexpr std::uint64_t kGoldenHash = 0xb85a52370d6833f4ULL;
 
 }  // namespace
 

@@ -55,9 +55,12 @@ double time_to_plane(const SurfaceContact& face, double r, const Vec3& p, const 
 /// out of a face it ended inside, at a corner of several faces where no single bend could be
 /// met first; up to a few mm): its speed pays for the height, ½·(7/5)·v² + g·h held, down to
 /// rest. Lifted for free, a ball rocking in such a corner gained ~0.02 J/kg a time.
+/// Lifts under a nanometre are a step's round-off about its face's plane (every step's end
+/// is put back onto its face): they keep the speed, and cost no square root.
 Vec3 paid_for_lift(const Vec3& v, double lift) {
+  if (!(lift > 1e-9)) return v;
   const double v2 = v.squaredNorm();
-  if (!(lift > 0.0) || v2 == 0.0) return v;
+  if (v2 == 0.0) return v;
   const double left = v2 - (10.0 / 7.0) * kGravity * lift;
   return left > 0.0 ? Vec3(v * std::sqrt(left / v2)) : Vec3::Zero();
 }

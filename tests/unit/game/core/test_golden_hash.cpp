@@ -57,7 +57,9 @@
 // a step meets a face from its acceleration; a slow ball's step no longer than it takes to
 // turn it; asleep after 0.5 s under rest_speed: physics/detail/roll_step.cpp, flight.cpp;
 // built-in totals move at most 2.2 mm: driver 256.6338 -> 256.6327 m, altitude 275.5538 ->
-// 275.5516 m) gives the value below.
+// 275.5516 m) gave 0xb85a52370d6833f4; lifts under a nanometre, a step's round-off about
+// its face's plane, left out of the lift a ball's speed pays for (the same totals) give the
+// value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -88,7 +90,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0xb85a52370d6833f4ULL;
+constexpr std::uint64_t kGoldenHash = 0x56cca52c4a4f7d34ULL;
 
 }  // namespace
 

@@ -208,16 +208,28 @@ Vec3 tilted(const Vec3& face_normal, const Vec3& along, double tilt) {
 
 }  // namespace
 
-double crater_tilt_at(const SurfaceMaterial& m, double speed, double incidence, double firmness) {
+namespace {
+
+/// crater_tilt_at() from sin 2θ of the incidence θ (a bounce has it from the velocity's
+/// components without an atan2 and a sine: sin 2θ = 2·v_n·v_t / |v|²).
+double crater_tilt_from(const SurfaceMaterial& m, double speed, double sin_2theta, double firmness) {
   if (m.crater_tilt <= 0.0) return 0.0;
   // Penner's tilt grows with speed and with incidence up to his 44.4°; a crater dug
   // straight down (90°) is symmetric and tilts nothing. sin 2θ carries both: linear in θ
   // for shallow landings (Penner's form), 1 at 45°, 0 at 90°. Depth, and with it the tilt,
   // scales as 1/√stiffness for a turf spring: firmness is the stiffness relative to the
   // material's own.
-  const double shape = std::sin(2.0 * incidence) / std::sin(2.0 * kCraterReferenceAngle);
-  const double tilt = m.crater_tilt * (speed / kCraterReferenceSpeed) * shape / std::sqrt(firmness);
+  static const double kShapeAtReference = std::sin(2.0 * kCraterReferenceAngle);
+  const double shape = sin_2theta / kShapeAtReference;
+  const double stiffness = firmness == 1.0 ? 1.0 : std::sqrt(firmness);
+  const double tilt = m.crater_tilt * (speed / kCraterReferenceSpeed) * shape / stiffness;
   return std::clamp(tilt, 0.0, std::min(2.0 * m.crater_tilt, 0.6));
+}
+
+}  // namespace
+
+double crater_tilt_at(const SurfaceMaterial& m, double speed, double incidence, double firmness) {
+  return crater_tilt_from(m, speed, std::sin(2.0 * incidence), firmness);
 }
 
 BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal, const Vec3& velocity,
@@ -235,24 +247,53 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
   if (m.crater_tilt > 0.0 && vt_norm > 1e-9) {
     // The ball digs a crater whose far wall faces back against the motion.
     const Vec3 along = vt / vt_norm;
-    double tilt = crater_tilt_at(m, velocity.norm(), std::atan2(-vn, vt_norm), firmness);
+    const double speed2 = vn * vn + vt_norm * vt_norm;
+    double tilt = crater_tilt_from(m, std::sqrt(speed2), 2.0 * -vn * vt_norm / speed2, firmness);
     // The far wall can stop a ball but not throw it back: only backspin can (Haake's balls
     // spun back only with backspin). Where the tilt would return a spinless ball of this
     // velocity backwards, it is lowered to the tilt that stops it dead.
-    // (The impulse alone: the crater's bisection asks this 40 times.)
-    const auto forward = [&](double t) {
-      const GroundImpulse g = ground_impulse(m, tilted(face_normal, along, t), velocity, Vec3::Zero(), ball);
+    // (The impulse alone: the root search asks it ~10 times.)
+    const auto forward = [&](const Vec3& normal) {
+      const GroundImpulse g = ground_impulse(m, normal, velocity, Vec3::Zero(), ball);
       return (velocity + (1.0 / ball.mass) * g.p).dot(along);
     };
-    if (tilt > 0.0 && forward(tilt) < 0.0) {
-      double lo = 0.0, hi = tilt;
-      for (int i = 0; i < 40; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (forward(mid) < 0.0 ? hi : lo) = mid;
-      }
-      tilt = lo;
-    }
     n = tilted(face_normal, along, tilt);
+    // Surely forward, without the impulse (issue 22: one impulse a bounce, 1 % of a golf
+    // shot): on the tilted plane a spinless ball keeps at least 5/7 of a forward tangential
+    // speed v_t (grip leaves 5/7, slip more) and leaves along the normal at e·v_n ≤ v_n, so
+    // its speed along the motion is at least (5/7)·v_t·cos α − v_n·sin α.
+    const double cos_a = n.dot(face_normal), sin_a = -n.dot(along);
+    const double v_t = vt_norm * cos_a + vn * sin_a, v_n = -vn * cos_a + vt_norm * sin_a;
+    const bool surely_forward = v_t > 0.0 && (5.0 / 7.0) * v_t * cos_a >= v_n * sin_a;
+    double f_hi = tilt > 0.0 && !surely_forward ? forward(n) : 0.0;
+    if (f_hi < 0.0) {
+      // The root of the forward speed in tilt, bracketed by [0, tilt] (the flat face sends a
+      // spinless ball forward), by regula falsi with the Illinois rule (the end kept twice
+      // in a row has its value halved, so both ends close in): 8-12 impulses where 40
+      // halvings took 40. It stops where the ends are 1e-13 rad apart, as the halvings did,
+      // or the ball leaves within 1e-12 m/s of dead, and keeps the forward end: the tilt
+      // that stops the ball, never one that throws it back.
+      double lo = 0.0, f_lo = forward(face_normal), hi = tilt;
+      int kept = 0;  // +1: lo kept last time, -1: hi kept
+      for (int i = 0; i < 100 && hi - lo > 1e-13; ++i) {
+        double t = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+        if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+        const double f = forward(tilted(face_normal, along, t));
+        if (f < 0.0) {
+          hi = t;
+          f_hi = f;
+          if (kept == 1) f_lo *= 0.5;
+          kept = 1;
+        } else {
+          lo = t;
+          f_lo = f;
+          if (f <= 1e-12) break;
+          if (kept == -1) f_hi *= 0.5;
+          kept = -1;
+        }
+      }
+      n = tilted(face_normal, along, lo);
+    }
   }
   out.normal = n;
   out.impact = bounce_impulse(m, n, velocity, spin, ball);

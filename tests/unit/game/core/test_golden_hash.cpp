@@ -58,8 +58,11 @@
 // turn it; asleep after 0.5 s under rest_speed: physics/detail/roll_step.cpp, flight.cpp;
 // built-in totals move at most 2.2 mm: driver 256.6338 -> 256.6327 m, altitude 275.5538 ->
 // 275.5516 m) gave 0xb85a52370d6833f4; lifts under a nanometre, a step's round-off about
-// its face's plane, left out of the lift a ball's speed pays for (the same totals) give the
-// value below.
+// its face's plane, left out of the lift a ball's speed pays for (the same totals) gave
+// 0x56cca52c4a4f7d34. The crater's sin 2θ from the velocity's components instead of sin of
+// an atan2, and a bounce that is surely forward no longer asking the impulse (every
+// built-in total unchanged to 0.1 mm; on 20 000 random bounces the velocity within 1.5e-11
+// m/s of before) give the value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -90,7 +93,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x56cca52c4a4f7d34ULL;
+constexpr std::uint64_t kGoldenHash = 0x651b6ff6d411a8faULL;
 
 }  // namespace
 

@@ -734,17 +734,14 @@ Vec3 World::bounce_normal(const SurfaceContact& c) const {
   if (c.mesh < 0 || c.triangle < 0 || static_cast<size_t>(c.mesh) >= w.meshes.size()) return c.normal;
   const CollisionMesh& m = w.meshes[static_cast<size_t>(c.mesh)];
   const Vec3 a = m.vertex(c.triangle, 0), b = m.vertex(c.triangle, 1), d = m.vertex(c.triangle, 2);
-  // Barycentric weights of the contact point (clamped: a sweep can meet an edge's outside).
+  // Barycentric weights of the contact point (clamped: a sweep can meet an edge's outside),
+  // each scaled by the same 2·area·|n|: the blend is normalised below, so the scale (and the
+  // six divisions that removed it) does not matter.
   const Vec3 n = (b - a).cross(d - a);
-  const double area2 = n.squaredNorm();
-  double wa = std::max(0.0, n.dot((b - c.point).cross(d - c.point)) / area2);
-  double wb = std::max(0.0, n.dot((d - c.point).cross(a - c.point)) / area2);
-  double wd = std::max(0.0, n.dot((a - c.point).cross(b - c.point)) / area2);
-  const double total = wa + wb + wd;
-  if (!(total > 0.0)) return c.normal;
-  wa /= total;
-  wb /= total;
-  wd /= total;
+  const double wa = std::max(0.0, n.dot((b - c.point).cross(d - c.point)));
+  const double wb = std::max(0.0, n.dot((d - c.point).cross(a - c.point)));
+  const double wd = std::max(0.0, n.dot((a - c.point).cross(b - c.point)));
+  if (!(wa + wb + wd > 0.0)) return c.normal;
   const auto& cn = m.corner_normals[static_cast<size_t>(c.triangle)];
   const Vec3 smooth = wa * cn[0] + wb * cn[1] + wd * cn[2];
   return smooth.norm() > 0.0 ? Vec3(smooth.normalized()) : c.normal;

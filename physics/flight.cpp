@@ -128,6 +128,13 @@ ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   const double t0 = state.t;
   ShotEvent ev = airborne ? detail::air_step(model, state, until) : detail::roll_step(model, state, until);
   keep_centre_above_ground(model, state, from, v_from, state.t - t0, airborne, ev);
+  const auto put_to_rest = [&] {
+    state.y.segment<6>(3).setZero();
+    state.phase = Phase::Rest;
+    state.ended = true;
+    state.end = EndReason::Rest;
+    ev.kind = ShotEventKind::Rest;
+  };
   // Held: a ball passed between a touch, a roll and the air at one instant, over and over,
   // makes no progress (a knife-edge crease or a corner of steep faces that each send it to
   // the other: random-world soak findings that spun to the step limit). The faces hold it,
@@ -140,13 +147,7 @@ ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   constexpr int kStalledSteps = 64;
   constexpr double kNoProgress = 1e-7;  // s
   state.stalled = state.t > t0 + kNoProgress ? 0 : state.stalled + 1;
-  if (!state.ended && state.stalled >= kStalledSteps) {
-    state.y.segment<6>(3).setZero();
-    state.phase = Phase::Rest;
-    state.ended = true;
-    state.end = EndReason::Rest;
-    ev.kind = ShotEventKind::Rest;
-  }
+  if (!state.ended && state.stalled >= kStalledSteps) put_to_rest();
   // Asleep: a ball rolling slower than rest_speed for half a second is at rest where it is,
   // as a rigid-body engine puts a body to sleep (Box2D: linear sleep tolerance 1 cm/s, time
   // to sleep 0.5 s). A slope too steep to hold a ball still speeds it past rest_speed well
@@ -158,13 +159,7 @@ ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   constexpr double kTimeToSleep = 0.5;  // s
   const double rest_speed = model.settings.rest_speed;
   if (!state.ended && state.phase == Phase::Roll && state.velocity().squaredNorm() < rest_speed * rest_speed) {
-    if (state.t - state.sleep_since >= kTimeToSleep) {
-      state.y.segment<6>(3).setZero();
-      state.phase = Phase::Rest;
-      state.ended = true;
-      state.end = EndReason::Rest;
-      ev.kind = ShotEventKind::Rest;
-    }
+    if (state.t - state.sleep_since >= kTimeToSleep) put_to_rest();
   } else {
     state.sleep_since = state.t;
   }

@@ -5,12 +5,15 @@
 #include <cmath>
 #include <sstream>
 
+#include "physics/detail/root_find.hpp"
+
 namespace sweetspot {
 namespace {
 
 constexpr double kStimpReleaseSpeed = 1.83;             // m/s (6 ft/s), USGA Stimpmeter
 constexpr double kCraterReferenceSpeed = 18.6;          // m/s, Penner 2002
 constexpr double kCraterReferenceAngle = 0.77493;       // rad = 44.4°, Penner 2002
+const double kCraterReferenceShape = std::sin(2.0 * kCraterReferenceAngle);  // sin 2θ there
 
 struct KindName {
   SurfaceKind kind;
@@ -219,8 +222,7 @@ double crater_tilt_from(const SurfaceMaterial& m, double speed, double sin_2thet
   // for shallow landings (Penner's form), 1 at 45°, 0 at 90°. Depth, and with it the tilt,
   // scales as 1/√stiffness for a turf spring: firmness is the stiffness relative to the
   // material's own.
-  static const double kShapeAtReference = std::sin(2.0 * kCraterReferenceAngle);
-  const double shape = sin_2theta / kShapeAtReference;
+  const double shape = sin_2theta / kCraterReferenceShape;
   const double stiffness = firmness == 1.0 ? 1.0 : std::sqrt(firmness);
   const double tilt = m.crater_tilt * (speed / kCraterReferenceSpeed) * shape / stiffness;
   return std::clamp(tilt, 0.0, std::min(2.0 * m.crater_tilt, 0.6));
@@ -248,7 +250,7 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
     // The ball digs a crater whose far wall faces back against the motion.
     const Vec3 along = vt / vt_norm;
     const double speed2 = vn * vn + vt_norm * vt_norm;
-    double tilt = crater_tilt_from(m, std::sqrt(speed2), 2.0 * -vn * vt_norm / speed2, firmness);
+    const double tilt = crater_tilt_from(m, std::sqrt(speed2), 2.0 * -vn * vt_norm / speed2, firmness);
     // The far wall can stop a ball but not throw it back: only backspin can (Haake's balls
     // spun back only with backspin). Where the tilt would return a spinless ball of this
     // velocity backwards, it is lowered to the tilt that stops it dead.
@@ -265,34 +267,14 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
     const double cos_a = n.dot(face_normal), sin_a = -n.dot(along);
     const double v_t = vt_norm * cos_a + vn * sin_a, v_n = -vn * cos_a + vt_norm * sin_a;
     const bool surely_forward = v_t > 0.0 && (5.0 / 7.0) * v_t * cos_a >= v_n * sin_a;
-    double f_hi = tilt > 0.0 && !surely_forward ? forward(n) : 0.0;
+    const double f_hi = tilt > 0.0 && !surely_forward ? forward(n) : 0.0;
     if (f_hi < 0.0) {
-      // The root of the forward speed in tilt, bracketed by [0, tilt] (the flat face sends a
-      // spinless ball forward), by regula falsi with the Illinois rule (the end kept twice
-      // in a row has its value halved, so both ends close in): 8-12 impulses where 40
-      // halvings took 40. It stops where the ends are 1e-13 rad apart, as the halvings did,
-      // or the ball leaves within 1e-12 m/s of dead, and keeps the forward end: the tilt
-      // that stops the ball, never one that throws it back.
-      double lo = 0.0, f_lo = forward(face_normal), hi = tilt;
-      int kept = 0;  // +1: lo kept last time, -1: hi kept
-      for (int i = 0; i < 100 && hi - lo > 1e-13; ++i) {
-        double t = hi - f_hi * (hi - lo) / (f_hi - f_lo);
-        if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
-        const double f = forward(tilted(face_normal, along, t));
-        if (f < 0.0) {
-          hi = t;
-          f_hi = f;
-          if (kept == 1) f_lo *= 0.5;
-          kept = 1;
-        } else {
-          lo = t;
-          f_lo = f;
-          if (f <= 1e-12) break;
-          if (kept == -1) f_hi *= 0.5;
-          kept = -1;
-        }
-      }
-      n = tilted(face_normal, along, lo);
+      // The tilt that stops it: the forward speed's root in tilt, bracketed by [0, tilt] (the
+      // flat face sends a spinless ball forward), by regula falsi (8-12 impulses where 40
+      // halvings took 40), within 1e-12 m/s of dead or 1e-13 rad of the root.
+      const double stop = detail::find_root([&](double t) { return forward(tilted(face_normal, along, t)); }, 0.0, tilt,
+                                            forward(face_normal), f_hi);
+      n = tilted(face_normal, along, stop);
     }
   }
   out.normal = n;

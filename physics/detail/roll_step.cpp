@@ -575,6 +575,12 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     }
     return met;
   };
+  // Any face met on the way p -> p1, gentle ones too (met_on_way passes over faces the ball
+  // could roll onto): swept from just off the face rolled on, which the ball moves along.
+  const auto first_face_on_way = [&](SurfaceContact* first) {
+    ++s.counters.sweeps;
+    return terrain.sweep(p + kOffFace * n, p1 + kOffFace * n, r, first, nullptr);
+  };
   if (terrain.may_touch_steep(p, p1, r) && met_on_way()) return strike(hit);
   // Follow the ground under the new position.
   SurfaceContact under = c;  // the current support is the cache hint
@@ -642,19 +648,17 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
         // ~g·1 mm a crossing, as much as its motion at 0.1 m/s, and never came to rest (a
         // random-world soak finding, seed 11 world 2355).
         const double t_bend = gm < 0.0 ? time_to_plane(at, r, p, v, a, hi) : -1.0;
+        double lift = 0.0;
         if (t_bend >= 0.0) {
           hi = t_bend;
           pm = position_after(hi);
         } else {
           SurfaceContact first;  // other ground between (as below)
-          if (gm < 0.0) {
-            ++s.counters.sweeps;
-            if (terrain.sweep(p + kOffFace * n, p1 + kOffFace * n, r, &first, nullptr)) return strike(first);
-          }
+          if (gm < 0.0 && first_face_on_way(&first)) return strike(first);
+          lift = -gm * at.normal.dot(up_axis());
           pm -= gm * at.normal;
         }
-        const Vec3 vm = turned_into_plane(paid_for_lift(v + a * hi, t_bend >= 0.0 ? 0.0 : -gm * at.normal.dot(up_axis())),
-                                          at.normal);
+        const Vec3 vm = turned_into_plane(paid_for_lift(v + a * hi, lift), at.normal);
         s.support = at;
         s.t += hi;
         set_rolling(s, pm, vm, at.normal, r);
@@ -691,10 +695,9 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     }
     // The ball starts under that face's plane already: other ground lies between (the face
     // is not the next one along). The first face the ball meets on the way ends the step, as
-    // a wall does; swept from just off the face rolled on, which it moves along.
+    // a wall does.
     SurfaceContact first;
-    ++s.counters.sweeps;
-    if (terrain.sweep(p + kOffFace * n, p1 + kOffFace * n, r, &first, nullptr)) return strike(first);
+    if (first_face_on_way(&first)) return strike(first);
   }
   v1 = paid_for_lift(v1, -gap * under.normal.dot(up_axis()));
   p1 -= gap * under.normal;

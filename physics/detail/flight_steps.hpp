@@ -81,21 +81,33 @@ struct Dynamics {
         still_air(m.environment.wind_speed == 0.0),
         layer(l) {}
 
-  State9 operator()(double /*t*/, const State9& y) const {
+  /// The ball's velocity through the air in state y.
+  Vec3 air_velocity(const State9& y) const {
     const Vec3 v = y.segment<3>(3);
-    const Vec3 w = y.segment<3>(6);
     // Still air needs no profile (wind_at is a call with logs or powers otherwise).
-    const Vec3 v_rel = still_air ? v : Vec3(v - wind_at(model->environment, y[1] - ground_height));
+    return still_air ? v : Vec3(v - wind_at(model->environment, y[1] - ground_height));
+  }
+
+  /// The spin parameter S = R|ω × v_r|/|v_r|² of state y (as the aero kernel takes it).
+  double spin_parameter(const State9& y) const {
+    const Vec3 v_rel = air_velocity(y);
+    const double speed2 = v_rel.squaredNorm();
+    return speed2 > 0.0 ? model->ball.radius * y.segment<3>(6).cross(v_rel).norm() / speed2 : 0.0;
+  }
+
+  State9 operator()(double /*t*/, const State9& y) const {
+    const Vec3 w = y.segment<3>(6);
+    const Vec3 v_rel = air_velocity(y);
     Vec3 accel, spin_rate;
     aero.evaluate(v_rel, w, &accel, &spin_rate);
     State9 d;
-    d.segment<3>(0) = v;
+    d.segment<3>(0) = y.segment<3>(3);
     d.segment<3>(3) = accel - kGravity * up_axis();
     d.segment<3>(6) = spin_rate;
     if (layer.on) {
       // As on a roll, the resistance slows the spin with the centre (ω = n × v / R kept), or
       // the spin left over would drive the ball on at the next touch.
-      const Vec3 a = layer.acceleration(v);
+      const Vec3 a = layer.acceleration(y.segment<3>(3));
       d.segment<3>(3) += a;
       d.segment<3>(6) += layer.normal.cross(a) / model->ball.radius;
     }

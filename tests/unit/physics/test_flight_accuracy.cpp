@@ -80,9 +80,12 @@ TEST_CASE("default tolerances: 1000 random golf launches on golf_hole, carry and
     const Errors e = errors(p, launch);
     INFO("launch " << i << ": " << mph << " mph, " << deg << "°, aim " << aim << "°, " << rpm << " rpm, axis "
                    << axis << "°: carry error " << e.carry << " m, rest error " << e.rest << " m");
-    CHECK(e.carry < 0.01);
-    // Issue 22's contract: every rest within 1 cm. Measured worst: 7.7 mm (worst carry 3.3
-    // mm). Before the touch's contact point was taken at the ball's centre on the arc rather
+    // Issue 22's contract is 1 cm. Measured worst: 1.7 mm (95th percentile 0.8 mm) at
+    // rel_tol 4e-6, with each carry step that crossed a kink of the aero law (S = s_max)
+    // taken again to end there; at 1e-6 with the kink inside a step: 3.5 mm (p95 1.4 mm), and
+    // 4.4-8.4 mm on other seeds (7, 19, 5).
+    CHECK(e.carry < 0.004);
+    // Issue 22's contract: every rest within 1 cm. Measured worst: 5.5 mm. Before the touch's contact point was taken at the ball's centre on the arc rather
     // than on the straight chord that found it, 4 of these launches rested 1.0-1.8 cm from
     // the reference: the smooth bounce normal was read up to a chord's sag away, at a point
     // that moved with where the integrator's steps fell.
@@ -94,4 +97,26 @@ TEST_CASE("default tolerances: 1000 random golf launches on golf_hole, carry and
   INFO("worst carry error " << worst_carry << " m, worst rest error " << worst_rest << " m, " << rest_over_1cm
                             << " rests over 1 cm");
   CHECK(rest_over_1cm == 0);
+}
+
+TEST_CASE("default tolerances: launches that once rested over 1 cm from the 1e-13 reference", "[flight][accuracy]") {
+  // Found by the 1 000-launch sample above drawn with other seeds.
+  const Pair p = golf_hole_models();
+  const struct {
+    const char* why;
+    double mph, deg, aim, rpm, axis;
+  } cases[] = {
+      // Seed 3, launch 852: a roll from the fairway across a corner of rough whose faces are
+      // coplanar up to round-off. The ball sat 2 nm under the rough's plane at the seam; the
+      // sweep for ground in between met the rough's own face 5 cm on, and the step ran there
+      // on the fairway's resistance: 20.6 mm from the reference, whose step fell otherwise.
+      {"roll across a corner of another material", 100.26578330707068, 10.98401499393778, -2.7315313171085265,
+       10477.319547548082, -11.047241195156953},
+  };
+  for (const auto& c : cases) {
+    const Errors e = errors(p, launch_from_metrics(mph_to_mps(c.mph), deg_to_rad(c.deg), deg_to_rad(c.aim),
+                                                   rpm_to_radps(c.rpm), deg_to_rad(c.axis), tee()));
+    INFO(c.why << ": carry error " << e.carry << " m, rest error " << e.rest << " m");
+    CHECK(e.rest < 0.005);
+  }
 }

@@ -65,7 +65,10 @@
 // m/s of before) gave 0x651b6ff6d411a8fa. The smooth bounce normal's barycentric weights
 // left unscaled (the blend is normalised; the same totals to 10 µm) gave 0xb3d2acda5c419554.
 // The step controller's scaled error as one array expression (Eigen divides two components
-// at a time; its sum adds in another order; the same totals to 10 µm) gives the value below.
+// at a time; its sum adds in another order; the same totals to 10 µm) gave 0x2b1d424792c35ea5.
+// A carry step that crosses a kink of the aero law (S = s_max) taken again to end there, and
+// the carry's rel_tol 1e-6 -> 4e-6 (totals within 0.3 mm, into-wind's 3.2 mm; bounces the
+// same) gives the value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -96,7 +99,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x2b1d424792c35ea5ULL;
+constexpr std::uint64_t kGoldenHash = 0x49c3cc255c6d02feULL;
 
 }  // namespace
 

@@ -305,7 +305,30 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     s.max_height = std::max(s.max_height, seg.component(ta, 1));
   }
   Hit hit;
-  if (find_contact(m, s, seg, y1, &hit)) {
+  const bool started_inside = m.terrain->inside(seg.r1.segment<3>(0));
+  const bool touches = find_contact(m, s, seg, y1, &hit);
+  // A touch outside the world's bounds is not reached: the shot ended where the ball left
+  // them. (Checked first, the touch let a ball land past the bounds when one step both left
+  // them and came down, and not when the steps fell otherwise: Denver's 450 ft home run
+  // "landed" at 137 m in a ballpark whose bounds end at 130 m.)
+  const double t_out = touches ? hit.t : seg.t1();
+  if (started_inside && !m.terrain->inside(touches ? position_at(seg, hit.t) : Vec3(y1.segment<3>(0)))) {
+    // Left the world during the step: end where it crossed the bounds, found by bisection
+    // on the dense output, so where a shot leaves does not depend on the step size (it
+    // used to be the step's end, metres past the bounds at the tolerance's step lengths).
+    double lo = seg.t0, hi = t_out;
+    for (int i = 0; i < 60 && hi - lo > 1e-12; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (m.terrain->inside(position_at(seg, mid)) ? lo : hi) = mid;
+    }
+    s.t = hi;
+    s.y = seg.at(hi);
+    s.max_height = std::max(s.max_height, s.y[1]);
+    end_shot(s, EndReason::LeftWorld);
+    ev.kind = ShotEventKind::LeftWorld;
+    return ev;
+  }
+  if (touches) {
     s.t = hit.t;
     s.y = seg.at(hit.t);
     s.max_height = std::max(s.max_height, s.y[1]);
@@ -323,27 +346,10 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     m.terrain->refine_contact(centre, &c);
     return touch_surface(m, s, c);
   }
-  const bool inside_at_end = m.terrain->inside(y1.segment<3>(0));
-  if (!inside_at_end && m.terrain->inside(seg.r1.segment<3>(0))) {
-    // Left the world during the step: end where it crossed the bounds, found by bisection
-    // on the dense output, so where a shot leaves does not depend on the step size (it
-    // used to be the step's end, metres past the bounds at the tolerance's step lengths).
-    double lo = seg.t0, hi = seg.t1();
-    for (int i = 0; i < 60 && hi - lo > 1e-12; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (m.terrain->inside(position_at(seg, mid)) ? lo : hi) = mid;
-    }
-    s.t = hi;
-    s.y = seg.at(hi);
-    s.max_height = std::max(s.max_height, s.y[1]);
-    end_shot(s, EndReason::LeftWorld);
-    ev.kind = ShotEventKind::LeftWorld;
-    return ev;
-  }
   s.t = t1;
   s.y = y1;
   s.max_height = std::max(s.max_height, s.y[1]);
-  if (!inside_at_end) {  // started outside too (an input placed out of bounds)
+  if (!m.terrain->inside(y1.segment<3>(0))) {  // started outside too (an input placed out of bounds)
     end_shot(s, EndReason::LeftWorld);
     ev.kind = ShotEventKind::LeftWorld;
   }

@@ -202,6 +202,31 @@ TEST_CASE("water holds the ball where it lands (the rules call it a hazard)", "[
   CHECK(tr.summary.total_m == Approx(tr.summary.carry_m));
 }
 
+TEST_CASE("a ball that leaves the world's bounds ends there, also when the same step comes down past them",
+          "[world][bounds]") {
+  // The ground runs on past the bounds, which end 1.5 m short of where the drive lands
+  // (the ball ~1.3 m up there). A step that leaves the bounds and meets the ground inside
+  // one step used to take the touch first: the ball "landed" past the bounds (Denver's
+  // 450 ft home run at 137 m in a ballpark whose bounds end at 130 m), so where a shot
+  // ended depended on where its steps fell.
+  const FlightCase drive = golf(167.0, 10.9, 2686.0);
+  const double carry = fly(drive, nullptr).summary.carry_m;
+  WorldDescription d = plane_world(600.0, 1);
+  d.bounds_max = Vec3(carry - 1.5, 400.0, 600.0);
+  const World world(d);
+  for (const double tol : {1e-2, 1e-3, 1e-4, 4e-6, 1e-9}) {
+    FlightCase in = drive;
+    in.settings.rel_tol = tol;
+    const ShotTrajectory tr = fly(in, &world);
+    INFO("rel_tol " << tol << ": end " << to_string(tr.summary.end) << " at x = " << tr.summary.rest_position.x()
+                    << ", y = " << tr.summary.rest_position.y());
+    CHECK(tr.summary.end == EndReason::LeftWorld);
+    CHECK(tr.summary.bounces == 0);
+    CHECK(tr.summary.rest_position.x() == Approx(carry - 1.5).margin(1e-6));
+    CHECK(tr.summary.rest_position.y() > 0.5);  // in the air, where it crossed
+  }
+}
+
 TEST_CASE("world shots are bit-identical when repeated", "[world][determinism]") {
   const World world(plane_world(300.0, 60));
   const FlightCase in = golf(102.0, 24.2, 9304.0);

@@ -305,14 +305,14 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     s.max_height = std::max(s.max_height, seg.component(ta, 1));
   }
   Hit hit;
-  const bool started_inside = m.terrain->inside(seg.r1.segment<3>(0));
   const bool touches = find_contact(m, s, seg, y1, &hit);
   // A touch outside the world's bounds is not reached: the shot ended where the ball left
   // them. (Checked first, the touch let a ball land past the bounds when one step both left
   // them and came down, and not when the steps fell otherwise: Denver's 450 ft home run
   // "landed" at 137 m in a ballpark whose bounds end at 130 m.)
   const double t_out = touches ? hit.t : seg.t1();
-  if (started_inside && !m.terrain->inside(touches ? position_at(seg, hit.t) : Vec3(y1.segment<3>(0)))) {
+  const bool inside_at_end = m.terrain->inside(touches ? position_at(seg, hit.t) : Vec3(y1.segment<3>(0)));
+  if (!inside_at_end && m.terrain->inside(seg.r1.segment<3>(0))) {
     // Left the world during the step: end where it crossed the bounds, found by bisection
     // on the dense output, so where a shot leaves does not depend on the step size (it
     // used to be the step's end, metres past the bounds at the tolerance's step lengths).
@@ -349,7 +349,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   s.t = t1;
   s.y = y1;
   s.max_height = std::max(s.max_height, s.y[1]);
-  if (!m.terrain->inside(y1.segment<3>(0))) {  // started outside too (an input placed out of bounds)
+  if (!inside_at_end) {  // started outside too (an input placed out of bounds)
     end_shot(s, EndReason::LeftWorld);
     ev.kind = ShotEventKind::LeftWorld;
   }

@@ -96,18 +96,19 @@ struct Dynamics {
   }
 
   State9 operator()(double /*t*/, const State9& y) const {
+    const Vec3 v = y.segment<3>(3);
     const Vec3 w = y.segment<3>(6);
     const Vec3 v_rel = air_velocity(y);
     Vec3 accel, spin_rate;
     aero.evaluate(v_rel, w, &accel, &spin_rate);
     State9 d;
-    d.segment<3>(0) = y.segment<3>(3);
+    d.segment<3>(0) = v;
     d.segment<3>(3) = accel - kGravity * up_axis();
     d.segment<3>(6) = spin_rate;
     if (layer.on) {
       // As on a roll, the resistance slows the spin with the centre (ω = n × v / R kept), or
       // the spin left over would drive the ball on at the next touch.
-      const Vec3 a = layer.acceleration(y.segment<3>(3));
+      const Vec3 a = layer.acceleration(v);
       d.segment<3>(3) += a;
       d.segment<3>(6) += layer.normal.cross(a) / model->ball.radius;
     }

@@ -68,7 +68,9 @@
 // at a time; its sum adds in another order; the same totals to 10 µm) gave 0x2b1d424792c35ea5.
 // A carry step that crosses a kink of the aero law (S = s_max) taken again to end there, and
 // the carry's rel_tol 1e-6 -> 4e-6 (totals within 0.3 mm, into-wind's 3.2 mm; bounces the
-// same) gives the value below.
+// same) gave 0x49c3cc255c6d02fe. The tour ball's contact refitted with carry and landing
+// angle in the objective (ν 0.37 -> 0.30, face µ 0.28 -> 0.25, dynamic lofts solved again)
+// gives the value below: every golf launch moves (driver spin 2877 -> 2792 rpm).
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -99,7 +101,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x49c3cc255c6d02feULL;
+constexpr std::uint64_t kGoldenHash = 0xb4bc9ce90801feb2ULL;
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "game/modes/baseball/throwing.hpp"
 #include "physics/delivery.hpp"
 #include "physics/error.hpp"
 
@@ -117,7 +118,7 @@ double fence_distance(const WorldAsset& world, double spray) {
 
 bool is_barrel(double ev, double la) { return la <= 50.0 && ev >= 98.0 && 1.5 * ev - la >= 117.0 && ev + la >= 124.0; }
 
-BattedOutcome field_ball(const ShotResult& shot, std::string* who) {
+BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const Environment& env, std::string* who) {
   if (who) who->clear();
   if (shot.end == ShotEnd::HomeRun) return BattedOutcome::HomeRun;
   const ShotTrajectory& t = shot.trajectory;
@@ -161,8 +162,11 @@ BattedOutcome field_ball(const ShotResult& shot, std::string* who) {
     }
   }
   if (who) *who = best_f->name;
-  const double throw_speed = best_f->arm_mph * 0.44704 * 0.9;  // carry and the arc: ~90 % of the release speed
-  const auto defence = [&](const Vec3& base) { return best_t + kTransfer + horizontal(best_p, base) / throw_speed; };
+  // The throw at the fielder's arm strength, flown through the air to the bag (throwing.hpp).
+  const double arm = mph_to_mps(best_f->arm_mph);
+  const auto defence = [&](const Vec3& base) {
+    return best_t + kTransfer + throw_to(aero, env, arm, horizontal(best_p, base), kTransfer).time;
+  };
   if (defence(kFirst) < kHomeToFirst) return BattedOutcome::Out;
   // Extra bases the batter can take with a half-second to spare.
   if (defence(kSecond) < kHomeToFirst + kBaseToBase + 0.5) return BattedOutcome::Single;
@@ -211,8 +215,9 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   ls.numbers.spin_axis = L.spin.axis_rad;
   spec.strike = ls;
   out.contact = true;
-  out.shot = run_shot(resolve(spec, assets), "swing", {true, true});
-  out.outcome = field_ball(out.shot, &out.fielder);
+  const ResolvedShot resolved = resolve(spec, assets);
+  out.shot = run_shot(resolved, "swing", {true, true});
+  out.outcome = field_ball(out.shot, *resolved.aero, resolved.spec.environment, &out.fielder);
   const double ev = mps_to_mph(L.ball_speed), la = rad_to_deg(L.vertical_angle);
   out.hard_hit = ev >= 95.0;
   out.sweet_spot = la >= 8.0 && la <= 32.0;

@@ -72,7 +72,8 @@ double fence_distance(const WorldAsset& world, double spray);
 /// fly ball is caught if one reaches its landing spot in its hang time; a grounder is an out
 /// when the fielder who reaches it first can throw to first base before the batter gets
 /// there (4.47 s, Statcast's mean home-to-first); otherwise the batter takes the bases the
-/// throw cannot beat him to.
-BattedOutcome field_ball(const ShotResult& shot, std::string* fielder = nullptr);
+/// throw cannot beat him to. Throws fly through `aero` and `env` (throwing.hpp).
+BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const Environment& env,
+                         std::string* fielder = nullptr);
 
 }  // namespace sweetspot

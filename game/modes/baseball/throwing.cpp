@@ -1,0 +1,81 @@
+#include "game/modes/baseball/throwing.hpp"
+
+#include <cmath>
+
+#include "physics/flight.hpp"
+#include "physics/ground.hpp"
+#include "physics/launch.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+namespace {
+
+// Release 1.8 m up (an overhand release at shoulder height, ESTIMATE) and a glove 1.0 m up at
+// the bag (ESTIMATE): the same flight as a launch 0.8 m above a ball's resting height that
+// ends on flat ground.
+constexpr double kDrop = 0.8;
+// A four-seam grip spins the ball backward with the hand's speed: the league's four-seamer
+// spins 2283 rpm at 94.19 mph (Statcast via TJStats, pitches.toml), 24.2 rpm per mph of
+// release speed; an overhand throw is taken to spin the same per unit of speed.
+constexpr double kBackspinPerSpeed = 2283.0 / 94.19;  // rpm per mph
+// The elevations searched: a throw on a line down to the highest useful arc. Past ~35° a
+// baseball's carry against drag stops growing (its longest throws leave at 30–35°).
+constexpr double kLowest = -10.0 * kPi / 180.0, kHighest = 35.0 * kPi / 180.0;
+constexpr double kLineToss = 5.0;  // m: a throw this short is a toss on a line
+
+struct Flown {
+  double carry = 0.0, time = 0.0;
+};
+
+Flown fly(const ShotModel& model, double speed, double elevation) {
+  const double radius = baseball_properties().radius;
+  const LaunchState launch = launch_from_metrics(speed, elevation, 0.0, rpm_to_radps(kBackspinPerSpeed * mps_to_mph(speed)),
+                                                 0.0, Vec3(0.0, radius + kDrop, 0.0));
+  ShotState s = start_state(launch);
+  while (!s.ended) {
+    const ShotEvent e = step(model, s);
+    if (e.kind == ShotEventKind::Landing) break;
+  }
+  return {std::hypot(s.position().x(), s.position().z()), s.t};
+}
+
+}  // namespace
+
+Throw throw_to(const AeroModel& aero, const Environment& env, double arm_speed, double distance,
+               double relay_transfer) {
+  if (distance < kLineToss) return {distance / arm_speed, 0.0};
+  const ShotModel model = make_shot_model(baseball_properties(), aero, env, nullptr);
+  Flown lo = fly(model, arm_speed, kLowest), hi = fly(model, arm_speed, kHighest);
+  if (distance <= lo.carry) return {lo.time * distance / lo.carry, kLowest};
+  if (distance > hi.carry) {
+    // Out of reach in the air: a cutoff man relays it from halfway.
+    const Throw half = throw_to(aero, env, arm_speed, 0.5 * distance, relay_transfer);
+    return {2.0 * half.time + relay_transfer, half.elevation};
+  }
+  // Carry rises with elevation on [kLowest, kHighest]: Illinois regula falsi on carry − distance
+  // to 1 cm (6–9 flights).
+  double a = kLowest, b = kHighest, fa = lo.carry - distance, fb = hi.carry - distance;
+  Flown at = lo;
+  double x = a;
+  int side = 0;
+  for (int i = 0; i < 40; ++i) {
+    x = (a * fb - b * fa) / (fb - fa);
+    at = fly(model, arm_speed, x);
+    const double fx = at.carry - distance;
+    if (std::abs(fx) < 0.01) break;
+    if (fx * fb > 0.0) {
+      b = x;
+      fb = fx;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      a = x;
+      fa = fx;
+      if (side == 1) fb *= 0.5;
+      side = 1;
+    }
+  }
+  return {at.time, x};
+}
+
+}  // namespace sweetspot

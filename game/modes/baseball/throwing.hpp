@@ -1,0 +1,28 @@
+// A fielder's throw through the air (the fielding model of batting.hpp): how long the ball
+// takes to reach a base, flown by the same flight model as every baseball, so a long throw
+// pays for its drag and the arc it needs instead of crossing at a fixed fraction of its
+// release speed.
+#pragma once
+
+#include "physics/aero.hpp"
+#include "physics/atmosphere.hpp"
+
+namespace sweetspot {
+
+/// The flattest throw from release to a glove at the base.
+struct Throw {
+  double time = 0.0;       ///< s in the air
+  double elevation = 0.0;  ///< rad above horizontal at release
+};
+
+/// The throw that covers `distance` (m, horizontal) in the air at release speed `arm_speed`
+/// (m/s; Statcast's outfield arm strength 86–90 mph = 38–40 m/s) with the backspin of a
+/// four-seam grip, released 1.8 m up and caught 1.0 m up. The flattest such throw is the
+/// quickest: the elevation is solved on its rising branch. Beyond the arm's reach in the air
+/// (~105 m at 86 mph) it is a relay: two throws of half the distance, with `relay_transfer`
+/// seconds between them. A throw under 5 m is a toss on a line: distance / speed.
+/// Deterministic; `distance` ≥ 0 and `arm_speed` in (0, 60] m/s.
+Throw throw_to(const AeroModel& aero, const Environment& env, double arm_speed, double distance,
+               double relay_transfer);
+
+}  // namespace sweetspot

@@ -9,7 +9,7 @@
 
 #include "physics/detail/aero_kernel.hpp"
 #include "physics/detail/integrator.hpp"
-#include "physics/detail/root_find.hpp"
+#include "physics/root_find.hpp"
 #include "physics/flight.hpp"
 
 namespace sweetspot::detail {

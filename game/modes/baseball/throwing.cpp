@@ -5,6 +5,7 @@
 #include "physics/flight.hpp"
 #include "physics/ground.hpp"
 #include "physics/launch.hpp"
+#include "physics/root_find.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -44,7 +45,11 @@ Flown fly(const ShotModel& model, double speed, double elevation) {
 Throw throw_to(const AeroModel& aero, const Environment& env, double arm_speed, double distance,
                double relay_transfer) {
   if (distance < kLineToss) return {distance / arm_speed, 0.0};
-  const ShotModel model = make_shot_model(baseball_properties(), aero, env, nullptr);
+  // The air's density from the day's weather; no wind: a throw goes any way across the
+  // field, and the flight model here flies it along +x.
+  Environment calm = env;
+  calm.wind_speed = 0.0;
+  const ShotModel model = make_shot_model(baseball_properties(), aero, calm, nullptr);
   Flown lo = fly(model, arm_speed, kLowest), hi = fly(model, arm_speed, kHighest);
   if (distance <= lo.carry) return {lo.time * distance / lo.carry, kLowest};
   if (distance > hi.carry) {
@@ -52,30 +57,11 @@ Throw throw_to(const AeroModel& aero, const Environment& env, double arm_speed, 
     const Throw half = throw_to(aero, env, arm_speed, 0.5 * distance, relay_transfer);
     return {2.0 * half.time + relay_transfer, half.elevation};
   }
-  // Carry rises with elevation on [kLowest, kHighest]: Illinois regula falsi on carry − distance
-  // to 1 cm (6–9 flights).
-  double a = kLowest, b = kHighest, fa = lo.carry - distance, fb = hi.carry - distance;
-  Flown at = lo;
-  double x = a;
-  int side = 0;
-  for (int i = 0; i < 40; ++i) {
-    x = (a * fb - b * fa) / (fb - fa);
-    at = fly(model, arm_speed, x);
-    const double fx = at.carry - distance;
-    if (std::abs(fx) < 0.01) break;
-    if (fx * fb > 0.0) {
-      b = x;
-      fb = fx;
-      if (side == -1) fa *= 0.5;
-      side = -1;
-    } else {
-      a = x;
-      fa = fx;
-      if (side == 1) fb *= 0.5;
-      side = 1;
-    }
-  }
-  return {at.time, x};
+  // Carry rises with elevation on [kLowest, kHighest]: the elevation where the throw carries
+  // `distance`, then its time (the root finder's own tolerance: 1e-12 m of carry).
+  const double elevation = find_root([&](double e) { return distance - fly(model, arm_speed, e).carry; }, kLowest,
+                                     kHighest, distance - lo.carry, distance - hi.carry);
+  return {fly(model, arm_speed, elevation).time, elevation};
 }
 
 }  // namespace sweetspot

@@ -21,7 +21,8 @@ struct Throw {
 /// quickest: the elevation is solved on its rising branch. Beyond the arm's reach in the air
 /// (~105 m at 86 mph) it is a relay: two throws of half the distance, with `relay_transfer`
 /// seconds between them. A throw under 5 m is a toss on a line: distance / speed.
-/// Deterministic; `distance` ≥ 0 and `arm_speed` in (0, 60] m/s.
+/// The air is `env`'s (altitude, temperature, humidity) without its wind. Deterministic;
+/// `distance` ≥ 0 and `arm_speed` in (0, 60] m/s.
 Throw throw_to(const AeroModel& aero, const Environment& env, double arm_speed, double distance,
                double relay_transfer);
 

@@ -1,10 +1,11 @@
 // Roots of a scalar function bracketed on [a, b], g(a) > 0 >= g(b): the flight's touch and
-// apex times (air_step.cpp) and the crater's stopping tilt (ground.cpp).
+// apex times (detail/air_step.cpp), the crater's stopping tilt (ground.cpp) and a fielder's
+// throw elevation (game/modes/baseball/throwing.cpp).
 #pragma once
 
 #include <cmath>
 
-namespace sweetspot::detail {
+namespace sweetspot {
 
 /// Root of g on [a, b] with g(a) > 0 >= g(b): Illinois-modified regula falsi, which keeps
 /// the bracket and converges superlinearly. Returns an x where |g| < 1e-12, or the bracket's
@@ -52,4 +53,4 @@ double find_root_newton(const GD& gd, double a, double b, double x0) {
   return b;
 }
 
-}  // namespace sweetspot::detail
+}  // namespace sweetspot

@@ -7,6 +7,7 @@
 #include "physics/flight.hpp"
 #include "physics/units.hpp"
 #include "physics/world.hpp"
+#include "support/height_grid.hpp"
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
@@ -26,19 +27,7 @@ const AeroModel& vacuum() {
 
 /// A flat square [-half, half]² at height y, split into n×n cells of two triangles each.
 WorldMesh grid_plane(int material, double half, int n, double y = 0.0) {
-  WorldMesh m;
-  m.material = material;
-  const double step = 2.0 * half / n;
-  for (int k = 0; k <= n; ++k)
-    for (int i = 0; i <= n; ++i) m.vertices.emplace_back(-half + i * step, y, -half + k * step);
-  const auto at = [n](int i, int k) { return static_cast<std::uint32_t>(k * (n + 1) + i); };
-  for (int k = 0; k < n; ++k)
-    for (int i = 0; i < n; ++i) {
-      // Counter-clockwise seen from above (+y): normal up.
-      m.indices.insert(m.indices.end(), {at(i, k), at(i, k + 1), at(i + 1, k)});
-      m.indices.insert(m.indices.end(), {at(i + 1, k), at(i, k + 1), at(i + 1, k + 1)});
-    }
-  return m;
+  return test::height_grid(material, half, n, [y](double, double) { return y; });
 }
 
 WorldDescription plane_world(double half, int n) {

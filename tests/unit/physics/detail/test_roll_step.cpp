@@ -13,6 +13,7 @@
 
 #include "physics/flight.hpp"
 #include "physics/world.hpp"
+#include "support/height_grid.hpp"
 #include "support/random_world.hpp"
 
 using namespace sweetspot;
@@ -32,19 +33,8 @@ WorldDescription faceted_bowl(double radius, double half, int n) {
   green.kind = SurfaceKind::Green;
   green.stimp = 3.5;  // m: a fast tour green, rolling resistance ~0.05
   d.materials = {green};
-  WorldMesh m;
-  const double cell = 2.0 * half / n;
-  for (int k = 0; k <= n; ++k)
-    for (int i = 0; i <= n; ++i) {
-      const double x = -half + i * cell, z = -half + k * cell;
-      m.vertices.emplace_back(x, (x * x + z * z) / (2.0 * radius), z);
-    }
-  const auto at = [n](int i, int k) { return static_cast<std::uint32_t>(k * (n + 1) + i); };
-  for (int k = 0; k < n; ++k)
-    for (int i = 0; i < n; ++i) {
-      m.indices.insert(m.indices.end(), {at(i, k), at(i, k + 1), at(i + 1, k)});  // normals up
-      m.indices.insert(m.indices.end(), {at(i + 1, k), at(i, k + 1), at(i + 1, k + 1)});
-    }
+  const WorldMesh m =
+      test::height_grid(0, half, n, [radius](double x, double z) { return (x * x + z * z) / (2.0 * radius); });
   d.meshes = {m};
   d.bounds_min = Vec3(-half, -5.0, -half);
   d.bounds_max = Vec3(half, 100.0, half);

@@ -273,7 +273,7 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
       // flat face sends a spinless ball forward), by regula falsi (8-12 impulses where 40
       // halvings took 40), within 1e-12 m/s of dead or 1e-13 rad of the root.
       const double stop = find_root([&](double t) { return forward(tilted(face_normal, along, t)); }, 0.0, tilt,
-                                            forward(face_normal), f_hi);
+                                    forward(face_normal), f_hi);
       n = tilted(face_normal, along, stop);
     }
   }

@@ -1,7 +1,9 @@
 #include "game/modes/baseball/throwing.hpp"
 
 #include <cmath>
+#include <string>
 
+#include "physics/error.hpp"
 #include "physics/flight.hpp"
 #include "physics/ground.hpp"
 #include "physics/launch.hpp"
@@ -44,24 +46,37 @@ Flown fly(const ShotModel& model, double speed, double elevation) {
 
 Throw throw_to(const AeroModel& aero, const Environment& env, double arm_speed, double distance,
                double relay_transfer) {
+  if (!(arm_speed > 0.0 && arm_speed <= 60.0))
+    throw InputError("throw: arm speed " + std::to_string(arm_speed) + " m/s (allowed (0, 60])");
+  if (!(distance >= 0.0 && distance <= 1000.0))
+    throw InputError("throw: distance " + std::to_string(distance) + " m (allowed [0, 1000])");
+  if (!(relay_transfer >= 0.0 && relay_transfer <= 10.0))
+    throw InputError("throw: relay transfer " + std::to_string(relay_transfer) + " s (allowed [0, 10])");
   if (distance < kLineToss) return {distance / arm_speed, 0.0};
   // The air's density from the day's weather; no wind: a throw goes any way across the
   // field, and the flight model here flies it along +x.
   Environment calm = env;
   calm.wind_speed = 0.0;
   const ShotModel model = make_shot_model(baseball_properties(), aero, calm, nullptr);
-  Flown lo = fly(model, arm_speed, kLowest), hi = fly(model, arm_speed, kHighest);
-  if (distance <= lo.carry) return {lo.time * distance / lo.carry, kLowest};
-  if (distance > hi.carry) {
-    // Out of reach in the air: a cutoff man relays it from halfway.
+  const Flown lo = fly(model, arm_speed, kLowest), hi = fly(model, arm_speed, kHighest);
+  // A cutoff man halfway who relays it: the only way past the arm's reach in the air, and
+  // quicker than a high lob just inside it.
+  const auto relay = [&] {
     const Throw half = throw_to(aero, env, arm_speed, 0.5 * distance, relay_transfer);
-    return {2.0 * half.time + relay_transfer, half.elevation};
-  }
+    return Throw{2.0 * half.time + relay_transfer, half.elevation};
+  };
+  if (distance > hi.carry) return relay();
+  // A line drive thrown down from the release reaches ~4.5 m: every throw longer than a toss
+  // is past it, which keeps the root finder's bracket; the guard only protects that.
+  if (distance <= lo.carry) return {lo.time * distance / lo.carry, kLowest};
   // Carry rises with elevation on [kLowest, kHighest]: the elevation where the throw carries
-  // `distance`, then its time (the root finder's own tolerance: 1e-12 m of carry).
+  // `distance` (to the flight integrator's own resolution, ~0.1 mm), then its time.
   const double elevation = find_root([&](double e) { return distance - fly(model, arm_speed, e).carry; }, kLowest,
                                      kHighest, distance - lo.carry, distance - hi.carry);
-  return {fly(model, arm_speed, elevation).time, elevation};
+  const Throw direct{fly(model, arm_speed, elevation).time, elevation};
+  if (distance < 2.0 * kLineToss) return direct;
+  const Throw relayed = relay();
+  return relayed.time < direct.time ? relayed : direct;
 }
 
 }  // namespace sweetspot

@@ -15,14 +15,16 @@ struct Throw {
   double elevation = 0.0;  ///< rad above horizontal at release
 };
 
-/// The throw that covers `distance` (m, horizontal) in the air at release speed `arm_speed`
+/// The quickest throw that covers `distance` (m, horizontal) at release speed `arm_speed`
 /// (m/s; Statcast's outfield arm strength 86–90 mph = 38–40 m/s) with the backspin of a
-/// four-seam grip, released 1.8 m up and caught 1.0 m up. The flattest such throw is the
-/// quickest: the elevation is solved on its rising branch. Beyond the arm's reach in the air
-/// (~105 m at 86 mph) it is a relay: two throws of half the distance, with `relay_transfer`
-/// seconds between them. A throw under 5 m is a toss on a line: distance / speed.
-/// The air is `env`'s (altitude, temperature, humidity) without its wind. Deterministic;
-/// `distance` ≥ 0 and `arm_speed` in (0, 60] m/s.
+/// four-seam grip, released 1.8 m up and caught 1.0 m up: the flattest arc that carries that
+/// far in the air (its elevation solved on the rising branch), or a relay through a cutoff
+/// man halfway (two throws of half the distance with `relay_transfer` seconds between them)
+/// when that is quicker: always past the arm's reach in the air (~105 m at 86 mph), and for a
+/// high lob just inside it. A throw under 5 m is a toss on a line: distance / speed.
+/// The air is `env`'s (altitude, temperature, humidity) without its wind. Deterministic.
+/// Throws InputError unless `arm_speed` is in (0, 60] m/s, `distance` in [0, 1000] m and
+/// `relay_transfer` in [0, 10] s.
 Throw throw_to(const AeroModel& aero, const Environment& env, double arm_speed, double distance,
                double relay_transfer);
 

@@ -89,6 +89,8 @@ TEST_CASE("the contact law carries over to TrackMan's LPGA irons, rows it was ne
   // predicted with the PGA calibration's bands. The LPGA 5-wood (4501 rpm at 12.1°) spins 16 %
   // more than this model gives; the LPGA driver row depends on where they strike it.
   const EquipmentCatalog& eq = test::assets().equipment();
+  const ShotModel model = make_shot_model(golf_ball_properties(), test::assets().aero("tour_fit"), Environment{},
+                                          nullptr, FlightSettings{});
   const TrackManRow lpga[] = {
       {"4-iron", 80, -1.7, 116, 14.3, 4801, 169, 43}, {"5-iron", 79, -1.9, 112, 14.8, 5081, 161, 45},
       {"6-iron", 78, -2.3, 109, 17.1, 5943, 152, 46}, {"7-iron", 76, -2.3, 104, 19.0, 6699, 141, 47},
@@ -111,6 +113,11 @@ TEST_CASE("the contact law carries over to TrackMan's LPGA irons, rows it was ne
                  << rad_to_deg(s.dynamic_loft) << " deg");
     CHECK(mps_to_mph(m.ball_speed) == Approx(row.ball_mph).epsilon(0.03));
     CHECK(radps_to_rpm(m.spin.total) == Approx(row.spin_rpm).epsilon(0.15));
+    // And it lands within the PGA bands' 3°. (Carry: within 4 % but the 4-iron's, −4.9 %.)
+    const ShotTrajectory t = simulate_shot(model, deliver_golf(eq.ball("tour"), club, s, club.face).launch, false);
+    INFO("carry " << t.summary.carry_m / 0.9144 << " yd (" << row.carry_yd << "), landing " << t.summary.landing_angle_deg
+                  << " deg (" << row.landing_deg << ")");
+    CHECK(t.summary.landing_angle_deg == Approx(row.landing_deg).margin(3.0));
   }
 }
 

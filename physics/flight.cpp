@@ -23,6 +23,7 @@ ShotModel make_shot_model(const BallProperties& ball, const AeroModel& aero, con
   check_range("flight.rel_tol", settings.rel_tol, FlightSettings::kRelTol, "");
   check_range("flight.abs_tol", settings.abs_tol, FlightSettings::kAbsTol, "");
   check_range("flight.bounce_rel_tol", settings.bounce_rel_tol, FlightSettings::kBounceRelTol, "");
+  check_range("flight.position_error_time", settings.position_error_time, FlightSettings::kPositionErrorTime, "s");
   check_range("flight.max_time", settings.max_time, FlightSettings::kMaxTime, "s");
   check_range("flight.max_steps", settings.max_steps, FlightSettings::kMaxSteps, "");
   check_range("flight.roll_speed", settings.roll_speed, FlightSettings::kRollSpeed, "m/s");

@@ -258,7 +258,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   const FlightSettings& set = m.settings;
   // The carry is integrated at rel_tol; the hops after it at the looser bounce tolerance.
   const IntegratorTolerances tol{s.landed ? std::max(set.rel_tol, set.bounce_rel_tol) : set.rel_tol, set.abs_tol,
-                                 1e-10, 1.0};
+                                 1e-10, 1.0, set.position_error_time};
   DopriCarry<9> carry;
   carry.h = s.step_size;
   carry.k1 = s.rate;

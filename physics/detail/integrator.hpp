@@ -42,6 +42,12 @@ struct IntegratorTolerances {
   double abs_tol = 1e-9;  ///< absolute error per step, in the state's units
   double h_min = 1e-10;   ///< s; below this the step is forced through
   double h_max = 1.0;     ///< s
+  /// s; 0: every component's error is judged against rel_tol × its own size. > 0: the state
+  /// starts with a position (components 0–2) followed by its rate (3–5), and the position's
+  /// error is judged against rel_tol × |rate| × this time instead: a position's size depends
+  /// on where the origin is, its rate does not, so the steps (and the results) do not change
+  /// when the whole problem is translated.
+  double position_time = 0.0;
 };
 
 /// What one trajectory carries from step to step: the next trial step size and the
@@ -130,7 +136,13 @@ int dopri_step(const F& f, const IntegratorTolerances& tol, DopriCarry<N>& carry
     const State k7 = f(t + h, y1);
     const State err = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
     // The scaled error, as one array expression: Eigen divides two components at a time.
-    const auto sc = tol.abs_tol + tol.rel_tol * y.array().abs().max(y1.array().abs());
+    auto sc = (tol.abs_tol + tol.rel_tol * y.array().abs().max(y1.array().abs())).eval();
+    if constexpr (N >= 6) {
+      if (tol.position_time > 0.0) {
+        const double rate = std::max(y.template segment<3>(3).norm(), y1.template segment<3>(3).norm());
+        sc.template head<3>().setConstant(tol.abs_tol + tol.rel_tol * tol.position_time * rate);
+      }
+    }
     const double norm = std::sqrt((err.array() / sc).square().sum() / N);
     // Standard controller: safety 0.9, growth limited to [0.2, 5].
     const double factor = step_growth(norm);

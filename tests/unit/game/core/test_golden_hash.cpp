@@ -70,7 +70,10 @@
 // the carry's rel_tol 1e-6 -> 4e-6 (totals within 0.3 mm, into-wind's 3.2 mm; bounces the
 // same) gave 0x49c3cc255c6d02fe. The tour ball's contact refitted with carry and landing
 // angle in the objective (ν 0.37 -> 0.30, face µ 0.28 -> 0.25, dynamic lofts solved again)
-// gives the value below: every golf launch moves (driver spin 2877 -> 2792 rpm).
+// gave 0xb4bc9ce90801feb2: every golf launch moves (driver spin 2877 -> 2792 rpm). The
+// step controller judging a position's error by the ball's speed × 0.5 s instead of its
+// distance from the origin (FlightSettings::position_error_time; steps fall elsewhere,
+// totals within the accuracy contract) gives the value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -101,7 +104,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0xb4bc9ce90801feb2ULL;
+constexpr std::uint64_t kGoldenHash = 0x080a7d008310ceb9ULL;
 
 }  // namespace
 

@@ -22,6 +22,18 @@ ShotTrajectory fly(const FlightCase& c, const Terrain* terrain) {
   return simulate_shot(make_shot_model(c.ball, aero, c.environment, terrain, c.settings), c.launch, c.record_samples);
 }
 
+ShotSpec launch_spec(const char* sport, double mph, double launch_deg, double rpm, double direction_deg) {
+  ShotSpec spec;
+  spec.sport = sport;
+  LaunchStrike l;
+  l.numbers.ball_speed = mph_to_mps(mph);
+  l.numbers.vertical_angle = deg_to_rad(launch_deg);
+  l.numbers.horizontal_angle = deg_to_rad(direction_deg);
+  l.numbers.spin = rpm_to_radps(rpm);
+  spec.strike = l;
+  return spec;
+}
+
 FlightCase golf_launch(double mph, double launch_deg, double rpm, const char* model) {
   FlightCase c;
   c.aero = &assets().aero(model);

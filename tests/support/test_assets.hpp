@@ -3,6 +3,7 @@
 #pragma once
 
 #include "game/core/assets.hpp"
+#include "game/core/shot_spec.hpp"
 #include "physics/flight.hpp"
 
 namespace sweetspot::test {
@@ -29,6 +30,10 @@ struct FlightCase {
 };
 /// simulate_shot(make_shot_model(...), c.launch, c.record_samples) over `terrain`.
 ShotTrajectory fly(const FlightCase& c, const Terrain* terrain = nullptr);
+/// A launch-monitor shot for the one way in (resolve -> run_shot): the sport's default ball,
+/// world and rules, from ball speed (mph), launch angle (deg), spin (rpm) and direction (deg).
+ShotSpec launch_spec(const char* sport, double mph, double launch_deg, double rpm, double direction_deg = 0.0);
+
 /// A golf launch from launch-monitor numbers at the origin tee (ball on the ground).
 FlightCase golf_launch(double mph, double launch_deg, double rpm, const char* model = "tour_fit");
 

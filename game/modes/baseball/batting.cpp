@@ -163,10 +163,8 @@ BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const En
   }
   if (who) *who = best_f->name;
   // The throw at the fielder's arm strength, flown through the air to the bag (throwing.hpp).
-  const double arm = mph_to_mps(best_f->arm_mph);
-  const auto defence = [&](const Vec3& base) {
-    return best_t + kTransfer + throw_to(aero, env, arm, horizontal(best_p, base), kTransfer).time;
-  };
+  const Thrower thrower(aero, env, mph_to_mps(best_f->arm_mph), kTransfer);
+  const auto defence = [&](const Vec3& base) { return best_t + kTransfer + thrower.to(horizontal(best_p, base)).time; };
   if (defence(kFirst) < kHomeToFirst) return BattedOutcome::Out;
   // Extra bases the batter can take with a half-second to spare.
   if (defence(kSecond) < kHomeToFirst + kBaseToBase + 0.5) return BattedOutcome::Single;

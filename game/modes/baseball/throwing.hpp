@@ -6,6 +6,7 @@
 
 #include "physics/aero.hpp"
 #include "physics/atmosphere.hpp"
+#include "physics/flight.hpp"
 
 namespace sweetspot {
 
@@ -27,5 +28,25 @@ struct Throw {
 /// `relay_transfer` in [0, 10] s.
 Throw throw_to(const AeroModel& aero, const Environment& env, double arm_speed, double distance,
                double relay_transfer);
+
+/// throw_to() for one fielder's arm and several distances (the bases he might throw to):
+/// the air and the arm's reach in it are worked out once. Same results as throw_to().
+class Thrower {
+ public:
+  /// Throws InputError unless `arm_speed` is in (0, 60] m/s and `relay_transfer` in [0, 10] s.
+  Thrower(const AeroModel& aero, const Environment& env, double arm_speed, double relay_transfer);
+  /// Throws InputError unless `distance` is in [0, 1000] m.
+  Throw to(double distance) const;
+
+ private:
+  struct Flown {
+    double carry = 0.0, time = 0.0;  ///< m, s
+  };
+  Flown fly(double elevation) const;
+
+  ShotModel model_;
+  double arm_speed_, relay_transfer_;
+  Flown lowest_, highest_;  ///< the throws on a line down and at the highest useful arc
+};
 
 }  // namespace sweetspot

@@ -37,6 +37,20 @@ GolfSwing row_swing(const TrackManRow& row) {
   s.attack_angle = deg_to_rad(row.attack_deg);
   return s;
 }
+
+/// The row's swing with the dynamic loft (bisected to 40 halvings) that launches at its angle.
+GolfSwing swing_launching_at_row(const ClubSpec& club, const TrackManRow& row) {
+  const BallSpec& ball = test::assets().equipment().ball("tour");
+  GolfSwing s = row_swing(row);
+  double lo = deg_to_rad(2.0), hi = deg_to_rad(70.0);
+  for (int i = 0; i < 40; ++i) {
+    s.dynamic_loft = 0.5 * (lo + hi);
+    const double launch = measure_launch(deliver_golf(ball, club, s, club.face).launch).vertical_angle;
+    (launch < deg_to_rad(row.launch_deg) ? lo : hi) = s.dynamic_loft;
+  }
+  s.dynamic_loft = 0.5 * (lo + hi);
+  return s;
+}
 }  // namespace
 
 TEST_CASE("tour deliveries reproduce the TrackMan PGA averages", "[delivery][calibration]") {
@@ -66,8 +80,7 @@ TEST_CASE("tour deliveries carry and land like the TrackMan PGA averages", "[del
   // smash ceiling for the USGA COR limit, and carries −4.3 %; it is held to where it is so
   // that it cannot slip further unnoticed.
   const EquipmentCatalog& eq = test::assets().equipment();
-  const ShotModel model = make_shot_model(golf_ball_properties(), test::assets().aero("tour_fit"), Environment{},
-                                          nullptr, FlightSettings{});
+  const ShotModel model = test::golf_model();
   for (const TrackManRow& row : kRows) {
     const ClubSpec& club = eq.club(row.club);
     const ShotTrajectory t = simulate_shot(model, deliver_golf(eq.ball("tour"), club, row_swing(row), club.face).launch, false);
@@ -89,8 +102,7 @@ TEST_CASE("the contact law carries over to TrackMan's LPGA irons, rows it was ne
   // predicted with the PGA calibration's bands. The LPGA 5-wood (4501 rpm at 12.1°) spins 16 %
   // more than this model gives; the LPGA driver row depends on where they strike it.
   const EquipmentCatalog& eq = test::assets().equipment();
-  const ShotModel model = make_shot_model(golf_ball_properties(), test::assets().aero("tour_fit"), Environment{},
-                                          nullptr, FlightSettings{});
+  const ShotModel model = test::golf_model();
   const TrackManRow lpga[] = {
       {"4-iron", 80, -1.7, 116, 14.3, 4801, 169, 43}, {"5-iron", 79, -1.9, 112, 14.8, 5081, 161, 45},
       {"6-iron", 78, -2.3, 109, 17.1, 5943, 152, 46}, {"7-iron", 76, -2.3, 104, 19.0, 6699, 141, 47},
@@ -99,14 +111,7 @@ TEST_CASE("the contact law carries over to TrackMan's LPGA irons, rows it was ne
   };
   for (const TrackManRow& row : lpga) {
     const ClubSpec& club = eq.club(row.club);
-    GolfSwing s = row_swing(row);
-    double lo = deg_to_rad(2.0), hi = deg_to_rad(70.0);
-    for (int i = 0; i < 40; ++i) {
-      s.dynamic_loft = 0.5 * (lo + hi);
-      const double launch = measure_launch(deliver_golf(eq.ball("tour"), club, s, club.face).launch).vertical_angle;
-      (launch < deg_to_rad(row.launch_deg) ? lo : hi) = s.dynamic_loft;
-    }
-    s.dynamic_loft = 0.5 * (lo + hi);
+    const GolfSwing s = swing_launching_at_row(club, row);
     const LaunchMetrics m = measure_launch(deliver_golf(eq.ball("tour"), club, s, club.face).launch);
     INFO("LPGA " << row.club << ": ball " << mps_to_mph(m.ball_speed) << " mph (TrackMan " << row.ball_mph << "), spin "
                  << radps_to_rpm(m.spin.total) << " rpm (" << row.spin_rpm << "), dynamic loft "
@@ -127,15 +132,9 @@ TEST_CASE("each club's documented dynamic loft is the one that launches at its r
   const EquipmentCatalog& eq = test::assets().equipment();
   for (const TrackManRow& row : kRows) {
     const ClubSpec& club = eq.club(row.club);
-    double lo = deg_to_rad(2.0), hi = deg_to_rad(70.0);
-    for (int i = 0; i < 40; ++i) {
-      GolfSwing s = row_swing(row);
-      s.dynamic_loft = 0.5 * (lo + hi);
-      const double launch = measure_launch(deliver_golf(eq.ball("tour"), club, s, club.face).launch).vertical_angle;
-      (launch < deg_to_rad(row.launch_deg) ? lo : hi) = s.dynamic_loft;
-    }
-    INFO(row.club << ": documented " << rad_to_deg(club.dynamic_loft) << " deg, solved " << rad_to_deg(0.5 * (lo + hi)));
-    CHECK(rad_to_deg(club.dynamic_loft) == Approx(rad_to_deg(0.5 * (lo + hi))).margin(0.1));
+    const double solved = swing_launching_at_row(club, row).dynamic_loft;
+    INFO(row.club << ": documented " << rad_to_deg(club.dynamic_loft) << " deg, solved " << rad_to_deg(solved));
+    CHECK(rad_to_deg(club.dynamic_loft) == Approx(rad_to_deg(solved)).margin(0.1));
   }
 }
 

@@ -29,15 +29,7 @@ bool has_material(const WorldDescription& d, const std::string& name) {
 // A launch on the shipped worlds through the one way in (ShotSpec -> run_shot), so the
 // sport's rules apply.
 ShotResult launch(const char* sport, double mph, double deg, double rpm, double dir_deg = 0.0) {
-  ShotSpec spec;
-  spec.sport = sport;
-  LaunchStrike l;
-  l.numbers.ball_speed = mph_to_mps(mph);
-  l.numbers.vertical_angle = deg_to_rad(deg);
-  l.numbers.horizontal_angle = deg_to_rad(dir_deg);
-  l.numbers.spin = rpm_to_radps(rpm);
-  spec.strike = l;
-  return run_shot(resolve(spec, test::assets()), "test");
+  return run_shot(resolve(test::launch_spec(sport, mph, deg, rpm, dir_deg), test::assets()), "test");
 }
 
 void write(const fs::path& p, const std::string& text) {

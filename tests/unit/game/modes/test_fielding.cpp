@@ -22,15 +22,7 @@ const AeroModel& aero() { return test::assets().aero(test::assets().sport("baseb
 
 // A batted ball on the ballpark from Statcast-style launch numbers.
 BattedOutcome outcome(double ev_mph, double la_deg, double spray_deg, double spin_rpm, std::string* who) {
-  ShotSpec spec;
-  spec.sport = "baseball";
-  LaunchStrike ls;
-  ls.numbers.ball_speed = mph_to_mps(ev_mph);
-  ls.numbers.vertical_angle = deg_to_rad(la_deg);
-  ls.numbers.horizontal_angle = deg_to_rad(spray_deg);
-  ls.numbers.spin = rpm_to_radps(spin_rpm);
-  spec.strike = ls;
-  const ResolvedShot r = resolve(spec, test::assets());
+  const ResolvedShot r = resolve(test::launch_spec("baseball", ev_mph, la_deg, spin_rpm, spray_deg), test::assets());
   const ShotResult shot = run_shot(r, "test", {true, true});
   return field_ball(shot, *r.aero, r.spec.environment, who);
 }

@@ -13,8 +13,8 @@ AeroCoefficients AeroModel::coefficients(double s, double spin, double re) const
   return detail::aero_coefficients(*this, s, spin, re, 1.0 / crisis_width, lift_onset > 0.0 ? 1.0 / lift_onset : 0.0);
 }
 
-double AeroModel::spin_decay_rate(double speed) const {
-  return decay_per_metre * speed + (decay_tau > 0.0 ? 1.0 / decay_tau : 0.0);
+double AeroModel::spin_decay_rate(double speed, double density) const {
+  return (decay_per_metre * speed + (decay_tau > 0.0 ? 1.0 / decay_tau : 0.0)) * (density / kSpinDecayReferenceDensity);
 }
 
 const char* to_string(LiftLaw l) {
@@ -39,13 +39,18 @@ bool lift_law_from_string(std::string_view name, LiftLaw* out) {
 std::string validate_aero_model(const AeroModel& m) {
   const std::string who = "aero model '" + m.name + "': ";
   for (double c : {m.d0, m.d1, m.d2, m.d_krpm, m.l0, m.l1, m.l2, m.s_max, m.decay_per_metre, m.decay_tau,
-                   m.lift_onset, m.crisis_re, m.crisis_rise, m.crisis_width})
+                   m.lift_onset, m.crisis_re, m.crisis_rise, m.crisis_width, m.drag_re_slope})
     if (!std::isfinite(c)) return who + "coefficients must be finite numbers";
   if (!(m.s_max > 0.0)) return who + "s_max must be > 0";
   if (!(m.decay_per_metre >= 0.0) || !(m.decay_tau >= 0.0)) return who + "spin decay terms must be >= 0";
   if (!(m.lift_onset >= 0.0 && m.lift_onset < m.s_max)) return who + "lift_onset must be in [0, s_max)";
   if (!(m.crisis_rise >= 0.0 && m.crisis_rise <= 1.5 && m.crisis_re >= 0.0 && m.crisis_width > 0.0))
     return who + "drag crisis: re >= 0, 0 <= rise <= 1.5 (a smooth sphere's Cd rises ~0.3 below its crisis), width > 0";
+  // Past the crisis Cd climbs gently (tour_fit: 0.025 per 1e5); 0.3 per 1e5 would double a
+  // golf ball's Cd between a wedge's launch (Re 1.2e5) and a driver's (2.2e5), which no
+  // measured ball does. A Cd that falls with Re is the crisis's job, not this term's.
+  if (!(m.drag_re_slope >= 0.0 && m.drag_re_slope <= 0.3))
+    return who + "drag_re_slope must be in [0, 0.3] (Cd per 1e5 of Reynolds number past the crisis)";
   if (m.lift == LiftLaw::Saturating && !(m.l0 > 0.0 && m.l2 >= 0.0))
     return who + "a saturating lift law needs l0 > 0 and l2 >= 0 (no pole at positive S)";
   // Spin decay faster than e-fold in 0.1 s or within 1 m of flight is no ball's (a golf

@@ -25,6 +25,14 @@ struct AeroCoefficients {
   double cl = 0.0;  ///< lift coefficient, golf driver ~0.2
 };
 
+/// The air density (kg/m³) at which the models' spin decay is stated: Environment{}'s air
+/// (21 °C, 50 % relative humidity, 101 325 Pa; air_density() gives this double). Smits &
+/// Smith's wind tunnel and Nathan's trajectory calculator (70 °F, sea level, 50 %) both
+/// worked in such air. The decay is the air's friction torque on the spinning ball, which
+/// is ∝ ρ (aero_models.toml: decay_length = 2I/(ρ A R² c)), so both decay terms scale by
+/// ρ / this: a ball at Denver (ρ 17 % lower) keeps its spin longer.
+inline constexpr double kSpinDecayReferenceDensity = 1.1944245034101437;
+
 /// A named drag/lift/spin-decay model. Immutable data; evaluate with coefficients(). The
 /// shipped models and their sources are in assets/aero_models.toml.
 struct AeroModel {
@@ -44,16 +52,23 @@ struct AeroModel {
   /// Drag crisis: below the critical Reynolds number the boundary layer stays laminar and
   /// Cd rises by crisis_rise, Cd += rise / (1 + exp((Re − re)/width)). 0 = none.
   double crisis_re = 0.0, crisis_rise = 0.0, crisis_width = 1.0;
-  /// Spin decay dω/dt = -ω (decay_per_metre·|v_r| + 1/decay_tau). Golf: ~4 %/s at a
-  /// driver's 74.7 m/s, proportional to speed -> 5.36e-4 1/m. Nathan: tau ≈ 30 s.
+  /// Past the crisis a dimpled ball's drag climbs again with Reynolds number (the
+  /// supercritical rise of rough spheres, Achenbach 1974): Cd += drag_re_slope ·
+  /// (Re − crisis_re)/1e5 · (1 − 1/(1 + exp((Re − crisis_re)/width))), the crisis's
+  /// turbulent fraction (smooth: ~0 below the crisis, the straight line above it). 0 = none;
+  /// tour_fit 0.048 per 1e5.
+  double drag_re_slope = 0.0;
+  /// Spin decay dω/dt = -ω (decay_per_metre·|v_r| + 1/decay_tau)·ρ/kSpinDecayReferenceDensity.
+  /// Golf: ~4 %/s at a driver's 74.7 m/s, proportional to speed -> 5.36e-4 1/m. Nathan:
+  /// tau ≈ 30 s. Both stated at the reference density.
   double decay_per_metre = 0.0;  ///< 1/m
   double decay_tau = 0.0;        ///< s; 0 = no speed-independent term
 
   /// Coefficients at spin parameter `s` (≥ 0), total spin rate `spin` (rad/s) and Reynolds
   /// number `re` (ρ|v|D/µ; a driver launches at ~2e5). Continuous in all three.
   AeroCoefficients coefficients(double s, double spin, double re = 2e5) const;
-  /// Spin decay rate (1/s) at air speed `speed` (m/s).
-  double spin_decay_rate(double speed) const;
+  /// Spin decay rate (1/s) at air speed `speed` (m/s) in air of `density` (kg/m³).
+  double spin_decay_rate(double speed, double density = kSpinDecayReferenceDensity) const;
 };
 
 const char* to_string(LiftLaw l);

@@ -11,7 +11,7 @@ std::vector<AeroModel> load_aero_models(const std::filesystem::path& path) {
   std::vector<AeroModel> out;
   for (const toml::table* t : f.tables(f.root(), "model", true)) {
     f.only_keys(*t, "model", {"name", "sport", "source", "drag", "drag_per_krpm", "lift_law", "lift", "s_max",
-                              "decay_length", "decay_tau", "lift_onset", "drag_crisis"});
+                              "decay_length", "decay_tau", "lift_onset", "drag_crisis", "drag_re_slope"});
     AeroModel m;
     m.name = f.text(f.required(*t, "name", "the model's name"), "name");
     m.sport = f.text(f.required(*t, "sport", "golf or baseball"), "sport");
@@ -41,6 +41,8 @@ std::vector<AeroModel> load_aero_models(const std::filesystem::path& path) {
       m.crisis_rise = c[1];
       m.crisis_width = c[2];
     }
+    // Cd per 1e5 of Reynolds number past the crisis: a plain number.
+    m.drag_re_slope = f.quantity_or(*t, "drag_re_slope", Dimension::Dimensionless, 0.0);
     if (const std::string why = validate_aero_model(m); !why.empty()) throw InputError(f.where(*t) + ": " + why);
     for (const AeroModel& o : out)
       if (o.name == m.name) throw InputError(f.where(*t) + ": aero model '" + m.name + "' is defined twice");

@@ -23,12 +23,21 @@ namespace sweetspot::detail {
   AeroCoefficients c;
   c.cd = m.d0 + m.d1 * sc + m.d2 * sc * sc;
   if (m.d_krpm != 0.0) c.cd += m.d_krpm * (radps_to_rpm(spin) / 1000.0);
-  if (m.crisis_rise > 0.0) {
-    // Above the crisis by more than kCrisisTail widths the term is under rise·e^-40 ≈ 4e-18·rise,
-    // far below one ulp of any Cd (> 0.05): skip the exp.
+  if (m.crisis_rise > 0.0 || m.drag_re_slope != 0.0) {
+    // Above the crisis by more than kCrisisTail widths the laminar fraction 1/(1 + e^x) is
+    // under e^-40 ≈ 4e-18, far below one ulp of any Cd (> 0.05): skip the exp.
     constexpr double kCrisisTail = 40.0;
     const double x = (re - m.crisis_re) * inv_width;
-    if (x < kCrisisTail) c.cd += m.crisis_rise / (1.0 + std::exp(std::max(x, -50.0)));
+    const double above = (re - m.crisis_re) * 1e-5;  // Re past the crisis, in units of 1e5
+    if (x < kCrisisTail) {
+      const double one_plus_e = 1.0 + std::exp(std::max(x, -50.0));
+      c.cd += m.crisis_rise / one_plus_e;
+      // The supercritical rise grows with the turbulent fraction 1 - 1/(1 + e^x): smooth
+      // through the crisis (a kink at Re_c cost the step control millimetres of carry).
+      if (m.drag_re_slope != 0.0) c.cd += m.drag_re_slope * above * (1.0 - 1.0 / one_plus_e);
+    } else {
+      c.cd += m.drag_re_slope * above;
+    }
   }
   switch (m.lift) {
     case LiftLaw::Quadratic: c.cl = m.l0 + m.l1 * sc + m.l2 * sc * sc; break;
@@ -46,7 +55,8 @@ struct AeroKernel {
   double re_per_speed;  ///< ρD/µ (s/m)
   double inv_width;     ///< 1/crisis_width
   double inv_onset;     ///< 1/lift_onset, 0 when none
-  double decay_const;   ///< 1/decay_tau (1/s), 0 when none
+  double decay_per_metre;  ///< the model's decay_per_metre at this air's density (1/m)
+  double decay_const;      ///< 1/decay_tau at this air's density (1/s), 0 when none
 
   AeroKernel(const AeroModel& m, double density, double r, double viscosity, double mass)
       : model(&m),
@@ -55,7 +65,8 @@ struct AeroKernel {
         re_per_speed(density * 2.0 * r / viscosity),
         inv_width(1.0 / m.crisis_width),
         inv_onset(m.lift_onset > 0.0 ? 1.0 / m.lift_onset : 0.0),
-        decay_const(m.decay_tau > 0.0 ? 1.0 / m.decay_tau : 0.0) {}
+        decay_per_metre(m.decay_per_metre * (density / kSpinDecayReferenceDensity)),
+        decay_const(m.decay_tau > 0.0 ? (density / kSpinDecayReferenceDensity) / m.decay_tau : 0.0) {}
 
   /// Acceleration (m/s²) of a ball moving at `v_rel` through the air with spin `omega`
   /// (rad/s), and its spin's rate of change (rad/s²).
@@ -63,7 +74,7 @@ struct AeroKernel {
     const AeroModel& m = *model;
     const double speed2 = v_rel.squaredNorm();
     const double speed = std::sqrt(speed2);
-    *spin_rate = -(m.decay_per_metre * speed + decay_const) * omega;
+    *spin_rate = -(decay_per_metre * speed + decay_const) * omega;
     if (speed2 == 0.0) {  // (a NaN velocity goes on, so the integrator sees the NaN)
       *accel = Vec3::Zero();
       return;

@@ -1,7 +1,10 @@
 // Aero models are the published formulas, selectable by name.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include "physics/aero.hpp"
+#include "physics/atmosphere.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 #include "support/test_assets.hpp"
@@ -31,6 +34,8 @@ TEST_CASE("spin decay: golf ~4 %/s at driver speed, proportional to speed; natha
   CHECK(g.spin_decay_rate(mph_to_mps(167.0)) == Approx(0.04).epsilon(1e-3));
   CHECK(g.spin_decay_rate(mph_to_mps(83.5)) == Approx(0.02).epsilon(1e-3));
   CHECK(test::assets().aero("nathan").spin_decay_rate(40.0) == Approx(1.0 / 30.0));
+  // The rates are stated in the default environment's air, where both sources measured.
+  CHECK(kSpinDecayReferenceDensity == air_density(Environment{}));
 }
 
 TEST_CASE("aero forces: drag opposes motion, backspin lifts, rifle spin does not", "[aero]") {
@@ -76,6 +81,15 @@ TEST_CASE("unknown aero model lists the allowed names; the shipped models valida
   bad = test::assets().aero("ferguson2022");
   bad.crisis_rise = 50.0;
   CHECK(validate_aero_model(bad).find("rise") != std::string::npos);
+  // The rise of Cd past the crisis: never falling (that is the crisis's shape), never steep.
+  for (const double slope : {-0.01, 0.5, std::nan("")}) {
+    bad = test::assets().aero("tour_fit");
+    bad.drag_re_slope = slope;
+    CHECK_FALSE(validate_aero_model(bad).empty());
+  }
+  bad = test::assets().aero("tour_fit");
+  bad.drag_re_slope = 0.5;
+  CHECK(validate_aero_model(bad).find("drag_re_slope must be in [0, 0.3]") != std::string::npos);
   CHECK(test::assets().sport("golf").default_aero == "tour_fit");
   CHECK(test::assets().sport("baseball").default_aero == "nathan");
 }

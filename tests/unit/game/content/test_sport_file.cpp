@@ -35,5 +35,8 @@ TEST_CASE("a bad sports or aero file is named with its line and key", "[sport][i
   std::ofstream(dir / "aero.toml") << "[[model]]\nname = \"x\"\nsport = \"golf\"\nsource = \"s\"\ndrag = [-1, 0, 0]\n"
                                       "lift_law = \"quadratic\"\nlift = [0, 1, 0]\n";
   CHECK_THROWS_WITH(load_aero_models(dir / "aero.toml"), Contains("aero.toml:1") && Contains("Cd must be > 0"));
+  std::ofstream(dir / "aero.toml") << "[[model]]\nname = \"x\"\nsport = \"golf\"\nsource = \"s\"\ndrag = [0.2, 0, 0]\n"
+                                      "lift_law = \"quadratic\"\nlift = [0, 1, 0]\ndrag_re_slope = -0.2\n";
+  CHECK_THROWS_WITH(load_aero_models(dir / "aero.toml"), Contains("aero.toml:1") && Contains("drag_re_slope") && Contains("[0, 0.3]"));
   fs::remove_all(dir);
 }

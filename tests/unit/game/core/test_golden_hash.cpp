@@ -73,7 +73,11 @@
 // gave 0xb4bc9ce90801feb2: every golf launch moves (driver spin 2877 -> 2792 rpm). The
 // step controller judging a position's error by the ball's speed × 0.5 s instead of its
 // distance from the origin (FlightSettings::position_error_time; steps fall elsewhere,
-// totals within the accuracy contract) gives the value below.
+// totals within the accuracy contract) gave 0x080a7d008310ceb9. tour_fit refitted with the
+// Denver carry gain in its objective and a Cd that rises gently with Re past the crisis
+// (drag_re_slope), and spin decay scaled by the air's density (the default air's factor is
+// exactly 1): every golf flight moves (golf/driver carry 263.25 -> 264.10 yd on flat
+// ground), the baseball shots do not; it gives the value below.
 //
 // To update after an intended change: run `build/release/tests/unit_tests "[golden]" -s`,
 // which prints the new hash and each shot's numbers; review them against the old ones, then
@@ -104,7 +108,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x080a7d008310ceb9ULL;
+constexpr std::uint64_t kGoldenHash = 0xa27ba2552e1be3deULL;
 
 }  // namespace
 

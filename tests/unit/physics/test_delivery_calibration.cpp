@@ -77,7 +77,7 @@ TEST_CASE("tour deliveries carry and land like the TrackMan PGA averages", "[del
   // Issue 15's bands on flat ground, standard air: carry within 4 % and landing angle within
   // 3° of the row, the whole shot predicted from the club's delivery. The driver's carry is
   // the closest to its edge (−4.0 %): its ball leaves 2.9 % slow, at this head's free-body
-  // smash ceiling for the USGA COR limit (README, "What the driver's carry needs").
+  // smash ceiling for the USGA COR limit (README, the physics table's notes).
   const EquipmentCatalog& eq = test::assets().equipment();
   const ShotModel model = test::golf_model();
   for (const TrackManRow& row : kRows) {

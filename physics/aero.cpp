@@ -46,7 +46,7 @@ std::string validate_aero_model(const AeroModel& m) {
   if (!(m.lift_onset >= 0.0 && m.lift_onset < m.s_max)) return who + "lift_onset must be in [0, s_max)";
   if (!(m.crisis_rise >= 0.0 && m.crisis_rise <= 1.5 && m.crisis_re >= 0.0 && m.crisis_width > 0.0))
     return who + "drag crisis: re >= 0, 0 <= rise <= 1.5 (a smooth sphere's Cd rises ~0.3 below its crisis), width > 0";
-  // Past the crisis Cd climbs gently (tour_fit: 0.025 per 1e5); 0.3 per 1e5 would double a
+  // Past the crisis Cd climbs gently (tour_fit: 0.058 per 1e5); 0.3 per 1e5 would double a
   // golf ball's Cd between a wedge's launch (Re 1.2e5) and a driver's (2.2e5), which no
   // measured ball does. A Cd that falls with Re is the crisis's job, not this term's.
   if (!(m.drag_re_slope >= 0.0 && m.drag_re_slope <= 0.3))

@@ -26,11 +26,12 @@ struct AeroCoefficients {
 };
 
 /// The air density (kg/m³) at which the models' spin decay is stated: Environment{}'s air
-/// (21 °C, 50 % relative humidity, 101 325 Pa; air_density() gives this double). Smits &
-/// Smith's wind tunnel and Nathan's trajectory calculator (70 °F, sea level, 50 %) both
-/// worked in such air. The decay is the air's friction torque on the spinning ball, which
-/// is ∝ ρ (aero_models.toml: decay_length = 2I/(ρ A R² c)), so both decay terms scale by
-/// ρ / this: a ball at Denver (ρ 17 % lower) keeps its spin longer.
+/// (21 °C, 50 % relative humidity, 101 325 Pa; air_density() gives this double): the air of
+/// Nathan's trajectory calculator's defaults (70 °F, sea level, 50 %) and of a sea-level
+/// laboratory, where Smits & Smith measured the golf ball's decay. The decay is the air's
+/// friction torque on the spinning ball, which is ∝ ρ (aero_models.toml: decay_length =
+/// 2I/(ρ A R² c)), so both decay terms scale by ρ / this: a ball at Denver (ρ 17 % lower)
+/// keeps its spin longer.
 inline constexpr double kSpinDecayReferenceDensity = 1.1944245034101437;
 
 /// A named drag/lift/spin-decay model. Immutable data; evaluate with coefficients(). The
@@ -56,7 +57,7 @@ struct AeroModel {
   /// supercritical rise of rough spheres, Achenbach 1974): Cd += drag_re_slope ·
   /// (Re − crisis_re)/1e5 · (1 − 1/(1 + exp((Re − crisis_re)/width))), the crisis's
   /// turbulent fraction (smooth: ~0 below the crisis, the straight line above it). 0 = none;
-  /// tour_fit 0.048 per 1e5.
+  /// tour_fit 0.058 per 1e5.
   double drag_re_slope = 0.0;
   /// Spin decay dω/dt = -ω (decay_per_metre·|v_r| + 1/decay_tau)·ρ/kSpinDecayReferenceDensity.
   /// Golf: ~4 %/s at a driver's 74.7 m/s, proportional to speed -> 5.36e-4 1/m. Nathan:

@@ -30,11 +30,11 @@ namespace sweetspot::detail {
     const double x = (re - m.crisis_re) * inv_width;
     const double above = (re - m.crisis_re) * 1e-5;  // Re past the crisis, in units of 1e5
     if (x < kCrisisTail) {
-      const double one_plus_e = 1.0 + std::exp(std::max(x, -50.0));
-      c.cd += m.crisis_rise / one_plus_e;
-      // The supercritical rise grows with the turbulent fraction 1 - 1/(1 + e^x): smooth
-      // through the crisis (a kink at Re_c cost the step control millimetres of carry).
-      if (m.drag_re_slope != 0.0) c.cd += m.drag_re_slope * above * (1.0 - 1.0 / one_plus_e);
+      // rise · laminar fraction 1/(1 + e^x) plus the supercritical rise · turbulent fraction
+      // e^x/(1 + e^x), over one division: smooth through the crisis (a kink at Re_c cost the
+      // step control millimetres of carry). With no slope the sum is exactly the rise.
+      const double e = std::exp(std::max(x, -50.0));
+      c.cd += (m.crisis_rise + m.drag_re_slope * above * e) / (1.0 + e);
     } else {
       c.cd += m.drag_re_slope * above;
     }

@@ -114,11 +114,13 @@ TEST_CASE("the contact law carries over to TrackMan's LPGA irons, rows it was ne
                  << rad_to_deg(s.dynamic_loft) << " deg");
     CHECK(mps_to_mph(m.ball_speed) == Approx(row.ball_mph).epsilon(0.03));
     CHECK(radps_to_rpm(m.spin.total) == Approx(row.spin_rpm).epsilon(0.15));
-    // And it lands within the PGA bands' 3°. (Carry: within 4 % but the 4-iron's, −4.9 %.)
+    // And it carries within the PGA bands' 4 % and lands within their 3°. (Before tour_fit
+    // was refitted with the altitude gain the 4-iron carried −4.9 %; now −3.2 %.)
     const ShotTrajectory t = simulate_shot(model, deliver_golf(eq.ball("tour"), club, s, club.face).launch, false);
     INFO("carry " << t.summary.carry_m / 0.9144 << " yd (" << row.carry_yd << "), landing " << t.summary.landing_angle_deg
                   << " deg (" << row.landing_deg << ")");
     CHECK(t.summary.landing_angle_deg == Approx(row.landing_deg).margin(3.0));
+    CHECK(t.summary.carry_m / 0.9144 == Approx(row.carry_yd).epsilon(0.04));
   }
 }
 

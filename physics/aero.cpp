@@ -51,6 +51,12 @@ std::string validate_aero_model(const AeroModel& m) {
   // measured ball does. A Cd that falls with Re is the crisis's job, not this term's.
   if (!(m.drag_re_slope >= 0.0 && m.drag_re_slope <= 0.3))
     return who + "drag_re_slope must be in [0, 0.3] (Cd per 1e5 of Reynolds number past the crisis)";
+  if (m.drag_re_slope > 0.0 && !(m.crisis_rise > 0.0))
+    return who + "drag_re_slope is measured from the drag crisis: give drag_crisis too";
+  // A crisis narrower than Re 100 (0.04 m/s for a golf ball) is a step the integrator cannot
+  // resolve; the measured ones span ~1e4 (Bearman & Harvey).
+  if ((m.crisis_rise > 0.0 || m.drag_re_slope > 0.0) && !(m.crisis_width >= 100.0))
+    return who + "drag crisis: width must be at least 100 (in Reynolds number)";
   if (m.lift == LiftLaw::Saturating && !(m.l0 > 0.0 && m.l2 >= 0.0))
     return who + "a saturating lift law needs l0 > 0 and l2 >= 0 (no pole at positive S)";
   // Spin decay faster than e-fold in 0.1 s or within 1 m of flight is no ball's (a golf
@@ -60,11 +66,24 @@ std::string validate_aero_model(const AeroModel& m) {
   // Drag must stay positive over the fitted range, or the ball would be pushed forward; and
   // bounded: a sphere's Cd is ~0.1-0.6 and its Cl under 0.6 in any regime a ball flies in,
   // so a coefficient past 2 is a typo (a hostile drag = [1e300, ...] sent the state to inf).
-  for (int i = 0; i <= 100; ++i) {
-    const double sp = m.s_max * i / 100.0;
-    const AeroCoefficients c = m.coefficients(sp, 0.0);
-    if (!(c.cd > 0.0)) return who + "Cd must be > 0 for every S in [0, s_max]";
-    if (!(c.cd <= 2.0) || !(std::abs(c.cl) <= 2.0)) return who + "Cd and |Cl| must stay at most 2 for every S in [0, s_max]";
+  // Checked at every Reynolds number a ball meets, from rest to a 98 m/s drive or a 55 m/s
+  // liner into a 60 m/s wind (~6e5), through the crisis, and at no spin and at the launch
+  // limit's 20 000 rpm (the Nathan drag term grows with spin): a negative d0 hides behind the
+  // rise past the crisis at Re 2e5 and shows at a wedge's 1.2e5.
+  const double w = m.crisis_width;
+  const double res[] = {0.0, 2.5e4, 5e4, m.crisis_re - 2.0 * w, m.crisis_re, m.crisis_re + 2.0 * w,
+                        1e5, 1.5e5, 2e5, 3e5, 4e5, 6e5};
+  for (const double spin : {0.0, 2094.3951023931954}) {
+    for (const double re : res) {
+      if (!(re >= 0.0)) continue;
+      for (int i = 0; i <= 50; ++i) {
+        const double sp = m.s_max * i / 50.0;
+        const AeroCoefficients c = m.coefficients(sp, spin, re);
+        if (!(c.cd > 0.0)) return who + "Cd must be > 0 for every S in [0, s_max], Re in [0, 6e5], spin up to 20 000 rpm";
+        if (!(c.cd <= 2.0) || !(std::abs(c.cl) <= 2.0))
+          return who + "Cd and |Cl| must stay at most 2 for every S in [0, s_max], Re in [0, 6e5], spin up to 20 000 rpm";
+      }
+    }
   }
   return {};
 }

@@ -57,11 +57,12 @@ struct AeroModel {
   /// supercritical rise of rough spheres, Achenbach 1974): Cd += drag_re_slope ·
   /// (Re − crisis_re)/1e5 · (1 − 1/(1 + exp((Re − crisis_re)/width))), the crisis's
   /// turbulent fraction (smooth: ~0 below the crisis, the straight line above it). 0 = none;
-  /// tour_fit 0.058 per 1e5.
+  /// tour_fit 0.058 per 1e5. Needs a crisis (crisis_rise > 0): it is measured from it.
   double drag_re_slope = 0.0;
   /// Spin decay dω/dt = -ω (decay_per_metre·|v_r| + 1/decay_tau)·ρ/kSpinDecayReferenceDensity.
-  /// Golf: ~4 %/s at a driver's 74.7 m/s, proportional to speed -> 5.36e-4 1/m. Nathan:
-  /// tau ≈ 30 s. Both stated at the reference density.
+  /// Golf: proportional to speed, ~4 %/s (ferguson2022, 5.36e-4 1/m) to 6.7 %/s (tour_fit's
+  /// Smits & Smith, 8.95e-4 1/m) at a driver's 74.7 m/s. Nathan: tau ≈ 30 s. Both stated at
+  /// the reference density.
   double decay_per_metre = 0.0;  ///< 1/m
   double decay_tau = 0.0;        ///< s; 0 = no speed-independent term
 
@@ -75,7 +76,9 @@ struct AeroModel {
 const char* to_string(LiftLaw l);
 /// "quadratic", "power", "saturating"; false when unknown.
 bool lift_law_from_string(std::string_view name, LiftLaw* out);
-/// Empty when `m` is usable (finite coefficients, Cd > 0 over [0, s_max], no lift pole);
+/// Empty when `m` is usable (finite coefficients; 0 < Cd ≤ 2 and |Cl| ≤ 2 over S in
+/// [0, s_max], Re in [0, 6e5] and spin up to 20 000 rpm; no lift pole; a slope past the
+/// crisis only with a crisis, of width ≥ 100);
 /// otherwise a message naming the model and the problem. Models are data
 /// (assets/aero_models.toml, loaded by game/content).
 std::string validate_aero_model(const AeroModel& m);

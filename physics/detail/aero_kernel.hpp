@@ -35,7 +35,7 @@ namespace sweetspot::detail {
       // step control millimetres of carry). With no slope the sum is exactly the rise.
       const double e = std::exp(std::max(x, -50.0));
       c.cd += (m.crisis_rise + m.drag_re_slope * above * e) / (1.0 + e);
-    } else {
+    } else if (m.drag_re_slope != 0.0) {
       c.cd += m.drag_re_slope * above;
     }
   }

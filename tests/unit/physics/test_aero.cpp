@@ -35,7 +35,7 @@ TEST_CASE("spin decay: golf ~4 %/s at driver speed, proportional to speed; natha
   CHECK(g.spin_decay_rate(mph_to_mps(83.5)) == Approx(0.02).epsilon(1e-3));
   CHECK(test::assets().aero("nathan").spin_decay_rate(40.0) == Approx(1.0 / 30.0));
   // The rates are stated in the default environment's air, where both sources measured.
-  CHECK(kSpinDecayReferenceDensity == air_density(Environment{}));
+  CHECK(kSpinDecayReferenceDensity == Approx(air_density(Environment{})).epsilon(1e-14));
 }
 
 TEST_CASE("aero forces: drag opposes motion, backspin lifts, rifle spin does not", "[aero]") {
@@ -90,6 +90,21 @@ TEST_CASE("unknown aero model lists the allowed names; the shipped models valida
   bad = test::assets().aero("tour_fit");
   bad.drag_re_slope = 0.5;
   CHECK(validate_aero_model(bad).find("drag_re_slope must be in [0, 0.3]") != std::string::npos);
+  // Cd is checked at every Reynolds number a ball meets: a negative d0 passes at Re 2e5
+  // behind the rise past the crisis (Cd 0.022 at S = 0) but pushes a wedge forward at 1.2e5.
+  bad = test::assets().aero("tour_fit");
+  bad.d0 = -0.05;
+  CHECK(bad.coefficients(0.0, 0.0, 2e5).cd > 0.0);
+  CHECK(validate_aero_model(bad).find("Cd must be > 0") != std::string::npos);
+  bad = test::assets().aero("tour_fit");
+  bad.crisis_rise = 0.0;  // a slope measured from no crisis
+  CHECK(validate_aero_model(bad).find("give drag_crisis") != std::string::npos);
+  bad = test::assets().aero("tour_fit");
+  bad.crisis_width = 1e-3;  // a step the integrator cannot resolve
+  CHECK(validate_aero_model(bad).find("width must be at least 100") != std::string::npos);
+  bad = test::assets().aero("nathan");
+  bad.d_krpm = -0.1;  // drag falling with spin: negative at 20 000 rpm
+  CHECK(validate_aero_model(bad).find("Cd must be > 0") != std::string::npos);
   CHECK(test::assets().sport("golf").default_aero == "tour_fit");
   CHECK(test::assets().sport("baseball").default_aero == "nathan");
 }

@@ -6,10 +6,14 @@
 // documented per-club data (loft, mass, CG, inertia, face COR) and the delivery differ.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "game/content/equipment_file.hpp"
+#include "game/tuning/trackman_averages.hpp"
 #include "support/test_assets.hpp"
 #include "physics/delivery.hpp"
 #include "physics/flight.hpp"
@@ -18,18 +22,23 @@
 using namespace sweetspot;
 
 namespace {
+/// A TrackMan row with its delivery and its flight (game/tuning/trackman_averages.hpp).
 struct TrackManRow {
   const char* club;
   double club_mph, attack_deg, ball_mph, launch_deg, spin_rpm, carry_yd, landing_deg;
 };
-constexpr TrackManRow kRows[] = {
-    {"driver", 113, -1.3, 167, 10.9, 2686, 275, 38}, {"3-wood", 107, -2.9, 158, 9.2, 3655, 243, 43},
-    {"5-wood", 103, -3.3, 152, 9.4, 4350, 230, 47},  {"hybrid", 100, -3.5, 146, 10.2, 4437, 225, 47},
-    {"3-iron", 98, -3.1, 142, 10.4, 4630, 212, 46},  {"4-iron", 96, -3.4, 137, 11.0, 4836, 203, 48},
-    {"5-iron", 94, -3.7, 132, 12.1, 5361, 194, 49},  {"6-iron", 92, -4.1, 127, 14.1, 6231, 183, 50},
-    {"7-iron", 90, -4.3, 120, 16.3, 7097, 172, 50},  {"8-iron", 87, -4.5, 115, 18.1, 7998, 160, 50},
-    {"9-iron", 85, -4.7, 109, 20.4, 8647, 148, 51},  {"pw", 83, -5.0, 102, 24.2, 9304, 136, 52},
-};
+
+template <std::size_t N>
+std::vector<TrackManRow> joined(const std::array<TourSwing, N>& swings, std::span<const TourFlight> flights) {
+  std::vector<TrackManRow> rows;
+  for (const TourSwing& s : swings) {
+    const TourFlight& f = tour_flight(flights, s.club);
+    rows.push_back({s.club, s.club_mph, s.attack_deg, f.ball_mph, f.launch_deg, f.spin_rpm, f.carry_yd, f.landing_deg});
+  }
+  return rows;
+}
+
+const std::vector<TrackManRow> kRows = joined(kPgaTourSwings, kPgaTourFlights);
 
 GolfSwing row_swing(const TrackManRow& row) {
   GolfSwing s;
@@ -99,12 +108,7 @@ TEST_CASE("the contact law carries over to TrackMan's LPGA irons, rows it was ne
   // more than this model gives; the LPGA driver row depends on where they strike it.
   const EquipmentCatalog& eq = test::assets().equipment();
   const ShotModel model = test::golf_model();
-  const TrackManRow lpga[] = {
-      {"4-iron", 80, -1.7, 116, 14.3, 4801, 169, 43}, {"5-iron", 79, -1.9, 112, 14.8, 5081, 161, 45},
-      {"6-iron", 78, -2.3, 109, 17.1, 5943, 152, 46}, {"7-iron", 76, -2.3, 104, 19.0, 6699, 141, 47},
-      {"8-iron", 74, -3.1, 100, 20.8, 7494, 130, 47}, {"9-iron", 72, -3.1, 93, 23.9, 7589, 119, 47},
-      {"pw", 70, -2.8, 86, 25.6, 8403, 107, 48},
-  };
+  const std::vector<TrackManRow> lpga = joined(kLpgaTourIronSwings, kLpgaTourFlights);
   for (const TrackManRow& row : lpga) {
     const ClubSpec& club = eq.club(row.club);
     const GolfSwing s = swing_launching_at_row(club, row);
@@ -155,15 +159,11 @@ TEST_CASE("one contact model for every club: no per-club friction or spin factor
 TEST_CASE("spin rises and ball speed falls through the bag", "[delivery][calibration]") {
   // The TrackMan table's trend for the whole bag, with each row's speed and attack angle.
   const EquipmentCatalog& eq = test::assets().equipment();
-  struct Row { const char* club; double mph, attack; };
-  const Row rows[] = {{"driver", 113, -1.3}, {"3-wood", 107, -2.9}, {"5-wood", 103, -3.3}, {"hybrid", 100, -3.5},
-                      {"3-iron", 98, -3.1}, {"4-iron", 96, -3.4}, {"5-iron", 94, -3.7}, {"6-iron", 92, -4.1},
-                      {"7-iron", 90, -4.3}, {"8-iron", 87, -4.5}, {"9-iron", 85, -4.7}, {"pw", 83, -5.0}};
   double last_spin = 0, last_speed = 1e9;
-  for (const Row& r : rows) {
+  for (const TourSwing& r : kPgaTourSwings) {
     GolfSwing s;
-    s.club_speed = mph_to_mps(r.mph);
-    s.attack_angle = deg_to_rad(r.attack);
+    s.club_speed = mph_to_mps(r.club_mph);
+    s.attack_angle = deg_to_rad(r.attack_deg);
     const ClubSpec& c = eq.club(r.club);
     const LaunchMetrics m = measure_launch(deliver_golf(eq.ball("tour"), c, s, c.face).launch);
     INFO(r.club);

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <vector>
 
+#include "game/tuning/trackman_averages.hpp"
 #include "physics/aero.hpp"
 #include "physics/error.hpp"
 #include "physics/flight.hpp"
@@ -31,52 +32,31 @@ FlightCase baseball_launch(double altitude) {
   return in;
 }
 
-struct TrackManRow {
-  const char* club;
-  double ball_mph, launch_deg, spin_rpm, apex_yd, land_deg, carry_yd;
-};
-
 }  // namespace
 
 TEST_CASE("tour_fit flies TrackMan's PGA Tour averages: carry, apex and landing angle", "[flight][reference]") {
   // Issue 15: carry within 4 %, max height within 15 %, landing angle within 3° for every
   // row of the table (the aero model is fitted to it: this holds the fit).
-  const TrackManRow rows[] = {
-      {"driver", 167, 10.9, 2686, 32, 38, 275}, {"3-wood", 158, 9.2, 3655, 30, 43, 243},
-      {"5-wood", 152, 9.4, 4350, 31, 47, 230},  {"hybrid", 146, 10.2, 4437, 29, 47, 225},
-      {"3-iron", 142, 10.4, 4630, 27, 46, 212}, {"4-iron", 137, 11.0, 4836, 28, 48, 203},
-      {"5-iron", 132, 12.1, 5361, 31, 49, 194}, {"6-iron", 127, 14.1, 6231, 30, 50, 183},
-      {"7-iron", 120, 16.3, 7097, 32, 50, 172}, {"8-iron", 115, 18.1, 7998, 31, 50, 160},
-      {"9-iron", 109, 20.4, 8647, 30, 51, 148}, {"pw", 102, 24.2, 9304, 29, 52, 136},
-  };
-  for (const auto& row : rows) {
+  for (const TourFlight& row : kPgaTourFlights) {
     const ShotTrajectory tr = fly(golf_launch(row.ball_mph, row.launch_deg, row.spin_rpm));
     const FlightSummary& s = tr.summary;
     INFO(row.club << ": carry " << m_to_yd(s.carry_m) << " yd, apex " << m_to_yd(s.apex_m) << " yd, landing "
                   << s.landing_angle_deg << " deg");
     CHECK(m_to_yd(s.carry_m) == Approx(row.carry_yd).epsilon(0.04));
     CHECK(m_to_yd(s.apex_m) == Approx(row.apex_yd).epsilon(0.15));
-    CHECK(std::abs(s.landing_angle_deg - row.land_deg) <= 3.0);
+    CHECK(std::abs(s.landing_angle_deg - row.landing_deg) <= 3.0);
     CHECK(s.end == EndReason::Rest);
   }
 }
 
 TEST_CASE("tour_fit flies TrackMan's LPGA Tour averages, rows it was not fitted to", "[flight][reference]") {
-  // Slower balls (86-140 mph): the fit's drag crisis and spin terms must carry over. The
-  // LPGA 3-wood row (2704 rpm at 11.2°, landing 39° from a 23 yd apex) is left out: no
-  // model flies that launch that high or steep (a misprint of the spin, likely).
-  const TrackManRow rows[] = {
-      {"driver", 140, 13.2, 2611, 25, 37, 218}, {"5-wood", 128, 12.1, 4501, 26, 43, 185},
-      {"7-wood", 123, 12.7, 4693, 25, 46, 174}, {"4-iron", 116, 14.3, 4801, 24, 43, 169},
-      {"5-iron", 112, 14.8, 5081, 23, 45, 161}, {"6-iron", 109, 17.1, 5943, 25, 46, 152},
-      {"7-iron", 104, 19.0, 6699, 26, 47, 141}, {"8-iron", 100, 20.8, 7494, 25, 47, 130},
-      {"9-iron", 93, 23.9, 7589, 26, 47, 119},  {"pw", 86, 25.6, 8403, 23, 48, 107},
-  };
-  for (const auto& row : rows) {
+  // Slower balls (86-140 mph): the fit's drag crisis and spin terms must carry over (the
+  // table's 3-wood row is left out: game/tuning/trackman_averages.hpp says why).
+  for (const TourFlight& row : kLpgaTourFlights) {
     const FlightSummary s = fly(golf_launch(row.ball_mph, row.launch_deg, row.spin_rpm)).summary;
     INFO("LPGA " << row.club << ": carry " << m_to_yd(s.carry_m) << " yd, landing " << s.landing_angle_deg << " deg");
     CHECK(m_to_yd(s.carry_m) == Approx(row.carry_yd).epsilon(0.04));
-    CHECK(std::abs(s.landing_angle_deg - row.land_deg) <= 3.0);
+    CHECK(std::abs(s.landing_angle_deg - row.landing_deg) <= 3.0);
     CHECK(m_to_yd(s.apex_m) == Approx(row.apex_yd).epsilon(0.15));
   }
 }

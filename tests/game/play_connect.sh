@@ -13,6 +13,8 @@ cat > "$work/drive.sh" <<'D'
 #!/usr/bin/env bash
 set -u
 bin="$1"; work="$2"
+: >"$work/out.txt"  # created before the server's redirections (see tests/cli/connect.sh)
+: >"$work/log.txt"
 "$bin" connect --port 0 --course links --frames 360 --screenshot "$work/connect.png" >"$work/out.txt" 2>"$work/log.txt" &
 pid=$!
 port=""

@@ -6,7 +6,6 @@
 // documented per-club data (loft, mass, CG, inertia, face COR) and the delivery differ.
 #include <catch2/catch.hpp>
 
-#include <array>
 #include <cmath>
 #include <span>
 #include <string>
@@ -28,8 +27,7 @@ struct TrackManRow {
   double club_mph, attack_deg, ball_mph, launch_deg, spin_rpm, carry_yd, landing_deg;
 };
 
-template <std::size_t N>
-std::vector<TrackManRow> joined(const std::array<TourSwing, N>& swings, std::span<const TourFlight> flights) {
+std::vector<TrackManRow> joined(std::span<const TourSwing> swings, std::span<const TourFlight> flights) {
   std::vector<TrackManRow> rows;
   for (const TourSwing& s : swings) {
     const TourFlight& f = tour_flight(flights, s.club);

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "game/tuning/trackman_averages.hpp"
 #include "physics/error.hpp"
 #include "physics/flight.hpp"

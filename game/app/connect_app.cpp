@@ -15,6 +15,7 @@
 #include "game/render/shot_view.hpp"
 #include "game/ui/replay.hpp"
 #include "physics/units.hpp"
+#include "game/core/shot_result.hpp"
 
 namespace sweetspot {
 namespace {

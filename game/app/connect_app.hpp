@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "game/net/connect_server.hpp"
 
 namespace sweetspot {

@@ -19,6 +19,7 @@
 #include "game/report/round_json.hpp"
 #include "game/ui/replay.hpp"
 #include "physics/units.hpp"
+#include "game/core/shot_result.hpp"
 
 namespace sweetspot {
 namespace {

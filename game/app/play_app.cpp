@@ -23,6 +23,7 @@
 #include "game/ui/panels.hpp"
 #include "game/tuning/grip.hpp"
 #include "physics/error.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 namespace {

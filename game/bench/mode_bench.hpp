@@ -3,7 +3,7 @@
 // home-run derby (every pitch flown, struck and flown to the field), in ms of wall time.
 #pragma once
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 
 namespace sweetspot::bench {
 

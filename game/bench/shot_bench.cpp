@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "game/bench/bullet_baseline.hpp"
 #include "physics/flight.hpp"
 #include "physics/units.hpp"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "physics/launch.hpp"
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "physics/world.hpp"
 
 namespace sweetspot::bench {

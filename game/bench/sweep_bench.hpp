@@ -1,7 +1,7 @@
 // Sweep throughput at a given thread count (DESIGN §8: `sweep` scales with threads).
 #pragma once
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 
 namespace sweetspot {
 

@@ -7,6 +7,7 @@
 #include "game/render/image.hpp"
 #include "game/report/report.hpp"
 #include "game/modes/baseball/session.hpp"
+#include "game/report/session_json.hpp"
 #include "game/render/spray_chart.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"

@@ -9,6 +9,7 @@
 #include "game/cli/command.hpp"
 #include "game/cli/launch_flags.hpp"
 #include "game/report/report.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot::cli {
 namespace {

@@ -19,6 +19,7 @@
 #include "game/render/shot_view.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot::cli {
 namespace {

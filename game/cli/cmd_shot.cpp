@@ -13,6 +13,7 @@
 #include "game/net/session_file.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot::cli {
 namespace {

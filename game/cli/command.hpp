@@ -17,7 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 
 namespace sweetspot::cli {
 

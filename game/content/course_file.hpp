@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "physics/math.hpp"
 #include "physics/range.hpp"
 

@@ -189,7 +189,6 @@ Scenario load_scenario(const Assets& assets, std::string_view name_or_path, cons
   return scenario_from_doc(assets, doc, std::string(name_or_path));
 }
 
-ShotResult run_scenario(const Scenario& s, const RunOptions& options) { return run_shot(s.resolved, s.name, options); }
 
 std::string scenario_description(const BuiltinScenario& s) {
   try {

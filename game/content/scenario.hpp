@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "game/content/scenario_doc.hpp"
-#include "game/core/assets.hpp"
-#include "game/core/run_shot.hpp"
+#include "game/content/assets.hpp"
+#include "game/content/resolve.hpp"
 #include "game/core/shot_spec.hpp"
 
 namespace sweetspot {
@@ -43,9 +43,6 @@ std::filesystem::path resolve_scenario(const Assets& assets, std::string_view na
 Scenario load_scenario(const Assets& assets, std::string_view name_or_path, const std::vector<std::string>& overrides);
 /// The same from an already-parsed document (UI edits, flags, tests); `name` labels it.
 Scenario scenario_from_doc(const Assets& assets, const ScenarioDoc& doc, std::string name);
-
-/// run_shot(scenario.resolved, scenario.name, options).
-ShotResult run_scenario(const Scenario& s, const RunOptions& options = {});
 
 /// The description line of a built-in scenario file, or "(unreadable: why)".
 std::string scenario_description(const BuiltinScenario& s);

@@ -1,7 +1,6 @@
 #include "game/content/swings_file.hpp"
 
 #include "game/content/toml_file.hpp"
-#include "game/modes/golf/round.hpp"
 
 namespace sweetspot {
 namespace {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "game/modes/golf/swing_meter.hpp"
+#include "game/core/stroke_input.hpp"
 
 namespace sweetspot {
 

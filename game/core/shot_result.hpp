@@ -1,5 +1,5 @@
 // The plain result of one simulated shot: what the reports print, the UI shows and the game
-// modes score. Filled by run_shot (game/core/run_shot.hpp); reports only read it. All SI,
+// modes score. Filled by run_shot (game/rules/run_shot.hpp); reports only read it. All SI,
 // angles in radians; display units are applied by the report writers.
 #pragma once
 
@@ -94,5 +94,9 @@ struct ShotResult {
   std::vector<std::string> warnings;
   std::string lie;                  ///< club strikes: the surface the ball was struck from ("tee", "rough", ...)
 };
+
+/// m right (+) of the target line (through the launch point, r.aim right of the world's +x)
+/// at `p`: TrackMan's Side (landing) and Side Total (rest).
+double side_of_aim(const ShotResult& r, const Vec3& p);
 
 }  // namespace sweetspot

@@ -23,7 +23,7 @@
 #include <ostream>
 #include <string>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "game/net/shot_table.hpp"
 
 namespace sweetspot {

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "game/content/course_file.hpp"
-#include "game/core/run_shot.hpp"
+#include "game/rules/run_shot.hpp"
 #include "game/modes/golf/bot.hpp"
 #include "game/modes/golf/round.hpp"
 #include "game/report/flight_json.hpp"

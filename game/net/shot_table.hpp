@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "game/core/shot_result.hpp"
 #include "game/net/open_connect.hpp"
 

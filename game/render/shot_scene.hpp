@@ -12,7 +12,7 @@
 #include "game/render/scene.hpp"
 #include "physics/math.hpp"
 #include "game/content/world_asset.hpp"
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "physics/trajectory.hpp"
 
 namespace sweetspot {

@@ -9,6 +9,7 @@
 #include "game/content/scenario.hpp"
 #include "game/render/render_command.hpp"
 #include "game/render/shot_scene.hpp"
+#include "game/core/shot_result.hpp"
 
 namespace sweetspot {
 

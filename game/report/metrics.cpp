@@ -368,11 +368,6 @@ double collision_efficiency(const ShotResult& r) {
   return closing > 0.0 ? (r.launch.ball_speed - r.bat.speed) / closing : 0.0;
 }
 
-double side_of_aim(const ShotResult& r, const Vec3& p) {
-  const Vec3 right(-std::sin(r.aim), 0.0, std::cos(r.aim));
-  return (p - r.launch_state.position).dot(right);
-}
-
 std::string metric_table(const std::string& title, const std::vector<std::string>& rows, const ShotResult& r,
                          const DisplayUnits& u) {
   std::string out = title + "\n";

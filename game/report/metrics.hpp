@@ -51,10 +51,6 @@ struct Metric {
 /// Statcast): EV = q·pitch + (1 + q)·bat. Good contact on a wood bat ~0.2. 0 with no closing speed.
 double collision_efficiency(const ShotResult& r);
 
-/// m right (+) of the target line (through the launch point, r.aim right of the world's +x)
-/// at `p`: TrackMan's Side (landing) and Side Total (rest).
-double side_of_aim(const ShotResult& r, const Vec3& p);
-
 /// The metric with that id, or nullptr.
 const Metric* find_metric(std::string_view id);
 /// Every id, for messages.

@@ -6,6 +6,7 @@
 
 #include "game/content/scenario_doc.hpp"
 #include "physics/error.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 namespace {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "physics/impact.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 namespace {

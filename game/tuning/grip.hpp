@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "game/core/run_shot.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 

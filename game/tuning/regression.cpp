@@ -16,6 +16,7 @@
 #include "game/content/scenario.hpp"
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 
 namespace sweetspot {
 

@@ -17,6 +17,7 @@
 #include "game/tuning/grip.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 namespace {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "game/content/scenario.hpp"
+#include "game/core/shot_result.hpp"
 
 namespace sweetspot {
 

@@ -9,6 +9,7 @@
 #include "game/ui/layout.hpp"
 #include "game/ui/replay.hpp"
 #include "game/ui/ui_state.hpp"
+#include "game/core/shot_result.hpp"
 
 namespace sweetspot {
 

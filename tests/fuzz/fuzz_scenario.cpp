@@ -16,6 +16,7 @@
 #include "support/test_assets.hpp"
 #include "game/content/scenario_doc.hpp"
 #include "physics/error.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace {
 

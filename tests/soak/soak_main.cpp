@@ -20,7 +20,7 @@
 #include <string>
 #include <string_view>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "game/content/equipment_file.hpp"
 #include "physics/aero.hpp"
 #include "physics/delivery.hpp"

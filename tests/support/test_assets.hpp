@@ -2,7 +2,7 @@
 // loaded lazily like the program's own) and short-hands for the models tests fly with.
 #pragma once
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "game/core/shot_spec.hpp"
 #include "physics/flight.hpp"
 

@@ -8,6 +8,7 @@
 #include "game/modes/baseball/throwing.hpp"
 #include "physics/delivery.hpp"
 #include "physics/error.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 namespace {

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "game/core/run_shot.hpp"
+#include "game/rules/run_shot.hpp"
 #include "game/modes/baseball/pitching.hpp"
 
 namespace sweetspot {

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 #include "physics/flight.hpp"
 #include "physics/range.hpp"
 #include "physics/units.hpp"

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "game/report/flight_json.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -158,50 +157,6 @@ std::vector<SwingRecord> run_session(const Assets& assets, const SessionOptions&
       break;
     }
     out.push_back(std::move(rec));
-  }
-  return out;
-}
-
-nlohmann::json session_json(const std::vector<SwingRecord>& swings, const SessionOptions& o, std::uint64_t seed) {
-  using nlohmann::json;
-  json list = json::array();
-  int outs = 0, hrs = 0;
-  for (const SwingRecord& s : swings) {
-    json pitch = {{"type", s.call.type.type},
-                  {"speed_mps", s.call.type.speed},
-                  {"spin_rpm", radps_to_rpm(s.call.type.spin)},
-                  {"plate_position_m", {s.pitch.plate.x(), s.pitch.plate.y(), s.pitch.plate.z()}}};
-    json j = {{"pitch", pitch}, {"timing_ms", s.timing_ms}, {"contact", s.result.contact}, {"outcome", s.call_text},
-              {"barrel", s.result.barrel}, {"hard_hit", s.result.hard_hit}, {"swung", s.swung}};
-    if (s.result.contact) {
-      j["launch"] = launch_json(s.result.shot.launch, -1.0);
-      j["flight"] = flight_json(s.result.shot.trajectory.summary);
-      j["flight"]["end"] = to_string(s.result.shot.end);
-      if (!s.result.fielder.empty()) j["fielder"] = s.result.fielder;
-    } else {
-      j["launch"] = nullptr;
-      j["flight"] = nullptr;
-    }
-    if (s.result.outcome == BattedOutcome::HomeRun) ++hrs;
-    else if (s.swung) ++outs;
-    list.push_back(j);
-  }
-  json out = {{"mode", o.mode}, {"seed", seed}, {"swings", list}};
-  if (o.mode == "derby") {
-    out["outs"] = outs;
-    out["home_runs"] = hrs;
-  } else if (o.mode == "at-bat") {
-    int balls = 0, strikes = 0;
-    std::string result;
-    for (const SwingRecord& s : swings) {
-      if (s.call_text == "ball") ++balls;
-      else if (s.call_text == "called_strike" || s.call_text == "swinging_strike") ++strikes;
-      else if (s.call_text == "foul") strikes = std::min(2, strikes + 1);
-      else result = s.call_text;
-    }
-    out["balls"] = balls;
-    out["strikes"] = strikes;
-    out["result"] = !result.empty() ? result : balls >= 4 ? "walk" : "strikeout";
   }
   return out;
 }

@@ -8,8 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "game/modes/baseball/batting.hpp"
 #include "game/util/rng.hpp"
 
@@ -62,7 +60,5 @@ bool in_zone(const Vec3& plate, double ball_radius);
 
 /// Runs a session with the bot; every swing recorded (JSON as DESIGN §9 for the derby).
 std::vector<SwingRecord> run_session(const Assets& assets, const SessionOptions& o, BotBatter& bot, std::uint64_t seed);
-
-nlohmann::json session_json(const std::vector<SwingRecord>& swings, const SessionOptions& o, std::uint64_t seed);
 
 }  // namespace sweetspot

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "physics/error.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 namespace {

@@ -1,12 +1,10 @@
 #include "game/modes/golf/round.hpp"
 
-#include "game/report/metrics.hpp"
-
 #include <algorithm>
 #include <cmath>
 
-#include "game/report/metrics.hpp"
 #include "physics/error.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 

@@ -9,18 +9,13 @@
 #include <vector>
 
 #include "game/content/course_file.hpp"
-#include "game/core/run_shot.hpp"
+#include "game/rules/run_shot.hpp"
 #include "game/modes/golf/golfer.hpp"
+#include "game/core/stroke_input.hpp"
 #include "game/modes/golf/swing_meter.hpp"
 
 namespace sweetspot {
 
-struct StrokeInput {
-  std::string club;           ///< a club of golf_bag()
-  double aim = 0.0;           ///< rad, + right of the line from the ball to the cup
-  static constexpr Range kAim{-kPi / 2, kPi / 2};
-  MeterInput meter;
-};
 
 enum class StrokeEnd { Rest, Holed, Water, OutOfBounds };
 const char* to_string(StrokeEnd e);

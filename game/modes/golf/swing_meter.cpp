@@ -7,11 +7,6 @@
 
 namespace sweetspot {
 
-void validate_meter(const MeterInput& m) {
-  check_range("meter.power", m.power, MeterInput::kPower, "");
-  check_range("meter.accuracy", m.accuracy_ms, MeterInput::kAccuracy, "ms");
-}
-
 GolfSwing meter_swing(const MeterInput& m, const ClubSpec& club, const ClubInfo& info, double full_speed) {
   validate_meter(m);
   GolfSwing s;

@@ -7,18 +7,10 @@
 
 #include "game/content/equipment_file.hpp"
 #include "physics/delivery.hpp"
-#include "physics/range.hpp"
+#include "game/core/stroke_input.hpp"
 
 namespace sweetspot {
 
-struct MeterInput {
-  double power = 1.0;          ///< fraction of a full swing; 1 = full, up to 1.1 over-swung
-  static constexpr Range kPower{0.0, 1.1, true};  ///< (0, 110 %]
-  /// ms the accuracy click missed the mark; + late (face open: push and slice for a
-  /// right-hander), − early (closed: pull and hook). A good player is within ~10 ms.
-  double accuracy_ms = 0.0;
-  static constexpr Range kAccuracy{-200.0, 200.0};
-};
 
 /// The mapping, per ms of timing error at the driver's tempo (a shorter club's slower
 /// tempo shrinks it by its length ratio): the face turns 0.08°, the path 0.04° the other
@@ -30,9 +22,6 @@ inline constexpr double kFacePerMs = 0.0013962634;   // rad (0.08°)
 inline constexpr double kPathPerMs = -0.00069813170; // rad (−0.04°)
 inline constexpr double kHeelPerMs = 0.00015;        // m toward the heel per late ms
 inline constexpr double kDriverLength = 1.1557;      // m (45.5 in): the tempo reference
-
-/// Throws InputError naming meter.power / meter.accuracy and the range.
-void validate_meter(const MeterInput& m);
 
 /// The swing a meter result delivers with `club` (its ClubSpec and ClubInfo) for a golfer
 /// whose full swing with it is `full_speed` m/s. A putter takes the power only.

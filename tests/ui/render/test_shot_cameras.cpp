@@ -7,6 +7,7 @@
 #include "game/content/scenario.hpp"
 #include "game/render/camera.hpp"
 #include "support/test_assets.hpp"
+#include "game/rules/run_shot.hpp"
 
 using namespace sweetspot;
 

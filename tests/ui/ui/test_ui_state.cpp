@@ -10,6 +10,7 @@
 #include "support/test_assets.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
+#include "game/rules/run_shot.hpp"
 
 using namespace sweetspot;
 

@@ -9,6 +9,7 @@
 #include "game/content/scenario.hpp"
 #include "physics/error.hpp"
 #include "support/test_assets.hpp"
+#include "game/rules/run_shot.hpp"
 
 using namespace sweetspot;
 using Catch::Matchers::Contains;

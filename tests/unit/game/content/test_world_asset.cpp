@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "game/core/assets.hpp"
-#include "game/core/run_shot.hpp"
+#include "game/content/assets.hpp"
+#include "game/rules/run_shot.hpp"
 #include "support/test_assets.hpp"
 #include "physics/error.hpp"
 #include "physics/flight.hpp"

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "game/modes/baseball/session.hpp"
+#include "game/report/session_json.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 #include "support/test_assets.hpp"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "game/core/run_shot.hpp"
+#include "game/rules/run_shot.hpp"
 #include "game/modes/baseball/batting.hpp"
 #include "game/modes/baseball/throwing.hpp"
 #include "physics/error.hpp"

@@ -12,6 +12,7 @@
 #include "physics/math.hpp"
 #include "physics/units.hpp"
 #include "support/test_assets.hpp"
+#include "game/rules/run_shot.hpp"
 
 using namespace sweetspot;
 using Catch::Matchers::Contains;

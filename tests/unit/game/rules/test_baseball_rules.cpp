@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "game/core/run_shot.hpp"
+#include "game/rules/run_shot.hpp"
 #include "game/rules/baseball_rules.hpp"
 #include "physics/units.hpp"
 #include "support/test_assets.hpp"

@@ -1,7 +1,7 @@
 // Golf's rules on a shot: where the ball ends decides it (water, out of bounds, in play).
 #include <catch2/catch.hpp>
 
-#include "game/core/run_shot.hpp"
+#include "game/rules/run_shot.hpp"
 #include "game/rules/golf_rules.hpp"
 #include "physics/units.hpp"
 #include "support/test_assets.hpp"

@@ -9,6 +9,7 @@
 #include "physics/error.hpp"
 #include "support/test_assets.hpp"
 #include "game/tuning/fit.hpp"
+#include "game/rules/run_shot.hpp"
 
 using namespace sweetspot;
 using Catch::Matchers::Contains;

@@ -1,14 +1,12 @@
 // resolve(): a ShotSpec against the Assets context -> the equipment, materials, aero model,
-// world and ball position physics runs with. run_shot(): delivery -> impact -> launch ->
-// step() until the sport's rules end the play -> ShotResult (DESIGN §1's one data path).
-// Deterministic and safe to call from many threads on one Assets.
+// world and ball position physics runs with. Deterministic and safe to call from many
+// threads on one Assets.
 #pragma once
 
 #include <optional>
 #include <string>
 
-#include "game/core/assets.hpp"
-#include "game/core/shot_result.hpp"
+#include "game/content/assets.hpp"
 #include "game/core/shot_spec.hpp"
 
 namespace sweetspot {
@@ -36,19 +34,5 @@ struct ResolvedShot {
 /// Looks up every name of `spec` and checks every value against its physics range.
 /// Throws InputError naming the field (as a scenario key) and its range.
 ResolvedShot resolve(const ShotSpec& spec, const Assets& assets);
-
-struct RunOptions {
-  bool fly = true;             ///< false: delivery and launch only (fit, fast sweeps)
-  bool record_samples = true;  ///< false: summary only (sweeps, benchmarks)
-};
-
-/// Delivery -> impact -> launch -> flight on the shot's world under its sport's rules.
-/// `name` labels the result (the scenario's name). Throws InputError when the impact
-/// launches a ball the flight model refuses (named, with the scenario).
-ShotResult run_shot(const ResolvedShot& shot, const std::string& name, const RunOptions& options = {});
-
-/// The launch state (world frame) and impact of `shot`, without flying: what run_shot
-/// flies. Exposed for `fit` and tests.
-ShotResult launch_shot(const ResolvedShot& shot, const std::string& name);
 
 }  // namespace sweetspot

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "game/content/scenario.hpp"
-#include "game/core/run_shot.hpp"
+#include "game/rules/run_shot.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 #include "support/test_assets.hpp"

@@ -1,4 +1,4 @@
-#include "game/core/assets.hpp"
+#include "game/content/assets.hpp"
 
 #include <algorithm>
 #include <cstdlib>

@@ -92,6 +92,7 @@
 
 #include "game/content/scenario.hpp"
 #include "support/test_assets.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace {
 

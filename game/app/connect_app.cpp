@@ -1,117 +1,14 @@
 #include "game/app/connect_app.hpp"
 
-#include <imgui.h>
-
-#include <chrono>
-#include <cmath>
-#include <memory>
-#include <optional>
-
 #include "game/app/game_window.hpp"
-#include "game/app/golf_app.hpp"
-#include "game/modes/golf/round.hpp"
+#include "game/app/main_loop.hpp"
 #include "game/render/renderer.hpp"
-#include "game/render/shot_scene.hpp"
-#include "game/render/shot_view.hpp"
-#include "game/ui/replay.hpp"
-#include "physics/units.hpp"
-#include "game/core/shot_result.hpp"
+#include "game/ui/connect_view.hpp"
 
 namespace sweetspot {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-struct ConnectView {
-  const Assets& assets;
-  std::unique_ptr<ShotScene> scene;
-  std::string scene_world;
-  std::optional<ShotTable::Played> last;
-  ReplayState replay;
-  bool have_shot = false;
-
-  void ensure_scene(const std::string& world_name, const std::optional<Vec3>& flag) {
-    if (scene && scene_world == world_name) return;
-    ShotSceneInput in;
-    in.assets = &assets;
-    in.world = world_name == "none" ? nullptr : assets.world(world_name);
-    in.distance_unit = "yd";
-    in.ball_radius = assets.equipment().ball("tour").radius;
-    in.flag = flag;
-    scene = std::make_unique<ShotScene>(in);
-    scene_world = world_name;
-  }
-};
-
-void row(const char* label, const char* unit, double device, std::optional<double> model) {
-  ImGui::TableNextRow();
-  ImGui::TableNextColumn();
-  ImGui::TextUnformatted(label);
-  ImGui::TableNextColumn();
-  ImGui::Text("%.1f %s", device, unit);
-  ImGui::TableNextColumn();
-  if (model) ImGui::Text("%.1f %s", *model, unit);
-  else ImGui::TextDisabled("-");
-}
-
-void draw_panel(const ConnectServer& server, const ConnectView& v, const ConnectWindowOptions& o) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Always);
-  ImGui::Begin("Launch monitor", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  ImGui::Text("Open Connect v1 on %s:%d", o.server.bind.c_str(), server.port());
-  ImGui::TextWrapped("%s", server.table().where().c_str());
-  ImGui::Text("Club expected: %s   shots: %d", server.table().club().c_str(), server.shots());
-  if (!v.last) {
-    ImGui::TextDisabled("Point your launch monitor's GSPro connector here and hit a shot.");
-  } else {
-    const nlohmann::json& j = v.last->line;
-    const nlohmann::json& L = j["launch"];
-    const nlohmann::json& F = j["flight"];
-    ImGui::Separator();
-    ImGui::Text("Shot %d (%s)  %s", j.value("shot_number", 0), j.value("device", std::string()).c_str(),
-                j.value("club", std::string()).c_str());
-    const bool model = j.contains("model");
-    const nlohmann::json* M = model ? &j["model"]["launch"] : nullptr;
-    const auto m = [&](const char* key, double scale) -> std::optional<double> {
-      if (M == nullptr || !M->contains(key) || !(*M)[key].is_number()) return std::nullopt;
-      return (*M)[key].get<double>() * scale;
-    };
-    if (ImGui::BeginTable("numbers", 3, ImGuiTableFlags_SizingFixedFit)) {
-      ImGui::TableSetupColumn("");
-      ImGui::TableSetupColumn("device");
-      ImGui::TableSetupColumn(model ? "our model" : "");
-      ImGui::TableHeadersRow();
-      const double mph = 1.0 / kMpsPerMph;
-      row("Ball speed", "mph", L["ball_speed_mps"].get<double>() * mph, m("ball_speed_mps", mph));
-      row("Launch", "deg", L["vertical_angle_deg"].get<double>(), m("vertical_angle_deg", 1.0));
-      row("Direction", "deg", L["horizontal_angle_deg"].get<double>(), m("horizontal_angle_deg", 1.0));
-      row("Spin", "rpm", L["spin_rpm"].get<double>(), m("spin_rpm", 1.0));
-      row("Spin axis", "deg", L["spin_axis_deg"].get<double>(), m("spin_axis_deg", 1.0));
-      ImGui::EndTable();
-    }
-    if (j.contains("model_error")) ImGui::TextWrapped("club data: %s", j["model_error"].get<std::string>().c_str());
-    ImGui::Text("Carry %.1f yd   total %.1f yd   %.1f yd %s", m_to_yd(F["carry_m"].get<double>()),
-                m_to_yd(F["total_m"].get<double>()), std::abs(m_to_yd(F["lateral_m"].get<double>())),
-                F["lateral_m"].get<double>() >= 0 ? "right" : "left");
-    if (j.contains("hole"))
-      ImGui::Text("Hole %d, stroke %d: %s, %.1f m to the pin", j["hole"].get<int>(), j["hole_strokes"].get<int>(),
-                  j["end"].get<std::string>().c_str(), j["to_pin_m"].get<double>());
-    if (j.value("round_over", false))
-      ImGui::Text("Round over: %d strokes (par %d). A new round starts.", j["round_strokes"].get<int>(), j["round_par"].get<int>());
-  }
-  ImGui::TextDisabled("Space: replay the last shot");
-  ImGui::End();
-}
-
-}  // namespace
 
 int run_connect_window(const Assets& assets, const ConnectWindowOptions& o, std::ostream& out, std::ostream& log) {
   ConnectServer server(assets, o.server, out, log);  // bad input fails before a window opens
-  ConnectView v{assets, nullptr, {}, std::nullopt, {}, false};
-  server.on_shot([&v](const ShotTable::Played& p) {
-    v.last = p;
-    v.have_shot = true;
-  });
   log << "sweetspot connect: listening on " << o.server.bind << ":" << server.port() << "; " << server.table().where() << "\n";
   WindowOptions wo;
   wo.width = o.width;
@@ -120,60 +17,14 @@ int run_connect_window(const Assets& assets, const ConnectWindowOptions& o, std:
   wo.title = "Sweetspot: launch monitor";
   GameWindow win(wo);
   Renderer renderer(win.framebuffer_width(), win.framebuffer_height());
-  PlayOptions po;  // end_frame's automation settings
-  po.frames = o.frames;
-  po.screenshot = o.screenshot;
-  FrameStats stats;
-  auto last = Clock::now();
-  while (!win.should_close()) {
-    const auto t0 = Clock::now();
-    const double dt = std::chrono::duration<double>(t0 - last).count();
-    last = t0;
-    server.poll();
-    const FrameInput in = win.begin_frame();
-    for (const int key : in.keys)
-      if (key == ' ' && v.last) v.replay.restart();
-    if (v.have_shot) {
-      // A new shot: its world (the round's hole changes), its flight from the start.
-      const ShotResult& r = *v.last->result;
-      const GolfRound* round = server.table().round();
-      std::optional<Vec3> flag;
-      if (round != nullptr && !round->finished()) flag = round->hole().pin;
-      v.scene.reset();
-      v.ensure_scene(r.world.empty() ? "none" : r.world, flag);
-      v.scene->set_shot(r.trajectory, impactor_placement(r));
-      v.replay.restart();
-      v.have_shot = false;
-    }
-    if (!v.scene) {
-      const GolfRound* round = server.table().round();
-      const std::string world = round != nullptr ? round->hole().world_name
-                                : o.server.table.world.empty() ? std::string("golf_hole") : o.server.table.world;
-      v.ensure_scene(world, round != nullptr ? std::optional<Vec3>(round->hole().pin) : std::nullopt);
-      ShotTrajectory t;
-      TrajectorySample s;
-      const Vec3 ground = round != nullptr ? round->ball() : Vec3::Zero();
-      const double y = v.scene->ground_height(ground.x(), ground.z()).value_or(0.0);
-      s.position = Vec3(ground.x(), y + 0.021335, ground.z());
-      s.phase = Phase::Rest;
-      t.samples = {s, s};
-      t.summary.landing_position = t.summary.rest_position = s.position;
-      v.scene->set_shot(t, std::nullopt);
-    }
-    if (v.last) v.replay.advance(dt, duration(v.scene->trajectory()));
-    const int w = win.framebuffer_width(), h = win.framebuffer_height();
-    if (w > 0 && h > 0) {
-      if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);
-      const Camera cam = v.scene->camera(v.last ? CameraKind::Follow : CameraKind::Behind, v.replay.time, w, h);
-      renderer.draw(v.scene->build(cam, v.replay.time, w, h), cam);
-      renderer.blit_to(0, w, h);
-    }
-    draw_panel(server, v, o);
-    win.render_ui();
-    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-    if (end_frame(win, po, stats, ms, out)) break;
-    if (server.stopped() && !v.replay.playing) break;  // a signal, or max_shots answered and the last one drawn
-  }
+  const std::string range = o.server.table.world.empty() ? std::string("golf_hole") : o.server.table.world;
+  const ModeRegistry modes = {
+      {"connect", [&] { return make_connect_view(assets, server, o.server.bind, range); }},
+  };
+  LoopOptions lo;
+  lo.frames = o.frames;
+  lo.screenshot = o.screenshot;
+  run_main_loop(win, renderer, modes, 0, lo, out);
   return 0;
 }
 

@@ -1,5 +1,6 @@
 #include "game/app/game_window.hpp"
 
+#include <chrono>
 #include <stdexcept>
 #include <utility>
 
@@ -30,7 +31,15 @@ void on_glfw_error(int code, const char* text) {
 
 }  // namespace
 
-GameWindow::GameWindow(const WindowOptions& options) {
+namespace {
+double steady_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+double GameWindow::clock() const { return steady_seconds() - epoch_; }
+
+GameWindow::GameWindow(const WindowOptions& options) : epoch_(steady_seconds()) {
   glfwSetErrorCallback(on_glfw_error);
   if (!glfwInit()) {
     const char* why = nullptr;
@@ -81,14 +90,7 @@ FrameInput GameWindow::begin_frame() {
 
   FrameInput in;
   const ImGuiIO& io = ImGui::GetIO();
-  if (!io.WantCaptureKeyboard) {
-    in.keys = std::move(keys_);
-    for (const int key : in.keys) {
-      if (key == GLFW_KEY_SPACE) in.hit_again = true;
-      if (key == GLFW_KEY_R) in.replay = true;
-      if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4) in.camera = key - GLFW_KEY_1;
-    }
-  }
+  if (!io.WantCaptureKeyboard) in.keys = std::move(keys_);
   keys_.clear();
   double x = 0.0, y = 0.0;
   glfwGetCursorPos(window_, &x, &y);

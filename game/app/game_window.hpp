@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "game/ui/mode_view.hpp"
+
 struct GLFWwindow;
 
 namespace sweetspot {
@@ -19,13 +21,12 @@ struct WindowOptions {
 
 /// Mouse and keyboard input of one frame that the scene (not ImGui) should act on.
 struct FrameInput {
-  bool hit_again = false;        ///< Space
-  bool replay = false;           ///< R
-  int camera = -1;               ///< 0..3 from keys 1–4, -1 = unchanged
   double orbit_dx = 0.0;         ///< px dragged with the left button this frame
   double orbit_dy = 0.0;
   double zoom = 0.0;             ///< scroll wheel clicks, + = in
-  std::vector<int> keys;         ///< every key pressed since the last frame, in order (GLFW codes)
+  /// Every key pressed since the last frame, in order, each with the time it went down
+  /// (s on the window's clock, read in the key callback).
+  std::vector<KeyPress> keys;
 };
 
 class GameWindow {
@@ -52,15 +53,18 @@ class GameWindow {
   int framebuffer_width() const;
   int framebuffer_height() const;
   GLFWwindow* handle() const { return window_; }
-  /// Called by the GLFW callbacks: queue one key press / scroll step for the next frame.
-  void queue_key(int key) { keys_.push_back(key); }
+  /// s since the window opened: the clock key presses are stamped with.
+  double clock() const;
+  /// Called by the GLFW callbacks: queue one key press (stamped now) / scroll step for the next frame.
+  void queue_key(int key) { keys_.push_back({key, clock()}); }
   void queue_scroll(double dy) { scroll_ += dy; }
 
  private:
   GLFWwindow* window_ = nullptr;
   double last_x_ = 0.0, last_y_ = 0.0;
   bool dragging_ = false;
-  std::vector<int> keys_;
+  std::vector<KeyPress> keys_;
+  double epoch_ = 0.0;  ///< steady clock (s) when the window opened
   double scroll_ = 0.0;
 };
 

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "game/cli/command.hpp"
-#include "game/tuning/grip.hpp"
+#include "game/modes/lab/grip.hpp"
 #include "game/report/report.hpp"
 #include "game/content/scenario.hpp"
 #include "game/net/session_file.hpp"

@@ -318,6 +318,16 @@ double si_to_unit(double si, std::string_view unit, Dimension dim) {
   return (si - offset) / scale;
 }
 
+double unit_to_si(double value, std::string_view unit, Dimension dim) {
+  if (unit.empty()) return value;
+  std::string probe = "0 ";
+  probe.append(unit.data(), unit.size());
+  const double offset = parse_quantity(probe, dim);
+  probe[0] = '1';
+  const double scale = parse_quantity(probe, dim) - offset;
+  return value * scale + offset;
+}
+
 std::string format_quantity(double si, std::string_view unit, Dimension dim, int digits) {
   char buf[64];
   double v = si_to_unit(si, unit, dim);

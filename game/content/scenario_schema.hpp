@@ -83,6 +83,8 @@ const std::vector<ExpectSpec>& impact_case_expectations();
 
 /// SI value expressed in `unit` of dimension `dim` ("mph", "deg"); `unit` "" returns `si`.
 double si_to_unit(double si, std::string_view unit, Dimension dim);
+/// A value in `unit` of dimension `dim` -> SI (the inverse of si_to_unit).
+double unit_to_si(double value, std::string_view unit, Dimension dim);
 /// "335.5 mph" style text with `digits` significant digits.
 std::string format_quantity(double si, std::string_view unit, Dimension dim, int digits = 6);
 /// The allowed range of a key as text in its display unit and in SI, e.g.

@@ -37,7 +37,7 @@ struct ImpactSummary {
   double normal_impulse = 0.0;      ///< N·s, a driver ~3.4 N·s
   double tangential_impulse = 0.0;  ///< N·s
   double energy_loss = 0.0;         ///< J lost in the impact (negative = created, textbook model)
-  /// The face µ above which the launch stops changing (game/tuning/grip.hpp); a tour driver
+  /// The face µ above which the launch stops changing (game/modes/lab/grip.hpp); a tour driver
   /// ~0.2. Negative when not computed (it costs ~16 launches: `shot`, the Tuning panel and
   /// `sweep` ask for it, the game loop does not).
   double mu_grip = -1.0;

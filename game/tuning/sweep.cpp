@@ -2,7 +2,7 @@
 // writes only its own result slot, so no locks and a fixed output order.
 #include "game/tuning/sweep.hpp"
 
-#include "game/tuning/grip.hpp"
+#include "game/modes/lab/grip.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -14,7 +14,7 @@
 #include <mutex>
 #include <thread>
 
-#include "game/tuning/grip.hpp"
+#include "game/modes/lab/grip.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 #include "game/rules/run_shot.hpp"

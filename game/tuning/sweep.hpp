@@ -39,7 +39,7 @@ struct SweepOptions {
   GridAxis e, mu;
   int threads = 0;      ///< 0 = all hardware threads
   bool fly = true;      ///< false: launch numbers only (much faster)
-  bool grip = true;     ///< find µ_grip for each e of the grid (game/tuning/grip.hpp; ~16 launches per e)
+  bool grip = true;     ///< find µ_grip for each e of the grid (game/modes/lab/grip.hpp; ~16 launches per e)
   /// Called from the calling thread about every 100 ms with (points done, total).
   std::function<void(std::size_t, std::size_t)> progress;
 };

@@ -11,31 +11,56 @@
 
 #include "game/content/equipment_file.hpp"
 #include "game/content/scenario.hpp"
+#include "game/content/scenario_schema.hpp"
+#include "game/content/scenario_toml.hpp"
 #include "game/report/report.hpp"
 #include "game/ui/trajectory_plot.hpp"
-#include "game/util/atomic_file.hpp"
 #include "physics/aero.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
 namespace {
 
-// A slider over a scenario key's value (SI) shown in the key's display unit, bounded by the
-// key's one range (the physics parameter's, through the schema); on change writes the
-// override. Ctrl+click types a value.
-bool slider(UiState& st, std::uint8_t strikes, const char* label, const std::string& key, double si_value,
-            const char* fmt = "%.1f") {
-  const KeySpec* spec = scenario_schema().find(key, strikes);
+/// Shown beside the friction choice: the textbook model is kept for teaching only.
+constexpr const char* kTextbookEnergyNote =
+    "textbook: applies mu*J in full every time; it can reverse sliding and CREATE energy "
+    "(see the energy-loss readout). Use coulomb for real shots.";
+
+void edit(PanelContext& c, LabParam p, double si) {
+  Intent in;
+  in.kind = IntentKind::Edit;
+  in.time = c.now;
+  in.param = static_cast<int>(p);
+  in.value = si;
+  c.out.push_back(in);
+}
+
+void choose(PanelContext& c, LabChoice which, const std::string& text) {
+  Intent in;
+  in.kind = IntentKind::Choose;
+  in.time = c.now;
+  in.param = static_cast<int>(which);
+  in.text = text;
+  c.out.push_back(in);
+}
+
+// A slider over one ShotSpec field (SI) shown in its scenario key's display unit, bounded by
+// the key's one range (the physics parameter's, through the schema); a change becomes an
+// Edit intent with the value in SI. Ctrl+click types a value.
+bool slider(PanelContext& c, LabParam p, const char* label, const char* fmt = "%.1f") {
+  const LabParamInfo& info = lab_param_info(p);
+  const KeySpec* spec = scenario_schema().find(info.key, info.strikes);
   if (spec == nullptr) return false;
-  const Range& r = spec->range[0] ? *spec->range[0] : kAnyFinite;
+  const Range* range = spec->range[static_cast<std::size_t>(info.element)];
+  const Range& r = range ? *range : kAnyFinite;
   const std::string unit(spec->unit);
   const float lo = static_cast<float>(si_to_unit(r.min, unit, spec->dim));
   const float hi = static_cast<float>(si_to_unit(r.max, unit, spec->dim));
-  float v = static_cast<float>(si_to_unit(si_value, unit, spec->dim));
+  float v = static_cast<float>(si_to_unit(c.lab.value(p), unit, spec->dim));
   std::string shown = std::string(fmt) + " ";
   for (const char ch : unit) shown += ch == '%' ? std::string("%%") : std::string(1, ch);  // a format string
   if (ImGui::SliderFloat(label, &v, lo, hi, shown.c_str(), ImGuiSliderFlags_AlwaysClamp)) {
-    st.set(key, quantity_text(float_as_decimal(v), unit));
+    edit(c, p, unit_to_si(float_as_decimal(v), unit, spec->dim));
     return true;
   }
   return false;
@@ -73,15 +98,11 @@ double display_value(const std::string& expect, double si, const DisplayUnits& u
   return si;
 }
 
-bool is_club(const Scenario& s) { return std::holds_alternative<ClubStrike>(s.spec.strike); }
-bool is_bat(const Scenario& s) { return std::holds_alternative<BatStrike>(s.spec.strike); }
-std::uint8_t strikes_of(const Scenario& s) {
-  return s.resolved.sport->impactor == ImpactorKind::Club ? kClubKeys : kBatKeys;
-}
-
+bool is_club(const LabModel& l) { return std::holds_alternative<ClubStrike>(l.spec().strike); }
+bool is_bat(const LabModel& l) { return std::holds_alternative<BatStrike>(l.spec().strike); }
 // Club face (golf) or barrel (baseball) with the impact point; a click moves it.
 bool impact_picker(PanelContext& c) {
-  const Scenario& s = c.scenario;
+  const LabModel& s = c.lab;
   if (!is_club(s) && !is_bat(s)) return false;
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 o = ImGui::GetCursorScreenPos();
@@ -91,9 +112,9 @@ bool impact_picker(PanelContext& c) {
   const ImVec2 m = ImGui::GetIO().MousePos;
   const ImVec2 centre(o.x + w * 0.5f, o.y + h * 0.5f);
   if (is_club(s)) {
-    const GolfSwing& g = std::get<ClubStrike>(s.spec.strike).swing;
+    const GolfSwing& g = std::get<ClubStrike>(s.spec().strike).swing;
     // Face drawn 1 px per mm (a driver face is ~110 × 55 mm; irons ~75 × 45 mm).
-    const bool wood = s.resolved.club_info->kind == "wood";
+    const bool wood = s.resolved().club_info->kind == "wood";
     const float fw = wood ? 110.0f : 75.0f, fh = wood ? 55.0f : 45.0f;
     dl->AddRectFilled(ImVec2(centre.x - fw / 2, centre.y - fh / 2), ImVec2(centre.x + fw / 2, centre.y + fh / 2),
                       IM_COL32(70, 74, 82, 255), 12.0f);
@@ -101,7 +122,7 @@ bool impact_picker(PanelContext& c) {
       dl->AddLine(ImVec2(centre.x - fw * 0.35f, centre.y + k * 6.0f), ImVec2(centre.x + fw * 0.35f, centre.y + k * 6.0f),
                   IM_COL32(95, 100, 110, 255));
     const float toe_mm = static_cast<float>(g.impact_toe * 1000.0);
-    const double up_m = std::isnan(g.impact_up) ? s.resolved.club->strike_height : g.impact_up;  // the club's usual strike
+    const double up_m = s.value(LabParam::ImpactUp);  // the club's usual strike
     const float up_mm = static_cast<float>(up_m * 1000.0);
     // Seen from the golfer's side of a right-hander's face, the toe is to the screen's right.
     dl->AddCircleFilled(ImVec2(centre.x + toe_mm, centre.y - up_mm), 5.0f, IM_COL32(255, 255, 255, 255));
@@ -111,13 +132,14 @@ bool impact_picker(PanelContext& c) {
       const double toe = std::clamp((m.x - centre.x) / 1000.0, GolfSwing::kImpactToe.min, GolfSwing::kImpactToe.max);
       const double up = std::clamp(-(m.y - centre.y) / 1000.0, GolfSwing::kImpactUp.min, GolfSwing::kImpactUp.max);
       if (std::abs(toe - g.impact_toe) > 5e-4 || std::abs(up - up_m) > 5e-4) {
-        c.state.set("swing.impact_offset", quantity_list_text({toe * 1000.0, up * 1000.0}, "mm"));
+        edit(c, LabParam::ImpactToe, toe);
+        edit(c, LabParam::ImpactUp, up);
         return true;
       }
     }
   } else {
-    const BatSwing& b = std::get<BatStrike>(s.spec.strike).swing;
-    const BatSpec& bat = *s.resolved.bat;
+    const BatSwing& b = std::get<BatStrike>(s.spec().strike).swing;
+    const BatSpec& bat = *s.resolved().bat;
     // Barrel, tip at the right; 1 px per 2 mm along, 1 px per 0.5 mm across.
     const float len = std::min(w - 20.0f, 420.0f);
     const float x_tip = centre.x + len / 2, x_knob = centre.x - len / 2;
@@ -134,8 +156,8 @@ bool impact_picker(PanelContext& c) {
                                          bat.length - bat.pivot_from_knob - 0.05);
       const double undercut = std::clamp(-(m.y - centre.y) / 0.5 / 1000.0, -0.05, 0.05);
       if (std::abs(from_tip - b.impact_from_tip) > 2e-3 || std::abs(undercut - b.undercut) > 5e-4) {
-        c.state.set("swing.impact_from_tip", quantity_text(from_tip * 1000.0, "mm"));
-        c.state.set("swing.undercut", quantity_text(undercut * 1000.0, "mm"));
+        edit(c, LabParam::ImpactFromTip, from_tip);
+        edit(c, LabParam::Undercut, undercut);
         return true;
       }
     }
@@ -145,16 +167,14 @@ bool impact_picker(PanelContext& c) {
 
 bool shot_section(PanelContext& c) {
   bool changed = false;
-  const Scenario& s = c.scenario;
-  UiState& st = c.state;
-
-  const std::string& sport = s.resolved.sport->name;
+  const LabModel& s = c.lab;
+  const std::string& sport = s.resolved().sport->name;
   bool first = true;
   for (const SportProfile& p : c.assets.sports().sports) {
     if (!first) ImGui::SameLine();
     first = false;
     if (ImGui::RadioButton(p.name.c_str(), p.name == sport) && p.name != sport) {
-      st.choose_scenario(p.default_scenario);
+      choose(c, LabChoice::Sport, p.name);
       changed = true;
     }
   }
@@ -162,43 +182,38 @@ bool shot_section(PanelContext& c) {
   for (const BuiltinScenario& b : c.assets.scenarios())
     if (b.sport == sport) builtins.push_back(b);
   std::string chosen;
-  if (combo("scenario", st.scenario, builtins, [](const BuiltinScenario& b) { return b.name; }, chosen)) {
-    st.choose_scenario(chosen);
+  if (combo("scenario", s.scenario().name, builtins, [](const BuiltinScenario& b) { return b.name; }, chosen)) {
+    choose(c, LabChoice::Scenario, chosen);
     changed = true;
   }
-  if (!s.description.empty()) ImGui::TextWrapped("%s", s.description.c_str());
+  if (!s.scenario().description.empty()) ImGui::TextWrapped("%s", s.scenario().description.c_str());
 
   const EquipmentCatalog& eq = c.assets.equipment();
-  const std::uint8_t k = strikes_of(s);
   if (is_club(s)) {
-    const ClubSpec& club = *s.resolved.club;
+    const ClubSpec& club = *s.resolved().club;
     if (combo("club", club.name, eq.clubs, [](const ClubSpec& x) { return x.name; }, chosen)) {
-      st.set("club.name", chosen);
-      st.overrides.erase("swing.dynamic_loft");  // the new club's own delivered loft and strike
-      st.overrides.erase("swing.impact_offset");
+      choose(c, LabChoice::Club, chosen);  // the new club's own delivered loft and strike
       changed = true;
     }
-    const GolfSwing& g = std::get<ClubStrike>(s.spec.strike).swing;
-    changed |= slider(st, k, "club speed", "swing.speed", g.club_speed);
-    changed |= slider(st, k, "attack angle", "swing.attack_angle", g.attack_angle);
-    changed |= slider(st, k, "club path", "swing.path", g.club_path);
-    changed |= slider(st, k, "dynamic loft", "swing.dynamic_loft", std::isnan(g.dynamic_loft) ? club.dynamic_loft : g.dynamic_loft);
-    changed |= slider(st, k, "face angle", "swing.face_angle", g.face_angle);
-    changed |= slider(st, k, "closure rate", "swing.closure_rate", g.closure_rate, "%.0f");
-    ImGui::Text("impact: toe %+.0f mm, up %+.0f mm", g.impact_toe * 1000,
-                (std::isnan(g.impact_up) ? club.strike_height : g.impact_up) * 1000);
+    changed |= slider(c, LabParam::ClubSpeed, "club speed");
+    changed |= slider(c, LabParam::AttackAngle, "attack angle");
+    changed |= slider(c, LabParam::ClubPath, "club path");
+    changed |= slider(c, LabParam::DynamicLoft, "dynamic loft");
+    changed |= slider(c, LabParam::FaceAngle, "face angle");
+    changed |= slider(c, LabParam::ClosureRate, "closure rate", "%.0f");
+    ImGui::Text("impact: toe %+.0f mm, up %+.0f mm", s.value(LabParam::ImpactToe) * 1000, s.value(LabParam::ImpactUp) * 1000);
     ImGui::TextDisabled("click the face to move the impact point");
   } else if (is_bat(s)) {
-    if (combo("bat", s.resolved.bat->name, eq.bats, [](const BatSpec& x) { return x.name; }, chosen)) {
-      st.set("bat.name", chosen);
+    if (combo("bat", s.resolved().bat->name, eq.bats, [](const BatSpec& x) { return x.name; }, chosen)) {
+      choose(c, LabChoice::Bat, chosen);
       changed = true;
     }
-    const BatStrike& b = std::get<BatStrike>(s.spec.strike);
-    changed |= slider(st, k, "bat speed", "swing.speed", b.swing.bat_speed);
-    changed |= slider(st, k, "attack angle", "swing.attack_angle", b.swing.attack_angle);
-    changed |= slider(st, k, "attack direction", "swing.direction", b.swing.direction);
-    changed |= slider(st, k, "pitch speed", "pitch.speed", b.pitch.speed);
-    changed |= slider(st, k, "pitch spin", "pitch.spin", b.pitch.spin, "%.0f");
+    const BatStrike& b = std::get<BatStrike>(s.spec().strike);
+    changed |= slider(c, LabParam::BatSpeed, "bat speed");
+    changed |= slider(c, LabParam::BatAttack, "attack angle");
+    changed |= slider(c, LabParam::BatDirection, "attack direction");
+    changed |= slider(c, LabParam::PitchSpeed, "pitch speed");
+    changed |= slider(c, LabParam::PitchSpin, "pitch spin", "%.0f");
     ImGui::Text("impact: %.1f in from tip, undercut %+.0f mm", b.swing.impact_from_tip / 0.0254, b.swing.undercut * 1000);
     ImGui::TextDisabled("click the barrel: along = impact point, up = undercut");
   }
@@ -208,29 +223,31 @@ bool shot_section(PanelContext& c) {
 
 bool tuning_section(PanelContext& c) {
   bool changed = false;
-  const Scenario& s = c.scenario;
-  if (std::holds_alternative<LaunchStrike>(s.spec.strike)) {
+  const LabModel& s = c.lab;
+  if (std::holds_alternative<LaunchStrike>(s.spec().strike)) {
     // Launch numbers replace the strike: there is no e or mu to tune (and the scenario
     // refuses impact keys rather than ignore them).
     ImGui::TextDisabled("launch numbers given: no impact to tune");
     return false;
   }
-  UiState& st = c.state;
-  const std::uint8_t k = strikes_of(s);
-  const ImpactSummary& im = c.result.impact;
-  const ImpactMaterial& mat = s.resolved.material;
-  changed |= slider(st, k, "e", "impact.e", im.present ? im.e : 0.8, "%.3f");
+  const ImpactSummary& im = s.result().impact;
+  const ImpactMaterial& mat = s.resolved().material;
+  changed |= slider(c, LabParam::E, "e", "%.3f");
+  if (s.e_replaces_law())
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "e is a constant here: it replaces the equipment's speed-dependent COR");
+  else if (mat.e.count > 1)
+    ImGui::TextDisabled("e at this impact speed, from the equipment's COR law");
   int impact_model = static_cast<int>(mat.model);
   const char* impact_models[] = {"compliant", "rigid"};
   if (ImGui::Combo("impact", &impact_model, impact_models, 2)) {
-    st.set("impact.model", impact_models[impact_model]);
+    choose(c, LabChoice::ImpactModel, impact_models[impact_model]);
     changed = true;
   }
   if (mat.model == ImpactModel::Rigid || mat.friction == FrictionModel::Textbook)
-    changed |= slider(st, k, "e_t", "impact.e_t", mat.e_t, "%.3f");
+    changed |= slider(c, LabParam::Et, "e_t", "%.3f");
   else
     ImGui::TextDisabled("e_t %.3f (from the contact; rigid model to set it)", im.present ? im.e_t : 0.0);
-  changed |= slider(st, k, "mu", "impact.mu", mat.mu, "%.3f");
+  changed |= slider(c, LabParam::Mu, "mu", "%.3f");
   if (im.present && im.mu_grip == 0.0) {
     ImGui::TextDisabled("friction does not change this launch");
   } else if (im.present && im.mu_grip > 0.0) {
@@ -243,37 +260,35 @@ bool tuning_section(PanelContext& c) {
   int model = static_cast<int>(mat.friction);
   const char* models[] = {"none", "textbook", "coulomb"};
   if (ImGui::Combo("friction", &model, models, 3)) {
-    st.set("impact.friction", models[model]);
+    choose(c, LabChoice::Friction, models[model]);
     changed = true;
   }
   if (mat.friction == FrictionModel::Textbook)
     ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s", kTextbookEnergyNote);
   std::vector<std::string> aeros;
   for (const AeroModel& m : c.assets.aero_models())
-    if (m.sport == s.resolved.sport->name) aeros.push_back(m.name);
+    if (m.sport == s.resolved().sport->name) aeros.push_back(m.name);
   std::string chosen;
-  if (combo("aero", s.resolved.aero->name, aeros, [](const std::string& n) { return n; }, chosen)) {
-    st.set("aero.model", chosen);
+  if (combo("aero", s.resolved().aero->name, aeros, [](const std::string& n) { return n; }, chosen)) {
+    choose(c, LabChoice::Aero, chosen);
     changed = true;
   }
-  const Environment& env = s.spec.environment;
-  changed |= slider(st, k, "temperature", "environment.temperature", env.temperature, "%.0f");
-  changed |= slider(st, k, "altitude", "environment.altitude", env.altitude, "%.0f");
-  changed |= slider(st, k, "humidity", "environment.humidity", env.humidity, "%.0f");
-  changed |= slider(st, k, "wind", "environment.wind_speed", env.wind_speed, "%.0f");
-  changed |= slider(st, k, "wind toward", "environment.wind_direction", env.wind_direction, "%.0f");
+  changed |= slider(c, LabParam::Temperature, "temperature", "%.0f");
+  changed |= slider(c, LabParam::Altitude, "altitude", "%.0f");
+  changed |= slider(c, LabParam::Humidity, "humidity", "%.0f");
+  changed |= slider(c, LabParam::WindSpeed, "wind", "%.0f");
+  changed |= slider(c, LabParam::WindDirection, "wind toward", "%.0f");
   ImGui::TextDisabled("wind toward: 0 = tailwind, 90 = to the right");
   ImGui::SetNextItemWidth(200);
   ImGui::InputText("##save", &c.save_path);
   ImGui::SameLine();
   // Saving never replaces a file silently: an existing one needs a second, explicit yes.
   const auto save = [&c](const std::string& path) {
-    try {
-      write_file_atomic(path, scenario_toml(c.scenario), OverInput::Allow);  // saving over the loaded scenario is the point
-      c.status = "saved " + path;
-    } catch (const std::exception& e) {
-      c.status = e.what();
-    }
+    Intent in;
+    in.kind = IntentKind::Save;
+    in.time = c.now;
+    in.text = path;
+    c.out.push_back(in);
   };
   if (ImGui::Button("Save scenario")) {
     std::error_code ec;
@@ -290,7 +305,7 @@ bool tuning_section(PanelContext& c) {
     }
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) {
-      c.status = "not saved: " + c.save_path + " exists (pick another name)";
+      c.note = "not saved: " + c.save_path + " exists (pick another name)";
       ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
@@ -299,9 +314,9 @@ bool tuning_section(PanelContext& c) {
 }
 
 void monitor_section(PanelContext& c) {
-  const ShotResult& r = c.result;
-  const Scenario& s = c.scenario;
-  const SportProfile& sport = *s.resolved.sport;
+  const ShotResult& r = c.lab.result();
+  const Scenario& s = c.lab.scenario();
+  const SportProfile& sport = *c.lab.resolved().sport;
   // Warnings first, where they are seen (values outside what labs measure, energy created,
   // spin past the aero fits), as `shot` prints them.
   for (const std::string& w : r.warnings) {
@@ -352,7 +367,7 @@ void monitor_section(PanelContext& c) {
 }
 
 void replay_section(PanelContext& c) {
-  const double end = duration(c.result.trajectory);
+  const double end = duration(c.lab.result().trajectory);
   if (ImGui::Button(c.replay.playing ? "Pause" : "Play")) {
     if (!c.replay.playing && c.replay.time >= end) c.replay.time = -c.replay.pre_roll;
     c.replay.playing = !c.replay.playing;
@@ -372,7 +387,8 @@ void replay_section(PanelContext& c) {
   ImGui::SetNextItemWidth(-1);
   if (ImGui::SliderFloat("##time", &t, static_cast<float>(-c.replay.pre_roll), static_cast<float>(end), "%.2f s"))
     c.replay.scrub(t, end);
-  if (!c.status.empty()) ImGui::TextWrapped("%s", c.status.c_str());
+  if (!c.lab.status().empty()) ImGui::TextWrapped("%s", c.lab.status().c_str());
+  else if (!c.note.empty()) ImGui::TextWrapped("%s", c.note.c_str());
 }
 
 constexpr ImGuiWindowFlags kColumnFlags =
@@ -395,8 +411,8 @@ void hud(PanelContext& c, const Rect& view) {
   ImGui::Begin("##hud", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  const ShotResult& r = c.result;
-  const SportProfile& sport = *c.scenario.resolved.sport;
+  const ShotResult& r = c.lab.result();
+  const SportProfile& sport = *c.lab.resolved().sport;
   const DisplayUnits u = display_units(sport, UnitSystem::Imperial);
   std::string line;
   for (const char* id : {"ball_speed", "launch_angle", "spin_rate", "carry", "total"}) {
@@ -407,8 +423,8 @@ void hud(PanelContext& c, const Rect& view) {
     line += (line.empty() ? "" : "   ") + std::string(m->label) + " " + *text;
   }
   ImGui::TextUnformatted(line.c_str());
-  ImGui::TextDisabled("H: panels   1-4: cameras (again: reset)   R: replay   Space: hit again");
-  if (!c.status.empty()) ImGui::TextWrapped("%s", c.status.c_str());
+  ImGui::TextDisabled("H: panels   1-4: cameras (again: reset)   R: replay   Space: hit again   Esc: pause   Tab: next mode");
+  if (!c.lab.status().empty()) ImGui::TextWrapped("%s", c.lab.status().c_str());
   ImGui::End();
 }
 
@@ -428,7 +444,7 @@ bool draw_panels(PanelContext& ctx, const PanelLayout& layout) {
       begin_column("##right", layout.right);
       if (section("Replay", true)) replay_section(ctx);
       if (section("Launch monitor", true)) monitor_section(ctx);
-      if (section("Trajectory", true)) draw_trajectory_plots(ctx.result.trajectory, ctx.replay.time);
+      if (section("Trajectory", true)) draw_trajectory_plots(ctx.lab.result().trajectory, ctx.replay.time);
       ImGui::End();
       break;
     case LayoutKind::Sidebar:
@@ -437,7 +453,7 @@ bool draw_panels(PanelContext& ctx, const PanelLayout& layout) {
       if (section("Launch monitor", true)) monitor_section(ctx);
       if (section("Shot", true)) changed |= shot_section(ctx);
       if (section("Tuning", false)) changed |= tuning_section(ctx);
-      if (section("Trajectory", false)) draw_trajectory_plots(ctx.result.trajectory, ctx.replay.time);
+      if (section("Trajectory", false)) draw_trajectory_plots(ctx.lab.result().trajectory, ctx.replay.time);
       ImGui::End();
       break;
   }

@@ -34,9 +34,7 @@ void MeterClock::click(double t) {
       }
       break;
     case Phase::Downswing: {
-      // The marker crosses 0 at t_top + power·tempo/1.5.
-      const double t_mark = t_top_ + power_ * tempo_ / kDownFactor;
-      accuracy_ms_ = std::clamp(1000.0 * (t - t_mark), MeterInput::kAccuracy.min, MeterInput::kAccuracy.max);
+      accuracy_ms_ = std::clamp(1000.0 * (t - mark_time()), MeterInput::kAccuracy.min, MeterInput::kAccuracy.max);
       phase_ = Phase::Done;
       break;
     }

@@ -28,6 +28,9 @@ class MeterClock {
   /// The marker at time t, −0.15 … 1.1 (fraction of a full swing).
   double position(double t) const;
   double power() const { return power_; }
+  /// When the marker crosses the accuracy mark on the way down (s, the click clock): the
+  /// time a perfect third click is made. Meaningful from the power click on.
+  double mark_time() const { return t_top_ + power_ * tempo_ / kDownFactor; }
   /// The result once Done.
   std::optional<MeterInput> result() const;
 

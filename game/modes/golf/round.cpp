@@ -19,7 +19,7 @@ const char* to_string(StrokeEnd e) {
 }
 
 GolfRound::GolfRound(const Assets& assets, Course course, const GolferSkill& golfer)
-    : assets_(assets), course_(std::move(course)), golfer_(golfer) {
+    : assets_(&assets), course_(std::move(course)), golfer_(golfer) {
   if (course_.holes.empty()) throw InputError("course '" + course_.name + "' has no holes");
   ball_ = hole().tee;
   card_.push_back(HoleCard{hole().number, hole().par, 0, 0, 0, false, {}});
@@ -47,7 +47,7 @@ int GolfRound::total_strokes() const {
 }
 
 ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
-  const EquipmentCatalog& eq = assets_.equipment();
+  const EquipmentCatalog& eq = assets_->equipment();
   if (std::find(golf_bag().begin(), golf_bag().end(), in.club) == golf_bag().end()) {
     std::string names;
     for (const std::string& c : golf_bag()) names += (names.empty() ? "" : ", ") + c;
@@ -76,7 +76,7 @@ ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
 
 ShotResult GolfRound::simulate(const StrokeInput& in, bool record_samples) const {
   const ShotSpec s = spec_for(in);
-  return run_shot(resolve(s, assets_), "hole " + std::to_string(hole().number), {true, record_samples});
+  return run_shot(resolve(s, *assets_), "hole " + std::to_string(hole().number), {true, record_samples});
 }
 
 Vec3 GolfRound::drop_back_on_line(const Vec3& in_water, const Vec3& from) const {
@@ -121,7 +121,7 @@ const StrokeRecord& GolfRound::play_launch(const std::string& club, const Launch
 }
 
 const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string& club, ShotResult* shot) {
-  const ResolvedShot resolved = resolve(spec, assets_);
+  const ResolvedShot resolved = resolve(spec, *assets_);
   ShotResult r = run_shot(resolved, "hole " + std::to_string(hole().number), {true, shot != nullptr});
   const std::size_t k = card_.size() - 1;
   HoleCard& h = card_[k];

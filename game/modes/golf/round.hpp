@@ -84,7 +84,7 @@ class GolfRound {
   std::string surface_at(const Vec3& p) const;
   void finish_hole();
 
-  const Assets& assets_;
+  const Assets* assets_;  // a pointer, so a round can be assigned (a restarted hole replays into a new one)
   Course course_;
   GolferSkill golfer_;
   std::size_t hole_ = 0;

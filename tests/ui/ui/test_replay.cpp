@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "game/render/camera.hpp"
-#include "game/ui/replay.hpp"
+#include "game/modes/replay.hpp"
 #include "game/ui/trajectory_plot.hpp"
 
 using namespace sweetspot;

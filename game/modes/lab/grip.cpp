@@ -1,4 +1,4 @@
-#include "game/tuning/grip.hpp"
+#include "game/modes/lab/grip.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "game/ui/replay.hpp"
+#include "game/modes/replay.hpp"
 
 #include <algorithm>
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "game/content/scenario.hpp"
-#include "game/tuning/grip.hpp"
+#include "game/modes/lab/grip.hpp"
 #include "support/test_assets.hpp"
 #include "game/rules/run_shot.hpp"
 

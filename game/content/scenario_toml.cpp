@@ -1,4 +1,4 @@
-#include "game/ui/ui_state.hpp"
+#include "game/content/scenario_toml.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -8,13 +8,6 @@
 #include <sstream>
 
 namespace sweetspot {
-
-std::vector<std::string> UiState::override_list() const {
-  std::vector<std::string> out;
-  out.reserve(overrides.size());
-  for (const auto& [key, value] : overrides) out.push_back(key + "=" + value);
-  return out;
-}
 
 std::string quantity_text(double value, const std::string& unit) {
   // The shortest text that reads back as the same double: "0.808", never "0.808000028".
@@ -43,10 +36,6 @@ std::string quantity_list_text(const std::vector<double>& values, const std::str
     out += quantity_text(values[i], unit);
   }
   return out + "]";
-}
-
-Scenario load_ui_scenario(const Assets& assets, const UiState& state) {
-  return load_scenario(assets, state.scenario, state.override_list());
 }
 
 namespace {

@@ -1,0 +1,168 @@
+#include "game/app/main_loop.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <optional>
+
+#include "game/render/image.hpp"
+#include "game/render/renderer.hpp"
+
+namespace sweetspot {
+namespace {
+
+// A mode's place in the loop: its view once made, and its clock: mode time = window time -
+// offset, the offset growing by every stretch the mode spent paused or in the background.
+struct Slot {
+  std::unique_ptr<ModeView> view;
+  double offset = 0.0;
+  double left_at = 0.0;   // window time the mode was left (its clock stopped there)
+  double last_now = 0.0;  // mode time of its last frame
+};
+
+enum class MenuChoice { None, Resume, Restart, NextMode, Quit };
+
+MenuChoice draw_pause_menu(const ModeView& view, int w, int h) {
+  MenuChoice choice = MenuChoice::None;
+  ImGui::SetNextWindowPos(ImVec2(0.5f * static_cast<float>(w), 0.4f * static_cast<float>(h)), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_Always);
+  ImGui::Begin("Paused", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::Text("%s", view.title());
+  ImGui::Separator();
+  const ImVec2 size(-1, 0);
+  if (ImGui::Button("Resume (Esc)", size)) choice = MenuChoice::Resume;
+  if (ImGui::Button((std::string(view.restart_label()) + " (R)").c_str(), size)) choice = MenuChoice::Restart;
+  if (ImGui::Button("Next mode (Tab)", size)) choice = MenuChoice::NextMode;
+  if (ImGui::Button("Quit (Q)", size)) choice = MenuChoice::Quit;
+  ImGui::End();
+  return choice;
+}
+
+}  // namespace
+
+LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry& modes, std::size_t first,
+                        const LoopOptions& o, std::ostream& out) {
+  LoopStats stats;
+  std::vector<Slot> slots(modes.size());
+  std::size_t active = first;
+  const auto activate = [&](std::size_t i, double wall) {
+    Slot& s = slots[i];
+    if (!s.view) {
+      s.view = modes[i].make();
+      s.offset = wall;
+      s.last_now = 0.0;
+    } else {
+      s.offset += wall - s.left_at;
+    }
+  };
+  activate(active, win.clock());
+  bool paused = false, quit = false;
+  double paused_at = 0.0;
+  std::vector<KeyPress> carried;  // keys pressed after a Tab: the next mode's
+
+  while (!win.should_close() && !quit) {
+    const auto t0 = std::chrono::steady_clock::now();
+    FrameInput fin = win.begin_frame();
+    std::vector<KeyPress> keys = std::move(carried);
+    carried.clear();
+    keys.insert(keys.end(), fin.keys.begin(), fin.keys.end());
+    const double wall = win.clock();
+    Slot& slot = slots[active];
+    ModeView& view = *slot.view;
+
+    MenuChoice choice = MenuChoice::None;
+    ViewInput vi;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      const KeyPress& k = keys[i];
+      if (paused) {
+        if (k.key == GLFW_KEY_ESCAPE || k.key == GLFW_KEY_ENTER || k.key == GLFW_KEY_KP_ENTER) choice = MenuChoice::Resume;
+        else if (k.key == GLFW_KEY_R) choice = MenuChoice::Restart;
+        else if (k.key == GLFW_KEY_TAB) choice = MenuChoice::NextMode;
+        else if (k.key == GLFW_KEY_Q) choice = MenuChoice::Quit;
+        if (choice != MenuChoice::None) {
+          carried.assign(keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, keys.end());
+          break;
+        }
+        continue;
+      }
+      if (k.key == GLFW_KEY_TAB) {
+        choice = MenuChoice::NextMode;
+        carried.assign(keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, keys.end());
+        break;
+      }
+      if (k.key == GLFW_KEY_ESCAPE) {
+        // Esc cancels what is in progress (a meter: no stroke counted), then pauses.
+        Intent cancel;
+        cancel.kind = IntentKind::Cancel;
+        cancel.time = k.time - slot.offset;
+        view.send(cancel);
+        paused = true;
+        paused_at = k.time;
+        continue;
+      }
+      vi.keys.push_back({k.key, k.time - slot.offset});
+    }
+    vi.now = (paused ? paused_at : wall) - slot.offset;
+    vi.dt = std::max(0.0, vi.now - slot.last_now);
+    slot.last_now = vi.now;
+    vi.width = win.framebuffer_width();
+    vi.height = win.framebuffer_height();
+    if (!paused) {
+      vi.orbit_dx = fin.orbit_dx;
+      vi.orbit_dy = fin.orbit_dy;
+      vi.zoom = fin.zoom;
+    }
+    view.frame(vi, renderer);
+    if (paused && choice == MenuChoice::None) choice = draw_pause_menu(view, vi.width, vi.height);
+    win.render_ui();
+
+    // What the frame decided, applied after the ImGui frame has ended.
+    std::optional<std::size_t> next;
+    switch (choice) {
+      case MenuChoice::None: break;
+      case MenuChoice::Resume:
+        slot.offset += wall - paused_at;
+        paused = false;
+        break;
+      case MenuChoice::Restart: {
+        Intent restart;
+        restart.kind = IntentKind::Restart;
+        restart.time = paused_at - slot.offset;
+        view.send(restart);
+        slot.offset += wall - paused_at;
+        paused = false;
+        break;
+      }
+      case MenuChoice::NextMode: next = (active + 1) % slots.size(); break;
+      case MenuChoice::Quit: quit = true; break;
+    }
+    if (next) {
+      // The mode left keeps its clock where it stopped: at the pause, or now.
+      slot.left_at = paused ? paused_at : wall;
+      paused = false;
+      active = *next;
+      activate(active, wall);
+    }
+
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    ++stats.frames;
+    stats.ms_total += ms;
+    stats.frame_ms.push_back(ms);
+    const bool last = quit || win.should_close() || (o.frames > 0 && stats.frames >= o.frames) || slots[active].view->done();
+    if (last && !o.screenshot.empty()) {
+      int sw = 0, sh = 0;
+      std::vector<unsigned char> rgba;
+      win.read_pixels(sw, sh, rgba);
+      write_png_atomic(o.screenshot, sw, sh, rgba);
+      out << "screenshot: " << o.screenshot << " (" << sw << "x" << sh << ")\n";
+    }
+    win.present();
+    if (last) break;
+  }
+  for (const Slot& s : slots)
+    if (s.view) s.view->report(out);
+  return stats;
+}
+
+}  // namespace sweetspot

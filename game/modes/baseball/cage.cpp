@@ -1,0 +1,105 @@
+#include "game/modes/baseball/cage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "game/modes/replay.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+
+BattingCage::BattingCage(const Assets& assets, std::uint64_t seed)
+    : assets_(assets), types_(load_pitch_types(assets)), rng_(seed), bot_(assets, batter_skill("pro"), 5) {
+  call_ = derby_pitch(types_, rng_);
+}
+
+void BattingCage::update(const Intents& intents, double now) {
+  Intents ordered = intents;
+  std::stable_sort(ordered.begin(), ordered.end(), [](const Intent& a, const Intent& b) { return a.time < b.time; });
+  for (const Intent& in : ordered) {
+    advance(in.time);
+    apply(in);
+  }
+  advance(now);
+}
+
+void BattingCage::advance(double t) {
+  if (stage_ == Stage::Pitching && pitch_clock(t) > pitch_.flight_time + kTakenAfter) {
+    last_ = SwingRecord{};
+    last_.call = call_;
+    last_.pitch = pitch_;
+    last_.swung = false;
+    call_text_ = in_zone(pitch_.plate, assets_.equipment().ball("mlb").radius) ? "called strike" : "ball";
+    stage_ = Stage::Called;
+  }
+  if (stage_ == Stage::Batted && t - batted_at_ >= duration(last_.result.shot.trajectory)) stage_ = Stage::Called;
+}
+
+void BattingCage::swing(const SwingInput& s, double t) {
+  last_ = SwingRecord{};
+  last_.call = call_;
+  last_.pitch = pitch_;
+  last_.timing_ms = s.timing_ms;
+  last_.undercut = s.undercut;
+  last_.result = swing_at(assets_, pitch_, s, batter_skill("pro").bat_speed);
+  last_.call_text = to_string(last_.result.outcome);
+  swings_.push_back(last_);
+  char text[128];
+  if (last_.result.contact) {
+    const std::string outcome = last_.result.outcome == BattedOutcome::HomeRun ? "Home run" : last_.call_text;
+    std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %.0f ft", outcome.c_str(),
+                  mps_to_mph(last_.result.shot.launch.ball_speed), rad_to_deg(last_.result.shot.launch.vertical_angle),
+                  m_to_ft(last_.result.shot.trajectory.summary.carry_m));
+    batted_at_ = t;
+    stage_ = Stage::Batted;
+  } else {
+    std::snprintf(text, sizeof text, "strike: %s %.0f ms", s.timing_ms >= 0 ? "late" : "early", std::abs(s.timing_ms));
+    stage_ = Stage::Called;
+  }
+  call_text_ = text;
+}
+
+void BattingCage::apply(const Intent& in) {
+  const double t = in.time;
+  switch (in.kind) {
+    case IntentKind::BatUp:
+    case IntentKind::BatDown:
+      bat_height_ += in.kind == IntentKind::BatUp ? 0.01 : -0.01;
+      bat_height_ = std::clamp(bat_height_, kZoneLow - 0.3, kZoneHigh + 0.3);
+      break;
+    case IntentKind::TogglePower: power_ = !power_; break;
+    case IntentKind::ToggleSide: lefty_ = !lefty_; break;
+    case IntentKind::Restart:
+      // A fresh session: the record cleared, the next pitch on call.
+      swings_.clear();
+      last_ = SwingRecord{};
+      call_text_.clear();
+      stage_ = Stage::Ready;
+      break;
+    case IntentKind::Pitch:
+    case IntentKind::Swing:
+      if (stage_ != Stage::Pitching) {
+        // Space between pitches calls for the next one, as P does.
+        call_ = derby_pitch(types_, rng_);
+        pitch_ = throw_pitch(assets_, call_);
+        released_at_ = t;
+        stage_ = Stage::Pitching;
+        call_text_.clear();
+      } else if (in.kind == IntentKind::Swing) {
+        SwingInput s;
+        s.timing_ms = std::clamp(1000.0 * (pitch_clock(t) - pitch_.flight_time), SwingInput::kTiming.min, SwingInput::kTiming.max);
+        s.undercut = std::clamp(pitch_.plate.y() - bat_height_, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
+        s.power = power_;
+        s.left_handed = lefty_;
+        swing(s, t);
+      }
+      break;
+    case IntentKind::BotSwings:
+      if (stage_ == Stage::Pitching) swing(bot_.plan(pitch_, true, lefty_), t);
+      break;
+    default: break;
+  }
+}
+
+}  // namespace sweetspot

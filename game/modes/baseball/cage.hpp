@@ -1,0 +1,64 @@
+// The batting cage as a headless model (DESIGN §1, §9): batting-practice pitches on call,
+// the swing judged from the moment its key went down against the pitch's arrival, the bat's
+// height, power or contact, the batter's side, the pro bot on request, and the session's
+// record. The window's view draws it; the tests drive it with scripted intents.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "game/modes/baseball/session.hpp"
+#include "game/modes/intent.hpp"
+
+namespace sweetspot {
+
+class BattingCage {
+ public:
+  enum class Stage { Ready, Pitching, Batted, Called };
+
+  /// The pitch plays at this fraction of real time: 0.4 s is a hitter's lifetime, not a game's.
+  static constexpr double kPitchTimeScale = 0.5;
+  /// The strike zone's bottom and top (ft 1.6 and 3.5, as in_zone) and the plate's half width, m.
+  static constexpr double kZoneLow = 1.6 * 0.3048, kZoneHigh = 3.5 * 0.3048, kPlateHalf = 0.2159;
+  /// After the pitch crosses the plate it is taken (called) once this much pitch time more has passed.
+  static constexpr double kTakenAfter = 0.15;  // s
+
+  explicit BattingCage(const Assets& assets, std::uint64_t seed = 11);
+
+  void update(const Intents& intents, double now);
+
+  Stage stage() const { return stage_; }
+  const PitchCall& call() const { return call_; }
+  const PitchFlight& pitch() const { return pitch_; }
+  /// Pitch time (s since release, slowed by kPitchTimeScale) at mode time `t`.
+  double pitch_clock(double t) const { return (t - released_at_) * kPitchTimeScale; }
+  /// The batted ball's flight runs from this mode time.
+  double batted_at() const { return batted_at_; }
+  double bat_height() const { return bat_height_; }  ///< m above the ground where the bat meets the ball's path
+  bool power() const { return power_; }
+  bool left_handed() const { return lefty_; }
+  const SwingRecord& last() const { return last_; }
+  const std::vector<SwingRecord>& swings() const { return swings_; }
+  const std::string& call_text() const { return call_text_; }
+
+ private:
+  void apply(const Intent& in);
+  void advance(double t);
+  void swing(const SwingInput& s, double t);
+
+  const Assets& assets_;
+  std::vector<PitchType> types_;
+  Rng rng_;
+  BotBatter bot_;
+  Stage stage_ = Stage::Ready;
+  PitchCall call_;
+  PitchFlight pitch_;
+  double released_at_ = 0.0, batted_at_ = 0.0;
+  double bat_height_ = 0.76;
+  bool power_ = true, lefty_ = false;
+  SwingRecord last_;
+  std::vector<SwingRecord> swings_;
+  std::string call_text_;
+};
+
+}  // namespace sweetspot

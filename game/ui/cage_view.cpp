@@ -1,0 +1,184 @@
+#include "game/ui/cage_view.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "game/modes/replay.hpp"
+#include "game/render/renderer.hpp"
+#include "game/render/shot_scene.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+
+Intents cage_intents(const std::vector<KeyPress>& keys) {
+  Intents out;
+  for (const KeyPress& k : keys) {
+    IntentKind kind;
+    switch (k.key) {
+      case GLFW_KEY_SPACE: kind = IntentKind::Swing; break;
+      case GLFW_KEY_P: kind = IntentKind::Pitch; break;
+      case GLFW_KEY_UP: kind = IntentKind::BatUp; break;
+      case GLFW_KEY_DOWN: kind = IntentKind::BatDown; break;
+      case GLFW_KEY_C: kind = IntentKind::TogglePower; break;
+      case GLFW_KEY_L: kind = IntentKind::ToggleSide; break;
+      case GLFW_KEY_B: kind = IntentKind::BotSwings; break;
+      default: continue;
+    }
+    Intent in;
+    in.kind = kind;
+    in.time = k.time;
+    out.push_back(in);
+  }
+  return out;
+}
+
+namespace {
+
+using Stage = BattingCage::Stage;
+
+Camera batter_view() {
+  Camera c;
+  c.eye = Vec3(-3.2, 1.6, -0.45);  // behind a right-handed batter, over his shoulder
+  c.target = Vec3(10.0, 1.0, 0.0);
+  c.fov_y = deg_to_rad(36.0);
+  return c;
+}
+
+void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const auto pt = [&](double y, double z) -> std::optional<ImVec2> {
+    const auto p = cam.project(Vec3(0.0, y, z), w, h);
+    if (!p) return std::nullopt;
+    return ImVec2(static_cast<float>((*p)(0)), static_cast<float>((*p)(1)));
+  };
+  const double lo = BattingCage::kZoneLow, hi = BattingCage::kZoneHigh, half = BattingCage::kPlateHalf;
+  const auto a = pt(hi, -half), b = pt(hi, half), d = pt(lo, half), e = pt(lo, -half);
+  if (a && b && d && e) dl->AddQuad(*a, *b, *d, *e, IM_COL32(255, 255, 255, 200), 2.0f);
+  // The bat's height: where the swing will meet the ball.
+  const auto l = pt(c.bat_height(), -half - 0.25), r = pt(c.bat_height(), half + 0.25);
+  if (l && r) dl->AddLine(*l, *r, c.power() ? IM_COL32(255, 170, 40, 230) : IM_COL32(80, 200, 255, 230), 3.0f);
+}
+
+void draw_stats(const BattingCage& c, int w, int h) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_Always);
+  ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
+  ImGui::Text("Swing: %s, %s-handed", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right");
+  ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height");
+  ImGui::TextDisabled("C: power/contact  L: batter's side");
+  ImGui::TextDisabled("B: the pro swings  Esc: pause  Tab: next mode");
+  ImGui::Separator();
+  int n = 0, contact = 0, hard = 0, hr = 0;
+  double ev = 0.0, la = 0.0, longest = 0.0;
+  for (const SwingRecord& s : c.swings()) {
+    ++n;
+    if (!s.result.contact) continue;
+    ++contact;
+    ev += mps_to_mph(s.result.shot.launch.ball_speed);
+    la += rad_to_deg(s.result.shot.launch.vertical_angle);
+    hard += s.result.hard_hit;
+    hr += s.result.outcome == BattedOutcome::HomeRun;
+    longest = std::max(longest, s.result.shot.trajectory.summary.carry_m);
+  }
+  ImGui::Text("Swings %d, contact %d, home runs %d", n, contact, hr);
+  if (contact > 0) {
+    ImGui::Text("Avg exit velocity %.1f mph, launch %.1f deg", ev / contact, la / contact);
+    ImGui::Text("Hard-hit %.0f %%, longest %.0f ft", 100.0 * hard / contact, m_to_ft(longest));
+  }
+  ImGui::End();
+
+  // The spray chart, bottom right: home plate at the bottom, 450 ft to the top.
+  const float size = 220.0f, x0 = static_cast<float>(w) - size - 12.0f, y0 = static_cast<float>(h) - size - 12.0f;
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + size, y0 + size), IM_COL32(40, 90, 45, 220), 6.0f);
+  const float scale = size / 140.0f;  // m
+  const ImVec2 home(x0 + size / 2, y0 + size - 8.0f);
+  const auto px = [&](const Vec3& p) { return ImVec2(home.x + static_cast<float>(p.z()) * scale, home.y - static_cast<float>(p.x()) * scale); };
+  dl->AddLine(home, px(Vec3(130, 0, 130)), IM_COL32(240, 240, 240, 255));
+  dl->AddLine(home, px(Vec3(130, 0, -130)), IM_COL32(240, 240, 240, 255));
+  for (const SwingRecord& s : c.swings()) {
+    if (!s.result.contact) continue;
+    const FlightSummary& f = s.result.shot.trajectory.summary;
+    const Vec3 p = f.carry_m > 40.0 || s.result.outcome == BattedOutcome::HomeRun ? f.landing_position : f.rest_position;
+    ImU32 col = IM_COL32(150, 150, 150, 255);
+    switch (s.result.outcome) {
+      case BattedOutcome::HomeRun: col = IM_COL32(220, 40, 40, 255); break;
+      case BattedOutcome::Triple: col = IM_COL32(250, 130, 0, 255); break;
+      case BattedOutcome::Double: col = IM_COL32(235, 200, 100, 255); break;
+      case BattedOutcome::Single: col = IM_COL32(40, 160, 140, 255); break;
+      case BattedOutcome::Foul: col = IM_COL32(140, 200, 230, 255); break;
+      default: break;
+    }
+    dl->AddCircleFilled(px(p), 4.0f, col);
+  }
+  dl->AddText(ImVec2(x0 + 6, y0 + 4), IM_COL32(255, 255, 255, 255), "spray chart");
+}
+
+class CageView final : public ModeView {
+ public:
+  CageView(const Assets& assets, std::unique_ptr<BattingCage> m, const CageViewOptions& o) : cage_(std::move(m)), options_(o) {
+    ShotSceneInput in;
+    in.assets = &assets;
+    in.world = assets.world("ballpark");
+    in.distance_unit = "ft";
+    in.ball_radius = assets.equipment().ball("mlb").radius;
+    scene_ = std::make_unique<ShotScene>(in);
+  }
+  const char* title() const override { return "Batting cage"; }
+  const char* restart_label() const override { return "Restart session"; }
+  void send(const Intent& in) override { cage_->update({in}, in.time); }
+  bool done() const override { return options_.exit_when_done && done_frames_ >= 30; }
+  void report(std::ostream& out) const override {
+    for (const SwingRecord& s : cage_->swings()) out << "swing: " << s.call_text << "\n";
+  }
+  void frame(const ViewInput& in, Renderer& renderer) override {
+    const BattingCage& c = *cage_;
+    const std::size_t before = c.swings().size();
+    const Stage stage_before = c.stage();
+    cage_->update(cage_intents(in.keys), in.now);
+    // The scene holds the pitch while it flies and the batted ball after contact.
+    if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) scene_->set_shot(c.pitch().trajectory, std::nullopt);
+    if (c.swings().size() != before && c.last().result.contact) scene_->set_shot(c.last().result.shot.trajectory, std::nullopt);
+    const int w = in.width, h = in.height;
+    if (w > 0 && h > 0) {
+      if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);
+      const bool batted = c.stage() == Stage::Batted || (c.stage() == Stage::Called && c.last().result.contact);
+      const double flight_end = duration(c.last().result.shot.trajectory);
+      const double t = c.stage() == Stage::Pitching ? std::min(c.pitch_clock(in.now), c.pitch().flight_time)
+                       : batted ? (c.stage() == Stage::Batted ? std::clamp(in.now - c.batted_at(), 0.0, flight_end) : flight_end)
+                                : c.pitch().flight_time;
+      const Camera cam = batted ? scene_->camera(CameraKind::Behind, t, w, h) : batter_view();
+      renderer.draw(scene_->build(cam, t, w, h), cam);
+      renderer.blit_to(0, w, h);
+      if (!batted) draw_zone(c, cam, w, h);
+    }
+    draw_stats(c, w, h);
+    if (!c.call_text().empty()) {
+      ImDrawList* dl = ImGui::GetForegroundDrawList();
+      const ImVec2 pos(0.5f * static_cast<float>(w) - 160.0f, 60.0f);
+      dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + 330, pos.y + 24), IM_COL32(0, 0, 0, 170), 4.0f);
+      dl->AddText(pos, IM_COL32(255, 230, 120, 255), c.call_text().c_str());
+    }
+    if (options_.pitches > 0 && static_cast<int>(c.swings().size()) >= options_.pitches && c.stage() == Stage::Called)
+      ++done_frames_;
+  }
+
+ private:
+  std::unique_ptr<BattingCage> cage_;
+  CageViewOptions options_;
+  std::unique_ptr<ShotScene> scene_;
+  int done_frames_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<ModeView> make_cage_view(const Assets& assets, std::unique_ptr<BattingCage> model, const CageViewOptions& o) {
+  return std::make_unique<CageView>(assets, std::move(model), o);
+}
+
+}  // namespace sweetspot

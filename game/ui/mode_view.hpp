@@ -1,0 +1,49 @@
+// A game mode's view (DESIGN §1): it draws its model with the renderer and Dear ImGui and
+// turns the frame's key presses into intents for the model; it never changes the model any
+// other way and never runs physics. The app's one loop calls the active view once a frame
+// and keeps the others, with their models, as they were.
+#pragma once
+
+#include <ostream>
+#include <vector>
+
+#include "game/modes/intent.hpp"
+
+namespace sweetspot {
+
+class Renderer;
+
+/// A key that went down: its GLFW key code and when (s, on the clock the view is given).
+struct KeyPress {
+  int key = 0;
+  double time = 0.0;
+};
+
+struct ViewInput {
+  double now = 0.0;              ///< s on the mode's clock (stops while paused or in another mode)
+  double dt = 0.0;               ///< s since this view's last frame, on that clock
+  int width = 0, height = 0;     ///< px, the window's framebuffer
+  std::vector<KeyPress> keys;    ///< on the mode's clock, in order (Tab and Esc are the app's)
+  double orbit_dx = 0.0, orbit_dy = 0.0;  ///< px dragged with the left button
+  double zoom = 0.0;             ///< scroll wheel clicks, + = in
+};
+
+class ModeView {
+ public:
+  virtual ~ModeView() = default;
+  /// The mode's name for the pause menu ("Lab", "Golf", "Batting cage").
+  virtual const char* title() const = 0;
+  /// One frame: the keys become intents, the model is updated to `in.now`, the scene is
+  /// drawn into the window's default framebuffer and the HUD into the ImGui frame.
+  virtual void frame(const ViewInput& in, Renderer& renderer) = 0;
+  /// An intent from the app (Esc's Cancel, the pause menu's Restart), applied at once.
+  virtual void send(const Intent& intent) = 0;
+  /// What the pause menu's restart does here ("Restart hole").
+  virtual const char* restart_label() const { return "Restart"; }
+  /// True once an automated run (--exit-when-done) has seen what it came for.
+  virtual bool done() const { return false; }
+  /// What the mode prints when the window closes (the swings of a batting session).
+  virtual void report(std::ostream& /*out*/) const {}
+};
+
+}  // namespace sweetspot

@@ -1,0 +1,59 @@
+// The batting cage's model driven by timestamped intents: a swing is timed from its key
+// press against the pitch's arrival, whatever the frame rate.
+#include <catch2/catch.hpp>
+
+#include "game/modes/baseball/cage.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+Intent at(IntentKind k, double t) {
+  Intent in;
+  in.kind = k;
+  in.time = t;
+  return in;
+}
+}  // namespace
+
+TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any frame rate", "[modes][baseball]") {
+  for (const double dt : {0.016, 0.033, 0.066}) {
+    for (const double late_ms : {0.0, 8.0, -20.0}) {
+      CAPTURE(dt, late_ms);
+      BattingCage cage(test::assets());
+      cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
+      REQUIRE(cage.stage() == BattingCage::Stage::Pitching);
+      // The pitch plays slowed: it arrives kPitchTimeScale-stretched after release.
+      const double arrive = 1.0 + cage.pitch().flight_time / BattingCage::kPitchTimeScale;
+      const double key = arrive + late_ms / 1000.0 * (1.0 / BattingCage::kPitchTimeScale);
+      double now = 1.0;
+      bool sent = false;
+      while (cage.stage() == BattingCage::Stage::Pitching) {
+        now += dt;
+        Intents frame;
+        if (!sent && key <= now) {
+          frame.push_back(at(IntentKind::Swing, key));
+          sent = true;
+        }
+        cage.update(frame, now);
+      }
+      REQUIRE(cage.swings().size() == 1);
+      CHECK(cage.swings().back().timing_ms == Approx(late_ms).margin(1e-6));
+    }
+  }
+}
+
+TEST_CASE("a pitch left alone is called; the pro swings on request; restart clears the session", "[modes][baseball]") {
+  BattingCage cage(test::assets());
+  cage.update({at(IntentKind::Pitch, 0.5)}, 0.5);
+  cage.update({}, 0.5 + (cage.pitch().flight_time + BattingCage::kTakenAfter) / BattingCage::kPitchTimeScale + 0.01);
+  CHECK(cage.stage() == BattingCage::Stage::Called);
+  CHECK((cage.call_text() == "ball" || cage.call_text() == "called strike"));
+  CHECK(cage.swings().empty());
+  cage.update({at(IntentKind::Swing, 5.0), at(IntentKind::BotSwings, 5.2)}, 5.3);  // Space: the next pitch
+  REQUIRE(cage.swings().size() == 1);
+  CHECK(cage.swings().back().result.contact);
+  cage.update({at(IntentKind::Restart, 6.0)}, 6.0);
+  CHECK(cage.swings().empty());
+  CHECK(cage.stage() == BattingCage::Stage::Ready);
+}

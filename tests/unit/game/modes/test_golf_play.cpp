@@ -1,0 +1,152 @@
+// The golf game's model driven by scripted, timestamped intents, as the window's keys drive
+// it: the meter judged from each key's own time at any frame rate, Esc, a hole to the cup,
+// a restarted hole.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "game/content/course_file.hpp"
+#include "game/modes/golf/golf_play.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+Course first_hole(int holes = 1) {
+  Course c = load_course(test::assets(), "links");
+  c.holes.resize(static_cast<std::size_t>(holes));
+  return c;
+}
+
+Intent at(IntentKind k, double t) {
+  Intent in;
+  in.kind = k;
+  in.time = t;
+  return in;
+}
+
+// Frames every `dt` s, as the window runs them: each frame hands the model the intents whose
+// key went down since the last frame (their own times), then its own time.
+struct FrameDriver {
+  GolfPlay& play;
+  double dt;
+  double now = 0.0;
+  void until(double t, Intents pending) {
+    while (now < t) {
+      now += dt;
+      Intents frame;
+      for (auto it = pending.begin(); it != pending.end();) {
+        if (it->time <= now) {
+          frame.push_back(*it);
+          it = pending.erase(it);
+        } else {
+          ++it;
+        }
+      }
+      play.update(frame, now);
+    }
+  }
+};
+
+}  // namespace
+
+TEST_CASE("a meter click's error is the key press time minus the mark, at 16, 33 and 66 ms frames", "[modes][golf]") {
+  const GolferSkill& skill = golfer_skill("scratch");
+  for (const double dt : {0.016, 0.033, 0.066}) {
+    for (const double late_ms : {0.0, 7.0, -12.0}) {
+      CAPTURE(dt, late_ms);
+      GolfPlay play(test::assets(), first_hole(), skill);
+      FrameDriver f{play, dt};
+      // Start at an odd time, the power click 0.737 s later: neither on a frame boundary.
+      const double start = 0.1003, top = start + 0.737;
+      f.until(top + dt, {at(IntentKind::Swing, start), at(IntentKind::Swing, top)});
+      REQUIRE(play.stage() == GolfPlay::Stage::Swinging);
+      REQUIRE(play.meter()->phase() == MeterClock::Phase::Downswing);
+      const double mark = play.meter()->mark_time();
+      f.until(mark + 0.3, {at(IntentKind::Swing, mark + late_ms / 1000.0)});
+      REQUIRE(play.last_meter());
+      CHECK(play.last_meter()->accuracy_ms == Approx(late_ms).margin(1.0));
+      // The power is the marker's height at the second key press, not at a frame.
+      const double tempo = MeterClock::tempo_for(test::assets().equipment().club(play.club()).length, false);
+      CHECK(play.last_meter()->power == Approx(0.737 / tempo).margin(1e-9));
+      CHECK(play.round().card().back().strokes == 1);
+    }
+  }
+}
+
+TEST_CASE("Esc cancels a swing in progress and no stroke is counted", "[modes][golf]") {
+  GolfPlay play(test::assets(), first_hole(), golfer_skill("scratch"));
+  play.update({at(IntentKind::Swing, 1.0)}, 1.2);
+  REQUIRE(play.stage() == GolfPlay::Stage::Swinging);
+  play.update({at(IntentKind::Cancel, 1.3)}, 1.4);
+  CHECK(play.stage() == GolfPlay::Stage::Aiming);
+  CHECK(play.cancelled() == 1);
+  CHECK(play.round().card().back().strokes == 0);
+  CHECK(play.round().card().back().shots.empty());
+  // Left alone long after, nothing finishes itself: the meter is gone.
+  play.update({}, 10.0);
+  CHECK(play.round().card().back().strokes == 0);
+  // A swing after it counts as the first stroke.
+  play.update({at(IntentKind::Swing, 11.0), at(IntentKind::Swing, 11.8), at(IntentKind::Swing, 12.3)}, 12.4);
+  CHECK(play.round().card().back().strokes == 1);
+}
+
+TEST_CASE("a hole played through intents: the caddie's strokes, putts with two clicks, the card adds up", "[modes][golf]") {
+  GolfPlay play(test::assets(), first_hole(), golfer_skill("tour"));
+  double t = 0.0;
+  int played = 0, putted_by_hand = 0;
+  while (play.stage() != GolfPlay::Stage::RoundOver && played < 12) {
+    t += 1.0;
+    if (play.stage() == GolfPlay::Stage::Aiming && play.round().lie() == "green") {
+      // A putt by hand: two clicks, power where the second lands.
+      REQUIRE(play.club() == "putter");
+      play.update({at(IntentKind::Swing, t), at(IntentKind::Swing, t + 0.35)}, t + 0.4);
+      ++putted_by_hand;
+    } else {
+      play.update({at(IntentKind::CaddiePlays, t)}, t);
+    }
+    ++played;
+    REQUIRE(play.stage() != GolfPlay::Stage::Swinging);
+    t += 0.5;
+    play.update({at(IntentKind::Continue, t)}, t);  // Enter: skip the flight
+  }
+  REQUIRE(play.stage() == GolfPlay::Stage::RoundOver);
+  // An Enter at once keeps the final card (it was meant for the flight); a later one starts anew.
+  play.update({at(IntentKind::Continue, t + 0.1)}, t + 0.1);
+  CHECK(play.stage() == GolfPlay::Stage::RoundOver);
+  const HoleCard& card = play.round().card().front();
+  CHECK(static_cast<int>(card.shots.size()) == played);
+  CHECK(card.strokes == played + card.penalties);
+  int on_green = 0;
+  for (const StrokeRecord& s : card.shots) on_green += s.lie == "green";
+  CHECK(card.putts == on_green);
+  CHECK(putted_by_hand == card.putts);
+  CHECK((card.holed || card.strokes >= GolfRound::kPickUp));
+  CHECK(play.opponent_strokes().size() == 1);
+}
+
+TEST_CASE("restarting a hole puts the round back where the hole began", "[modes][golf]") {
+  GolfPlay play(test::assets(), first_hole(2), golfer_skill("tour"));
+  double t = 0.0;
+  // Play hole 1 out with the caddie.
+  while (play.round().hole_index() == 0) {
+    t += 1.0;
+    play.update({at(IntentKind::CaddiePlays, t), at(IntentKind::Continue, t + 0.1)}, t + 0.2);
+    play.update({at(IntentKind::Continue, t + 0.3)}, t + 0.4);
+  }
+  const int hole1 = play.round().card().front().strokes;
+  const Vec3 tee = play.round().ball();
+  t += 1.0;
+  play.update({at(IntentKind::Continue, t)}, t);  // past the scorecard
+  REQUIRE(play.stage() == GolfPlay::Stage::Aiming);
+  t += 1.0;
+  play.update({at(IntentKind::CaddiePlays, t), at(IntentKind::Continue, t + 0.1)}, t + 0.2);
+  REQUIRE(play.round().card().back().strokes >= 1);
+  play.update({at(IntentKind::Restart, t + 0.5)}, t + 0.6);
+  CHECK(play.round().hole_index() == 1);
+  CHECK(play.round().card().back().strokes == 0);
+  CHECK(play.round().card().front().strokes == hole1);
+  CHECK((play.round().ball() - tee).norm() == 0.0);
+  CHECK(play.stage() == GolfPlay::Stage::Aiming);
+}

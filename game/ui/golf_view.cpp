@@ -84,6 +84,11 @@ class GolfView final : public ModeView {
   bool done() const override { return options_.exit_when_done && done_frames_ >= 10; }
   void send(const Intent& in) override { play_->update({in}, in.time); }
   void frame(const ViewInput& in, Renderer& renderer) override;
+  void report(std::ostream& out) const override {
+    const GolfRound& r = play_->round();
+    out << "golf: hole " << std::min(r.hole_index() + 1, r.course().holes.size()) << " of " << r.course().holes.size() << ", "
+        << r.total_strokes() << " strokes, " << play_->cancelled() << " swings cancelled, " << to_string(play_->stage()) << "\n";
+  }
 
  private:
   void ensure_scene();

@@ -307,25 +307,30 @@ const std::vector<ExpectSpec>& impact_case_expectations() {
   return v;
 }
 
-double si_to_unit(double si, std::string_view unit, Dimension dim) {
-  if (unit.empty()) return si;
-  // The units table is affine (SI = x*scale + offset); invert it from two probes.
+namespace {
+// The units table is affine (SI = x·scale + offset); read both from two probes of the parser.
+struct UnitAffine {
+  double scale = 1.0, offset = 0.0;
+};
+UnitAffine unit_affine(std::string_view unit, Dimension dim) {
   std::string probe = "0 ";
   probe.append(unit.data(), unit.size());
   const double offset = parse_quantity(probe, dim);
   probe[0] = '1';
-  const double scale = parse_quantity(probe, dim) - offset;
-  return (si - offset) / scale;
+  return {parse_quantity(probe, dim) - offset, offset};
+}
+}  // namespace
+
+double si_to_unit(double si, std::string_view unit, Dimension dim) {
+  if (unit.empty()) return si;
+  const UnitAffine a = unit_affine(unit, dim);
+  return (si - a.offset) / a.scale;
 }
 
 double unit_to_si(double value, std::string_view unit, Dimension dim) {
   if (unit.empty()) return value;
-  std::string probe = "0 ";
-  probe.append(unit.data(), unit.size());
-  const double offset = parse_quantity(probe, dim);
-  probe[0] = '1';
-  const double scale = parse_quantity(probe, dim) - offset;
-  return value * scale + offset;
+  const UnitAffine a = unit_affine(unit, dim);
+  return value * a.scale + a.offset;
 }
 
 std::string format_quantity(double si, std::string_view unit, Dimension dim, int digits) {

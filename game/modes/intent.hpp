@@ -5,6 +5,7 @@
 // so a meter click is judged to the millisecond at any frame rate.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,19 @@ struct Intent {
 };
 
 using Intents = std::vector<Intent>;
+
+/// The one way a model takes a frame's intents: in time order (a stable sort keeps the order
+/// of two at the same time), the model advanced to each one's time before it is applied,
+/// then to `now`.
+template <class Advance, class Apply>
+void apply_in_time_order(const Intents& intents, double now, Advance&& advance, Apply&& apply) {
+  Intents ordered = intents;
+  std::stable_sort(ordered.begin(), ordered.end(), [](const Intent& a, const Intent& b) { return a.time < b.time; });
+  for (const Intent& in : ordered) {
+    advance(in.time);
+    apply(in);
+  }
+  advance(now);
+}
 
 }  // namespace sweetspot

@@ -15,25 +15,13 @@
 namespace sweetspot {
 
 Intents cage_intents(const std::vector<KeyPress>& keys) {
-  Intents out;
-  for (const KeyPress& k : keys) {
-    IntentKind kind;
-    switch (k.key) {
-      case GLFW_KEY_SPACE: kind = IntentKind::Swing; break;
-      case GLFW_KEY_P: kind = IntentKind::Pitch; break;
-      case GLFW_KEY_UP: kind = IntentKind::BatUp; break;
-      case GLFW_KEY_DOWN: kind = IntentKind::BatDown; break;
-      case GLFW_KEY_C: kind = IntentKind::TogglePower; break;
-      case GLFW_KEY_L: kind = IntentKind::ToggleSide; break;
-      case GLFW_KEY_B: kind = IntentKind::BotSwings; break;
-      default: continue;
-    }
-    Intent in;
-    in.kind = kind;
-    in.time = k.time;
-    out.push_back(in);
-  }
-  return out;
+  return intents_from_keys(keys, {{GLFW_KEY_SPACE, IntentKind::Swing},
+                                  {GLFW_KEY_P, IntentKind::Pitch},
+                                  {GLFW_KEY_UP, IntentKind::BatUp},
+                                  {GLFW_KEY_DOWN, IntentKind::BatDown},
+                                  {GLFW_KEY_C, IntentKind::TogglePower},
+                                  {GLFW_KEY_L, IntentKind::ToggleSide},
+                                  {GLFW_KEY_B, IntentKind::BotSwings}});
 }
 
 namespace {

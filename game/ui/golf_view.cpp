@@ -17,27 +17,15 @@
 namespace sweetspot {
 
 Intents golf_intents(const std::vector<KeyPress>& keys) {
-  Intents out;
-  for (const KeyPress& k : keys) {
-    IntentKind kind;
-    switch (k.key) {
-      case GLFW_KEY_SPACE: kind = IntentKind::Swing; break;
-      case GLFW_KEY_LEFT: kind = IntentKind::AimLeft; break;
-      case GLFW_KEY_RIGHT: kind = IntentKind::AimRight; break;
-      case GLFW_KEY_UP: kind = IntentKind::ClubUp; break;
-      case GLFW_KEY_DOWN: kind = IntentKind::ClubDown; break;
-      case GLFW_KEY_C: kind = IntentKind::CaddieClub; break;
-      case GLFW_KEY_B: kind = IntentKind::CaddiePlays; break;
-      case GLFW_KEY_ENTER:
-      case GLFW_KEY_KP_ENTER: kind = IntentKind::Continue; break;
-      default: continue;
-    }
-    Intent in;
-    in.kind = kind;
-    in.time = k.time;
-    out.push_back(in);
-  }
-  return out;
+  return intents_from_keys(keys, {{GLFW_KEY_SPACE, IntentKind::Swing},
+                                  {GLFW_KEY_LEFT, IntentKind::AimLeft},
+                                  {GLFW_KEY_RIGHT, IntentKind::AimRight},
+                                  {GLFW_KEY_UP, IntentKind::ClubUp},
+                                  {GLFW_KEY_DOWN, IntentKind::ClubDown},
+                                  {GLFW_KEY_C, IntentKind::CaddieClub},
+                                  {GLFW_KEY_B, IntentKind::CaddiePlays},
+                                  {GLFW_KEY_ENTER, IntentKind::Continue},
+                                  {GLFW_KEY_KP_ENTER, IntentKind::Continue}});
 }
 
 namespace {
@@ -106,7 +94,7 @@ class GolfView final : public ModeView {
   std::size_t scene_hole_ = 99;
   std::string scene_mesh_;
   bool scene_tee_ = false;
-  int shown_serial_ = -1;          // the stroke whose flight the scene holds
+  bool flight_shown_ = false;      // the scene holds the last stroke's flight
   std::size_t slopes_for_ = 99;    // card size the slopes were read for
   Vec3 slopes_ball_ = Vec3::Zero();
   std::vector<SlopeArrow> slopes_;
@@ -288,7 +276,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     scene_->set_shot(resting(play_->ball_centre()), std::nullopt);
     // The 50 yd lines run from the ball along the player's aim: the aiming aid.
     scene_->set_aim(play_->aim_direction());
-    shown_serial_ = -1;
+    flight_shown_ = false;
     const bool green = r.lie() == "green";
     if (green && (slopes_for_ != r.card().size() || slopes_ball_ != r.ball())) {
       slopes_ = green_slopes(*r.hole().world, r.ball(), r.hole().pin);
@@ -299,9 +287,9 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     }
   } else if (scene_) {
     scene_->set_aim(std::nullopt);  // the shot's own line from where it was hit
-    if (shown_serial_ != 1) {
+    if (!flight_shown_) {
       scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
-      shown_serial_ = 1;
+      flight_shown_ = true;
     }
   }
   const double end = duration(play_->last_shot().trajectory);

@@ -4,7 +4,9 @@
 // and keeps the others, with their models, as they were.
 #pragma once
 
+#include <initializer_list>
 #include <ostream>
+#include <utility>
 #include <vector>
 
 #include "game/modes/intent.hpp"
@@ -18,6 +20,22 @@ struct KeyPress {
   int key = 0;
   double time = 0.0;
 };
+
+/// The keys a view knows, each turned into its intent at the key's own time; other keys are
+/// left out. `bindings`: (GLFW key code, intent) pairs.
+inline Intents intents_from_keys(const std::vector<KeyPress>& keys,
+                                 std::initializer_list<std::pair<int, IntentKind>> bindings) {
+  Intents out;
+  for (const KeyPress& k : keys)
+    for (const auto& [key, kind] : bindings)
+      if (k.key == key) {
+        Intent in;
+        in.kind = kind;
+        in.time = k.time;
+        out.push_back(in);
+      }
+  return out;
+}
 
 struct ViewInput {
   double now = 0.0;              ///< s on the mode's clock (stops while paused or in another mode)

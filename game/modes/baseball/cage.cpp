@@ -15,13 +15,7 @@ BattingCage::BattingCage(const Assets& assets, std::uint64_t seed)
 }
 
 void BattingCage::update(const Intents& intents, double now) {
-  Intents ordered = intents;
-  std::stable_sort(ordered.begin(), ordered.end(), [](const Intent& a, const Intent& b) { return a.time < b.time; });
-  for (const Intent& in : ordered) {
-    advance(in.time);
-    apply(in);
-  }
-  advance(now);
+  apply_in_time_order(intents, now, [this](double t) { advance(t); }, [this](const Intent& in) { apply(in); });
 }
 
 void BattingCage::advance(double t) {

@@ -68,13 +68,7 @@ void GolfPlay::choose_club() {
 }
 
 void GolfPlay::update(const Intents& intents, double now) {
-  Intents ordered = intents;
-  std::stable_sort(ordered.begin(), ordered.end(), [](const Intent& a, const Intent& b) { return a.time < b.time; });
-  for (const Intent& in : ordered) {
-    advance(in.time);
-    apply(in);
-  }
-  advance(now);
+  apply_in_time_order(intents, now, [this](double t) { advance(t); }, [this](const Intent& in) { apply(in); });
 }
 
 void GolfPlay::advance(double t) {

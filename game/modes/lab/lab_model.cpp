@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <variant>
 
 #include "game/content/scenario_schema.hpp"
@@ -41,10 +42,20 @@ constexpr LabParamInfo kParams[] = {
     {LabParam::WindDirection, "environment.wind_direction", kAnyStrike, 0},
 };
 
+constexpr bool params_in_enum_order() {
+  for (int i = 0; i < static_cast<int>(std::size(kParams)); ++i)
+    if (static_cast<int>(kParams[i].param) != i) return false;
+  return std::size(kParams) == static_cast<std::size_t>(LabParam::WindDirection) + 1;
+}
+static_assert(params_in_enum_order(), "kParams is indexed by LabParam");
+
+// The scenario key each LabChoice is saved under, indexed by it (Scenario and Sport load anew).
 constexpr std::string_view kChoiceKeys[] = {"", "", "club.name", "bat.name", "impact.model", "impact.friction", "aero.model"};
 
 // The field an edit sets; nullptr when the shot has no such field (a bat key on a club shot).
-double* field(ShotSpec& s, LabParam p) {
+// Spec is ShotSpec or const ShotSpec.
+template <class Spec>
+auto field(Spec& s, LabParam p) -> decltype(&s.environment.temperature) {
   auto* club = std::get_if<ClubStrike>(&s.strike);
   auto* bat = std::get_if<BatStrike>(&s.strike);
   switch (p) {
@@ -131,10 +142,9 @@ bool LabModel::run(const ShotSpec& spec) {
   }
 }
 
-void LabModel::update(const Intents& intents, double /*now*/) {
-  Intents ordered = intents;
-  std::stable_sort(ordered.begin(), ordered.end(), [](const Intent& a, const Intent& b) { return a.time < b.time; });
-  for (const Intent& in : ordered) apply(in);
+void LabModel::update(const Intents& intents, double now) {
+  // The Lab has no clock of its own: nothing happens between intents.
+  apply_in_time_order(intents, now, [](double) {}, [this](const Intent& in) { apply(in); });
 }
 
 double LabModel::value(LabParam p) const {
@@ -152,8 +162,7 @@ double LabModel::value(LabParam p) const {
       return std::isnan(v) && resolved_.club ? resolved_.club->strike_height : v;
     }
     default: {
-      ShotSpec copy = s;
-      const double* f = field(copy, p);
+      const double* f = field(s, p);
       return f ? *f : 0.0;
     }
   }

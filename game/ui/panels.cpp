@@ -233,10 +233,13 @@ bool tuning_section(PanelContext& c) {
   const ImpactSummary& im = s.result().impact;
   const ImpactMaterial& mat = s.resolved().material;
   changed |= slider(c, LabParam::E, "e", "%.3f");
-  if (s.e_replaces_law())
-    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "e is a constant here: it replaces the equipment's speed-dependent COR");
-  else if (mat.e.count > 1)
-    ImGui::TextDisabled("e at this impact speed, from the equipment's COR law");
+  if (s.e_replaces_law()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    ImGui::TextWrapped("e is constant: it replaces the equipment's speed-dependent COR");
+    ImGui::PopStyleColor();
+  } else if (mat.e.count > 1) {
+    ImGui::TextDisabled("e: the COR law at this impact speed");
+  }
   int impact_model = static_cast<int>(mat.model);
   const char* impact_models[] = {"compliant", "rigid"};
   if (ImGui::Combo("impact", &impact_model, impact_models, 2)) {

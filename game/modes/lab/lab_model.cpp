@@ -114,8 +114,15 @@ void LabModel::load(const std::string& scenario, const std::vector<std::string>&
   result_ = std::move(res);
   edited_.clear();
   chosen_.clear();
-  e_replaces_law_ = false;
+  e_replaces_law_ = e_over_law(scenario_.spec);
   ++serial_;
+}
+
+bool LabModel::e_over_law(const ShotSpec& spec) const {
+  if (!spec.impact.e) return false;
+  ShotSpec own = spec;
+  own.impact.e.reset();
+  return resolve(own, assets_).material.e.count > 1;
 }
 
 bool LabModel::run(const ShotSpec& spec) {
@@ -124,12 +131,7 @@ bool LabModel::run(const ShotSpec& spec) {
     ShotResult res = run_shot(r, scenario_.name);
     // The Tuning panel says whether moving µ can change this launch (~1 ms of launches).
     if (res.impact.present) res.impact.mu_grip = mu_grip(r);
-    bool law = false;
-    if (spec.impact.e) {
-      ShotSpec own = spec;
-      own.impact.e.reset();
-      law = resolve(own, assets_).material.e.count > 1;
-    }
+    const bool law = e_over_law(spec);
     resolved_ = std::move(r);
     result_ = std::move(res);
     e_replaces_law_ = law;

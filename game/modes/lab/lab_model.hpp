@@ -65,6 +65,8 @@ class LabModel {
  private:
   void apply(const Intent& in);
   bool run(const ShotSpec& spec);
+  /// True when `spec` sets a constant e and its equipment's own e depends on speed.
+  bool e_over_law(const ShotSpec& spec) const;
   void load(const std::string& scenario, const std::vector<std::string>& overrides);
   std::vector<std::string> edit_overrides() const;
 

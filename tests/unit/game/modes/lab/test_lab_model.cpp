@@ -77,6 +77,8 @@ TEST_CASE("a constant e over the ball's speed-dependent COR is said", "[lab]") {
   CHECK(lab.e_replaces_law());
   REQUIRE(lab.resolved().material.e.count == 1);
   CHECK(lab.resolved().material.e.cor[0] == 0.75);
+  // Started with the constant already set (--set, or a scenario file), it is said too.
+  CHECK(LabModel(test::assets(), "golf/driver", {"impact.e=0.75"}).e_replaces_law());
 }
 
 TEST_CASE("Save writes the edited shot as a scenario that loads back to the same launch", "[lab]") {

@@ -60,12 +60,12 @@ std::string validate_aero_model(const AeroModel& m) {
   if (m.lift == LiftLaw::Saturating && !(m.l0 > 0.0 && m.l2 >= 0.0))
     return who + "a saturating lift law needs l0 > 0 and l2 >= 0 (no pole at positive S)";
   // Spin decay faster than e-fold in 0.1 s or within 1 m of flight is no ball's (a golf
-  // ball's is ~20-30 s); a hostile file's 1e-300 s made the integrator's steps vanish.
+  // ball's is ~20-30 s); a hostile file's 1e-300 s makes the integrator's steps vanish.
   if (m.decay_tau > 0.0 && m.decay_tau < 0.1) return who + "decay_tau must be 0 (none) or at least 0.1 s";
   if (m.decay_per_metre > 1.0) return who + "decay_per_metre must be at most 1 per m";
   // Drag must stay positive over the fitted range, or the ball would be pushed forward; and
   // bounded: a sphere's Cd is ~0.1-0.6 and its Cl under 0.6 in any regime a ball flies in,
-  // so a coefficient past 2 is a typo (a hostile drag = [1e300, ...] sent the state to inf).
+  // so a coefficient past 2 is a typo (a hostile drag = [1e300, ...] sends the state to inf).
   // Checked at every Reynolds number a ball meets, from rest to a 98 m/s drive or a 55 m/s
   // liner into a 60 m/s wind (~6e5), through the crisis, and at no spin and at the launch
   // limit's 20 000 rpm (the Nathan drag term grows with spin): a negative d0 hides behind the

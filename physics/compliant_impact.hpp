@@ -1,4 +1,4 @@
-// An impact with duration (DESIGN §3, issue 15): two rigid bodies, the impactor (club head
+// An impact with duration (DESIGN §3): two rigid bodies, the impactor (club head
 // or bat) and the ball, pressed together through the ball's compliant contact layer for
 // the ~0.4–0.7 ms the ball is on the face, integrated in time. While the ball is on the
 // face the head turns and the contact point and normal move with it, so gear effect, the

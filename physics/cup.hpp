@@ -1,4 +1,4 @@
-// The hole on a green (DESIGN §5, issue 15): where a rolling ball drops, lips out, or meets
+// The hole on a green (DESIGN §5): where a rolling ball drops, lips out, or meets
 // the flagstick. Geometry and mechanics only; holing out as a score is the game's rule.
 //
 // Capture (Holmes, "Putting: how a golf ball and hole interact", Am. J. Phys. 59, 1991):

@@ -20,7 +20,7 @@ struct GolfSwing {
   double club_speed = 50.5;    ///< m/s of the face centre; tour driver 113 mph = 50.5 m/s, a 3 m putt ~1.5 m/s
   /// From a tap-in putt to beyond the long-drive record (~68 m/s, 152 mph). The floor: a
   /// putter head at 0.1 m/s starts the ball at ~0.15 m/s, which rolls ~2 cm on a stimp-10
-  /// green; slower is no stroke (and 1e-300 m/s made the smash factor infinite).
+  /// green; slower is no stroke (and 1e-300 m/s makes the smash factor infinite).
   static constexpr Range kClubSpeed{0.1, 90.0};
   double attack_angle = 0;     ///< rad, + up; tour driver -1.3°, 7-iron -4.3°, putter ~+2°
   static constexpr Range kAttackAngle{deg_to_rad(-30.0), deg_to_rad(30.0)};
@@ -45,7 +45,7 @@ struct GolfSwing {
 struct BatSwing {
   double bat_speed = 31.3;     ///< m/s at the sweet spot (70 mph, Statcast average)
   /// Statcast's fastest swings ~90 mph (40 m/s); the floor is a bunt's bat barely moving
-  /// (0.5 m/s: slower is no swing, and denormal speeds made the smash factor infinite).
+  /// (0.5 m/s: slower is no swing, and denormal speeds make the smash factor infinite).
   static constexpr Range kBatSpeed{0.5, 60.0};
   double attack_angle = 0.15;  ///< rad, + up: tilt of the swing plane (velocity of the sweet spot)
   static constexpr Range kAttackAngle{deg_to_rad(-45.0), deg_to_rad(60.0)};

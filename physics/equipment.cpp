@@ -66,7 +66,7 @@ void validate_ball(const BallSpec& b) {
   check_range(who + ": compliance.stiffness", b.compliance.stiffness, BallCompliance::kStiffness, "N/m^1.5");
   // Hertz contact time t ≈ 2.87 (m²/(k² v))^{1/5}: for a 46 g ball at 1 m/s (a putt) it
   // stays under ~8 ms only for k ≥ 1e5 N/m^1.5; a softer "ball" never leaves the face
-  // within the solver's window and launches at 0 (a hostile balls.toml, issue 20).
+  // within the solver's window and launches at 0 (a hostile balls.toml).
   if (b.compliance.stiffness != 0.0 && b.compliance.stiffness < BallCompliance::kMinStiffness)
     throw InputError(who + ": compliance.stiffness = " + std::to_string(b.compliance.stiffness) +
                      " N/m^1.5 is too soft (allowed: 0 for a rigid ball, or at least 1e5; a golf ball is ~2e7)");

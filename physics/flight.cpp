@@ -74,10 +74,10 @@ namespace {
 
 /// The invariant under every step: the ball's centre never passes through a surface from its
 /// front. The air step sweeps the whole ball and the roll, skid and crease steps look ahead
-/// for the faces they may meet, yet random worlds have still found corners of V-shaped
-/// ditches and creases where a step ended with the centre under a third face (a hop off one
-/// face of a corner onto another), after which the ball fell out of the world (issue 20's
-/// soak: 1–2 in 20 000 shots). So the centre's path over the step is swept as a
+/// for the faces they may meet, yet random worlds have corners of V-shaped ditches and
+/// creases where a step ends with the centre under a third face (a hop off one face of a
+/// corner onto another), after which the ball would fall out of the world (1–2 in 20 000
+/// shots of the random-world soak). So the centre's path over the step is swept as a
 /// point (the sweep skips faces it leaves or runs along, so only a front-to-back crossing
 /// counts), and a crossing is undone: the ball is put back on the face's front where its
 /// centre met it and strikes that face (bounce, or roll on). A ball dropped into the cup
@@ -98,7 +98,7 @@ void keep_centre_above_ground(const ShotModel& m, ShotState& s, const Vec3& from
   // An air step that ended at a touch ended its arc with the velocity it touched with, not
   // the bounce's: a hop that leaves at 0.9 m/s up and bounces off again at 0.7 m/s up has
   // swung through 1.8 m/s, not 0.2 (judged by the velocity after the bounce, every short hop
-  // was swept again here, ~1 200 instructions each; issue 22).
+  // would be swept again here, ~1 200 instructions each).
   const bool touched = ev.kind == ShotEventKind::Landing || ev.kind == ShotEventKind::Bounce;
   const Vec3 v_end = touched ? ev.velocity_in : s.velocity();
   if (airborne && (v_end - v_from).norm() * dt / 8.0 > 0.25 * m.ball.radius) return;
@@ -138,13 +138,13 @@ ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   };
   // Held: a ball passed between a touch, a roll and the air at one instant, over and over,
   // makes no progress (a knife-edge crease or a corner of steep faces that each send it to
-  // the other: random-world soak findings that spun to the step limit). The faces hold it,
+  // the other, which would spin to the step limit). The faces hold it,
   // so it is at rest there, as a rigid-body engine puts a body to sleep once its motion
   // stops (Box2D, Jolt). 64 instants: a real touch-and-roll takes a handful.
   // A step shorter than 0.1 µs is no progress (the integrator's smallest useful step at a
   // touch is ~1e-6 s; a loop that advances by round-off counts as held: a ball skidding
-  // off one face of a steep pit and touching it again 2e-8 s later, 2 500 times, in a
-  // random-world soak finding, seed 16 world 2227).
+  // off one face of a steep pit and touching it again 2e-8 s later, 2 500 times, in the
+  // random-world soak).
   constexpr int kStalledSteps = 64;
   constexpr double kNoProgress = 1e-7;  // s
   state.stalled = state.t > t0 + kNoProgress ? 0 : state.stalled + 1;
@@ -153,10 +153,10 @@ ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   // as a rigid-body engine puts a body to sleep (Box2D: linear sleep tolerance 1 cm/s, time
   // to sleep 0.5 s). A slope too steep to hold a ball still speeds it past rest_speed well
   // within that time unless its pull exceeds the turf's resistance by under rest_speed/0.5 s
-  // = 0.04 m/s² (a few hundredths of a degree of slope), and such a ball crept for the whole
-  // 300 s at 6-16 mm/s (a random-world soak finding, seed 15 world 2846). Faces that each
-  // cannot hold a ball alone can between them: at a pit where several facets meet, a ball
-  // shuffled from one to the next at 0.1 mm/s (a faceted bowl's bottom, test_roll_step.cpp).
+  // = 0.04 m/s² (a few hundredths of a degree of slope), and such a ball would creep for the
+  // whole 300 s at 6-16 mm/s (random-world soak). Faces that each cannot hold a ball alone
+  // can between them: at a pit where several facets meet, a ball shuffles from one to the
+  // next at 0.1 mm/s (a faceted bowl's bottom, test_roll_step.cpp).
   constexpr double kTimeToSleep = 0.5;  // s
   const double rest_speed = model.settings.rest_speed;
   if (!state.ended && state.phase == Phase::Roll && state.velocity().squaredNorm() < rest_speed * rest_speed) {

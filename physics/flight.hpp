@@ -33,11 +33,11 @@
 namespace sweetspot {
 
 /// Integration and termination settings. The defaults aim at what a player sees, not at
-/// round-off (issue 22): carry within 4 mm of a 1e-13 reference, and the rest position
+/// round-off: carry within 4 mm of a 1e-13 reference, and the rest position
 /// within 1 cm for every launch of a 1 000-launch random sample on golf_hole (worst 5.5 mm)
 /// and for the tour launches (tests/unit/physics/test_flight_accuracy.cpp). With the carry's
 /// steps ended at the aero law's kinks (air_step.cpp), rel_tol 4e-6 carries that sample
-/// within 1.7 mm (95th percentile 0.8 mm); 1e-6 with a kink inside a step gave 3.5 mm.
+/// within 1.7 mm (95th percentile 0.8 mm); 1e-6 with a kink inside a step gives 3.5 mm.
 struct FlightSettings {
   double rel_tol = 4e-6;         ///< integrator relative tolerance per step (the carry)
   static constexpr Range kRelTol{1e-14, 1e-2};
@@ -56,7 +56,7 @@ struct FlightSettings {
   static constexpr Range kPositionErrorTime{1e-6, 100.0};
   /// s; a shot that has not ended by then ends with StepLimit. Five minutes: a ball creeping
   /// down a long slope whose pull barely beats the turf's rolling resistance (a = g(sinθ −
-  /// c cosθ) of a few mm/s²) takes minutes to stop or leave (random-world soak, issue 20).
+  /// c cosθ) of a few mm/s²) takes minutes to stop or leave (random-world soak).
   double max_time = 300.0;
   static constexpr Range kMaxTime{0.0, 600.0, true};
   int max_steps = 200000;        ///< integrator + roll steps bound

@@ -84,8 +84,8 @@ std::string validate_surface_material(const SurfaceMaterial& m) {
     if (auto w = bad("stimp", m.stimp, SurfaceMaterial::kStimp, "m"); !w.empty()) return w + " (or 0 = unset)";
   }
   // A surface a ball can roll on must be able to stop it: on a frictionless floor a ball in a
-  // hollow swings for ever (a world-fuzz finding: a mesh whose faces fell back to the wall
-  // material rolled to the time limit). Water takes the ball and a decoration is never touched.
+  // hollow swings for ever (a mesh whose faces fall back to the wall material rolls to the
+  // time limit). Water takes the ball and a decoration is never touched.
   if (m.kind != SurfaceKind::Water && m.kind != SurfaceKind::Decoration && m.stimp == 0.0 &&
       m.rolling_resistance < SurfaceMaterial::kMinRollingResistance) {
     s << where << "rolling_resistance = " << m.rolling_resistance << " cannot stop a rolling ball (allowed ["
@@ -121,7 +121,7 @@ SurfaceMaterial default_fairway() {
   m.e.cor = {0.55, 0.42, 0.30, 0.22, 0.17, 0.15, 0.0, 0.0};
   m.mu = 0.4;
   // Chosen so the TrackMan launches roll out as tour shots do on a firm fairway: driver
-  // ~30 yd, 7-iron a few yards, PW checks (see note-4).
+  // ~30 yd, 7-iron a few yards, PW checks.
   m.rolling_resistance = 0.16;
   m.crater_tilt = deg_to_rad(16.0);
   return m;
@@ -260,7 +260,7 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
       return (velocity + (1.0 / ball.mass) * g.p).dot(along);
     };
     n = tilted(face_normal, along, tilt);
-    // Surely forward, without the impulse (issue 22: one impulse a bounce, 1 % of a golf
+    // Surely forward, without the impulse (one impulse a bounce is 1 % of a golf
     // shot): on the tilted plane a spinless ball keeps at least 5/7 of a forward tangential
     // speed v_t (grip leaves 5/7, slip more) and leaves along the normal at e·v_n ≤ v_n, so
     // its speed along the motion is at least (5/7)·v_t·cos α − v_n·sin α.
@@ -271,7 +271,7 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
     if (f_hi < 0.0) {
       // The tilt that stops it: the forward speed's root in tilt, bracketed by [0, tilt] (the
       // flat face sends a spinless ball forward), by regula falsi (8-12 impulses where 40
-      // halvings took 40), within 1e-12 m/s of dead or 1e-13 rad of the root.
+      // halvings take 40), within 1e-12 m/s of dead or 1e-13 rad of the root.
       const double stop = find_root([&](double t) { return forward(tilted(face_normal, along, t)); }, 0.0, tilt,
                                     forward(face_normal), f_hi);
       n = tilted(face_normal, along, stop);

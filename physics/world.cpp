@@ -66,7 +66,7 @@ struct World::Impl {
   WorldDescription desc;
   std::vector<CollisionMesh> meshes;
   /// All meshes as the parts of one Bullet BVH: a query walks one tree, not one per
-  /// material (six trees on golf_hole made the sweeps a third of a shot's cost, issue 22).
+  /// material (six trees on golf_hole would make the sweeps a third of a shot's cost).
   std::unique_ptr<btTriangleIndexVertexArray> array;
   std::unique_ptr<btBvhTriangleMeshShape> shape;
   std::unique_ptr<btCollisionObject> object;
@@ -91,8 +91,8 @@ struct World::Impl {
   int nx = 0, nz = 0;
   /// Per cell (compressed rows: cell c's entries are [cell_start[c], cell_start[c + 1])) the
   /// collidable triangles whose boxes overlap it, with their boxes: a short sweep tests
-  /// these instead of walking Bullet's tree (a walk cost ~5k instructions on golf_hole's
-  /// 21k triangles, a cell's list ~10 box tests; issue 22). Exact either way: a triangle
+  /// these instead of walking Bullet's tree (a walk costs ~5k instructions on golf_hole's
+  /// 21k triangles, a cell's list ~10 box tests). Exact either way: a triangle
   /// whose box misses the sweep's box (which holds the whole swept sphere) cannot be hit.
   std::vector<int> cell_start;
   std::vector<CellTriangle> cell_triangles;
@@ -105,7 +105,7 @@ struct World::Impl {
 
   /// floor(x) as a cell index, clamped far outside any grid (a grid has at most 513 cells a
   /// side) so the conversion is always defined. Without SSE4.1 std::floor is a libm call: a
-  /// truncation and one correction are exact and ~10 times cheaper (issue 22: four per query).
+  /// truncation and one correction are exact and ~10 times cheaper (four per query).
   static int floor_index(double x) {
     constexpr double kFar = 1e6;
     if (!(x > -kFar)) return -static_cast<int>(kFar);  // also NaN: off the grid
@@ -245,7 +245,7 @@ struct World::Impl {
   /// A two-sided sheet is modelled as two triangles on the same corners, facing opposite
   /// ways. Faces are one-sided (a ball meets a face it moves into), so a ball resting on
   /// the sheet and lifting off moves into the back copy while touching it and would be
-  /// stopped dead (a hostile-mesh finding: a two-sided ground ended every drive at the tee).
+  /// stopped dead (a two-sided ground would end every drive at the tee).
   /// Such twins are marked; a sweep meets a twin only from its front (SweepCallback).
   void build_twins() {
     using Key = std::array<double, 9>;  // the three corners, sorted
@@ -324,13 +324,14 @@ struct World::Impl {
   }
 
   /// At a concave edge a rising face can already cut into the ball while the foot of its
-  /// centre is still on the support triangle (*mesh, *tri): random-world soak findings, rolling
-  /// centres 1-9 cm inside the ground, and a ball whose V's far face met the support at a
-  /// corner only (no shared edge) rolling on under it and out of the world. Every triangle
-  /// near the ball (the grid's cells under its box; the support's edge neighbours when the
-  /// grid is off) that rises from the support's plane and cuts the ball deeper than the
-  /// support becomes the support; the roll then steps onto it or strikes it. Concave only: a
-  /// face beyond a ridge lies below the support's plane and never lifts the ball.
+  /// centre is still on the support triangle (*mesh, *tri): in the random-world soak, rolling
+  /// centres would sink 1-9 cm inside the ground, and a ball whose V's far face meets the
+  /// support at a corner only (no shared edge) would roll on under it and out of the world.
+  /// Every triangle near the ball (the grid's cells under its box; the support's edge
+  /// neighbours when the grid is off) that rises from the support's plane and cuts the ball
+  /// deeper than the support becomes the support; the roll then steps onto it or strikes it.
+  /// Concave only: a face beyond a ridge lies below the support's plane and never lifts the
+  /// ball.
   void deepest_rising_floor(const Vec3& centre, double radius, int* mesh, int* tri) const {
     const CollisionMesh& cm = meshes[static_cast<size_t>(*mesh)];
     const Vec3 n0 = cm.normals[static_cast<size_t>(*tri)];
@@ -550,7 +551,7 @@ World::World(WorldDescription description, SweepMethod method) : impl_(std::make
                  w.meshes.end());
   // The floor: 1 m (many ball diameters) under the lowest collidable vertex and the origin.
   // A ball that falls past the edge of the ground would otherwise fall to the declared
-  // bounds (±10 km by default) and run into the step limit (a fuzz_world finding).
+  // bounds (±10 km by default) and run into the step limit.
   double lowest = d.origin.y();
   for (const CollisionMesh& m : w.meshes)
     for (size_t k = 1; k < m.vertices.size(); k += 3) lowest = std::min(lowest, m.vertices[k]);
@@ -736,7 +737,7 @@ Vec3 World::bounce_normal(const SurfaceContact& c) const {
   const Vec3 a = m.vertex(c.triangle, 0), b = m.vertex(c.triangle, 1), d = m.vertex(c.triangle, 2);
   // Barycentric weights of the contact point (clamped: a sweep can meet an edge's outside),
   // each scaled by the same 2·area·|n|: the blend is normalised below, so the scale (and the
-  // six divisions that removed it) does not matter.
+  // six divisions it would take to remove it) does not matter.
   const Vec3 n = (b - a).cross(d - a);
   const double wa = std::max(0.0, n.dot((b - c.point).cross(d - c.point)));
   const double wb = std::max(0.0, n.dot((d - c.point).cross(a - c.point)));

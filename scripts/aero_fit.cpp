@@ -10,7 +10,7 @@
 // after, the values to paste into the TOML, and the rows: TrackMan's PGA averages (fitted),
 // its LPGA averages (not fitted) and the carry gains at Denver.
 //
-// The objective: the rms over issue 15's bands of the twelve PGA rows (|carry|/4 %,
+// The objective: the rms over the calibration bands of the twelve PGA rows (|carry|/4 %,
 // |apex|/15 %, |landing angle|/3°) and of the Denver drive's carry gain (7.5 ± 1.5 %:
 // Titleist's ~6 %, Frank Thomas's ~9 %, aero_models.toml), plus 10 × how far the worst of
 // them leaves its band, plus 10 × how far the 7-iron's Denver gain exceeds the driver's.

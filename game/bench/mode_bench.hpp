@@ -1,4 +1,4 @@
-// Game-mode benchmarks (DESIGN §8, issue 22): what a player waits for when a bot plays. A
+// Game-mode benchmarks (DESIGN §8): what a player waits for when a bot plays. A
 // bot round of the links (every stroke flown and rolled to rest on the holes' worlds) and a
 // home-run derby (every pitch flown, struck and flown to the field), in ms of wall time.
 #pragma once

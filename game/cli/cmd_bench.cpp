@@ -93,7 +93,7 @@ RunFn setup_bench(CLI::App& sub) {
     } catch (const RenderUnavailable& e) {
       frame_note = e.what();
     }
-    // The game window with its panels (issue 19: <= 16 ms under Xvfb + llvmpipe). Needs a
+    // The game window with its panels (the budget: <= 16 ms under Xvfb + llvmpipe). Needs a
     // display: `xvfb-run sweetspot bench`; without one the figure is absent, not an error.
     std::string window_note;
     try {

@@ -246,7 +246,7 @@ std::string import_in_child(const std::filesystem::path& path, const char* what,
   if (flags == 0) flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
   // Read first without post-processing and check every vertex as the file gives it:
   // triangulating a polygon with a NaN corner drops the corner and its triangles silently
-  // (an issue-20 finding: a hole in the ground, the ball fell through it).
+  // (a hole in the ground: the ball falls through it).
   const aiScene* scene = importer.ReadFile(path.string(), 0);
   if (!io->refusal().empty()) throw InputError(io->refusal() + " (named by " + path.string() + ")");
   if (scene != nullptr) {

@@ -44,7 +44,7 @@ struct MeshFile {
 };
 
 /// A polygon's corners, at most: triangulating an n-gon costs assimp O(n^2) to O(n^3) (a
-/// hostile OBJ with one 100 000-corner face kept the importer busy past its 120 s limit).
+/// hostile OBJ with one 100 000-corner face keeps the importer busy past its 120 s limit).
 /// Modelling tools write n-gons of a few dozen corners; 256 triangulates in milliseconds.
 inline constexpr unsigned kMaxFaceCorners = 256;
 /// Triangles in one file, at most: each costs the world ~0.4 kB (Bullet's tree, adjacency,

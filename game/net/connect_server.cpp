@@ -20,7 +20,7 @@ using asio::ip::tcp;
 using Clock = std::chrono::steady_clock;
 
 // Replies produced by one read go out this far apart: connectors that parse one JSON object
-// per recv() (the survey: the Node and PiTrac clients) fail on replies that arrive
+// per recv() (the Node and PiTrac clients) fail on replies that arrive
 // coalesced. 5 ms is far below any connector's reply timeout (the strictest waits 2 s).
 constexpr auto kReplyGap = std::chrono::milliseconds(5);
 // The player information (201, on connect and on a club change) goes out only once the

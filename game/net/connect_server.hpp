@@ -5,8 +5,8 @@
 // The byte stream is cut into messages by MessageFramer (bounded); each shot is answered
 // with 200 ("Ball Data received" / "Club & Ball Data received") and played by a ShotTable,
 // its line (DESIGN §10) written to `out`; heartbeats and status ("ready") messages are
-// answered with 200 and play nothing (real GSPro is silent to them; the issue asks every
-// message to be answered, and no connector is confused by a 200 it did not wait for: they
+// answered with 200 and play nothing (real GSPro is silent to them; here every message is
+// answered, and no connector is confused by a 200 it did not wait for: they
 // drain or ignore unsolicited bytes); a malformed or oversized message gets 501 "Bad format"
 // and the connection stays up. The player information (201) goes out on connect and
 // whenever the club the game expects changes, in its own write once the client has been

@@ -246,7 +246,7 @@ OcMessage parse_open_connect(std::string_view text) {
 
 namespace {
 // Compact JSON; bytes that are not UTF-8 (a parse error quotes what the client sent) become
-// U+FFFD instead of making the serializer throw (a fuzz finding: it took the server down).
+// U+FFFD instead of making the serializer throw (which would take the server down).
 std::string compact(const nlohmann::json& j) { return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
 }  // namespace
 

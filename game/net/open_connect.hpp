@@ -3,9 +3,8 @@
 //
 // Sources: the vendor's page (gsprogolf.com/GSProConnectV1.html: the root keys, BallData,
 // ClubData, ShotDataOptions; codes 200 shot received, 201 player information, 5xx failure)
-// and what the public connectors send and expect, read with the search tools (notes in the
-// issue): keys matched without case ("APIVersion", "Backspin"), no delimiter between messages
-// (so the stream is framed by brace depth), the
+// and what the public connectors send and expect: keys matched without case ("APIVersion",
+// "Backspin"), no delimiter between messages (so the stream is framed by brace depth), the
 // exact reply strings of the real program ("Ball Data received", "Club & Ball Data received",
 // "GSPro Player Information", "Bad format"), replies as compact JSON without a newline.
 #pragma once

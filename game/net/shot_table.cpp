@@ -19,7 +19,7 @@ namespace {
 constexpr double kDegPerRad = 180.0 / kPi;
 
 // Below this ball speed a message is not a ball being hit: connectors send zeros when the
-// device misread (GSPro resets the club on them; the SLX proxy notes in the issue). 1 mph is
+// device misread (GSPro resets the club on them, as the SLX proxy notes). 1 mph is
 // far below a tap-in putt (a 30 cm putt leaves at ~2 mph).
 constexpr double kMinBallSpeedMph = 1.0;
 

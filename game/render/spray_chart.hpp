@@ -1,4 +1,4 @@
-// A spray chart (issue 17): where each batted ball of a session landed on the field, seen
+// A spray chart: where each batted ball of a session landed on the field, seen
 // from above, coloured by outcome. Drawn on the CPU into a PNG (no GL), so it works headless.
 #pragma once
 

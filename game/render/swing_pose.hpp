@@ -1,5 +1,5 @@
-// The club head or bat before impact, for the replay's pre-roll (issue 19: the strike
-// animated with the delivery we simulate). The impactor swings on an arc about a pivot (the
+// The club head or bat before impact, for the replay's pre-roll (the strike animated with
+// the delivery we simulate). The impactor swings on an arc about a pivot (the
 // lead shoulder, the batter's hands) that lies up the shaft from the contact (the shaft's
 // part square to the velocity), in the plane of the shaft and the delivered velocity, speeding up from rest at the top to the delivered
 // speed at impact: it arrives along the club path and attack angle the impact solve used,

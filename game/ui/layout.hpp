@@ -1,4 +1,4 @@
-// Where the lab window's panels and its 3D view go, for any window size (issue 19): the
+// Where the lab window's panels and its 3D view go, for any window size: the
 // view is never under a panel, so the shot is always visible. Pure arithmetic, no ImGui,
 // so it is unit-tested.
 //   wide (>= kWideMin px): a left column (Shot, Tuning) and a right column (Launch monitor,

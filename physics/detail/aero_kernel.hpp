@@ -2,7 +2,7 @@
 // constants (½ρA/m, ρD/µ, 1/width, 1/onset) folded in once per step instead of once per
 // evaluation, the acceleration returned instead of the force, and the square roots and
 // divisions of an evaluation independent of each other so they overlap in the pipeline.
-// A flight evaluates it ~130 times per shot: it was a fifth of a golf shot's time (issue 22).
+// A flight evaluates it ~130 times per shot: as the plain law, a fifth of a golf shot's time.
 // The law itself lives here once; aero_effect() (physics/aero.cpp) is this kernel with a
 // unit mass.
 #pragma once

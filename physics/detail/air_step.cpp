@@ -50,14 +50,13 @@ struct PlaneGap {
 /// The arc past a chord's touch, up to where the arc meets the touched face's plane (t_touch
 /// to *t_hit), swept too: a face met there is met first. A ball skimming up a slope nearly
 /// along it leaves the chord's straight gap to cross zero near its start while the arc comes
-/// back to the plane only near its end, metres on; the ground past the chord's touch was
-/// never swept, and a steeper face rising there (a concave bend in the slope) was passed
-/// through: a random-world soak finding, the centre 3.6 cm under the ground (seed 6, world
-/// 1556, shot 7). Stretches under half a radius (1 cm) are left: a face unseen along one
-/// can hold the ball at most that deep, and most landings end there (a landing steeper than
-/// 30° meets the plane at most the chord's sag, ≤ 5 mm, over the incidence's sine past the
-/// chord's touch). From a quarter radius on, the extra sweeps cost 2.6 % of a golf shot's
-/// instructions; from half, 1 %.
+/// back to the plane only near its end, metres on; unswept, the ground past the chord's
+/// touch lets a steeper face rising there (a concave bend in the slope) be passed through
+/// (in the random-world soak, the centre 3.6 cm under the ground). Stretches under half a
+/// radius (1 cm) are left: a face unseen along one can hold the ball at most that deep, and
+/// most landings end there (a landing steeper than 30° meets the plane at most the chord's
+/// sag, ≤ 5 mm, over the incidence's sine past the chord's touch). From a quarter radius on,
+/// the extra sweeps cost 2.6 % of a golf shot's instructions; from half, 1 %.
 void sweep_past_touch(const ShotModel& m, ShotState& st, const Segment& s, double t_touch, double* t_hit,
                       SurfaceContact* c) {
   const double radius = m.ball.radius;
@@ -107,10 +106,9 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
     // the dense output. A ball that starts the chord on a surface and leaves it (launched
     // off the ground, just bounced) but comes back to that surface's plane within the chord
     // is swept again from the first moment it is clear of the plane: what it meets is then
-    // the first face on its way, not that plane where it returns (a launch at 0.6° toward a
-    // step in the ground crossed the step's riser and "landed" on the plane of the floor
-    // under it, inside the ground: a random-world soak finding once the launch's first step
-    // grew to 0.25 s).
+    // the first face on its way, not that plane where it returns (else a launch at 0.6°
+    // toward a step in the ground, its first step 0.25 s, crosses the step's riser and
+    // "lands" on the plane of the floor under it, inside the ground).
     bool retried = false;
     Vec3 from = pa;
     double t_from = ta;
@@ -162,8 +160,8 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
 
 bool finite(const State9& y) { return y.allFinite(); }
 
-/// A short hop after a bounce (issue 22: the bounce and roll closed-form where the physics
-/// allows it). A ball that leaves the ground at under kShortHopSpeed along the vertical (a
+/// A short hop after a bounce, in closed form where the physics allows it (as the bounce and
+/// the roll are). A ball that leaves the ground at under kShortHopSpeed along the vertical (a
 /// hop under 5 cm high and 0.2 s long: half of a tour drive's hops) moves through air that
 /// barely changes over the hop: drag and lift change by a few per cent of themselves, a
 /// fraction of a per cent of gravity. The equations' rates are taken at the hop's start and
@@ -187,7 +185,7 @@ bool short_hop(const ShotState& s, const Dynamics& f, double t_end, Segment* seg
   // The rates change linearly over the hop, at the slope from its start to its middle:
   // velocity and spin then follow a parabola in time and position a cubic (the rate of the
   // position is the velocity). Held constant at the middle's instead (the midpoint rule),
-  // the drag's vertical part, which turns from down to up at the apex, was missed: 0.5 mm
+  // they would miss the drag's vertical part, which turns from down to up at the apex: 0.5 mm
   // of height over a 0.2 s hop, 0.6 ms of touch time, 5 mm along.
   const State9 slope = (fm - f0) / half;
   const Vec3 v0 = s.y.segment<3>(3), a0 = f0.segment<3>(3), j = slope.segment<3>(3);
@@ -214,10 +212,10 @@ bool short_hop(const ShotState& s, const Dynamics& f, double t_end, Segment* seg
 /// in S jumps: at s_max, where the fit is held constant (tour_fit's Cd slope jumps from
 /// -0.098 to 0), and at lift_onset, where the lift turns linear to 0. A Dormand–Prince step
 /// across such a kink is first order at it, and its error estimate does not see that: the
-/// carries of 1 000 random launches were 1.4 mm off the 1e-13 reference at the 95th
+/// carries of 1 000 random launches are 1.4 mm off the 1e-13 reference at the 95th
 /// percentile (worst 3.5 mm) with the kink inside steps, 0.06 mm (worst 0.16 mm) with the
 /// law made smooth there. Ending the step at the kink keeps the law smooth inside every
-/// step without changing it (issue 22). Most carries cross s_max once or not at all.
+/// step without changing it. Most carries cross s_max once or not at all.
 double aero_kink_crossed(const Dynamics& f, const Segment& s, const State9& y1) {
   const AeroModel& a = *f.model->aero;
   const double s0 = f.spin_parameter(s.r1), s1 = f.spin_parameter(y1);
@@ -239,8 +237,8 @@ double aero_kink_crossed(const Dynamics& f, const Segment& s, const State9& y1) 
 /// at ~0.25 s and grow to ~0.9 s (golf and baseball alike: their flights are seconds long
 /// and smooth); DOPRI5's local error grows as h⁵, so the step that meets another tolerance
 /// scales as its fifth root (1e-13: 10 ms). A first trial that is too long costs one
-/// rejected trial; the 10 ms it replaces took two extra steps growing out of it (the step
-/// may grow at most 5x a step), ~4 % of a golf shot's time (issue 22).
+/// rejected trial; a 10 ms first trial takes two extra steps growing out of it (the step
+/// may grow at most 5x a step), ~4 % of a golf shot's time.
 double launch_step(double rel_tol) {
   constexpr double kStepAtMicro = 0.25;  // s, at rel_tol = 1e-6
   return std::clamp(kStepAtMicro * std::pow(rel_tol / 1e-6, 0.2), 1e-4, 1.0);
@@ -307,15 +305,15 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   Hit hit;
   const bool touches = find_contact(m, s, seg, y1, &hit);
   // A touch outside the world's bounds is not reached: the shot ended where the ball left
-  // them. (Checked first, the touch let a ball land past the bounds when one step both left
-  // them and came down, and not when the steps fell otherwise: Denver's 450 ft home run
-  // "landed" at 137 m in a ballpark whose bounds end at 130 m.)
+  // them. (Checked first, the touch would let a ball land past the bounds when one step both
+  // left them and came down, and not when the steps fell otherwise: Denver's 450 ft home run
+  // would "land" at 137 m in a ballpark whose bounds end at 130 m.)
   const double t_out = touches ? hit.t : seg.t1();
   const bool inside_at_end = m.terrain->inside(touches ? position_at(seg, hit.t) : Vec3(y1.segment<3>(0)));
   if (!inside_at_end && m.terrain->inside(seg.r1.segment<3>(0))) {
     // Left the world during the step: end where it crossed the bounds, found by bisection
-    // on the dense output, so where a shot leaves does not depend on the step size (it
-    // used to be the step's end, metres past the bounds at the tolerance's step lengths).
+    // on the dense output, so where a shot leaves does not depend on the step size (the
+    // step's end lies metres past the bounds at the tolerance's step lengths).
     double lo = seg.t0, hi = t_out;
     for (int i = 0; i < 60 && hi - lo > 1e-12; ++i) {
       const double mid = 0.5 * (lo + hi);
@@ -335,11 +333,11 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     // The contact point is the foot of the ball's centre at the touch on the face's plane,
     // not the foot of the straight chord's centre where the chord met it: the chords, and
     // with them that point (up to their sag, ~5 mm, away), depend on where the integrator's
-    // steps fall. The smooth bounce normal is read at this point, so a bounce no longer
-    // changes with the tolerance (the 1 000-launch sample's rests over 1 cm of the 1e-13
-    // reference came from here). Where two faces of one surface that share an edge meet at
-    // that point, the one under the centre is the one touched (which side of a fairway/rough
-    // seam it landed on; meshes that share no vertices are not matched).
+    // steps fall. The smooth bounce normal is read at this point, so a bounce does not
+    // change with the tolerance (read at the chord's foot, it puts rests of the 1 000-launch
+    // sample over 1 cm from the 1e-13 reference). Where two faces of one surface that share
+    // an edge meet at that point, the one under the centre is the one touched (which side of
+    // a fairway/rough seam it landed on; meshes that share no vertices are not matched).
     SurfaceContact c = hit.contact;
     const Vec3 centre = s.y.segment<3>(0);
     c.point = centre - c.normal * c.normal.dot(centre - c.point);

@@ -28,7 +28,7 @@ double rolling_resistance_on(const ShotModel& m, const SurfaceMaterial& mat);
 /// roll (grass blades, the turf it presses), so it is slowed as a roll is. The layer is as
 /// high as the highest hop the roll threshold turns into a roll, h = roll_speed²/2g (3.2 mm
 /// at 0.25 m/s): a hop just above the threshold then loses what the roll just below it
-/// loses, and a shot no longer jumps by a hop's length (25 cm for a 5 m/s ball, issue 22's
+/// loses, and a shot does not jump by a hop's length (25 cm for a 5 m/s ball in a
 /// random-launch sample) when a rounding turns one bounce into a roll. The share fades
 /// linearly with the hop's apex, v_n²/2g at the bounce, from all of it at h to none at 2h;
 /// it is fixed for the hop (ShotState::hop_layer), so the equations stay smooth and the

@@ -39,8 +39,9 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
   if (mat.kind != SurfaceKind::Water && c.fraction < 1e-6 && ev.velocity_in.dot(c.normal) >= 0.0 && s.landed) {
     // Already touching the face and not closing in on it (sliding along a trough's wall,
     // leaving a bank): nothing to bounce. The sweep reports such a touch at fraction 0 every
-    // step, so a bounce that changes nothing would repeat for ever (a soak finding: 200 000
-    // zero-time bounces to the step limit). Set the ball just clear of the face and fly on.
+    // step, so a bounce that changes nothing would repeat for ever (200 000 zero-time bounces
+    // to the step limit in the random-world soak). Set the ball just clear of the face and
+    // fly on.
     const double clearance = c.normal.dot(s.position() - c.point) - m.ball.radius;
     if (clearance < 1e-6) s.y.segment<3>(0) += (1e-6 - clearance) * c.normal;
     s.rate_valid = false;
@@ -69,8 +70,8 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
     }
   }
   // A crease: gentle touches alternating between two faces (the ball bounces from one wall
-  // of a trough to the other while it runs along it, 200 000 times to the step limit before
-  // this). After a few such touches it rolls in the crease, held by both.
+  // of a trough to the other while it runs along it, else 200 000 times to the step limit).
+  // After a few such touches it rolls in the crease, held by both.
   constexpr int kChatterTouches = 6;
   const Vec3 previous = s.last_touch_normal;
   s.last_touch_normal = c.normal;
@@ -100,7 +101,7 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
     return ev;
   }
   // The smooth surface's normal decides the bounce and whether it rolls on: a landing a
-  // hair to either side of a facet edge then ends alike (issue 22's random-launch sample).
+  // hair to either side of a facet edge then ends alike.
   // A ball grazing in toward the facet but away from the smooth surface (at a bend the smooth
   // normal leans over) bounces off the facet: an impact must separate it from what it touches.
   const Vec3 smooth = m.terrain->bounce_normal(c);
@@ -125,7 +126,7 @@ ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& 
   s.hop_layer = walkable ? hop_layer_share(m, leaving) : 0.0;  // a wall has no layer to skim
   // A bank too steep to walk (> 63°) still carries a ball that touches it gently twice in a
   // row: it rolls and slides down to its foot instead of micro-hopping down it, each hop
-  // shorter than the last (a random-world soak finding: 200 000 hops of ~1 ms down a 62.4°
+  // shorter than the last (in the random-world soak, 200 000 hops of ~1 ms down a 62.4°
   // face to the step limit). Gentle touches alternating between two steep faces are a
   // crease instead (the chatter above). A face turned past vertical carries nothing.
   const bool same_face_again = gentle && previous != Vec3::Zero() && (c.normal - previous).norm() <= 1e-6;

@@ -72,8 +72,8 @@ struct DopriCarry {
 /// outside norm ∈ [(0.9/5)^5, (0.9/0.2)^5] ≈ [1.9e-4, 1845]; inside, x^(−1/5) from a first
 /// guess read off the exponent bits (the power applied to the bits of a double, Blinn's
 /// trick) and four Newton steps on y⁵x = 1 (y ← y(6 − xy⁵)/5, the error about squared each
-/// time): within 2e-11 of std::pow over the range (test_integrator.cpp). `std::pow` was a
-/// libm call of ~125 instructions a step, 2 % of a golf shot (issue 22); the factor is a
+/// time): within 2e-11 of std::pow over the range (test_integrator.cpp). `std::pow` is a
+/// libm call of ~125 instructions a step, 2 % of a golf shot; the factor is a
 /// heuristic, so it only has to be a deterministic, smooth function of the norm.
 inline double step_growth(double norm) {
   constexpr double kLow = 1.8895680e-4, kHigh = 1845.28125;  // (0.9/5)^5, (0.9/0.2)^5

@@ -55,7 +55,7 @@ double time_to_plane(const SurfaceContact& face, double r, const Vec3& p, const 
 /// The velocity of a rolling ball whose centre was put `lift` m higher (a step's end moved
 /// out of a face it ended inside, at a corner of several faces where no single bend could be
 /// met first; up to a few mm): its speed pays for the height, ½·(7/5)·v² + g·h held, down to
-/// rest. Lifted for free, a ball rocking in such a corner gained ~0.02 J/kg a time.
+/// rest. Lifted for free, a ball rocking in such a corner would gain ~0.02 J/kg a time.
 /// Lifts under a nanometre are a step's round-off about its face's plane (every step's end
 /// is put back onto its face): they keep the speed, and cost no square root.
 Vec3 paid_for_lift(const Vec3& v, double lift) {
@@ -75,9 +75,9 @@ void set_rolling(ShotState& s, const Vec3& p, const Vec3& v, const Vec3& n, doub
 /// The ground under a ball that moved from p to p1 along its support's plane. Past a concave
 /// edge (the plane turns up: a bank, the far side of a hollow, a slope meeting the flat) the
 /// plane's extension runs into the next facet, p1 up to |p1 - p| inside it; the query starts
-/// that much higher so the facet is still found above the ball's bottom (a soak finding: a
-/// ball rolling down a slope onto the flat started its search under the flat and fell out of
-/// the world). The gap is then measured from p1 itself by the caller.
+/// that much higher so the facet is still found above the ball's bottom (else a ball rolling
+/// down a slope onto the flat starts its search under the flat and falls out of the world).
+/// The gap is then measured from p1 itself by the caller.
 bool ground_under(const Terrain& terrain, const Vec3& p, const Vec3& p1, double r, double reach, SurfaceContact* under) {
   const double lift = (p1 - p).norm();
   return terrain.support(p1 + lift * up_axis(), r, reach + lift, under);
@@ -103,8 +103,8 @@ ShotEvent go_airborne(ShotState& s, double dt, const Vec3& p1, const Vec3& v1) {
 /// (a putt skids ~0.1 s); on the flat this is the closed form (slip falls linearly, v ends
 /// at 5/7 of v0 for a ball struck without spin). The skid follows the ground like the roll:
 /// at most kSkidChunk at a time on one facet, then the ground under the ball is found again
-/// (an issue-20 soak finding: a 0.7 s skid ran on along one facet's plane beyond its edge,
-/// under the neighbouring facet, and the ball fell out of the world).
+/// (else a 0.7 s skid runs on along one facet's plane beyond its edge, under the
+/// neighbouring facet, and the ball falls out of the world).
 constexpr double kSkidChunk = 0.02;  // s; at the fastest skid (~80 m/s) 1.6 m, a facet or two
 ShotEvent skid(const ShotModel& m, ShotState& s) {
   const double r = m.ball.radius;
@@ -155,9 +155,9 @@ ShotEvent skid(const ShotModel& m, ShotState& s) {
     s.y.segment<3>(6) = w;
     if (enter_crease(s, n, under.normal)) {
       // Skidded gently into a second face that carries it too: a crease, as a roll that
-      // meets one gently (roll_step). Struck instead, each touch put the ball back into a
-      // skid on the face it came from, which ran it into the other again some µs later: a
-      // random-world soak finding, 2 850 touches down a 60° V before it stopped.
+      // meets one gently (roll_step). Struck instead, each touch would put the ball back into
+      // a skid on the face it came from, which runs it into the other again some µs later:
+      // 2 850 touches down a 60° V before it stops (random-world soak).
       s.support = under;
       return ShotEvent{};
     }
@@ -176,8 +176,8 @@ ShotEvent skid(const ShotModel& m, ShotState& s) {
   if (found && under.normal.dot(n) < kFollowCos && under.normal.dot(p - under.point) - r <= 0.0 &&
       enter_crease(s, n, under.normal)) {
     // Skidded along into a steeper face that holds it too (not into it: that is struck
-    // above): a crease, rolled along as roll_step does. Flying off here touched the first
-    // face again at once, for ever (a random-world soak finding, 200 000 zero-time touches).
+    // above): a crease, rolled along as roll_step does. Flying off here would touch the first
+    // face again at once, for ever (200 000 zero-time touches in the random-world soak).
     s.y.segment<3>(0) = p;
     s.y.segment<3>(3) = v;
     s.y.segment<3>(6) = w;
@@ -188,8 +188,8 @@ ShotEvent skid(const ShotModel& m, ShotState& s) {
     s.skidding = false;
     // Did the chunk run into a face on the way? The far side of a V can rise more steeply
     // than the ground query's lift sees: p ends under it, nothing is found, and the ball
-    // used to fly on from inside the ground (a random-world soak finding). Then it meets
-    // that face where the sweep says, at the chunk's time there.
+    // would fly on from inside the ground. Such a ball meets that face where the sweep says,
+    // at the chunk's time there.
     const Vec3 p0 = s.position();
     SurfaceContact hit;
     Vec3 along = n;
@@ -283,8 +283,8 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
   }
   // Turns back inside the step (up a crease line that will carry it down again): the step
   // ends where it turns, as a roll step's does. Held against the first direction for the
-  // whole step, the resistance drove the ball back down the line instead of braking it:
-  // up to 0.06 J/kg gained a turn, rocking a ball along a crease (random-world soak).
+  // whole step, the resistance would drive the ball back down the line instead of braking
+  // it: up to 0.06 J/kg gained a turn, rocking a ball along a crease (random-world soak).
   const bool turns = !stops && u != 0.0 && (u + a * dt) * u < 0.0;
   if (turns) step = std::abs(u / a);
   const Vec3 p1 = p + d * (u * step + 0.5 * a * step * step);
@@ -334,9 +334,8 @@ ShotEvent crease_step(const ShotModel& m, ShotState& s, double until) {
     s.support = under;
     // Onto a face that rises ahead (gap < 0): from where the ball meets its plane, as a roll
     // step does at a concave bend. Lifted onto it at the step's end with the speed it had
-    // gained below it, a ball gained ~0.6 mm of height each time it ran out of a crease, and
-    // ran back into the crease, out and in again to the time limit (a random-world soak
-    // finding, seed 8 world 298).
+    // gained below it, a ball would gain ~0.6 mm of height each time it ran out of a crease,
+    // and run back into the crease, out and in again to the time limit (random-world soak).
     const double t_bend = gap < 0.0 ? time_to_plane(under, r, p, u * d, a * d, step) : -1.0;
     if (t_bend >= 0.0) {
       s.t -= step - t_bend;
@@ -416,26 +415,26 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   const double limit = std::min(m.settings.max_time, until) - s.t;
   // At most 0.5 m and 0.25 s a step: with the middle's acceleration below, a roll in such steps
   // rests within 1.2 mm (median) and 6.4 mm (95th percentile) of one in steps
-  // a twentieth as long, 3 000 random golf launches on golf_hole, worst 4.4 cm (issue 22).
+  // a twentieth as long, 3 000 random golf launches on golf_hole, worst 4.4 cm.
   constexpr double kStepLength = 0.5, kStepTime = 0.25;  // m, s
   double dt = std::min(std::clamp(kStepLength / std::max(speed, 1e-3), 1.0 / 240.0, kStepTime), limit);
   Vec3 a = accel_at(v, dir);
   // A ball the slope moves that the step would turn more than its own speed (starting from
   // near rest, or slow across a slope): no direction holds over such a step for the turf's
-  // resistance, and a resistance held along a direction the motion left pushed the ball on
-  // (a random-world soak finding: a ball at 4 mm/s on a 14° slope gained 0.03 J/kg in one
-  // 0.25 s step). The step lasts the time the slope takes to change the velocity by its
+  // resistance, and a resistance held along a direction the motion left pushes the ball on
+  // (random-world soak: a ball at 4 mm/s on a 14° slope gains 0.03 J/kg in one 0.25 s
+  // step). The step lasts the time the slope takes to change the velocity by its
   // speed; from near rest that time doubles each step, 6 steps to the 0.25 s of a full one.
   if (!holds && a.squaredNorm() * dt * dt > speed * speed) dt = std::min(dt, std::max(speed / a.norm(), 1.0 / 240.0));
   // The step's motion: constant acceleration along the face, the one at the step's middle
   // (the midpoint rule, second order in the step; the drag there scaled from the start's
   // with |v_r|², Cd held: a rolling ball's S stays at 1, and over a 0.5 m step its Re, and
   // with it Cd through the crisis or the rise past it, barely moves).
-  // The acceleration at the step's start (first order) left the drag's fall with speed to
-  // the step length: in steps of 0.25 m and 0.1 s, against a roll in steps a tenth as long,
-  // the rests of 3 000 random golf launches on golf_hole were 3.3 mm off at the median and
-  // 25 mm at the 95th percentile (707 over 1 cm); at the middle, 0.4 mm and 2.8 mm (12 over
-  // 1 cm) (issue 22).
+  // The acceleration at the step's start (first order) would leave the drag's fall with
+  // speed to the step length: in steps of 0.25 m and 0.1 s, against a roll in steps a tenth
+  // as long, the rests of 3 000 random golf launches on golf_hole are 3.3 mm off at the
+  // median and 25 mm at the 95th percentile (707 over 1 cm); at the middle, 0.4 mm and
+  // 2.8 mm (12 over 1 cm).
   // A ball that loses half its speed by the middle is about to stop (the stop below is
   // exact) and slow enough that drag no longer matters: there the middle's direction would
   // be the slope's and round-off's, not the motion's, so the start's acceleration is kept.
@@ -458,9 +457,9 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   } else if (!holds && speed > 0.0 && along > 0.0 && speed / along < dt) {
     // Turns back inside the step (rolling up a slope that will carry it down again): the
     // step ends where its motion along `dir` stops. Held against the first direction for the
-    // whole step, the turf's resistance drove the ball down the slope on the way back
-    // instead of braking it: a ball rocking across a V's floor kept its amplitude for 300
-    // bounces (a random-world soak finding once the step grew to 0.25 s).
+    // whole step, the turf's resistance would drive the ball down the slope on the way back
+    // instead of braking it: with 0.25 s steps a ball rocking across a V's floor keeps its
+    // amplitude for 300 bounces (random-world soak).
     step_t = speed / along;
     p1 = position_after(step_t);
     v1 = v + a * step_t;
@@ -477,9 +476,9 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     bool at_rim = false;
     if (near_cup) {
       // A step that reaches the hole's rim ends there, so the hole judges the speed the ball
-      // arrives with, not the speed it had up to 0.5 m before (at a putt's 0.6 m/s² that was up
-      // to 0.15 m/s fast: a 1.2 m/s putt rode over a 1.31 m/s capture). Along the chord ĉ the
-      // step's motion is (v·ĉ)t + ½(a·ĉ)t² (the rim within 1 mm is taken as reached).
+      // arrives with, not the speed it had up to 0.5 m before (at a putt's 0.6 m/s² that is up
+      // to 0.15 m/s fast: a 1.2 m/s putt would ride over a 1.31 m/s capture). Along the chord
+      // ĉ the step's motion is (v·ĉ)t + ½(a·ĉ)t² (the rim within 1 mm is taken as reached).
       const double enter = cup_entry(*m.cup, p, p1, up);
       const double chord = (p1 - p).norm();
       if (enter < 1.0 && enter * chord > 1e-3) {
@@ -526,8 +525,8 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     const Vec3 at = p + f * (p1 - p);
     // The velocity where the ball meets the face: the step's, interpolated along the chord,
     // with the speed the step's constant acceleration gives at that point, |v|² + 2a·(at − p).
-    // The chord's fraction is not the step's time's, and the interpolated velocity alone ran
-    // ahead of the ball's energy on a step that sped up (random-world soak: up to 0.07 J/kg
+    // The chord's fraction is not the step's time's, and the interpolated velocity alone runs
+    // ahead of the ball's energy on a step that speeds up (random-world soak: up to 0.07 J/kg
     // gained on meeting a face, rocking a ball in a hollow).
     Vec3 vf = v + f * (v1 - v);
     const double vf2 = vf.squaredNorm();
@@ -538,8 +537,8 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
       const Vec3 vb = turned_into_plane(vf, met.normal);
       s.t += f * step_t;
       // Back and forth across the same bend, as across an edge or a seam below: the floor of
-      // a valley between the two faces, each sending the ball back onto the other (at the
-      // seam a random-world soak finding rocked for 35 s to the step limit uncounted).
+      // a valley between the two faces, each sending the ball back onto the other (uncounted
+      // at the seam, a ball in the random-world soak rocks for 35 s to the step limit).
       if (count_valley_crossing(s, n, met.normal) && enter_crease(s, n, met.normal)) {
         s.support = met;
         set_rolling(s, at, vb, met.normal, r);
@@ -588,38 +587,38 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   SurfaceContact under = c;  // the current support is the cache hint
   // Leaving the ground: first make sure the step did not run into a face on the way (a V
   // whose far side rises more steeply than the step's lift can see: p1 ends under it, the
-  // ground query from there finds nothing, and the ball used to fly on from inside the
-  // ground, out of the world: random-world soak findings).
+  // ground query from there finds nothing, and the ball would fly on from inside the
+  // ground, out of the world).
   const auto leave = [&]() { return met_on_way() ? strike(hit) : go_airborne(s, step_t, p1, v1); };
   if (!ground_under(terrain, p, p1, r, kLeaveGap + 0.1 * speed * step_t, &under)) return leave();
   const double gap = under.normal.dot(p1 - under.point) - r;
   if (under.normal.dot(n) < kFollowCos && gap < 0.0) {
     // The ground turned up sharply ahead (a concave edge: the far wall of a hollow, a bank
     // not steep enough to count as a wall) and p1 is inside it: meet it where the ball
-    // first touches it instead of flying on from inside it (a random-world soak finding).
+    // first touches it instead of flying on from inside it.
     if (met_on_way()) return strike(hit);
     // No first touch on the way: the ball began the step already against that face (at the
     // crease between the faces, within a rounding of it). It meets the face where the step
-    // began; flying on from p1, inside the ground, let it fall through the world (a
-    // random-world soak finding: a ball rolling down into a V-shaped ditch).
+    // began; flying on from p1, inside the ground, would let it fall through the world (a
+    // ball rolling down into a V-shaped ditch).
     under.fraction = 0.0;
     return strike(under);
   }
   // The ground fell away (or turned sharply): the ball leaves it and flies. Fell away means
   // more than a free ball would have fallen from the old face's plane over the step,
   // ½·g·cosθ·t²: past a gentle convex edge the ground drops v·t·sinα, which a ball outruns
-  // only for 2v·sinα/g (a hop of v²sin²α/2g: 4 mm at 5.6 m/s over 3°). A fixed 1 cm made
-  // leaving depend on the step's length (a 0.5 m step took off over a 3° edge where steps a
-  // twentieth as long rolled on: 82 cm further at rest).
+  // only for 2v·sinα/g (a hop of v²sin²α/2g: 4 mm at 5.6 m/s over 3°). A fixed 1 cm would
+  // make leaving depend on the step's length (a 0.5 m step takes off over a 3° edge where
+  // steps a twentieth as long roll on: 82 cm further at rest).
   const double fall = 0.5 * kGravity * std::max(cos_t, 0.0) * step_t * step_t;
   if (gap > std::max(kLeaveGap, fall) || under.normal.dot(n) < kFollowCos) return leave();
   // Onto another material (a fairway's edge into the rough, the fringe onto the green, the
   // edge of a pond): the step would run on with the old one's resistance past the seam, up
-  // to its whole length (up to 50 cm), so where the seam fell inside a step moved the rest by
-  // centimetres (issue 22's sample: 3.6 cm against the 1e-13 reference). The step ends at
-  // the seam instead, under the constant acceleration it was taken with (also a step that
-  // stops: the motion holds up to the stop), and the next starts there on the new
-  // material. The seam is found by bisection on the ground's material along the way (the
+  // to its whole length (up to 50 cm), so where the seam falls inside a step would move the
+  // rest by centimetres (3.6 cm against the 1e-13 reference in a random-launch sample). The
+  // step ends at the seam instead, under the constant acceleration it was taken with (also
+  // a step that stops: the motion holds up to the stop), and the next starts there on the
+  // new material. The seam is found by bisection on the ground's material along the way (the
   // faces of two materials need not share an edge: one may overlap the other): 9 halvings
   // of a step of at most 50 cm place it within about 1 mm. Only a step that changes
   // material pays for it (about one in a shot).
@@ -646,9 +645,9 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
       if (gm <= kLeaveGap) {
         // Onto the new face, as a step's end is; across a concave bend (gm < 0) where the
         // ball meets the new face's plane, before the seam: lifted onto it at the seam with
-        // the speed it had gained below it, a ball rocking in a hollow of two materials gained
-        // ~g·1 mm a crossing, as much as its motion at 0.1 m/s, and never came to rest (a
-        // random-world soak finding, seed 11 world 2355).
+        // the speed it had gained below it, a ball rocking in a hollow of two materials would
+        // gain ~g·1 mm a crossing, as much as its motion at 0.1 m/s, and never come to rest
+        // (random-world soak).
         const double t_bend = gm < 0.0 ? time_to_plane(at, r, p, v, a, hi) : -1.0;
         double lift = 0.0;
         if (t_bend >= 0.0) {
@@ -659,9 +658,9 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
           // a face the ball would meet past the seam is not in its way, it turns onto the new
           // material here first. Two faces across a seam that are coplanar up to round-off
           // leave the ball nanometres under the new one's plane; the sweep from just off the
-          // face then met that same face centimetres past the seam, and the step ran there on
-          // the old material's resistance (issue 22's sample, seed 3 launch 852: a roll from
-          // the fairway across a corner of rough rested 2 cm from the 1e-13 reference).
+          // face then meets that same face centimetres past the seam, and a step ended there
+          // would run on the old material's resistance (a roll from the fairway across a
+          // corner of rough would rest 2 cm from the 1e-13 reference).
           SurfaceContact first;
           const Vec3 chord = p1 - p;
           const double seam_fraction = (pm - p).dot(chord) / chord.squaredNorm();
@@ -674,8 +673,8 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
         s.t += hi;
         set_rolling(s, pm, vm, at.normal, r);
         // Back and forth across a seam that is also the edge of a valley (both faces of
-        // another material): held there as at any valley's edge below (a random-world soak
-        // finding: 35 s to the step limit, every crossing taken here and none counted).
+        // another material): held there as at any valley's edge below (uncounted, a ball in
+        // the random-world soak takes every crossing here for 35 s to the step limit).
         if (at.normal != n && count_valley_crossing(s, n, at.normal) && (v + a * hi).dot(at.normal) < 0.0 &&
             enter_crease(s, n, at.normal)) {
           return crease_step(m, s, until);
@@ -686,13 +685,13 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
     }
   }
   if (under.normal != n && gap < 0.0) {
-    // A concave bend inside the step (a bowl's facets rise ahead of the ball). The step ran
-    // on along its start's plane, below the next facet's: put back onto the ground at its
-    // end, the ball rose by the gap with the speed it had gained along the lower plane, and
-    // every step up a faceted curve gained that potential energy (a ball in a faceted bowl
-    // rocked at ~2 m/s to the shot's 300 s: random-world soak, seed 14 world 655, seed 16
-    // world 619). The step ends where the ball meets the next facet's plane instead, as a
-    // sweep ends it at a steeper bend, and turns into it there.
+    // A concave bend inside the step (a bowl's facets rise ahead of the ball). Run on along
+    // its start's plane, below the next facet's, and put back onto the ground at its end, the
+    // ball would rise by the gap with the speed it had gained along the lower plane, and
+    // every step up a faceted curve would gain that potential energy (in the random-world
+    // soak a ball in a faceted bowl rocks at ~2 m/s to the shot's 300 s). The step ends where
+    // the ball meets the next facet's plane instead, as a sweep ends it at a steeper bend,
+    // and turns into it there.
     const double t_bend = time_to_plane(under, r, p, v, a, step_t);
     if (t_bend >= 0.0) {
       const Vec3 at = position_after(t_bend);
@@ -714,8 +713,8 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   p1 -= gap * under.normal;
   if (under.normal != n) {
     // Rolling back and forth across the same edge between two faces: a valley whose faces
-    // are each too steep to hold the ball but gentle enough to roll on (a soak finding: it
-    // crept along the valley for a minute to the time limit). Held by both, it rolls along
+    // are each too steep to hold the ball but gentle enough to roll on (left alone it creeps
+    // along the valley for a minute to the time limit). Held by both, it rolls along
     // their crease line instead, and rests where that line is flat enough.
     if (count_valley_crossing(s, n, under.normal) && v1.dot(under.normal) < 0.0 && enter_crease(s, n, under.normal)) {
       s.t += step_t;

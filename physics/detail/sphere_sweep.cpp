@@ -47,7 +47,7 @@ bool sphere_triangle_sweep(const Vec3& from, const Vec3& motion, double radius, 
   // The centre's distance to the triangle's plane is linear along the sweep: when both ends
   // are farther than the radius on the same side, no point of the path comes within reach
   // of the plane, let alone of the triangle. Most candidates of a sweep end here, before the
-  // closest-point search (issue 22: a sweep's triangles are ~4 m boxes, the ball's reach cm).
+  // closest-point search (a sweep's triangles are ~4 m boxes, the ball's reach cm).
   // Compared squared (|s| > r·|cross| as s² > r²·|cross|²), so no square root is waited for.
   {
     const double s_from = cross.dot(from - a), s_to = s_from + cross.dot(motion);
@@ -73,8 +73,8 @@ bool sphere_triangle_sweep(const Vec3& from, const Vec3& motion, double radius, 
     // A sphere already reaching the plane at the start (t < 0) touches it at once: the
     // closest-point test above says so too, but only up to rounding. A ball placed exactly
     // on the plane (its centre r off it) and moving into it could pass both tests by an ulp
-    // each (s0 a hair under r here, the distance a hair over r there) and the face was missed
-    // entirely: a launch along a slope passed 7 mm into it (test_world.cpp).
+    // each (s0 a hair under r here, the distance a hair over r there) and miss the face
+    // entirely: a launch along a slope would pass 7 mm into it (test_world.cpp).
     const double t = std::max((s0 - side * radius) / -ds, 0.0);
     if (t <= 1.0) {
       const Vec3 q = from + t * motion - side * radius * n;

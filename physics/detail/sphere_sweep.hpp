@@ -1,7 +1,7 @@
 // Exact time of first contact of a moving sphere with a triangle: the narrow phase of the
 // world's sweeps. Bullet's BVH picks the candidate triangles; this replaces its per-triangle
-// GJK conservative advancement, which was the largest single cost of a whole shot (profile
-// in README "Performance"), with closed-form face, edge and corner tests.
+// GJK conservative advancement, which would be the largest single cost of a whole shot (profile
+// in docs/performance.md), with closed-form face, edge and corner tests.
 #pragma once
 
 #include "physics/math.hpp"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every class of bad input of issue 5 exits 2 with a message naming where (file:line, flag
+# Every class of bad input exits 2 with a message naming where (file:line, flag
 # or key) and the allowed range, prints nothing on stdout and leaves no output file.
 set -euo pipefail
 bin="$1"
@@ -68,7 +68,7 @@ expect_bad "fit bad target" "--target spin=30000rpm|20000 rpm" -- fit golf/drive
 expect_bad "fit missing unit" "--target ball_speed=150|missing unit" -- fit golf/driver --target ball_speed=150
 expect_bad "regress missing case" "$tmp/none.toml" -- regress "$tmp/none.toml"
 
-# One rule for empty values, repeated keys, ignored flags and partial launches (issue 20).
+# One rule for empty values, repeated keys, ignored flags and partial launches.
 expect_bad "empty --world" "--world|an empty value" -- flight --ball-speed 160mph --launch-angle 10deg --spin 2500rpm --world ""
 expect_bad "empty --spin-axis" "--spin-axis|an empty value" -- flight --ball-speed 160mph --launch-angle 10deg --spin 2500rpm --spin-axis ""
 expect_bad "empty --plot" "--plot|an empty value" -- derby --plot ""

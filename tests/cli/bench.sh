@@ -17,7 +17,7 @@ for k in ("golf_shots_per_s", "baseball_shots_per_s", "baseline_golf_shots_per_s
     assert k in j, f"missing key {k}"
 for k in ("golf_us_per_shot", "golf_us_per_shot_flat", "golf_us_per_shot_tight", "bot_round_ms", "derby_ms"):
     assert j[k] > 0, f"{k} = {j[k]}"
-# Accuracy at the default tolerances is a contract (issue 22): carry within 4 mm of the reference.
+# Accuracy at the default tolerances is a contract: carry within 4 mm of the reference.
 assert j["carry_error_m"] < 0.004, j["carry_error_m"]
 for k in ("golf_shots_per_s", "golf_shots_per_s_convex_sweep", "exact_sweep_speedup", "baseball_shots_per_s", "baseline_golf_shots_per_s", "speedup_vs_baseline"):
     assert j[k] > 0, f"{k} = {j[k]}"
@@ -33,7 +33,7 @@ for club, yd in (("driver", 275), ("7-iron", 172), ("pw", 136)):
     assert j[f"baseline_carry_error_m_{club}"] <= j["baseline_carry_error_m"]
 PY
 "$bin" bench --quick | grep -q "impact solves/s" || fail "table output"
-# The game window's frame (issue 19): measured when there is a display, else absent with a
+# The game window's frame: measured when there is a display, else absent with a
 # note saying why. Under Xvfb it is a positive number of ms.
 python3 - "$out" <<'PY' || fail "window frame key"
 import json, sys

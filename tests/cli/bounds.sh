@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Resource bounds (issue 9): absurd sizes (10^9 m/s, 10^9 rpm, a sweep of 10^9 points, a
+# Resource bounds: absurd sizes (10^9 m/s, 10^9 rpm, a sweep of 10^9 points, a
 # 10^9-pixel-wide image) are refused before any work starts: exit 2 within seconds, the
 # limit named on stderr, nothing on stdout, no output file.
 set -euo pipefail

@@ -15,8 +15,8 @@ trap cleanup EXIT
 start_server() {
   local name="$1"; shift
   # The files exist before the server does: the background child opens its redirections when
-  # it is scheduled, and a sed of a file not yet there failed the script under set -e (a CI
-  # run of 2026-11-27: "sed: can't read .../one.err").
+  # it is scheduled, and a sed of a file not yet there fails the script under set -e
+  # ("sed: can't read .../one.err").
   : >"$tmp/$name.out"
   : >"$tmp/$name.err"
   "$bin" connect --headless --port 0 "$@" >"$tmp/$name.out" 2>"$tmp/$name.err" &

@@ -41,8 +41,8 @@ PY
 
 # Baseball, thinner air goes farther; wind from --set. The air is compared on flat ground
 # (--world none): the ballpark's bounds end at 130 m, and Denver's 450 ft leaves the world
-# there (it once "landed" at 137 m, past the bounds, inside a step whose contact search ran
-# before the bounds check).
+# there (a step whose contact search ran before the bounds check would let it "land" at
+# 137 m, past the bounds).
 park=$("$bin" flight --sport baseball --ball-speed 103mph --launch-angle 28deg --spin 2000rpm --json)
 sea=$("$bin" flight --sport baseball --ball-speed 103mph --launch-angle 28deg --spin 2000rpm --world none --json)
 den=$("$bin" flight --sport baseball --ball-speed 103mph --launch-angle 28deg --spin 2000rpm --world none \

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hostile outputs and arguments (issue 20): every output goes through the one atomic writer.
+# Hostile outputs and arguments: every output goes through the one atomic writer.
 # Symlinks are written through (the link stays), the mode is kept, a device is written in
 # place (never replaced), an output that is the input is refused, a file-size limit or a
 # full or closed stdout is an error (exit 2) that keeps the old file and leaves no temporary;
@@ -81,7 +81,7 @@ if [ -e /dev/full ]; then  # help and version are output too
 fi
 
 # No output replaces a file the command read, however it is named: the course, the world's
-# mesh behind a scenario, the scenario under play --screenshot (the second attack, issue 20).
+# mesh behind a scenario, the scenario under play --screenshot.
 cp "$SWEETSPOT_ROOT/assets/courses/links.toml" c.toml; cp c.toml c.before; ln -s c.toml c_as.png
 expect_rc 2 "input file of this command" -- "$bin" round c.toml --plot c_as.png
 cmp -s c.toml c.before || fail "round --plot replaced the course"
@@ -114,7 +114,7 @@ expect_rc 2 "drop B" -- "$bin" sweep s.toml --e 0.7:0.8:1 --mu 0.3:0.4:2
 expect_rc 2 "--set impact.mu" -- "$bin" sweep s.toml "${grid[@]}" --set impact.mu=0.5
 expect_rc 2 "out of range" -- "$bin" shot golf/driver --set swing.speed=1e-300mph
 
-# A file name that is not UTF-8 does not break the JSON writer (was: exit 4).
+# A file name that is not UTF-8 does not break the JSON writer.
 cp s.toml "$(printf 'd\xff.toml')"
 expect_rc 0 "" -- "$bin" shot "$(printf 'd\xff.toml')" --json
 python3 -c 'import json,sys; json.load(open("out.txt"))' || fail "--json output is not JSON"

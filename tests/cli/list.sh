@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `sweetspot list`: every built-in scenario of issue 5, one line each with a description.
+# `sweetspot list`: every built-in scenario, one line each with a description.
 set -euo pipefail
 bin="$1"
 out=$("$bin" list)

@@ -94,8 +94,8 @@ for f in sys.argv[1:]:
 PY
 
 # A course's `pin` moves the cup itself, not just the target: with hole 1's pin moved 4 m
-# short of the world's own (still on the green) the bots hole out there. Before, the cup
-# stayed at the world's pin and every putt rolled over the moved one until the pick-up.
+# short of the world's own (still on the green) the bots hole out there (with the cup left
+# at the world's pin, every putt would roll over the moved one until the pick-up).
 sed '0,/^tee = \["0m", "0m"\] .*/s//tee = ["0m", "0m"]\npin = ["150m", "0m"]/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$plot_dir/moved.toml"
 grep -q '^pin = \["150m"' "$plot_dir/moved.toml" || fail "the moved-pin course was not made"
 for seed in 1 2 3; do

@@ -77,7 +77,7 @@ set +e
 "$bin" shot golf/driver --json --csv >/dev/null 2>&1; rc=$?
 set -e
 [ $rc -eq 2 ] || fail "--json --csv accepted (exit $rc)"
-# world.ball_position is measured from the world's origin (was: the origin's x/z ignored).
+# world.ball_position is measured from the world's origin, its x and z included.
 wdir=$(mktemp -d); trap 'rm -rf "$wdir"' EXIT
 printf 'usemtl fairway\nv -200 0 -100\nv -200 0 100\nv 600 0 100\nv 600 0 -100\nf 1 2 3\nf 1 3 4\n' > "$wdir/p.obj"
 printf 'sport = "golf"\nmesh = "p.obj"\n' > "$wdir/at0.toml"

@@ -17,7 +17,7 @@ for scenario in golf/driver baseball/home-run; do
   "$check" "$out" 1280 800
   [ -n "${SWEETSPOT_GAME_ARTIFACTS:-}" ] && cp "$out" "$SWEETSPOT_GAME_ARTIFACTS/" || true
 done
-# A small window (issue 19): one sidebar beside the 3D view, which keeps half the window.
+# A small window: one sidebar beside the 3D view, which keeps half the window.
 small="$work/small.png"
 xvfb-run -a -s "-screen 0 1280x800x24" "$bin" play golf/pw --frames 30 --width 800 --height 600 --screenshot "$small" \
   > "$work/log.txt" 2>&1 || { cat "$work/log.txt"; exit 1; }
@@ -31,10 +31,10 @@ set -e
 [ "$rc" -eq 2 ] || { echo "expected exit 2 for an unknown scenario, got $rc"; cat "$work/bad.txt"; exit 1; }
 grep -q "no-such-scenario" "$work/bad.txt"
 # Headless (no DISPLAY): says so, prints the table, exit 0; it writes no file unless
-# --screenshot names one (issue 21: it used to drop sweetspot-play.png in the folder).
+# --screenshot names one (no sweetspot-play.png dropped in the folder it runs in).
 mkdir "$work/quiet"
 (cd "$work/quiet" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play golf/7-iron > ../headless.txt 2> ../headless.err)
-# The fallback is said on stderr; stdout holds only the shot (issue 20: a refused run prints nothing there).
+# The fallback is said on stderr; stdout holds only the shot (a refused run prints nothing there).
 grep -q "no display" "$work/headless.err"
 if grep -q "no display" "$work/headless.txt"; then echo "the fallback note went to stdout"; exit 1; fi
 grep -qi "carry" "$work/headless.txt"

@@ -348,7 +348,7 @@ TEST_CASE("no camera looks from under the ground: framings and a mouse orbit are
       CHECK(c.eye.y() >= ground + 0.3 - 1e-9);
     }
   }
-  // A camera dragged 5 m under the turf (what a 40 px mouse drag used to do) comes back up
+  // A camera dragged 5 m under the turf (where a 40 px mouse drag can put it) comes back up
   // to 1 m above it, still looking at its target.
   Camera under = scene.camera(CameraKind::Behind, 0.0, 640, 360);
   const Vec3 target = under.target;

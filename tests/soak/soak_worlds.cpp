@@ -1,4 +1,4 @@
-// Soak of random worlds (issue 20): seeded random heightfields with creases (V ditches of
+// Soak of random worlds: seeded random heightfields with creases (V ditches of
 // random depth, width and direction), steps and bumps, random surfaces per cell (fairway,
 // rough, sand, green, water), and random golf launches on them, chips and putts to drives.
 // Every shot must end in a named reason other than the step limit (rest, in the hole, out of
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
           why = "a non-finite sample";
           break;
         }
-        // The issue's criterion: the shot ends above the ground (a rest on or over the
+        // The criterion: the shot ends above the ground (a rest on or over the
         // surface, an exit from the world's box not from under it).
         double ground = 0.0;
         if (&p == &t.samples.back() && t.summary.end != EndReason::InCup &&

@@ -1,8 +1,8 @@
-// Seeded random golf worlds and shots (issue 20's soak): heightfields with creases (V ditches
-// of random depth, width and direction), a step, bumps and random surfaces per cell, and
-// random launches from putts to drives. tests/soak/soak_worlds flies thousands of them;
-// tests/unit/physics/test_soak_findings.cpp replays the ones that once failed. World i of a
-// seed draws from its own generator, so one world is rebuilt alone, bit for bit.
+// Seeded random golf worlds and shots for the random-world soak: heightfields with creases
+// (V ditches of random depth, width and direction), a step, bumps and random surfaces per
+// cell, and random launches from putts to drives. tests/soak/soak_worlds flies thousands of
+// them; tests/unit/physics/test_soak_findings.cpp replays the hardest. World i of a seed
+// draws from its own generator, so one world is rebuilt alone, bit for bit.
 #pragma once
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // the spin; above it the patch sticks, the tangential impulse is what sticking needs
 // (rigid model: J_t/J_n of the sticking solution; compliant model: the Mindlin spring's
 // largest force ratio), and turning µ up does nothing. Tuning panels and sweeps show it so
-// a flat response to µ explains itself (issue 21).
+// a flat response to µ explains itself.
 #pragma once
 
 #include <string>

@@ -16,7 +16,7 @@ TEST_CASE("shot bench: ours converges to the reference, the 240 Hz baseline does
     const CarryError& c = e.shots[i];
     INFO(c.name);
     CHECK(c.reference_m / 0.9144 == Approx(tour_carry_yd[i]).epsilon(0.1));
-    CHECK(c.ours_error_m < 0.004);  // the default tolerances' contract (physics/flight.hpp, issue 22)
+    CHECK(c.ours_error_m < 0.004);  // the default tolerances' contract (physics/flight.hpp)
     CHECK(c.baseline_error_m > c.ours_error_m);
     CHECK(c.baseline_error_m < 5.0);  // same aero model: the baseline is close, just not converged
     CHECK(c.ours_error_m <= e.ours_error_m);

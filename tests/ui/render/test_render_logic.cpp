@@ -75,8 +75,8 @@ TEST_CASE("default cameras frame the whole shot inside the image", "[render][uni
   const Camera tall = frame_shot(CameraKind::Top, shot, 0.0, h, w);
   CHECK(tall.project(Vec3(200, 0, 0), h, w)->y() < tall.project(Vec3(0, 0, 0), h, w)->y() - 600);
   CHECK(tall.project(Vec3(100, 0, 20), h, w)->x() > tall.project(Vec3(100, 0, -20), h, w)->x());
-  // The drive fills the landscape image along its length (it used to sit in a thin strip
-  // up the middle, 60 % of the frame empty).
+  // The drive fills the landscape image along its length (not a thin strip up the middle,
+  // 60 % of the frame empty).
   {
     double lo = 1e9, hi = -1e9;
     for (const auto& s : shot.samples) {

@@ -1,4 +1,4 @@
-// Every camera on real shots (issue 19): a driver, a wedge and a home run, early in the
+// Every camera on real shots: a driver, a wedge and a home run, early in the
 // flight, at the apex, at the landing and at the end. What must be in the frame is in it:
 // the ball always; the trail drawn so far for the cameras that frame the shot; the landing
 // point once Follow has turned to the landing area.

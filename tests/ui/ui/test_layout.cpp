@@ -1,4 +1,4 @@
-// The lab window's layout (game/ui/layout.hpp, issue 19): at any window size the 3D view is
+// The lab window's layout (game/ui/layout.hpp): at any window size the 3D view is
 // a real share of the window and no panel lies on it.
 #include <catch2/catch.hpp>
 
@@ -41,8 +41,8 @@ TEST_CASE("the 3D view is never under a panel, at any window size", "[ui][unit]"
   CHECK(wide.view.w >= 500);
   CHECK(wide.left.w == kLeftColumn);
   CHECK(wide.right.w == kRightColumn);
-  // 800x600 used to lose the 3D view under cut-off panels: now one sidebar on the right and
-  // half the window for the shot.
+  // 800x600: one sidebar on the right and half the window for the shot, not the 3D view
+  // lost under cut-off panels.
   const PanelLayout narrow = lay_out_panels(800, 600, false);
   CHECK(narrow.kind == LayoutKind::Sidebar);
   CHECK(narrow.view.x == 0);

@@ -70,8 +70,8 @@ TEST_CASE("unknown aero model lists the allowed names; the shipped models valida
   AeroModel bad = test::assets().aero("ferguson2022");
   bad.d0 = -1.0;  // drag pushing forward at low spin
   CHECK(validate_aero_model(bad).find("Cd") != std::string::npos);
-  // Hostile aero files (issue 20): a 1e300 drag sent the state to infinity, a 1e-300 s spin
-  // decay made the steps vanish. Coefficients and decay are bounded by what a ball can be.
+  // Hostile aero files: a 1e300 drag sends the state to infinity, a 1e-300 s spin decay
+  // makes the steps vanish. Coefficients and decay are bounded by what a ball can be.
   bad = test::assets().aero("ferguson2022");
   bad.d0 = 1e300;
   CHECK(validate_aero_model(bad).find("at most 2") != std::string::npos);

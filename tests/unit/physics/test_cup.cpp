@@ -74,9 +74,9 @@ TEST_CASE("a rolling putt drops below the capture speed and rides over above it"
 }
 
 TEST_CASE("the hole judges the speed a putt arrives with, whatever its length", "[cup]") {
-  // A roll step is up to 0.5 m long; the hole used to be judged with the speed at the step's
-  // start, up to 0.15 m/s faster than at the rim on a 10 ft green, so whether a putt dropped
-  // depended on where its steps fell. Holmes's centred capture speed is 1.31 m/s (4 mm of
+  // A roll step is up to 0.5 m long; judged with the speed at the step's start, up to
+  // 0.15 m/s faster than at the rim on a 10 ft green, whether a putt drops would depend on
+  // where its steps fall. Holmes's centred capture speed is 1.31 m/s (4 mm of
   // the ball's path and ~1 % of its speed before the rim's circle are not resolved). Putts up
   // to 3.4 m: `putt` sets the start speed for a constant deceleration, and the air's share,
   // which grows with speed, slows a longer (faster) putt more than that.

@@ -198,8 +198,7 @@ TEST_CASE("spin grows in proportion to club speed for one delivery", "[delivery]
   // add (it turns further while a faster ball is on the face longer in compression): 2.0 ±
   // 0.2 when the speed doubles (the rigid rolling estimate ω = 5/7·V·sin(spin loft)/r is
   // exactly proportional). With the ball's real COR, which falls with impact speed, spin
-  // still rises monotonically with speed for the driver and an iron (issue 15: the old
-  // model's driver spin was lowest at 113 mph, its calibration point).
+  // still rises monotonically with speed for the driver and an iron.
   for (const char* name : {"driver", "7-iron"}) {
     const ClubSpec& c = eq().club(name);
     double last = 0.0;
@@ -407,10 +406,10 @@ TEST_CASE("the bat pose is reported in the bat (mesh) frame", "[delivery][baseba
 }
 
 TEST_CASE("a glancing swing that cannot close on the ball is called a miss", "[delivery][baseball][soak]") {
-  // Found by the soak (shot 53): the bat swung almost sideways (87°), struck near the hands
-  // where it moves slowly, 36 mm under the ball's centre, with the pitch rising at it. The
-  // contact point does not close, which used to surface as the solver's "bodies are
-  // separating"; a player needs to hear that the strike misses.
+  // A soak case: the bat swung almost sideways (87°), striking near the hands where it moves
+  // slowly, 36 mm under the ball's centre, with the pitch rising at it. The contact point
+  // does not close; a player needs to hear that the strike misses, not the solver's "bodies
+  // are separating".
   BatSwing s;
   s.bat_speed = 11.2134;
   s.attack_angle = -0.08988;
@@ -418,7 +417,7 @@ TEST_CASE("a glancing swing that cannot close on the ball is called a miss", "[d
   s.impact_from_tip = 0.56017;
   s.undercut = 0.03571;
   Pitch p;
-  p.speed = 49.0;  // the soak had 50.27 m/s, since refused: pitches are at most 110 mph
+  p.speed = 49.0;  // not the soak's 50.27 m/s, which is refused: pitches are at most 110 mph
   p.approach_angle = -0.23809;
   p.spin = 86.55;
   p.spin_axis = 0.0745;

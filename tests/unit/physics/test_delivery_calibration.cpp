@@ -81,10 +81,11 @@ TEST_CASE("tour deliveries reproduce the TrackMan PGA averages", "[delivery][cal
 }
 
 TEST_CASE("tour deliveries carry and land like the TrackMan PGA averages", "[delivery][calibration][flight]") {
-  // Issue 15's bands on flat ground, standard air: carry within 4 % and landing angle within
-  // 3° of the row, the whole shot predicted from the club's delivery. The driver's carry is
-  // the closest to its edge (−3.97 %, 264.1 yd: 0.1 yd inside): its ball leaves 2.9 % slow,
-  // at this head's free-body smash ceiling for the USGA COR limit (README's physics notes).
+  // The calibration bands on flat ground, standard air: carry within 4 % and landing angle
+  // within 3° of the row, the whole shot predicted from the club's delivery. The driver's
+  // carry is the closest to its edge (−3.97 %, 264.1 yd: 0.1 yd inside): its ball leaves
+  // 2.9 % slow, at this head's free-body smash ceiling for the USGA COR limit (README's
+  // physics notes).
   const EquipmentCatalog& eq = test::assets().equipment();
   const ShotModel model = test::golf_model();
   for (const TrackManRow& row : kRows) {
@@ -116,8 +117,8 @@ TEST_CASE("the contact law carries over to TrackMan's LPGA irons, rows it was ne
                  << rad_to_deg(s.dynamic_loft) << " deg");
     CHECK(mps_to_mph(m.ball_speed) == Approx(row.ball_mph).epsilon(0.03));
     CHECK(radps_to_rpm(m.spin.total) == Approx(row.spin_rpm).epsilon(0.15));
-    // And it carries within the PGA bands' 4 % and lands within their 3°. (Before tour_fit
-    // was refitted with the altitude gain the 4-iron carried −4.9 %; now −3.2 %.)
+    // And it carries within the PGA bands' 4 % and lands within their 3° (the 4-iron carries
+    // −3.2 %).
     const ShotTrajectory t = simulate_shot(model, deliver_golf(eq.ball("tour"), club, s, club.face).launch, false);
     INFO("carry " << t.summary.carry_m / 0.9144 << " yd (" << row.carry_yd << "), landing " << t.summary.landing_angle_deg
                   << " deg (" << row.landing_deg << ")");

@@ -26,7 +26,7 @@ TEST_CASE("physics-side validation names the field and range", "[equipment][vali
   b.inertia = 1.0;
   CHECK_THROWS_WITH(validate_ball(b), Contains("inertia must be in"));
   // A compliant ball softer than 1e5 N/m^1.5 never leaves the face (a hostile balls.toml
-  // launched at 0 mph); 0 means rigid and is allowed.
+  // launches at 0 mph); 0 means rigid and is allowed.
   b = BallSpec{};
   b.compliance.stiffness = 1e-3;
   CHECK_THROWS_WITH(validate_ball(b), Contains("compliance.stiffness") && Contains("too soft"));

@@ -35,8 +35,8 @@ FlightCase baseball_launch(double altitude) {
 }  // namespace
 
 TEST_CASE("tour_fit flies TrackMan's PGA Tour averages: carry, apex and landing angle", "[flight][reference]") {
-  // Issue 15: carry within 4 %, max height within 15 %, landing angle within 3° for every
-  // row of the table (the aero model is fitted to it: this holds the fit).
+  // The calibration bands: carry within 4 %, max height within 15 %, landing angle within 3°
+  // for every row of the table (the aero model is fitted to it: this holds the fit).
   for (const TourFlight& row : kPgaTourFlights) {
     const ShotTrajectory tr = fly(golf_launch(row.ball_mph, row.launch_deg, row.spin_rpm));
     const FlightSummary& s = tr.summary;
@@ -62,8 +62,8 @@ TEST_CASE("tour_fit flies TrackMan's LPGA Tour averages, rows it was not fitted 
 }
 
 TEST_CASE("no spin flies exactly like a vanishing spin: the lift is continuous at zero", "[flight][aero]") {
-  // Issue 15: with ferguson2022's Cl(0) = 0.05 applied along a vanishing spin's direction,
-  // 0 rpm carried 160 m and 1 rpm 212 m.
+  // With ferguson2022's Cl(0) = 0.05 applied along a vanishing spin's direction, 0 rpm would
+  // carry 160 m and 1 rpm 212 m.
   for (const char* model : {"tour_fit", "ferguson2022", "smits_smith1994"}) {
     INFO(model);
     const double none = fly(golf_launch(160.0, 10.0, 0.0, model)).summary.carry_m;
@@ -192,7 +192,7 @@ TEST_CASE("carry converges to a tight-tolerance reference", "[flight][convergenc
   in.settings.abs_tol = 1e-7;
   CHECK(std::abs(fly(in).summary.carry_m - reference) < 0.01);
   in.settings = FlightSettings{};
-  // The defaults are aimed at the 1 cm contract (issue 22): carry within 4 mm.
+  // The defaults are aimed at the 1 cm contract (physics/flight.hpp): carry within 4 mm.
   CHECK(std::abs(fly(in).summary.carry_m - reference) < 0.004);
 }
 
@@ -308,9 +308,9 @@ TEST_CASE("bad flight input throws naming the field", "[flight][input]") {
 }
 
 TEST_CASE("a ball skidding out fast is slowed by the air as well as the turf", "[flight][rest][soak]") {
-  // Found by the soak (shot 440310): launched almost flat at 115 m/s with 8700 rpm of
-  // hook spin, it barely bounced and rolled. With turf resistance alone (0.16 g) it would
-  // roll for over a minute and 3 km; the air takes most of that speed.
+  // A soak shot: launched almost flat at 115 m/s with 8700 rpm of hook spin, it barely
+  // bounces and rolls. With turf resistance alone (0.16 g) it would roll for over a minute
+  // and 3 km; the air takes most of that speed.
   FlightCase in = golf_launch(10.0, 0.0, 0.0);
   in.launch.velocity = Vec3(115.09913326282135, 0.048463062991829557, -27.298052483953086);
   in.launch.spin = Vec3(42.321380599357468, 913.88188691470668, 180.06572973709996);

@@ -1,9 +1,9 @@
-// The integrator's error where a player sees it (issue 22): carry and rest position of whole
-// shots on the golf_hole terrain at the default tolerances against the same model at 1e-13.
-// The defaults were loosened from 1e-8 to what this contract needs; these tests hold them to
-// it. The error is not just the integrator's: a bounce turned into a roll, or a landing on
-// the other side of a facet edge, used to move the rest by up to 25 cm for a 0.1 mm change
-// (the contact layer and the smooth bounce normal made both continuous).
+// The integrator's error where a player sees it: carry and rest position of whole shots on
+// the golf_hole terrain at the default tolerances against the same model at 1e-13. The
+// defaults are as loose as this contract allows; these tests hold them to it. The error is
+// not just the integrator's: a bounce turned into a roll, or a landing on the other side of
+// a facet edge, would move the rest by up to 25 cm for a 0.1 mm change without the contact
+// layer and the smooth bounce normal, which make both continuous.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -80,17 +80,17 @@ TEST_CASE("default tolerances: 1000 random golf launches on golf_hole, carry and
     const Errors e = errors(p, launch);
     INFO("launch " << i << ": " << mph << " mph, " << deg << "°, aim " << aim << "°, " << rpm << " rpm, axis "
                    << axis << "°: carry error " << e.carry << " m, rest error " << e.rest << " m");
-    // Issue 22's contract is 1 cm; measured worst 0.94 mm (95th percentile 0.39 mm) at rel_tol
+    // The contract is 1 cm; measured worst 0.94 mm (95th percentile 0.39 mm) at rel_tol
     // 4e-6 with a position's error judged by the speed (1.7 / 0.8 mm judged by its distance
-    // from the origin), each carry step that crossed a kink of the aero law (S = s_max) taken
+    // from the origin), each carry step that crosses a kink of the aero law (S = s_max) taken
     // again to end there. At 1e-6 with the kink inside a step: 3.5 mm (p95 1.4 mm), and
     // 4.4-8.4 mm on other seeds (7, 19, 5).
     CHECK(e.carry < 0.004);
-    // Issue 22's contract: every rest within 1 cm. Measured worst: 5.9 mm. Before the touch's
-    // contact point was taken at the ball's centre on the arc rather than on the straight
-    // chord that found it, 4 of these launches rested 1.0-1.8 cm from the reference: the
-    // smooth bounce normal was read up to a chord's sag away, at a point that moved with
-    // where the integrator's steps fell.
+    // The contract: every rest within 1 cm. Measured worst: 5.9 mm. The touch's contact point
+    // is taken at the ball's centre on the arc, not on the straight chord that found it: read
+    // there, the smooth bounce normal would be up to a chord's sag away, at a point that
+    // moves with where the integrator's steps fall, and 4 of these launches would rest
+    // 1.0-1.8 cm from the reference.
     CHECK(e.rest < 0.01);
     worst_carry = std::max(worst_carry, e.carry);
     worst_rest = std::max(worst_rest, e.rest);
@@ -102,16 +102,16 @@ TEST_CASE("default tolerances: 1000 random golf launches on golf_hole, carry and
 }
 
 TEST_CASE("default tolerances: launches that once rested over 1 cm from the 1e-13 reference", "[flight][accuracy]") {
-  // Found by the 1 000-launch sample above drawn with other seeds.
+  // From the 1 000-launch sample above drawn with other seeds.
   const Pair p = golf_hole_models();
   const struct {
     const char* why;
     double mph, deg, aim, rpm, axis;
   } cases[] = {
-      // Seed 3, launch 852: a roll from the fairway across a corner of rough whose faces are
-      // coplanar up to round-off. The ball sat 2 nm under the rough's plane at the seam; the
-      // sweep for ground in between met the rough's own face 5 cm on, and the step ran there
-      // on the fairway's resistance: 20.6 mm from the reference, whose step fell otherwise.
+      // A roll from the fairway across a corner of rough whose faces are coplanar up to
+      // round-off. The ball sits 2 nm under the rough's plane at the seam; the sweep for
+      // ground in between meets the rough's own face 5 cm on, and a step run there on the
+      // fairway's resistance rests 20.6 mm from the reference, whose step falls otherwise.
       {"roll across a corner of another material", 100.26578330707068, 10.98401499393778, -2.7315313171085265,
        10477.319547548082, -11.047241195156953},
   };
@@ -124,12 +124,12 @@ TEST_CASE("default tolerances: launches that once rested over 1 cm from the 1e-1
 }
 
 TEST_CASE("a shot is the same wherever the world sits: golf_hole translated by 2 km", "[flight][accuracy][frame]") {
-  // Frame independence (issue 15's properties): the same launches on the course and on a
-  // copy moved 2 km east, 30 m up and 2 km north end at the same place, moved. The step
-  // controller judges a position's error by the ball's speed, not by its distance from the
-  // origin; when it did, the copy's steps fell elsewhere and its rests moved by up to 3.2 mm
-  // (carries 3.2 mm). Measured now: carries equal, rests within 8 µm (round-off in the
-  // moved mesh's coordinates).
+  // Frame independence: the same launches on the course and on a copy moved 2 km east, 30 m
+  // up and 2 km north end at the same place, moved. The step controller judges a position's
+  // error by the ball's speed, not by its distance from the origin; judged by the distance,
+  // the copy's steps would fall elsewhere and its rests move by up to 3.2 mm (carries
+  // 3.2 mm). Measured: carries equal, rests within 8 µm (round-off in the moved mesh's
+  // coordinates).
   const WorldDescription& d0 = test::assets().world("golf_hole")->description();
   const Vec3 shift(2000.0, 30.0, 2000.0);
   WorldDescription d1 = d0;

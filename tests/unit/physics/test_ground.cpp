@@ -52,7 +52,7 @@ TEST_CASE("an oblique bounce that grips leaves the ball rolling (v = ωR) and lo
 
 TEST_CASE("the closed-form bounce is the impact solver's rigid Coulomb impulse with the ground as an infinite mass",
           "[ground][bounce][property]") {
-  // bounce_on_surface solves the sphere-on-plane impulse by scalar formulas (issue 22); the
+  // bounce_on_surface solves the sphere-on-plane impulse by scalar formulas; the
   // general solver (physics/impact.cpp) is the reference: same contact kind, same velocity
   // and spin to rounding, over grip and slip, any spin, slope and restitution curve.
   const BallProperties ball = golf_ball_properties();
@@ -140,8 +140,8 @@ TEST_CASE("the crater tilt: Penner's at his reference, linear in speed, none for
 
 TEST_CASE("a spinless ball never bounces backwards off flat ground; backspin can bring it back",
           "[ground][crater][property]") {
-  // The crater's far wall can stop a ball, not throw it back (issue 15: a spinless 70°
-  // landing at 26 m/s used to come to rest 10 m behind where it landed).
+  // The crater's far wall can stop a ball, not throw it back (thrown back, a spinless 70°
+  // landing at 26 m/s would come to rest 10 m behind where it landed).
   const BallProperties ball = golf_ball_properties();
   for (const SurfaceMaterial& m : test::assets().materials()) {
     if (m.kind == SurfaceKind::Water || m.kind == SurfaceKind::Decoration) continue;
@@ -204,7 +204,7 @@ TEST_CASE("surface validation names the material, the field and its range", "[gr
 }
 
 TEST_CASE("a skidding ball on a side slope is pulled down it before it grips", "[ground][skid]") {
-  // The slope acts on the ball in the skid as in the roll (issue 15: the skid ignored it).
+  // The slope acts on the ball in the skid as in the roll.
   const BallProperties ball = golf_ball_properties();
   auto side_drift = [&](double slope_deg) {
     struct Tilted final : Terrain {

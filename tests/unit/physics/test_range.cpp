@@ -38,7 +38,7 @@ TEST_CASE("refusals name the field, the value and the range in SI", "[range]") {
   CHECK(range_refusal("swing.speed", 120.0, Range{0.0, 90.0, true}, "m/s") ==
         "swing.speed = 120 m/s is out of range (allowed (0, 90] m/s)");
   CHECK(range_refusal("impact.e", 0.5, Range{0.0, 1.0}, "").empty());
-  // One-sided ranges read as bounds, not intervals to infinity (issue 20's attack: "[0, inf]").
+  // One-sided ranges read as bounds, not intervals to infinity (never "[0, inf]").
   CHECK(range_text(Range{}, "") == "any finite number");
   CHECK(range_text(Range{0.0, std::numeric_limits<double>::infinity(), true}, "m/s") == "> 0 m/s");
   CHECK(range_text(Range{-std::numeric_limits<double>::infinity(), 5.0}, "m") == "<= 5 m");

@@ -1,4 +1,4 @@
-// Roll-out after the carry (issue 15): how far a landing ball runs on the shipped turf, by
+// Roll-out after the carry: how far a landing ball runs on the shipped turf, by
 // landing angle, speed, spin and firmness, against what tour shots and greens do.
 #include <catch2/catch.hpp>
 
@@ -58,7 +58,7 @@ TEST_CASE("backspin shortens the run; a spinless ball always runs forward", "[gr
   for (double angle : {20.0, 45.0, 70.0, 85.0}) {
     INFO(angle << " deg");
     const double none = run_after_landing("fairway", 26.0, angle, 0.0);
-    CHECK(none > 0.0);  // issue 15: a spinless 70° landing at 26 m/s used to finish 10 m short
+    CHECK(none > 0.0);  // a spinless landing runs on, never back behind where it landed
     CHECK(run_after_landing("fairway", 26.0, angle, 3000.0) < none);
   }
 }

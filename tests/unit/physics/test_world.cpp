@@ -55,8 +55,8 @@ TEST_CASE("a world plane gives the same shot as the analytic flat ground", "[wor
 }
 
 TEST_CASE("a two-sided sheet (each triangle twice, opposite windings) is solid from both sides", "[world][input]") {
-  // Hostile-mesh finding (issue 20): with the back copy of a two-sided ground, a ball
-  // lifting off the tee moved into the back face it was touching and every drive ended
+  // A hostile mesh: with the back copy of a two-sided ground, a ball lifting off the tee
+  // moves into the back face it is touching; if that face stopped it, every drive would end
   // at the tee with 0 carry.
   const auto flipped = [](WorldMesh m) {
     for (size_t i = 0; i < m.indices.size(); i += 3) std::swap(m.indices[i + 1], m.indices[i + 2]);
@@ -195,9 +195,9 @@ TEST_CASE("a ball that leaves the world's bounds ends there, also when the same 
           "[world][bounds]") {
   // The ground runs on past the bounds, which end 1.5 m short of where the drive lands
   // (the ball ~1.3 m up there). A step that leaves the bounds and meets the ground inside
-  // one step used to take the touch first: the ball "landed" past the bounds (Denver's
-  // 450 ft home run at 137 m in a ballpark whose bounds end at 130 m), so where a shot
-  // ended depended on where its steps fell.
+  // one step must not take the touch first: the ball would "land" past the bounds (Denver's
+  // 450 ft home run at 137 m in a ballpark whose bounds end at 130 m), and where a shot
+  // ended would depend on where its steps fell.
   const FlightCase drive = golf(167.0, 10.9, 2686.0);
   const double carry = fly(drive, nullptr).summary.carry_m;
   WorldDescription d = plane_world(600.0, 1);
@@ -275,8 +275,8 @@ SurfaceContact ground_at(const World& w, double x) {
 }  // namespace
 
 TEST_CASE("bounce normal: smooth across a gentle facet edge, sharp across a bank", "[world][bounce]") {
-  // Issue 22: a landing a hair either side of an edge between facets 2° apart used to bounce
-  // in directions 2° apart; the smooth surface's normal changes continuously across it.
+  // A landing a hair either side of an edge between facets 2° apart bounces alike, not in
+  // directions 2° apart: the smooth surface's normal changes continuously across it.
   const World gentle(bent_world(2.0));
   const Vec3 left = gentle.bounce_normal(ground_at(gentle, -1e-4)), right = gentle.bounce_normal(ground_at(gentle, 1e-4));
   CHECK((left - right).norm() < 1e-4);
@@ -291,10 +291,10 @@ TEST_CASE("bounce normal: smooth across a gentle facet edge, sharp across a bank
 }
 
 TEST_CASE("hop or roll: the rest moves continuously through the roll threshold", "[flight][bounce][property]") {
-  // Issue 22: a bounce leaving just under roll_speed rolls, just over it hops; the hop used to
-  // skip the roll's resistance for its whole flight and the rest jumped by the hop's length
-  // (25 cm at 5 m/s). With the contact layer, neighbouring launches rest near each other
-  // across every change in the number of bounces.
+  // A bounce leaving just under roll_speed rolls, just over it hops; a hop that skipped the
+  // roll's resistance for its whole flight would move the rest by the hop's length (25 cm
+  // at 5 m/s). With the contact layer, neighbouring launches rest near each other across
+  // every change in the number of bounces.
   const FlatGround ground;
   int flips = 0, previous_bounces = -1;
   Vec3 previous_rest = Vec3::Zero();
@@ -356,9 +356,10 @@ ShotState roll_to_end(const World& world, const ShotModel& model, double x0, dou
 }  // namespace
 
 TEST_CASE("a touch at a seam is on the face under the ball's centre, with that face's material", "[world][bounce]") {
-  // Issue 22: a sweep meeting a fairway and the rough at their shared edge reports one face;
-  // which one depended on the chord that found it, so a landing on the seam took the
-  // fairway's or the rough's bounce with the integrator's tolerance (19 cm apart at rest).
+  // A sweep meeting a fairway and the rough at their shared edge reports one face; which one
+  // depends on the chord that found it, so without the face under the centre a landing on
+  // the seam would take the fairway's or the rough's bounce with the integrator's tolerance
+  // (19 cm apart at rest).
   const World world(seam_world());
   const double r = golf_ball_properties().radius;
   // A sweep straight down onto the fairway's side, then the centre's foot moved across the seam.
@@ -376,9 +377,9 @@ TEST_CASE("a touch at a seam is on the face under the ball's centre, with that f
 }
 
 TEST_CASE("a roll across a seam into the rough: the rest moves continuously with the speed", "[world][roll][property]") {
-  // Issue 22: a roll step (up to 25 cm) used its start's material for its whole length, so
-  // where the fairway/rough seam fell inside a step moved the rest by centimetres (3.6 cm
-  // between two runs 0.3 mm apart at the roll's start). The step now ends at the seam.
+  // A roll step (up to 25 cm) ends at the fairway/rough seam: on its start's material for
+  // its whole length, where the seam falls inside a step would move the rest by centimetres
+  // (3.6 cm between two runs 0.3 mm apart at the roll's start).
   const World world(seam_world());
   const ShotModel model = make_shot_model(golf_ball_properties(), vacuum(), Environment{}, &world);
   const auto rest_x = [&](double x0) {
@@ -395,7 +396,7 @@ TEST_CASE("a roll across a seam into the rough: the rest moves continuously with
     previous = x;
   }
   INFO("largest rest change between starts 1.25 mm apart: " << worst << " m");
-  CHECK(worst < 0.005);  // measured 0.6 mm; 16 cm when the step ran on past the seam
+  CHECK(worst < 0.005);  // measured 0.6 mm; 16 cm with a step that runs on past the seam
 }
 
 TEST_CASE("a ball rolling into a pond sinks where it enters the water", "[world][roll]") {
@@ -427,10 +428,10 @@ WorldDescription concave_bend_world(double lower_deg, double upper_deg, double b
 }  // namespace
 
 TEST_CASE("a ball placed exactly on a slope and moving into it meets it at once", "[world][contact][hostile]") {
-  // The exact sweep's face test and its closest-point test each missed this start by an ulp
+  // This start sits an ulp from both the exact sweep's face test and its closest-point test
   // (the centre a hair under r off the plane for one, the distance a hair over r for the
-  // other): the face was not met at all and a ball launched along the slope passed 7 mm into
-  // it before the next chord found it (sphere_sweep.cpp).
+  // other): missed by both, the face is not met at all and a ball launched along the slope
+  // passes 7 mm into it before the next chord finds it (sphere_sweep.cpp).
   const World world(concave_bend_world(11.6, 14.0, 4.5));
   const double r = golf_ball_properties().radius;
   const Vec3 n1(-std::sin(deg_to_rad(11.6)), std::cos(deg_to_rad(11.6)), 0.0);
@@ -445,13 +446,13 @@ TEST_CASE("a ball placed exactly on a slope and moving into it meets it at once"
 
 TEST_CASE("a ball skimming up a slope meets a steeper facet past a concave bend, not passes through it",
           "[world][contact][hostile]") {
-  // Random-world soak finding (seed 6, world 1556, shot 7): launched at 43 m/s nearly along an
-  // 11.6° slope, the ball skims in hops of ~0.04 s. A chord's straight gap to the slope's plane
-  // crossed zero near the chord's start, the arc came back to that plane only ~2 m on, and the
-  // 14° facet rising past the bend in between was never swept: the centre ended 3.6 cm inside
-  // it. The arc past a chord's touch is swept too (air_step.cpp, sweep_past_touch). Before:
-  // up to 2.1 cm inside over these 96 launches; 7 mm after that fix alone (the touching start
-  // above).
+  // From the random-world soak: launched at 43 m/s nearly along an 11.6° slope, the ball
+  // skims in hops of ~0.04 s. A chord's straight gap to the slope's plane crosses zero near
+  // the chord's start, the arc comes back to that plane only ~2 m on, and the 14° facet
+  // rising past the bend in between is on neither: unswept, the centre would end 3.6 cm
+  // inside it. The arc past a chord's touch is swept too (air_step.cpp, sweep_past_touch).
+  // With neither this sweep nor the touching start above, these 96 launches end up to
+  // 2.1 cm inside; with the touching start alone, 7 mm.
   const double lower = 11.6, upper = 14.0;
   const Vec3 along(std::cos(deg_to_rad(lower)), std::sin(deg_to_rad(lower)), 0.0);
   const Vec3 n1(-std::sin(deg_to_rad(lower)), std::cos(deg_to_rad(lower)), 0.0);

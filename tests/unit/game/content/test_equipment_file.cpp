@@ -119,7 +119,7 @@ TEST_CASE("unknown equipment names list the allowed ones", "[equipment]") {
 
 TEST_CASE("bad equipment files name file, line, entry, key and range", "[equipment][validation]") {
   {
-    // A mesh is a name of assets/meshes, never a path out of the assets (issue 20).
+    // A mesh is a name of assets/meshes, never a path out of the assets.
     ScratchDir s;
     s.replace("clubs.toml", "mesh = \"driver_head\"", "mesh = \"../../../../etc/passwd\"");
     CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("mesh") && Contains("not a mesh name"));

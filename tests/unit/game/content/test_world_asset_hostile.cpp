@@ -1,4 +1,4 @@
-// Hostile world meshes (issue 9): truncated, empty, huge or degenerate OBJ files are rejected
+// Hostile world meshes: truncated, empty, huge or degenerate OBJ files are rejected
 // with a message naming the file, or repaired (missing normals, zero-area triangles); a
 // world whose ground is missing ends shots out of bounds instead of hanging.
 #include <catch2/catch.hpp>
@@ -120,7 +120,7 @@ TEST_CASE("hostile files: a FIFO, a device or a directory is refused before read
 
 namespace {
 // A V-shaped ditch along z at x = 30 m: the ground falls from y = 0 at x = 0 to -depth at the
-// crease and rises again to y = 0 at x = 60 m (the issue's example of a ball falling through).
+// crease and rises again to y = 0 at x = 60 m (a ditch a ball could fall through).
 std::string v_ditch(double depth, double half_width = 30.0) {
   const double a = 30.0 - half_width, b = 30.0 + half_width;
   std::string s = "mtllib w.mtl\nusemtl fairway\n";
@@ -170,7 +170,7 @@ TEST_CASE("hostile world: a ball in a V-shaped crease comes to rest in it, above
 
 TEST_CASE("hostile world: a ball running along a steep trough rolls in it and rests, not 200 000 bounces", "[assets][world][hostile]") {
   // A trough along the line of play (x): walls from z = -w to the floor line at z = 0,
-  // depth h (the attack's 5 m deep, 1 m half-width ditch: 79 deg walls), flat ground before.
+  // depth h (5 m deep with a 1 m half-width: 79 deg walls), flat ground before.
   const TempDir dir;
   for (const double h : {5.0, 10.0, 0.5}) {
     const double w = h == 10.0 ? 10.0 : 1.0;
@@ -199,8 +199,8 @@ TEST_CASE("hostile world: a ball running along a steep trough rolls in it and re
 }
 
 TEST_CASE("hostile OBJ: a NaN corner of a quad is refused, not triangulated away", "[assets][input][hostile]") {
-  // An attack finding: assimp's triangulation dropped the corner and its triangles, leaving
-  // a hole in the ground with only a note about a zero-area triangle.
+  // Triangulated, the corner and its triangles are dropped by assimp, leaving a hole in the
+  // ground with only a note about a zero-area triangle.
   const TempDir dir;
   const std::string obj = dir.write("nanquad.obj", "mtllib w.mtl\nusemtl fairway\nv -30 0 -70\nv -30 0 70\nv 450 nan 70\n"
                                                    "v 450 0 -70\nf 1 2 3 4\n");
@@ -209,8 +209,8 @@ TEST_CASE("hostile OBJ: a NaN corner of a quad is refused, not triangulated away
 
 TEST_CASE("hostile OBJ: a polygon of more than kMaxFaceCorners corners is refused before triangulating",
           "[assets][input][hostile]") {
-  // An attack finding: one 100 000-corner face kept assimp's triangulation busy past the
-  // importer's 120 s limit. The corner count is checked first; 256 corners still load.
+  // One 100 000-corner face keeps assimp's triangulation busy past the importer's 120 s
+  // limit. The corner count is checked first; 256 corners still load.
   const TempDir dir;
   const auto polygon = [&](const std::string& name, unsigned corners) {
     std::string text = "mtllib w.mtl\nusemtl fairway\n";

@@ -85,8 +85,8 @@ TEST_CASE("fielding: fly balls in reach are caught, grounders at an infielder ar
   CHECK(outcome(80.0, 12.0, 0.0, 1500.0, &who) == BattedOutcome::Single);
   CHECK(who == "CF");
   // A 100 mph liner at 16° up the right-centre gap (~360 ft) lands between the fielders and
-  // runs on to the wall: at least a double (the old fixed 90 %-of-release throw made it a
-  // single: no ball in play was ever a double).
+  // runs on to the wall: at least a double (a throw crossing at a fixed 90 % of its release
+  // speed would make it a single, and no ball in play a double).
   const BattedOutcome gap = outcome(100.0, 16.0, 16.0, 2000.0, &who);
   INFO("gap: " << to_string(gap) << " fielded by " << who);
   CHECK((gap == BattedOutcome::Double || gap == BattedOutcome::Triple));

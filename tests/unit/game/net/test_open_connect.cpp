@@ -186,8 +186,8 @@ TEST_CASE("bad numbers are refused with the key and the range", "[net][parser][h
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":[1])")), Catch::Contains("BallData.VLA: not a number"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("VLA":10)")), Catch::Contains("BallData.Speed is missing"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":10,"TotalSpin":-5)")), Catch::Contains("TotalSpin"));
-  // Second attack (issue 20): a shot without its launch angle or any spin was flown as 0,
-  // a fractional shot number truncated, an unknown version or unit accepted.
+  // Refused, not flown as 0, truncated or accepted: a shot without its launch angle or any
+  // spin, a fractional shot number, an unknown version or unit.
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"TotalSpin":2500)")), Catch::Contains("BallData.VLA is missing"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":10)")), Catch::Contains("no spin"));
   CHECK_NOTHROW(parse_open_connect(shot(R"("Speed":100,"VLA":10,"TotalSpin":0)")));  // a knuckler is a spin
@@ -266,7 +266,7 @@ TEST_CASE("club data is compared with our impact model's launch", "[net][table]"
   REQUIRE(p.line.contains("model"));
   const auto& diff = p.line["model"]["difference"];
   INFO(p.line["model"].dump(2));
-  // Our model was fit to that row (DESIGN §4 tolerances: speed 3 %, launch 1.5 deg, spin 10 %).
+  // Our model is fit to that row (DESIGN §4 tolerances: speed 3 %, launch 1.5 deg, spin 10 %).
   CHECK(std::abs(diff["ball_speed_mps"].get<double>()) < 0.03 * mph_to_mps(120.0));
   CHECK(std::abs(diff["vertical_angle_deg"].get<double>()) < 1.5);
   CHECK(std::abs(diff["spin_rpm"].get<double>()) < 0.10 * 7097.0);
@@ -295,7 +295,7 @@ TEST_CASE("a round plays the device's shots from where the ball lies", "[net][ta
 }
 
 TEST_CASE("a message whose closing brace passes the bound is oversized, and the next is whole", "[net][framer][hostile]") {
-  // A fuzz finding: the byte that closed the message was not counted against the bound.
+  // The byte that closes the message counts against the bound too.
   const std::string exact = R"({"DeviceID":")" + std::string(64 - 15, 'x') + R"("})";  // 64 bytes
   REQUIRE(exact.size() == 64);
   MessageFramer f(64);

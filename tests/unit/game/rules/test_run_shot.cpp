@@ -130,7 +130,7 @@ TEST_CASE("values outside what laboratories measure run, with a warning naming t
   const auto mentions = [](const std::vector<std::string>& w, const std::string& what) {
     return std::any_of(w.begin(), w.end(), [&](const std::string& s) { return s.find(what) != std::string::npos; });
   };
-  // Issue 21's example: e = 0.81 on a baseball gives 152 mph without a word.
+  // e = 0.81 on a baseball gives 152 mph: never without a word.
   const auto bat = warnings_of("baseball/line-drive", {"impact.e=0.81"});
   CHECK(mentions(bat, "e = 0.810 is outside the 0.20-0.60 measured for a baseball on a bat"));
   CHECK(mentions(bat, "Nathan 2000"));

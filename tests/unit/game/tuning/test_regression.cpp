@@ -46,7 +46,7 @@ TEST_CASE("regression cases detect drift and --update rewrites only pinned value
 
 
 TEST_CASE("--update rewrites values inside an inline expect table, keeping the table", "[regression][hostile]") {
-  // A hostile-input finding: the whole `expect = { ... }` line became one string.
+  // Hostile input: the whole `expect = { ... }` line must not become one string.
   const Assets& A = test::assets();
   const auto dir = std::filesystem::temp_directory_path() / "sweetspot_regress_inline";
   std::filesystem::remove_all(dir);

@@ -4,8 +4,8 @@
 // and drag can only spend it. A roll step runs along its start's face and is then put onto
 // the ground under its end; on a concave surface made of facets (a bowl, a hollow, the far
 // side of a valley) that ground lies above the step's plane, and lifting the ball onto it
-// for free made energy (random-world soak: balls rocking in faceted bowls to the 300 s
-// limit, issue 15).
+// for free would make energy (random-world soak: balls rocking in faceted bowls to the 300 s
+// limit).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -47,8 +47,8 @@ TEST_CASE("a ball rolling round a faceted bowl spends its energy and comes to re
           "[world][roll][energy]") {
   // A green-speed bowl of 6 m radius of curvature in 0.6 m facets (each bend ~5.7°), the
   // ball set rolling across its side 3.5 m out, 1 m above the bottom: it swings round and
-  // through the bowl crossing hundreds of facet edges. Each step up a facet used to gain the
-  // gap between the step's plane and the next facet.
+  // through the bowl crossing hundreds of facet edges. A step up a facet that is lifted onto
+  // it for free gains the gap between the step's plane and the next facet.
   const World world(faceted_bowl(6.0, 6.0, 20));
   AeroModel still;  // no air: the turf's resistance alone spends the energy
   still.name = "vacuum";
@@ -79,7 +79,7 @@ TEST_CASE("a ball rolling round a faceted bowl spends its energy and comes to re
                   << s.position().transpose() << "; largest gain in a step " << worst_gain << " J/kg");
     CHECK(s.end == EndReason::Rest);
     CHECK(s.t < 60.0);
-    // Before the fix 0.23-0.46 J/kg a step (2-5 cm of height) and the 3 m/s ball rocked to
+    // Lifted for free, 0.23-0.46 J/kg a step (2-5 cm of height), and the 3 m/s ball rocks to
     // the 300 s limit. What is left is a lift of at most ~0.1 mm at the bottom vertex, where
     // eight facets meet and a step can end a hair inside one the ball was not rolling on.
     CHECK(worst_gain < kGravity * 5e-4);
@@ -95,9 +95,9 @@ TEST_CASE("rolling on random terrain spends energy: gains only from a step's end
   // (rolling before and after, no touch or flight in between). A step that ends inside a
   // face at a corner of several faces, where no single bend is met first, is put back onto
   // the ground and its speed pays for the lift down to rest; a ball already at rest cannot
-  // pay, so the gain is bounded by the lift (a few mm: g·3 mm ≈ 0.03 J/kg). Before the fix
-  // 45 of these 18 000 roll steps gained energy, up to 0.43 J/kg (4.4 cm of height); after
-  // it 2, the most 0.0006 J/kg.
+  // pay, so the gain is bounded by the lift (a few mm: g·3 mm ≈ 0.03 J/kg). Lifted for free,
+  // 45 of these 18 000 roll steps gain energy, up to 0.43 J/kg (4.4 cm of height); paid
+  // for, 2, the most 0.0006 J/kg.
   long steps = 0, gains = 0;
   double worst = 0.0;
   for (long w = 0; w < 200; ++w) {

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
-#include <regex>
 #include <sstream>
 
 namespace sweetspot {
@@ -72,9 +71,28 @@ std::string toml_array(const std::string& text) {
 /// True for text that is a finite number and nothing else ("0.808", "-1e-3"): TOML takes it
 /// bare. Quantities with a unit ("30mph") stay strings.
 bool is_plain_number(const std::string& text) {
-  // TOML's integer/float grammar: [+-] (0 | [1-9][0-9]*) [.[0-9]+] [(e|E)[+-][0-9]+].
-  static const std::regex kTomlNumber(R"([+-]?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?)");
-  return std::regex_match(text, kTomlNumber) && std::isfinite(std::strtod(text.c_str(), nullptr));
+  // TOML's integer/float grammar: [+-] (0 | [1-9][0-9]*) [.[0-9]+] [(e|E)[+-][0-9]+], read by
+  // hand (GCC 12's <regex> trips -Wmaybe-uninitialized in the sanitizer build).
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+    return i - from;
+  };
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  const std::size_t int_start = i;
+  const std::size_t int_digits = digits();
+  if (int_digits == 0 || (int_digits > 1 && text[int_start] == '0')) return false;
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    if (digits() == 0) return false;
+  }
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == text.size() && std::isfinite(std::strtod(text.c_str(), nullptr));
 }
 
 std::string toml_value(const DocEntry& e) {

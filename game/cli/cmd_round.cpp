@@ -15,8 +15,10 @@
 #include "game/content/course_file.hpp"
 #include "game/content/swings_file.hpp"
 #include "game/modes/golf/bot.hpp"
+#include "game/modes/golf/golf_group.hpp"
 #include "game/render/dispersion_plot.hpp"
 #include "game/report/round_json.hpp"
+#include "game/report/round_save.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
@@ -25,56 +27,102 @@ namespace {
 
 struct RoundOptions {
   std::string course = "links";
-  std::string bot;
+  std::vector<std::string> bots;
+  std::vector<int> handicaps;
+  std::string format = "stroke";
+  double gimme = -1.0;  // m; < 0: the format's default
+  bool calm = false;
   std::uint64_t seed = 1;
   std::string swings;
   std::string mode = "stroke";
   int balls = 5;
   bool json = false;
   std::string plot;
+  std::string save, resume;
+  int stop_after = 0;  // holes; 0: the whole round
 };
 
-// The next stroke: from the script while it lasts, else the bot's.
-std::optional<StrokeInput> next_stroke(const GolfRound& round, const std::vector<ScriptedStroke>& script, std::size_t& at,
-                                       GolfBot* bot, const GolfBot& caddie) {
-  if (at < script.size()) {
-    const ScriptedStroke& s = script[at++];
-    StrokeInput in;
-    in.club = s.club ? *s.club : (round.lie() == "green" ? "putter" : caddie.suggest(round.to_pin(), round.teed()));
-    in.meter = s.meter;
-    in.aim = s.aim;
-    return in;
+// The players: the scripted one first (a swings file), then one per --bot; names say the
+// skill, numbered when two share one.
+std::vector<GolfPlayer> round_players(const RoundOptions& o) {
+  std::vector<GolfPlayer> players;
+  if (!o.swings.empty()) players.push_back({"swings " + o.swings, o.bots.empty() ? "tour" : o.bots.front(), true, 0});
+  const std::size_t first_bot = o.swings.empty() ? 0 : 1;  // with a script, the first --bot plays on after it
+  for (std::size_t i = first_bot; i < o.bots.size(); ++i) players.push_back({o.bots[i] + " bot", o.bots[i], false, 0});
+  if (players.empty()) players.push_back({"tour bot", "tour", false, 0});
+  for (std::size_t i = 0; i < players.size(); ++i) {
+    int same = 0, before = 0;
+    for (std::size_t k = 0; k < players.size(); ++k) {
+      if (players[k].name != players[i].name) continue;
+      ++same;
+      if (k < i) ++before;
+    }
+    if (same > 1) players[i].name += " " + std::to_string(before + 1);
   }
-  if (bot != nullptr) return bot->plan(round);
-  return std::nullopt;
+  if (!o.handicaps.empty() && o.handicaps.size() != players.size())
+    throw InputError("--handicap: give one per player (" + std::to_string(players.size()) + "), not " +
+                     std::to_string(o.handicaps.size()));
+  for (std::size_t i = 0; i < o.handicaps.size(); ++i) players[i].handicap = o.handicaps[i];
+  return players;
+}
+
+GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
+  if (!o.resume.empty()) return resume_round(assets, read_round_save(o.resume));
+  Course course = load_course(assets, o.course);
+  if (o.calm)
+    for (CourseHole& h : course.holes) {
+      h.wind_speed = 0.0;
+      h.wind_toward = 0.0;
+    }
+  GolfOptions options;
+  options.format = golf_format(o.format);
+  options.gimme_m = o.gimme >= 0.0 ? o.gimme : options.format == GolfFormat::Match ? kMatchGimme : 0.0;
+  options.seed = o.seed;
+  return GolfGroup(assets, course, round_players(o), options);
 }
 
 int play_stroke_round(const Assets& assets, const RoundOptions& o) {
-  const std::string skill = o.bot.empty() ? "tour" : o.bot;
-  GolfRound round(assets, load_course(assets, o.course), golfer_skill(skill));
+  GolfGroup group = new_group(assets, o);
+  const GolfOptions& options = group.options();
   std::vector<ScriptedStroke> script;
   if (!o.swings.empty()) script = load_swings(o.swings);
-  GolfBot bot(assets, golfer_skill(skill), o.seed);
-  GolfBot* player = o.swings.empty() || !o.bot.empty() ? &bot : nullptr;
+  const bool scripted_plays_on = !o.bots.empty();
   std::size_t at = 0;
-  while (!round.finished()) {
-    const std::optional<StrokeInput> in = next_stroke(round, script, at, player, bot);
-    if (!in) break;
-    try {
-      round.play(*in);
-    } catch (const InputError& e) {
-      if (at > 0 && at <= script.size()) throw InputError(script[at - 1].where + ": " + e.what());
-      throw;
+  while (!group.finished()) {
+    if (o.stop_after > 0 && group.hole_index() >= static_cast<std::size_t>(o.stop_after)) break;
+    const bool script_turn = !o.swings.empty() && group.to_play() == 0;
+    if (script_turn && at < script.size()) {
+      const ScriptedStroke& s = script[at++];
+      const GolfRound& r = group.round(0);
+      StrokeInput in;
+      in.club = s.club ? *s.club : (r.lie() == "green" ? "putter" : group.caddie(0).suggest(r.to_pin(), r.teed()));
+      in.meter = s.meter;
+      in.aim = s.aim;
+      try {
+        group.play(in);
+      } catch (const InputError& e) {
+        throw InputError(s.where + ": " + e.what());
+      }
+    } else if (script_turn && !scripted_plays_on) {
+      break;  // the script ran out and no bot plays on
+    } else {
+      group.play_bot();
     }
   }
-  const std::string name = o.swings.empty() ? skill + " bot" : "swings " + o.swings;
+  if (!o.save.empty()) {
+    // The course by its file, found again from wherever the save is resumed.
+    write_file_atomic(o.save, json_text(round_save_json(group, std::filesystem::absolute(group.course().source).string())) + "\n",
+                      OverInput::Allow);
+  }
   if (!o.plot.empty()) {
     std::vector<StrokeRecord> strokes;
-    for (const HoleCard& h : round.card()) strokes.insert(strokes.end(), h.shots.begin(), h.shots.end());
-    write_dispersion_plot(strokes, name, display_units(assets.sport("golf"), UnitSystem::Imperial), o.plot);
+    for (const HoleCard& h : group.round(0).card()) strokes.insert(strokes.end(), h.shots.begin(), h.shots.end());
+    write_dispersion_plot(strokes, group.players()[0].name, display_units(assets.sport("golf"), UnitSystem::Imperial), o.plot);
   }
-  if (o.json) std::cout << json_text(round_json(round, name, o.seed)) << "\n";
-  else std::cout << round_table(round, name);
+  if (o.json) std::cout << json_text(group_json(group)) << "\n";
+  else if (group.players().size() == 1 && options.format == GolfFormat::Stroke)
+    std::cout << round_table(group.round(0), group.players()[0].name);
+  else std::cout << group_table(group);
   return 0;
 }
 
@@ -89,7 +137,7 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
   Course one = course;
   one.holes = {hole};
   one.holes[0].number = 1;
-  const std::string skill = o.bot.empty() ? "tour" : o.bot;
+  const std::string skill = o.bots.empty() ? "tour" : o.bots.front();
   GolfBot bot(assets, golfer_skill(skill), o.seed);
   nlohmann::json balls = nlohmann::json::array();
   double best = ctp ? 1e9 : 0.0;
@@ -130,12 +178,19 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
 RunFn setup_round(CLI::App& sub) {
   auto o = std::make_shared<RoundOptions>();
   sub.add_option("course", o->course, "a course of assets/courses (default links) or a .toml file");
-  sub.add_option("--bot", o->bot, "golfer skill: tour, scratch, amateur or beginner (default tour)");
+  sub.add_option("--bot", o->bots, "a bot player of this skill: tour, scratch, amateur or beginner; repeat for up to 4 players (default one tour bot)");
+  sub.add_option("--handicap", o->handicaps, "course handicap per player in order, 0..54 (default 0)");
+  sub.add_option("--format", o->format, "stroke (default), match (two players), stableford or skins");
+  sub.add_option("--gimme", o->gimme, "putts this close (m) are conceded, 0..3 (default: 0.6 in match play, else off)");
+  sub.add_flag("--calm", o->calm, "no wind on any hole (default: the course's wind, else drawn from the seed)");
   sub.add_option("--seed", o->seed, "seed of the bot's swing errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   sub.add_option("--swings", o->swings, "scripted meter inputs, one [[stroke]] per stroke (TOML)");
   sub.add_option("--mode", o->mode, "stroke (default), ctp (closest to the pin) or long-drive");
   auto* balls = sub.add_option("--balls", o->balls, "balls for ctp and long-drive, 1..100 (default 5)");
   sub.add_flag("--json", o->json, "print the DESIGN §9 JSON");
+  sub.add_option("--save", o->save, "write the round (players, options, every turn) to FILE to resume later");
+  sub.add_option("--stop-after", o->stop_after, "stop once the group has finished this many holes, 1..18 (with --save)");
+  sub.add_option("--resume", o->resume, "go on with a round written by --save (its players, format and options)");
   sub.add_option("--plot", o->plot, "also write the session's dispersion (carry vs side per club) to FILE.png");
   return [o, balls](const Assets& assets) -> int {
     if (o->mode != "stroke" && o->mode != "ctp" && o->mode != "long-drive")
@@ -146,7 +201,21 @@ RunFn setup_round(CLI::App& sub) {
       throw InputError("--balls: a stroke round plays one ball to each cup; --balls is for --mode ctp or long-drive");
     if (!o->plot.empty()) check_png_output(o->plot, "--plot");
     if (o->balls < 1 || o->balls > 100) throw InputError("--balls " + std::to_string(o->balls) + " is out of range (allowed [1, 100])");
-    if (!o->bot.empty()) golfer_skill(o->bot);  // refuse an unknown skill before any work
+    if (!o->resume.empty() && (!o->bots.empty() || !o->handicaps.empty() || o->format != "stroke" || !o->swings.empty() ||
+                               o->calm || o->gimme >= 0.0 || o->mode != "stroke"))
+      throw InputError("--resume: the saved round sets its players, format and options; give none of --bot, --handicap, "
+                       "--format, --gimme, --calm, --swings, --mode");
+    if (o->calm && !o->save.empty()) throw InputError("--calm: a saved round keeps the course's winds; not with --save");
+    if (!o->swings.empty() && !o->save.empty()) throw InputError("--save: a scripted round is replayed from its file; not with --swings");
+    if (o->stop_after < 0 || o->stop_after > 18)
+      throw InputError("--stop-after " + std::to_string(o->stop_after) + " is out of range (allowed [1, 18])");
+    if (o->stop_after > 0 && o->save.empty()) throw InputError("--stop-after: the round stops to be saved; give --save FILE");
+    if (!o->save.empty()) check_output_path(o->save, "--save");
+    for (const std::string& b : o->bots) golfer_skill(b);  // refuse an unknown skill before any work
+    golf_format(o->format);
+    if (o->mode != "stroke" && (o->bots.size() > 1 || o->format != "stroke"))
+      throw InputError("--mode " + o->mode + ": a contest is one bot's; --bot once, no --format");
+    if (o->bots.size() > 4) throw InputError("--bot: a round has at most 4 players, not " + std::to_string(o->bots.size()));
     if (!o->plot.empty() && !o->swings.empty()) refuse_output_over_input(o->plot, o->swings, "--plot");
     return o->mode == "stroke" ? play_stroke_round(assets, *o) : play_contest(assets, *o);
   };

@@ -6,6 +6,7 @@
 
 #include "game/content/toml_file.hpp"
 #include "game/content/world_asset.hpp"
+#include "physics/atmosphere.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -27,6 +28,28 @@ Vec3 ground_at(const WorldAsset& w, double x, double z, const std::string& where
     throw InputError(where + ": " + spot + " lies on " + to_string(kind) + " (allowed: " + names + ")");
   }
   return Vec3(x, hit.point.y(), z);
+}
+
+// Every hole's stroke index given, each of 1..n once; or none given, and then by length (the
+// longest hole index 1), the usual proxy for difficulty when a club has not rated its holes.
+void assign_stroke_index(const TomlFile& f, Course& c, const std::vector<const toml::node*>& given) {
+  const std::size_t n = c.holes.size();
+  if (given.empty()) {
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return c.holes[a].length() > c.holes[b].length(); });
+    for (std::size_t k = 0; k < n; ++k) c.holes[order[k]].stroke_index = static_cast<int>(k + 1);
+    return;
+  }
+  if (given.size() != n) f.fail(*given.front(), "index", "give every hole an index, or none (then by length)");
+  std::vector<bool> seen(n + 1, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int si = c.holes[i].stroke_index;
+    if (si < 1 || static_cast<std::size_t>(si) > n || seen[static_cast<std::size_t>(si)])
+      f.fail(*given[i], "index", "stroke indexes must be 1.." + std::to_string(n) + ", each once");
+    seen[static_cast<std::size_t>(si)] = true;
+  }
 }
 
 }  // namespace
@@ -56,8 +79,9 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
   c.source = path;
   c.name = f.text(f.required(f.root(), "name", "the course's name"), "name");
   int last = 0;
+  std::vector<const toml::node*> index_nodes;
   for (const toml::table* t : f.tables(f.root(), "hole", true)) {
-    f.only_keys(*t, "hole", {"number", "par", "world", "tee", "pin"});
+    f.only_keys(*t, "hole", {"number", "par", "world", "tee", "pin", "index", "wind_speed", "wind_toward"});
     CourseHole h;
     static constexpr Range kNumber{1.0, 18.0};
     h.number = f.whole_number(f.required(*t, "number", "the hole's number, 1-18"), "number", kNumber);
@@ -89,8 +113,20 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
       throw InputError(f.where(*t) + ": hole " + std::to_string(h.number) + ": missing pin (world '" + h.world_name +
                        "' has no cup: give pin = [x, z])");
     }
+    if (const toml::node* in = t->get("index")) {
+      static constexpr Range kIndex{1.0, 18.0};
+      h.stroke_index = f.whole_number(*in, "index", kIndex);
+      index_nodes.push_back(in);
+    }
+    if (const toml::node* wn2 = t->get("wind_speed")) {
+      h.wind_speed = f.quantity(*wn2, "wind_speed", Dimension::Speed, &Environment::kWindSpeed);
+      h.wind_toward = f.quantity_or(*t, "wind_toward", Dimension::Angle, 0.0, &Environment::kWindDirection);
+    } else if (const toml::node* wt = t->get("wind_toward")) {
+      f.fail(*wt, "wind_toward", "a wind direction needs wind_speed too");
+    }
     c.holes.push_back(h);
   }
+  assign_stroke_index(f, c, index_nodes);
   return c;
 }
 

@@ -1,50 +1,242 @@
 #include "game/report/round_json.hpp"
 
+#include <algorithm>
 #include <cstdio>
+
+#include "game/modes/golf/standings.hpp"
 
 namespace sweetspot {
 
-nlohmann::json round_json(const GolfRound& round, const std::string& player, std::uint64_t seed) {
+namespace {
+
+nlohmann::json holes_json(const GolfRound& round) {
   using nlohmann::json;
   json holes = json::array();
   for (const HoleCard& h : round.card()) {
     json shots = json::array();
     for (const StrokeRecord& s : h.shots) {
-      shots.push_back({{"club", s.club},
-                       {"lie", s.lie},
-                       {"start_m", {s.start.x(), s.start.y(), s.start.z()}},
-                       {"rest_m", {s.rest.x(), s.rest.y(), s.rest.z()}},
-                       {"end", to_string(s.end)},
-                       {"to_pin_m", s.to_pin_m}});
+      json shot = {{"club", s.club},
+                   {"lie", s.lie},
+                   {"start_m", {s.start.x(), s.start.y(), s.start.z()}},
+                   {"rest_m", {s.rest.x(), s.rest.y(), s.rest.z()}},
+                   {"end", to_string(s.end)},
+                   {"to_pin_m", s.to_pin_m}};
+      if (s.conceded) shot["conceded"] = true;
+      shots.push_back(shot);
     }
-    holes.push_back({{"number", h.number},
-                     {"par", h.par},
-                     {"strokes", h.strokes},
-                     {"putts", h.putts},
-                     {"penalties", h.penalties},
-                     {"holed", h.holed},
-                     {"shots", shots}});
+    json hole = {{"number", h.number}, {"par", h.par},       {"strokes", h.strokes},
+                 {"putts", h.putts},   {"penalties", h.penalties}, {"holed", h.holed},
+                 {"shots", shots}};
+    if (h.picked_up) hole["picked_up"] = true;
+    if (h.conceded) hole["conceded"] = true;
+    holes.push_back(hole);
   }
-  return {{"course", round.course().name},   {"player", player}, {"seed", seed}, {"holes", holes},
+  return holes;
+}
+
+}  // namespace
+
+nlohmann::json round_json(const GolfRound& round, const std::string& player, std::uint64_t seed) {
+  return {{"course", round.course().name},   {"player", player}, {"seed", seed}, {"holes", holes_json(round)},
           {"total_strokes", round.total_strokes()}, {"total_par", round.total_par()}};
 }
 
 std::string round_table(const GolfRound& round, const std::string& player) {
   std::string out = round.course().name + " — " + player + "\n";
-  char line[160];
+  char line[200];
   std::snprintf(line, sizeof line, "%-6s %4s %8s %6s %10s %s\n", "hole", "par", "strokes", "putts", "penalties", "");
   out += line;
-  int par = 0;
+  int par = 0, strokes = 0, putts = 0, penalties = 0;
   for (const HoleCard& h : round.card()) {
     par += h.par;
+    strokes += h.strokes;
+    putts += h.putts;
+    penalties += h.penalties;
     std::snprintf(line, sizeof line, "%-6d %4d %8d %6d %10d %s\n", h.number, h.par, h.strokes, h.putts, h.penalties,
-                  h.holed ? "" : "(picked up)");
+                  h.picked_up ? "(picked up)" : h.conceded ? "(conceded)" : "");
     out += line;
   }
-  const int diff = round.total_strokes() - par;
-  std::snprintf(line, sizeof line, "%-6s %4d %8d   %s%d\n", "total", par, round.total_strokes(), diff > 0 ? "+" : "",
-                diff);
+  std::snprintf(line, sizeof line, "%-6s %4d %8d %6d %10d\n", "total", par, strokes, putts, penalties);
   out += line;
+  out += "to par: " + to_par_text(strokes - par) + "\n";
+  return out;
+}
+
+std::string to_par_text(int diff) {
+  if (diff == 0) return "E";
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%+d", diff);
+  return buf;
+}
+
+namespace {
+
+nlohmann::json wind_json(const HoleWind& w) {
+  return {{"wind_mps", w.speed}, {"wind_toward_deg", w.toward * 180.0 / 3.14159265358979323846}};
+}
+
+nlohmann::json result_json(const GolfGroup& g, const Standings& s) {
+  using nlohmann::json;
+  const auto name = [&](int p) { return p < 0 ? json(nullptr) : json(g.players()[static_cast<std::size_t>(p)].name); };
+  json r = json::object();
+  switch (s.format) {
+    case GolfFormat::Stroke: {
+      json rank = json::array();
+      for (int p : s.ranking) {
+        const PlayerStanding& ps = s.players[static_cast<std::size_t>(p)];
+        rank.push_back({{"player", name(p)}, {"total_strokes", ps.total_strokes}, {"total_net", ps.total_net},
+                        {"to_par", ps.total_strokes - ps.total_par}});
+      }
+      r["ranking"] = rank;
+      break;
+    }
+    case GolfFormat::Stableford: {
+      json pts = json::array();
+      for (int p : s.ranking) {
+        const PlayerStanding& ps = s.players[static_cast<std::size_t>(p)];
+        pts.push_back({{"player", name(p)}, {"points", ps.points}, {"total_points", ps.total_points}});
+      }
+      r["points"] = pts;
+      break;
+    }
+    case GolfFormat::Skins: {
+      json holes = json::array();
+      for (std::size_t h = 0; h < s.skins->winner.size(); ++h)
+        holes.push_back({{"number", g.course().holes[h].number}, {"winner", name(s.skins->winner[h])},
+                         {"skins", s.skins->value[h]}, {"carried", s.skins->winner[h] < 0}});
+      json won = json::array();
+      for (std::size_t p = 0; p < s.skins->skins.size(); ++p)
+        won.push_back({{"player", name(static_cast<int>(p))}, {"skins", s.skins->skins[p]}});
+      r["holes"] = holes;
+      r["skins"] = won;
+      r["carried_unwon"] = s.skins->unwon;
+      break;
+    }
+    case GolfFormat::Match: {
+      json holes = json::array();
+      for (std::size_t h = 0; h < s.match->holes.size(); ++h)
+        holes.push_back({{"number", g.course().holes[h].number}, {"winner", name(s.match->holes[h].winner)},
+                         {"holes_up", s.match->holes[h].lead}, {"status", s.match->holes[h].status}});
+      r["holes"] = holes;
+      r["holes_up"] = s.match->lead;  // + the first player up
+      r["status"] = s.match->result;
+      r["decided_after_hole"] = s.match->decided_after < 0 ? json(nullptr) : json(s.match->decided_after + 1);
+      break;
+    }
+  }
+  r["winner"] = s.format == GolfFormat::Match && s.match->lead == 0 ? json(nullptr) : name(s.ranking.front());
+  return r;
+}
+
+}  // namespace
+
+nlohmann::json group_json(const GolfGroup& g) {
+  using nlohmann::json;
+  const Standings s = standings(g);
+  json players = json::array();
+  for (std::size_t p = 0; p < g.players().size(); ++p) {
+    const GolfPlayer& pl = g.players()[p];
+    const GolfRound& r = g.round(static_cast<int>(p));
+    json holes = holes_json(r);
+    const std::vector<int> given = g.strokes_received(static_cast<int>(p));
+    for (std::size_t h = 0; h < holes.size(); ++h) {
+      holes[h]["strokes_received"] = given[h];
+      holes[h]["net"] = r.card()[h].strokes - given[h];
+      if (s.format == GolfFormat::Stableford && h < s.holes) holes[h]["points"] = s.players[p].points[h];
+      holes[h].update(wind_json(g.winds()[h]));
+    }
+    const PlayerStanding& ps = s.players[p];
+    players.push_back({{"player", pl.name},
+                       {"skill", pl.human ? std::string("human") : pl.skill},
+                       {"handicap", pl.handicap},
+                       {"holes", holes},
+                       {"total_strokes", ps.total_strokes},
+                       {"total_putts", ps.total_putts},
+                       {"total_net", ps.total_net},
+                       {"to_par", ps.total_strokes - ps.total_par}});
+  }
+  json winds = json::array();
+  for (std::size_t h = 0; h < g.winds().size(); ++h) {
+    json w = wind_json(g.winds()[h]);
+    w["number"] = g.course().holes[h].number;
+    w["stroke_index"] = g.course().holes[h].stroke_index;
+    winds.push_back(w);
+  }
+  json j = {{"course", g.course().name},
+            {"seed", g.options().seed},
+            {"format", to_string(s.format)},
+            {"gimme_m", g.options().gimme_m},
+            {"auto_putt", g.options().auto_putt},
+            {"holes_info", winds},
+            {"players", players},
+            {"total_par", g.course().par()},
+            {"result", result_json(g, s)}};
+  if (g.players().size() == 1) {
+    j["player"] = g.players()[0].name;
+    j["holes"] = players[0]["holes"];
+    j["total_strokes"] = g.round(0).total_strokes();
+  }
+  return j;
+}
+
+std::string group_table(const GolfGroup& g) {
+  const Standings s = standings(g);
+  const std::size_t n = g.players().size();
+  std::string out = g.course().name + " — " + to_string(s.format) + " play\n";
+  char cell[64];
+  auto pad = [](std::string t, std::size_t w) {
+    if (t.size() < w) t.insert(0, w - t.size(), ' ');
+    return t;
+  };
+  // Each player's column: gross strokes, a '*' per stroke received, the putts in brackets.
+  std::string head = "hole par  SI";
+  for (const GolfPlayer& p : g.players()) head += "  " + pad(p.name.substr(0, 14), 14);
+  if (s.format == GolfFormat::Match) head += "  match";
+  if (s.format == GolfFormat::Skins) head += "  skin";
+  out += head + "\n";
+  for (std::size_t h = 0; h < s.holes; ++h) {
+    const CourseHole& ch = g.course().holes[h];
+    std::snprintf(cell, sizeof cell, "%4d %3d %3d", ch.number, ch.par, ch.stroke_index);
+    std::string line = cell;
+    for (std::size_t p = 0; p < n; ++p) {
+      const PlayerStanding& ps = s.players[p];
+      const HoleCard& c = g.round(static_cast<int>(p)).card()[h];
+      char v[48];
+      std::snprintf(v, sizeof v, "%s%d%.*s (%d)", c.picked_up ? "PU " : c.conceded ? "conc " : "", ps.gross[h],
+                    std::min(ps.received[h], 6), "******", ps.putts[h]);
+      std::string cellv = v;
+      if (s.format == GolfFormat::Stableford) cellv.append(" ").append(std::to_string(ps.points[h])).append("pt");
+      line += "  " + pad(cellv, 14);
+    }
+    if (s.format == GolfFormat::Match) line += "  " + s.match->holes[h].status;
+    if (s.format == GolfFormat::Skins) {
+      const int w = s.skins->winner[h];
+      if (w < 0) line += "  carried";
+      else line.append("  ").append(g.players()[static_cast<std::size_t>(w)].name).append(" x").append(std::to_string(s.skins->value[h]));
+    }
+    out += line + "\n";
+  }
+  auto sum_row = [&](const char* label, int par, auto value) {
+    std::snprintf(cell, sizeof cell, "%-8s %3s", label, par >= 0 ? std::to_string(par).c_str() : "");
+    std::string line = cell;
+    for (std::size_t p = 0; p < n; ++p) line += "  " + pad(value(s.players[p]), 14);
+    out += line + "\n";
+  };
+  int par = 0;
+  for (std::size_t h = 0; h < s.holes; ++h) par += g.course().holes[h].par;
+  sum_row("strokes", par, [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
+  sum_row("putts", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
+  sum_row("to par", -1, [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
+  sum_row("net", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
+  if (s.format == GolfFormat::Stableford)
+    sum_row("points", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_points); });
+  if (s.format == GolfFormat::Skins)
+    for (std::size_t p = 0; p < n; ++p)
+      out += g.players()[p].name + ": " + std::to_string(s.skins->skins[p]) + " skins\n";
+  if (s.format == GolfFormat::Skins && s.skins->unwon > 0) out += std::to_string(s.skins->unwon) + " skins carried, unwon\n";
+  if (s.format == GolfFormat::Match) out += "result: " + s.match->result + "\n";
+  else if (s.holes > 0) out += "leader: " + g.players()[static_cast<std::size_t>(s.ranking.front())].name + "\n";
+  out += "(* a stroke received; putts in brackets; PU picked up)\n";
   return out;
 }
 

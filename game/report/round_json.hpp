@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "game/modes/golf/golf_group.hpp"
 #include "game/modes/golf/round.hpp"
 
 namespace sweetspot {
@@ -13,5 +14,15 @@ namespace sweetspot {
 nlohmann::json round_json(const GolfRound& round, const std::string& player, std::uint64_t seed);
 /// Hole, par, strokes, putts, penalties, then the totals and the score against par.
 std::string round_table(const GolfRound& round, const std::string& player);
+/// A score against par as golfers write it: "E", "+3", "-2".
+std::string to_par_text(int diff);
+
+/// A group's round (DESIGN §9 "Players and formats"): the players with their holes and
+/// totals, the format and its result, each hole's wind; with one player, also the
+/// single-player fields of round_json.
+nlohmann::json group_json(const GolfGroup& group);
+/// The card a golfer checks by hand: per hole par, stroke index and every player's strokes
+/// (with the strokes received), putts and the format's column; then the sum rows and result.
+std::string group_table(const GolfGroup& group);
 
 }  // namespace sweetspot

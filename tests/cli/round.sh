@@ -51,7 +51,7 @@ cat > "$tmp/swings.toml" <<'T'
 club = "7-iron"
 power = "72%"
 T
-out=$("$bin" round --swings "$tmp/swings.toml" --json)
+out=$("$bin" round --calm --swings "$tmp/swings.toml" --json)
 python3 - "$out" <<'PY' || fail "scripted water"
 import json, sys
 j = json.loads(sys.argv[1])
@@ -74,6 +74,81 @@ set +e
 msg=$("$bin" round --bot legend 2>&1); rc=$?
 set -e
 [ $rc -eq 2 ] && grep -q "tour, scratch, amateur, beginner" <<<"$msg" || fail "unknown skill: $rc '$msg'"
+
+# Players and formats (DESIGN §9): the card a golfer checks by hand. Every sum row adds up,
+# the format's result follows from the holes, each hole carries its wind.
+for fmt in match stableford skins; do
+  if [ $fmt = match ]; then bots="--bot tour --bot amateur --handicap 0 --handicap 12"
+  else bots="--bot tour --bot amateur --bot beginner --handicap 0 --handicap 12 --handicap 26"; fi
+  # shellcheck disable=SC2086
+  out=$("$bin" round $bots --format $fmt --seed 7 --json)
+  # shellcheck disable=SC2086
+  [ "$out" = "$("$bin" round $bots --format $fmt --seed 7 --json)" ] || fail "$fmt: same seed, different output"
+  python3 - "$out" "$fmt" <<'PY' || fail "$fmt json"
+import json, sys
+j = json.loads(sys.argv[1]); fmt = sys.argv[2]
+assert j["format"] == fmt and 2 <= len(j["players"]) <= 4, j["format"]
+hcp = {p["player"]: p["handicap"] for p in j["players"]}
+index = [h["stroke_index"] for h in j["holes_info"]]
+n = len(index)
+low = min(hcp.values()) if fmt == "match" else 0
+def received(h, si):  # WHS: the round's share of the handicap, by stroke index
+    total = (2 * (h - low) * n + 18) // 36
+    return total // n + (1 if si <= total % n else 0)
+nets = []
+for p in j["players"]:
+    assert p["total_strokes"] == sum(h["strokes"] for h in p["holes"]), p["player"]
+    assert p["total_putts"] == sum(h["putts"] for h in p["holes"]), p["player"]
+    assert p["to_par"] == p["total_strokes"] - j["total_par"], p["player"]
+    for h, si in zip(p["holes"], index):
+        assert "wind_mps" in h and "wind_toward_deg" in h
+        assert h["strokes_received"] == received(p["handicap"], si), (p["player"], h["number"])
+        assert h["net"] == h["strokes"] - h["strokes_received"]
+        assert h["strokes"] == len(h["shots"]) + h["penalties"], h
+    assert p["total_net"] == sum(h["net"] for h in p["holes"])
+    nets.append([h["net"] for h in p["holes"]])
+r = j["result"]
+if fmt == "stableford":
+    for e in r["points"]:
+        p = next(q for q in j["players"] if q["player"] == e["player"])
+        want = [max(0, 2 + h["par"] - h["net"]) for h in p["holes"]]
+        assert e["points"] == want and e["total_points"] == sum(want), e
+    assert [e["total_points"] for e in r["points"]] == sorted([e["total_points"] for e in r["points"]], reverse=True)
+elif fmt == "skins":
+    carried, won = 0, {p["player"]: 0 for p in j["players"]}
+    for k, h in enumerate(r["holes"]):
+        col = [net[k] for net in nets]; best = min(col); carried += 1
+        if col.count(best) > 1: assert h["winner"] is None and h["carried"]
+        else:
+            w = j["players"][col.index(best)]["player"]
+            assert h["winner"] == w and h["skins"] == carried, h
+            won[w] += carried; carried = 0
+    assert r["carried_unwon"] == carried and {e["player"]: e["skins"] for e in r["skins"]} == won
+else:
+    lead, decided = 0, None
+    for k, h in enumerate(r["holes"]):
+        a, b = nets[0][k], nets[1][k]
+        if decided is None: lead += (a < b) - (b < a)  # a decided match stands (Rule 3.2a(3))
+        assert h["holes_up"] == lead, h
+        if decided is None and abs(lead) > n - k - 1: decided = k + 1
+    assert r["decided_after_hole"] == decided, r
+    assert r["holes_up"] == lead
+PY
+done
+# The table a player reads adds its putts too (the total row once put the score to par there).
+"$bin" round --bot tour --seed 3 | awk '/^total/ {t=$4} /^[0-9]/ {s+=$4} END {exit !(t==s)}' || fail "putts column does not add up"
+
+# A round saved after a hole and resumed finishes exactly as the round played through.
+"$bin" round --bot tour --bot beginner --format match --seed 9 --json > "$tmp/whole.json"
+"$bin" round --bot tour --bot beginner --format match --seed 9 --stop-after 1 --save "$tmp/r.save" > /dev/null
+"$bin" round --resume "$tmp/r.save" --json > "$tmp/resumed.json"
+cmp -s "$tmp/whole.json" "$tmp/resumed.json" || fail "resumed round differs from the whole round"
+set +e; msg=$("$bin" round --resume "$tmp/r.save" --bot tour 2>&1); rc=$?; set -e
+[ $rc -eq 2 ] && grep -q -- "--resume" <<<"$msg" || fail "resume with --bot: $rc $msg"
+set +e; msg=$("$bin" round --bot tour --format match 2>&1); rc=$?; set -e
+[ $rc -eq 2 ] && grep -q "two players" <<<"$msg" || fail "match of one: $rc $msg"
+set +e; msg=$("$bin" round --bot tour --bot amateur --handicap 60 --handicap 1 2>&1); rc=$?; set -e
+[ $rc -eq 2 ] && grep -q "54" <<<"$msg" || fail "handicap 60: $rc $msg"
 
 # The contests.
 "$bin" round --mode ctp --balls 3 --json | python3 -c '
@@ -107,6 +182,6 @@ done
 # ... and a cup off the green is refused at its line.
 sed '0,/^tee = \["0m", "0m"\] .*/s//tee = ["0m", "0m"]\npin = ["100m", "0m"]/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$plot_dir/pond.toml"
 set +e; msg=$("$bin" round "$plot_dir/pond.toml" 2>&1); rc=$?; set -e
-[ $rc -eq 2 ] && grep -q "pond.toml:11: pin .* lies on water (allowed: green)" <<<"$msg" || fail "a pin in the pond: exit $rc, $msg"
+[ $rc -eq 2 ] && grep -q "pond.toml:14: pin .* lies on water (allowed: green)" <<<"$msg" || fail "a pin in the pond: exit $rc, $msg"
 rm -rf "$plot_dir"
 echo "round: ok"

@@ -29,8 +29,14 @@ constexpr double kPartialFeel = 0.06;
 
 }  // namespace
 
-GolfBot::GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed)
-    : assets_(assets), skill_(skill), rng_(seed) {
+GolfBot::GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed, std::vector<Stock> bag)
+    : assets_(&assets), skill_(skill), rng_(seed) {
+  if (!bag.empty()) {
+    // Longest first, as the bag is ordered; the shortest is the partial-swing wedge.
+    std::stable_sort(bag.begin(), bag.end(), [](const Stock& a, const Stock& b) { return a.carry > b.carry; });
+    stock_ = std::move(bag);
+    return;
+  }
   const EquipmentCatalog& eq = assets.equipment();
   for (const std::string& club : golf_bag()) {
     if (club == "putter") continue;
@@ -71,7 +77,7 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
   // Roll deceleration for first guesses: a 10 ft Stimpmeter green, ~0.55 m/s².
   constexpr double kDecel = 0.55;
   const double v_target = std::sqrt(2.0 * kDecel * kPuttPast);  // at the cup, to finish 0.43 m past
-  const double full = full_swing_speed(skill_, assets_.equipment().club_info_of("putter"));
+  const double full = full_swing_speed(skill_, assets_->equipment().club_info_of("putter"));
   double power = std::clamp(std::sqrt(2.0 * kDecel * (d + kPuttPast)) / 1.6 / full, 0.02, 1.1);
   double aim = 0.0;
   for (int i = 0; i < 6; ++i) {
@@ -113,36 +119,62 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
 StrokeInput GolfBot::intend(const GolfRound& round) const {
   if (round.lie() == "green") return putt(round);
   const double d = round.to_pin();
-  StrokeInput in;
   const Stock& shortest = stock_.back();
-  in.club = suggest(d, round.teed());
-  double power = 1.0;
+  const bool teed = round.teed();
+  auto allowed = [&](const Stock& s) { return !(s.club == "driver" && !teed); };
+  double reach = 0.0;
+  for (const Stock& s : stock_)
+    if (allowed(s)) reach = std::max(reach, s.total);
+  const bool going_for_pin = d <= reach;
+  const double line = round.line_to_pin();
+  // Tries a club on the course and corrects the aim (wind, slopes, curve) and a partial
+  // swing's power; returns the stroke, how far along the line to the cup it stops in these
+  // conditions, and whether it ends in a penalty.
+  struct Tried {
+    StrokeInput in;
+    double reach = 0.0;  ///< m along the line where it stops (or is lost)
+    bool lost = false;
+  };
+  auto tune = [&](const std::string& club, double power) {
+    Tried t;
+    t.in.club = club;
+    double aim = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      t.in.aim = aim;
+      t.in.meter.power = power;
+      const ShotResult r = round.simulate(t.in);
+      t.lost = r.end == ShotEnd::Water || r.end == ShotEnd::OutOfBounds || r.end == ShotEnd::StepLimit;
+      const Vec3& rest = t.lost ? r.trajectory.summary.landing_position : r.trajectory.summary.rest_position;
+      const AlongAcross at = relative(round.ball(), line, rest);
+      t.reach = at.along;
+      if (i == 2) break;
+      if (at.along > 1.0) aim = std::clamp(aim - std::atan2(at.across, at.along), -0.4, 0.4);
+      if (power < 1.0 && going_for_pin && at.along > 1.0) power = std::clamp(power * std::pow(d / at.along, 0.8), 0.05, 1.0);
+    }
+    t.in.aim = aim;
+    t.in.meter.power = power;
+    return t;
+  };
   if (d < shortest.carry) {
     // A partial wedge: carry grows a little faster than swing speed; start at that guess.
-    in.club = shortest.club;
-    power = std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0);
+    return tune(shortest.club, std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0)).in;
   }
-  const bool going_for_pin = d <= std::max_element(stock_.begin(), stock_.end(), [&](const Stock& a, const Stock& b) {
-                                       return (a.club == "driver" && !round.teed() ? 0.0 : a.carry) <
-                                              (b.club == "driver" && !round.teed() ? 0.0 : b.carry);
-                                     })->total;
-  // Try it on the course and correct the aim (wind, slopes, curve) and a partial swing's power.
-  double aim = 0.0;
-  const double line = round.line_to_pin();
-  for (int i = 0; i < 3; ++i) {
-    in.aim = aim;
-    in.meter.power = power;
-    const ShotResult r = round.simulate(in);
-    const Vec3& rest = r.end == ShotEnd::Water || r.end == ShotEnd::OutOfBounds ? r.trajectory.summary.landing_position
-                                                                               : r.trajectory.summary.rest_position;
-    const AlongAcross at = relative(round.ball(), line, rest);
-    if (at.along > 1.0) aim = std::clamp(aim - std::atan2(at.across, at.along), -0.4, 0.4);
-    if (power < 1.0 && going_for_pin && at.along > 1.0)
-      power = std::clamp(power * std::pow(d / at.along, 0.8), 0.05, 1.0);
-  }
-  in.aim = aim;
-  in.meter.power = power;
-  return in;
+  // The club that plays like the distance today: of the still-air club and its neighbours,
+  // the shortest whose ball stops at or past the cup with this wind, from this lie, on this
+  // ground, never one that ends in a penalty; else the one that goes farthest in play.
+  const std::string base = suggest(d, teed);
+  std::size_t at = 0;
+  while (stock_[at].club != base) ++at;
+  std::vector<Tried> tried;
+  for (std::size_t k = at > 0 ? at - 1 : 0; k <= std::min(at + 2, stock_.size() - 1); ++k)
+    if (allowed(stock_[k])) tried.push_back(tune(stock_[k].club, 1.0));
+  const Tried* pick = nullptr;
+  for (const Tried& t : tried)  // longest first: the last that carries is the shortest
+    if (!t.lost && t.reach >= d) pick = &t;
+  if (pick == nullptr)
+    for (const Tried& t : tried)
+      if (!t.lost && (pick == nullptr || t.reach > pick->reach)) pick = &t;
+  return pick != nullptr ? pick->in : tried.front().in;
 }
 
 StrokeInput GolfBot::plan(const GolfRound& round) {

@@ -15,18 +15,23 @@ namespace sweetspot {
 
 class GolfBot {
  public:
-  GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed);
+  /// A full swing's carry and total, per club of the bag: error-free on flat fairway, or as a
+  /// player measured them (then `spread` is their carry's standard deviation).
+  struct Stock {
+    std::string club;
+    double carry = 0.0, total = 0.0;  ///< m
+    double spread = 0.0;              ///< m, carry standard deviation (0: not measured)
+    double side_spread = 0.0;         ///< m, sideways standard deviation at landing
+  };
+  /// `bag`: the carries the player measured (a bag-gapping session); empty: this skill's
+  /// full swings on flat fairway. Clubs missing from `bag` are not suggested.
+  GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed, std::vector<Stock> bag = {});
 
   /// The stroke it means to play from where the round's ball lies: no errors.
   StrokeInput intend(const GolfRound& round) const;
   /// intend() with this skill's meter errors drawn from the bot's seeded generator.
   StrokeInput plan(const GolfRound& round);
 
-  /// A full, error-free swing's carry and total on flat fairway, per club of the bag.
-  struct Stock {
-    std::string club;
-    double carry = 0.0, total = 0.0;  ///< m
-  };
   const std::vector<Stock>& stock() const { return stock_; }
   /// The club a player of this skill would hit `distance` m (the shortest that carries it;
   /// the longest when none does); never the putter, the driver only from a tee.
@@ -34,7 +39,7 @@ class GolfBot {
 
  private:
   StrokeInput putt(const GolfRound& round) const;
-  const Assets& assets_;
+  const Assets* assets_;  // a pointer: a bot is assignable (a round restarted)
   GolferSkill skill_;
   Rng rng_;
   std::vector<Stock> stock_;

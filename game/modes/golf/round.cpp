@@ -18,11 +18,14 @@ const char* to_string(StrokeEnd e) {
   return "?";
 }
 
-GolfRound::GolfRound(const Assets& assets, Course course, const GolferSkill& golfer)
-    : assets_(&assets), course_(std::move(course)), golfer_(golfer) {
+GolfRound::GolfRound(const Assets& assets, Course course, const GolferSkill& golfer, std::vector<HoleWind> winds)
+    : assets_(&assets), course_(std::move(course)), golfer_(golfer), winds_(std::move(winds)) {
   if (course_.holes.empty()) throw InputError("course '" + course_.name + "' has no holes");
+  if (!winds_.empty() && winds_.size() != course_.holes.size())
+    throw InputError("a round needs one wind per hole (" + std::to_string(course_.holes.size()) + "), not " +
+                     std::to_string(winds_.size()));
   ball_ = hole().tee;
-  card_.push_back(HoleCard{hole().number, hole().par, 0, 0, 0, false, {}});
+  card_.push_back(new_card());
 }
 
 std::string GolfRound::surface_at(const Vec3& p) const {
@@ -71,12 +74,57 @@ ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
   s.placement.aim = aim;
   s.placement.teed = teed_;
   s.cup = hole().pin;  // the course's cup, which may not be the world's own pin
+  const HoleWind w = wind();
+  s.environment.wind_speed = w.speed;
+  s.environment.wind_direction = w.toward;
   return s;
 }
 
 ShotResult GolfRound::simulate(const StrokeInput& in, bool record_samples) const {
   const ShotSpec s = spec_for(in);
   return run_shot(resolve(s, *assets_), "hole " + std::to_string(hole().number), {true, record_samples});
+}
+
+HoleCard GolfRound::new_card() const {
+  HoleCard c;
+  c.number = hole().number;
+  c.par = hole().par;
+  return c;
+}
+
+HoleWind GolfRound::wind() const {
+  if (winds_.empty() || finished()) return {};
+  return winds_[hole_];
+}
+
+const StrokeRecord& GolfRound::concede_stroke() {
+  if (finished()) throw InputError("the round is over");
+  const std::size_t k = card_.size() - 1;
+  HoleCard& h = card_[k];
+  StrokeRecord rec;
+  rec.club = "putter";
+  rec.lie = lie();
+  rec.start = ball_;
+  rec.rest = hole().pin;
+  rec.end = StrokeEnd::Holed;
+  rec.conceded = true;
+  ++h.strokes;
+  if (rec.lie == "green") ++h.putts;
+  h.holed = true;
+  h.shots.push_back(rec);
+  finish_hole();
+  return card_[k].shots.back();
+}
+
+void GolfRound::concede_hole() {
+  if (finished()) throw InputError("the round is over");
+  card_.back().conceded = true;
+  finish_hole();
+}
+
+void GolfRound::leave_hole() {
+  if (finished()) throw InputError("the round is over");
+  finish_hole();
 }
 
 Vec3 GolfRound::drop_back_on_line(const Vec3& in_water, const Vec3& from) const {
@@ -103,7 +151,7 @@ void GolfRound::finish_hole() {
   if (finished()) return;
   ball_ = hole().tee;
   teed_ = true;
-  card_.push_back(HoleCard{hole().number, hole().par, 0, 0, 0, false, {}});
+  card_.push_back(new_card());
 }
 
 const StrokeRecord& GolfRound::play(const StrokeInput& in, ShotResult* shot) {
@@ -166,6 +214,7 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
     finish_hole();
   } else if (h.strokes >= kPickUp) {
     h.strokes = kPickUp;
+    h.picked_up = true;
     finish_hole();
   }
   return card_[k].shots.back();

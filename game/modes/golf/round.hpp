@@ -30,6 +30,9 @@ struct StrokeRecord {
   double carry_m = 0.0;       ///< m to the first landing
   double side_m = 0.0;        ///< m right (+) of the stroke's aim line at landing (TrackMan's Side)
   int penalty = 0;            ///< penalty strokes this shot incurred
+  /// The stroke was conceded, not played (a gimme; in match play Rule 3.2b(1)): the ball is
+  /// holed with it, and it counts as a putt.
+  bool conceded = false;
 };
 
 struct HoleCard {
@@ -37,8 +40,16 @@ struct HoleCard {
   int strokes = 0;            ///< shots played + penalty strokes
   int putts = 0;              ///< shots played from the green
   int penalties = 0;
-  bool holed = false;         ///< false: picked up at 10
+  bool holed = false;         ///< false: picked up at 10, or the hole conceded
+  bool picked_up = false;     ///< the ball was picked up at the stroke limit
+  bool conceded = false;      ///< the player conceded the hole (match play, Rule 3.2b(1))
   std::vector<StrokeRecord> shots;
+};
+
+/// A hole's wind: speed at 10 m and the direction it blows toward (Environment's fields).
+struct HoleWind {
+  double speed = 0.0;   ///< m/s
+  double toward = 0.0;  ///< rad right of the world's +x
 };
 
 class GolfRound {
@@ -46,7 +57,8 @@ class GolfRound {
   /// Holes at most this many strokes, then the ball is picked up (DESIGN §9).
   static constexpr int kPickUp = 10;
 
-  GolfRound(const Assets& assets, Course course, const GolferSkill& golfer);
+  /// `winds`: one per hole (none: calm everywhere).
+  GolfRound(const Assets& assets, Course course, const GolferSkill& golfer, std::vector<HoleWind> winds = {});
 
   bool finished() const { return hole_ >= course_.holes.size(); }
   const Course& course() const { return course_; }
@@ -75,6 +87,15 @@ class GolfRound {
   /// Plays a stroke a launch monitor measured: its launch numbers fly from where the ball
   /// lies (on the tee, teed up), `club` is what the player holds (for the card).
   const StrokeRecord& play_launch(const std::string& club, const LaunchNumbers& numbers, ShotResult* shot = nullptr);
+  /// The next stroke conceded: counted, the ball holed with it (a gimme, a conceded putt).
+  const StrokeRecord& concede_stroke();
+  /// The hole given up: it ends with the strokes played so far, not holed (match play).
+  void concede_hole();
+  /// The hole ends here, not holed and not given up: the opponent conceded it.
+  void leave_hole();
+  /// The current hole's wind (calm when the round was given none).
+  HoleWind wind() const;
+  const std::vector<HoleWind>& winds() const { return winds_; }
   /// The shot without playing it (bots plan with it). Deterministic.
   ShotResult simulate(const StrokeInput& in, bool record_samples = false) const;
 
@@ -83,6 +104,7 @@ class GolfRound {
   Vec3 drop_back_on_line(const Vec3& in_water, const Vec3& from) const;
   std::string surface_at(const Vec3& p) const;
   void finish_hole();
+  HoleCard new_card() const;
 
   const Assets* assets_;  // a pointer, so a round can be assigned (a restarted hole replays into a new one)
   Course course_;
@@ -91,6 +113,7 @@ class GolfRound {
   Vec3 ball_ = Vec3::Zero();
   bool teed_ = true;
   std::vector<HoleCard> card_;
+  std::vector<HoleWind> winds_;
 };
 
 }  // namespace sweetspot

@@ -1,0 +1,202 @@
+#include "game/modes/golf/golf_group.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "game/modes/golf/wind.hpp"
+#include "game/util/rng.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+bool same(const StrokeInput& a, const StrokeInput& b) {
+  return a.club == b.club && a.aim == b.aim && a.meter.power == b.meter.power && a.meter.accuracy_ms == b.meter.accuracy_ms;
+}
+
+}  // namespace
+
+GolfGroup::GolfGroup(const Assets& assets, const Course& course, std::vector<GolfPlayer> players, GolfOptions options)
+    : assets_(&assets), course_(course), players_(std::move(players)), options_(std::move(options)) {
+  if (players_.empty() || players_.size() > 4)
+    throw InputError("a round has 1 to 4 players, not " + std::to_string(players_.size()));
+  if (options_.format == GolfFormat::Match && players_.size() != 2)
+    throw InputError("match play is between two players (--bot/--human twice), not " + std::to_string(players_.size()));
+  check_range("gimme", options_.gimme_m, GolfOptions::kGimme, "m");
+  winds_ = round_winds(course_, options_.seed);
+  // The first player's bot draws from the round's seed itself (a one-bot round as `round
+  // --bot S --seed N` always played); the others from seeds drawn off it.
+  Rng seeds(options_.seed);
+  for (std::size_t p = 0; p < players_.size(); ++p) {
+    const GolfPlayer& pl = players_[p];
+    if (pl.handicap < 0 || pl.handicap > kMaxHandicap)
+      throw InputError("player " + std::to_string(p + 1) + " (" + pl.name + "): handicap " + std::to_string(pl.handicap) +
+                       " is out of range (allowed [0, 54])");
+    const GolferSkill& skill = golfer_skill(pl.skill);
+    rounds_.emplace_back(assets, course_, skill, winds_);
+    bots_.emplace_back(assets, skill, p == 0 ? options_.seed : seeds.next(), options_.bag);
+    order_.push_back(static_cast<int>(p));
+  }
+  choose_next();
+}
+
+bool GolfGroup::bot_turn() const {
+  if (finished()) return false;
+  const GolfPlayer& p = players_[static_cast<std::size_t>(next_)];
+  return !p.human || (options_.auto_putt && round(next_).lie() == "green");
+}
+
+StrokeInput GolfGroup::bot_stroke() {
+  if (finished()) throw InputError("the round is over");
+  const std::size_t p = static_cast<std::size_t>(next_);
+  return bots_[p].plan(rounds_[p]);
+}
+
+const StrokeRecord& GolfGroup::play_bot(ShotResult* shot) { return play_stroke(bot_stroke(), true, shot); }
+
+const StrokeRecord& GolfGroup::play(const StrokeInput& in, ShotResult* shot) { return play_stroke(in, false, shot); }
+
+const StrokeRecord& GolfGroup::play_stroke(const StrokeInput& in, bool drawn, ShotResult* shot) {
+  if (finished()) throw InputError("the round is over");
+  const int p = next_;
+  GolfRound& r = rounds_[static_cast<std::size_t>(p)];
+  const std::size_t hole = r.hole_index();
+  r.play(in, shot);
+  events_.push_back({p, GolfEvent::Kind::Stroke, in, drawn});
+  const std::size_t shot_index = r.card()[hole].shots.size() - 1;
+  after_turn(p, hole);
+  return r.card()[hole].shots[shot_index];
+}
+
+void GolfGroup::concede_hole() {
+  if (finished()) throw InputError("the round is over");
+  if (options_.format != GolfFormat::Match) throw InputError("a hole can be conceded in match play only");
+  const int p = next_;
+  GolfRound& r = rounds_[static_cast<std::size_t>(p)];
+  const std::size_t hole = r.hole_index();
+  r.concede_hole();
+  events_.push_back({p, GolfEvent::Kind::ConcedeHole, {}, false});
+  after_turn(p, hole);
+  note_ = players_[static_cast<std::size_t>(p)].name + " concedes hole " + std::to_string(course_.holes[hole].number);
+  // The hole is decided: the opponent need not hole out (Rule 3.2b(1)).
+  GolfRound& other = rounds_[static_cast<std::size_t>(1 - p)];
+  if (other.hole_index() == hole) {
+    other.leave_hole();
+    choose_next();
+  }
+}
+
+void GolfGroup::after_turn(int player, std::size_t hole_before) {
+  note_.clear();
+  GolfRound& r = rounds_[static_cast<std::size_t>(player)];
+  const std::string& name = players_[static_cast<std::size_t>(player)].name;
+  char buf[160];
+  if (r.hole_index() == hole_before && options_.gimme_m > 0.0 && r.lie() == "green" && r.to_pin() <= options_.gimme_m) {
+    const double d = r.to_pin();
+    r.concede_stroke();
+    std::snprintf(buf, sizeof buf, "%s's %.1f m putt is conceded", name.c_str(), d);
+    note_ = buf;
+  }
+  const HoleCard& c = r.card()[hole_before];
+  if (c.picked_up) {
+    std::snprintf(buf, sizeof buf, "%s picks up at %d strokes", name.c_str(), GolfRound::kPickUp);
+    note_ = buf;
+  }
+  choose_next();
+}
+
+std::vector<int> GolfGroup::honour_order() const {
+  // Rule 6.4a: on the next tee the lowest score on the hole just played has the honour (in
+  // match play the winner of it, the lower net); ties keep the order they teed off in.
+  if (hole_ == 0) return order_;
+  const std::size_t h = hole_ - 1;
+  std::vector<int> order = order_;
+  const bool match = options_.format == GolfFormat::Match;
+  std::vector<int> score(players_.size());
+  for (std::size_t p = 0; p < players_.size(); ++p) {
+    score[p] = rounds_[p].card()[h].strokes;
+    if (match) score[p] -= strokes_received(static_cast<int>(p))[h];
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return score[static_cast<std::size_t>(a)] < score[static_cast<std::size_t>(b)];
+  });
+  return order;
+}
+
+void GolfGroup::choose_next() {
+  const std::size_t n = course_.holes.size();
+  auto on_hole = [&](int p) { return rounds_[static_cast<std::size_t>(p)].hole_index() == hole_; };
+  while (hole_ < n && std::none_of(order_.begin(), order_.end(), on_hole)) {
+    ++hole_;
+    if (hole_ < n) order_ = honour_order();
+  }
+  if (hole_ >= n) {
+    next_ = -1;
+    return;
+  }
+  // Everyone tees off first, in the order of the honour (Rule 6.4a) ...
+  for (int p : order_)
+    if (on_hole(p) && rounds_[static_cast<std::size_t>(p)].card().back().shots.empty()) {
+      next_ = p;
+      return;
+    }
+  // ... then the ball farthest from the hole (Rule 6.4b).
+  next_ = -1;
+  double farthest = -1.0;
+  for (int p : order_) {
+    if (!on_hole(p)) continue;
+    const double d = rounds_[static_cast<std::size_t>(p)].to_pin();
+    if (d > farthest) {
+      farthest = d;
+      next_ = p;
+    }
+  }
+}
+
+void GolfGroup::replay(const std::vector<GolfEvent>& events) {
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const GolfEvent& e = events[i];
+    const std::string where = "event " + std::to_string(i + 1);
+    if (finished()) throw InputError(where + ": the round was already over");
+    if (e.player != next_)
+      throw InputError(where + ": player " + std::to_string(e.player + 1) + " played, but it was player " +
+                       std::to_string(next_ + 1) + "'s turn");
+    if (e.kind == GolfEvent::Kind::ConcedeHole) {
+      concede_hole();
+      continue;
+    }
+    if (e.drawn) {
+      const StrokeInput drawn = bot_stroke();
+      if (!same(drawn, e.stroke))
+        throw InputError(where + ": the bot's stroke differs from the record (a save from another build or seed)");
+    } else if (bot_turn()) {
+      throw InputError(where + ": a stroke given for a bot's turn (bots draw their own)");
+    }
+    play_stroke(e.stroke, e.drawn, nullptr);
+  }
+}
+
+std::vector<int> GolfGroup::strokes_received(int player) const {
+  std::vector<int> index;
+  for (const CourseHole& h : course_.holes) index.push_back(h.stroke_index);
+  int handicap = players_.at(static_cast<std::size_t>(player)).handicap;
+  if (options_.format == GolfFormat::Match) {
+    int lowest = handicap;
+    for (const GolfPlayer& p : players_) lowest = std::min(lowest, p.handicap);
+    handicap -= lowest;
+  }
+  return sweetspot::strokes_received(handicap, index);
+}
+
+std::vector<int> GolfGroup::net(int player) const {
+  const GolfRound& r = round(player);
+  const std::vector<int> given = strokes_received(player);
+  std::vector<int> out;
+  for (std::size_t h = 0; h < r.card().size(); ++h) {
+    if (h >= r.hole_index()) break;  // the hole in play has no score yet
+    out.push_back(r.card()[h].strokes - given[h]);
+  }
+  return out;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,59 @@
+#include "game/modes/golf/standings.hpp"
+
+#include <algorithm>
+
+namespace sweetspot {
+
+Standings standings(const GolfGroup& g) {
+  Standings s;
+  s.format = g.options().format;
+  const int n = static_cast<int>(g.players().size());
+  s.holes = g.finished() ? g.course().holes.size() : g.hole_index();
+  std::vector<std::vector<int>> nets;
+  std::vector<int> conceded_by(s.holes, -1);
+  for (int p = 0; p < n; ++p) {
+    PlayerStanding ps;
+    const GolfRound& r = g.round(p);
+    const std::vector<int> given = g.strokes_received(p);
+    for (std::size_t h = 0; h < s.holes; ++h) {
+      const HoleCard& c = r.card()[h];
+      ps.gross.push_back(c.strokes);
+      ps.putts.push_back(c.putts);
+      ps.received.push_back(given[h]);
+      ps.net.push_back(c.strokes - given[h]);
+      ps.points.push_back(stableford_points(c.par, c.strokes - given[h]));
+      ps.total_strokes += c.strokes;
+      ps.total_putts += c.putts;
+      ps.total_net += c.strokes - given[h];
+      ps.total_points += ps.points.back();
+      ps.total_par += c.par;
+      if (c.conceded) conceded_by[h] = p;
+    }
+    nets.push_back(ps.net);
+    s.players.push_back(std::move(ps));
+  }
+  for (int p = 0; p < n; ++p) s.ranking.push_back(p);
+  auto rank_by = [&](auto better) { std::stable_sort(s.ranking.begin(), s.ranking.end(), better); };
+  switch (s.format) {
+    case GolfFormat::Stroke:
+      rank_by([&](int a, int b) { return s.players[static_cast<std::size_t>(a)].total_net < s.players[static_cast<std::size_t>(b)].total_net; });
+      break;
+    case GolfFormat::Stableford:
+      rank_by([&](int a, int b) {
+        return s.players[static_cast<std::size_t>(a)].total_points > s.players[static_cast<std::size_t>(b)].total_points;
+      });
+      break;
+    case GolfFormat::Skins:
+      s.skins = score_skins(nets);
+      rank_by([&](int a, int b) { return s.skins->skins[static_cast<std::size_t>(a)] > s.skins->skins[static_cast<std::size_t>(b)]; });
+      break;
+    case GolfFormat::Match:
+      s.match = score_match(nets[0], nets[1], conceded_by, static_cast<int>(g.course().holes.size()), g.players()[0].name,
+                            g.players()[1].name);
+      if (s.match->lead < 0) s.ranking = {1, 0};
+      break;
+  }
+  return s;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,166 @@
+#include "game/report/round_save.hpp"
+
+#include "game/content/course_file.hpp"
+#include "game/content/toml_file.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+constexpr int kVersion = 1;
+constexpr std::uintmax_t kMaxSaveBytes = 16u << 20;  // a 4-player 18-hole round is ~40 kB
+
+const char* kind_name(GolfEvent::Kind k) {
+  return k == GolfEvent::Kind::ConcedeHole ? "concede_hole" : "stroke";
+}
+
+// The JSON reader's checks: each names the key and what is allowed.
+struct Reader {
+  std::string source;
+  [[noreturn]] void fail(const std::string& key, const std::string& why) const {
+    throw InputError(source + ": " + key + ": " + why);
+  }
+  const nlohmann::json& at(const nlohmann::json& j, const std::string& key, const std::string& path) const {
+    if (!j.is_object() || !j.contains(key)) fail(path + key, "missing");
+    return j.at(key);
+  }
+  std::string text(const nlohmann::json& j, const std::string& key, const std::string& path = "") const {
+    const auto& v = at(j, key, path);
+    if (!v.is_string()) fail(path + key, "must be a string");
+    return v.get<std::string>();
+  }
+  double number(const nlohmann::json& j, const std::string& key, const Range& r, const std::string& path = "") const {
+    const auto& v = at(j, key, path);
+    if (!v.is_number()) fail(path + key, "must be a number");
+    const double x = v.get<double>();
+    if (!r.contains(x)) fail(path + key, std::to_string(x) + " is out of range (allowed " + range_text(r, "") + ")");
+    return x;
+  }
+  bool flag(const nlohmann::json& j, const std::string& key, const std::string& path = "") const {
+    const auto& v = at(j, key, path);
+    if (!v.is_boolean()) fail(path + key, "must be true or false");
+    return v.get<bool>();
+  }
+  std::uint64_t whole(const nlohmann::json& j, const std::string& key, const std::string& path = "") const {
+    const auto& v = at(j, key, path);
+    if (!v.is_number_unsigned()) fail(path + key, "must be a whole number >= 0");
+    return v.get<std::uint64_t>();
+  }
+};
+
+}  // namespace
+
+nlohmann::json round_save_json(const GolfGroup& g, const std::string& course) {
+  using nlohmann::json;
+  json players = json::array();
+  for (const GolfPlayer& p : g.players())
+    players.push_back({{"name", p.name}, {"skill", p.skill}, {"human", p.human}, {"handicap", p.handicap}});
+  json bag = json::array();
+  for (const GolfBot::Stock& s : g.options().bag)
+    bag.push_back({{"club", s.club}, {"carry_m", s.carry}, {"total_m", s.total}, {"spread_m", s.spread}, {"side_spread_m", s.side_spread}});
+  json events = json::array();
+  for (const GolfEvent& e : g.events()) {
+    json ev = {{"player", e.player}, {"kind", kind_name(e.kind)}};
+    if (e.kind == GolfEvent::Kind::Stroke) {
+      ev["club"] = e.stroke.club;
+      ev["aim_rad"] = e.stroke.aim;
+      ev["power"] = e.stroke.meter.power;
+      ev["accuracy_ms"] = e.stroke.meter.accuracy_ms;
+      ev["drawn"] = e.drawn;
+    }
+    events.push_back(ev);
+  }
+  return {{"sweetspot_round", kVersion},     {"course", course},
+          {"players", players},              {"format", to_string(g.options().format)},
+          {"gimme_m", g.options().gimme_m},  {"auto_putt", g.options().auto_putt},
+          {"seed", g.options().seed},        {"bag", bag},
+          {"events", events}};
+}
+
+SavedRound parse_round_save(const std::string& text, const std::string& source) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(source + ": not a saved round (JSON: " + e.what() + ")");
+  }
+  const Reader r{source};
+  if (!j.is_object() || !j.contains("sweetspot_round")) r.fail("sweetspot_round", "missing: not a saved round");
+  if (j["sweetspot_round"] != kVersion) r.fail("sweetspot_round", "version " + j["sweetspot_round"].dump() + " (allowed: 1)");
+  SavedRound s;
+  s.course = r.text(j, "course");
+  const auto& players = r.at(j, "players", "");
+  if (!players.is_array() || players.empty() || players.size() > 4) r.fail("players", "1 to 4 players");
+  static constexpr Range kHandicap{0.0, kMaxHandicap};
+  for (std::size_t i = 0; i < players.size(); ++i) {
+    const std::string path = "players[" + std::to_string(i) + "].";
+    GolfPlayer p;
+    p.name = r.text(players[i], "name", path);
+    p.skill = r.text(players[i], "skill", path);
+    p.human = r.flag(players[i], "human", path);
+    const double h = r.number(players[i], "handicap", kHandicap, path);
+    if (h != static_cast<int>(h)) r.fail(path + "handicap", "must be a whole number");
+    p.handicap = static_cast<int>(h);
+    try {
+      golfer_skill(p.skill);
+    } catch (const InputError& e) {
+      r.fail(path + "skill", e.what());
+    }
+    s.players.push_back(p);
+  }
+  try {
+    s.options.format = golf_format(r.text(j, "format"));
+  } catch (const InputError& e) {
+    r.fail("format", e.what());
+  }
+  s.options.gimme_m = r.number(j, "gimme_m", GolfOptions::kGimme);
+  s.options.auto_putt = r.flag(j, "auto_putt");
+  s.options.seed = r.whole(j, "seed");
+  static constexpr Range kCarry{0.0, 500.0};
+  const auto& bag = r.at(j, "bag", "");
+  if (!bag.is_array() || bag.size() > 14) r.fail("bag", "a list of at most 14 clubs");
+  for (std::size_t i = 0; i < bag.size(); ++i) {
+    const std::string path = "bag[" + std::to_string(i) + "].";
+    GolfBot::Stock st;
+    st.club = r.text(bag[i], "club", path);
+    st.carry = r.number(bag[i], "carry_m", kCarry, path);
+    st.total = r.number(bag[i], "total_m", kCarry, path);
+    st.spread = r.number(bag[i], "spread_m", kCarry, path);
+    st.side_spread = r.number(bag[i], "side_spread_m", kCarry, path);
+    s.options.bag.push_back(st);
+  }
+  const auto& events = r.at(j, "events", "");
+  if (!events.is_array()) r.fail("events", "must be a list");
+  const Range kPlayer{0.0, static_cast<double>(s.players.size() - 1)};
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const std::string path = "events[" + std::to_string(i) + "].";
+    GolfEvent e;
+    e.player = static_cast<int>(r.number(events[i], "player", kPlayer, path));
+    const std::string kind = r.text(events[i], "kind", path);
+    if (kind == "concede_hole") {
+      e.kind = GolfEvent::Kind::ConcedeHole;
+    } else if (kind == "stroke") {
+      e.stroke.club = r.text(events[i], "club", path);
+      e.stroke.aim = r.number(events[i], "aim_rad", StrokeInput::kAim, path);
+      e.stroke.meter.power = r.number(events[i], "power", MeterInput::kPower, path);
+      e.stroke.meter.accuracy_ms = r.number(events[i], "accuracy_ms", MeterInput::kAccuracy, path);
+      e.drawn = r.flag(events[i], "drawn", path);
+    } else {
+      r.fail(path + "kind", "'" + kind + "' (allowed: stroke, concede_hole)");
+    }
+    s.events.push_back(e);
+  }
+  return s;
+}
+
+SavedRound read_round_save(const std::filesystem::path& path) {
+  return parse_round_save(read_data_file(path, "saved round", kMaxSaveBytes), path.string());
+}
+
+GolfGroup resume_round(const Assets& assets, const SavedRound& saved) {
+  GolfGroup g(assets, load_course(assets, saved.course), saved.players, saved.options);
+  g.replay(saved.events);
+  return g;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,32 @@
+// A golf round saved to resume later: who plays, the format and options, the course, and
+// every turn so far (JSON). Resuming replays the turns onto a new round: the physics and the
+// bots are deterministic, so the round continues bit for bit as if never stopped.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "game/modes/golf/golf_group.hpp"
+
+namespace sweetspot {
+
+struct SavedRound {
+  std::string course;               ///< as load_course() takes it (a name or a path)
+  std::vector<GolfPlayer> players;
+  GolfOptions options;
+  std::vector<GolfEvent> events;
+};
+
+/// The save's JSON. `course` names the course as load_course() will find it again.
+nlohmann::json round_save_json(const GolfGroup& group, const std::string& course);
+/// Reads a save; InputError naming the file and the key (with the allowed values) when it is
+/// not one. Nothing is played yet: resume_round() does that.
+SavedRound read_round_save(const std::filesystem::path& path);
+SavedRound parse_round_save(const std::string& text, const std::string& source);
+/// The saved round, its turns replayed.
+GolfGroup resume_round(const Assets& assets, const SavedRound& saved);
+
+}  // namespace sweetspot

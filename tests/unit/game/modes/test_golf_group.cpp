@@ -1,0 +1,211 @@
+// Rounds of two to four golfers through the group model: turn order, handicap strokes, the
+// formats' results from the cards (stableford by Rule 21.1b, match play with its status and
+// concessions, skins), gimmes and auto-putt, and a saved round that resumes bit for bit.
+#include <catch2/catch.hpp>
+
+#include <numeric>
+
+#include "game/content/course_file.hpp"
+#include "game/modes/golf/golf_group.hpp"
+#include "game/modes/golf/standings.hpp"
+#include "game/report/report.hpp"
+#include "game/report/round_json.hpp"
+#include "game/report/round_save.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+const Course& links() {
+  static const Course c = load_course(test::assets(), "links");
+  return c;
+}
+
+GolfPlayer bot(const std::string& skill, int handicap = 0) { return {skill + " bot", skill, false, handicap}; }
+
+void play_out(GolfGroup& g) {
+  int turns = 0;
+  while (!g.finished()) {
+    g.play_bot();
+    REQUIRE(++turns < 200);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a 3-player stableford round: points from net strokes by Rule 21.1b, strokes by stroke index", "[modes][golf][formats]") {
+  GolfOptions o;
+  o.format = GolfFormat::Stableford;
+  o.seed = 11;
+  GolfGroup g(test::assets(), links(), {bot("tour", 0), bot("amateur", 15), bot("beginner", 28)}, o);
+  play_out(g);
+  const Standings s = standings(g);
+  REQUIRE(s.holes == 3);
+  // links: hole 1 (154 m) index 3, hole 2 (369 m) index 1, hole 3 (483 m) index 2. A 15
+  // plays off 15·3/18 = 2.5 -> 3 strokes, one a hole; a 28 off 4.67 -> 5: two on the holes
+  // of index 1 and 2, one on index 3.
+  CHECK(g.strokes_received(0) == std::vector<int>{0, 0, 0});
+  CHECK(g.strokes_received(1) == std::vector<int>{1, 1, 1});
+  CHECK(g.strokes_received(2) == std::vector<int>{1, 2, 2});
+  for (int p = 0; p < 3; ++p) {
+    const PlayerStanding& ps = s.players[static_cast<std::size_t>(p)];
+    int total = 0;
+    for (std::size_t h = 0; h < 3; ++h) {
+      const HoleCard& c = g.round(p).card()[h];
+      const int net = c.strokes - g.strokes_received(p)[h];
+      // The table: 2 for net par, one more per stroke under, one less per stroke over, never below 0.
+      const int expected = net >= c.par + 2 ? 0 : c.par + 2 - net;
+      CHECK(ps.points[h] == expected);
+      total += expected;
+    }
+    CHECK(ps.total_points == total);
+  }
+  // Ranked by points, most first.
+  for (std::size_t k = 1; k < s.ranking.size(); ++k)
+    CHECK(s.players[static_cast<std::size_t>(s.ranking[k - 1])].total_points >=
+          s.players[static_cast<std::size_t>(s.ranking[k])].total_points);
+  // The JSON carries the same points and each hole's wind.
+  const nlohmann::json j = group_json(g);
+  CHECK(j["format"] == "stableford");
+  REQUIRE(j["players"].size() == 3);
+  for (const auto& p : j["players"])
+    for (const auto& h : p["holes"]) CHECK((h.contains("points") && h.contains("wind_mps") && h.contains("wind_toward_deg")));
+}
+
+TEST_CASE("turn order: honours on the tee, then the ball farthest from the hole", "[modes][golf][formats]") {
+  GolfGroup g(test::assets(), links(), {bot("beginner"), bot("tour"), bot("amateur")}, {});
+  // Hole 1: everyone tees off in the order given.
+  for (int p = 0; p < 3; ++p) {
+    REQUIRE(g.to_play() == p);
+    g.play_bot();
+  }
+  int turns = 0;
+  while (g.hole_index() == 0) {
+    // The player to play lies farthest from the cup among those still on the hole.
+    const int next = g.to_play();
+    for (int p = 0; p < 3; ++p)
+      if (g.round(p).hole_index() == 0) CHECK(g.round(p).to_pin() <= g.round(next).to_pin());
+    g.play_bot();
+    REQUIRE(++turns < 60);
+  }
+  // Hole 2: the lowest score on hole 1 has the honour (ties in the order they teed off).
+  std::vector<int> order{0, 1, 2};
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return g.round(a).card()[0].strokes < g.round(b).card()[0].strokes; });
+  for (int p : order) {
+    REQUIRE(g.to_play() == p);
+    g.play_bot();
+  }
+}
+
+TEST_CASE("match play: the status follows the holes won, a short putt is conceded, a conceded hole is lost", "[modes][golf][formats]") {
+  GolfOptions o;
+  o.format = GolfFormat::Match;
+  o.gimme_m = kMatchGimme;
+  o.seed = 4;
+  GolfGroup g(test::assets(), links(), {bot("tour", 2), bot("amateur", 14)}, o);
+  // Match play gives the difference: 12 over three holes is 2 strokes, on index 1 and 2.
+  CHECK(g.strokes_received(0) == std::vector<int>{0, 0, 0});
+  CHECK(g.strokes_received(1) == std::vector<int>{0, 1, 1});
+  // The first player concedes hole 1 at their second turn.
+  g.play_bot();
+  g.play_bot();
+  REQUIRE(g.to_play() >= 0);
+  const int conceder = g.to_play();
+  g.concede_hole();
+  CHECK(g.hole_index() == 1);
+  CHECK(g.round(conceder).card()[0].conceded);
+  play_out(g);
+  const Standings s = standings(g);
+  REQUIRE(s.match);
+  CHECK(s.match->holes[0].winner == 1 - conceder);
+  int lead = 0;
+  for (std::size_t h = 0; h < 3; ++h) {
+    const int a = s.players[0].net[h], b = s.players[1].net[h];
+    const int winner = h == 0 ? 1 - conceder : a < b ? 0 : b < a ? 1 : -1;
+    CHECK(s.match->holes[h].winner == winner);
+    if (s.match->decided_after < 0 || static_cast<int>(h) <= s.match->decided_after) lead += winner == 0 ? 1 : winner == 1 ? -1 : 0;
+  }
+  CHECK(s.match->lead == lead);
+  // Every conceded putt was inside the gimme; no putt was played from inside it.
+  for (int p = 0; p < 2; ++p)
+    for (const HoleCard& c : g.round(p).card())
+      for (std::size_t k = 0; k < c.shots.size(); ++k) {
+        const StrokeRecord& st = c.shots[k];
+        if (st.lie != "green") continue;
+        const double from = std::hypot(st.start.x() - g.course().holes[static_cast<std::size_t>(c.number - 1)].pin.x(),
+                                       st.start.z() - g.course().holes[static_cast<std::size_t>(c.number - 1)].pin.z());
+        if (st.conceded) CHECK(from <= kMatchGimme + 1e-9);
+        else CHECK(from > kMatchGimme);
+      }
+  // Stroke play refuses a concession.
+  GolfGroup stroke(test::assets(), links(), {bot("tour")}, {});
+  CHECK_THROWS_AS(stroke.concede_hole(), InputError);
+}
+
+TEST_CASE("gimmes and auto-putt: conceded putts count one stroke, auto-putts count what the physics holes", "[modes][golf][formats]") {
+  GolfOptions o;
+  o.gimme_m = 2.0;
+  o.seed = 3;
+  GolfGroup g(test::assets(), links(), {bot("amateur")}, o);
+  play_out(g);
+  int conceded = 0;
+  for (const HoleCard& c : g.round(0).card()) {
+    CHECK(c.holed);
+    CHECK(c.strokes == static_cast<int>(c.shots.size()) + c.penalties);
+    for (const StrokeRecord& st : c.shots) conceded += st.conceded;
+    if (c.shots.back().conceded) CHECK(c.shots.back().lie == "green");
+  }
+  // With a 2 m gimme an amateur's round has at least one conceded putt (never more than one a hole).
+  CHECK(conceded >= 1);
+  CHECK(conceded <= 3);
+
+  // A human on auto-putt: their putts are the bot's turns, and the card counts every one.
+  GolfOptions a;
+  a.auto_putt = true;
+  a.seed = 8;
+  GolfGroup h(test::assets(), links(), {{"You", "amateur", true, 0}}, a);
+  int putts_auto = 0, turns = 0;
+  while (!h.finished()) {
+    const bool green = h.round(0).lie() == "green";
+    CHECK(h.bot_turn() == green);
+    if (green) ++putts_auto;
+    h.play_bot();  // the test plays the human's long game with the caddie
+    REQUIRE(++turns < 80);
+  }
+  int putts = 0;
+  for (const HoleCard& c : h.round(0).card()) putts += c.putts;
+  CHECK(putts == putts_auto);
+}
+
+TEST_CASE("a saved round resumes to the same state and finishes bit for bit the same", "[modes][golf][formats][save]") {
+  GolfOptions o;
+  o.format = GolfFormat::Skins;
+  o.seed = 5;
+  const std::vector<GolfPlayer> players{bot("tour", 0), bot("scratch", 2), bot("amateur", 15), {"You", "amateur", true, 18}};
+  GolfGroup whole(test::assets(), links(), players, o);
+  play_out(whole);
+
+  GolfGroup part(test::assets(), links(), players, o);
+  for (int k = 0; k < 9; ++k) part.play_bot();
+  const std::string text = json_text(round_save_json(part, links().source.string()));
+  GolfGroup resumed = resume_round(test::assets(), parse_round_save(text, "save.json"));
+  CHECK(resumed.to_play() == part.to_play());
+  CHECK(resumed.hole_index() == part.hole_index());
+  CHECK(json_text(group_json(resumed)) == json_text(group_json(part)));
+  play_out(resumed);
+  CHECK(json_text(group_json(resumed)) == json_text(group_json(whole)));
+  // A save whose bot strokes this build would not play is refused, naming the event.
+  nlohmann::json bad = nlohmann::json::parse(text);
+  bad["events"][0]["power"] = 0.5;
+  try {
+    resume_round(test::assets(), parse_round_save(bad.dump(), "save.json"));
+    FAIL("accepted");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("event 1") != std::string::npos);
+  }
+  bad = nlohmann::json::parse(text);
+  bad["players"][1]["handicap"] = 60;
+  CHECK_THROWS_WITH(parse_round_save(bad.dump(), "save.json"), Catch::Contains("players[1].handicap") && Catch::Contains("54"));
+}

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <filesystem>
 #include <optional>
 
 #include "game/render/image.hpp"
@@ -60,6 +61,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
   bool paused = false, quit = false;
   double paused_at = 0.0;
   std::vector<KeyPress> carried;  // keys pressed after a Tab: the next mode's
+  int shots = 0;                  // F12 screenshots taken
 
   while (!win.should_close() && !quit) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -73,8 +75,13 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
 
     MenuChoice choice = MenuChoice::None;
     ViewInput vi;
+    bool snapshot = false;
     for (std::size_t i = 0; i < keys.size(); ++i) {
       const KeyPress& k = keys[i];
+      if (k.key == GLFW_KEY_F12) {  // a screenshot, in any mode, paused or not
+        snapshot = true;
+        continue;
+      }
       if (paused) {
         if (k.key == GLFW_KEY_ESCAPE || k.key == GLFW_KEY_ENTER || k.key == GLFW_KEY_KP_ENTER) choice = MenuChoice::Resume;
         else if (k.key == GLFW_KEY_R) choice = MenuChoice::Restart;
@@ -150,6 +157,18 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
     stats.ms_total += ms;
     stats.frame_ms.push_back(ms);
     const bool last = quit || win.should_close() || (o.frames > 0 && stats.frames >= o.frames) || slots[active].view->done();
+    if (snapshot) {
+      int sw = 0, sh = 0;
+      std::vector<unsigned char> rgba;
+      win.read_pixels(sw, sh, rgba);
+      const std::string path = (std::filesystem::path(o.shots_dir) / ("sweetspot_shot_" + std::to_string(++shots) + ".png")).string();
+      try {
+        write_png_atomic(path, sw, sh, rgba);
+        out << "screenshot: " << path << " (" << sw << "x" << sh << ")\n";
+      } catch (const std::exception& e) {
+        out << "screenshot not written: " << e.what() << "\n";
+      }
+    }
     if (last && !o.screenshot.empty()) {
       int sw = 0, sh = 0;
       std::vector<unsigned char> rgba;

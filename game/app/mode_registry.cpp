@@ -1,9 +1,15 @@
 #include "game/app/mode_registry.hpp"
 
+#include <filesystem>
+
+#include "game/content/bag_file.hpp"
 #include "game/content/course_file.hpp"
+#include "game/modes/golf/range_session.hpp"
+#include "game/report/round_save.hpp"
 #include "game/ui/cage_view.hpp"
 #include "game/ui/golf_view.hpp"
 #include "game/ui/lab_view.hpp"
+#include "game/ui/range_view.hpp"
 
 namespace sweetspot {
 
@@ -15,6 +21,32 @@ Course play_course(const Assets& assets, const PlayOptions& o) {
   return course;
 }
 
+// The round the window plays: you (and your bag), the bots you asked for (one of your skill
+// when none), the format and its options, or a saved round to go on with.
+std::unique_ptr<GolfPlay> golf_model(const Assets& assets, const PlayOptions& o) {
+  GolfSetup setup;
+  setup.flyover = o.flyover;
+  setup.difficulty = meter_difficulty(o.difficulty);
+  if (!o.resume.empty()) {
+    const SavedRound saved = read_round_save(o.resume);
+    setup.players = saved.players;
+    setup.options = saved.options;
+    setup.resume = saved.events;
+    return std::make_unique<GolfPlay>(assets, load_course(assets, saved.course), setup);
+  }
+  GolfPlayer you{"You", o.skill, true, 0, {}};
+  // A bag the range has not written yet (play --mode range --bag F, Tab to golf) is no bag.
+  if (!o.bag.empty() && std::filesystem::exists(o.bag)) you.bag = bag_stock(load_bag(assets, o.bag));
+  setup.players.push_back(you);
+  const std::vector<std::string> bots = o.bots.empty() ? std::vector<std::string>{o.skill} : o.bots;
+  for (const std::string& b : bots)
+    if (b != "none") setup.players.push_back({b + " bot", b, false, 0, {}});
+  setup.options.format = golf_format(o.format);
+  setup.options.gimme_m = o.gimme >= 0.0 ? o.gimme : setup.options.format == GolfFormat::Match ? kMatchGimme : 0.0;
+  setup.options.auto_putt = o.auto_putt;
+  return std::make_unique<GolfPlay>(assets, play_course(assets, o), setup);
+}
+
 }  // namespace
 
 ModeRegistry play_modes(const Assets& assets, const PlayOptions& o, std::ostream& out) {
@@ -23,8 +55,11 @@ ModeRegistry play_modes(const Assets& assets, const PlayOptions& o, std::ostream
   return {
       {"lab", [a, o] { return make_lab_view(*a, std::make_unique<LabModel>(*a, o.scenario, o.overrides)); }},
       {"golf", [a, o, log] {
-         return make_golf_view(*a, std::make_unique<GolfPlay>(*a, play_course(*a, o), golfer_skill(o.skill)),
-                               {o.exit_when_done}, *log);
+         return make_golf_view(*a, golf_model(*a, o), {o.exit_when_done, o.save, !o.metric}, *log);
+       }},
+      {"range", [a, o] {
+         return make_range_view(*a, std::make_unique<RangePlay>(*a, golfer_skill(o.skill), 5, meter_difficulty(o.difficulty)),
+                                {o.bag.empty() ? std::string("sweetspot_bag.toml") : o.bag, !o.metric});
        }},
       {"baseball", [a, o] { return make_cage_view(*a, std::make_unique<BattingCage>(*a), {o.exit_when_done, o.pitches}); }},
   };

@@ -63,8 +63,10 @@ LoopStats run_window(const Assets& assets, const PlayOptions& o, std::ostream& o
   std::size_t first = modes.size();
   for (std::size_t i = 0; i < modes.size(); ++i)
     if (modes[i].name == o.mode) first = i;
-  if (first == modes.size()) throw InputError("--mode " + o.mode + ": unknown mode (allowed: lab, golf, baseball)");
-  if (o.mode == "golf") {
+  if (first == modes.size()) throw InputError("--mode " + o.mode + ": unknown mode (allowed: lab, golf, range, baseball)");
+  if (o.mode == "range") {
+    golfer_skill(o.skill);
+  } else if (o.mode == "golf") {
     load_course(assets, o.course);
     golfer_skill(o.skill);
   } else if (o.mode == "baseball") {
@@ -81,6 +83,7 @@ LoopStats run_window(const Assets& assets, const PlayOptions& o, std::ostream& o
   LoopOptions lo;
   lo.frames = o.frames;
   lo.screenshot = o.screenshot;
+  lo.shots_dir = o.shots_dir;
   return run_main_loop(win, renderer, modes, first, lo, out);
 }
 

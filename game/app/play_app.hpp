@@ -22,6 +22,17 @@ struct PlayOptions {
   std::string course = "links";          ///< golf: a course of assets/courses or a .toml
   std::string skill = "scratch";         ///< golf: the player's swing speed (and the bot opponent's skill)
   int holes = 0;                         ///< golf: play only the first N holes (0 = all)
+  std::vector<std::string> bots;         ///< golf: the bot players' skills (empty: one of `skill`; "none": alone)
+  std::string format = "stroke";         ///< golf: stroke, match, stableford, skins
+  double gimme = -1.0;                   ///< golf: m; < 0 the format's default
+  bool auto_putt = false;                ///< golf: your putts played by the physics with your skill
+  std::string difficulty = "standard";   ///< golf: the meter's perfect window (easy, standard, pro)
+  bool flyover = true;                   ///< golf: each hole opens with its flyover
+  std::string bag;                       ///< golf: a bag file (range --bag-out) the caddie uses
+  std::string resume;                    ///< golf: a saved round to go on with
+  std::string save = "sweetspot_round.json";  ///< golf: where S saves the round
+  bool metric = false;                   ///< golf: metres instead of yards and feet
+  std::string shots_dir = ".";           ///< F12 screenshots go here
   bool exit_when_done = false;           ///< golf / baseball: close the window once the round or the pitches are done
   int pitches = 0;                       ///< baseball: pitches in the session (0 = until closed)
 };

@@ -1,4 +1,5 @@
 // `sweetspot play [SCENARIO]`: the game window, or the shot headless when there is no display.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -7,6 +8,10 @@
 #include "game/cli/command.hpp"
 #include "game/render/image.hpp"
 #include "game/app/display.hpp"
+#include "game/content/bag_file.hpp"
+#include "game/modes/golf/golf_group.hpp"
+#include "game/modes/golf/meter_clock.hpp"
+#include "game/report/round_save.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
@@ -22,16 +27,40 @@ RunFn setup_play(CLI::App& sub) {
   sub.add_option("--width", o->width, "window width in px")->check(CLI::Range(640, 7680))->capture_default_str();
   sub.add_option("--height", o->height, "window height in px")->check(CLI::Range(480, 4320))->capture_default_str();
   std::vector<const CLI::Option*> window_only;
-  window_only.push_back(sub.add_option("--mode", o->mode, "lab (the shot and its tuning), golf (a round on --course) or baseball (the batting cage); Tab switches")
+  window_only.push_back(sub.add_option("--mode", o->mode, "lab (the shot and its tuning), golf (a round on --course), range (bag gapping) or baseball (the batting cage); Tab switches")
       ->capture_default_str());
   window_only.push_back(sub.add_option("--course", o->course, "golf: a course of assets/courses or a .toml")->capture_default_str());
   window_only.push_back(sub.add_option("--skill", o->skill, "golf: tour, scratch, amateur or beginner (swing speed; the bot opponent)")
       ->capture_default_str());
   window_only.push_back(sub.add_option("--holes", o->holes, "golf: play only the first N holes")->check(CLI::Range(1, 18)));
+  window_only.push_back(sub.add_option("--bot", o->bots, "golf: a bot player of this skill, repeat for up to 3 (default one of --skill; none: alone)"));
+  window_only.push_back(sub.add_option("--format", o->format, "golf: stroke (default), match (one bot), stableford or skins"));
+  window_only.push_back(sub.add_option("--gimme", o->gimme, "golf: putts this close (m) are conceded, 0..3 (default 0.6 in match play, else off)"));
+  window_only.push_back(sub.add_flag("--auto-putt", o->auto_putt, "golf: your putts are played for you, with your skill"));
+  window_only.push_back(sub.add_option("--difficulty", o->difficulty, "golf: the meter's perfect window: easy (25 ms), standard (10 ms, default), pro (0)"));
+  window_only.push_back(sub.add_flag("--no-flyover", [o](std::int64_t) { o->flyover = false; }, "golf: no flyover as a hole opens"));
+  window_only.push_back(sub.add_option("--bag", o->bag, "golf: your measured bag (range --bag-out) for your caddie and map"));
+  window_only.push_back(sub.add_option("--resume", o->resume, "golf: go on with a round saved with S"));
+  window_only.push_back(sub.add_option("--save", o->save, "golf: where S saves the round (default sweetspot_round.json)"));
+  window_only.push_back(sub.add_flag("--metric", o->metric, "golf: metres (default yards and feet; U switches in play)"));
+  window_only.push_back(sub.add_option("--shots-dir", o->shots_dir, "where F12 writes its screenshots (default: here)"));
   window_only.push_back(sub.add_flag("--exit-when-done", o->exit_when_done, "golf, baseball: close once the round or the pitches are done (automation)"));
   window_only.push_back(sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(CLI::Range(1, 1000)));
   return [o, window_only](const Assets& assets) -> int {
     if (!o->screenshot.empty()) check_png_output(o->screenshot, "--screenshot");  // before the frames run
+    // The golf options are checked now, not when Tab first opens the golf mode.
+    golf_format(o->format);
+    meter_difficulty(o->difficulty);
+    golfer_skill(o->skill);
+    for (const std::string& b : o->bots)
+      if (b != "none") golfer_skill(b);
+    if (o->bots.size() > 3) throw InputError("--bot: a round has at most 4 players (you and 3 bots)");
+    if (o->format == "match" && (o->bots.size() > 1 || (o->bots.size() == 1 && o->bots[0] == "none")))
+      throw InputError("--format match: match play is you against one bot (--bot once)");
+    check_range("--gimme", o->gimme < 0.0 ? 0.0 : o->gimme, GolfOptions::kGimme, "m");
+    // The range writes the bag (S): there the file may not exist yet.
+    if (!o->bag.empty() && (o->mode != "range" || std::filesystem::exists(o->bag))) load_bag(assets, o->bag);
+    if (!o->resume.empty()) read_round_save(o->resume);
     std::string why;
     // Headless plays the lab's one shot: the game modes' options would be ignored, so
     // they are refused (--frames and --screenshot have a headless meaning).

@@ -16,6 +16,7 @@
 #include "game/content/swings_file.hpp"
 #include "game/modes/golf/bot.hpp"
 #include "game/modes/golf/golf_group.hpp"
+#include "game/modes/golf/range_session.hpp"
 #include "game/render/dispersion_plot.hpp"
 #include "game/report/round_json.hpp"
 #include "game/report/round_save.hpp"
@@ -38,7 +39,7 @@ struct RoundOptions {
   int balls = 5;
   bool json = false;
   std::string plot;
-  std::string save, resume;
+  std::string save, resume, bag;
   int stop_after = 0;  // holes; 0: the whole round
 };
 
@@ -46,10 +47,10 @@ struct RoundOptions {
 // skill, numbered when two share one.
 std::vector<GolfPlayer> round_players(const RoundOptions& o) {
   std::vector<GolfPlayer> players;
-  if (!o.swings.empty()) players.push_back({"swings " + o.swings, o.bots.empty() ? "tour" : o.bots.front(), true, 0});
+  if (!o.swings.empty()) players.push_back({"swings " + o.swings, o.bots.empty() ? "tour" : o.bots.front(), true, 0, {}});
   const std::size_t first_bot = o.swings.empty() ? 0 : 1;  // with a script, the first --bot plays on after it
-  for (std::size_t i = first_bot; i < o.bots.size(); ++i) players.push_back({o.bots[i] + " bot", o.bots[i], false, 0});
-  if (players.empty()) players.push_back({"tour bot", "tour", false, 0});
+  for (std::size_t i = first_bot; i < o.bots.size(); ++i) players.push_back({o.bots[i] + " bot", o.bots[i], false, 0, {}});
+  if (players.empty()) players.push_back({"tour bot", "tour", false, 0, {}});
   for (std::size_t i = 0; i < players.size(); ++i) {
     int same = 0, before = 0;
     for (std::size_t k = 0; k < players.size(); ++k) {
@@ -66,6 +67,10 @@ std::vector<GolfPlayer> round_players(const RoundOptions& o) {
   return players;
 }
 
+void give_bag(const Assets& assets, const RoundOptions& o, std::vector<GolfPlayer>& players) {
+  if (!o.bag.empty()) players.front().bag = bag_stock(load_bag(assets, o.bag));
+}
+
 GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
   if (!o.resume.empty()) return resume_round(assets, read_round_save(o.resume));
   Course course = load_course(assets, o.course);
@@ -78,7 +83,9 @@ GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
   options.format = golf_format(o.format);
   options.gimme_m = o.gimme >= 0.0 ? o.gimme : options.format == GolfFormat::Match ? kMatchGimme : 0.0;
   options.seed = o.seed;
-  return GolfGroup(assets, course, round_players(o), options);
+  std::vector<GolfPlayer> players = round_players(o);
+  give_bag(assets, o, players);
+  return GolfGroup(assets, course, players, options);
 }
 
 int play_stroke_round(const Assets& assets, const RoundOptions& o) {
@@ -179,6 +186,7 @@ RunFn setup_round(CLI::App& sub) {
   auto o = std::make_shared<RoundOptions>();
   sub.add_option("course", o->course, "a course of assets/courses (default links) or a .toml file");
   sub.add_option("--bot", o->bots, "a bot player of this skill: tour, scratch, amateur or beginner; repeat for up to 4 players (default one tour bot)");
+  sub.add_option("--bag", o->bag, "the first player's measured bag (range --bag-out): their caddie's carries");
   sub.add_option("--handicap", o->handicaps, "course handicap per player in order, 0..54 (default 0)");
   sub.add_option("--format", o->format, "stroke (default), match (two players), stableford or skins");
   sub.add_option("--gimme", o->gimme, "putts this close (m) are conceded, 0..3 (default: 0.6 in match play, else off)");
@@ -202,9 +210,9 @@ RunFn setup_round(CLI::App& sub) {
     if (!o->plot.empty()) check_png_output(o->plot, "--plot");
     if (o->balls < 1 || o->balls > 100) throw InputError("--balls " + std::to_string(o->balls) + " is out of range (allowed [1, 100])");
     if (!o->resume.empty() && (!o->bots.empty() || !o->handicaps.empty() || o->format != "stroke" || !o->swings.empty() ||
-                               o->calm || o->gimme >= 0.0 || o->mode != "stroke"))
+                               o->calm || o->gimme >= 0.0 || o->mode != "stroke" || !o->bag.empty()))
       throw InputError("--resume: the saved round sets its players, format and options; give none of --bot, --handicap, "
-                       "--format, --gimme, --calm, --swings, --mode");
+                       "--format, --gimme, --calm, --swings, --mode, --bag");
     if (o->calm && !o->save.empty()) throw InputError("--calm: a saved round keeps the course's winds; not with --save");
     if (!o->swings.empty() && !o->save.empty()) throw InputError("--save: a scripted round is replayed from its file; not with --swings");
     if (o->stop_after < 0 || o->stop_after > 18)

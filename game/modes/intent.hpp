@@ -22,6 +22,7 @@ enum class IntentKind : unsigned char {
   ClubDown,
   CaddieClub,   ///< golf: the caddie's club for the distance
   CaddiePlays,  ///< golf: the caddie's bot plays this stroke
+  Concede,      ///< golf, match play: give up the hole
   Pitch,        ///< batting: call for the next pitch
   BatUp,        ///< batting: the bat's height a centimetre up
   BatDown,

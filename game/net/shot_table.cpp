@@ -197,6 +197,14 @@ ShotTable::Played ShotTable::play(const OcMessage& m, bool record_samples) {
     line["end"] = to_string(rec.end);
     line["to_pin_m"] = rec.to_pin_m;
     line["hole_strokes"] = hole_strokes;
+    for (const HoleCard& h : round.card())
+      if (h.number == hole && h.picked_up) line["picked_up"] = true;
+    if (!round.finished()) {
+      // What the device is told next (the 201): the hole and club to play and the distance.
+      line["next_hole"] = round.hole().number;
+      line["next_club"] = s.club();
+      line["next_to_pin_m"] = round.to_pin();
+    }
     if (round.finished()) {
       line["round_over"] = true;
       line["round_strokes"] = round.total_strokes();
@@ -213,6 +221,9 @@ ShotTable::Played ShotTable::play(const OcMessage& m, bool record_samples) {
   line["world"] = r.world;
   line["launch"] = shot["launch"];
   line["flight"] = shot["flight"];
+  // Right (+) or left of the line the shot was aimed on, at landing: what a golfer calls the
+  // miss (the flight's lateral_m is along the world's axis, which a hole may not follow).
+  line["side_m"] = side_of_aim(r, r.trajectory.summary.landing_position);
   if (shot.contains("warnings")) line["warnings"] = shot["warnings"];
   if (m.club) {
     line["club_data"] = club_data_json(*m.club);
@@ -238,7 +249,9 @@ ShotTable::Played ShotTable::play(const OcMessage& m, bool record_samples) {
   }
   p.line = std::move(line);
   p.flown = true;
-  p.club_changed = s.club() != club_before || p.round_over;
+  // In a round every shot changes what the device must be told (the distance, often the hole
+  // and club): the 201 goes after each; on the range only when the club changes.
+  p.club_changed = s.round != nullptr || s.club() != club_before || p.round_over;
   p.result = std::move(r);
   return p;
 }

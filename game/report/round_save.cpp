@@ -53,11 +53,12 @@ struct Reader {
 nlohmann::json round_save_json(const GolfGroup& g, const std::string& course) {
   using nlohmann::json;
   json players = json::array();
-  for (const GolfPlayer& p : g.players())
-    players.push_back({{"name", p.name}, {"skill", p.skill}, {"human", p.human}, {"handicap", p.handicap}});
-  json bag = json::array();
-  for (const GolfBot::Stock& s : g.options().bag)
-    bag.push_back({{"club", s.club}, {"carry_m", s.carry}, {"total_m", s.total}, {"spread_m", s.spread}, {"side_spread_m", s.side_spread}});
+  for (const GolfPlayer& p : g.players()) {
+    json bag = json::array();
+    for (const GolfBot::Stock& s : p.bag)
+      bag.push_back({{"club", s.club}, {"carry_m", s.carry}, {"total_m", s.total}, {"spread_m", s.spread}, {"side_spread_m", s.side_spread}});
+    players.push_back({{"name", p.name}, {"skill", p.skill}, {"human", p.human}, {"handicap", p.handicap}, {"bag", bag}});
+  }
   json events = json::array();
   for (const GolfEvent& e : g.events()) {
     json ev = {{"player", e.player}, {"kind", kind_name(e.kind)}};
@@ -73,8 +74,7 @@ nlohmann::json round_save_json(const GolfGroup& g, const std::string& course) {
   return {{"sweetspot_round", kVersion},     {"course", course},
           {"players", players},              {"format", to_string(g.options().format)},
           {"gimme_m", g.options().gimme_m},  {"auto_putt", g.options().auto_putt},
-          {"seed", g.options().seed},        {"bag", bag},
-          {"events", events}};
+          {"seed", g.options().seed},        {"events", events}};
 }
 
 SavedRound parse_round_save(const std::string& text, const std::string& source) {
@@ -92,6 +92,7 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
   const auto& players = r.at(j, "players", "");
   if (!players.is_array() || players.empty() || players.size() > 4) r.fail("players", "1 to 4 players");
   static constexpr Range kHandicap{0.0, kMaxHandicap};
+  static constexpr Range kCarry{0.0, 500.0};  // m
   for (std::size_t i = 0; i < players.size(); ++i) {
     const std::string path = "players[" + std::to_string(i) + "].";
     GolfPlayer p;
@@ -106,6 +107,18 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
     } catch (const InputError& e) {
       r.fail(path + "skill", e.what());
     }
+    const auto& bag = r.at(players[i], "bag", path);
+    if (!bag.is_array() || bag.size() > 14) r.fail(path + "bag", "a list of at most 14 clubs");
+    for (std::size_t k = 0; k < bag.size(); ++k) {
+      const std::string at = path + "bag[" + std::to_string(k) + "].";
+      GolfBot::Stock st;
+      st.club = r.text(bag[k], "club", at);
+      st.carry = r.number(bag[k], "carry_m", kCarry, at);
+      st.total = r.number(bag[k], "total_m", kCarry, at);
+      st.spread = r.number(bag[k], "spread_m", kCarry, at);
+      st.side_spread = r.number(bag[k], "side_spread_m", kCarry, at);
+      p.bag.push_back(st);
+    }
     s.players.push_back(p);
   }
   try {
@@ -116,19 +129,6 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
   s.options.gimme_m = r.number(j, "gimme_m", GolfOptions::kGimme);
   s.options.auto_putt = r.flag(j, "auto_putt");
   s.options.seed = r.whole(j, "seed");
-  static constexpr Range kCarry{0.0, 500.0};
-  const auto& bag = r.at(j, "bag", "");
-  if (!bag.is_array() || bag.size() > 14) r.fail("bag", "a list of at most 14 clubs");
-  for (std::size_t i = 0; i < bag.size(); ++i) {
-    const std::string path = "bag[" + std::to_string(i) + "].";
-    GolfBot::Stock st;
-    st.club = r.text(bag[i], "club", path);
-    st.carry = r.number(bag[i], "carry_m", kCarry, path);
-    st.total = r.number(bag[i], "total_m", kCarry, path);
-    st.spread = r.number(bag[i], "spread_m", kCarry, path);
-    st.side_spread = r.number(bag[i], "side_spread_m", kCarry, path);
-    s.options.bag.push_back(st);
-  }
   const auto& events = r.at(j, "events", "");
   if (!events.is_array()) r.fail("events", "must be a list");
   const Range kPlayer{0.0, static_cast<double>(s.players.size() - 1)};

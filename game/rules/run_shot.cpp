@@ -193,6 +193,17 @@ ShotResult run_shot(const ResolvedShot& s, const std::string& name, const RunOpt
   return r;
 }
 
+double flat_roll_distance(const ResolvedShot& s, const SurfaceMaterial& surface) {
+  const ShotResult r = launch_shot(s, "flat roll");
+  const BallProperties ball{s.ball.mass, s.ball.radius, s.ball.inertia};
+  const Vec3 start = r.launch_state.position;
+  const FlatGround ground(surface, start.y() - s.ball.radius);
+  const ShotModel model = make_shot_model(ball, *s.aero, s.spec.environment, &ground, s.spec.flight);
+  ShotState state = start_state(r.launch_state);
+  while (!state.ended) step(model, state);
+  const Vec3 end = state.position();
+  return std::hypot(end.x() - start.x(), end.z() - start.z());
+}
 
 ShotResult run_scenario(const Scenario& s, const RunOptions& options) { return run_shot(s.resolved, s.name, options); }
 

@@ -25,6 +25,11 @@ ShotResult run_shot(const ResolvedShot& shot, const std::string& name, const Run
 /// flies. Exposed for `fit` and tests.
 ShotResult launch_shot(const ResolvedShot& shot, const std::string& name);
 
+/// Delivery -> impact -> launch, then the ball over endless flat ground of `surface` at the
+/// level it was struck from, to rest: how far the stroke goes on a flat green of that speed
+/// (m, horizontal). The putting preview's distances come from this same physics.
+double flat_roll_distance(const ResolvedShot& shot, const SurfaceMaterial& surface);
+
 /// run_shot(scenario.resolved, scenario.name, options).
 ShotResult run_scenario(const Scenario& s, const RunOptions& options = {});
 

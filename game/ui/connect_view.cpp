@@ -84,12 +84,21 @@ void draw_panel(const ConnectServer& server, const ConnectView& v, const std::st
       ImGui::EndTable();
     }
     if (j.contains("model_error")) ImGui::TextWrapped("club data: %s", j["model_error"].get<std::string>().c_str());
+    // Left and right of the line the shot was aimed on, not the world's axis.
+    const double side = j.value("side_m", F["lateral_m"].get<double>());
     ImGui::Text("Carry %.1f yd   total %.1f yd   %.1f yd %s", m_to_yd(F["carry_m"].get<double>()),
-                m_to_yd(F["total_m"].get<double>()), std::abs(m_to_yd(F["lateral_m"].get<double>())),
-                F["lateral_m"].get<double>() >= 0 ? "right" : "left");
-    if (j.contains("hole"))
-      ImGui::Text("Hole %d, stroke %d: %s, %.1f m to the pin", j["hole"].get<int>(), j["hole_strokes"].get<int>(),
-                  j["end"].get<std::string>().c_str(), j["to_pin_m"].get<double>());
+                m_to_yd(F["total_m"].get<double>()), std::abs(m_to_yd(side)), side >= 0 ? "right" : "left");
+    if (j.contains("hole")) {
+      const std::string end = j["end"].get<std::string>();
+      const char* words = end == "holed" ? "In the hole!" : end == "water" ? "In the water: penalty stroke"
+                          : end == "out_of_bounds" ? "Out of bounds: stroke and distance" : "at rest";
+      ImGui::Text("Hole %d, stroke %d: %s, %.0f yd to the pin", j["hole"].get<int>(), j["hole_strokes"].get<int>(), words,
+                  m_to_yd(j["to_pin_m"].get<double>()));
+      if (j.value("picked_up", false)) ImGui::Text("Picked up at 10 strokes.");
+      if (j.contains("next_hole"))
+        ImGui::Text("Next: hole %d, %s, %.0f yd (told to the device)", j["next_hole"].get<int>(),
+                    j["next_club"].get<std::string>().c_str(), m_to_yd(j["next_to_pin_m"].get<double>()));
+    }
     if (j.value("round_over", false))
       ImGui::Text("Round over: %d strokes (par %d). A new round starts.", j["round_strokes"].get<int>(), j["round_par"].get<int>());
   }

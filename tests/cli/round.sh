@@ -150,6 +150,21 @@ set +e; msg=$("$bin" round --bot tour --format match 2>&1); rc=$?; set -e
 set +e; msg=$("$bin" round --bot tour --bot amateur --handicap 60 --handicap 1 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q "54" <<<"$msg" || fail "handicap 60: $rc $msg"
 
+# Bag gapping: the range writes the player's bag; with it the caddie picks other clubs
+# (a beginner's carries are shorter: more club for the same distance).
+"$bin" range --bot beginner --shots 3 --bag-out "$tmp/bag.toml" | grep -q "^7-iron" || fail "range table"
+grep -q '^name = "7-iron"' "$tmp/bag.toml" || fail "bag file"
+"$bin" range --bot amateur --shots 2 --json | python3 -c '
+import json, sys
+j = json.load(sys.stdin)
+c = [x["carry_m"] for x in j["clubs"]]
+assert len(c) == 13 and c == sorted(c, reverse=True), c' || fail "range json"
+clubs() { python3 -c 'import json,sys; print(" ".join(s["club"] for h in json.load(sys.stdin)["holes"] for s in h["shots"] if s["lie"] != "green"))'; }
+plain=$("$bin" round --bot tour --calm --seed 4 --json | clubs)
+bagged=$("$bin" round --bot tour --calm --seed 4 --bag "$tmp/bag.toml" --json | clubs)
+echo "clubs: stock [$plain], with the beginner's bag [$bagged]"
+[ "$plain" != "$bagged" ] || fail "the bag did not change the caddie's clubs"
+
 # The contests.
 "$bin" round --mode ctp --balls 3 --json | python3 -c '
 import json, sys

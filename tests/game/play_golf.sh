@@ -13,7 +13,7 @@ cat > "$work/drive.sh" <<'D'
 #!/usr/bin/env bash
 set -u
 bin="$1"; work="$2"
-"$bin" play --mode golf --holes 1 --exit-when-done --screenshot "$work/golf.png" > "$work/log.txt" 2>&1 &
+"$bin" play --mode golf --holes 1 --no-flyover --exit-when-done --screenshot "$work/golf.png" > "$work/log.txt" 2>&1 &
 pid=$!
 wid=""
 for _ in $(seq 1 150); do wid=$(xdotool search --name Sweetspot 2>/dev/null | head -1 || true); [ -n "$wid" ] && break; sleep 0.2; done
@@ -35,7 +35,8 @@ chmod +x "$work/drive.sh"
 xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$bin" "$work" || { cat "$work/log.txt"; exit 1; }
 cat "$work/log.txt"
 grep -q "Sweetspot Links" "$work/log.txt"
-grep -Eq "^1 +3 +[0-9]+ +[0-9]+ +[0-9]+" "$work/log.txt" || { echo "no scorecard line for hole 1"; exit 1; }
+grep -Eq "^ +1 +3 +[0-9]+ +[0-9]+\*? \([0-9]+\)" "$work/log.txt" || { echo "no scorecard line for hole 1"; exit 1; }
+grep -Eq "^putts " "$work/log.txt" || { echo "no putts row"; exit 1; }
 grep -q "ms per frame" "$work/log.txt"
 "$check" "$work/golf.png" 1280 800 40  # a green under a scorecard: few colours
 [ -n "${SWEETSPOT_GAME_ARTIFACTS:-}" ] && cp "$work/golf.png" "$SWEETSPOT_GAME_ARTIFACTS/" || true

@@ -16,7 +16,7 @@ cat > "$work/drive.sh" <<'D'
 #!/usr/bin/env bash
 set -u
 bin="$1"; work="$2"
-"$bin" play --mode golf --holes 1 --screenshot "$work/modes.png" > "$work/log.txt" 2>&1 &
+"$bin" play --mode golf --holes 1 --no-flyover --screenshot "$work/modes.png" > "$work/log.txt" 2>&1 &
 pid=$!
 wid=""
 for _ in $(seq 1 150); do wid=$(xdotool search --name Sweetspot 2>/dev/null | head -1 || true); [ -n "$wid" ] && break; sleep 0.2; done
@@ -26,12 +26,12 @@ xdotool windowfocus --sync "$wid" 2>/dev/null || true
 # The backswing starts; the marker tops out 0.8 s of golf time later, so the golf mode is
 # only passed through on the way round (its clock runs only while it is shown).
 xdotool key space; sleep 0.15
-for _ in $(seq 1 9); do xdotool key Tab; sleep 0.1; done   # golf -> lab -> baseball -> golf, three times
+for _ in $(seq 1 12); do xdotool key Tab; sleep 0.1; done  # golf -> range -> baseball -> lab -> golf, three times
 xdotool key Escape; sleep 0.5                     # cancels the swing, pauses
 kill -0 $pid 2>/dev/null || { echo "the window closed while cycling modes"; exit 1; }
 xdotool key Escape; sleep 0.3                     # resumes
 xdotool key b; sleep 1.0                          # the caddie plays the tee shot
-for _ in $(seq 1 3); do xdotool key Tab; sleep 0.5; done   # once more around
+for _ in $(seq 1 4); do xdotool key Tab; sleep 0.5; done   # once more around
 xdotool key Escape; sleep 0.3; xdotool key q      # pause, quit
 for _ in $(seq 1 50); do kill -0 $pid 2>/dev/null || break; sleep 0.2; done
 kill $pid 2>/dev/null && { echo "the window did not close on Quit"; exit 1; }
@@ -45,7 +45,7 @@ set -e
 cat "$work/log.txt"
 [ "$rc" -eq 0 ] || { echo "exit $rc (expected 0 on Quit)"; exit 1; }
 if grep -qi "assert" "$work/log.txt"; then echo "an assertion fired"; exit 1; fi
-# One swing cancelled, the caddie's tee shot the only stroke: the round kept across 12 Tabs.
+# One swing cancelled, the caddie's tee shot the only stroke: the round kept across 16 Tabs.
 grep -Eq "^golf: hole 1 of 1, 1 strokes, 1 swings cancelled" "$work/log.txt" || { echo "the golf round was not kept"; exit 1; }
 "$check" "$work/modes.png" 1280 800
 [ -n "${SWEETSPOT_GAME_ARTIFACTS:-}" ] && cp "$work/modes.png" "$SWEETSPOT_GAME_ARTIFACTS/" || true

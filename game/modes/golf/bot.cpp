@@ -31,12 +31,6 @@ constexpr double kPartialFeel = 0.06;
 
 GolfBot::GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed, std::vector<Stock> bag)
     : assets_(&assets), skill_(skill), rng_(seed) {
-  if (!bag.empty()) {
-    // Longest first, as the bag is ordered; the shortest is the partial-swing wedge.
-    std::stable_sort(bag.begin(), bag.end(), [](const Stock& a, const Stock& b) { return a.carry > b.carry; });
-    stock_ = std::move(bag);
-    return;
-  }
   const EquipmentCatalog& eq = assets.equipment();
   for (const std::string& club : golf_bag()) {
     if (club == "putter") continue;
@@ -48,8 +42,14 @@ GolfBot::GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t s
     c.swing = meter_swing(MeterInput{}, eq.club(club), eq.club_info_of(club), full_swing_speed(skill, eq.club_info_of(club)));
     s.strike = c;
     const ShotResult r = run_shot(resolve(s, assets), club, {true, false});
-    stock_.push_back({club, r.trajectory.summary.carry_m, r.trajectory.summary.total_m});
+    stock_.push_back({club, r.trajectory.summary.carry_m, r.trajectory.summary.total_m, 0.0, 0.0});
   }
+  // The player's measured clubs replace the skill's; the rest keep it. Longest first, as a
+  // bag is ordered: the shortest is the partial-swing wedge.
+  for (const Stock& m : bag)
+    for (Stock& s : stock_)
+      if (s.club == m.club) s = m;
+  std::stable_sort(stock_.begin(), stock_.end(), [](const Stock& a, const Stock& b) { return a.carry > b.carry; });
 }
 
 std::string GolfBot::suggest(double distance, bool teed) const {
@@ -175,6 +175,13 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
     for (const Tried& t : tried)
       if (!t.lost && (pick == nullptr || t.reach > pick->reach)) pick = &t;
   return pick != nullptr ? pick->in : tried.front().in;
+}
+
+MeterInput GolfBot::full_swing() {
+  MeterInput m;
+  m.power = std::clamp(1.0 + rng_.normal(skill_.power_sd), 0.02, 1.1);
+  m.accuracy_ms = std::clamp(rng_.normal(skill_.accuracy_sd_ms), MeterInput::kAccuracy.min, MeterInput::kAccuracy.max);
+  return m;
 }
 
 StrokeInput GolfBot::plan(const GolfRound& round) {

@@ -23,14 +23,16 @@ class GolfBot {
     double spread = 0.0;              ///< m, carry standard deviation (0: not measured)
     double side_spread = 0.0;         ///< m, sideways standard deviation at landing
   };
-  /// `bag`: the carries the player measured (a bag-gapping session); empty: this skill's
-  /// full swings on flat fairway. Clubs missing from `bag` are not suggested.
+  /// `bag`: the carries the player measured (a bag-gapping session); the clubs it lacks (or
+  /// all, when empty) carry as this skill's error-free full swings on flat fairway.
   GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed, std::vector<Stock> bag = {});
 
   /// The stroke it means to play from where the round's ball lies: no errors.
   StrokeInput intend(const GolfRound& round) const;
   /// intend() with this skill's meter errors drawn from the bot's seeded generator.
   StrokeInput plan(const GolfRound& round);
+  /// A full swing with this skill's meter errors drawn (the range).
+  MeterInput full_swing();
 
   const std::vector<Stock>& stock() const { return stock_; }
   /// The club a player of this skill would hit `distance` m (the shortest that carries it;

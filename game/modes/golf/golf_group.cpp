@@ -34,7 +34,7 @@ GolfGroup::GolfGroup(const Assets& assets, const Course& course, std::vector<Gol
                        " is out of range (allowed [0, 54])");
     const GolferSkill& skill = golfer_skill(pl.skill);
     rounds_.emplace_back(assets, course_, skill, winds_);
-    bots_.emplace_back(assets, skill, p == 0 ? options_.seed : seeds.next(), options_.bag);
+    bots_.emplace_back(assets, skill, p == 0 ? options_.seed : seeds.next(), pl.bag);
     order_.push_back(static_cast<int>(p));
   }
   choose_next();
@@ -128,6 +128,7 @@ void GolfGroup::choose_next() {
   auto on_hole = [&](int p) { return rounds_[static_cast<std::size_t>(p)].hole_index() == hole_; };
   while (hole_ < n && std::none_of(order_.begin(), order_.end(), on_hole)) {
     ++hole_;
+    hole_first_event_ = events_.size();
     if (hole_ < n) order_ = honour_order();
   }
   if (hole_ >= n) {
@@ -177,8 +178,14 @@ void GolfGroup::replay(const std::vector<GolfEvent>& events) {
 }
 
 std::vector<int> GolfGroup::strokes_received(int player) const {
+  // The holes' order of difficulty: their stroke indexes ranked 1..n (a course cut short,
+  // `play --holes 2`, keeps the order of the indexes it has).
   std::vector<int> index;
-  for (const CourseHole& h : course_.holes) index.push_back(h.stroke_index);
+  for (const CourseHole& h : course_.holes) {
+    int rank = 1;
+    for (const CourseHole& o : course_.holes) rank += o.stroke_index < h.stroke_index;
+    index.push_back(rank);
+  }
   int handicap = players_.at(static_cast<std::size_t>(player)).handicap;
   if (options_.format == GolfFormat::Match) {
     int lowest = handicap;

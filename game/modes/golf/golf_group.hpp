@@ -23,6 +23,9 @@ struct GolfPlayer {
   std::string skill = "tour";  ///< golfer_skill(): swing speed, and a bot's errors
   bool human = false;
   int handicap = 0;            ///< course handicap for 18 holes, [0, kMaxHandicap]
+  /// The carries this player measured (a bag-gapping session) for their caddie's clubs
+  /// (empty: the skill's full swings on flat fairway).
+  std::vector<GolfBot::Stock> bag;
 };
 
 struct GolfOptions {
@@ -34,8 +37,6 @@ struct GolfOptions {
   static constexpr Range kGimme{0.0, 3.0};  ///< m: up to "inside the leather" and well beyond
   bool auto_putt = false;      ///< humans' putts played by their skill's putting bot
   std::uint64_t seed = 1;      ///< the winds and the bots' errors
-  /// A custom bag's carries for the humans' caddie and the bots (empty: the skill's stock).
-  std::vector<GolfBot::Stock> bag;
 };
 
 /// Match play's customary gimme, "inside the leather": from the putter's head to the bottom
@@ -81,11 +82,15 @@ class GolfGroup {
   /// The turn played by the player's bot (its plan, errors drawn): a bot's turn, or the
   /// caddie playing for a human.
   const StrokeRecord& play_bot(ShotResult* shot = nullptr);
+  /// Plays a stroke bot_stroke() drew (a caller that shows the bot's choice first).
+  const StrokeRecord& play_drawn(const StrokeInput& drawn, ShotResult* shot = nullptr) { return play_stroke(drawn, true, shot); }
   /// The player to play gives up the hole (match play only: InputError otherwise).
   void concede_hole();
 
   /// Every turn so far, in order: a round given these replays to this state.
   const std::vector<GolfEvent>& events() const { return events_; }
+  /// The index in events() of the first turn on the group's current hole.
+  std::size_t hole_first_event() const { return hole_first_event_; }
   /// Replays `events` onto a new round (bot turns redrawn and checked against the record:
   /// InputError naming the event when the record is not this game's).
   void replay(const std::vector<GolfEvent>& events);
@@ -114,6 +119,7 @@ class GolfGroup {
   std::vector<GolfBot> bots_;
   std::vector<int> order_;      ///< the honour on the current hole's tee
   std::size_t hole_ = 0;
+  std::size_t hole_first_event_ = 0;
   int next_ = 0;
   std::vector<GolfEvent> events_;
   std::string note_;

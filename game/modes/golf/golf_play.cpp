@@ -5,11 +5,13 @@
 #include <cstdio>
 
 #include "game/modes/replay.hpp"
+#include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
 
 const char* to_string(GolfPlay::Stage s) {
   switch (s) {
+    case GolfPlay::Stage::Flyover: return "flyover";
     case GolfPlay::Stage::Aiming: return "aiming";
     case GolfPlay::Stage::Swinging: return "swinging";
     case GolfPlay::Stage::Flying: return "flying";
@@ -19,52 +21,134 @@ const char* to_string(GolfPlay::Stage s) {
   return "?";
 }
 
-namespace {
-
-std::vector<int> bot_card(const Assets& assets, const Course& course, const GolferSkill& skill, std::uint64_t seed) {
-  GolfRound round(assets, course, skill);
-  GolfBot bot(assets, skill, seed);
-  while (!round.finished()) round.play(bot.plan(round));
-  std::vector<int> strokes;
-  for (const HoleCard& c : round.card()) strokes.push_back(c.strokes);
-  return strokes;
+GolfSetup default_golf_setup(const GolferSkill& skill, std::uint64_t seed) {
+  GolfSetup s;
+  s.players = {{"You", skill.name, true, 0, {}}, {skill.name + " bot", skill.name, false, 0, {}}};
+  s.options.seed = seed;
+  return s;
 }
+
+namespace {
 
 std::size_t bag_index(const std::string& club) {
   const auto& bag = golf_bag();
   return static_cast<std::size_t>(std::find(bag.begin(), bag.end(), club) - bag.begin());
 }
 
+GolfSetup without_flyover(GolfSetup s) {
+  s.flyover = false;
+  return s;
+}
+
+// Player words for where a stroke ended.
+const char* end_words(StrokeEnd e) {
+  switch (e) {
+    case StrokeEnd::Rest: return "";
+    case StrokeEnd::Holed: return "In the hole!";
+    case StrokeEnd::Water: return "In the water: penalty stroke, drop";
+    case StrokeEnd::OutOfBounds: return "Out of bounds: stroke and distance";
+  }
+  return "";
+}
+
 }  // namespace
 
-GolfPlay::GolfPlay(const Assets& assets, Course course, const GolferSkill& skill, std::uint64_t opponent_seed)
+GolfPlay::GolfPlay(const Assets& assets, Course course, GolfSetup setup)
     : assets_(assets),
       course_(std::move(course)),
-      skill_(skill),
-      round_(assets, course_, skill),
-      caddie_(assets, skill, 1),
-      opponent_(bot_card(assets, course_, skill, opponent_seed)),
-      played_(course_.holes.size()) {
-  choose_club();
+      setup_(std::move(setup)),
+      group_(assets, course_, setup_.players, setup_.options) {
+  group_.replay(setup_.resume);
+  begin_turn(0.0);
+  if (setup_.flyover) {
+    stage_ = Stage::Flyover;
+    flyover_at_ = 0.0;
+  }
 }
+
+GolfPlay::GolfPlay(const Assets& assets, Course course, const GolferSkill& skill, std::uint64_t seed)
+    : GolfPlay(assets, std::move(course), without_flyover(default_golf_setup(skill, seed))) {}
 
 const std::string& GolfPlay::club() const { return golf_bag()[club_]; }
 
+bool GolfPlay::human_turn() const { return !group_.finished() && !group_.bot_turn(); }
+
 Vec3 GolfPlay::ball_centre() const {
-  const bool teed = round_.teed() && round_.lie() == "tee";
+  const GolfRound& r = round();
+  if (r.finished()) return r.course().holes.back().pin;
+  const bool teed = r.teed() && r.lie() == "tee";
   const double tee = teed ? assets_.equipment().club_info_of(club()).tee_height : 0.0;
-  return round_.ball() + Vec3(0.0, assets_.equipment().ball("tour").radius + tee, 0.0);
+  return r.ball() + Vec3(0.0, assets_.equipment().ball("tour").radius + tee, 0.0);
 }
 
 Vec3 GolfPlay::aim_direction() const {
-  const double a = round_.line_to_pin() + aim_;
+  if (round().finished()) return Vec3::UnitX();
+  const double a = round().line_to_pin() + aim_;
   return Vec3(std::cos(a), 0.0, std::sin(a));
 }
 
+double GolfPlay::flyover_progress(double now) const {
+  if (stage_ != Stage::Flyover) return 1.0;
+  return std::clamp((now - flyover_at_) / kFlyover, 0.0, 1.0);
+}
+
 void GolfPlay::choose_club() {
-  if (round_.finished()) return;
-  club_ = bag_index(round_.lie() == "green" ? std::string("putter") : caddie_.suggest(round_.to_pin(), round_.teed()));
+  const GolfRound& r = round();
+  if (r.finished()) return;
+  // The caddie's club plays like the distance today: the wind, the lie, the ground.
+  club_ = bag_index(r.lie() == "green" ? std::string("putter") : caddie().intend(r).club);
   aim_ = 0.0;
+}
+
+void GolfPlay::begin_turn(double t) {
+  if (group_.finished()) return;
+  player_ = group_.to_play();
+  turn_at_ = t;
+  choose_club();
+  build_roll_table();
+}
+
+void GolfPlay::build_roll_table() {
+  roll_table_.clear();
+  const GolfRound& r = round();
+  if (r.finished() || r.lie() != "green") return;
+  // The green's own surface, from under the cup.
+  const WorldAsset& w = *r.hole().world;
+  SurfaceContact hit;
+  if (!ground_under(*w.world, r.hole().pin.x(), r.hole().pin.z(), w.description().bounds_max.y(),
+                    w.description().bounds_max.y() - w.description().bounds_min.y(), &hit))
+    return;
+  const SurfaceMaterial& green = w.world->material(hit.material);
+  StrokeInput in;
+  in.club = "putter";
+  for (double p = 0.05; p <= MeterInput::kPower.max + 1e-9; p += 0.05) {
+    in.meter.power = p;
+    roll_table_.emplace_back(p, flat_roll_distance(resolve(r.spec_for(in), assets_), green));
+  }
+}
+
+double GolfPlay::flat_roll(double power) const {
+  if (roll_table_.empty()) return 0.0;
+  if (power <= roll_table_.front().first) return roll_table_.front().second * power / roll_table_.front().first;
+  for (std::size_t k = 1; k < roll_table_.size(); ++k)
+    if (power <= roll_table_[k].first) {
+      const auto& [p0, d0] = roll_table_[k - 1];
+      const auto& [p1, d1] = roll_table_[k];
+      return d0 + (d1 - d0) * (power - p0) / (p1 - p0);
+    }
+  return roll_table_.back().second;
+}
+
+double GolfPlay::power_for_roll(double distance) const {
+  if (roll_table_.empty()) return 0.0;
+  if (distance <= roll_table_.front().second) return roll_table_.front().first * distance / roll_table_.front().second;
+  for (std::size_t k = 1; k < roll_table_.size(); ++k)
+    if (distance <= roll_table_[k].second) {
+      const auto& [p0, d0] = roll_table_[k - 1];
+      const auto& [p1, d1] = roll_table_[k];
+      return p0 + (p1 - p0) * (distance - d0) / std::max(d1 - d0, 1e-9);
+    }
+  return roll_table_.back().first;
 }
 
 void GolfPlay::update(const Intents& intents, double now) {
@@ -72,60 +156,97 @@ void GolfPlay::update(const Intents& intents, double now) {
 }
 
 void GolfPlay::advance(double t) {
+  if (stage_ == Stage::Flyover && t - flyover_at_ >= kFlyover) {
+    stage_ = Stage::Aiming;
+    turn_at_ = flyover_at_ + kFlyover;
+  }
   if (stage_ == Stage::Swinging && meter_) {
     meter_->update(t);
-    if (const auto m = meter_->result()) {
+    if (meter_->phase() == MeterClock::Phase::Abandoned) {
+      meter_.reset();
+      stage_ = Stage::Aiming;
+      ++cancelled_;
+      message_ = "Swing abandoned, no stroke counted (Space: start, Space: power, Space: accuracy)";
+    } else if (const auto m = meter_->result()) {
       last_meter_ = *m;
-      strike({club(), aim_, *m}, t);
+      last_click_ = *meter_;
+      strike({club(), aim_, *m}, false, t);
     }
+  }
+  if (stage_ == Stage::Aiming && !group_.finished() && group_.bot_turn() && t - turn_at_ >= kBotAddress) {
+    last_meter_.reset();
+    strike(group_.bot_stroke(), true, turn_at_ + kBotAddress);
   }
   if (stage_ == Stage::Flying && t - struck_at_ >= duration(last_.trajectory)) land(struck_at_ + duration(last_.trajectory));
 }
 
 void GolfPlay::land(double t) {
   landed_at_ = t;
-  if (round_.finished()) {
+  message_ = pending_message_;
+  if (!group_.note().empty()) message_ += (message_.empty() ? "" : ". ") + group_.note();
+  if (group_.finished()) {
     stage_ = Stage::RoundOver;
-  } else if (round_.card().back().shots.empty()) {
-    stage_ = Stage::HoleOver;  // the stroke ended the hole; the next one has not started
+  } else if (group_.hole_index() != round_hole_) {
+    stage_ = Stage::HoleOver;  // everyone is done with the hole; the next has not started
   } else {
     stage_ = Stage::Aiming;
-    choose_club();
+    begin_turn(t);
   }
 }
 
-void GolfPlay::strike(const StrokeInput& s, double t) {
-  const std::size_t hole = round_.hole_index();
-  const StrokeRecord& rec = round_.play(s, &last_);
-  played_[hole].push_back(s);
+void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
+  round_hole_ = group_.hole_index();
+  const GolfPlayer& who = player_info();
+  const int stroke_no = round().card().back().strokes + 1;
+  const StrokeRecord rec = bot ? group_.play_drawn(s, &last_) : group_.play(s, &last_);
+  last_record_ = rec;
+  const GolfRound& mine = round();
+  last_rest_lie_ = mine.finished() || mine.hole_index() != round_hole_ ? "holed" : mine.lie();
   struck_at_ = t;
   meter_.reset();
   stage_ = Stage::Flying;
-  char msg[160];
+  club_ = bag_index(s.club);
+  message_.clear();
+  char msg[200];
+  const char* result = end_words(rec.end);
+  const std::string rest = rec.end == StrokeEnd::Rest ? std::string() : std::string(": ") + result;
   if (last_meter_ && s.club == "putter") {
-    std::snprintf(msg, sizeof msg, "putter: power %.0f %% -> %s", 100.0 * last_meter_->power, to_string(rec.end));
+    std::snprintf(msg, sizeof msg, "%s, stroke %d: putt at %.0f %% power%s", who.name.c_str(), stroke_no,
+                  100.0 * last_meter_->power, rest.c_str());
   } else if (last_meter_) {
-    const double late = last_meter_->accuracy_ms;
-    std::snprintf(msg, sizeof msg, "%s: power %.0f %%, %s %.0f ms -> %s%s", s.club.c_str(), 100.0 * last_meter_->power,
-                  late >= 0 ? "late" : "early", std::abs(late), to_string(rec.end), rec.penalty ? " (penalty stroke)" : "");
+    const double late = last_click_ ? last_click_->click_error_ms() : last_meter_->accuracy_ms;
+    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f %%, %s %.0f ms%s", who.name.c_str(), stroke_no,
+                  s.club.c_str(), 100.0 * last_meter_->power, std::abs(late) < 0.5 ? "on time" : late > 0 ? "Late" : "Early",
+                  std::abs(late), rest.c_str());
   } else {
-    std::snprintf(msg, sizeof msg, "caddie plays the %s -> %s%s", s.club.c_str(), to_string(rec.end),
-                  rec.penalty ? " (penalty stroke)" : "");
+    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s%s%s", who.name.c_str(), stroke_no, s.club.c_str(),
+                  who.human ? " (the caddie's swing)" : "", rest.c_str());
   }
-  message_ = msg;
+  pending_message_ = msg;
 }
 
 void GolfPlay::apply(const Intent& in) {
   const double t = in.time;
   if (in.kind == IntentKind::Restart) {
-    if (stage_ == Stage::RoundOver) new_round();
-    else restart_hole();
+    if (stage_ == Stage::RoundOver) new_round(t);
+    else restart_hole(t);
     return;
   }
   const bool putting = club() == "putter";
   const int steps = in.param > 0 ? in.param : 1;
   switch (stage_) {
+    case Stage::Flyover:
+      if (in.kind == IntentKind::Continue || in.kind == IntentKind::Swing || in.kind == IntentKind::Cancel) {
+        stage_ = Stage::Aiming;
+        turn_at_ = t;
+      }
+      break;
     case Stage::Aiming:
+      if (!human_turn()) {
+        // A bot's turn: Enter lets it swing at once.
+        if (in.kind == IntentKind::Continue) turn_at_ = t - kBotAddress;
+        break;
+      }
       switch (in.kind) {
         case IntentKind::AimLeft:
         case IntentKind::AimRight: {
@@ -143,18 +264,28 @@ void GolfPlay::apply(const Intent& in) {
         case IntentKind::CaddieClub: choose_club(); break;
         case IntentKind::Swing: {
           const double length = assets_.equipment().club(club()).length;
-          meter_.emplace(MeterClock::tempo_for(length, putting), putting);
+          meter_.emplace(MeterClock::tempo_for(length, putting), putting, perfect_window_ms(setup_.difficulty));
           meter_->click(t);
           stage_ = Stage::Swinging;
           message_.clear();
           break;
         }
+        case IntentKind::Concede:
+          if (group_.options().format == GolfFormat::Match) {
+            const std::size_t hole = group_.hole_index();
+            group_.concede_hole();
+            landed_at_ = t;
+            message_ = group_.note();
+            if (group_.finished()) stage_ = Stage::RoundOver;
+            else if (group_.hole_index() != hole) stage_ = Stage::HoleOver;
+            else begin_turn(t);
+          }
+          break;
         case IntentKind::CaddiePlays: {
-          const StrokeInput s = caddie_.plan(round_);
-          club_ = bag_index(s.club);
+          const StrokeInput s = group_.bot_stroke();
           aim_ = s.aim;
           last_meter_.reset();
-          strike(s, t);
+          strike(s, true, t);
           break;
         }
         default: break;
@@ -165,13 +296,14 @@ void GolfPlay::apply(const Intent& in) {
         meter_->click(t);
         if (const auto m = meter_->result()) {
           last_meter_ = *m;
-          strike({club(), aim_, *m}, t);
+          last_click_ = *meter_;
+          strike({club(), aim_, *m}, false, t);
         }
       } else if (in.kind == IntentKind::Cancel) {
         meter_.reset();
         stage_ = Stage::Aiming;
         ++cancelled_;
-        message_ = "swing cancelled: no stroke counted";
+        message_ = "Swing cancelled, no stroke counted";
       }
       break;
     case Stage::Flying:
@@ -182,39 +314,41 @@ void GolfPlay::apply(const Intent& in) {
       break;
     case Stage::HoleOver:
       if ((in.kind == IntentKind::Continue || in.kind == IntentKind::Swing) && t - landed_at_ >= kCardGrace) {
-        stage_ = Stage::Aiming;
-        choose_club();
         message_.clear();
+        begin_turn(t);
+        stage_ = setup_.flyover ? Stage::Flyover : Stage::Aiming;
+        flyover_at_ = t;
       }
       break;
     case Stage::RoundOver:
-      if (in.kind == IntentKind::Continue && t - landed_at_ >= kCardGrace) new_round();
+      // The final card stays until dismissed: Enter (after the grace) or Restart starts anew.
+      if (in.kind == IntentKind::Continue && t - landed_at_ >= kCardGrace) new_round(t);
       break;
   }
 }
 
-void GolfPlay::new_round() {
-  round_ = GolfRound(assets_, course_, skill_);
-  for (auto& h : played_) h.clear();
-  stage_ = Stage::Aiming;
+void GolfPlay::new_round(double t) {
+  group_ = GolfGroup(assets_, course_, setup_.players, setup_.options);
   meter_.reset();
   last_meter_.reset();
+  last_click_.reset();
   message_.clear();
-  choose_club();
+  begin_turn(t);
+  stage_ = setup_.flyover ? Stage::Flyover : Stage::Aiming;
+  flyover_at_ = t;
 }
 
-void GolfPlay::restart_hole() {
-  // The round is deterministic: the holes before, replayed from their strokes, leave it
-  // exactly where it was when this hole began.
-  const std::size_t hole = round_.hole_index();
-  round_ = GolfRound(assets_, course_, skill_);
-  for (std::size_t h = 0; h < hole; ++h)
-    for (const StrokeInput& s : played_[h]) round_.play(s);
-  played_[hole].clear();
-  stage_ = Stage::Aiming;
+void GolfPlay::restart_hole(double t) {
+  // The round is deterministic: the turns before this hole, replayed, leave it exactly where
+  // it was when the hole began.
+  std::vector<GolfEvent> before(group_.events().begin(),
+                                group_.events().begin() + static_cast<std::ptrdiff_t>(group_.hole_first_event()));
+  group_ = GolfGroup(assets_, course_, setup_.players, setup_.options);
+  group_.replay(before);
   meter_.reset();
-  message_ = "hole " + std::to_string(round_.hole().number) + " restarted";
-  choose_club();
+  stage_ = Stage::Aiming;
+  begin_turn(t);
+  message_ = "Hole " + std::to_string(course_.holes[group_.hole_index()].number) + " restarted";
 }
 
 }  // namespace sweetspot

@@ -1,7 +1,9 @@
-// The golf game as a headless model (DESIGN §1, §9): a round stroke by stroke against a bot
-// of the same skill, the club and aim the player picks, the three-click meter judged from
-// each click's own time, the flight's time in the air, the hole's and the round's end. The
-// window's view draws it and turns keys into intents; the tests drive it with scripted ones.
+// The golf game as a headless model (DESIGN §1, §9): a round for one to four players (the
+// humans at the keys, the bots taking their own turns), the club and aim the player picks,
+// the three-click meter judged from each click's own time, the flyover that opens a hole,
+// the flight's time in the air, the result told once the ball stops, the hole's and the
+// round's end. The window's view draws it and turns keys into intents; the tests drive it
+// with scripted ones.
 #pragma once
 
 #include <optional>
@@ -9,44 +11,81 @@
 #include <vector>
 
 #include "game/modes/golf/bot.hpp"
+#include "game/modes/golf/golf_group.hpp"
 #include "game/modes/golf/meter_clock.hpp"
 #include "game/modes/golf/round.hpp"
 #include "game/modes/intent.hpp"
 
 namespace sweetspot {
 
+struct GolfSetup {
+  std::vector<GolfPlayer> players;  ///< 1-4, in the order they tee off on the first hole
+  GolfOptions options;
+  bool flyover = true;              ///< each hole opens with a flyover (skippable)
+  /// The meter's timing windows, widened or narrowed (difficulty; see MeterClock).
+  MeterDifficulty difficulty = MeterDifficulty::Standard;
+  /// A saved round's turns, replayed before play goes on (resume).
+  std::vector<GolfEvent> resume;
+};
+
+/// You against a bot of your skill in stroke play: the game's default round.
+GolfSetup default_golf_setup(const GolferSkill& skill, std::uint64_t seed = 7);
+
 class GolfPlay {
  public:
-  enum class Stage { Aiming, Swinging, Flying, HoleOver, RoundOver };
+  enum class Stage { Flyover, Aiming, Swinging, Flying, HoleOver, RoundOver };
 
-  /// `opponent_seed`: the bot of the same skill, who plays the course first (its card is fixed).
-  GolfPlay(const Assets& assets, Course course, const GolferSkill& skill, std::uint64_t opponent_seed = 7);
+  GolfPlay(const Assets& assets, Course course, GolfSetup setup);
+  /// default_golf_setup(skill, seed), without the flyover (the tests' round).
+  GolfPlay(const Assets& assets, Course course, const GolferSkill& skill, std::uint64_t seed = 7);
 
   /// Applies `intents` in time order and advances to `now` (s, the mode's clock): a meter
-  /// finishes itself at its end, a flight lands, the hole ends.
+  /// finishes itself at its end, a bot plays its turn, a flight lands, the hole ends.
   void update(const Intents& intents, double now);
 
   Stage stage() const { return stage_; }
-  const GolfRound& round() const { return round_; }
-  const GolferSkill& skill() const { return skill_; }
-  const GolfBot& caddie() const { return caddie_; }
-  const std::vector<int>& opponent_strokes() const { return opponent_; }
+  const GolfGroup& group() const { return group_; }
+  /// The player at the ball: the one to play, or in the air the one who struck it.
+  int player() const { return player_; }
+  const GolfPlayer& player_info() const { return group_.players()[static_cast<std::size_t>(player_)]; }
+  /// That player's round (their ball, their card).
+  const GolfRound& round() const { return group_.round(player_); }
+  /// A human plays the next stroke at the keys (not a bot, not an auto-putt).
+  bool human_turn() const;
+  const GolferSkill& skill() const { return golfer_skill(player_info().skill); }
+  const GolfBot& caddie() const { return group_.caddie(player_); }
   const std::string& club() const;
   double aim() const { return aim_; }              ///< rad right of the line to the pin
   const std::optional<MeterClock>& meter() const { return meter_; }
   /// The last stroke's physics and the time it was struck (its flight runs from then).
   const ShotResult& last_shot() const { return last_; }
   double struck_at() const { return struck_at_; }
-  /// The last stroke's meter result (none for the caddie's strokes).
+  /// When the last ball stopped (s; the view holds on it a moment).
+  double landed_at() const { return landed_at_; }
+  const GolfSetup& setup() const { return setup_; }
+  /// The last stroke's meter result (none for the bots' and the caddie's strokes).
   const std::optional<MeterInput>& last_meter() const { return last_meter_; }
+  /// The meter as the last human stroke left it: where the clicks landed (the view marks them).
+  const std::optional<MeterClock>& last_click() const { return last_click_; }
+  /// What the last stroke did, in player words; set when the ball stops, not before.
   const std::string& message() const { return message_; }
+  /// The last stroke's record (where it started and stopped) and the lie it stopped on.
+  const StrokeRecord& last_record() const { return last_record_; }
+  const std::string& last_rest_lie() const { return last_rest_lie_; }
   /// Strokes cancelled with Esc this round (none of them counted).
   int cancelled() const { return cancelled_; }
+  /// The flyover's progress, 0 at the tee... 1 done (the view flies the camera with it).
+  double flyover_progress(double now) const;
 
   /// The ball's centre where it lies (teed up on a tee).
   Vec3 ball_centre() const;
   /// World direction of the aim, horizontal unit.
   Vec3 aim_direction() const;
+  /// On the green: how far a putt of `power` rolls on a flat green of this hole's speed (m),
+  /// from the same physics as the putt. 0 off the green.
+  double flat_roll(double power) const;
+  /// The power that rolls `distance` m on that flat green (the preview's marks).
+  double power_for_roll(double distance) const;
 
   /// Aim steps: a degree for a full shot, a quarter of one for a putt.
   static constexpr double kAimStep = 0.017453292519943295;   // rad (1°)
@@ -54,32 +93,42 @@ class GolfPlay {
   /// A scorecard takes no Enter for this long after the ball stops: a press meant to skip a
   /// flight that had just ended does not skip the card too.
   static constexpr double kCardGrace = 0.5;  // s
+  /// A bot addresses the ball this long before it swings, so a player sees whose turn it is.
+  static constexpr double kBotAddress = 1.2;  // s
+  /// The flyover's length: tee to green and back (TV golf's hole flyovers run 5-10 s).
+  static constexpr double kFlyover = 6.0;  // s
 
  private:
   void apply(const Intent& in);
   void advance(double t);
   void land(double t);
-  void strike(const StrokeInput& s, double t);
+  void strike(const StrokeInput& s, bool bot, double t);
+  void begin_turn(double t);
   void choose_club();
-  void new_round();
-  void restart_hole();
+  void new_round(double t);
+  void restart_hole(double t);
+  void build_roll_table();
 
   const Assets& assets_;
   Course course_;
-  GolferSkill skill_;
-  GolfRound round_;
-  GolfBot caddie_;
-  std::vector<int> opponent_;
-  std::vector<std::vector<StrokeInput>> played_;  ///< each hole's strokes: restart replays the holes before
+  GolfSetup setup_;
+  GolfGroup group_;
+  int player_ = 0;
   Stage stage_ = Stage::Aiming;
   std::size_t club_ = 0;  ///< index in golf_bag()
   double aim_ = 0.0;
   std::optional<MeterClock> meter_;
   std::optional<MeterInput> last_meter_;
+  std::optional<MeterClock> last_click_;  ///< the meter as the last human stroke left it
+  std::size_t round_hole_ = 0;            ///< the group's hole when the last stroke was struck
   ShotResult last_;
-  double struck_at_ = 0.0, landed_at_ = 0.0;
+  StrokeRecord last_record_;
+  std::string last_rest_lie_;
+  std::string pending_message_;  ///< the stroke's result, told when the ball stops
+  double struck_at_ = 0.0, landed_at_ = 0.0, turn_at_ = 0.0, flyover_at_ = 0.0;
   std::string message_;
   int cancelled_ = 0;
+  std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green
 };
 
 const char* to_string(GolfPlay::Stage s);

@@ -1,8 +1,36 @@
 #include "game/modes/golf/meter_clock.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "physics/error.hpp"
 
 namespace sweetspot {
+
+double perfect_window_ms(MeterDifficulty d) {
+  switch (d) {
+    case MeterDifficulty::Easy: return 25.0;
+    case MeterDifficulty::Standard: return 10.0;
+    case MeterDifficulty::Pro: return 0.0;
+  }
+  return 0.0;
+}
+
+const char* to_string(MeterDifficulty d) {
+  switch (d) {
+    case MeterDifficulty::Easy: return "easy";
+    case MeterDifficulty::Standard: return "standard";
+    case MeterDifficulty::Pro: return "pro";
+  }
+  return "?";
+}
+
+MeterDifficulty meter_difficulty(std::string_view name) {
+  for (MeterDifficulty d : {MeterDifficulty::Easy, MeterDifficulty::Standard, MeterDifficulty::Pro})
+    if (name == to_string(d)) return d;
+  throw InputError("difficulty '" + std::string(name) + "' is not one (allowed: easy, standard, pro)");
+}
 
 double MeterClock::tempo_for(double club_length, bool putter) {
   return putter ? 1.2 : 0.9 * club_length / kDriverLength;
@@ -14,6 +42,7 @@ double MeterClock::position(double t) const {
     case Phase::Backswing: return std::min(kTop, (t - t_start_) / tempo_);
     case Phase::Downswing: return std::max(kBottom, power_ - kDownFactor * (t - t_top_) / tempo_);
     case Phase::Done: return putting_ ? power_ : 0.0;
+    case Phase::Abandoned: return 0.0;
   }
   return 0.0;
 }
@@ -38,12 +67,14 @@ void MeterClock::click(double t) {
       phase_ = Phase::Done;
       break;
     }
-    case Phase::Done: break;
+    case Phase::Done:
+    case Phase::Abandoned: break;
   }
 }
 
 void MeterClock::update(double t) {
-  if (phase_ == Phase::Backswing && (t - t_start_) / tempo_ >= kTop) click(t_start_ + kTop * tempo_);
+  // A moment at the top (a fifth of the tempo) for a late power click, then abandoned.
+  if (phase_ == Phase::Backswing && (t - t_start_) / tempo_ >= kTop + kHoldAtTop) phase_ = Phase::Abandoned;
   if (phase_ == Phase::Downswing && position(t) <= kBottom) {
     accuracy_ms_ = MeterInput::kAccuracy.max;
     phase_ = Phase::Done;
@@ -54,7 +85,9 @@ std::optional<MeterInput> MeterClock::result() const {
   if (phase_ != Phase::Done) return std::nullopt;
   MeterInput m;
   m.power = power_;
-  m.accuracy_ms = putting_ ? 0.0 : accuracy_ms_;
+  // Inside the window a click plays as perfect; outside, the error less the window.
+  const double beyond = std::max(0.0, std::abs(accuracy_ms_) - window_ms_);
+  m.accuracy_ms = putting_ ? 0.0 : std::copysign(beyond, accuracy_ms_);
   return m;
 }
 

@@ -2,22 +2,36 @@
 // backswing, the marker climbs from 0 to 110 %; the second fixes the power where it is and
 // the marker runs back down, past the accuracy mark at 0 to −15 %; the third, its timing
 // against the moment the marker crossed the mark, is the accuracy error (+ late). A putt
-// takes two clicks (power only). Left alone the meter finishes itself: 110 % and, on the way
-// down, the latest a swing can be (200 ms).
+// takes two clicks (power only). Left alone at the top (no power click: a stray key) the
+// swing is abandoned and nothing is played; after the power click, a missing third click
+// plays the latest a swing can be (200 ms late).
 #pragma once
 
 #include <optional>
+#include <string_view>
 
 #include "game/modes/golf/swing_meter.hpp"
 
 namespace sweetspot {
 
+/// How forgiving the accuracy click is: a window around the mark inside which a click plays
+/// as perfect, and outside which the error plays less the window's half-width. The click's
+/// own error is still shown as it was.
+enum class MeterDifficulty { Easy, Standard, Pro };
+/// The window's half-width (ms): Easy 25, Standard 10, Pro 0 (every ms counts). A 60 Hz
+/// frame is 16.7 ms and a good player's click scatter ~10 ms (DESIGN §9's tour bot draws
+/// 10 ms): Standard forgives that scatter, Easy a frame and a half, Pro nothing.
+double perfect_window_ms(MeterDifficulty d);
+const char* to_string(MeterDifficulty d);
+/// "easy", "standard", "pro"; InputError listing them.
+MeterDifficulty meter_difficulty(std::string_view name);
+
 class MeterClock {
  public:
-  enum class Phase { Idle, Backswing, Downswing, Done };
+  enum class Phase { Idle, Backswing, Downswing, Done, Abandoned };
 
   /// `tempo`: seconds the marker takes from 0 to 100 % on the way up; down is 1.5x faster.
-  MeterClock(double tempo, bool putting) : tempo_(tempo), putting_(putting) {}
+  MeterClock(double tempo, bool putting, double window_ms = 0.0) : tempo_(tempo), putting_(putting), window_ms_(window_ms) {}
 
   Phase phase() const { return phase_; }
   bool putting() const { return putting_; }
@@ -31,17 +45,25 @@ class MeterClock {
   /// When the marker crosses the accuracy mark on the way down (s, the click clock): the
   /// time a perfect third click is made. Meaningful from the power click on.
   double mark_time() const { return t_top_ + power_ * tempo_ / kDownFactor; }
-  /// The result once Done.
+  /// The result once Done: the accuracy error as it plays (less the perfect window).
   std::optional<MeterInput> result() const;
+  /// The accuracy click's own error (ms, + late) once Done, as the player clicked it.
+  double click_error_ms() const { return accuracy_ms_; }
+  /// Where the marker stood at the accuracy click (−0.15 … 1.1): the meter's click mark.
+  double accuracy_position() const { return -kDownFactor * (accuracy_ms_ / 1000.0) / tempo_; }
+  double window_ms() const { return window_ms_; }
+  /// The perfect window's half-width as a fraction of the meter (for drawing it).
+  double window_fraction() const { return kDownFactor * (window_ms_ / 1000.0) / tempo_; }
 
   /// Seconds for 0 -> 100 % with `club_length` m (the driver's 0.9 s; shorter clubs swing
   /// quicker in proportion, the putter's stroke 1.2 s).
   static double tempo_for(double club_length, bool putter);
 
  private:
-  static constexpr double kTop = 1.1, kBottom = -0.15, kDownFactor = 1.5;
+  static constexpr double kTop = 1.1, kBottom = -0.15, kDownFactor = 1.5, kHoldAtTop = 0.2;
   double tempo_;
   bool putting_;
+  double window_ms_;
   Phase phase_ = Phase::Idle;
   double t_start_ = 0.0, t_top_ = 0.0, power_ = 0.0, accuracy_ms_ = 0.0;
 };

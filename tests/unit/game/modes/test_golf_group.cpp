@@ -22,7 +22,7 @@ const Course& links() {
   return c;
 }
 
-GolfPlayer bot(const std::string& skill, int handicap = 0) { return {skill + " bot", skill, false, handicap}; }
+GolfPlayer bot(const std::string& skill, int handicap = 0) { return {skill + " bot", skill, false, handicap, {}}; }
 
 void play_out(GolfGroup& g) {
   int turns = 0;
@@ -165,7 +165,7 @@ TEST_CASE("gimmes and auto-putt: conceded putts count one stroke, auto-putts cou
   GolfOptions a;
   a.auto_putt = true;
   a.seed = 8;
-  GolfGroup h(test::assets(), links(), {{"You", "amateur", true, 0}}, a);
+  GolfGroup h(test::assets(), links(), {{"You", "amateur", true, 0, {}}}, a);
   int putts_auto = 0, turns = 0;
   while (!h.finished()) {
     const bool green = h.round(0).lie() == "green";
@@ -183,7 +183,7 @@ TEST_CASE("a saved round resumes to the same state and finishes bit for bit the 
   GolfOptions o;
   o.format = GolfFormat::Skins;
   o.seed = 5;
-  const std::vector<GolfPlayer> players{bot("tour", 0), bot("scratch", 2), bot("amateur", 15), {"You", "amateur", true, 18}};
+  const std::vector<GolfPlayer> players{bot("tour", 0), bot("scratch", 2), bot("amateur", 15), {"You", "amateur", true, 18, {}}};
   GolfGroup whole(test::assets(), links(), players, o);
   play_out(whole);
 

@@ -23,11 +23,18 @@ TEST_CASE("meter clicks: power where the second lands, accuracy against the mark
   CHECK(m.result()->accuracy_ms == Approx(20.0).margin(1e-6));
 }
 
-TEST_CASE("a meter left alone finishes at 110 % and the latest miss", "[golf][meter]") {
+TEST_CASE("a stray click is abandoned at the top; a missing third click plays the latest miss", "[golf][meter]") {
+  MeterClock stray(1.0, false);
+  stray.click(0.0);
+  stray.update(1.2);  // held at 110 % a moment for a late power click
+  CHECK(stray.phase() == MeterClock::Phase::Backswing);
+  CHECK(stray.position(1.2) == Approx(1.1));
+  stray.update(5.0);
+  CHECK(stray.phase() == MeterClock::Phase::Abandoned);
+  CHECK_FALSE(stray.result());
   MeterClock m(1.0, false);
   m.click(0.0);
-  m.update(5.0);
-  CHECK(m.power() == Approx(1.1));
+  m.click(0.8);
   m.update(10.0);
   REQUIRE(m.result());
   CHECK(m.result()->accuracy_ms == MeterInput::kAccuracy.max);
@@ -37,6 +44,25 @@ TEST_CASE("a meter left alone finishes at 110 % and the latest miss", "[golf][me
   REQUIRE(putt.result());
   CHECK(putt.result()->power == Approx(0.5));
   CHECK(putt.result()->accuracy_ms == 0.0);
+}
+
+TEST_CASE("difficulty: a click inside the perfect window plays as perfect, outside less the window", "[golf][meter]") {
+  for (const MeterDifficulty d : {MeterDifficulty::Easy, MeterDifficulty::Standard, MeterDifficulty::Pro}) {
+    const double w = perfect_window_ms(d);
+    for (const double late : {-40.0, -8.0, 0.0, 5.0, 30.0}) {
+      MeterClock m(1.0, false, w);
+      m.click(0.0);
+      m.click(1.0);
+      m.click(1.0 + m.power() / 1.5 + late / 1000.0);
+      REQUIRE(m.result());
+      CHECK(m.click_error_ms() == Approx(late).margin(1e-6));
+      const double played = std::abs(late) <= w ? 0.0 : (late > 0 ? late - w : late + w);
+      CHECK(m.result()->accuracy_ms == Approx(played).margin(1e-6));
+    }
+  }
+  CHECK(perfect_window_ms(MeterDifficulty::Easy) > perfect_window_ms(MeterDifficulty::Standard));
+  CHECK(perfect_window_ms(MeterDifficulty::Pro) == 0.0);
+  CHECK_THROWS_AS(meter_difficulty("legend"), InputError);
 }
 
 TEST_CASE("the accuracy error opens the face late and closes it early; a putter takes power only", "[golf][meter]") {

@@ -1,0 +1,115 @@
+#include "game/modes/golf/range_play.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "game/modes/golf/swing_meter.hpp"
+#include "game/modes/replay.hpp"
+#include "game/rules/run_shot.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+
+RangePlay::RangePlay(const Assets& assets, const GolferSkill& skill, int shots_per_club, MeterDifficulty difficulty)
+    : assets_(assets), skill_(skill), per_club_(shots_per_club), difficulty_(difficulty), session_(assets, skill),
+      bot_(assets, skill, 1) {}
+
+const std::string& RangePlay::club() const { return golf_bag()[club_]; }
+
+std::vector<double> RangePlay::targets() {
+  std::vector<double> out;
+  for (int yd = 50; yd <= 250; yd += 50) out.push_back(yd_to_m(yd));
+  return out;
+}
+
+int RangePlay::shots_with_club() const {
+  int n = 0;
+  for (const RangeShot& s : session_.shots()) n += s.club == club();
+  return n;
+}
+
+void RangePlay::update(const Intents& intents, double now) {
+  apply_in_time_order(intents, now, [this](double t) { advance(t); }, [this](const Intent& in) { apply(in); });
+}
+
+void RangePlay::advance(double t) {
+  if (stage_ == Stage::Swinging && meter_) {
+    meter_->update(t);
+    if (meter_->phase() == MeterClock::Phase::Abandoned) {
+      meter_.reset();
+      stage_ = Stage::Aiming;
+      message_ = "Swing abandoned, nothing hit";
+    } else if (const auto m = meter_->result()) {
+      last_click_ = *meter_;
+      strike(*m, t);
+    }
+  }
+  if (stage_ == Stage::Flying && t - struck_at_ >= duration(last_.trajectory)) stage_ = Stage::Aiming;
+}
+
+void RangePlay::strike(const MeterInput& m, double t) {
+  const std::string club = this->club();
+  session_.hit(club, m);
+  // The physics of the shot for the view: the same swing on the flat range.
+  const EquipmentCatalog& eq = assets_.equipment();
+  ShotSpec s;
+  s.sport = "golf";
+  s.world = kFlatWorld;
+  ClubStrike c;
+  c.club = club;
+  c.swing = meter_swing(m, eq.club(club), eq.club_info_of(club), full_swing_speed(skill_, eq.club_info_of(club)));
+  s.strike = c;
+  last_ = run_shot(resolve(s, assets_), "range " + club, {true, true});
+  struck_at_ = t;
+  meter_.reset();
+  stage_ = Stage::Flying;
+  char msg[160];
+  std::snprintf(msg, sizeof msg, "%s shot %d of %d", club.c_str(), shots_with_club(), per_club_);
+  message_ = msg;
+  // A club's shots done: the next club down the bag comes up.
+  if (shots_with_club() >= per_club_ && club_ + 2 < golf_bag().size()) ++club_;
+}
+
+void RangePlay::apply(const Intent& in) {
+  const double t = in.time;
+  switch (in.kind) {
+    case IntentKind::Restart:
+      session_ = RangeSession(assets_, skill_);
+      club_ = 0;
+      stage_ = Stage::Aiming;
+      meter_.reset();
+      message_ = "A new session";
+      return;
+    case IntentKind::Cancel:
+      if (stage_ == Stage::Swinging) {
+        meter_.reset();
+        stage_ = Stage::Aiming;
+        message_ = "Swing cancelled";
+      }
+      return;
+    case IntentKind::Continue:
+      if (stage_ == Stage::Flying) stage_ = Stage::Aiming;
+      return;
+    default: break;
+  }
+  if (stage_ == Stage::Aiming) {
+    if (in.kind == IntentKind::ClubUp && club_ > 0) --club_;
+    if (in.kind == IntentKind::ClubDown && club_ + 2 < golf_bag().size()) ++club_;  // the putter stays in the bag
+    if (in.kind == IntentKind::CaddiePlays) strike(bot_.full_swing(), t);
+    if (in.kind == IntentKind::Swing) {
+      meter_.emplace(MeterClock::tempo_for(assets_.equipment().club(club()).length, false), false, perfect_window_ms(difficulty_));
+      meter_->click(t);
+      stage_ = Stage::Swinging;
+    }
+  } else if (stage_ == Stage::Swinging && in.kind == IntentKind::Swing && meter_) {
+    meter_->click(t);
+    if (const auto m = meter_->result()) {
+      last_click_ = *meter_;
+      strike(*m, t);
+    }
+  } else if (stage_ == Stage::Flying && in.kind == IntentKind::Swing) {
+    stage_ = Stage::Aiming;
+  }
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,56 @@
+// The golf view's 2-D layer over the 3-D hole: the HUD, the meter with its click marks and
+// the putt preview, the launch-monitor panel, the scorecard, and the marks drawn on the
+// course (cup and flag at any distance, the aim line, the green's slopes, the map's rings).
+// Distances in the player's unit system, words a golfer uses.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "game/modes/golf/golf_play.hpp"
+#include "game/render/camera.hpp"
+
+namespace sweetspot {
+
+/// One unit system for everything a player reads: metres (putts in metres too) or yards
+/// (putts in feet).
+struct GolfUnits {
+  bool imperial = true;
+  std::string distance(double m) const;  ///< "154 m" / "168 yd"
+  std::string putt(double m) const;      ///< "2.4 m" / "8 ft"
+  std::string speed(double mps) const;   ///< "5 m/s" / "11 mph"
+};
+
+/// Downhill arrows on the green: where the ground tilts and how much (rise over run).
+struct SlopeArrow {
+  Vec3 at, downhill;
+};
+std::vector<SlopeArrow> green_slopes(const WorldAsset& w, const Vec3& ball, const Vec3& pin);
+
+/// `flight_t`: seconds into the last stroke's flight (the HUD says in the air or running out).
+void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t);
+/// The meter bar, bottom centre: −15 % to 110 %, the accuracy mark as wide as the perfect
+/// window, the marker, and where the last swing's clicks landed.
+struct MeterBar {
+  float x0 = 0.0f, y0 = 0.0f, bw = 560.0f, bh = 26.0f;
+  double shown = 0.0;  ///< the marker's position now
+  float at(double f) const { return x0 + static_cast<float>((f + 0.15) * (bw / 1.25f)); }
+};
+MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optional<MeterClock>& last, bool putting,
+                        double window_ms, int w, int h, double now);
+/// The meter, bottom centre; on a putt the flat-green distances along it.
+void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h, double now);
+/// Ball data at launch, carry once the ball has landed (as a launch monitor shows them).
+void draw_launch_panel(const GolfPlay& play, const GolfUnits& units, int w, double flight_t);
+void draw_golf_card(const GolfPlay& play, int w, bool final);
+/// The cup and flagstick, never smaller than a few pixels however far.
+void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h);
+void draw_aim_and_slopes(const GolfPlay& play, const std::vector<SlopeArrow>& slopes, const Camera& cam, int w, int h);
+/// The map's marks: the ball, the selected club's carry ring and the player's dispersion
+/// ellipse for it (from this round's shots with it, else their bag's measured spread).
+void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h);
+/// The hole's wind as an arrow relative to the aim (up the screen = downrange).
+void draw_wind(const GolfPlay& play, const GolfUnits& units, int w);
+
+}  // namespace sweetspot

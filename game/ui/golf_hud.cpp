@@ -1,0 +1,335 @@
+// The golf HUD, meter, launch-monitor panel, wind arrow and scorecard (ImGui).
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "game/modes/golf/standings.hpp"
+#include "game/modes/replay.hpp"
+#include "game/report/round_json.hpp"
+#include "game/ui/golf_draw.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+
+std::string GolfUnits::distance(double m) const {
+  char b[32];
+  std::snprintf(b, sizeof b, imperial ? "%.0f yd" : "%.0f m", imperial ? m_to_yd(m) : m);
+  return b;
+}
+
+std::string GolfUnits::putt(double m) const {
+  char b[32];
+  if (imperial) std::snprintf(b, sizeof b, "%.0f ft", m_to_ft(m));
+  else std::snprintf(b, sizeof b, "%.1f m", m);
+  return b;
+}
+
+std::string GolfUnits::speed(double mps) const {
+  char b[32];
+  std::snprintf(b, sizeof b, imperial ? "%.0f mph" : "%.0f m/s", imperial ? mps_to_mph(mps) : mps);
+  return b;
+}
+
+namespace {
+
+constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+
+const char* lie_words(const std::string& lie) {
+  if (lie == "tee") return "Tee";
+  if (lie == "fairway") return "Fairway";
+  if (lie == "rough") return "Rough";
+  if (lie == "sand") return "Bunker";
+  if (lie == "green") return "Green";
+  if (lie == "water") return "Water";
+  if (lie == "out_of_bounds") return "Out of bounds";
+  return "?";
+}
+
+const char* camera_words(int mode) {
+  switch (mode) {
+    case 1: return "player";
+    case 2: return "high";
+    case 3: return "map";
+    case 4: return "green";
+  }
+  return "?";
+}
+
+}  // namespace
+
+void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t) {
+  const double now = flight_t;
+  const GolfGroup& g = play.group();
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(390, 0), ImGuiCond_Always);
+  ImGui::Begin("Play", nullptr, kFixed);
+  const GolfPlay::Stage stage = play.stage();
+  const bool in_air = stage == GolfPlay::Stage::Flying || settling;
+  if (!g.finished()) {
+    const CourseHole& hole = g.course().holes[g.hole_index()];
+    ImGui::Text("%s   %s play", g.course().name.c_str(), to_string(g.options().format));
+    ImGui::Text("Hole %d   Par %d   %s   Index %d", hole.number, hole.par, units.distance(hole.length()).c_str(),
+                hole.stroke_index);
+  }
+  if (stage == GolfPlay::Stage::Flyover) {
+    ImGui::Separator();
+    ImGui::Text("Flying the hole...   Enter: skip");
+  } else if (in_air) {
+    // The result waits until the ball stops: the HUD still shows the stroke being played.
+    ImGui::Separator();
+    const bool landed = now >= play.last_shot().trajectory.summary.hang_time_s;
+    ImGui::Text("%s: the ball is %s", play.player_info().name.c_str(),
+                stage != GolfPlay::Stage::Flying ? "at rest" : landed ? "running out" : "in the air");
+    ImGui::TextDisabled("Enter: skip the flight");
+  } else if (!g.finished() && (stage == GolfPlay::Stage::Aiming || stage == GolfPlay::Stage::Swinging)) {
+    const GolfRound& r = play.round();
+    ImGui::Separator();
+    ImGui::Text("%s to play%s", play.player_info().name.c_str(), play.human_turn() ? "" : play.player_info().human ? " (auto-putt)" : " (bot)");
+    const HoleCard& card = r.card().back();
+    ImGui::Text("Stroke %d   Lie: %s", card.strokes + 1, lie_words(r.lie()));
+    ImGui::Text("To the pin: %s", r.lie() == "green" ? units.putt(r.to_pin()).c_str() : units.distance(r.to_pin()).c_str());
+    const std::string& club = play.club();
+    double carry = 0.0;
+    for (const GolfBot::Stock& s : play.caddie().stock())
+      if (s.club == club) carry = s.carry;
+    if (club == "putter") ImGui::Text("Club: putter");
+    else ImGui::Text("Club: %s (carry %s)", club.c_str(), units.distance(carry).c_str());
+    ImGui::Text("Aim: %.1f deg %s of the pin", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left");
+    if (play.human_turn()) {
+      ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
+      ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
+      ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save", camera_words(camera_mode));
+      ImGui::TextDisabled("Esc: cancel the swing, pause  Tab: next mode");
+      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole");
+    } else {
+      ImGui::TextDisabled("Enter: let them play now");
+    }
+  }
+  // Each player's score so far against par.
+  const Standings s = standings(g);
+  if (s.holes > 0) {
+    ImGui::Separator();
+    for (std::size_t p = 0; p < g.players().size(); ++p) {
+      const PlayerStanding& ps = s.players[p];
+      char extra[48] = "";
+      if (s.format == GolfFormat::Stableford) std::snprintf(extra, sizeof extra, "  %d pts", ps.total_points);
+      if (s.format == GolfFormat::Skins) std::snprintf(extra, sizeof extra, "  %d skins", s.skins->skins[p]);
+      ImGui::Text("%-14s %3d (%s)%s", g.players()[p].name.c_str(), ps.total_strokes, to_par_text(ps.total_strokes - ps.total_par).c_str(), extra);
+    }
+    if (s.match) ImGui::Text("Match: %s", s.match->holes.back().status.c_str());
+  }
+  if (!play.message().empty() && !in_air) {
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", play.message().c_str());
+    const StrokeRecord& last = play.last_record();
+    if (!last.club.empty() && last.end == StrokeEnd::Rest) {
+      const std::string away = last.to_pin_m < 20.0 ? units.putt(last.to_pin_m) : units.distance(last.to_pin_m);
+      ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(play.last_rest_lie()));
+    }
+  }
+  ImGui::End();
+}
+
+MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optional<MeterClock>& last, bool putting,
+                        double window_ms, int w, int h, double now) {
+  MeterBar bar;
+  bar.x0 = 0.5f * (static_cast<float>(w) - bar.bw);
+  bar.y0 = static_cast<float>(h) - 80.0f;
+  const float x0 = bar.x0, y0 = bar.y0, bw = bar.bw, bh = bar.bh;
+  const auto at = [&](double f) { return bar.at(f); };
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + bw, y0 + bh), IM_COL32(20, 24, 30, 220), 4.0f);
+  if (!putting) {
+    // The accuracy mark, as wide as the difficulty's perfect window (at least a sliver).
+    const double half = meter ? meter->window_fraction() : MeterClock(MeterClock::tempo_for(1.0, false), false, window_ms).window_fraction();
+    dl->AddRectFilled(ImVec2(at(-std::max(half, 0.006)), y0), ImVec2(at(std::max(half, 0.006)), y0 + bh), IM_COL32(60, 170, 80, 230));
+  }
+  dl->AddLine(ImVec2(at(1.0), y0 - 4), ImVec2(at(1.0), y0 + bh + 4), IM_COL32(250, 250, 250, 255), 2.0f);
+  if (meter) {
+    const double p = meter->position(now);
+    bar.shown = p;
+    if (meter->phase() == MeterClock::Phase::Backswing)
+      dl->AddRectFilled(ImVec2(at(0.0), y0 + 4), ImVec2(at(p), y0 + bh - 4), IM_COL32(230, 180, 40, 255));
+    if (meter->phase() == MeterClock::Phase::Downswing) {
+      dl->AddRectFilled(ImVec2(at(0.0), y0 + 4), ImVec2(at(meter->power()), y0 + bh - 4), IM_COL32(230, 180, 40, 120));
+      // The power click's mark stays where it landed.
+      dl->AddLine(ImVec2(at(meter->power()), y0 - 6), ImVec2(at(meter->power()), y0 + bh + 6), IM_COL32(255, 255, 255, 255), 3.0f);
+      dl->AddLine(ImVec2(at(p), y0 - 6), ImVec2(at(p), y0 + bh + 6), IM_COL32(255, 80, 60, 255), 3.0f);
+    }
+  } else if (last) {
+    // Where the last swing's clicks landed: power (white) and accuracy (red).
+    dl->AddLine(ImVec2(at(last->power()), y0 - 6), ImVec2(at(last->power()), y0 + bh + 6), IM_COL32(255, 255, 255, 150), 2.0f);
+    if (!last->putting())
+      dl->AddLine(ImVec2(at(last->accuracy_position()), y0 - 6), ImVec2(at(last->accuracy_position()), y0 + bh + 6),
+                  IM_COL32(255, 80, 60, 170), 2.0f);
+  }
+  return bar;
+}
+
+void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h, double now) {
+  const GolfPlay::Stage stage = play.stage();
+  if (!(stage == GolfPlay::Stage::Aiming || stage == GolfPlay::Stage::Swinging) || !play.human_turn()) return;
+  const bool putting = play.club() == "putter";
+  const auto& meter = play.meter();
+  const MeterBar bar = draw_meter_bar(meter, play.last_click(), putting, perfect_window_ms(play.setup().difficulty), w, h, now);
+  const float x0 = bar.x0, y0 = bar.y0, bh = bar.bh;
+  const auto at = [&](double f) { return bar.at(f); };
+  const double shown = bar.shown;
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  char label[160];
+  if (putting) {
+    // The putt preview: how far each power rolls on a flat green of this speed.
+    const double step = units.imperial ? 5.0 * 0.3048 : 2.0;
+    for (double d = step; d < play.flat_roll(1.1); d += step) {
+      const double p = play.power_for_roll(d);
+      dl->AddLine(ImVec2(at(p), y0 + bh), ImVec2(at(p), y0 + bh + 6), IM_COL32(200, 200, 200, 200), 1.0f);
+      const long n = std::lround(d / step);
+      if (n % 2 == 0) dl->AddText(ImVec2(at(p) - 8, y0 + bh + 7), IM_COL32(200, 200, 200, 220), units.putt(d).c_str());
+    }
+    const double to_cup = play.round().to_pin();
+    const double cup_p = play.power_for_roll(to_cup);
+    dl->AddTriangleFilled(ImVec2(at(cup_p) - 6, y0 - 10), ImVec2(at(cup_p) + 6, y0 - 10), ImVec2(at(cup_p), y0),
+                          IM_COL32(255, 255, 255, 255));
+    const double p = meter ? shown : play.last_click() && play.last_click()->putting() ? play.last_click()->power() : cup_p;
+    std::snprintf(label, sizeof label, "putt: %.0f %% rolls %s on flat (cup %s)%s", 100.0 * p, units.putt(play.flat_roll(p)).c_str(),
+                  units.putt(to_cup).c_str(), meter ? "   Esc: cancel" : "   Space: putt");
+  } else if (meter) {
+    std::snprintf(label, sizeof label, "power %.0f %%   Esc: cancel", 100.0 * meter->position(now));
+  } else {
+    std::snprintf(label, sizeof label, "%s: Space to swing (difficulty %s: perfect within %.0f ms)", play.club().c_str(),
+                  to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty));
+  }
+  dl->AddText(ImVec2(x0, y0 - 26), IM_COL32(255, 255, 255, 255), label);
+}
+
+void draw_launch_panel(const GolfPlay& play, const GolfUnits& units, int w, double flight_t) {
+  const ShotResult& r = play.last_shot();
+  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(w) - 250, 10), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(240, 0), ImGuiCond_Always);
+  ImGui::Begin("Launch monitor", nullptr, kFixed);
+  ImGui::Text("Ball speed  %s", units.speed(r.launch.ball_speed).c_str());
+  ImGui::Text("Launch      %.1f deg", rad_to_deg(r.launch.vertical_angle));
+  ImGui::Text("Direction   %.1f deg %s", std::abs(rad_to_deg(r.launch.horizontal_angle)), r.launch.horizontal_angle >= 0 ? "R" : "L");
+  ImGui::Text("Spin        %.0f rpm", radps_to_rpm(r.launch.spin.total));
+  ImGui::Text("Spin axis   %.1f deg", rad_to_deg(r.launch.spin.axis_rad));
+  const bool putt = r.trajectory.summary.apex_m < 0.05;  // a putt never leaves the ground
+  if (putt && flight_t >= duration(r.trajectory)) {
+    ImGui::Separator();
+    ImGui::Text("Rolled      %s", units.putt(r.trajectory.summary.total_m).c_str());
+  } else if (!putt && flight_t >= r.trajectory.summary.hang_time_s) {
+    ImGui::Separator();
+    ImGui::Text("Carry       %s", units.distance(r.trajectory.summary.carry_m).c_str());
+    ImGui::Text("Height      %s", units.putt(r.trajectory.summary.apex_m).c_str());
+  }
+  ImGui::End();
+}
+
+void draw_wind(const GolfPlay& play, const GolfUnits& units, int w) {
+  const GolfGroup& g = play.group();
+  if (g.finished()) return;
+  const HoleWind wind = g.winds()[g.hole_index()];
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  const ImVec2 c(static_cast<float>(w) - 60.0f, 230.0f);
+  dl->AddCircleFilled(c, 34.0f, IM_COL32(20, 24, 30, 200));
+  char label[48];
+  if (wind.speed < 0.5) {
+    std::snprintf(label, sizeof label, "calm");
+  } else {
+    // Up the screen is the aim (downrange); the arrow points where the wind blows.
+    const double rel = wind.toward - (play.round().finished() ? 0.0 : play.round().line_to_pin() + play.aim());
+    const float dx = static_cast<float>(std::sin(rel)), dy = static_cast<float>(-std::cos(rel));
+    const ImVec2 tip(c.x + 26 * dx, c.y + 26 * dy), tail(c.x - 26 * dx, c.y - 26 * dy);
+    dl->AddLine(tail, tip, IM_COL32(120, 200, 255, 255), 3.0f);
+    dl->AddTriangleFilled(tip, ImVec2(tip.x - 10 * dx - 6 * dy, tip.y - 10 * dy + 6 * dx),
+                          ImVec2(tip.x - 10 * dx + 6 * dy, tip.y - 10 * dy - 6 * dx), IM_COL32(120, 200, 255, 255));
+    std::snprintf(label, sizeof label, "wind %s", units.speed(wind.speed).c_str());
+  }
+  dl->AddText(ImVec2(c.x - 30, c.y + 38), IM_COL32(255, 255, 255, 255), label);
+}
+
+void draw_golf_card(const GolfPlay& play, int w, bool final) {
+  const GolfGroup& g = play.group();
+  const Standings s = standings(g);
+  const std::size_t n = g.players().size();
+  ImGui::SetNextWindowPos(ImVec2(0.5f * static_cast<float>(w) - 300, 150), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(600, 0), ImGuiCond_Always);
+  ImGui::Begin(final ? "Final scorecard" : "Scorecard", nullptr, kFixed);
+  const int cols = 3 + static_cast<int>(n) + (s.match || s.skins ? 1 : 0);
+  if (ImGui::BeginTable("card", cols, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    ImGui::TableSetupColumn("Hole");
+    ImGui::TableSetupColumn("Par");
+    ImGui::TableSetupColumn("SI");
+    for (const GolfPlayer& p : g.players()) ImGui::TableSetupColumn(p.name.c_str());
+    if (s.match) ImGui::TableSetupColumn("Match");
+    if (s.skins) ImGui::TableSetupColumn("Skin");
+    ImGui::TableHeadersRow();
+    int par = 0;
+    for (std::size_t h = 0; h < s.holes; ++h) {
+      const CourseHole& ch = g.course().holes[h];
+      par += ch.par;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::Text("%d", ch.number);
+      ImGui::TableNextColumn();
+      ImGui::Text("%d", ch.par);
+      ImGui::TableNextColumn();
+      ImGui::Text("%d", ch.stroke_index);
+      for (std::size_t p = 0; p < n; ++p) {
+        ImGui::TableNextColumn();
+        const HoleCard& c = g.round(static_cast<int>(p)).card()[h];
+        const PlayerStanding& ps = s.players[p];
+        char pts[16] = "";
+        if (s.format == GolfFormat::Stableford) std::snprintf(pts, sizeof pts, " %dpt", ps.points[h]);
+        ImGui::Text("%d%.*s (%d)%s%s", ps.gross[h], std::min(ps.received[h], 4), "****", ps.putts[h], pts,
+                    c.picked_up ? " picked up" : c.conceded ? " conceded" : "");
+      }
+      if (s.match) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(s.match->holes[h].status.c_str());
+      }
+      if (s.skins) {
+        ImGui::TableNextColumn();
+        const int win = s.skins->winner[h];
+        if (win < 0) ImGui::TextUnformatted("carried");
+        else ImGui::Text("%s x%d", g.players()[static_cast<std::size_t>(win)].name.c_str(), s.skins->value[h]);
+      }
+    }
+    // The sum rows: strokes (with par), putts, to par, net, points.
+    auto sum_row = [&](const char* label, const char* par_text, auto cell) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(label);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(par_text);
+      ImGui::TableNextColumn();
+      for (std::size_t p = 0; p < n; ++p) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(cell(s.players[p]).c_str());
+      }
+      if (s.match || s.skins) ImGui::TableNextColumn();
+    };
+    const std::string par_text = std::to_string(par);
+    sum_row("Strokes", par_text.c_str(), [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
+    sum_row("Putts", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
+    sum_row("To par", "", [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
+    sum_row("Net", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
+    if (s.format == GolfFormat::Stableford)
+      sum_row("Points", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_points); });
+    if (s.skins) {
+      sum_row("Skins", "", [&](const PlayerStanding& ps) {
+        const std::size_t p = static_cast<std::size_t>(&ps - s.players.data());
+        return std::to_string(s.skins->skins[p]);
+      });
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("* a stroke received (handicap); putts in brackets");
+  if (s.match) ImGui::Text("Match: %s", s.match->result.c_str());
+  else if (final && s.holes > 0) ImGui::Text("Winner: %s", g.players()[static_cast<std::size_t>(s.ranking.front())].name.c_str());
+  ImGui::TextDisabled(final ? "Enter: play again   Tab: next mode   Esc: menu" : "Enter: next hole");
+  ImGui::End();
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,187 @@
+// Marks drawn on the course over the 3-D view: the cup and flag at any distance, the aim
+// line, the green's slopes with arrowheads, the map's rings and dispersion ellipse.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "game/ui/golf_draw.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+namespace {
+
+ImVec2 px(const Eigen::Vector2d& p) { return ImVec2(static_cast<float>(p(0)), static_cast<float>(p(1))); }
+
+// A closed ring on the ground through `points`, projected; parts behind the camera skipped.
+void ground_polyline(ImDrawList* dl, const Camera& cam, const std::vector<Vec3>& points, int w, int h, ImU32 colour,
+                     float thickness) {
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    const auto a = cam.project(points[k], w, h), b = cam.project(points[k + 1], w, h);
+    if (a && b) dl->AddLine(px(*a), px(*b), colour, thickness);
+  }
+}
+
+// The ground height under (x, z), or `fallback` off the world.
+double ground_y(const WorldAsset& world, double x, double z, double fallback) {
+  SurfaceContact hit;
+  const WorldDescription& d = world.description();
+  if (!ground_under(*world.world, x, z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit)) return fallback;
+  return hit.point.y();
+}
+
+}  // namespace
+
+std::vector<SlopeArrow> green_slopes(const WorldAsset& w, const Vec3& ball, const Vec3& pin) {
+  std::vector<SlopeArrow> out;
+  const Vec3 mid = 0.5 * (ball + pin);
+  const double span = std::clamp(0.6 * std::hypot(pin.x() - ball.x(), pin.z() - ball.z()) + 3.0, 4.0, 14.0);
+  for (double dx = -span; dx <= span + 1e-9; dx += span / 5.0) {
+    for (double dz = -span; dz <= span + 1e-9; dz += span / 5.0) {
+      SurfaceContact hit;
+      if (!ground_under(*w.world, mid.x() + dx, mid.z() + dz, 400.0, 420.0, &hit)) continue;
+      if (w.world->material(hit.material).kind != SurfaceKind::Green) continue;
+      const Vec3& n = hit.normal;
+      const Vec3 flat(n.x(), 0.0, n.z());
+      out.push_back({hit.point, flat / std::max(n.y(), 1e-6)});
+    }
+  }
+  return out;
+}
+
+void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const auto base = cam.project(pin, w, h);
+  if (!base) return;
+  // The flagstick is 2.13 m (7 ft, the usual height; the Rules set no height) with a flag at its
+  // top; drawn at least 40 px tall so a pin 400 m away is still seen.
+  const auto top = cam.project(pin + Vec3(0.0, 2.13, 0.0), w, h);
+  ImVec2 b = px(*base), t = top ? px(*top) : ImVec2(b.x, b.y - 40.0f);
+  if (b.y - t.y < 40.0f) t = ImVec2(b.x, b.y - 40.0f);
+  // The cup: 108 mm across (Rules of Golf, Definitions "Hole"), never under 5 px.
+  const auto edge = cam.project(pin + Vec3(0.054, 0.0, 0.0), w, h);
+  const float r = std::max(5.0f, edge ? std::abs(px(*edge).x - b.x) : 0.0f);
+  ImVec2 rim[24];
+  for (int k = 0; k < 24; ++k) {
+    const float a = 6.2831853f * static_cast<float>(k) / 24.0f;
+    rim[k] = ImVec2(b.x + r * std::cos(a), b.y + 0.45f * r * std::sin(a));
+  }
+  dl->AddConvexPolyFilled(rim, 24, IM_COL32(10, 10, 10, 255));
+  dl->AddLine(b, t, IM_COL32(240, 240, 240, 255), 2.0f);
+  const float fh = 0.3f * (b.y - t.y);
+  dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));
+}
+
+void draw_aim_and_slopes(const GolfPlay& play, const std::vector<SlopeArrow>& slopes, const Camera& cam, int w, int h) {
+  const GolfRound& r = play.round();
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const Vec3 b = play.ball_centre();
+  const double len = r.lie() == "green" ? r.to_pin() + 1.0 : std::min(r.to_pin(), 250.0);
+  const auto p0 = cam.project(b, w, h), p1 = cam.project(b + len * play.aim_direction(), w, h);
+  if (p0 && p1) dl->AddLine(px(*p0), px(*p1), IM_COL32(255, 255, 255, 170), 2.0f);
+  for (const SlopeArrow& a : slopes) {
+    // The arrow points downhill; its length and colour grow with the slope (white flat, red
+    // at 4 %, steep for a green: USGA greens run 1-3 % where cups are cut).
+    const double s = a.downhill.norm();
+    if (s < 1e-4) continue;
+    const Vec3 dir = a.downhill / s;
+    const double len_m = 0.4 + 0.8 * std::clamp(s / 0.04, 0.0, 1.0);
+    const Vec3 from = a.at + Vec3(0, 0.02, 0) - 0.5 * len_m * dir, to = a.at + Vec3(0, 0.02, 0) + 0.5 * len_m * dir;
+    const auto q0 = cam.project(from, w, h), q1 = cam.project(to, w, h);
+    if (!q0 || !q1) continue;
+    const int red = static_cast<int>(std::clamp(s / 0.04, 0.0, 1.0) * 255);
+    const ImU32 col = IM_COL32(255, 255 - red * 3 / 4, 255 - red, 235);
+    const ImVec2 A = px(*q0), B = px(*q1);
+    dl->AddLine(A, B, col, 2.5f);
+    // The head: two barbs back from the tip.
+    const float dx = B.x - A.x, dy = B.y - A.y, l = std::max(std::sqrt(dx * dx + dy * dy), 1.0f);
+    const float ux = dx / l, uy = dy / l, head = std::min(9.0f, 0.5f * l);
+    dl->AddTriangleFilled(B, ImVec2(B.x - head * ux - 0.6f * head * uy, B.y - head * uy + 0.6f * head * ux),
+                          ImVec2(B.x - head * ux + 0.6f * head * uy, B.y - head * uy - 0.6f * head * ux), col);
+  }
+}
+
+void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h) {
+  const GolfRound& r = play.round();
+  if (r.finished()) return;
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const WorldAsset& world = *r.hole().world;
+  const Vec3 ball = r.ball();
+  const Vec3 aim = play.aim_direction();
+  const Vec3 side(-aim.z(), 0.0, aim.x());
+  const std::string& club = play.club();
+  // The selected club's carry: the caddie's (the player's bag when they measured one).
+  double carry = 0.0, spread = 0.0, side_spread = 0.0;
+  for (const GolfBot::Stock& s : play.caddie().stock())
+    if (s.club == club) {
+      carry = s.carry;
+      spread = s.spread;
+      side_spread = s.side_spread;
+    }
+  if (club == "putter") carry = r.to_pin();
+  // The player's own dispersion with this club this round, when they have hit it twice.
+  int n = 0;
+  double sum = 0.0, sum2 = 0.0, side2 = 0.0;
+  for (const HoleCard& c : r.card())
+    for (const StrokeRecord& s : c.shots)
+      if (s.club == club && !s.conceded && s.carry_m > 0.0) {
+        ++n;
+        sum += s.carry_m;
+        sum2 += s.carry_m * s.carry_m;
+        side2 += s.side_m * s.side_m;
+      }
+  const char* source = spread > 0.0 ? "your bag" : "";
+  if (n >= 2) {
+    const double mean = sum / n;
+    spread = std::sqrt(std::max(0.0, (sum2 - n * mean * mean) / (n - 1)));
+    side_spread = std::sqrt(side2 / n);
+    source = "this round";
+  }
+  auto on_ground = [&](double along, double across) {
+    const Vec3 p = ball + along * aim + across * side;
+    return Vec3(p.x(), ground_y(world, p.x(), p.z(), ball.y()) + 0.3, p.z());
+  };
+  // The carry ring: a circle of the carry around the ball.
+  if (carry > 1.0) {
+    std::vector<Vec3> ring;
+    for (int k = 0; k <= 72; ++k) {
+      const double a = 2.0 * kPi * k / 72.0;
+      ring.push_back(on_ground(carry * std::cos(a), carry * std::sin(a)));
+    }
+    ground_polyline(dl, cam, ring, w, h, IM_COL32(255, 230, 90, 220), 2.0f);
+    if (const auto lp = cam.project(on_ground(carry, 0.0), w, h))
+      dl->AddText(ImVec2(px(*lp).x + 6, px(*lp).y - 18), IM_COL32(255, 230, 90, 255),
+                  (club + " " + units.distance(carry)).c_str());
+  }
+  // The dispersion: an ellipse of two standard deviations (about 86 % of shots) at the carry.
+  if (carry > 1.0 && spread > 0.0 && club != "putter") {
+    std::vector<Vec3> ellipse;
+    for (int k = 0; k <= 48; ++k) {
+      const double a = 2.0 * kPi * k / 48.0;
+      ellipse.push_back(on_ground(carry + 2.0 * spread * std::cos(a), 2.0 * std::max(side_spread, 1.0) * std::sin(a)));
+    }
+    ground_polyline(dl, cam, ellipse, w, h, IM_COL32(120, 200, 255, 230), 2.0f);
+    if (const auto lp = cam.project(on_ground(carry - 2.0 * spread, 0.0), w, h)) {
+      const std::string text = "your spread (" + std::string(source) + ")";
+      dl->AddText(ImVec2(px(*lp).x + 6, px(*lp).y + 4), IM_COL32(120, 200, 255, 255), text.c_str());
+    }
+  }
+  // The ball, big enough to find.
+  if (const auto bp = cam.project(on_ground(0.0, 0.0), w, h)) {
+    dl->AddCircleFilled(px(*bp), 6.0f, IM_COL32(255, 255, 255, 255));
+    dl->AddCircle(px(*bp), 6.0f, IM_COL32(0, 0, 0, 255), 0, 1.5f);
+  }
+  // The other players' balls on this hole.
+  const GolfGroup& g = play.group();
+  for (std::size_t p = 0; p < g.players().size(); ++p) {
+    if (static_cast<int>(p) == play.player()) continue;
+    const GolfRound& o = g.round(static_cast<int>(p));
+    if (o.finished() || o.hole_index() != r.hole_index() || o.card().back().shots.empty()) continue;
+    if (const auto op = cam.project(o.ball() + Vec3(0, 0.3, 0), w, h)) {
+      dl->AddCircleFilled(px(*op), 4.0f, IM_COL32(200, 200, 200, 230));
+      dl->AddText(ImVec2(px(*op).x + 6, px(*op).y - 6), IM_COL32(220, 220, 220, 255), g.players()[p].name.c_str());
+    }
+  }
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,169 @@
+#include "game/ui/range_view.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "game/modes/replay.hpp"
+#include "game/render/renderer.hpp"
+#include "game/render/shot_scene.hpp"
+#include "game/render/shot_view.hpp"
+#include "game/ui/golf_draw.hpp"
+#include "game/util/atomic_file.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+
+Intents range_intents(const std::vector<KeyPress>& keys) {
+  return intents_from_keys(keys, {{GLFW_KEY_SPACE, IntentKind::Swing},
+                                  {GLFW_KEY_UP, IntentKind::ClubUp},
+                                  {GLFW_KEY_DOWN, IntentKind::ClubDown},
+                                  {GLFW_KEY_B, IntentKind::CaddiePlays},
+                                  {GLFW_KEY_ENTER, IntentKind::Continue},
+                                  {GLFW_KEY_KP_ENTER, IntentKind::Continue}});
+}
+
+namespace {
+
+class RangeView final : public ModeView {
+ public:
+  RangeView(const Assets& a, std::unique_ptr<RangePlay> m, const RangeViewOptions& o) : assets_(a), play_(std::move(m)), options_(o) {
+    units_.imperial = o.imperial;
+  }
+  const char* title() const override { return "Range"; }
+  const char* restart_label() const override { return "New session"; }
+  bool done() const override { return false; }
+  void send(const Intent& in) override { play_->update({in}, in.time); }
+  void frame(const ViewInput& in, Renderer& renderer) override;
+  void report(std::ostream& out) const override {
+    out << "range: " << play_->session().shots().size() << " shots, " << play_->session().bag("you").clubs.size() << " clubs\n";
+  }
+
+ private:
+  void draw_panel(int w);
+  void save_bag();
+
+  const Assets& assets_;
+  std::unique_ptr<RangePlay> play_;
+  RangeViewOptions options_;
+  GolfUnits units_;
+  std::unique_ptr<ShotScene> scene_;
+  std::string scene_mesh_;
+  double shown_struck_ = -1.0;
+  std::string note_;
+};
+
+void RangeView::save_bag() {
+  try {
+    Bag bag = play_->session().bag("you");
+    if (bag.clubs.empty()) {
+      note_ = "Nothing to save yet: hit some shots first";
+      return;
+    }
+    write_file_atomic(options_.bag_path, bag_toml(bag));
+    note_ = "Bag saved to " + options_.bag_path + " (play --bag FILE, round --bag FILE)";
+  } catch (const std::exception& e) {
+    note_ = std::string("Not saved: ") + e.what();
+  }
+}
+
+void RangeView::draw_panel(int w) {
+  const Bag bag = play_->session().bag("you");
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(470, 0), ImGuiCond_Always);
+  ImGui::Begin("Practice range", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::Text("Bag gapping: %d shots a club (%s speed)", play_->shots_per_club(), play_->skill().name.c_str());
+  ImGui::Text("Club: %s   shot %d of %d", play_->club().c_str(), std::min(play_->shots_with_club() + 1, play_->shots_per_club()),
+              play_->shots_per_club());
+  if (ImGui::BeginTable("bag", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    for (const char* c : {"club", "shots", "carry", "spread", "side", "gap"}) ImGui::TableSetupColumn(c);
+    ImGui::TableHeadersRow();
+    for (std::size_t k = 0; k < bag.clubs.size(); ++k) {
+      const BagClub& c = bag.clubs[k];
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(c.club.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%d", c.shots);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(units_.distance(c.carry).c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("± %s", units_.distance(c.carry_sd).c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("± %s", units_.distance(c.side_sd).c_str());
+      ImGui::TableNextColumn();
+      if (k + 1 < bag.clubs.size()) ImGui::TextUnformatted(units_.distance(c.carry - bag.clubs[k + 1].carry).c_str());
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("Space: swing (3 clicks)  B: a swing with your skill's errors");
+  ImGui::TextDisabled("Up/Down club  Enter: skip the flight  S: save the bag  U: units");
+  if (!play_->message().empty()) ImGui::TextUnformatted(play_->message().c_str());
+  if (!note_.empty()) ImGui::TextWrapped("%s", note_.c_str());
+  ImGui::End();
+  (void)w;
+}
+
+void RangeView::frame(const ViewInput& in, Renderer& renderer) {
+  for (const KeyPress& k : in.keys) {
+    if (k.key == GLFW_KEY_S) save_bag();
+    if (k.key == GLFW_KEY_U) units_.imperial = !units_.imperial;
+  }
+  play_->update(range_intents(in.keys), in.now);
+  const int w = in.width, h = in.height;
+  const EquipmentCatalog& eq = assets_.equipment();
+  const std::string mesh = eq.club_info_of(play_->club()).mesh;
+  if (!scene_ || scene_mesh_ != mesh) {
+    ShotSceneInput si;
+    si.assets = &assets_;
+    si.world = nullptr;  // the flat range
+    si.distance_unit = "yd";
+    si.ball_radius = eq.ball("tour").radius;
+    si.tee = true;
+    si.impactor_mesh = mesh;
+    scene_ = std::make_unique<ShotScene>(si);
+    scene_mesh_ = mesh;
+    shown_struck_ = -1.0;
+  }
+  const bool flying = play_->stage() == RangePlay::Stage::Flying;
+  const bool hit = play_->struck_at() > 0.0 || !play_->session().shots().empty();
+  if (hit && shown_struck_ != play_->struck_at()) {
+    scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
+    shown_struck_ = play_->struck_at();
+  }
+  const double end = hit ? duration(play_->last_shot().trajectory) : 0.0;
+  const double t = flying ? std::clamp(in.now - play_->struck_at(), 0.0, end) : end;
+  if (w > 0 && h > 0) {
+    if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);
+    Camera cam;
+    if (flying) {
+      cam = scene_->camera(CameraKind::Follow, t, w, h);
+    } else {
+      // Behind the tee, the flags out to 250 yd in view.
+      cam.eye = Vec3(-14.0, 5.0, 0.0);
+      cam.target = Vec3(150.0, -2.0, 0.0);
+      cam.fov_y = deg_to_rad(26.0);
+    }
+    renderer.draw(scene_->build(cam, hit ? t : 0.0, w, h), cam);
+    renderer.blit_to(0, w, h);
+    for (const double d : RangePlay::targets()) draw_cup_and_flag(cam, Vec3(d, 0.0, 0.0), w, h);
+  }
+  draw_panel(w);
+  if (play_->stage() != RangePlay::Stage::Flying) {
+    draw_meter_bar(play_->meter(), play_->last_click(), false, perfect_window_ms(MeterDifficulty::Standard), w, h, in.now);
+    char label[96];
+    std::snprintf(label, sizeof label, "%s: Space to swing", play_->club().c_str());
+    ImGui::GetForegroundDrawList()->AddText(ImVec2(0.5f * static_cast<float>(w) - 280.0f, static_cast<float>(h) - 106.0f),
+                                            IM_COL32(255, 255, 255, 255), label);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<ModeView> make_range_view(const Assets& assets, std::unique_ptr<RangePlay> model, const RangeViewOptions& o) {
+  return std::make_unique<RangeView>(assets, std::move(model), o);
+}
+
+}  // namespace sweetspot

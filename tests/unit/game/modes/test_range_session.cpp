@@ -1,0 +1,67 @@
+// The practice range's bag gapping: each club's mean and spread from its shots, a bag file
+// that reads back to the same numbers, and a caddie who then picks clubs by them.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "game/content/bag_file.hpp"
+#include "game/modes/golf/range_session.hpp"
+#include "physics/error.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+TEST_CASE("a bag-gapping session: per club mean and spread, longest first, the gaps positive", "[modes][golf][range]") {
+  const Bag bag = gap_bag(test::assets(), golfer_skill("amateur"), 6, 3);
+  REQUIRE(bag.clubs.size() == 13);  // every club but the putter
+  for (std::size_t k = 0; k < bag.clubs.size(); ++k) {
+    const BagClub& c = bag.clubs[k];
+    CHECK(c.shots == 6);
+    CHECK(c.total >= c.carry);
+    CHECK(c.carry_sd > 0.0);  // the bot's errors spread the carries
+    if (k > 0) CHECK(c.carry <= bag.clubs[k - 1].carry);
+  }
+  // The mean and spread are those of the shots: a session of the same seed, by hand.
+  RangeSession range(test::assets(), golfer_skill("amateur"));
+  range.hit("7-iron", MeterInput{1.0, 0.0});
+  range.hit("7-iron", MeterInput{0.9, 0.0});
+  const Bag two = range.bag("you");
+  REQUIRE(two.clubs.size() == 1);
+  const double a = range.shots()[0].carry, b = range.shots()[1].carry;
+  CHECK(two.clubs[0].carry == Approx(0.5 * (a + b)));
+  CHECK(two.clubs[0].carry_sd == Approx(std::abs(a - b) / std::sqrt(2.0)));
+  CHECK_THROWS_AS(range.hit("putter", MeterInput{}), InputError);
+}
+
+TEST_CASE("the bag file reads back the same and the caddie chooses by it", "[modes][golf][range]") {
+  const Bag measured = gap_bag(test::assets(), golfer_skill("beginner"), 4, 9);
+  const auto dir = std::filesystem::temp_directory_path() / "sweetspot_bag_test";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "bag.toml";
+  std::ofstream(path) << bag_toml(measured);
+  const Bag back = load_bag(test::assets(), path);
+  REQUIRE(back.clubs.size() == measured.clubs.size());
+  for (std::size_t k = 0; k < back.clubs.size(); ++k) {
+    CHECK(back.clubs[k].club == measured.clubs[k].club);
+    CHECK(back.clubs[k].carry == measured.clubs[k].carry);
+    CHECK(back.clubs[k].carry_sd == measured.clubs[k].carry_sd);
+  }
+  // A tour-speed caddie hits a wedge 110 m; with the beginner's measured bag it takes more
+  // club: the caddie's choice follows the player's own carries.
+  const GolfBot stock(test::assets(), golfer_skill("tour"), 1);
+  const GolfBot mine(test::assets(), golfer_skill("tour"), 1, bag_stock(back));
+  const std::string by_stock = stock.suggest(110.0, false), by_bag = mine.suggest(110.0, false);
+  CHECK(by_stock != by_bag);
+  double carry_stock = 0.0, carry_bag = 0.0;
+  for (const auto& s : stock.stock()) if (s.club == by_bag) carry_stock = s.carry;
+  for (const auto& s : mine.stock()) if (s.club == by_bag) carry_bag = s.carry;
+  CHECK(carry_bag >= 110.0);
+  CHECK(carry_bag < carry_stock);
+  // Hostile bag files: named file:line and key.
+  std::ofstream(dir / "bad.toml") << "skill = \"tour\"\n[[club]]\nname = \"putter\"\ncarry = \"10m\"\ntotal = \"12m\"\n";
+  CHECK_THROWS_WITH(load_bag(test::assets(), dir / "bad.toml"), Catch::Contains("bad.toml:3") && Catch::Contains("putter"));
+  std::ofstream(dir / "bad2.toml") << "skill = \"tour\"\n[[club]]\nname = \"7-iron\"\ncarry = \"150m\"\ntotal = \"120m\"\n";
+  CHECK_THROWS_WITH(load_bag(test::assets(), dir / "bad2.toml"), Catch::Contains("bad2.toml:5") && Catch::Contains("total"));
+  std::filesystem::remove_all(dir);
+}

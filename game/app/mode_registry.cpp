@@ -4,6 +4,7 @@
 
 #include "game/content/bag_file.hpp"
 #include "game/content/course_file.hpp"
+#include "game/content/settings_file.hpp"
 #include "game/modes/golf/range_session.hpp"
 #include "game/report/round_save.hpp"
 #include "game/ui/cage_view.hpp"
@@ -26,6 +27,7 @@ Course play_course(const Assets& assets, const PlayOptions& o) {
 std::unique_ptr<GolfPlay> golf_model(const Assets& assets, const PlayOptions& o) {
   GolfSetup setup;
   setup.flyover = o.flyover;
+  setup.input_latency = load_settings(settings_path()).input_latency;
   setup.difficulty = meter_difficulty(o.difficulty);
   if (!o.resume.empty()) {
     const SavedRound saved = read_round_save(o.resume);

@@ -9,6 +9,7 @@
 #include "game/render/image.hpp"
 #include "game/app/display.hpp"
 #include "game/content/bag_file.hpp"
+#include "game/content/settings_file.hpp"
 #include "game/modes/golf/golf_group.hpp"
 #include "game/modes/golf/meter_clock.hpp"
 #include "game/report/round_save.hpp"
@@ -61,6 +62,7 @@ RunFn setup_play(CLI::App& sub) {
     // The range writes the bag (S): there the file may not exist yet.
     if (!o->bag.empty() && (o->mode != "range" || std::filesystem::exists(o->bag))) load_bag(assets, o->bag);
     if (!o->resume.empty()) read_round_save(o->resume);
+    load_settings(settings_path());  // a bad settings file is named now, not when golf opens
     std::string why;
     // Headless plays the lab's one shot: the game modes' options would be ignored, so
     // they are refused (--frames and --screenshot have a headless meaning).

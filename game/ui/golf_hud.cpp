@@ -63,7 +63,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
   const double now = flight_t;
   const GolfGroup& g = play.group();
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(390, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Always);
   ImGui::Begin("Play", nullptr, kFixed);
   const GolfPlay::Stage stage = play.stage();
   const bool in_air = stage == GolfPlay::Stage::Flying || settling;
@@ -100,7 +100,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     if (play.human_turn()) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
       ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
-      ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save", camera_words(camera_mode));
+      ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save  L latency", camera_words(camera_mode));
       ImGui::TextDisabled("Esc: cancel the swing, pause  Tab: next mode");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole");
     } else {

@@ -6,7 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 
+#include "game/content/settings_file.hpp"
+#include "game/modes/golf/latency_calibration.hpp"
 #include "game/modes/replay.hpp"
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
@@ -84,6 +88,9 @@ class GolfView final : public ModeView {
   Camera green_camera(bool from_pin) const;
   Camera flyover_camera(double progress) const;
   void save_round();
+  /// L: the tap calibration; returns the keys left for the game.
+  std::vector<KeyPress> calibration_keys(const std::vector<KeyPress>& keys, double now);
+  void draw_calibration(int w, int h, double now) const;
 
   const Assets& assets_;
   std::unique_ptr<GolfPlay> play_;
@@ -104,6 +111,7 @@ class GolfView final : public ModeView {
   Vec3 slopes_ball_ = Vec3::Zero();
   std::vector<SlopeArrow> slopes_;
   std::string saved_note_;
+  std::optional<LatencyCalibration> calibration_;
   int done_frames_ = 0;
 };
 
@@ -127,6 +135,56 @@ void GolfView::view_keys(const std::vector<KeyPress>& keys) {
       default: break;
     }
   }
+}
+
+std::vector<KeyPress> GolfView::calibration_keys(const std::vector<KeyPress>& keys, double now) {
+  std::vector<KeyPress> rest;
+  for (const KeyPress& k : keys) {
+    if (!calibration_ && k.key == GLFW_KEY_L && play_->stage() == GolfPlay::Stage::Aiming) {
+      calibration_.emplace(k.time);
+      continue;
+    }
+    if (calibration_ && k.key == GLFW_KEY_SPACE) {
+      calibration_->tap(k.time);
+      continue;
+    }
+    if (!calibration_) rest.push_back(k);
+  }
+  if (calibration_ && calibration_->done(now)) {
+    if (const auto latency = calibration_->latency()) {
+      play_->set_input_latency(*latency);
+      char buf[200];
+      const std::filesystem::path path = settings_path();
+      try {
+        std::filesystem::create_directories(path.parent_path());
+        Settings settings = load_settings(path);
+        settings.input_latency = *latency;
+        write_file_atomic(path, settings_toml(settings), OverInput::Allow);
+        std::snprintf(buf, sizeof buf, "Input latency %.0f ms: the meter takes it off your clicks (saved to %s)", 1000.0 * *latency,
+                      path.string().c_str());
+      } catch (const std::exception& e) {
+        std::snprintf(buf, sizeof buf, "Input latency %.0f ms for this session (not saved: %s)", 1000.0 * *latency, e.what());
+      }
+      saved_note_ = buf;
+    } else {
+      saved_note_ = "Calibration: too few taps in time with the beat; nothing changed (L to try again)";
+    }
+    calibration_.reset();
+  }
+  return rest;
+}
+
+void GolfView::draw_calibration(int w, int h, double now) const {
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  const ImVec2 c(0.5f * static_cast<float>(w), 0.5f * static_cast<float>(h));
+  const int glow = static_cast<int>(255.0 * calibration_->flash(now));
+  dl->AddRectFilled(ImVec2(c.x - 260, c.y - 150), ImVec2(c.x + 260, c.y + 130), IM_COL32(20, 24, 30, 230), 8.0f);
+  dl->AddCircleFilled(c, 60.0f, IM_COL32(60 + glow * 3 / 4, 60 + glow * 3 / 4, 60, 255));
+  char text[160];
+  std::snprintf(text, sizeof text, "Tap Space on each flash (%d counted; the first %d set the rhythm)", calibration_->counted(),
+                LatencyCalibration::kLeadIn);
+  dl->AddText(ImVec2(c.x - 240, c.y - 130), IM_COL32(255, 255, 255, 255), "Input latency calibration");
+  dl->AddText(ImVec2(c.x - 240, c.y + 90), IM_COL32(220, 220, 220, 255), text);
 }
 
 void GolfView::save_round() {
@@ -250,8 +308,9 @@ Camera GolfView::flyover_camera(double progress) const {
 }
 
 void GolfView::frame(const ViewInput& in, Renderer& renderer) {
-  view_keys(in.keys);
-  play_->update(golf_intents(in.keys), in.now);
+  const std::vector<KeyPress> keys = calibration_keys(in.keys, in.now);
+  view_keys(keys);
+  play_->update(golf_intents(keys), in.now);
   const GolfPlay::Stage stage = play_->stage();
   const int w = in.width, h = in.height;
   const bool flying = stage == GolfPlay::Stage::Flying;
@@ -321,6 +380,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   if (flying || settling) draw_launch_panel(*play_, units_, w, flying ? t : end);
   else draw_wind(*play_, units_, w);
   draw_golf_meter(*play_, units_, w, h, in.now);
+  if (calibration_) draw_calibration(w, h, in.now);
   if (stage == GolfPlay::Stage::HoleOver && !settling) draw_golf_card(*play_, w, false);
   if (stage == GolfPlay::Stage::RoundOver && !settling) {
     draw_golf_card(*play_, w, true);

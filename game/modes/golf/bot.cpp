@@ -165,9 +165,18 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   const std::string base = suggest(d, teed);
   std::size_t at = 0;
   while (stock_[at].club != base) ++at;
+  // Down the bag from one club longer: at least to two shorter, on while every club tried
+  // ends in a penalty (a bag measured by a shorter hitter), never past one that stops short.
   std::vector<Tried> tried;
-  for (std::size_t k = at > 0 ? at - 1 : 0; k <= std::min(at + 2, stock_.size() - 1); ++k)
-    if (allowed(stock_[k])) tried.push_back(tune(stock_[k].club, 1.0));
+  bool in_play = false;
+  for (std::size_t k = at > 0 ? at - 1 : 0; k < stock_.size(); ++k) {
+    if (k > at + 2 && in_play) break;
+    if (!allowed(stock_[k])) continue;
+    tried.push_back(tune(stock_[k].club, 1.0));
+    const Tried& t = tried.back();
+    in_play = in_play || !t.lost;
+    if (!t.lost && t.reach < d) break;  // the shorter clubs stop shorter still
+  }
   const Tried* pick = nullptr;
   for (const Tried& t : tried)  // longest first: the last that carries is the shortest
     if (!t.lost && t.reach >= d) pick = &t;

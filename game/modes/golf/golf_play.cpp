@@ -293,7 +293,8 @@ void GolfPlay::apply(const Intent& in) {
       break;
     case Stage::Swinging:
       if (in.kind == IntentKind::Swing && meter_) {
-        meter_->click(t);
+        // The power and accuracy clicks answer what the player saw: take off the lag.
+        meter_->click(std::max(t - setup_.input_latency, meter_->started()));
         if (const auto m = meter_->result()) {
           last_meter_ = *m;
           last_click_ = *meter_;

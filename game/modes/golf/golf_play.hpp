@@ -24,6 +24,9 @@ struct GolfSetup {
   bool flyover = true;              ///< each hole opens with a flyover (skippable)
   /// The meter's timing windows, widened or narrowed (difficulty; see MeterClock).
   MeterDifficulty difficulty = MeterDifficulty::Standard;
+  /// s: the calibrated delay from seeing the meter to the key arriving; the power and
+  /// accuracy clicks (aimed at the marker) are judged that much earlier.
+  double input_latency = 0.0;
   /// A saved round's turns, replayed before play goes on (resume).
   std::vector<GolfEvent> resume;
 };
@@ -63,6 +66,8 @@ class GolfPlay {
   /// When the last ball stopped (s; the view holds on it a moment).
   double landed_at() const { return landed_at_; }
   const GolfSetup& setup() const { return setup_; }
+  /// A new calibration's latency (s), from the next click on.
+  void set_input_latency(double seconds) { setup_.input_latency = seconds; }
   /// The last stroke's meter result (none for the bots' and the caddie's strokes).
   const std::optional<MeterInput>& last_meter() const { return last_meter_; }
   /// The meter as the last human stroke left it: where the clicks landed (the view marks them).

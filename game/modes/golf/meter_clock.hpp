@@ -34,6 +34,8 @@ class MeterClock {
   MeterClock(double tempo, bool putting, double window_ms = 0.0) : tempo_(tempo), putting_(putting), window_ms_(window_ms) {}
 
   Phase phase() const { return phase_; }
+  /// When the first click started the backswing.
+  double started() const { return t_start_; }
   bool putting() const { return putting_; }
   /// A click (Space) at time t (s, any clock that only moves forward).
   void click(double t);

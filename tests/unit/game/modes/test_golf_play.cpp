@@ -7,6 +7,7 @@
 
 #include "game/content/course_file.hpp"
 #include "game/modes/golf/golf_play.hpp"
+#include "game/modes/golf/latency_calibration.hpp"
 #include "game/modes/replay.hpp"
 #include "support/test_assets.hpp"
 
@@ -223,4 +224,33 @@ TEST_CASE("putting preview: the flat-green roll grows with power and inverts", "
   }
   // A full putter stroke on this stimp-10.5 green rolls a long lag (10-30 m), not 12-15 m.
   CHECK(play.flat_roll(1.0) > 10.0);
+}
+
+TEST_CASE("latency calibration: the median tap offset, and the meter judges aimed clicks that much earlier", "[modes][golf]") {
+  LatencyCalibration cal(10.0);
+  // Taps 45 ms after each beat with a few ms of scatter; the lead-in beats are not counted;
+  // one wild tap does not move the median.
+  const double jitter[] = {0.004, -0.003, 0.002, -0.001, 0.0, 0.003, -0.002, 0.001, 0.2, -0.004};
+  for (int k = 0; k < LatencyCalibration::kBeats; ++k) cal.tap(cal.beat(k) + 0.045 + jitter[k]);
+  CHECK(cal.counted() == LatencyCalibration::kBeats - LatencyCalibration::kLeadIn);
+  REQUIRE(cal.latency());
+  CHECK(*cal.latency() == Approx(0.045).margin(0.004));
+  CHECK(cal.done(cal.beat(LatencyCalibration::kBeats - 1) + 0.5));
+  LatencyCalibration few(0.0);
+  few.tap(few.beat(3));
+  CHECK_FALSE(few.latency());
+
+  // A player 45 ms late on every aimed click plays a perfect swing once the latency is set.
+  GolfSetup setup = solo("scratch");
+  setup.input_latency = 0.045;
+  setup.difficulty = MeterDifficulty::Pro;
+  GolfPlay play(test::assets(), first_hole(), setup);
+  play.update({at(IntentKind::Swing, 1.0), at(IntentKind::Swing, 1.0 + 0.8 + 0.045)}, 1.9);
+  REQUIRE(play.meter());
+  const double mark = play.meter()->mark_time();
+  play.update({at(IntentKind::Swing, mark + 0.045)}, mark + 0.1);
+  REQUIRE(play.last_meter());
+  CHECK(play.last_meter()->accuracy_ms == Approx(0.0).margin(1e-6));
+  const double tempo = MeterClock::tempo_for(test::assets().equipment().club(play.club()).length, false);
+  CHECK(play.last_meter()->power == Approx(0.8 / tempo).margin(1e-9));
 }

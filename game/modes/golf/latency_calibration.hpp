@@ -1,0 +1,45 @@
+// Input latency calibration: a beat flashes at a steady tempo and the player taps in time
+// with it; the median of their taps' offsets from the beats is the delay between seeing and
+// pressing on this machine (display lag, input lag, reaction habit). The meter then judges
+// each click that much earlier, so a player whose screen lags is not always "late".
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "physics/range.hpp"
+
+namespace sweetspot {
+
+class LatencyCalibration {
+ public:
+  /// 0.6 s between beats (100 beats a minute, an easy tempo to tap); 10 beats, the first two
+  /// to find the rhythm (not counted); at least 5 counted taps for a result.
+  static constexpr double kPeriod = 0.6;  // s
+  static constexpr int kBeats = 10, kLeadIn = 2, kMinTaps = 5;
+  /// What the meter accepts: a display and input chain lags 10-150 ms (a 60 Hz TV with game
+  /// mode off reaches ~100 ms; rtings.com measures 10-120 ms input lag across monitors/TVs).
+  static constexpr Range kLatency{0.0, 0.25};  // s
+
+  explicit LatencyCalibration(double start) : start_(start) {}
+
+  /// When beat k (0-based) flashes.
+  double beat(int k) const { return start_ + (k + 1) * kPeriod; }
+  /// A tap (Space) at time t: matched to the nearest beat.
+  void tap(double t);
+  bool done(double now) const { return now >= beat(kBeats - 1) + 0.5 * kPeriod; }
+  /// How bright the flash is at `now` (1 on the beat, fading over a fifth of the period).
+  double flash(double now) const;
+  /// Taps counted so far.
+  int counted() const { return static_cast<int>(offsets_.size()); }
+  /// The latency (s): the median offset of the counted taps, clamped to kLatency; none with
+  /// fewer than kMinTaps taps.
+  std::optional<double> latency() const;
+
+ private:
+  double start_;
+  std::vector<double> offsets_;
+  std::vector<bool> tapped_ = std::vector<bool>(kBeats, false);
+};
+
+}  // namespace sweetspot

@@ -135,11 +135,11 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
     double reach = 0.0;  ///< m along the line where it stops (or is lost)
     bool lost = false;
   };
-  auto tune = [&](const std::string& club, double power) {
+  // `aim` starts the correction (a neighbour's); `iterations` simulations, the last one told.
+  auto tune = [&](const std::string& club, double power, double aim, int iterations) {
     Tried t;
     t.in.club = club;
-    double aim = 0.0;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < iterations; ++i) {
       t.in.aim = aim;
       t.in.meter.power = power;
       const ShotResult r = round.simulate(t.in);
@@ -147,7 +147,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       const Vec3& rest = t.lost ? r.trajectory.summary.landing_position : r.trajectory.summary.rest_position;
       const AlongAcross at = relative(round.ball(), line, rest);
       t.reach = at.along;
-      if (i == 2) break;
+      if (i + 1 == iterations) break;
       if (at.along > 1.0) aim = std::clamp(aim - std::atan2(at.across, at.along), -0.4, 0.4);
       if (power < 1.0 && going_for_pin && at.along > 1.0) power = std::clamp(power * std::pow(d / at.along, 0.8), 0.05, 1.0);
     }
@@ -157,33 +157,44 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   };
   if (d < shortest.carry) {
     // A partial wedge: carry grows a little faster than swing speed; start at that guess.
-    return tune(shortest.club, std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0)).in;
+    return tune(shortest.club, std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0), 0.0, 3).in;
   }
-  // The club that plays like the distance today: of the still-air club and its neighbours,
-  // the shortest whose ball stops at or past the cup with this wind, from this lie, on this
-  // ground, never one that ends in a penalty; else the one that goes farthest in play.
+  // The club that plays like the distance today: the still-air club, tried on the course
+  // (the wind, the lie, the ground); a shorter one when it runs past the cup by more than the
+  // gap to the next club, a longer one when it stops short, down the bag when it ends in a
+  // penalty. Never a club that ends in a penalty when one stays in play.
   const std::string base = suggest(d, teed);
   std::size_t at = 0;
   while (stock_[at].club != base) ++at;
-  // Down the bag from one club longer: at least to two shorter, on while every club tried
-  // ends in a penalty (a bag measured by a shorter hitter), never past one that stops short.
-  std::vector<Tried> tried;
-  bool in_play = false;
-  for (std::size_t k = at > 0 ? at - 1 : 0; k < stock_.size(); ++k) {
-    if (k > at + 2 && in_play) break;
-    if (!allowed(stock_[k])) continue;
-    tried.push_back(tune(stock_[k].club, 1.0));
-    const Tried& t = tried.back();
-    in_play = in_play || !t.lost;
-    if (!t.lost && t.reach < d) break;  // the shorter clubs stop shorter still
+  Tried best = tune(base, 1.0, 0.0, 3);
+  const double aim = best.in.aim;
+  auto good = [&](const Tried& t) { return !t.lost && t.reach >= d; };
+  if (good(best)) {
+    // Shorter while it still gets there (each tried with this club's aim, then tuned).
+    for (std::size_t k = at + 1; k < stock_.size(); ++k) {
+      if (!allowed(stock_[k]) || best.reach - d <= stock_[k - 1].carry - stock_[k].carry) break;
+      const Tried t = tune(stock_[k].club, 1.0, aim, 1);
+      if (!good(t)) break;
+      best = tune(stock_[k].club, 1.0, aim, 2);
+    }
+  } else if (!best.lost) {
+    // Short: one club longer, if it gets there and stays in play.
+    if (at > 0 && allowed(stock_[at - 1])) {
+      const Tried t = tune(stock_[at - 1].club, 1.0, aim, 2);
+      if (!t.lost) best = t;
+    }
+  } else {
+    // In a penalty: down the bag to the first club in play.
+    for (std::size_t k = at + 1; k < stock_.size(); ++k) {
+      if (!allowed(stock_[k])) continue;
+      const Tried t = tune(stock_[k].club, 1.0, aim, 2);
+      if (!t.lost) {
+        best = t;
+        break;
+      }
+    }
   }
-  const Tried* pick = nullptr;
-  for (const Tried& t : tried)  // longest first: the last that carries is the shortest
-    if (!t.lost && t.reach >= d) pick = &t;
-  if (pick == nullptr)
-    for (const Tried& t : tried)
-      if (!t.lost && (pick == nullptr || t.reach > pick->reach)) pick = &t;
-  return pick != nullptr ? pick->in : tried.front().in;
+  return best.in;
 }
 
 MeterInput GolfBot::full_swing() {

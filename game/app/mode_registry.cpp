@@ -34,15 +34,18 @@ std::unique_ptr<GolfPlay> golf_model(const Assets& assets, const PlayOptions& o)
     setup.players = saved.players;
     setup.options = saved.options;
     setup.resume = saved.events;
-    return std::make_unique<GolfPlay>(assets, load_course(assets, saved.course), setup);
+    return std::make_unique<GolfPlay>(assets, saved_course(assets, saved), setup);
   }
   GolfPlayer you{"You", o.skill, true, 0, {}};
   // A bag the range has not written yet (play --mode range --bag F, Tab to golf) is no bag.
   if (!o.bag.empty() && std::filesystem::exists(o.bag)) you.bag = bag_stock(load_bag(assets, o.bag));
   setup.players.push_back(you);
-  const std::vector<std::string> bots = o.bots.empty() ? std::vector<std::string>{o.skill} : o.bots;
+  for (const std::string& name : o.humans) setup.players.push_back({name, o.skill, true, 0, {}});
+  // No bot asked for: one of your skill when you play alone, none when friends play.
+  const std::vector<std::string> bots = !o.bots.empty() ? o.bots : o.humans.empty() ? std::vector<std::string>{o.skill} : std::vector<std::string>{};
   for (const std::string& b : bots)
     if (b != "none") setup.players.push_back({b + " bot", b, false, 0, {}});
+  for (std::size_t i = 0; i < o.handicaps.size() && i < setup.players.size(); ++i) setup.players[i].handicap = o.handicaps[i];
   setup.options.format = golf_format(o.format);
   setup.options.gimme_m = o.gimme >= 0.0 ? o.gimme : setup.options.format == GolfFormat::Match ? kMatchGimme : 0.0;
   setup.options.auto_putt = o.auto_putt;

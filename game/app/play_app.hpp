@@ -22,8 +22,10 @@ struct PlayOptions {
   std::string course = "links";          ///< golf: a course of assets/courses or a .toml
   std::string skill = "scratch";         ///< golf: the player's swing speed (and the bot opponent's skill)
   int holes = 0;                         ///< golf: play only the first N holes (0 = all)
-  std::vector<std::string> bots;         ///< golf: the bot players' skills (empty: one of `skill`; "none": alone)
+  std::vector<std::string> bots;         ///< golf: the bot players' skills (empty: one of `skill`, unless humans join; "none": no bot)
+  std::vector<std::string> humans;       ///< golf: more people at the same keys, by name (hot seat), after you
   std::string format = "stroke";         ///< golf: stroke, match, stableford, skins
+  std::vector<int> handicaps;            ///< golf: course handicaps, yours first, then the bots' in order
   double gimme = -1.0;                   ///< golf: m; < 0 the format's default
   bool auto_putt = false;                ///< golf: your putts played by the physics with your skill
   std::string difficulty = "standard";   ///< golf: the meter's perfect window (easy, standard, pro)

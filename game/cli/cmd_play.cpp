@@ -36,6 +36,8 @@ RunFn setup_play(CLI::App& sub) {
   window_only.push_back(sub.add_option("--holes", o->holes, "golf: play only the first N holes")->check(CLI::Range(1, 18)));
   window_only.push_back(sub.add_option("--bot", o->bots, "golf: a bot player of this skill, repeat for up to 3 (default one of --skill; none: alone)"));
   window_only.push_back(sub.add_option("--format", o->format, "golf: stroke (default), match (one bot), stableford or skins"));
+  window_only.push_back(sub.add_option("--human", o->humans, "golf: a friend at the same keys (hot seat), by name; repeat for up to 3"));
+  window_only.push_back(sub.add_option("--handicap", o->handicaps, "golf: course handicaps 0..54, yours first, then each friend's (--human) and each bot's"));
   window_only.push_back(sub.add_option("--gimme", o->gimme, "golf: putts this close (m) are conceded, 0..3 (default 0.6 in match play, else off)"));
   window_only.push_back(sub.add_flag("--auto-putt", o->auto_putt, "golf: your putts are played for you, with your skill"));
   window_only.push_back(sub.add_option("--difficulty", o->difficulty, "golf: the meter's perfect window: easy (25 ms), standard (10 ms, default), pro (0)"));
@@ -55,13 +57,23 @@ RunFn setup_play(CLI::App& sub) {
     golfer_skill(o->skill);
     for (const std::string& b : o->bots)
       if (b != "none") golfer_skill(b);
-    if (o->bots.size() > 3) throw InputError("--bot: a round has at most 4 players (you and 3 bots)");
-    if (o->format == "match" && (o->bots.size() > 1 || (o->bots.size() == 1 && o->bots[0] == "none")))
-      throw InputError("--format match: match play is you against one bot (--bot once)");
+    std::size_t others = o->humans.size();
+    for (const std::string& b : o->bots) others += b != "none";
+    if (o->bots.empty() && o->humans.empty()) others = 1;  // the default bot
+    if (others > 3) throw InputError("--bot/--human: a round has at most 4 players (you and 3 more)");
+    if (o->format == "match" && others != 1)
+      throw InputError("--format match: match play is between two (you and one --bot or --human)");
+    for (const std::string& h : o->humans)
+      if (h.empty() || h.size() > 24) throw InputError("--human '" + h + "': a name of 1 to 24 characters");
+    if (o->handicaps.size() > 1 + others)
+      throw InputError("--handicap: " + std::to_string(o->handicaps.size()) + " given for " + std::to_string(1 + others) +
+                       " players (yours first, then each friend's and each bot's)");
+    for (const int hc : o->handicaps)
+      if (hc < 0 || hc > kMaxHandicap) throw InputError("--handicap " + std::to_string(hc) + " is out of range (allowed [0, 54])");
     check_range("--gimme", o->gimme < 0.0 ? 0.0 : o->gimme, GolfOptions::kGimme, "m");
     // The range writes the bag (S): there the file may not exist yet.
     if (!o->bag.empty() && (o->mode != "range" || std::filesystem::exists(o->bag))) load_bag(assets, o->bag);
-    if (!o->resume.empty()) read_round_save(o->resume);
+    if (!o->resume.empty()) resume_round(assets, read_round_save(o->resume));  // its turns replay, or it is named now
     load_settings(settings_path());  // a bad settings file is named now, not when golf opens
     std::string why;
     // Headless plays the lab's one shot: the game modes' options would be ignored, so

@@ -9,10 +9,20 @@ namespace sweetspot {
 
 namespace {
 
+// The holes a card has to show: every hole finished or begun (the next hole's card, opened
+// when the last was finished but not yet played, is left out).
+std::vector<const HoleCard*> listed_holes(const GolfRound& round) {
+  std::vector<const HoleCard*> out;
+  for (std::size_t k = 0; k < round.card().size(); ++k)
+    if (k < round.hole_index() || !round.card()[k].shots.empty()) out.push_back(&round.card()[k]);
+  return out;
+}
+
 nlohmann::json holes_json(const GolfRound& round) {
   using nlohmann::json;
   json holes = json::array();
-  for (const HoleCard& h : round.card()) {
+  for (const HoleCard* hp : listed_holes(round)) {
+    const HoleCard& h = *hp;
     json shots = json::array();
     for (const StrokeRecord& s : h.shots) {
       json shot = {{"club", s.club},
@@ -37,8 +47,10 @@ nlohmann::json holes_json(const GolfRound& round) {
 }  // namespace
 
 nlohmann::json round_json(const GolfRound& round, const std::string& player, std::uint64_t seed) {
-  return {{"course", round.course().name},   {"player", player}, {"seed", seed}, {"holes", holes_json(round)},
-          {"total_strokes", round.total_strokes()}, {"total_par", round.total_par()}};
+  int total = 0;
+  for (const HoleCard* h : listed_holes(round)) total += h->strokes;
+  return {{"course", round.course().name}, {"player", player}, {"seed", seed}, {"holes", holes_json(round)},
+          {"total_strokes", total}, {"total_par", round.total_par()}};
 }
 
 std::string round_table(const GolfRound& round, const std::string& player) {
@@ -73,6 +85,12 @@ namespace {
 
 nlohmann::json wind_json(const HoleWind& w) {
   return {{"wind_mps", w.speed}, {"wind_toward_deg", w.toward * 180.0 / 3.14159265358979323846}};
+}
+
+std::string leaders_text(const GolfGroup& g, const Standings& s) {
+  std::string names;
+  for (int p : s.leaders) names += (names.empty() ? "" : ", ") + g.players()[static_cast<std::size_t>(p)].name;
+  return (s.leaders.size() > 1 ? "tied: " : g.finished() ? "winner: " : "leader: ") + names;
 }
 
 nlohmann::json result_json(const GolfGroup& g, const Standings& s) {
@@ -124,7 +142,13 @@ nlohmann::json result_json(const GolfGroup& g, const Standings& s) {
       break;
     }
   }
-  r["winner"] = s.format == GolfFormat::Match && s.match->lead == 0 ? json(nullptr) : name(s.ranking.front());
+  // The winner, or none on a tie (then `tied` names those level at the top).
+  r["winner"] = s.leaders.size() == 1 ? name(s.leaders.front()) : json(nullptr);
+  if (s.leaders.size() > 1) {
+    json tied = json::array();
+    for (int p : s.leaders) tied.push_back(name(p));
+    r["tied"] = tied;
+  }
   return r;
 }
 
@@ -145,15 +169,22 @@ nlohmann::json group_json(const GolfGroup& g) {
       if (s.format == GolfFormat::Stableford && h < s.holes) holes[h]["points"] = s.players[p].points[h];
       holes[h].update(wind_json(g.winds()[h]));
     }
-    const PlayerStanding& ps = s.players[p];
+    // The totals are the sums of the holes listed (a round stopped mid-hole included).
+    int strokes = 0, putts = 0, net = 0, par = 0;
+    for (const auto& h : holes) {
+      strokes += h["strokes"].get<int>();
+      putts += h["putts"].get<int>();
+      net += h["net"].get<int>();
+      par += h["par"].get<int>();
+    }
     players.push_back({{"player", pl.name},
                        {"skill", pl.human ? std::string("human") : pl.skill},
                        {"handicap", pl.handicap},
                        {"holes", holes},
-                       {"total_strokes", ps.total_strokes},
-                       {"total_putts", ps.total_putts},
-                       {"total_net", ps.total_net},
-                       {"to_par", ps.total_strokes - ps.total_par}});
+                       {"total_strokes", strokes},
+                       {"total_putts", putts},
+                       {"total_net", net},
+                       {"to_par", strokes - par}});
   }
   json winds = json::array();
   for (std::size_t h = 0; h < g.winds().size(); ++h) {
@@ -174,7 +205,7 @@ nlohmann::json group_json(const GolfGroup& g) {
   if (g.players().size() == 1) {
     j["player"] = g.players()[0].name;
     j["holes"] = players[0]["holes"];
-    j["total_strokes"] = g.round(0).total_strokes();
+    j["total_strokes"] = players[0]["total_strokes"];
   }
   return j;
 }
@@ -235,7 +266,7 @@ std::string group_table(const GolfGroup& g) {
       out += g.players()[p].name + ": " + std::to_string(s.skins->skins[p]) + " skins\n";
   if (s.format == GolfFormat::Skins && s.skins->unwon > 0) out += std::to_string(s.skins->unwon) + " skins carried, unwon\n";
   if (s.format == GolfFormat::Match) out += "result: " + s.match->result + "\n";
-  else if (s.holes > 0) out += "leader: " + g.players()[static_cast<std::size_t>(s.ranking.front())].name + "\n";
+  else if (s.holes > 0) out += leaders_text(g, s) + "\n";
   out += "(* a stroke received; putts in brackets; PU picked up)\n";
   return out;
 }

@@ -1,5 +1,7 @@
 #include "game/report/round_save.hpp"
 
+#include <algorithm>
+
 #include "game/content/course_file.hpp"
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
@@ -71,7 +73,7 @@ nlohmann::json round_save_json(const GolfGroup& g, const std::string& course) {
     }
     events.push_back(ev);
   }
-  return {{"sweetspot_round", kVersion},     {"course", course},
+  return {{"sweetspot_round", kVersion},     {"course", course}, {"holes", g.course().holes.size()},
           {"players", players},              {"format", to_string(g.options().format)},
           {"gimme_m", g.options().gimme_m},  {"auto_putt", g.options().auto_putt},
           {"seed", g.options().seed},        {"events", events}};
@@ -88,7 +90,12 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
   if (!j.is_object() || !j.contains("sweetspot_round")) r.fail("sweetspot_round", "missing: not a saved round");
   if (j["sweetspot_round"] != kVersion) r.fail("sweetspot_round", "version " + j["sweetspot_round"].dump() + " (allowed: 1)");
   SavedRound s;
+  s.source = source;
   s.course = r.text(j, "course");
+  static constexpr Range kHoles{1.0, 18.0};
+  const double holes = r.number(j, "holes", kHoles);
+  if (holes != static_cast<int>(holes)) r.fail("holes", "must be a whole number");
+  s.holes = static_cast<int>(holes);
   const auto& players = r.at(j, "players", "");
   if (!players.is_array() || players.empty() || players.size() > 4) r.fail("players", "1 to 4 players");
   static constexpr Range kHandicap{0.0, kMaxHandicap};
@@ -113,6 +120,8 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
       const std::string at = path + "bag[" + std::to_string(k) + "].";
       GolfBot::Stock st;
       st.club = r.text(bag[k], "club", at);
+      if (st.club == "putter" || std::find(golf_bag().begin(), golf_bag().end(), st.club) == golf_bag().end())
+        r.fail(at + "club", "'" + st.club + "' is not a club of the bag (the putter has no carry)");
       st.carry = r.number(bag[k], "carry_m", kCarry, at);
       st.total = r.number(bag[k], "total_m", kCarry, at);
       st.spread = r.number(bag[k], "spread_m", kCarry, at);
@@ -135,12 +144,16 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
   for (std::size_t i = 0; i < events.size(); ++i) {
     const std::string path = "events[" + std::to_string(i) + "].";
     GolfEvent e;
-    e.player = static_cast<int>(r.number(events[i], "player", kPlayer, path));
+    const double player = r.number(events[i], "player", kPlayer, path);
+    if (player != static_cast<int>(player)) r.fail(path + "player", "must be a whole number");
+    e.player = static_cast<int>(player);
     const std::string kind = r.text(events[i], "kind", path);
     if (kind == "concede_hole") {
       e.kind = GolfEvent::Kind::ConcedeHole;
     } else if (kind == "stroke") {
       e.stroke.club = r.text(events[i], "club", path);
+      if (std::find(golf_bag().begin(), golf_bag().end(), e.stroke.club) == golf_bag().end())
+        r.fail(path + "club", "'" + e.stroke.club + "' is not a club of the bag");
       e.stroke.aim = r.number(events[i], "aim_rad", StrokeInput::kAim, path);
       e.stroke.meter.power = r.number(events[i], "power", MeterInput::kPower, path);
       e.stroke.meter.accuracy_ms = r.number(events[i], "accuracy_ms", MeterInput::kAccuracy, path);
@@ -154,12 +167,27 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
 }
 
 SavedRound read_round_save(const std::filesystem::path& path) {
-  return parse_round_save(read_data_file(path, "saved round", kMaxSaveBytes), path.string());
+  SavedRound s = parse_round_save(read_data_file(path, "saved round", kMaxSaveBytes), path.string());
+  s.source = path.string();
+  return s;
+}
+
+Course saved_course(const Assets& assets, const SavedRound& saved) {
+  Course c = load_course(assets, saved.course);
+  if (static_cast<std::size_t>(saved.holes) > c.holes.size())
+    throw InputError(saved.source + ": holes: " + std::to_string(saved.holes) + " but course '" + saved.course + "' has " +
+                     std::to_string(c.holes.size()));
+  c.holes.resize(static_cast<std::size_t>(saved.holes));
+  return c;
 }
 
 GolfGroup resume_round(const Assets& assets, const SavedRound& saved) {
-  GolfGroup g(assets, load_course(assets, saved.course), saved.players, saved.options);
-  g.replay(saved.events);
+  GolfGroup g(assets, saved_course(assets, saved), saved.players, saved.options);
+  try {
+    g.replay(saved.events);
+  } catch (const InputError& e) {
+    throw InputError(saved.source + ": events: " + e.what());
+  }
   return g;
 }
 

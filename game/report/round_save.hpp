@@ -15,9 +15,11 @@ namespace sweetspot {
 
 struct SavedRound {
   std::string course;               ///< as load_course() takes it (a name or a path)
+  int holes = 0;                    ///< the round's holes: the course's first N (play --holes N)
   std::vector<GolfPlayer> players;
   GolfOptions options;
   std::vector<GolfEvent> events;
+  std::string source;               ///< where it was read from (for messages)
 };
 
 /// The save's JSON. `course` names the course as load_course() will find it again.
@@ -26,6 +28,8 @@ nlohmann::json round_save_json(const GolfGroup& group, const std::string& course
 /// not one. Nothing is played yet: resume_round() does that.
 SavedRound read_round_save(const std::filesystem::path& path);
 SavedRound parse_round_save(const std::string& text, const std::string& source);
+/// The saved round's course: its first `holes` holes. InputError when it has fewer.
+Course saved_course(const Assets& assets, const SavedRound& saved);
 /// The saved round, its turns replayed.
 GolfGroup resume_round(const Assets& assets, const SavedRound& saved);
 

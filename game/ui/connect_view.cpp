@@ -53,8 +53,16 @@ void draw_panel(const ConnectServer& server, const ConnectView& v, const std::st
   ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Always);
   ImGui::Begin("Launch monitor", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::Text("Open Connect v1 on %s:%d", bind.c_str(), server.port());
-  ImGui::TextWrapped("%s", server.table().where().c_str());
-  ImGui::Text("Club expected: %s   shots: %d", server.table().club().c_str(), server.shots());
+  // While the last ball moves the panel shows that stroke; the next (hole, lie, distance,
+  // club) once it stops, as a golfer reads the result when the ball comes to rest.
+  const bool moving = v.last && v.last->result && v.replay.playing && v.replay.time < duration(v.last->result->trajectory);
+  if (moving) {
+    ImGui::Text("The ball is %s   shots: %d", v.replay.time < v.last->result->trajectory.summary.hang_time_s ? "in the air" : "running out",
+                server.shots());
+  } else {
+    ImGui::TextWrapped("%s", server.table().where().c_str());
+    ImGui::Text("Club expected: %s   shots: %d", server.table().club().c_str(), server.shots());
+  }
   if (!v.last) {
     ImGui::TextDisabled("Point your launch monitor's GSPro connector here and hit a shot.");
   } else {
@@ -84,11 +92,16 @@ void draw_panel(const ConnectServer& server, const ConnectView& v, const std::st
       ImGui::EndTable();
     }
     if (j.contains("model_error")) ImGui::TextWrapped("club data: %s", j["model_error"].get<std::string>().c_str());
-    // Left and right of the line the shot was aimed on, not the world's axis.
+    // Left and right of the line the shot was aimed on, not the world's axis; the carry once
+    // the ball lands, the total once it stops.
     const double side = j.value("side_m", F["lateral_m"].get<double>());
-    ImGui::Text("Carry %.1f yd   total %.1f yd   %.1f yd %s", m_to_yd(F["carry_m"].get<double>()),
-                m_to_yd(F["total_m"].get<double>()), std::abs(m_to_yd(side)), side >= 0 ? "right" : "left");
-    if (j.contains("hole")) {
+    const bool landed = !moving || v.replay.time >= v.last->result->trajectory.summary.hang_time_s;
+    if (landed && moving)
+      ImGui::Text("Carry %.1f yd   %.1f yd %s", m_to_yd(F["carry_m"].get<double>()), std::abs(m_to_yd(side)), side >= 0 ? "right" : "left");
+    else if (landed)
+      ImGui::Text("Carry %.1f yd   total %.1f yd   %.1f yd %s", m_to_yd(F["carry_m"].get<double>()),
+                  m_to_yd(F["total_m"].get<double>()), std::abs(m_to_yd(side)), side >= 0 ? "right" : "left");
+    if (j.contains("hole") && !moving) {
       const std::string end = j["end"].get<std::string>();
       const char* words = end == "holed" ? "In the hole!" : end == "water" ? "In the water: penalty stroke"
                           : end == "out_of_bounds" ? "Out of bounds: stroke and distance" : "at rest";
@@ -99,7 +112,7 @@ void draw_panel(const ConnectServer& server, const ConnectView& v, const std::st
         ImGui::Text("Next: hole %d, %s, %.0f yd (told to the device)", j["next_hole"].get<int>(),
                     j["next_club"].get<std::string>().c_str(), m_to_yd(j["next_to_pin_m"].get<double>()));
     }
-    if (j.value("round_over", false))
+    if (j.value("round_over", false) && !moving)
       ImGui::Text("Round over: %d strokes (par %d). A new round starts.", j["round_strokes"].get<int>(), j["round_par"].get<int>());
   }
   ImGui::TextDisabled("Space: replay the last shot   Esc: pause");

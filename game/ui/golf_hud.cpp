@@ -327,7 +327,11 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
   }
   ImGui::TextDisabled("* a stroke received (handicap); putts in brackets");
   if (s.match) ImGui::Text("Match: %s", s.match->result.c_str());
-  else if (final && s.holes > 0) ImGui::Text("Winner: %s", g.players()[static_cast<std::size_t>(s.ranking.front())].name.c_str());
+  else if (final && s.holes > 0) {
+    std::string names;
+    for (int p : s.leaders) names += (names.empty() ? "" : ", ") + g.players()[static_cast<std::size_t>(p)].name;
+    ImGui::Text("%s: %s", s.leaders.size() > 1 ? "Tied" : "Winner", names.c_str());
+  }
   ImGui::TextDisabled(final ? "Enter: play again   Tab: next mode   Esc: menu" : "Enter: next hole");
   ImGui::End();
 }

@@ -119,12 +119,14 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
       side_spread = s.side_spread;
     }
   if (club == "putter") carry = r.to_pin();
-  // The player's own dispersion with this club this round, when they have hit it twice.
+  // The player's own dispersion with this club this round, when they have hit it twice with a
+  // full swing (a part swing's carry is another club's: it would smear the spread).
+  constexpr double kFullSwing = 0.9;
   int n = 0;
   double sum = 0.0, sum2 = 0.0, side2 = 0.0;
   for (const HoleCard& c : r.card())
     for (const StrokeRecord& s : c.shots)
-      if (s.club == club && !s.conceded && s.carry_m > 0.0) {
+      if (s.club == club && !s.conceded && s.carry_m > 0.0 && s.power >= kFullSwing) {
         ++n;
         sum += s.carry_m;
         sum2 += s.carry_m * s.carry_m;

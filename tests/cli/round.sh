@@ -111,7 +111,7 @@ r = j["result"]
 if fmt == "stableford":
     for e in r["points"]:
         p = next(q for q in j["players"] if q["player"] == e["player"])
-        want = [max(0, 2 + h["par"] - h["net"]) for h in p["holes"]]
+        want = [max(0, 2 + h["par"] - h["net"]) if h["holed"] else 0 for h in p["holes"]]  # picked up: no score
         assert e["points"] == want and e["total_points"] == sum(want), e
     assert [e["total_points"] for e in r["points"]] == sorted([e["total_points"] for e in r["points"]], reverse=True)
 elif fmt == "skins":

@@ -119,9 +119,13 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
 StrokeInput GolfBot::intend(const GolfRound& round) const {
   if (round.lie() == "green") return putt(round);
   const double d = round.to_pin();
-  const Stock& shortest = stock_.back();
   const bool teed = round.teed();
   auto allowed = [&](const Stock& s) { return !(s.club == "driver" && !teed); };
+  // The partial-swing club: the shortest-carrying club allowed from here.
+  const Stock* shortest_allowed = &stock_.back();
+  for (const Stock& s : stock_)
+    if (allowed(s)) shortest_allowed = &s;
+  const Stock& shortest = *shortest_allowed;
   double reach = 0.0;
   for (const Stock& s : stock_)
     if (allowed(s)) reach = std::max(reach, s.total);

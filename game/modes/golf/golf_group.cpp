@@ -17,7 +17,7 @@ bool same(const StrokeInput& a, const StrokeInput& b) {
 }  // namespace
 
 GolfGroup::GolfGroup(const Assets& assets, const Course& course, std::vector<GolfPlayer> players, GolfOptions options)
-    : assets_(&assets), course_(course), players_(std::move(players)), options_(std::move(options)) {
+    : course_(course), players_(std::move(players)), options_(std::move(options)) {
   if (players_.empty() || players_.size() > 4)
     throw InputError("a round has 1 to 4 players, not " + std::to_string(players_.size()));
   if (options_.format == GolfFormat::Match && players_.size() != 2)
@@ -106,16 +106,16 @@ void GolfGroup::after_turn(int player, std::size_t hole_before) {
 }
 
 std::vector<int> GolfGroup::honour_order() const {
-  // Rule 6.4a: on the next tee the lowest score on the hole just played has the honour (in
-  // match play the winner of it, the lower net); ties keep the order they teed off in.
+  // Rule 6.4a: on the next tee the lowest score on the hole just played has the honour: the
+  // net score where handicaps count (gross when nobody receives strokes), in match play the
+  // winner of the hole (a hole conceded is lost). Ties keep the order they teed off in.
   if (hole_ == 0) return order_;
   const std::size_t h = hole_ - 1;
   std::vector<int> order = order_;
-  const bool match = options_.format == GolfFormat::Match;
   std::vector<int> score(players_.size());
   for (std::size_t p = 0; p < players_.size(); ++p) {
-    score[p] = rounds_[p].card()[h].strokes;
-    if (match) score[p] -= strokes_received(static_cast<int>(p))[h];
+    const HoleCard& c = rounds_[p].card()[h];
+    score[p] = c.conceded ? 1000 : c.strokes - strokes_received(static_cast<int>(p))[h];
   }
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return score[static_cast<std::size_t>(a)] < score[static_cast<std::size_t>(b)];
@@ -128,7 +128,7 @@ void GolfGroup::choose_next() {
   auto on_hole = [&](int p) { return rounds_[static_cast<std::size_t>(p)].hole_index() == hole_; };
   while (hole_ < n && std::none_of(order_.begin(), order_.end(), on_hole)) {
     ++hole_;
-    hole_first_event_ = events_.size();
+    hole_first_events_.push_back(events_.size());
     if (hole_ < n) order_ = honour_order();
   }
   if (hole_ >= n) {

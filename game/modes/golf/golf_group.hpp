@@ -89,8 +89,11 @@ class GolfGroup {
 
   /// Every turn so far, in order: a round given these replays to this state.
   const std::vector<GolfEvent>& events() const { return events_; }
-  /// The index in events() of the first turn on the group's current hole.
-  std::size_t hole_first_event() const { return hole_first_event_; }
+  /// The index in events() of the first turn on hole `hole` (0-based) once the group is on
+  /// it or past it; events().size() for a hole not reached.
+  std::size_t hole_first_event(std::size_t hole) const {
+    return hole < hole_first_events_.size() ? hole_first_events_[hole] : events_.size();
+  }
   /// Replays `events` onto a new round (bot turns redrawn and checked against the record:
   /// InputError naming the event when the record is not this game's).
   void replay(const std::vector<GolfEvent>& events);
@@ -110,7 +113,6 @@ class GolfGroup {
   void choose_next();
   std::vector<int> honour_order() const;
 
-  const Assets* assets_;
   Course course_;
   std::vector<GolfPlayer> players_;
   GolfOptions options_;
@@ -119,7 +121,7 @@ class GolfGroup {
   std::vector<GolfBot> bots_;
   std::vector<int> order_;      ///< the honour on the current hole's tee
   std::size_t hole_ = 0;
-  std::size_t hole_first_event_ = 0;
+  std::vector<std::size_t> hole_first_events_{0};  ///< per hole reached
   int next_ = 0;
   std::vector<GolfEvent> events_;
   std::string note_;

@@ -60,7 +60,9 @@ GolfPlay::GolfPlay(const Assets& assets, Course course, GolfSetup setup)
       group_(assets, course_, setup_.players, setup_.options) {
   group_.replay(setup_.resume);
   begin_turn(0.0);
-  if (setup_.flyover) {
+  if (group_.finished()) {
+    stage_ = Stage::RoundOver;  // a saved round that was already over: its final card
+  } else if (setup_.flyover) {
     stage_ = Stage::Flyover;
     flyover_at_ = 0.0;
   }
@@ -161,7 +163,8 @@ void GolfPlay::advance(double t) {
     turn_at_ = flyover_at_ + kFlyover;
   }
   if (stage_ == Stage::Swinging && meter_) {
-    meter_->update(t);
+    // The meter's own ends wait for a click the player's lag still has on its way.
+    meter_->update(t - setup_.input_latency);
     if (meter_->phase() == MeterClock::Phase::Abandoned) {
       meter_.reset();
       stage_ = Stage::Aiming;
@@ -330,6 +333,8 @@ void GolfPlay::apply(const Intent& in) {
 
 void GolfPlay::new_round(double t) {
   group_ = GolfGroup(assets_, course_, setup_.players, setup_.options);
+  last_record_ = StrokeRecord{};
+  pending_message_.clear();
   meter_.reset();
   last_meter_.reset();
   last_click_.reset();
@@ -340,13 +345,24 @@ void GolfPlay::new_round(double t) {
 }
 
 void GolfPlay::restart_hole(double t) {
+  // The hole being played: during a flight, or on the card after it, the hole of the last
+  // stroke (the group may already be on the next, or done).
+  const bool after_stroke = stage_ == Stage::Flying || stage_ == Stage::HoleOver || stage_ == Stage::RoundOver;
+  const std::size_t hole = after_stroke ? round_hole_ : group_.hole_index();
+  if (hole >= course_.holes.size()) {
+    new_round(t);
+    return;
+  }
   // The round is deterministic: the turns before this hole, replayed, leave it exactly where
   // it was when the hole began.
-  std::vector<GolfEvent> before(group_.events().begin(),
-                                group_.events().begin() + static_cast<std::ptrdiff_t>(group_.hole_first_event()));
+  const std::size_t first = std::min(group_.hole_first_event(hole), group_.events().size());
+  std::vector<GolfEvent> before(group_.events().begin(), group_.events().begin() + static_cast<std::ptrdiff_t>(first));
   group_ = GolfGroup(assets_, course_, setup_.players, setup_.options);
   group_.replay(before);
   meter_.reset();
+  last_record_ = StrokeRecord{};
+  pending_message_.clear();
+  landed_at_ = t;
   stage_ = Stage::Aiming;
   begin_turn(t);
   message_ = "Hole " + std::to_string(course_.holes[group_.hole_index()].number) + " restarted";

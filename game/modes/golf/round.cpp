@@ -156,7 +156,7 @@ void GolfRound::finish_hole() {
 
 const StrokeRecord& GolfRound::play(const StrokeInput& in, ShotResult* shot) {
   if (finished()) throw InputError("the round is over");
-  return play_spec(spec_for(in), in.club, shot);
+  return play_spec(spec_for(in), in.club, in.meter.power, shot);
 }
 
 const StrokeRecord& GolfRound::play_launch(const std::string& club, const LaunchNumbers& numbers, ShotResult* shot) {
@@ -165,16 +165,17 @@ const StrokeRecord& GolfRound::play_launch(const std::string& club, const Launch
   in.club = club;
   ShotSpec spec = spec_for(in);  // placement, aim at the cup, world
   spec.strike = LaunchStrike{numbers};
-  return play_spec(spec, club, shot);
+  return play_spec(spec, club, 1.0, shot);
 }
 
-const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string& club, ShotResult* shot) {
+const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string& club, double power, ShotResult* shot) {
   const ResolvedShot resolved = resolve(spec, *assets_);
   ShotResult r = run_shot(resolved, "hole " + std::to_string(hole().number), {true, shot != nullptr});
   const std::size_t k = card_.size() - 1;
   HoleCard& h = card_[k];
   StrokeRecord rec;
   rec.club = club;
+  rec.power = power;
   rec.lie = resolved.start_surface;
   rec.start = resolved.ball_centre;
   rec.rest = r.trajectory.summary.rest_position;

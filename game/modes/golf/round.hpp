@@ -30,6 +30,7 @@ struct StrokeRecord {
   double carry_m = 0.0;       ///< m to the first landing
   double side_m = 0.0;        ///< m right (+) of the stroke's aim line at landing (TrackMan's Side)
   int penalty = 0;            ///< penalty strokes this shot incurred
+  double power = 1.0;         ///< the meter's power (1 a full swing; a launch monitor's shot counts as full)
   /// The stroke was conceded, not played (a gimme; in match play Rule 3.2b(1)): the ball is
   /// holed with it, and it counts as a putt.
   bool conceded = false;
@@ -100,7 +101,7 @@ class GolfRound {
   ShotResult simulate(const StrokeInput& in, bool record_samples = false) const;
 
  private:
-  const StrokeRecord& play_spec(const ShotSpec& spec, const std::string& club, ShotResult* shot);
+  const StrokeRecord& play_spec(const ShotSpec& spec, const std::string& club, double power, ShotResult* shot);
   Vec3 drop_back_on_line(const Vec3& in_water, const Vec3& from) const;
   std::string surface_at(const Vec3& p) const;
   void finish_hole();

@@ -21,7 +21,8 @@ Standings standings(const GolfGroup& g) {
       ps.putts.push_back(c.putts);
       ps.received.push_back(given[h]);
       ps.net.push_back(c.strokes - given[h]);
-      ps.points.push_back(stableford_points(c.par, c.strokes - given[h]));
+      // A hole not holed (picked up) has no score: no points (Rule 21.1b(1)).
+      ps.points.push_back(c.holed ? stableford_points(c.par, c.strokes - given[h]) : 0);
       ps.total_strokes += c.strokes;
       ps.total_putts += c.putts;
       ps.total_net += c.strokes - given[h];
@@ -53,6 +54,19 @@ Standings standings(const GolfGroup& g) {
       if (s.match->lead < 0) s.ranking = {1, 0};
       break;
   }
+  // The value each format ranks by, larger better.
+  auto score = [&](int p) {
+    const PlayerStanding& ps = s.players[static_cast<std::size_t>(p)];
+    switch (s.format) {
+      case GolfFormat::Stroke: return -ps.total_net;
+      case GolfFormat::Stableford: return ps.total_points;
+      case GolfFormat::Skins: return s.skins->skins[static_cast<std::size_t>(p)];
+      case GolfFormat::Match: return p == 0 ? s.match->lead : -s.match->lead;
+    }
+    return 0;
+  };
+  for (int p : s.ranking)
+    if (score(p) == score(s.ranking.front())) s.leaders.push_back(p);
   return s;
 }
 

@@ -24,6 +24,8 @@ struct Standings {
   /// Players by standing, best first: fewest net strokes (stroke), most points (stableford),
   /// most skins (skins), the match's winner (match). Ties keep the order of play.
   std::vector<int> ranking;
+  /// Those tied for the best standing (one player unless a tie; both in a level match).
+  std::vector<int> leaders;
 };
 
 Standings standings(const GolfGroup& group);

@@ -3,6 +3,7 @@
 // concessions, skins), gimmes and auto-putt, and a saved round that resumes bit for bit.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <numeric>
 
 #include "game/content/course_file.hpp"
@@ -55,7 +56,8 @@ TEST_CASE("a 3-player stableford round: points from net strokes by Rule 21.1b, s
       const HoleCard& c = g.round(p).card()[h];
       const int net = c.strokes - g.strokes_received(p)[h];
       // The table: 2 for net par, one more per stroke under, one less per stroke over, never below 0.
-      const int expected = net >= c.par + 2 ? 0 : c.par + 2 - net;
+      // A hole picked up has no score: 0 points.
+      const int expected = !c.holed || net >= c.par + 2 ? 0 : c.par + 2 - net;
       CHECK(ps.points[h] == expected);
       total += expected;
     }
@@ -65,6 +67,11 @@ TEST_CASE("a 3-player stableford round: points from net strokes by Rule 21.1b, s
   for (std::size_t k = 1; k < s.ranking.size(); ++k)
     CHECK(s.players[static_cast<std::size_t>(s.ranking[k - 1])].total_points >=
           s.players[static_cast<std::size_t>(s.ranking[k])].total_points);
+  // Those tied for the most points are all leaders, and only they.
+  for (int p = 0; p < 3; ++p) {
+    const bool top = s.players[static_cast<std::size_t>(p)].total_points == s.players[static_cast<std::size_t>(s.ranking.front())].total_points;
+    CHECK((std::find(s.leaders.begin(), s.leaders.end(), p) != s.leaders.end()) == top);
+  }
   // The JSON carries the same points and each hole's wind.
   const nlohmann::json j = group_json(g);
   CHECK(j["format"] == "stableford");

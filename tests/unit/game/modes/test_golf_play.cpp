@@ -254,3 +254,40 @@ TEST_CASE("latency calibration: the median tap offset, and the meter judges aime
   const double tempo = MeterClock::tempo_for(test::assets().equipment().club(play.club()).length, false);
   CHECK(play.last_meter()->power == Approx(0.8 / tempo).margin(1e-9));
 }
+
+TEST_CASE("the window's round resumes from a save's turns, a finished one on its final card", "[modes][golf][save]") {
+  GolfSetup setup = default_golf_setup(golfer_skill("amateur"), 5);
+  setup.flyover = false;
+  GolfGroup played(test::assets(), first_hole(2), setup.players, setup.options);
+  for (int k = 0; k < 5; ++k) played.play_bot();
+  setup.resume = played.events();
+  GolfPlay resumed(test::assets(), first_hole(2), setup);
+  CHECK(resumed.group().events().size() == played.events().size());
+  CHECK(resumed.group().to_play() == played.to_play());
+  CHECK(resumed.player() == played.to_play());
+  for (int p = 0; p < 2; ++p) CHECK((resumed.group().round(p).ball() - played.round(p).ball()).norm() == 0.0);
+  while (!played.finished()) played.play_bot();
+  setup.resume = played.events();
+  setup.flyover = true;
+  GolfPlay over(test::assets(), first_hole(2), setup);
+  CHECK(over.stage() == GolfPlay::Stage::RoundOver);
+}
+
+TEST_CASE("restart during the round's last flight restarts the last hole, not past the end", "[modes][golf]") {
+  GolfPlay play(test::assets(), first_hole(), solo("tour"));
+  double t = 0.0;
+  // Play until a stroke ends the round, and restart while that ball is still in the air.
+  for (int k = 0; k < 12 && !play.group().finished(); ++k) {
+    t += 1.0;
+    play.update({at(IntentKind::CaddiePlays, t)}, t);
+    if (!play.group().finished()) play.update({at(IntentKind::Continue, t + 0.1)}, t + 0.1);
+  }
+  REQUIRE(play.group().finished());
+  REQUIRE(play.stage() == GolfPlay::Stage::Flying);
+  play.update({at(IntentKind::Restart, t + 0.2)}, t + 0.2);
+  CHECK(play.stage() == GolfPlay::Stage::Aiming);
+  CHECK_FALSE(play.group().finished());
+  CHECK(play.group().hole_index() == 0);
+  CHECK(play.round().card().back().strokes == 0);
+  CHECK(play.ball_centre().allFinite());
+}

@@ -161,7 +161,12 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
       int sw = 0, sh = 0;
       std::vector<unsigned char> rgba;
       win.read_pixels(sw, sh, rgba);
-      const std::string path = (std::filesystem::path(o.shots_dir) / ("sweetspot_shot_" + std::to_string(++shots) + ".png")).string();
+      // The next number not taken: a screenshot never replaces an earlier one (another run's).
+      std::string path;
+      std::error_code ec;
+      do {
+        path = (std::filesystem::path(o.shots_dir) / ("sweetspot_shot_" + std::to_string(++shots) + ".png")).string();
+      } while (std::filesystem::exists(path, ec) && shots < 100000);
       try {
         write_png_atomic(path, sw, sh, rgba);
         out << "screenshot: " << path << " (" << sw << "x" << sh << ")\n";

@@ -66,7 +66,8 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
   ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Always);
   ImGui::Begin("Play", nullptr, kFixed);
   const GolfPlay::Stage stage = play.stage();
-  const bool in_air = stage == GolfPlay::Stage::Flying || settling;
+  const bool in_air = stage == GolfPlay::Stage::Flying;
+  const std::string& shooter = g.players()[static_cast<std::size_t>(play.shooter())].name;
   if (!g.finished()) {
     const CourseHole& hole = g.course().holes[g.hole_index()];
     ImGui::Text("%s   %s play", g.course().name.c_str(), to_string(g.options().format));
@@ -80,9 +81,12 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     // The result waits until the ball stops: the HUD still shows the stroke being played.
     ImGui::Separator();
     const bool landed = now >= play.last_shot().trajectory.summary.hang_time_s;
-    ImGui::Text("%s: the ball is %s", play.player_info().name.c_str(),
-                stage != GolfPlay::Stage::Flying ? "at rest" : landed ? "running out" : "in the air");
+    ImGui::Text("%s: the ball is %s", shooter.c_str(), landed ? "running out" : "in the air");
     ImGui::TextDisabled("Enter: skip the flight");
+  } else if (settling) {
+    // The ball has stopped: its result, before the next player's view.
+    ImGui::Separator();
+    ImGui::Text("%s: the ball is at rest", shooter.c_str());
   } else if (!g.finished() && (stage == GolfPlay::Stage::Aiming || stage == GolfPlay::Stage::Swinging)) {
     const GolfRound& r = play.round();
     ImGui::Separator();

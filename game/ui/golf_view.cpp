@@ -379,7 +379,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   }
   if (flying || settling) draw_launch_panel(*play_, units_, w, flying ? t : end);
   else draw_wind(*play_, units_, w);
-  draw_golf_meter(*play_, units_, w, h, in.now);
+  if (!settling) draw_golf_meter(*play_, units_, w, h, in.now);
   if (calibration_) draw_calibration(w, h, in.now);
   if (stage == GolfPlay::Stage::HoleOver && !settling) draw_golf_card(*play_, w, false);
   if (stage == GolfPlay::Stage::RoundOver && !settling) {

@@ -199,6 +199,7 @@ void GolfPlay::land(double t) {
 
 void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   round_hole_ = group_.hole_index();
+  shooter_ = player_;
   const GolfPlayer& who = player_info();
   const int stroke_no = round().card().back().strokes + 1;
   const StrokeRecord rec = bot ? group_.play_drawn(s, &last_) : group_.play(s, &last_);

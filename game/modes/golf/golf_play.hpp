@@ -53,6 +53,8 @@ class GolfPlay {
   const GolfPlayer& player_info() const { return group_.players()[static_cast<std::size_t>(player_)]; }
   /// That player's round (their ball, their card).
   const GolfRound& round() const { return group_.round(player_); }
+  /// Who struck the last stroke (the ball in the air, or just stopped).
+  int shooter() const { return shooter_; }
   /// A human plays the next stroke at the keys (not a bot, not an auto-putt).
   bool human_turn() const;
   const GolferSkill& skill() const { return golfer_skill(player_info().skill); }
@@ -119,6 +121,7 @@ class GolfPlay {
   GolfSetup setup_;
   GolfGroup group_;
   int player_ = 0;
+  int shooter_ = 0;
   Stage stage_ = Stage::Aiming;
   std::size_t club_ = 0;  ///< index in golf_bag()
   double aim_ = 0.0;

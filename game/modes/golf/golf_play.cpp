@@ -129,29 +129,27 @@ void GolfPlay::build_roll_table() {
   }
 }
 
-double GolfPlay::flat_roll(double power) const {
-  if (roll_table_.empty()) return 0.0;
-  if (power <= roll_table_.front().first) return roll_table_.front().second * power / roll_table_.front().first;
-  for (std::size_t k = 1; k < roll_table_.size(); ++k)
-    if (power <= roll_table_[k].first) {
-      const auto& [p0, d0] = roll_table_[k - 1];
-      const auto& [p1, d1] = roll_table_[k];
-      return d0 + (d1 - d0) * (power - p0) / (p1 - p0);
-    }
-  return roll_table_.back().second;
+namespace {
+
+// Linear interpolation in a table of increasing (a, b) pairs, from a to b (`forward`) or back;
+// through the origin below the first pair, held at the last above it.
+double interpolate(const std::vector<std::pair<double, double>>& table, double x, bool forward) {
+  if (table.empty()) return 0.0;
+  const auto in = [&](const std::pair<double, double>& e) { return forward ? e.first : e.second; };
+  const auto out = [&](const std::pair<double, double>& e) { return forward ? e.second : e.first; };
+  if (x <= in(table.front())) return out(table.front()) * x / std::max(in(table.front()), 1e-9);
+  for (std::size_t k = 1; k < table.size(); ++k)
+    if (x <= in(table[k]))
+      return out(table[k - 1]) + (out(table[k]) - out(table[k - 1])) * (x - in(table[k - 1])) /
+                                     std::max(in(table[k]) - in(table[k - 1]), 1e-9);
+  return out(table.back());
 }
 
-double GolfPlay::power_for_roll(double distance) const {
-  if (roll_table_.empty()) return 0.0;
-  if (distance <= roll_table_.front().second) return roll_table_.front().first * distance / roll_table_.front().second;
-  for (std::size_t k = 1; k < roll_table_.size(); ++k)
-    if (distance <= roll_table_[k].second) {
-      const auto& [p0, d0] = roll_table_[k - 1];
-      const auto& [p1, d1] = roll_table_[k];
-      return p0 + (p1 - p0) * (distance - d0) / std::max(d1 - d0, 1e-9);
-    }
-  return roll_table_.back().first;
-}
+}  // namespace
+
+double GolfPlay::flat_roll(double power) const { return interpolate(roll_table_, power, true); }
+
+double GolfPlay::power_for_roll(double distance) const { return interpolate(roll_table_, distance, false); }
 
 void GolfPlay::update(const Intents& intents, double now) {
   apply_in_time_order(intents, now, [this](double t) { advance(t); }, [this](const Intent& in) { apply(in); });

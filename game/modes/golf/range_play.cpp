@@ -3,9 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "game/modes/golf/swing_meter.hpp"
 #include "game/modes/replay.hpp"
-#include "game/rules/run_shot.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -49,17 +47,7 @@ void RangePlay::advance(double t) {
 
 void RangePlay::strike(const MeterInput& m, double t) {
   const std::string club = this->club();
-  session_.hit(club, m);
-  // The physics of the shot for the view: the same swing on the flat range.
-  const EquipmentCatalog& eq = assets_.equipment();
-  ShotSpec s;
-  s.sport = "golf";
-  s.world = kFlatWorld;
-  ClubStrike c;
-  c.club = club;
-  c.swing = meter_swing(m, eq.club(club), eq.club_info_of(club), full_swing_speed(skill_, eq.club_info_of(club)));
-  s.strike = c;
-  last_ = run_shot(resolve(s, assets_), "range " + club, {true, true});
+  session_.hit(club, m, &last_);
   struck_at_ = t;
   meter_.reset();
   stage_ = Stage::Flying;

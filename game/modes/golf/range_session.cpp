@@ -13,7 +13,7 @@ namespace sweetspot {
 RangeSession::RangeSession(const Assets& assets, const GolferSkill& skill, const Environment& air)
     : assets_(&assets), skill_(skill), air_(air) {}
 
-const RangeShot& RangeSession::hit(const std::string& club, const MeterInput& meter) {
+const RangeShot& RangeSession::hit(const std::string& club, const MeterInput& meter, ShotResult* shot_out) {
   const auto& bag = golf_bag();
   if (club == "putter" || std::find(bag.begin(), bag.end(), club) == bag.end())
     throw InputError("club '" + club + "': the range takes the clubs of the bag but the putter");
@@ -26,13 +26,14 @@ const RangeShot& RangeSession::hit(const std::string& club, const MeterInput& me
   c.club = club;
   c.swing = meter_swing(meter, eq.club(club), eq.club_info_of(club), full_swing_speed(skill_, eq.club_info_of(club)));
   s.strike = c;
-  const ShotResult r = run_shot(resolve(s, *assets_), "range " + club, {true, false});
+  ShotResult r = run_shot(resolve(s, *assets_), "range " + club, {true, shot_out != nullptr});
   RangeShot shot;
   shot.club = club;
   shot.carry = r.trajectory.summary.carry_m;
   shot.total = r.trajectory.summary.total_m;
   shot.side = side_of_aim(r, r.trajectory.summary.landing_position);
   shots_.push_back(shot);
+  if (shot_out != nullptr) *shot_out = std::move(r);
   return shots_.back();
 }
 

@@ -21,8 +21,9 @@ class RangeSession {
  public:
   RangeSession(const Assets& assets, const GolferSkill& skill, const Environment& air = {});
   /// One full swing with `club` and these meter inputs, recorded. InputError for a club not in
-  /// the bag (or the putter).
-  const RangeShot& hit(const std::string& club, const MeterInput& meter);
+  /// the bag (or the putter). `shot`, when given, receives the physics with its samples (for
+  /// drawing it).
+  const RangeShot& hit(const std::string& club, const MeterInput& meter, ShotResult* shot = nullptr);
   const std::vector<RangeShot>& shots() const { return shots_; }
   /// Per club hit, longest first: mean carry and total, their spreads (sample standard
   /// deviation; 0 for a single shot), the shot count.

@@ -206,13 +206,25 @@ def fence_distance(phi_deg):
     return (CENTRE_FT - (CENTRE_FT - LINE_FT) * p * p) * FT
 
 
+FOUL_GROUND = 60.0 * FT  # Rule 2.01: 60 ft or more from the base lines and home plate to the stands
+
+
 def ballpark_material(x, z):
     r = math.hypot(x, z)
     phi = math.degrees(math.atan2(z, x))
-    if r > fence_distance(phi):
-        return "out_of_bounds"  # stands beyond the fence and past the foul poles
+    # Stands beyond the fence and past the foul poles. The ground runs on a cell (2.5 m) past
+    # the fence's foot: a cell is one material, and a ball at the foot of the wall is in play
+    # (past the fence it can only have cleared it, which the rules decide before it lands).
+    if r > fence_distance(phi) + 2.5:
+        return "out_of_bounds"
+    # Stands along the foul lines and behind the backstop, 60 ft out (a ball into them is dead).
+    u = (x + z) / math.sqrt(2.0)  # along the first-base line
+    w = (x - z) / math.sqrt(2.0)  # along the third-base line
+    outside = max(-u, -w)        # how far outside the nearer foul line
+    if outside > FOUL_GROUND or (x < 0.0 and r > BACKSTOP):
+        return "out_of_bounds"
     fair = x > 0.0 and abs(phi) <= 45.0
-    if fair and r > fence_distance(phi) - TRACK:
+    if fair and r > fence_distance(phi) - TRACK or r > fence_distance(phi):
         return "warning_track"
     if r < 4.0:  # home plate circle
         return "dirt"

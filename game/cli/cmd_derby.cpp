@@ -8,6 +8,7 @@
 #include "game/report/report.hpp"
 #include "game/modes/baseball/session.hpp"
 #include "game/report/session_json.hpp"
+#include "game/report/box_score.hpp"
 #include "game/render/spray_chart.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
@@ -22,21 +23,64 @@ struct DerbyOptions {
   SessionOptions session;
   bool json = false;
   std::string plot;
+  int innings = 9;
+  int games = 1;
+  static constexpr Range kGames{1.0, 1000.0};
 };
+
+int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
+  if (session_flags) throw InputError("--outs, --swings: a game counts innings (--innings)");
+  if (o.session.left_handed) throw InputError("--left: a game's lineups mix left- and right-handed batters");
+  check_range("--innings", o.innings, GameOptions::kInnings, "");
+  check_range("--games", o.games, DerbyOptions::kGames, "");
+  if (o.json && o.games != 1) throw InputError("--json: one game at a time (--games 1)");
+  if (!o.plot.empty()) throw InputError("--plot: the spray chart is for derby, at-bat and practice sessions");
+  GameOptions g;
+  g.innings = o.innings;
+  g.away = g.home = o.bot;
+  batter_skill(o.bot);  // an unknown skill is refused before any pitch
+  std::vector<PlateAppearance> all;
+  for (int i = 0; i < o.games; ++i) {
+    g.seed = o.seed + static_cast<std::uint64_t>(i);
+    GameRecord game = play_game(assets, g);
+    if (o.json) {
+      std::cout << json_text(game_json(game)) << "\n";
+      return 0;
+    }
+    if (o.games == 1) {
+      for (const PlateAppearance& pa : game.plate_appearances)
+        std::printf("%s %-2d %-6s #%d  %-32s %s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
+                    pa.batter + 1, pa.description.c_str(), pa.runs > 0 ? (std::to_string(pa.runs) + " run(s) score").c_str() : "");
+      std::printf("\n%s", box_score_text(game).c_str());
+    } else {
+      std::printf("game %d (seed %llu): away %d, home %d in %d innings\n", i + 1, static_cast<unsigned long long>(g.seed),
+                  game.away.runs, game.home.runs, game.innings_played);
+    }
+    all.insert(all.end(), std::make_move_iterator(game.plate_appearances.begin()),
+               std::make_move_iterator(game.plate_appearances.end()));
+  }
+  std::printf("\n%s", rates_text(batting_rates(all, 2), o.bot + " lineups against the league's pitcher").c_str());
+  return 0;
+}
 
 RunFn setup_derby(CLI::App& sub) {
   auto o = std::make_shared<DerbyOptions>();
   sub.add_option("--bot", o->bot, "batter skill: pro or amateur (default pro)");
   sub.add_option("--seed", o->seed, "seed of the pitcher's and the batter's errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   auto* outs = sub.add_option("--outs", o->session.outs, "derby: outs before it ends, 1..50 (default 10)");
-  sub.add_option("--mode", o->session.mode, "derby (default), at-bat or practice");
+  sub.add_option("--mode", o->session.mode, "derby (default), at-bat, practice or game (two bot lineups against bot pitchers)");
+  auto* innings = sub.add_option("--innings", o->innings, "game: innings scheduled, 1..200 (default 9)");
+  auto* games = sub.add_option("--games", o->games, "game: games in a row (seeds S, S+1, ...) with their league rates, 1..1000 (default 1)");
   auto* swings = sub.add_option("--swings", o->session.swings, "practice: pitches, 1..500 (default 20)");
   sub.add_flag("--left", o->session.left_handed, "a left-handed batter");
   sub.add_flag("--json", o->json, "print the DESIGN §9 JSON");
   sub.add_option("--plot", o->plot, "write the session's spray chart (PNG)");
-  return [o, outs, swings](const Assets& assets) -> int {
+  return [o, outs, swings, innings, games](const Assets& assets) -> int {
     // A flag of another mode would be ignored without a word: refuse it.
     const std::string& mode = o->session.mode;  // an unknown one is refused by run_session
+    if (mode != "game" && (innings->count() > 0 || games->count() > 0))
+      throw InputError("--innings, --games: only a game has innings (--mode game)");
+    if (mode == "game") return run_game(assets, *o, outs->count() + swings->count() > 0);
     const bool known = mode == "derby" || mode == "at-bat" || mode == "practice";
     if (known && outs->count() > 0 && mode != "derby")
       throw InputError("--outs: only the derby counts outs (--mode " + o->session.mode + ")");

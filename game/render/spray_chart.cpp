@@ -24,6 +24,7 @@ Rgb colour(BattedOutcome o) {
     case BattedOutcome::Double: return 0xE9C46A;
     case BattedOutcome::Single: return 0x2A9D8F;
     case BattedOutcome::Out: return 0x6C757D;
+    case BattedOutcome::Error: return 0x9B5DE5;
     case BattedOutcome::Foul: return 0x8ECAE6;
     case BattedOutcome::Strike: return 0x000000;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "game/report/flight_json.hpp"
+#include "game/rules/baseball_game.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -36,17 +37,24 @@ nlohmann::json session_json(const std::vector<SwingRecord>& swings, const Sessio
     out["outs"] = outs;
     out["home_runs"] = hrs;
   } else if (o.mode == "at-bat") {
-    int balls = 0, strikes = 0;
+    // The count by the rules, pitch by pitch; the last call ends the at-bat.
+    Count count;
     std::string result;
     for (const SwingRecord& s : swings) {
-      if (s.call_text == "ball") ++balls;
-      else if (s.call_text == "called_strike" || s.call_text == "swinging_strike") ++strikes;
-      else if (s.call_text == "foul") strikes = std::min(2, strikes + 1);
-      else result = s.call_text;
+      PitchResult r = PitchResult::InPlay;
+      for (PitchResult k : {PitchResult::Ball, PitchResult::CalledStrike, PitchResult::SwingingStrike, PitchResult::Foul,
+                            PitchResult::FoulTip, PitchResult::HitByPitch})
+        if (s.call_text == to_string(k)) r = k;
+      const PlateEnd end = apply_pitch(count, r);
+      if (end == PlateEnd::InPlay) result = s.call_text;
+      if (end == PlateEnd::Strikeout) result = "strikeout";
+      if (end == PlateEnd::Walk) result = "walk";
+      if (end == PlateEnd::HitByPitch) result = "hit_by_pitch";
     }
+    const int balls = count.balls, strikes = count.strikes;
     out["balls"] = balls;
     out["strikes"] = strikes;
-    out["result"] = !result.empty() ? result : balls >= 4 ? "walk" : "strikeout";
+    out["result"] = result;
   }
   return out;
 }

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "game/rules/run_shot.hpp"
+#include "game/modes/baseball/bat_tracking.hpp"
+#include "game/modes/baseball/fielding.hpp"
 #include "game/modes/baseball/pitching.hpp"
 
 namespace sweetspot {
@@ -18,9 +20,24 @@ struct BatterSkill {
   double timing_sd_ms = 10.0; ///< spread of the swing's timing error, ms
   double height_sd = 0.010;   ///< m, spread of where the bat meets the ball vertically
   double eye_sd = 0.05;       ///< m, how far off the batter reads the pitch's location (takes)
+  /// Live pitching (hitter.hpp): how often he reads a pitch's type before he must commit,
+  /// and the spread of his read of the time to contact and of the height where it arrives.
+  double recognition = 0.5;
+  double read_timing_sd_ms = 12.0;
+  double read_height_sd = 0.03;  ///< m
+  double read_reach_sd = 0.05;   ///< m, along the barrel: how far from him it arrives
+  /// m: the pitch he sees this far outside the zone he offers at e^-1 as often as one in it.
+  double discipline = 0.07;
+  double attack_angle = 0.175;   ///< rad, his swing's usual attack angle
+  double sweep = 3.2;            ///< rad the bat turns from his launch position to contact
+  double sprint_speed = 8.23;    ///< m/s, his top running speed (27 ft/s: Statcast's league average)
 };
-/// pro: 71.5 mph (Statcast's 2024 average bat speed), timing 8 ms, height 4 mm; amateur:
-/// 60 mph, 18 ms, 9 mm (ESTIMATES: a pro squares a batting-practice ball up; a high-school hitter).
+/// pro: the league's average hitter: 71.5 mph (Statcast's 2024 average bat speed), attack
+/// angle 10° (Statcast 2024 league ~10°), a 7.3 ft swing (Statcast 2024 average swing length:
+/// 3.2 rad of the maple bat's 0.69 m beyond the pivot), 27 ft/s; batting-practice timing 5 ms
+/// (17° of spray at 3.4°/ms) and height 4 mm (ESTIMATES: a pro squares a batting-practice ball
+/// up). amateur: a high-school hitter, 60 mph, 10 ms, 9 mm, 6° (ESTIMATES). Their reads of live
+/// pitching: hitter.hpp.
 const std::vector<BatterSkill>& batter_skills();
 const BatterSkill& batter_skill(std::string_view name);
 
@@ -35,45 +52,63 @@ struct SwingInput {
   static constexpr Range kUndercut{-0.08, 0.08};
   bool power = true;          ///< power swing (full bat speed) or contact swing (92 %, half the errors)
   bool left_handed = false;
+  /// m the ball passes farther from the batter than the sweet spot would meet it (+ toward
+  /// the tip; past the tip the bat misses).
+  double reach_error = 0.0;
+  static constexpr Range kReach{-0.5, 0.5};
+  double attack_angle = 0.175;  ///< rad, + up
+  static constexpr Range kAttackAngle{-0.5, 0.7};
+  double sweep = 3.2;           ///< rad, the bat's turn from the launch position to contact
+  double effort = 1.0;          ///< share of his bat speed he swings with (a two-strike swing is shorter)
+  static constexpr Range kEffort{0.5, 1.0};
 };
 
-/// Timing: 1.2° of swing direction per ms (±37 ms reaches the foul lines) and 3 mm along
-/// the barrel per ms; a bat more than 45 ms early or late misses the ball entirely.
-inline constexpr double kDirectionPerMs = 0.020943951;  // rad (1.2°)
-inline constexpr double kBarrelPerMs = 0.003;            // m
-inline constexpr double kMissTimingMs = 45.0;
-
-enum class BattedOutcome { Strike, Foul, Out, Single, Double, Triple, HomeRun };
-const char* to_string(BattedOutcome o);
+/// Timing turns the bat's direction at contact by its angular speed: the sweet spot's speed
+/// over its distance from the pivot (~3.4°/ms for 71.5 mph on the maple bat), so ~13 ms early
+/// or late reaches a foul line (R. K. Adair, The Physics of Baseball: "1/100 s early, the ball
+/// goes foul down the left-field line"). Timing also moves the contact 3 mm along the barrel
+/// per ms (early toward the tip, late toward the hands); a bat turned 90° from square lies
+/// along the ball's path and cannot meet it.
+inline constexpr double kBarrelPerMs = 0.003;  // m
+inline constexpr double kMissAngle = 1.5708;   // rad (90°)
 
 struct SwingResult {
   bool contact = false;
   ShotResult shot;            ///< valid with contact: launch, flight, end
   BattedOutcome outcome = BattedOutcome::Strike;
   std::string fielder;        ///< who caught or fielded it ("CF", "SS", ...), "" for none
+  FieldingPlay play;          ///< the fielders' play on a batted ball (contact)
   bool barrel = false, hard_hit = false, sweet_spot = false;  ///< Statcast's classes
+  /// The ball went on back toward the catcher, within 20° of the pitch's own line: caught,
+  /// a foul tip is a strike even with two strikes (MLB Rule 5.09(a)(2) via the definition of
+  /// a foul tip). ESTIMATE of the cone a catcher's mitt covers.
+  bool foul_tip = false;
+  BatTracking tracking;       ///< Statcast's bat tracking for the swing (misses too)
 };
+
+/// The foul-tip cone around the pitch's line (see SwingResult::foul_tip).
+inline constexpr double kFoulTipCone = 0.349;  // rad, 20°
 
 /// Statcast: hard-hit EV ≥ 95 mph; sweet spot LA 8–32°; barrel LA ≤ 50, EV ≥ 98,
 /// 1.5·EV − LA ≥ 117, EV + LA ≥ 124 (EV mph, LA deg).
 bool is_barrel(double ev_mph, double la_deg);
 
+/// Who fields a batted ball: a team's defense, the batter's speed, and the draws of
+/// catches and misplays (none: the likelier result, no misplays).
+struct FieldingSetup {
+  const Defense* defense = nullptr;  ///< nullptr: the league's
+  double batter_sprint = 8.23;       ///< m/s
+  Rng* rng = nullptr;
+  bool field = true;  ///< false: the flight alone (home run, foul or in play), nobody fields it
+};
+
 /// Swings at `pitch` with `bat` ("maple", bats.toml) for a batter whose power swing is
-/// `bat_speed` m/s. Deterministic.
+/// `bat_speed` m/s. Deterministic for a given `fielding.rng` state.
 SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const SwingInput& in, double bat_speed,
-                     const std::string& bat = "maple");
+                     const std::string& bat = "maple", const FieldingSetup& fielding = {});
 
 /// Home plate to the foot of the fence (m) at spray angle `spray` (rad, + toward first
 /// base) on a world with a fence line; infinity outside its ends.
 double fence_distance(const WorldAsset& world, double spray);
-
-/// The fielding model alone, for a batted ball's shot on the ballpark (tests, the window).
-/// Fielders at standard depths with Statcast's reaction, sprint speeds and arm strength; a
-/// fly ball is caught if one reaches its landing spot in its hang time; a grounder is an out
-/// when the fielder who reaches it first can throw to first base before the batter gets
-/// there (4.47 s, Statcast's mean home-to-first); otherwise the batter takes the bases the
-/// throw cannot beat him to. Throws fly through `aero` and `env` (throwing.hpp).
-BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const Environment& env,
-                         std::string* fielder = nullptr);
 
 }  // namespace sweetspot

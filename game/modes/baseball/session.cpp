@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "game/modes/baseball/ball_game.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -47,14 +48,16 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
         SwingInput trial = s;
         trial.timing_ms = t;
         trial.undercut = u;
-        const SwingResult r = swing_at(assets_, pitch, trial, skill_.bat_speed);
+        FieldingSetup flight_only;
+        flight_only.field = false;
+        const SwingResult r = swing_at(assets_, pitch, trial, skill_.bat_speed, "maple", flight_only);
         if (!r.contact || r.outcome == BattedOutcome::Foul) return -200.0;
         const Vec3& land = r.shot.trajectory.summary.landing_position;
         return (r.outcome == BattedOutcome::HomeRun ? 30.0 : 0.0) + std::hypot(land.x(), land.z()) -
                fence_distance(*park, std::atan2(land.z(), land.x()));
       };
       double best = -1e9;
-      for (double t = -24.0; t <= 0.0; t += 4.0) {
+      for (double t = -8.0; t <= 0.0; t += 1.0) {
         for (double u = 0.006; u <= 0.036; u += 0.003) {
           const double sd = skill_.timing_sd_ms;
           const double m = std::min({margin(t - sd, u), margin(t, u), margin(t + sd, u)});
@@ -111,51 +114,19 @@ std::vector<SwingRecord> run_session(const Assets& assets, const SessionOptions&
     }
     return out;
   }
-  // An at-bat: the pitcher mixes his types by league usage and aims in or around the zone.
-  int balls = 0, strikes = 0;
-  double total_usage = 0.0;
-  for (const PitchType& t : types) total_usage += t.usage;
-  while (balls < 4 && strikes < 3) {
+  // An at-bat: the league's pitcher against the bot's skill, pitch by pitch (ball_game.hpp).
+  Team pitching(assets, "pitching", bot.skill(), seed);
+  Hitter hitter(bot.skill(), o.left_handed, seed ^ 0xB47B47B47ULL);
+  const PlateAppearance pa = plate_appearance(assets, hitter, pitching);
+  for (const PitchRecord& p : pa.pitches) {
     SwingRecord rec;
-    double u = pitcher.uniform() * total_usage;
-    rec.call.type = types.back();
-    for (const PitchType& t : types) {
-      if (u < t.usage) {
-        rec.call.type = t;
-        break;
-      }
-      u -= t.usage;
-    }
-    // About half the pitches in the zone (Statcast's zone rate is ~48 %).
-    const bool zone = pitcher.uniform() < 0.5;
-    rec.call.target_height = zone ? 0.5 * (kZoneLow + kZoneHigh) + pitcher.normal(0.12)
-                                  : (pitcher.uniform() < 0.5 ? kZoneLow - 0.12 : kZoneHigh + 0.12) + pitcher.normal(0.08);
-    rec.call.target_side = zone ? pitcher.normal(0.12) : (pitcher.uniform() < 0.5 ? -1.0 : 1.0) * (kPlateHalf + 0.12);
-    rec.pitch = throw_pitch(assets, rec.call);
-    rec.swung = bot.swings_at(rec.pitch, strikes);
-    if (!rec.swung) {
-      const bool strike = in_zone(rec.pitch.plate, 0.0369);
-      rec.call_text = strike ? "called_strike" : "ball";
-      (strike ? strikes : balls) += 1;
-      out.push_back(std::move(rec));
-      continue;
-    }
-    const SwingInput s = bot.plan(rec.pitch, false, o.left_handed);
-    rec.timing_ms = s.timing_ms;
-    rec.undercut = s.undercut;
-    rec.result = swing_at(assets, rec.pitch, s, bot.skill().bat_speed);
-    const BattedOutcome r = rec.result.outcome;
-    if (r == BattedOutcome::Strike) {
-      rec.call_text = "swinging_strike";
-      ++strikes;
-    } else if (r == BattedOutcome::Foul) {
-      rec.call_text = "foul";
-      if (strikes < 2) ++strikes;
-    } else {
-      rec.call_text = to_string(r);
-      out.push_back(std::move(rec));
-      break;
-    }
+    rec.call = p.planned.call;
+    rec.pitch = p.flight;
+    rec.swung = p.swung;
+    rec.timing_ms = p.swing.timing_ms;
+    rec.undercut = p.swing.undercut;
+    rec.result = p.result;
+    rec.call_text = p.call == PitchResult::InPlay ? to_string(p.result.outcome) : to_string(p.call);
     out.push_back(std::move(rec));
   }
   return out;

@@ -1,0 +1,371 @@
+#include "game/modes/baseball/ball_game.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "game/content/resolve.hpp"
+#include "physics/error.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+namespace {
+
+constexpr double kBall = 0.0369;       // m, the baseball's radius (assets' "mlb")
+constexpr double kLead = 3.0;          // m a runner's lead and secondary lead (~10 ft; ESTIMATE)
+constexpr double kRead = 0.3;          // s a runner takes to read a ball on the ground (ESTIMATE)
+constexpr double kTurn = 0.3;          // s lost rounding a base (ESTIMATE, as fielding.cpp)
+constexpr double kSafeMargin = 0.5;    // s to spare for a runner sent for an extra base (ESTIMATE)
+constexpr double kPivotExtra = 0.1;    // s the pivot man's turn takes beyond a clean transfer (ESTIMATE)
+constexpr int kMaxInnings = 60;        // a game tied this long is stopped (never seen in MLB)
+
+struct Env {
+  const AeroModel* aero;
+  Environment environment;
+};
+
+Env air(const Assets& assets) {
+  ShotSpec spec;
+  spec.sport = "baseball";
+  LaunchStrike ls;
+  spec.strike = ls;
+  const ResolvedShot r = resolve(spec, assets);
+  return {r.aero, r.spec.environment};
+}
+
+double run_time(double speed, double distance) { return distance / std::max(speed, 1.0); }
+
+}  // namespace
+
+bool bats_left(int order) { return order == 1 || order == 3 || order == 5 || order == 8; }
+
+Team::Team(const Assets& assets, std::string team_name, const BatterSkill& skill, std::uint64_t seed)
+    : name(std::move(team_name)),
+      pitcher(league_average_pitcher(load_pitch_types(assets)), seed ^ 0x9E3779B97F4A7C15ULL),
+      report(scout(assets, pitcher.profile())),
+      fielding_rng(seed ^ 0xF1E1D1C1B1A19181ULL) {
+  Rng r(seed);
+  for (int i = 0; i < 9; ++i) lineup.emplace_back(skill, bats_left(i), r.next());
+  defense = draw_defense(r);
+}
+
+PlateAppearance plate_appearance(const Assets& assets, Hitter& batter, Team& field) {
+  PlateAppearance pa;
+  Count count;
+  for (;;) {
+    PitchRecord rec;
+    rec.count = count;
+    rec.planned = field.pitcher.next(count, batter.left_handed());
+    rec.flight = throw_pitch(assets, rec.planned.call);
+    rec.read = batter.read(rec.flight, rec.planned.call.type.type, field.report, count);
+    rec.swung = batter.swings(rec.read, count);
+    if (!rec.swung) {
+      if (hits_batter(rec.flight.plate, batter.left_handed(), kBall)) rec.call = PitchResult::HitByPitch;
+      else rec.call = StrikeZone::contains(rec.flight.plate, kBall) ? PitchResult::CalledStrike : PitchResult::Ball;
+    } else {
+      rec.swing = batter.swing(rec.read, count);
+      FieldingSetup setup{&field.defense, batter.skill().sprint_speed, &field.fielding_rng};
+      rec.result = swing_at(assets, rec.flight, rec.swing, batter.skill().bat_speed, "maple", setup);
+      const BattedOutcome o = rec.result.outcome;
+      if (!rec.result.contact) rec.call = PitchResult::SwingingStrike;
+      else if (o == BattedOutcome::Foul) rec.call = rec.result.foul_tip ? PitchResult::FoulTip : PitchResult::Foul;
+      else rec.call = PitchResult::InPlay;
+    }
+    const PlateEnd end = apply_pitch(count, rec.call);
+    pa.pitches.push_back(std::move(rec));
+    const PitchRecord& last = pa.pitches.back();
+    switch (end) {
+      case PlateEnd::None: continue;
+      case PlateEnd::Strikeout:
+        pa.result = "strikeout";
+        pa.description = last.call == PitchResult::CalledStrike ? "Strikeout looking"
+                         : last.call == PitchResult::FoulTip      ? "Strikeout on a foul tip"
+                                                                  : "Strikeout swinging";
+        return pa;
+      case PlateEnd::Walk:
+        pa.result = "walk";
+        pa.description = "Walk";
+        return pa;
+      case PlateEnd::HitByPitch:
+        pa.result = "hit_by_pitch";
+        pa.description = "Hit by pitch";
+        return pa;
+      case PlateEnd::InPlay:
+        pa.result = to_string(last.result.outcome);
+        pa.description = last.result.play.description;
+        return pa;
+    }
+  }
+}
+
+namespace {
+
+// One half-inning's base running after a ball in play: who scores, who is out, who stands
+// where. Each runner takes the bases the hit gives him, and one more when he would reach
+// it with time to spare before the fielder's throw.
+struct HalfInning {
+  const Assets& assets;
+  Env env;
+  Bases bases{-1, -1, -1};
+  int outs = 0;
+
+  // Runner from `from` (1..3) sent to `to`: starting `start` s after contact.
+  bool beats_throw(const FieldingPlay& p, const FielderAbility& f, double sprint, int from, int to, double start) const {
+    const double dist = (to - from) * kBaseLine - (start <= kRead ? kLead : 0.0);
+    const double runner = start + run_time(sprint, dist) + (to - from - 1) * kTurn;
+    const double defence = p.fielded_time + throw_time(f, *env.aero, env.environment, p.fielded_at, to);
+    return runner + kSafeMargin < defence;
+  }
+
+  // Runs scored (each runner who reached home pushed to `scored`).
+  int advance(const PlateAppearance& pa, const Team& batting, const Team& fielding, std::vector<int>& scored,
+              int& outs_made) {
+    const PitchRecord& last = pa.pitches.back();
+    const FieldingPlay& p = last.result.play;
+    const int batter = pa.batter;
+    const auto sprint = [&](int who) { return batting.lineup[static_cast<std::size_t>(who)].skill().sprint_speed; };
+    const FielderAbility& f = fielding.defense.ability[static_cast<std::size_t>(std::max(p.fielder, 0))];
+    Bases next{-1, -1, -1};
+    auto place = [&](int who, int base) {
+      if (base >= 4) scored.push_back(who);
+      else next[static_cast<std::size_t>(base - 1)] = who;
+    };
+    const BattedOutcome o = last.result.outcome;
+    if (o == BattedOutcome::HomeRun || o == BattedOutcome::Triple || o == BattedOutcome::Double ||
+        o == BattedOutcome::Single || o == BattedOutcome::Error) {
+      const int hit = o == BattedOutcome::HomeRun ? 4 : o == BattedOutcome::Triple ? 3 : o == BattedOutcome::Double ? 2 : 1;
+      // On a ball in the air runners hold until it drops, unless two are out.
+      const double start = (p.type == BattedBallType::GroundBall || outs == 2) ? kRead : std::max(kRead, p.fielded_time - 1.0);
+      for (int b = 3; b >= 1; --b) {
+        const int who = bases[static_cast<std::size_t>(b - 1)];
+        if (who < 0) continue;
+        int to = std::min(4, b + hit);
+        if (to < 4 && (to + 1 > 3 || next[static_cast<std::size_t>(to)] < 0) && o != BattedOutcome::Error &&
+            beats_throw(p, f, sprint(who), b, to + 1, start))
+          ++to;
+        place(who, to);
+      }
+      place(batter, hit);
+      bases = next;
+      return static_cast<int>(scored.size());
+    }
+    // An out in play.
+    if (p.caught) {
+      ++outs;
+      outs_made = 1;
+      // A runner on third tags up and scores on a fly when the throw home cannot beat him.
+      if (outs < 3 && bases[2] >= 0 && !p.foul && p.type != BattedBallType::PopUp &&
+          beats_throw(p, f, sprint(bases[2]), 3, 4, p.fielded_time)) {
+        scored.push_back(bases[2]);
+        bases[2] = -1;
+      }
+      return static_cast<int>(scored.size());
+    }
+    // A ground ball out: with a runner forced at second and fewer than two out, the lead
+    // runner first, then the relay to first for two when it beats the batter.
+    if (outs < 2 && bases[0] >= 0) {
+      const double runner = kRead + run_time(sprint(bases[0]), kBaseLine - kLead);
+      const double at_second = p.fielded_time + throw_time(f, *env.aero, env.environment, p.fielded_at, 2);
+      if (at_second < runner) {
+        const FielderAbility& pivot = fielding.defense.ability[p.fielder == 4 || p.fielder == 5 ? 3 : 4];
+        const double at_first = at_second + kPivotExtra + throw_time(pivot, *env.aero, env.environment, base_position(2), 1);
+        const bool double_play = at_first < p.batter_to_first;
+        outs += double_play ? 2 : 1;
+        outs_made = double_play ? 2 : 1;
+        Bases nb{double_play ? -1 : batter, -1, -1};
+        if (outs < 3) {
+          if (bases[2] >= 0) scored.push_back(bases[2]);
+          nb[2] = bases[1];
+        }
+        bases = nb;
+        return static_cast<int>(scored.size());
+      }
+    }
+    ++outs;
+    outs_made = 1;
+    if (outs >= 3) return 0;
+    // The batter out at first: the others move up a base.
+    Bases nb{-1, -1, -1};
+    if (bases[2] >= 0) scored.push_back(bases[2]);
+    if (bases[1] >= 0) nb[2] = bases[1];
+    if (bases[0] >= 0) nb[1] = bases[0];
+    bases = nb;
+    return static_cast<int>(scored.size());
+  }
+};
+
+void credit_batter(BattingLine& l, const PlateAppearance& pa) {
+  ++l.pa;
+  const std::string& r = pa.result;
+  if (r == "walk") ++l.bb;
+  else if (r == "hit_by_pitch") ++l.hbp;
+  else if (pa.sacrifice_fly) ++l.sf;
+  else ++l.ab;
+  if (r == "strikeout") ++l.so;
+  if (r == "single" || r == "double" || r == "triple" || r == "home_run") ++l.h;
+  if (r == "double") ++l.doubles;
+  if (r == "triple") ++l.triples;
+  if (r == "home_run") ++l.hr;
+  l.rbi += pa.rbi;
+}
+
+void charge_pitcher(PitchingLine& p, const PlateAppearance& pa) {
+  ++p.batters;
+  for (const PitchRecord& x : pa.pitches) {
+    ++p.pitches;
+    if (x.call != PitchResult::Ball && x.call != PitchResult::HitByPitch) ++p.strikes;
+  }
+  const std::string& r = pa.result;
+  if (r == "walk") ++p.bb;
+  if (r == "hit_by_pitch") ++p.hbp;
+  if (r == "strikeout") ++p.so;
+  if (r == "single" || r == "double" || r == "triple" || r == "home_run") ++p.h;
+  if (r == "home_run") ++p.hr;
+  p.outs += pa.outs_made;
+  p.r += pa.runs;
+}
+
+}  // namespace
+
+GameRecord play_game(const Assets& assets, const GameOptions& o) {
+  check_range("--innings", o.innings, GameOptions::kInnings, "");
+  GameRecord g;
+  g.options = o;
+  Team teams[2] = {Team(assets, "away", batter_skill(o.away), o.seed * 2 + 1),
+                   Team(assets, "home", batter_skill(o.home), o.seed * 2 + 2)};
+  TeamBox box[2];
+  for (int t = 0; t < 2; ++t) {
+    box[t].name = teams[t].name;
+    box[t].batting.assign(9, BattingLine{});
+  }
+  int next_up[2] = {0, 0};
+  GameSituation s;
+  s.scheduled = o.innings;
+  const Env env = air(assets);
+  for (s.inning = 1; s.inning <= kMaxInnings; ++s.inning) {
+    for (int half = 0; half < 2; ++half) {
+      s.bottom = half == 1;
+      s.outs = 0;
+      if (s.bottom && s.inning >= s.scheduled && s.home_runs > s.away_runs) break;  // the home team need not bat
+      Team& bat = teams[half];
+      Team& field = teams[1 - half];
+      HalfInning h{assets, env, {-1, -1, -1}, 0};
+      // Extra innings start with a runner on second: the batter before this half's leadoff
+      // man (MLB Rule 7.01(b), since 2023).
+      if (s.inning > s.scheduled) h.bases[1] = (next_up[half] + 8) % 9;
+      int runs = 0;
+      while (h.outs < 3) {
+        const int batter = next_up[half];
+        next_up[half] = (batter + 1) % 9;
+        PlateAppearance pa = plate_appearance(assets, bat.lineup[static_cast<std::size_t>(batter)], field);
+        pa.inning = s.inning;
+        pa.bottom = s.bottom;
+        pa.batter = batter;
+        pa.outs_before = h.outs;
+        pa.bases_before = h.bases;
+        std::vector<int> scored;
+        if (pa.result == "walk" || pa.result == "hit_by_pitch") {
+          if (force_advance(h.bases, batter) > 0) scored.push_back(pa.bases_before[2]);
+          pa.rbi = static_cast<int>(scored.size());
+        } else if (pa.result == "strikeout") {
+          ++h.outs;
+          pa.outs_made = 1;
+        } else {
+          int outs_made = 0;
+          h.advance(pa, bat, field, scored, outs_made);
+          pa.outs_made = outs_made;
+          const bool error = pa.result == "error";
+          const bool double_play = outs_made == 2;
+          pa.sacrifice_fly = pa.result == "out" && pa.pitches.back().result.play.caught && !scored.empty();
+          pa.rbi = error || double_play ? 0 : static_cast<int>(scored.size());
+          if (error) ++box[1 - half].errors;
+        }
+        pa.runs = static_cast<int>(scored.size());
+        for (int who : scored) ++box[half].batting[static_cast<std::size_t>(who)].r;
+        runs += pa.runs;
+        (s.bottom ? s.home_runs : s.away_runs) += pa.runs;
+        credit_batter(box[half].batting[static_cast<std::size_t>(batter)], pa);
+        charge_pitcher(box[1 - half].pitching, pa);
+        g.plate_appearances.push_back(std::move(pa));
+        s.outs = h.outs;
+        if (s.bottom && game_over(s) && h.outs < 3) {
+          g.walk_off = true;
+          break;
+        }
+      }
+      if (h.outs >= 3)
+        for (int b : h.bases)
+          if (b >= 0) ++box[half].left_on_base;
+      box[half].runs_by_inning.push_back(runs);
+      g.innings_played = s.inning;
+      s.outs = h.outs;
+      if (game_over(s)) break;
+    }
+    s.outs = 3;
+    if (game_over(s)) break;
+  }
+  for (int t = 0; t < 2; ++t) {
+    box[t].runs = t == 0 ? s.away_runs : s.home_runs;
+    for (const BattingLine& l : box[t].batting) box[t].hits += l.h;
+  }
+  g.away = box[0];
+  g.home = box[1];
+  return g;
+}
+
+BattingRates batting_rates(const std::vector<PlateAppearance>& pas, int which) {
+  BattingRates r;
+  int k = 0, bb = 0, hbp = 0, hr = 0, h = 0, ab = 0, tb = 0, sf = 0, zone = 0, chase_swings = 0, outside = 0;
+  int squared = 0, blasts = 0;
+  double bat_speed = 0.0, length = 0.0;
+  for (const PlateAppearance& pa : pas) {
+    if (which != 2 && pa.bottom != (which == 1)) continue;
+    ++r.pa;
+    const std::string& x = pa.result;
+    if (x == "strikeout") ++k;
+    if (x == "walk") ++bb;
+    if (x == "hit_by_pitch") ++hbp;
+    if (x == "home_run") ++hr;
+    const bool hit = x == "single" || x == "double" || x == "triple" || x == "home_run";
+    h += hit;
+    tb += x == "single" ? 1 : x == "double" ? 2 : x == "triple" ? 3 : x == "home_run" ? 4 : 0;
+    if (pa.sacrifice_fly) ++sf;
+    else if (x != "walk" && x != "hit_by_pitch") ++ab;
+    for (const PitchRecord& p : pa.pitches) {
+      ++r.pitches;
+      const bool in = StrikeZone::contains(p.flight.plate, kBall);
+      zone += in;
+      outside += !in;
+      if (!p.swung) continue;
+      ++r.swings;
+      chase_swings += !in;
+      r.whiffs += p.call == PitchResult::SwingingStrike;
+      r.fouls += p.call == PitchResult::Foul || p.call == PitchResult::FoulTip;
+      r.balls_in_play += p.call == PitchResult::InPlay;
+      squared += p.result.tracking.is_squared_up;
+      blasts += p.result.tracking.blast;
+      bat_speed += mps_to_mph(p.result.tracking.bat_speed_mps);
+      length += m_to_ft(p.result.tracking.swing_length_m);
+    }
+  }
+  const auto ratio = [](double a, double b) { return b > 0.0 ? a / b : 0.0; };
+  r.k_rate = ratio(k, r.pa);
+  r.bb_rate = ratio(bb, r.pa);
+  r.hbp_rate = ratio(hbp, r.pa);
+  r.hr_rate = ratio(hr, r.pa);
+  r.avg = ratio(h, ab);
+  r.obp = ratio(h + bb + hbp, ab + bb + hbp + sf);
+  r.slg = ratio(tb, ab);
+  r.babip = ratio(h - hr, ab - k - hr + sf);
+  r.whiff_per_swing = ratio(r.whiffs, r.swings);
+  r.foul_per_pitch = ratio(r.fouls, r.pitches);
+  r.swing_rate = ratio(r.swings, r.pitches);
+  r.zone_rate = ratio(zone, r.pitches);
+  r.chase_rate = ratio(chase_swings, outside);
+  r.squared_up_per_swing = ratio(squared, r.swings);
+  r.blast_per_swing = ratio(blasts, r.swings);
+  r.mean_bat_speed_mph = ratio(bat_speed, r.swings);
+  r.mean_swing_length_ft = ratio(length, r.swings);
+  return r;
+}
+
+}  // namespace sweetspot

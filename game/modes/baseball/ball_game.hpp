@@ -1,0 +1,88 @@
+// A game of baseball between two bot teams (DESIGN §9): nine hitters of a skill against a
+// pitcher, pitch by pitch with counts, balls in play fielded by nine fielders, runners who
+// advance by the hit and their speed (each extra base taken only when the throw cannot beat
+// him), outs, runs, innings to the end the rules give, and the box score. Headless and
+// seeded: the same options, the same game.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "game/modes/baseball/hitter.hpp"
+#include "game/rules/baseball_game.hpp"
+
+namespace sweetspot {
+
+struct PitchRecord {
+  PlannedPitch planned;
+  PitchFlight flight;
+  Count count;            ///< before the pitch
+  PitchRead read;
+  bool swung = false;
+  SwingInput swing;
+  SwingResult result;     ///< with a swing
+  PitchResult call = PitchResult::Ball;
+};
+
+struct PlateAppearance {
+  int inning = 1;
+  bool bottom = false;
+  int batter = 0;          ///< batting order index
+  int outs_before = 0;
+  Bases bases_before{-1, -1, -1};
+  std::vector<PitchRecord> pitches;
+  std::string result;      ///< strikeout, walk, hit_by_pitch, out, single, double, triple, home_run, error
+  std::string description; ///< in a scorer's words: "Strikeout swinging", "Fly out to CF", ...
+  int runs = 0, rbi = 0, outs_made = 0;
+  bool sacrifice_fly = false;
+};
+
+struct GameOptions {
+  int innings = 9;
+  static constexpr Range kInnings{1.0, 200.0};
+  std::string away = "pro", home = "pro";  ///< each lineup's batter skill
+  std::uint64_t seed = 1;
+};
+
+/// The batting order's sides: left-handed hitters 2nd, 4th, 6th and 9th (4 of 9: MLB's
+/// left-handed batters take ~43 % of plate appearances, 2023; ESTIMATE of a lineup).
+bool bats_left(int order);
+
+class Team {
+ public:
+  Team(const Assets& assets, std::string name, const BatterSkill& skill, std::uint64_t seed);
+  std::string name;
+  std::vector<Hitter> lineup;
+  Pitcher pitcher;
+  ScoutingReport report;  ///< of this team's pitcher, as the other team knows him
+  Defense defense;
+  Rng fielding_rng;
+};
+
+/// One plate appearance from the count 0-0: pitches until it ends (the runners are the
+/// game's business). `result` and `description` are set for the batter's part.
+PlateAppearance plate_appearance(const Assets& assets, Hitter& batter, Team& fielding);
+
+struct GameRecord {
+  GameOptions options;
+  std::vector<PlateAppearance> plate_appearances;
+  TeamBox away, home;
+  int innings_played = 0;
+  bool walk_off = false;
+};
+
+/// Plays the game; InputError for innings out of range or an unknown skill.
+GameRecord play_game(const Assets& assets, const GameOptions& options);
+
+/// League rates over plate appearances (the note's table; the tests' bands).
+struct BattingRates {
+  int pa = 0, pitches = 0, swings = 0, whiffs = 0, fouls = 0, balls_in_play = 0;
+  double k_rate = 0.0, bb_rate = 0.0, hbp_rate = 0.0, hr_rate = 0.0, avg = 0.0, obp = 0.0, slg = 0.0, babip = 0.0;
+  double whiff_per_swing = 0.0, foul_per_pitch = 0.0, swing_rate = 0.0, zone_rate = 0.0, chase_rate = 0.0;
+  double squared_up_per_swing = 0.0, blast_per_swing = 0.0, mean_bat_speed_mph = 0.0, mean_swing_length_ft = 0.0;
+};
+/// Over the plate appearances of the team batting in the bottom (`home`) or top halves.
+BattingRates batting_rates(const std::vector<PlateAppearance>& pas, int which /* 0 away, 1 home, 2 both */);
+
+}  // namespace sweetspot

@@ -1,0 +1,329 @@
+#include "game/modes/baseball/fielding.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "game/modes/baseball/throwing.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+namespace {
+
+constexpr double kFoul = 0.25 * kPi;  // the foul lines at ±45° from the mound line
+
+struct Spot {
+  double depth_ft, angle_deg;  // from home plate; angle + toward first base
+  double sprint_ftps;          // Statcast 2024 mean sprint speed by position
+  double arm_mph;              // Statcast arm strength by position
+};
+// Depths: RF 294 ft (Petriello, MLB.com 2016), CF ~320 (FanGraphs 2016: league CF ~315-325),
+// 3B 115 ft (ESPN 2017); 1B 110, 2B 150, SS 150, LF 295 are the commonly quoted depths
+// (ESTIMATES); the pitcher at the rubber, the catcher behind the plate. Angles: ESTIMATES of
+// the standard alignment.
+constexpr std::array<Spot, 9> kSpots{{
+    {60.5, 0.0, 26.0, 85.0},
+    {-4.0, 0.0, 25.9, 81.7},
+    {110.0, 38.0, 26.3, 75.0},
+    {150.0, 14.0, 27.5, 78.2},
+    {150.0, -14.0, 27.9, 83.3},
+    {115.0, -38.0, 27.2, 83.5},
+    {295.0, -28.0, 27.9, 86.2},
+    {320.0, 0.0, 28.6, 87.8},
+    {294.0, 28.0, 27.7, 89.4},
+}};
+constexpr double kReaction = 0.3;     // s after contact before an outfielder moves (ESTIMATE)
+constexpr double kAccel = 4.0;        // m/s² to top speed: an outfielder covers ~34 ft in the
+                                      // 2.55 s after contact of Statcast's 3 s "jump" (2024 mean 34.1 ft)
+constexpr double kReach = 1.5;        // m: glove, arm and a dive
+constexpr double kInfieldReaction = 0.2, kInfieldAccel = 5.0, kInfieldReach = 1.8;  // see league_defense
+constexpr double kCatchable = 2.4;    // m: a ball above this is over the fielder's head
+constexpr double kLeap = 3.2;         // m: at the wall he can leap (standing reach + ~0.8 m jump; ESTIMATE)
+constexpr double kTransfer = 0.6;     // s to field cleanly and release a throw (ESTIMATE)
+constexpr double kHomeToFirst = 4.47; // s, Statcast 2024 mean home-to-first
+constexpr double kMeanSprint = 27.0 * 0.3048;  // m/s, Statcast's league-average sprint speed
+constexpr double kTurn = 0.3;         // s a runner loses rounding a base (ESTIMATE)
+constexpr double kSafeMargin = 0.2;   // s: an extra base is taken only with this to spare (ESTIMATE)
+constexpr double kOutfieldGather = 0.4;  // s an outfielder loses slowing to pick up a ball on the
+                                         // ground and setting his feet (a crow hop) (ESTIMATE)
+constexpr double kCatchSpread = 0.4; // s, catch_probability's spread
+constexpr double kCatchOffset = 0.6; // s: a catch that takes all of his reach and speed is a 5-star play (24 %)
+// Misplays per chance: MLB fielding percentage ~.985 (2023), outfielders ~.990 and
+// infielders ~.975: a ball caught in the air is dropped 0.5 % of the time, a grounder
+// fielded for an out is booted or thrown away 2 % of the time (two chances: the stop and
+// the throw).
+constexpr double kDropRate = 0.005, kBootRate = 0.02;
+
+Vec3 at(double depth_ft, double angle_deg) {
+  const double d = depth_ft * 0.3048, a = deg_to_rad(angle_deg);
+  return Vec3(d * std::cos(a), 0.0, d * std::sin(a));
+}
+double horizontal(const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); }
+double spray(const Vec3& p) { return std::atan2(p.z(), p.x()); }
+bool fair_direction(const Vec3& p) { return p.x() > 0.0 && std::abs(spray(p)) <= kFoul; }
+
+// Fair or foul (MLB Rule definitions): beyond the bases, where it first lands; before them,
+// where it passes the bases' distance or comes to rest.
+bool is_fair(const ShotTrajectory& t) {
+  const Vec3& land = t.summary.landing_position;
+  if (std::hypot(land.x(), land.z()) > kBaseLine) return fair_direction(land);
+  for (const TrajectorySample& s : t.samples)
+    if (std::hypot(s.position.x(), s.position.z()) > kBaseLine) return fair_direction(s.position);
+  return fair_direction(t.summary.rest_position);
+}
+
+// A foul ball in the field of play (not yet in the stands): within 60 ft of a foul line
+// beyond the bases, or in front of the backstop.
+bool in_foul_ground(const Vec3& p) {
+  if (std::hypot(p.x(), p.z()) > kFoulGround && p.x() < 0.0 && std::abs(p.z()) < -p.x()) return false;  // past the backstop
+  const double u = (p.x() + p.z()) / std::sqrt(2.0), w = (p.x() - p.z()) / std::sqrt(2.0);  // along the lines
+  // Distance outside the nearer foul line (negative inside fair ground).
+  const double out = std::max(-w, -u);
+  return out <= kFoulGround && std::hypot(p.x(), p.z()) < 140.0;
+}
+
+const char* field_part(const Vec3& p) {
+  const double a = rad_to_deg(spray(p));
+  return a < -15.0 ? "LF" : a > 15.0 ? "RF" : "CF";
+}
+
+std::string describe(const FieldingPlay& f, const Vec3& toward) {
+  const std::string who = f.fielder >= 0 ? kPositionNames[static_cast<std::size_t>(f.fielder)] : "";
+  const bool outfield = f.fielder >= 6;
+  switch (f.outcome) {
+    case BattedOutcome::HomeRun: return std::string("Home run to ") + field_part(toward);
+    case BattedOutcome::Foul: return "Foul";
+    case BattedOutcome::Error: return "Reached on an error by " + who;
+    case BattedOutcome::Single: return std::string("Single to ") + (outfield ? who : who + " (infield hit)");
+    case BattedOutcome::Double: return "Double to " + std::string(field_part(toward));
+    case BattedOutcome::Triple: return "Triple to " + std::string(field_part(toward));
+    case BattedOutcome::Out:
+      if (f.caught) {
+        if (f.foul) return "Foul out to " + who;
+        switch (f.type) {
+          case BattedBallType::PopUp: return "Pop out to " + who;
+          case BattedBallType::LineDrive: return "Line out to " + who;
+          case BattedBallType::GroundBall: return "Line out to " + who;
+          case BattedBallType::FlyBall: return "Fly out to " + who;
+        }
+      }
+      return who == "1B" ? "Ground out to 1B unassisted" : "Ground out, " + who + " to 1B";
+    case BattedOutcome::Strike: return "Strike";
+  }
+  return "";
+}
+
+}  // namespace
+
+const char* to_string(BattedOutcome o) {
+  switch (o) {
+    case BattedOutcome::Strike: return "strike";
+    case BattedOutcome::Foul: return "foul";
+    case BattedOutcome::Out: return "out";
+    case BattedOutcome::Single: return "single";
+    case BattedOutcome::Double: return "double";
+    case BattedOutcome::Triple: return "triple";
+    case BattedOutcome::HomeRun: return "home_run";
+    case BattedOutcome::Error: return "error";
+  }
+  return "?";
+}
+
+bool is_fair_ball(const ShotResult& shot) {
+  if (shot.end == ShotEnd::HomeRun) return true;
+  return shot.end != ShotEnd::OutOfBounds && is_fair(shot.trajectory);
+}
+
+BattedBallType batted_ball_type(double la) {
+  const double d = rad_to_deg(la);
+  return d < 10.0 ? BattedBallType::GroundBall : d < 25.0 ? BattedBallType::LineDrive
+                                               : d <= 50.0 ? BattedBallType::FlyBall : BattedBallType::PopUp;
+}
+
+const char* to_string(BattedBallType t) {
+  switch (t) {
+    case BattedBallType::GroundBall: return "ground_ball";
+    case BattedBallType::LineDrive: return "line_drive";
+    case BattedBallType::FlyBall: return "fly_ball";
+    case BattedBallType::PopUp: return "popup";
+  }
+  return "?";
+}
+
+Vec3 base_position(int base) {
+  switch (base & 3) {
+    case 1: return at(90.0, 45.0);
+    case 2: return at(90.0 * std::sqrt(2.0), 0.0);
+    case 3: return at(90.0, -45.0);
+    default: return Vec3::Zero();
+  }
+}
+
+Defense league_defense() {
+  Defense d;
+  for (std::size_t i = 0; i < 9; ++i)
+    d.ability[i] = i >= 6 ? FielderAbility{kReaction, kAccel, kSpots[i].sprint_ftps * 0.3048, kReach, mph_to_mps(kSpots[i].arm_mph)}
+                          : FielderAbility{kInfieldReaction, kInfieldAccel, kSpots[i].sprint_ftps * 0.3048, kInfieldReach,
+                                           mph_to_mps(kSpots[i].arm_mph)};
+  return d;
+}
+
+Defense draw_defense(Rng& rng) {
+  Defense d = league_defense();
+  for (FielderAbility& f : d.ability) {
+    f.reaction = std::clamp(f.reaction + rng.normal(0.05), 0.05, 0.5);
+    f.sprint = std::clamp(f.sprint + rng.normal(1.2 * 0.3048), 6.5, 9.5);
+    f.arm = std::clamp(f.arm + rng.normal(mph_to_mps(2.5)), 28.0, 46.0);
+  }
+  return d;
+}
+
+std::array<Vec3, 9> fielder_spots(bool batter_left) {
+  const double pull = batter_left ? 1.0 : -1.0;  // a right-hander pulls toward third (−)
+  std::array<Vec3, 9> out;
+  for (std::size_t i = 0; i < 9; ++i) {
+    const double shade = i >= 6 ? 4.0 : (i == 3 || i == 4) ? 3.0 : 0.0;
+    out[i] = at(kSpots[i].depth_ft, kSpots[i].angle_deg + pull * shade);
+  }
+  return out;
+}
+
+double fielder_run_time(const FielderAbility& f, double distance) {
+  const double d = std::max(0.0, distance - f.reach);
+  const double d_acc = f.sprint * f.sprint / (2.0 * f.accel);
+  if (d <= d_acc) return f.reaction + std::sqrt(2.0 * d / f.accel);
+  return f.reaction + f.sprint / f.accel + (d - d_acc) / f.sprint;
+}
+
+double catch_probability(double spare) {
+  return 0.5 * std::erfc(-(spare - kCatchOffset) / (kCatchSpread * std::sqrt(2.0)));
+}
+
+double throw_time(const FielderAbility& f, const AeroModel& aero, const Environment& env, const Vec3& from, int base) {
+  const Thrower thrower(aero, env, f.arm, kTransfer);
+  return kTransfer + thrower.to(std::min(horizontal(from, base_position(base)), 999.0)).time;
+}
+
+FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Environment& env, const Defense& defense,
+                        bool batter_left, double batter_sprint, Rng* rng) {
+  FieldingPlay play;
+  const ShotTrajectory& t = shot.trajectory;
+  play.type = batted_ball_type(shot.launch.vertical_angle);
+  play.batter_to_first = kHomeToFirst * kMeanSprint / std::max(batter_sprint, 1.0);
+  play.start = fielder_spots(batter_left);
+  play.goal = play.start;
+  const Vec3& land = t.summary.landing_position;
+  const double hang = t.summary.hang_time_s;
+  const auto drawn = [&](double p) { return rng ? rng->uniform() < p : p >= 0.5; };
+  if (shot.end == ShotEnd::HomeRun) {
+    play.outcome = BattedOutcome::HomeRun;
+    play.description = describe(play, land);
+    return play;
+  }
+  play.foul = !is_fair_ball(shot);
+  // In the air: the fielder with the most time to spare anywhere along its path below his
+  // reach (at the wall, a leap) gets under it; a foul fly only while it is over foul ground.
+  const bool near_wall = land.y() > 0.3;  // its first touch was the fence
+  double best_spare = -std::numeric_limits<double>::infinity();
+  int best = -1;
+  Vec3 best_at = land;
+  double best_t = hang;
+  // A ball in the air is read and chased as an outfielder does: an infielder's ready hop
+  // gains him nothing going back on a fly.
+  std::array<FielderAbility, 9> in_air = defense.ability;
+  for (FielderAbility& f : in_air) {
+    f.reaction = std::max(f.reaction, kReaction);
+    f.accel = std::min(f.accel, kAccel);
+    f.reach = std::min(f.reach, kReach);
+  }
+  for (std::size_t i = 0; i < 9; ++i) {
+    for (const TrajectorySample& s : t.samples) {
+      if (s.t > hang) break;
+      const double reach = near_wall && horizontal(s.position, land) < 3.0 ? kLeap : kCatchable;
+      if (s.position.y() > reach || s.t < 0.05) continue;
+      if (play.foul && !in_foul_ground(s.position)) continue;
+      const double spare = s.t - fielder_run_time(in_air[i], horizontal(play.start[i], s.position));
+      if (spare > best_spare) {
+        best_spare = spare;
+        best = static_cast<int>(i);
+        best_at = s.position;
+        best_t = s.t;
+      }
+    }
+  }
+  if (best >= 0) {
+    play.catch_probability = catch_probability(best_spare);
+    play.goal[static_cast<std::size_t>(best)] = best_at;
+    if (drawn(play.catch_probability)) {
+      play.fielder = best;
+      play.caught = true;
+      play.fielded_at = best_at;
+      play.fielded_time = best_t;
+      play.outcome = BattedOutcome::Out;
+      if (rng && rng->uniform() < kDropRate) {
+        play.outcome = BattedOutcome::Error;
+        play.caught = false;
+      }
+      play.description = describe(play, land);
+      return play;
+    }
+  }
+  if (play.foul) {
+    play.outcome = BattedOutcome::Foul;
+    play.description = describe(play, land);
+    return play;
+  }
+  // On the ground: the fielder who first reaches the ball low enough to field it, or at rest.
+  double first_t = std::numeric_limits<double>::infinity();
+  Vec3 first_p = t.summary.rest_position;
+  std::size_t first_f = 0;
+  for (std::size_t i = 0; i < 9; ++i) {
+    const FielderAbility& f = defense.ability[i];
+    for (const TrajectorySample& s : t.samples) {
+      if (s.t < hang || s.position.y() > kCatchable) continue;
+      if (fielder_run_time(f, horizontal(play.start[i], s.position)) <= s.t) {
+        if (s.t < first_t) {
+          first_t = s.t;
+          first_p = s.position;
+          first_f = i;
+        }
+        break;
+      }
+    }
+    const double arrive = std::max(t.summary.total_time_s, fielder_run_time(f, horizontal(play.start[i], t.summary.rest_position)));
+    if (arrive < first_t) {
+      first_t = arrive;
+      first_p = t.summary.rest_position;
+      first_f = i;
+    }
+  }
+  if (first_f >= 6) first_t += kOutfieldGather;
+  play.fielder = static_cast<int>(first_f);
+  play.fielded_at = first_p;
+  play.fielded_time = first_t;
+  play.goal[first_f] = first_p;
+  const FielderAbility& f = defense.ability[first_f];
+  const auto defence = [&](int base) { return first_t + throw_time(f, aero, env, first_p, base); };
+  const double to_first = play.batter_to_first;
+  const double base_to_base = kBaseLine / std::max(batter_sprint, 1.0) + kTurn;
+  if (defence(1) < to_first) {
+    play.outcome = BattedOutcome::Out;
+    if (rng && rng->uniform() < kBootRate) play.outcome = BattedOutcome::Error;
+  } else if (defence(2) < to_first + base_to_base + kSafeMargin) {
+    play.outcome = BattedOutcome::Single;
+  } else if (defence(3) < to_first + 2.0 * base_to_base + kSafeMargin) {
+    play.outcome = BattedOutcome::Double;
+  } else {
+    play.outcome = BattedOutcome::Triple;
+  }
+  play.description = describe(play, first_p);
+  return play;
+}
+
+BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const Environment& env, std::string* who) {
+  const FieldingPlay p = field_play(shot, aero, env, league_defense(), false, kMeanSprint, nullptr);
+  if (who) *who = p.fielder >= 0 ? kPositionNames[static_cast<std::size_t>(p.fielder)] : "";
+  return p.outcome;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,81 @@
+// A pitcher who pitches (DESIGN §9): an arsenal (each type's mix, speed and spin with their
+// spread, release and extension from pitches.toml), a plan by count (the zone when behind,
+// chase pitches when ahead, more fastballs when he must throw a strike) and command (he
+// misses his spot by a seeded amount). Seeded: the same seed, the same pitches.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "game/modes/baseball/pitching.hpp"
+#include "game/rules/baseball_game.hpp"
+#include "game/util/rng.hpp"
+
+namespace sweetspot {
+
+/// The strike zone at the plate for the league's typical batter: 17 in wide (the plate),
+/// 1.6 to 3.5 ft high (MLB Rule 2.00 defines it by the batter's stance). Ball-centre limits
+/// for a ball of radius `r`: any part of the ball over any part of the zone.
+struct StrikeZone {
+  static constexpr double kHalfWidth = 0.2159;  ///< m, 17 in / 2
+  static constexpr double kLow = 1.6 * 0.3048, kHigh = 3.5 * 0.3048;  ///< m
+  static bool contains(const Vec3& plate, double r);
+  /// How far outside the zone the ball's centre passes (m, 0 inside): the larger of the
+  /// side and height misses.
+  static double outside_by(const Vec3& plate, double r);
+};
+
+struct PitcherProfile {
+  std::string name = "league average";
+  bool left_handed = false;
+  std::vector<PitchType> arsenal;  ///< usage = the share of his pitches
+  /// Pitch-to-pitch spread of one pitcher's type: 1.0 mph and 60 rpm (one standard deviation;
+  /// ESTIMATE from Statcast game logs, where a starter's four-seamers span ~±2 mph and
+  /// ~±120 rpm over a start).
+  double speed_sd = 0.447, spin_rpm_sd = 60.0;
+  /// How far from his spot the ball crosses the plate, one standard deviation per axis (m).
+  /// PITCHf/x studies of the catcher's target put the average MLB miss near a foot
+  /// (Sportvision COMMANDf/x, 2013); 0.20 m per axis is a mean miss of 0.25 m (10 in).
+  double command_sd = 0.16;
+};
+
+/// The league's pitcher: the six types at their league averages and usage.
+PitcherProfile league_average_pitcher(const std::vector<PitchType>& types);
+
+/// One pitch's plan: what and where he means to throw, then where his command puts it.
+struct PlannedPitch {
+  PitchCall call;          ///< the target after the miss (what is thrown)
+  double aim_height = 0.0, aim_side = 0.0;  ///< the spot he meant, m
+  bool in_zone_intent = false;
+};
+
+class Pitcher {
+ public:
+  Pitcher(PitcherProfile profile, std::uint64_t seed);
+  /// The next pitch to a batter (`batter_left`: a left-handed batter) at this count.
+  PlannedPitch next(const Count& count, bool batter_left);
+  const PitcherProfile& profile() const { return profile_; }
+  int pitches_thrown() const { return thrown_; }
+
+ private:
+  const PitchType& choose_type(const Count& count);
+
+  PitcherProfile profile_;
+  Rng rng_;
+  int thrown_ = 0;
+};
+
+/// The share of pitches he means for the zone at a count: 0.9-0.95 with three balls, 0.3 at
+/// 0-2 and 1-2, 0.58 even, 0.08 more for each ball the batter is ahead.
+/// ESTIMATE shaped by Statcast's zone rate by count (league Zone% ~49 %, lowest at 0-2,
+/// highest at 3-0).
+double zone_intent(const Count& count);
+
+/// Where a pitch crossing at `plate` hits a batter standing in the box on his side (`left`:
+/// a left-hander, on the first-base side): his body starts 0.55 m from the middle of the plate
+/// (the box's inner line is 6 in off the plate's edge, the front of a batter's body ~10 in
+/// beyond it; ESTIMATE) and spans 0.3–1.8 m up.
+bool hits_batter(const Vec3& plate, bool left, double ball_radius);
+
+}  // namespace sweetspot

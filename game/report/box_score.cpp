@@ -1,0 +1,163 @@
+#include "game/report/box_score.hpp"
+
+#include <cstdarg>
+#include <cstdio>
+
+#include "game/report/flight_json.hpp"
+#include "physics/units.hpp"
+
+namespace sweetspot {
+namespace {
+
+nlohmann::json batting_json(const BattingLine& l) {
+  return {{"pa", l.pa}, {"ab", l.ab}, {"r", l.r},     {"h", l.h},     {"2b", l.doubles}, {"3b", l.triples}, {"hr", l.hr},
+          {"rbi", l.rbi}, {"bb", l.bb}, {"so", l.so}, {"hbp", l.hbp}, {"sf", l.sf}};
+}
+
+nlohmann::json team_json(const TeamBox& t) {
+  nlohmann::json batting = nlohmann::json::array();
+  for (std::size_t i = 0; i < t.batting.size(); ++i) {
+    nlohmann::json b = batting_json(t.batting[i]);
+    b["order"] = i + 1;
+    b["bats"] = bats_left(static_cast<int>(i)) ? "L" : "R";
+    batting.push_back(b);
+  }
+  const PitchingLine& p = t.pitching;
+  return {{"team", t.name},
+          {"runs_by_inning", t.runs_by_inning},
+          {"runs", t.runs},
+          {"hits", t.hits},
+          {"errors", t.errors},
+          {"left_on_base", t.left_on_base},
+          {"batting", batting},
+          {"pitching",
+           {{"outs", p.outs}, {"innings_pitched", std::to_string(p.outs / 3) + "." + std::to_string(p.outs % 3)},
+            {"batters_faced", p.batters}, {"h", p.h}, {"r", p.r}, {"bb", p.bb}, {"so", p.so}, {"hr", p.hr},
+            {"hbp", p.hbp}, {"pitches", p.pitches}, {"strikes", p.strikes}}}};
+}
+
+nlohmann::json pitch_json(const PitchRecord& p) {
+  using nlohmann::json;
+  const Vec3& at = p.flight.plate;
+  json j = {{"count", std::to_string(p.count.balls) + "-" + std::to_string(p.count.strikes)},
+            {"type", p.planned.call.type.type},
+            {"speed_mps", p.planned.call.type.speed},
+            {"spin_rpm", radps_to_rpm(p.planned.call.type.spin)},
+            {"plate_position_m", {at.x(), at.y(), at.z()}},
+            {"call", to_string(p.call)},
+            {"swung", p.swung}};
+  if (!p.swung) return j;
+  j["timing_ms"] = p.swing.timing_ms;
+  j["contact"] = p.result.contact;
+  j["bat_tracking"] = bat_tracking_json(p.result.tracking);
+  if (p.result.contact) {
+    j["launch"] = launch_json(p.result.shot.launch, -1.0);
+    j["flight"] = flight_json(p.result.shot.trajectory.summary);
+    j["flight"]["end"] = to_string(p.result.shot.end);
+    j["outcome"] = to_string(p.result.outcome);
+    j["batted_ball_type"] = to_string(p.result.play.type);
+    j["barrel"] = p.result.barrel;
+    j["hard_hit"] = p.result.hard_hit;
+    if (!p.result.fielder.empty()) j["fielder"] = p.result.fielder;
+    if (p.result.play.catch_probability > 0.0) j["catch_probability"] = p.result.play.catch_probability;
+  }
+  return j;
+}
+
+void line(std::string& out, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+void line(std::string& out, const char* fmt, ...) {
+  char buf[256];
+  va_list a;
+  va_start(a, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, a);
+  va_end(a);
+  out += buf;
+}
+
+}  // namespace
+
+nlohmann::json bat_tracking_json(const BatTracking& t) {
+  return {{"bat_speed_mps", t.bat_speed_mps},       {"squared_up", t.squared_up},
+          {"is_squared_up", t.is_squared_up},       {"blast", t.blast},
+          {"swing_length_m", t.swing_length_m},     {"attack_angle_deg", t.attack_angle_deg},
+          {"attack_direction_deg", t.attack_direction_deg}};
+}
+
+nlohmann::json game_json(const GameRecord& g) {
+  using nlohmann::json;
+  json pas = json::array();
+  for (const PlateAppearance& pa : g.plate_appearances) {
+    json pitches = json::array();
+    for (const PitchRecord& p : pa.pitches) pitches.push_back(pitch_json(p));
+    json bases = json::array();
+    for (int b : pa.bases_before) bases.push_back(b >= 0 ? json(b + 1) : json(nullptr));
+    pas.push_back({{"inning", pa.inning},
+                   {"half", pa.bottom ? "bottom" : "top"},
+                   {"batter", pa.batter + 1},
+                   {"outs_before", pa.outs_before},
+                   {"runners_before", bases},
+                   {"pitches", pitches},
+                   {"result", pa.result},
+                   {"description", pa.description},
+                   {"runs", pa.runs},
+                   {"rbi", pa.rbi},
+                   {"outs_made", pa.outs_made}});
+  }
+  return {{"mode", "game"},
+          {"seed", g.options.seed},
+          {"innings", g.options.innings},
+          {"innings_played", g.innings_played},
+          {"walk_off", g.walk_off},
+          {"plate_appearances", pas},
+          {"box_score", {{"away", team_json(g.away)}, {"home", team_json(g.home)}}}};
+}
+
+std::string box_score_text(const GameRecord& g) {
+  std::string out;
+  const std::size_t n = std::max(g.away.runs_by_inning.size(), g.home.runs_by_inning.size());
+  line(out, "%-6s", "");
+  for (std::size_t i = 0; i < n; ++i) line(out, "%3zu", i + 1);
+  line(out, "    R  H  E\n");
+  for (const TeamBox* t : {&g.away, &g.home}) {
+    line(out, "%-6s", t->name.c_str());
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i < t->runs_by_inning.size()) line(out, "%3d", t->runs_by_inning[i]);
+      else line(out, "%3s", t == &g.home && g.home.runs > g.away.runs ? "x" : "-");
+    }
+    line(out, "   %2d %2d %2d\n", t->runs, t->hits, t->errors);
+  }
+  for (const TeamBox* t : {&g.away, &g.home}) {
+    line(out, "\n%-10s  AB  R  H 2B 3B HR RBI BB SO HBP SF\n", t->name.c_str());
+    BattingLine sum;
+    for (std::size_t i = 0; i < t->batting.size(); ++i) {
+      const BattingLine& l = t->batting[i];
+      sum += l;
+      line(out, "%zu. %-7s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d\n", i + 1, bats_left(static_cast<int>(i)) ? "(L)" : "(R)",
+           l.ab, l.r, l.h, l.doubles, l.triples, l.hr, l.rbi, l.bb, l.so, l.hbp, l.sf);
+    }
+    line(out, "%-10s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d   LOB %d\n", "Totals", sum.ab, sum.r, sum.h, sum.doubles,
+         sum.triples, sum.hr, sum.rbi, sum.bb, sum.so, sum.hbp, sum.sf, t->left_on_base);
+  }
+  line(out, "\nPitching     IP   H  R BB SO HR  Pitches-strikes\n");
+  for (const TeamBox* t : {&g.away, &g.home}) {
+    const PitchingLine& p = t->pitching;
+    line(out, "%-10s %2d.%d %3d %2d %2d %2d %2d  %d-%d\n", t->name.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.bb, p.so, p.hr,
+         p.pitches, p.strikes);
+  }
+  if (g.walk_off) line(out, "\nWalk-off in the %d%s.\n", g.innings_played, g.innings_played == 1 ? "st" : g.innings_played == 2 ? "nd" : g.innings_played == 3 ? "rd" : "th");
+  return out;
+}
+
+std::string rates_text(const BattingRates& r, const std::string& title) {
+  std::string out;
+  line(out, "%s: %d PA, %d pitches\n", title.c_str(), r.pa, r.pitches);
+  line(out, "  K%% %.1f  BB%% %.1f  HBP%% %.1f  HR/PA %.1f%%  AVG %.3f  OBP %.3f  SLG %.3f  BABIP %.3f\n", 100 * r.k_rate,
+       100 * r.bb_rate, 100 * r.hbp_rate, 100 * r.hr_rate, r.avg, r.obp, r.slg, r.babip);
+  line(out, "  swing%% %.1f  zone%% %.1f  chase%% %.1f  whiff/swing %.1f%%  foul/pitch %.1f%%\n", 100 * r.swing_rate,
+       100 * r.zone_rate, 100 * r.chase_rate, 100 * r.whiff_per_swing, 100 * r.foul_per_pitch);
+  line(out, "  bat speed %.1f mph  swing length %.1f ft  squared-up/swing %.1f%%  blast/swing %.1f%%\n", r.mean_bat_speed_mph,
+       r.mean_swing_length_ft, 100 * r.squared_up_per_swing, 100 * r.blast_per_swing);
+  return out;
+}
+
+}  // namespace sweetspot

@@ -74,6 +74,12 @@ void line(std::string& out, const char* fmt, ...) {
   out += buf;
 }
 
+std::string ordinal(int n) {
+  const int teen = n % 100, last = n % 10;
+  const char* suffix = (teen >= 11 && teen <= 13) ? "th" : last == 1 ? "st" : last == 2 ? "nd" : last == 3 ? "rd" : "th";
+  return std::to_string(n) + suffix;
+}
+
 }  // namespace
 
 nlohmann::json bat_tracking_json(const BatTracking& t) {
@@ -108,6 +114,7 @@ nlohmann::json game_json(const GameRecord& g) {
           {"innings", g.options.innings},
           {"innings_played", g.innings_played},
           {"walk_off", g.walk_off},
+          {"stopped_tied", g.stopped_tied},
           {"plate_appearances", pas},
           {"box_score", {{"away", team_json(g.away)}, {"home", team_json(g.home)}}}};
 }
@@ -144,7 +151,8 @@ std::string box_score_text(const GameRecord& g) {
     line(out, "%-10s %2d.%d %3d %2d %2d %2d %2d  %d-%d\n", t->name.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.bb, p.so, p.hr,
          p.pitches, p.strikes);
   }
-  if (g.walk_off) line(out, "\nWalk-off in the %d%s.\n", g.innings_played, g.innings_played == 1 ? "st" : g.innings_played == 2 ? "nd" : g.innings_played == 3 ? "rd" : "th");
+  if (g.walk_off) line(out, "\nWalk-off in the %s.\n", ordinal(g.innings_played).c_str());
+  if (g.stopped_tied) line(out, "\nStopped tied after %d innings.\n", g.innings_played);
   return out;
 }
 

@@ -16,7 +16,7 @@ constexpr double kRead = 0.3;          // s a runner takes to read a ball on the
 constexpr double kTurn = 0.3;          // s lost rounding a base (ESTIMATE, as fielding.cpp)
 constexpr double kSafeMargin = 0.5;    // s to spare for a runner sent for an extra base (ESTIMATE)
 constexpr double kPivotExtra = 0.1;    // s the pivot man's turn takes beyond a clean transfer (ESTIMATE)
-constexpr int kMaxInnings = 60;        // a game tied this long is stopped (never seen in MLB)
+constexpr int kMaxExtra = 40;          // extra innings before a game still tied is stopped (MLB's longest: 26 innings)
 
 struct Env {
   const AeroModel* aero;
@@ -118,7 +118,7 @@ struct HalfInning {
 
   // Runs scored (each runner who reached home pushed to `scored`).
   int advance(const PlateAppearance& pa, const Team& batting, const Team& fielding, std::vector<int>& scored,
-              int& outs_made) {
+              int& outs_made, std::string& description) {
     const PitchRecord& last = pa.pitches.back();
     const FieldingPlay& p = last.result.play;
     const int batter = pa.batter;
@@ -175,7 +175,11 @@ struct HalfInning {
         if (outs < 3) {
           if (bases[2] >= 0) scored.push_back(bases[2]);
           nb[2] = bases[1];
+        } else {
+          nb = {-1, bases[1], bases[2]};  // the inning is over: they are left on base
         }
+        description = double_play ? "Grounded into a double play, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) + "-2B-1B"
+                                  : "Fielder's choice, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) + " to 2B";
         bases = nb;
         return static_cast<int>(scored.size());
       }
@@ -192,6 +196,28 @@ struct HalfInning {
     return static_cast<int>(scored.size());
   }
 };
+
+// A walk-off other than a home run: the game ends when the winning run scores, so only the
+// runs up to it count (MLB Rule 5.08(b)), and a hit is worth only the bases the winning runner
+// took (Rule 9.06(f)). Runners reach home lead runner first.
+void walk_off_limit(PlateAppearance& pa, const GameSituation& s, std::vector<int>& scored) {
+  const int needed = s.away_runs - s.home_runs + 1;
+  if (needed <= 0 || static_cast<int>(scored.size()) < needed) return;
+  scored.resize(static_cast<std::size_t>(needed));
+  const int winner = scored.back();
+  int from = 0;  // the base the winning runner started from (0: the batter)
+  for (int b = 0; b < 3; ++b)
+    if (pa.bases_before[static_cast<std::size_t>(b)] == winner) from = b + 1;
+  static const char* kHits[] = {"single", "double", "triple"};
+  const int took = 4 - from;
+  for (int h = 0; h < 3; ++h)
+    if (pa.result == kHits[h] && took < h + 1) {
+      pa.result = kHits[took - 1];
+      const std::string words = pa.result == "single" ? "Single" : pa.result == "double" ? "Double" : "Triple";
+      pa.description = words + pa.description.substr(pa.description.find(' '));
+    }
+  pa.rbi = std::min(pa.rbi, needed);
+}
 
 void credit_batter(BattingLine& l, const PlateAppearance& pa) {
   ++l.pa;
@@ -241,7 +267,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
   GameSituation s;
   s.scheduled = o.innings;
   const Env env = air(assets);
-  for (s.inning = 1; s.inning <= kMaxInnings; ++s.inning) {
+  for (s.inning = 1; s.inning <= o.innings + kMaxExtra; ++s.inning) {
     for (int half = 0; half < 2; ++half) {
       s.bottom = half == 1;
       s.outs = 0;
@@ -271,7 +297,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
           pa.outs_made = 1;
         } else {
           int outs_made = 0;
-          h.advance(pa, bat, field, scored, outs_made);
+          h.advance(pa, bat, field, scored, outs_made, pa.description);
           pa.outs_made = outs_made;
           const bool error = pa.result == "error";
           const bool double_play = outs_made == 2;
@@ -279,6 +305,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
           pa.rbi = error || double_play ? 0 : static_cast<int>(scored.size());
           if (error) ++box[1 - half].errors;
         }
+        if (s.bottom && s.inning >= s.scheduled && pa.result != "home_run") walk_off_limit(pa, s, scored);
         pa.runs = static_cast<int>(scored.size());
         for (int who : scored) ++box[half].batting[static_cast<std::size_t>(who)].r;
         runs += pa.runs;
@@ -292,9 +319,8 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
           break;
         }
       }
-      if (h.outs >= 3)
-        for (int b : h.bases)
-          if (b >= 0) ++box[half].left_on_base;
+      for (int b : h.bases)
+        if (b >= 0) ++box[half].left_on_base;
       box[half].runs_by_inning.push_back(runs);
       g.innings_played = s.inning;
       s.outs = h.outs;
@@ -303,6 +329,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
     s.outs = 3;
     if (game_over(s)) break;
   }
+  g.stopped_tied = s.away_runs == s.home_runs;
   for (int t = 0; t < 2; ++t) {
     box[t].runs = t == 0 ? s.away_runs : s.home_runs;
     for (const BattingLine& l : box[t].batting) box[t].hits += l.h;

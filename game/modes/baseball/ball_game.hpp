@@ -40,7 +40,7 @@ struct PlateAppearance {
 
 struct GameOptions {
   int innings = 9;
-  static constexpr Range kInnings{1.0, 200.0};
+  static constexpr Range kInnings{1.0, 50.0};
   std::string away = "pro", home = "pro";  ///< each lineup's batter skill
   std::uint64_t seed = 1;
 };
@@ -70,6 +70,7 @@ struct GameRecord {
   TeamBox away, home;
   int innings_played = 0;
   bool walk_off = false;
+  bool stopped_tied = false;  ///< still tied after 40 extra innings (never happened in MLB)
 };
 
 /// Plays the game; InputError for innings out of range or an unknown skill.

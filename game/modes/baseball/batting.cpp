@@ -154,7 +154,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   out.play = field_play(out.shot, *resolved.aero, resolved.spec.environment, fielding.defense ? *fielding.defense : kLeague,
                         in.left_handed, fielding.batter_sprint, fielding.rng);
   if (!backward) out.outcome = out.play.outcome;
-  else if (out.play.caught) out.outcome = BattedOutcome::Out;
+  else if (out.play.caught && !out.foul_tip) out.outcome = BattedOutcome::Out;  // a caught tip is a strike
   if (out.play.fielder >= 0) out.fielder = kPositionNames[static_cast<std::size_t>(out.play.fielder)];
   }
   const double ev = mps_to_mph(L.ball_speed), la = rad_to_deg(L.vertical_angle);

@@ -47,7 +47,12 @@ constexpr double kSafeMargin = 0.2;   // s: an extra base is taken only with thi
 constexpr double kOutfieldGather = 0.4;  // s an outfielder loses slowing to pick up a ball on the
                                          // ground and setting his feet (a crow hop) (ESTIMATE)
 constexpr double kCatchSpread = 0.4; // s, catch_probability's spread
-constexpr double kCatchOffset = 0.6; // s: a catch that takes all of his reach and speed is a 5-star play (24 %)
+constexpr double kCatchOffset = 0.25; // s: a catch that takes all of his reach and speed is a 5-star play (24 %)
+// Chasing a ball in the air: Statcast's route efficiency (the straight-line distance over the
+// path run) is ~0.9 for the league's outfielders, and the last steps slow him to gather under
+// the ball (ESTIMATE 0.35 s).
+constexpr double kRouteEfficiency = 0.9;
+constexpr double kGatherUnder = 0.35;  // s
 // Misplays per chance: MLB fielding percentage ~.985 (2023), outfielders ~.990 and
 // infielders ~.975: a ball caught in the air is dropped 0.5 % of the time, a grounder
 // fielded for an out is booted or thrown away 2 % of the time (two chances: the stop and
@@ -242,7 +247,8 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
       const double reach = near_wall && horizontal(s.position, land) < 3.0 ? kLeap : kCatchable;
       if (s.position.y() > reach || s.t < 0.05) continue;
       if (play.foul && !in_foul_ground(s.position)) continue;
-      const double spare = s.t - fielder_run_time(in_air[i], horizontal(play.start[i], s.position));
+      const double run = fielder_run_time(in_air[i], horizontal(play.start[i], s.position) / kRouteEfficiency);
+      const double spare = s.t - run - kGatherUnder;
       if (spare > best_spare) {
         best_spare = spare;
         best = static_cast<int>(i);
@@ -261,7 +267,8 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
       play.fielded_time = best_t;
       play.outcome = BattedOutcome::Out;
       if (rng && rng->uniform() < kDropRate) {
-        play.outcome = BattedOutcome::Error;
+        // Dropped: a fair ball puts the batter on by the error; a foul one is only a foul.
+        play.outcome = play.foul ? BattedOutcome::Foul : BattedOutcome::Error;
         play.caught = false;
       }
       play.description = describe(play, land);

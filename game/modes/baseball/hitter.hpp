@@ -46,10 +46,10 @@ struct PitchRead {
 };
 
 /// With two strikes a hitter shortens up: Statcast's 2024 bat tracking has two-strike swings
-/// ~3 % slower and ~5 % shorter than the rest (league 69.5 against 71.5 mph; 7.0 against 7.3
-/// ft); the shorter swing is taken to steady his read by the same 5 % of the swing... (ESTIMATE:
-/// 20 % less spread in his timing and height).
-inline constexpr double kTwoStrikeEffort = 0.97, kTwoStrikeSweep = 0.95, kTwoStrikeSpread = 0.8;
+/// ~3 % slower and ~5 % shorter than the rest (league ~69.5 against 71.5 mph; ~7.0 against
+/// 7.3 ft); the shorter, later-starting swing steadies his read (ESTIMATE: 10 % less spread in
+/// his timing, height and reach).
+inline constexpr double kTwoStrikeEffort = 0.97, kTwoStrikeSweep = 0.95, kTwoStrikeSpread = 0.9;
 
 /// The share of pitches he swings at when he sees them in the zone, by count: 0.6 with no
 /// strikes, 0.72 with one, 0.9 with two, 0.2 at 3-0 (ESTIMATES shaped by Statcast's Z-Swing%

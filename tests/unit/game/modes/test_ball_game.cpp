@@ -1,0 +1,145 @@
+// A game of baseball (ball_game.hpp): the box score adds up, nine innings make 27 outs a
+// side, the same seed plays the same game, and the league's hitter against the league's
+// pitcher bats as MLB's hitters do (2023-24 league rates, Baseball-Reference / FanGraphs:
+// K% 22.7 / 22.6, BB% 8.6 / 8.2, BABIP .297 / .291, HR per PA 3.2 % / 3.0 %, SLG .414 / .399;
+// Statcast: ~25 % whiffs per swing, ~17 % of pitches fouled).
+#include <catch2/catch.hpp>
+
+#include "game/modes/baseball/ball_game.hpp"
+#include "game/report/box_score.hpp"
+#include "physics/error.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+// Outs a side made, from the plate appearances.
+int outs_of(const GameRecord& g, bool bottom) {
+  int outs = 0;
+  for (const PlateAppearance& pa : g.plate_appearances)
+    if (pa.bottom == bottom) outs += pa.outs_made;
+  return outs;
+}
+
+std::vector<PlateAppearance> games(const std::string& skill, int count, std::uint64_t first_seed, int* innings) {
+  std::vector<PlateAppearance> all;
+  for (int i = 0; i < count; ++i) {
+    GameOptions o;
+    o.away = o.home = skill;
+    o.seed = first_seed + static_cast<std::uint64_t>(i);
+    const GameRecord g = play_game(test::assets(), o);
+    *innings += g.innings_played;
+    all.insert(all.end(), g.plate_appearances.begin(), g.plate_appearances.end());
+  }
+  return all;
+}
+
+}  // namespace
+
+TEST_CASE("a nine-inning game: the box score adds up, 27 outs a side unless the home team need not bat or walks off",
+          "[baseball][game]") {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    GameOptions o;
+    o.seed = seed;
+    const GameRecord g = play_game(test::assets(), o);
+    INFO("seed " << seed << "\n" << box_score_text(g));
+    CHECK(box_score_mismatch(g.away, g.home) == "");
+    CHECK(box_score_mismatch(g.home, g.away) == "");
+    CHECK(g.away.runs != g.home.runs);  // no ties
+    CHECK_FALSE(g.stopped_tied);
+    CHECK(g.innings_played >= 9);
+    const int innings = g.innings_played;
+    CHECK(outs_of(g, false) == 3 * innings);
+    CHECK(g.away.pitching.outs == outs_of(g, true));
+    CHECK(g.home.pitching.outs == 3 * innings);
+    if (g.walk_off) {
+      CHECK(g.home.runs > g.away.runs);
+      CHECK(outs_of(g, true) < 3 * innings);
+      CHECK(outs_of(g, true) >= 3 * (innings - 1));
+    } else if (g.home.runs > g.away.runs) {
+      CHECK(outs_of(g, true) == 3 * (innings - 1));  // the home team did not bat in the last
+    } else {
+      CHECK(outs_of(g, true) == 3 * innings);
+    }
+    // Runs by inning: one entry a half played.
+    CHECK(g.away.runs_by_inning.size() == static_cast<std::size_t>(innings));
+    // Every plate appearance ends in one of the documented results.
+    for (const PlateAppearance& pa : g.plate_appearances) {
+      const std::string& r = pa.result;
+      CHECK((r == "strikeout" || r == "walk" || r == "hit_by_pitch" || r == "out" || r == "single" || r == "double" ||
+             r == "triple" || r == "home_run" || r == "error"));
+      CHECK_FALSE(pa.description.empty());
+      CHECK_FALSE(pa.pitches.empty());
+    }
+  }
+}
+
+TEST_CASE("the same seed plays the same game; bad options are refused", "[baseball][game]") {
+  GameOptions o;
+  o.innings = 3;
+  o.seed = 9;
+  CHECK(game_json(play_game(test::assets(), o)) == game_json(play_game(test::assets(), o)));
+  o.innings = 0;
+  CHECK_THROWS_AS(play_game(test::assets(), o), InputError);
+  o.innings = 3;
+  o.home = "legend";
+  CHECK_THROWS_AS(play_game(test::assets(), o), InputError);
+}
+
+namespace {
+// The league's hitter against the league's pitcher: twelve seeded games, both lineups batting
+// (108 innings, ~860 plate appearances: a BABIP known to ±.016, a K% to ±1.4 points).
+const BattingRates& pro_rates() {
+  static const BattingRates r = [] {
+    int innings = 0;
+    const BattingRates rates = batting_rates(games("pro", 12, 101, &innings), 2);
+    REQUIRE(innings >= 60);
+    return rates;
+  }();
+  return r;
+}
+}  // namespace
+
+TEST_CASE("over 60+ innings the league's hitter strikes out, walks and hits balls in play as MLB's do; the amateur "
+          "clearly below",
+          "[baseball][game][reference]") {
+  const BattingRates& pro = pro_rates();
+  INFO(rates_text(pro, "pro"));
+  CHECK(pro.k_rate >= 0.18);
+  CHECK(pro.k_rate <= 0.27);
+  CHECK(pro.bb_rate >= 0.06);
+  CHECK(pro.bb_rate <= 0.11);
+  CHECK(pro.hbp_rate >= 0.004);
+  CHECK(pro.hbp_rate <= 0.02);
+  CHECK(pro.babip >= 0.267);
+  CHECK(pro.babip <= 0.327);
+  // Per pitch: whiffs per swing and fouls per pitch near Statcast's league (25 %, 17 %), and
+  // the league's swing rate (~47 %).
+  CHECK(pro.whiff_per_swing >= 0.15);
+  CHECK(pro.whiff_per_swing <= 0.35);
+  CHECK(pro.foul_per_pitch >= 0.12);
+  CHECK(pro.foul_per_pitch <= 0.25);
+  CHECK(pro.swing_rate >= 0.40);
+  CHECK(pro.swing_rate <= 0.55);
+  int amateur_innings = 0;
+  const BattingRates amateur = batting_rates(games("amateur", 2, 201, &amateur_innings), 2);
+  INFO(rates_text(amateur, "amateur"));
+  CHECK(amateur.k_rate > pro.k_rate + 0.08);
+  CHECK(amateur.slg < pro.slg - 0.10);
+  CHECK(amateur.whiff_per_swing > pro.whiff_per_swing);
+}
+
+// KNOWN MISS (issue 40, left open; the cause is issue 41's physics): fly balls struck under
+// their centre leave the bat with 4000-6500 rpm of backspin at 25-35° (Statcast's are ~2500-
+// 3500), and the spin's drag costs them 30-50 ft, so home runs and extra bases fall short of
+// MLB's. This case asserts MLB's bands and is expected to fail until the batted ball's spin
+// matches; when it passes, drop the tag.
+TEST_CASE("over 60+ innings the league's hitter hits for MLB's power", "[baseball][game][reference][!shouldfail]") {
+  const BattingRates& pro = pro_rates();
+  INFO(rates_text(pro, "pro"));
+  CHECK(pro.hr_rate >= 0.020);
+  CHECK(pro.hr_rate <= 0.045);
+  CHECK(pro.slg >= 0.360);
+  CHECK(pro.slg <= 0.460);
+}

@@ -44,7 +44,7 @@ constexpr double kHomeToFirst = 4.47; // s, Statcast 2024 mean home-to-first
 constexpr double kMeanSprint = 27.0 * 0.3048;  // m/s, Statcast's league-average sprint speed
 constexpr double kTurn = 0.3;         // s a runner loses rounding a base (ESTIMATE)
 constexpr double kSafeMargin = 0.2;   // s: an extra base is taken only with this to spare (ESTIMATE)
-constexpr double kOutfieldGather = 0.4;  // s an outfielder loses slowing to pick up a ball on the
+constexpr double kOutfieldGather = 0.6;  // s an outfielder loses slowing to pick up a ball on the
                                          // ground and setting his feet (a crow hop) (ESTIMATE)
 constexpr double kCatchSpread = 0.4; // s, catch_probability's spread
 constexpr double kCatchOffset = 0.25; // s: a catch that takes all of his reach and speed is a 5-star play (24 %)
@@ -286,9 +286,10 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   std::size_t first_f = 0;
   for (std::size_t i = 0; i < 9; ++i) {
     const FielderAbility& f = defense.ability[i];
+    const double route = i >= 6 ? kRouteEfficiency : 1.0;  // an outfielder chasing it down runs a route too
     for (const TrajectorySample& s : t.samples) {
       if (s.t < hang || s.position.y() > kCatchable) continue;
-      if (fielder_run_time(f, horizontal(play.start[i], s.position)) <= s.t) {
+      if (fielder_run_time(f, horizontal(play.start[i], s.position) / route) <= s.t) {
         if (s.t < first_t) {
           first_t = s.t;
           first_p = s.position;
@@ -297,7 +298,8 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
         break;
       }
     }
-    const double arrive = std::max(t.summary.total_time_s, fielder_run_time(f, horizontal(play.start[i], t.summary.rest_position)));
+    const double arrive =
+        std::max(t.summary.total_time_s, fielder_run_time(f, horizontal(play.start[i], t.summary.rest_position) / route));
     if (arrive < first_t) {
       first_t = arrive;
       first_p = t.summary.rest_position;

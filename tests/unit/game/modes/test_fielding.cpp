@@ -91,3 +91,36 @@ TEST_CASE("fielding: fly balls in reach are caught, grounders at an infielder ar
   INFO("gap: " << to_string(gap) << " fielded by " << who);
   CHECK((gap == BattedOutcome::Double || gap == BattedOutcome::Triple));
 }
+
+TEST_CASE("fly balls that reach the wall: doubles and triples, a few caught at the track; none rests in the infield",
+          "[baseball][fielding][wall]") {
+  // Drives that carry to the fence without clearing it, across the field: 96-112 mph at 14-30°
+  // with a home-run hitter's 2500 rpm of backspin (Statcast's typical for those launches).
+  int wall = 0, extra = 0, singles = 0, caught = 0, in_infield = 0;
+  double nearest_rest = 1e9;
+  for (double ev = 96.0; ev <= 112.0; ev += 2.0)
+    for (double la = 14.0; la <= 30.0; la += 2.0)
+      for (double spray = -40.0; spray <= 40.0; spray += 10.0) {
+        const ResolvedShot r = resolve(test::launch_spec("baseball", ev, la, 2500.0, spray), test::assets());
+        const ShotResult shot = run_shot(r, "test", {true, true});
+        if (shot.end == ShotEnd::HomeRun || shot.trajectory.summary.landing_position.y() < 0.3) continue;  // not off the wall
+        ++wall;
+        const Vec3& rest = shot.trajectory.summary.rest_position;
+        nearest_rest = std::min(nearest_rest, std::hypot(rest.x(), rest.z()));
+        if (std::hypot(rest.x(), rest.z()) < 45.0) ++in_infield;  // the infield skin: 95 ft past the rubber
+        const FieldingPlay p = field_play(shot, *r.aero, r.spec.environment, league_defense(), false, 8.23, nullptr);
+        if (p.outcome == BattedOutcome::Double || p.outcome == BattedOutcome::Triple) ++extra;
+        if (p.outcome == BattedOutcome::Single) ++singles;
+        if (p.outcome == BattedOutcome::Out) ++caught;
+      }
+  INFO(wall << " off the wall: " << extra << " doubles or triples, " << singles << " singles, " << caught
+            << " caught; nearest rest " << nearest_rest << " m from home");
+  REQUIRE(wall >= 30);
+  CHECK(in_infield == 0);
+  CHECK(nearest_rest > 70.0);
+  // A ball off the wall is a double for an average runner unless it caroms to a fielder.
+  CHECK(extra >= 0.7 * wall);
+  CHECK(singles <= 0.25 * wall);
+  // Above a leaping fielder's glove it cannot be caught; at the track, lower, sometimes it is.
+  CHECK(caught <= 0.2 * wall);
+}

@@ -4,9 +4,11 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
+#include "game/modes/baseball/figures.hpp"
 #include "game/modes/replay.hpp"
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
@@ -49,6 +51,67 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
   // The bat's height: where the swing will meet the ball.
   const auto l = pt(c.bat_height(), -half - 0.25), r = pt(c.bat_height(), half + 0.25);
   if (l && r) dl->AddLine(*l, *r, c.power() ? IM_COL32(255, 170, 40, 230) : IM_COL32(80, 200, 255, 230), 3.0f);
+}
+
+// A stick figure projected through the camera: bones as lines, the head a disc.
+void draw_figure(const Figure& f, const Camera& cam, int w, int h, ImU32 colour, ImU32 bat_colour) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  std::array<std::optional<ImVec2>, kJointCount> at;
+  for (int j = 0; j < kJointCount; ++j) {
+    if (!f.has_bat && (j == kBatKnob || j == kBatTip)) continue;
+    if (const auto p = cam.project(f.joint[static_cast<std::size_t>(j)], w, h))
+      at[static_cast<std::size_t>(j)] = ImVec2(static_cast<float>((*p)(0)), static_cast<float>((*p)(1)));
+  }
+  const auto head = at[kHead];
+  const auto crown = cam.project(f.joint[kHead] + Vec3(0.0, 0.12, 0.0), w, h);
+  if (!head || !crown) return;  // behind the camera
+  const float size = std::abs(static_cast<float>((*crown)(1)) - head->y);  // ~12 cm on screen
+  const float thick = std::clamp(size * 0.55f, 1.5f, 7.0f);
+  for (const auto& [a, b] : figure_bones()) {
+    const auto& pa = at[static_cast<std::size_t>(a)];
+    const auto& pb = at[static_cast<std::size_t>(b)];
+    if (!pa || !pb) continue;
+    const bool bat = a == kBatKnob;
+    dl->AddLine(*pa, *pb, bat ? bat_colour : colour, bat ? thick * 0.8f : thick);
+  }
+  dl->AddCircleFilled(*head, std::clamp(size, 2.0f, 18.0f), colour);
+}
+
+// The pitcher, the batter and the nine fielders: the pitcher's delivery on the pitch clock,
+// the batter's stride and swing, the fielders' runs after contact.
+void draw_players(const BattingCage& c, const Camera& cam, int w, int h, double now, bool batted) {
+  const ImU32 fielding = IM_COL32(40, 70, 200, 255), batting = IM_COL32(235, 235, 235, 255);
+  const ImU32 faint_batting = IM_COL32(235, 235, 235, 90);
+  const ImU32 wood = IM_COL32(190, 140, 80, 255), faint_wood = IM_COL32(190, 140, 80, 120);
+  const bool pitching = c.stage() == Stage::Pitching;
+  const bool any_pitch = c.stage() != Stage::Ready || !c.swings().empty();
+  // The pitcher: set before a pitch, his delivery during it, the follow-through after.
+  const PitchType& type = c.call().type;
+  const Vec3 release = any_pitch ? c.pitch().release
+                                 : Vec3(kRubberToPlate - type.extension, type.release_height, type.release_side);
+  const double pt = c.stage() == Stage::Ready ? -kWindupTime : pitching ? c.pitch_clock(now) : std::min(c.pitch_clock(now), 0.6);
+  draw_figure(pitcher_figure(release, pt, c.call().left_handed), cam, w, h, fielding, wood);
+  // The other eight where they stand, or running to the ball once it is hit.
+  const FieldingPlay& play = c.last().result.play;
+  const bool in_play = batted && c.last().result.contact;
+  const double since = now - c.batted_at();
+  static const Defense league = league_defense();
+  const std::array<Vec3, 9> spots = fielder_spots(c.left_handed());
+  for (std::size_t i = 1; i < 9; ++i) {
+    const bool catcher = i == 1;
+    if (catcher && !batted) continue;  // from the batter's eye he is crouched below the view
+    const Vec3 start = in_play ? play.start[i] : spots[i];
+    const Vec3 goal = in_play ? play.goal[i] : spots[i];
+    draw_figure(fielder_figure(start, goal, league.ability[i], in_play ? since : 0.0, catcher), cam, w, h, fielding, wood);
+  }
+  // The batter: his stride as the pitch comes, the swing at his key press, the follow-through.
+  double phase = 0.0;
+  if (pitching) phase = 0.6 * std::clamp(c.pitch_clock(now) / std::max(c.pitch().flight_time, 1e-6), 0.0, 1.0);
+  // He holds his follow-through until the next pitch.
+  if (c.stage() != Stage::Ready && c.swung_at() <= now && c.pitch_clock(c.swung_at()) >= 0.0)
+    phase = 1.0 + 0.6 * std::clamp((now - c.swung_at()) * BattingCage::kPitchTimeScale / 0.25, 0.0, 1.0);
+  draw_figure(batter_figure(phase, c.bat_height(), c.left_handed()), cam, w, h, batted ? batting : faint_batting,
+              batted ? wood : faint_wood);
 }
 
 void draw_stats(const BattingCage& c, int w, int h) {
@@ -143,6 +206,7 @@ class CageView final : public ModeView {
       const Camera cam = batted ? scene_->camera(CameraKind::Behind, t, w, h) : batter_view();
       renderer.draw(scene_->build(cam, t, w, h), cam);
       renderer.blit_to(0, w, h);
+      draw_players(c, cam, w, h, in.now, batted);
       if (!batted) draw_zone(c, cam, w, h);
     }
     draw_stats(c, w, h);

@@ -19,8 +19,9 @@ for _ in $(seq 1 150); do wid=$(xdotool search --name Sweetspot 2>/dev/null | he
 [ -n "$wid" ] || { echo "no window"; kill $pid; exit 1; }
 sleep 2
 xdotool windowfocus --sync "$wid" 2>/dev/null || true
-# The batting-practice pitch takes 0.62 s, shown at half speed: swing 1.2 s after calling it.
-xdotool key space; sleep 1.22; xdotool key space
+# The pitcher winds up for 0.9 s and the batting-practice pitch takes 0.62 s, both shown at
+# half speed: swing 3.0 s after calling it.
+xdotool key space; sleep 3.02; xdotool key space
 for _ in $(seq 1 80); do kill -0 $pid 2>/dev/null || break; sleep 0.25; done
 kill $pid 2>/dev/null && { echo "the window did not close after the pitch"; exit 1; }
 wait $pid

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "game/modes/baseball/figures.hpp"
 #include "game/modes/replay.hpp"
 #include "physics/units.hpp"
 
@@ -24,13 +25,14 @@ void BattingCage::advance(double t) {
     last_.call = call_;
     last_.pitch = pitch_;
     last_.swung = false;
-    call_text_ = in_zone(pitch_.plate, assets_.equipment().ball("mlb").radius) ? "called strike" : "ball";
+    call_text_ = in_zone(pitch_.plate, assets_.equipment().ball("mlb").radius) ? "Called strike" : "Ball";
     stage_ = Stage::Called;
   }
   if (stage_ == Stage::Batted && t - batted_at_ >= duration(last_.result.shot.trajectory)) stage_ = Stage::Called;
 }
 
 void BattingCage::swing(const SwingInput& s, double t) {
+  swung_at_ = t;
   last_ = SwingRecord{};
   last_.call = call_;
   last_.pitch = pitch_;
@@ -39,16 +41,23 @@ void BattingCage::swing(const SwingInput& s, double t) {
   last_.result = swing_at(assets_, pitch_, s, batter_skill("pro").bat_speed);
   last_.call_text = to_string(last_.result.outcome);
   swings_.push_back(last_);
-  char text[128];
+  char text[160];
   if (last_.result.contact) {
-    const std::string outcome = last_.result.outcome == BattedOutcome::HomeRun ? "Home run" : last_.call_text;
-    std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %.0f ft", outcome.c_str(),
+    const std::string words = last_.result.outcome == BattedOutcome::Foul ? (last_.result.foul_tip ? "Foul tip" : "Foul ball")
+                                                                           : last_.result.play.description;
+    std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %.0f ft", words.c_str(),
                   mps_to_mph(last_.result.shot.launch.ball_speed), rad_to_deg(last_.result.shot.launch.vertical_angle),
                   m_to_ft(last_.result.shot.trajectory.summary.carry_m));
     batted_at_ = t;
     stage_ = Stage::Batted;
   } else {
-    std::snprintf(text, sizeof text, "strike: %s %.0f ms", s.timing_ms >= 0 ? "late" : "early", std::abs(s.timing_ms));
+    // Why the bat missed: above or below the ball, or through the zone early or late.
+    constexpr double kReach = 0.066;  // m, the bat's and the ball's radii together (95 %)
+    if (std::abs(offset_) > kReach)
+      std::snprintf(text, sizeof text, "Swinging strike: %s the ball by %.0f cm", offset_ > 0.0 ? "under" : "over",
+                    100.0 * (std::abs(offset_) - kReach));
+    else
+      std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms", s.timing_ms >= 0 ? "late" : "early", std::abs(s.timing_ms));
     stage_ = Stage::Called;
   }
   call_text_ = text;
@@ -77,20 +86,25 @@ void BattingCage::apply(const Intent& in) {
         // Space between pitches calls for the next one, as P does.
         call_ = derby_pitch(types_, rng_);
         pitch_ = throw_pitch(assets_, call_);
-        released_at_ = t;
+        released_at_ = t + kWindupTime / kPitchTimeScale;
         stage_ = Stage::Pitching;
         call_text_.clear();
-      } else if (in.kind == IntentKind::Swing) {
+      } else if (in.kind == IntentKind::Swing && pitch_clock(t) >= 0.0) {  // he holds until the ball is on its way
         SwingInput s;
         s.timing_ms = std::clamp(1000.0 * (pitch_clock(t) - pitch_.flight_time), SwingInput::kTiming.min, SwingInput::kTiming.max);
         s.undercut = std::clamp(pitch_.plate.y() - bat_height_, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
         s.power = power_;
         s.left_handed = lefty_;
+        offset_ = pitch_.plate.y() - bat_height_;
         swing(s, t);
       }
       break;
     case IntentKind::BotSwings:
-      if (stage_ == Stage::Pitching) swing(bot_.plan(pitch_, true, lefty_), t);
+      if (stage_ == Stage::Pitching && pitch_clock(t) >= 0.0) {
+        const SwingInput s = bot_.plan(pitch_, true, lefty_);
+        offset_ = s.undercut;
+        swing(s, t);
+      }
       break;
     default: break;
   }

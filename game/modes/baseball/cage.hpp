@@ -22,6 +22,8 @@ class BattingCage {
   static constexpr double kZoneLow = 1.6 * 0.3048, kZoneHigh = 3.5 * 0.3048, kPlateHalf = 0.2159;
   /// After the pitch crosses the plate it is taken (called) once this much pitch time more has passed.
   static constexpr double kTakenAfter = 0.15;  // s
+  /// The pitcher's delivery before the release, in pitch time (figures.hpp kWindupTime): a
+  /// pitch called at mode time t leaves his hand at t + kWindupTime / kPitchTimeScale.
 
   explicit BattingCage(const Assets& assets, std::uint64_t seed = 11);
 
@@ -30,10 +32,12 @@ class BattingCage {
   Stage stage() const { return stage_; }
   const PitchCall& call() const { return call_; }
   const PitchFlight& pitch() const { return pitch_; }
-  /// Pitch time (s since release, slowed by kPitchTimeScale) at mode time `t`.
+  /// Pitch time (s since release, slowed by kPitchTimeScale; negative in the wind-up) at mode time `t`.
   double pitch_clock(double t) const { return (t - released_at_) * kPitchTimeScale; }
   /// The batted ball's flight runs from this mode time.
   double batted_at() const { return batted_at_; }
+  /// Mode time of the last swing's contact (or miss), for the batter's animation.
+  double swung_at() const { return swung_at_; }
   double bat_height() const { return bat_height_; }  ///< m above the ground where the bat meets the ball's path
   bool power() const { return power_; }
   bool left_handed() const { return lefty_; }
@@ -53,8 +57,9 @@ class BattingCage {
   Stage stage_ = Stage::Ready;
   PitchCall call_;
   PitchFlight pitch_;
-  double released_at_ = 0.0, batted_at_ = 0.0;
+  double released_at_ = 0.0, batted_at_ = 0.0, swung_at_ = -1e9;
   double bat_height_ = 0.76;
+  double offset_ = 0.0;  ///< m the ball's centre passed above the bat's axis on the last swing
   bool power_ = true, lefty_ = false;
   SwingRecord last_;
   std::vector<SwingRecord> swings_;

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "game/modes/baseball/cage.hpp"
+#include "game/modes/baseball/figures.hpp"
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
@@ -23,8 +24,9 @@ TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any
       BattingCage cage(test::assets());
       cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
       REQUIRE(cage.stage() == BattingCage::Stage::Pitching);
-      // The pitch plays slowed: it arrives kPitchTimeScale-stretched after release.
-      const double arrive = 1.0 + cage.pitch().flight_time / BattingCage::kPitchTimeScale;
+      // The pitch plays slowed: it leaves the hand after the wind-up and arrives
+      // kPitchTimeScale-stretched after release.
+      const double arrive = 1.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
       const double key = arrive + late_ms / 1000.0 * (1.0 / BattingCage::kPitchTimeScale);
       double now = 1.0;
       bool sent = false;
@@ -46,11 +48,14 @@ TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any
 TEST_CASE("a pitch left alone is called; the pro swings on request; restart clears the session", "[modes][baseball]") {
   BattingCage cage(test::assets());
   cage.update({at(IntentKind::Pitch, 0.5)}, 0.5);
-  cage.update({}, 0.5 + (cage.pitch().flight_time + BattingCage::kTakenAfter) / BattingCage::kPitchTimeScale + 0.01);
+  cage.update({}, 0.5 + (kWindupTime + cage.pitch().flight_time + BattingCage::kTakenAfter) / BattingCage::kPitchTimeScale + 0.01);
   CHECK(cage.stage() == BattingCage::Stage::Called);
-  CHECK((cage.call_text() == "ball" || cage.call_text() == "called strike"));
+  CHECK((cage.call_text() == "Ball" || cage.call_text() == "Called strike"));
   CHECK(cage.swings().empty());
-  cage.update({at(IntentKind::Swing, 5.0), at(IntentKind::BotSwings, 5.2)}, 5.3);  // Space: the next pitch
+  // Space: the next pitch; B during the wind-up waits for the ball, once it is on its way the pro swings.
+  cage.update({at(IntentKind::Swing, 5.0), at(IntentKind::BotSwings, 5.2)}, 5.3);
+  CHECK(cage.swings().empty());
+  cage.update({at(IntentKind::BotSwings, 5.0 + kWindupTime / BattingCage::kPitchTimeScale + 0.05)}, 7.0);
   REQUIRE(cage.swings().size() == 1);
   CHECK(cage.swings().back().result.contact);
   cage.update({at(IntentKind::Restart, 6.0)}, 6.0);

@@ -108,6 +108,21 @@ RunFn setup_derby(CLI::App& sub) {
     }
     if (o->session.mode == "derby")
       std::printf("home runs: %d in %d swings\n", j["home_runs"].get<int>(), static_cast<int>(swings.size()));
+    // Statcast's bat tracking over the session's swings.
+    int n = 0, squared = 0, blasts = 0;
+    double speed = 0.0, length = 0.0, attack = 0.0;
+    for (const SwingRecord& s : swings) {
+      if (!s.swung) continue;
+      ++n;
+      squared += s.result.tracking.is_squared_up;
+      blasts += s.result.tracking.blast;
+      speed += mps_to_mph(s.result.tracking.bat_speed_mps);
+      length += m_to_ft(s.result.tracking.swing_length_m);
+      attack += s.result.tracking.attack_angle_deg;
+    }
+    if (n > 0)
+      std::printf("bat tracking: %.1f mph, %.1f ft swing, attack angle %.0f deg, squared up %d of %d, blasts %d\n",
+                  speed / n, length / n, attack / n, squared, n, blasts);
     if (o->session.mode == "at-bat") std::printf("result: %s\n", j["result"].get<std::string>().c_str());
     if (!o->plot.empty()) std::printf("spray chart: %s\n", o->plot.c_str());
     return 0;

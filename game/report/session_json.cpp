@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "game/report/box_score.hpp"
 #include "game/report/flight_json.hpp"
 #include "game/rules/baseball_game.hpp"
 #include "physics/units.hpp"
@@ -19,6 +20,7 @@ nlohmann::json session_json(const std::vector<SwingRecord>& swings, const Sessio
                   {"plate_position_m", {s.pitch.plate.x(), s.pitch.plate.y(), s.pitch.plate.z()}}};
     json j = {{"pitch", pitch}, {"timing_ms", s.timing_ms}, {"contact", s.result.contact}, {"outcome", s.call_text},
               {"barrel", s.result.barrel}, {"hard_hit", s.result.hard_hit}, {"swung", s.swung}};
+    if (s.swung) j["bat_tracking"] = bat_tracking_json(s.result.tracking);
     if (s.result.contact) {
       j["launch"] = launch_json(s.result.shot.launch, -1.0);
       j["flight"] = flight_json(s.result.shot.trajectory.summary);

@@ -137,6 +137,19 @@ void draw_stats(const BattingCage& c, int w, int h) {
     longest = std::max(longest, s.result.shot.trajectory.summary.carry_m);
   }
   ImGui::Text("Swings %d, contact %d, home runs %d", n, contact, hr);
+  if (n > 0) {
+    // Statcast's bat tracking: the last swing, and the session's squared-up and blast counts.
+    const BatTracking& t = c.swings().back().result.tracking;
+    int squared = 0, blasts = 0;
+    for (const SwingRecord& s : c.swings()) {
+      squared += s.result.tracking.is_squared_up;
+      blasts += s.result.tracking.blast;
+    }
+    ImGui::Text("Bat %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", mps_to_mph(t.bat_speed_mps),
+                t.attack_angle_deg, t.attack_direction_deg >= 0.0 ? "oppo" : "pull", std::abs(t.attack_direction_deg),
+                m_to_ft(t.swing_length_m));
+    ImGui::Text("Squared up %.0f %% (%d of %d), blasts %d", 100.0 * t.squared_up, squared, n, blasts);
+  }
   if (contact > 0) {
     ImGui::Text("Avg exit velocity %.1f mph, launch %.1f deg", ev / contact, la / contact);
     ImGui::Text("Hard-hit %.0f %%, longest %.0f ft", 100.0 * hard / contact, m_to_ft(longest));

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "game/content/course_file.hpp"
+#include "game/modes/baseball/ball_game.hpp"
 #include "game/modes/baseball/session.hpp"
 #include "game/modes/golf/bot.hpp"
 #include "game/modes/golf/golfer.hpp"
@@ -44,6 +45,21 @@ double bench_derby_ms(const Assets& assets, int derbies) {
   for (int i = 0; i < std::max(derbies, 1); ++i) swings += run();
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   return swings > 0 ? ms / std::max(derbies, 1) : 0.0;
+}
+
+double bench_game_ms(const Assets& assets, int games) {
+  GameOptions o;  // nine innings, pro lineups
+  o.innings = 1;
+  play_game(assets, o);  // loads the ballpark and the pitch types
+  o.innings = 9;
+  const auto t0 = Clock::now();
+  std::size_t plate_appearances = 0;
+  for (int i = 0; i < std::max(games, 1); ++i) {
+    o.seed = static_cast<std::uint64_t>(i + 1);
+    plate_appearances += play_game(assets, o).plate_appearances.size();
+  }
+  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  return plate_appearances > 0 ? ms / std::max(games, 1) : 0.0;
 }
 
 }  // namespace sweetspot::bench

@@ -12,5 +12,7 @@ namespace sweetspot::bench {
 double bench_bot_round_ms(const Assets& assets, int rounds);
 /// ms per home-run derby (10 outs) of the pro bot batter (seed 2), the mean over `derbies`.
 double bench_derby_ms(const Assets& assets, int derbies);
+/// ms per nine-inning bot game (pro lineups against the league's pitcher), seeds 1..games.
+double bench_game_ms(const Assets& assets, int games);
 
 }  // namespace sweetspot::bench

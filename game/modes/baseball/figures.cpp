@@ -8,7 +8,7 @@ namespace {
 
 // Body proportions of a 1.88 m player (ESTIMATES from standard anthropometric ratios).
 constexpr double kHipHeight = 0.98, kShoulderHeight = 1.52, kNeckHeight = 1.62, kHeadHeight = 1.78;
-constexpr double kHipHalf = 0.14, kShoulderHalf = 0.2, kUpperArm = 0.32, kForearm = 0.3, kThigh = 0.47, kShin = 0.47;
+constexpr double kHipHalf = 0.14, kShoulderHalf = 0.2, kUpperArm = 0.32, kForearm = 0.3, kThigh = 0.47;  // shin = thigh
 constexpr double kBatLength = 0.84;  // m, the maple bat
 
 double smooth(double x) {
@@ -131,7 +131,7 @@ Figure batter_figure(double phase, double bat_height, bool left_handed) {
   // vertical from pointing back over his shoulder (stance) through square (contact) around
   // to his front (follow-through).
   const double turn = phase < 1.0 ? -0.5 * kPi * (1.0 - smooth(phase)) : 0.8 * kPi * smooth((phase - 1.0) / 0.6);
-  const double hands_y = phase < 1.0 ? 1.45 - (1.45 - (bat_height + 0.12)) * smooth((phase - 0.3) / 0.7) : bat_height + 0.12 + 0.9 * smooth((phase - 1.0) / 0.6);
+  const double hands_y = phase < 1.0 ? 1.45 - (1.45 - bat_height) * smooth((phase - 0.3) / 0.7) : bat_height + 0.9 * smooth((phase - 1.0) / 0.6);
   const Vec3 hands(0.05 + 0.35 * smooth(phase), hands_y, -0.45);
   // The bat's direction: up and back in the stance, level and square (along +z) at contact.
   const double tilt = phase < 1.0 ? (1.0 - smooth(phase)) * 1.1 : 0.0;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Plays the batting cage under Xvfb and keeps a screenshot (F12) of each thing a hitter must
 # see: the pitcher set, his delivery, the release from the batter's eye, the swing, the ball in
-# play with the fielders running to it. Look at every PNG before calling the cage done.
+# play with the fielders running to it, and a live at-bat's count. Look at every PNG before calling the cage done.
 # Usage: scripts/baseball_screenshots.sh [BUILD/sweetspot] [OUT_DIR]
 set -euo pipefail
 bin="${1:-build/release/sweetspot}"; out="${2:-$(mktemp -d)}"
@@ -23,6 +23,13 @@ xdotool key b; sleep 0.15; xdotool key F12; sleep 1.0; xdotool key F12; sleep 1.
 sleep 3
 # A second pitch: the human's swing at the arrival.
 xdotool key space; sleep 3.02; xdotool key space; sleep 0.1; xdotool key F12; sleep 2.0; xdotool key F12
+# A live at-bat against the league's pitcher (A): swings timed for his ~94 mph fastball, the
+# count and the plate appearance in the HUD.
+xdotool key a; sleep 0.3
+for i in 1 2 3 4 5; do
+  xdotool key space; sleep 2.64; xdotool key space; sleep 0.3; xdotool key F12; sleep 2.5
+done
+xdotool key F12
 xdotool key Escape; sleep 0.3; xdotool key q
 for _ in \$(seq 1 50); do kill -0 \$pid 2>/dev/null || break; sleep 0.2; done
 wait \$pid

@@ -23,7 +23,8 @@ Intents cage_intents(const std::vector<KeyPress>& keys) {
                                   {GLFW_KEY_DOWN, IntentKind::BatDown},
                                   {GLFW_KEY_C, IntentKind::TogglePower},
                                   {GLFW_KEY_L, IntentKind::ToggleSide},
-                                  {GLFW_KEY_B, IntentKind::BotSwings}});
+                                  {GLFW_KEY_B, IntentKind::BotSwings},
+                                  {GLFW_KEY_A, IntentKind::ToggleLive}});
 }
 
 namespace {
@@ -116,13 +117,22 @@ void draw_players(const BattingCage& c, const Camera& cam, int w, int h, double 
 
 void draw_stats(const BattingCage& c, int w, int h) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Always);
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  if (c.live()) {
+    const BattingCage::AtBats& a = c.at_bats();
+    ImGui::Text("Live at-bat: count %d-%d", c.count().balls, c.count().strikes);
+    ImGui::Text("PA %d: %d H (%d HR), %d K, %d BB, %d HBP, %d outs in play", a.pa, a.hits, a.home_runs, a.strikeouts, a.walks,
+                a.hit_by_pitch, a.outs - a.strikeouts);
+  } else {
+    ImGui::Text("Batting practice");
+  }
   ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
   ImGui::Text("Swing: %s, %s-handed", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right");
   ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height");
   ImGui::TextDisabled("C: power/contact  L: batter's side");
-  ImGui::TextDisabled("B: the pro swings  Esc: pause  Tab: next mode");
+  ImGui::TextDisabled("B: the pro swings  A: live at-bat / batting practice");
+  ImGui::TextDisabled("Esc: pause  Tab: next mode");
   ImGui::Separator();
   int n = 0, contact = 0, hard = 0, hr = 0;
   double ev = 0.0, la = 0.0, longest = 0.0;

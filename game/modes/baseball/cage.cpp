@@ -11,8 +11,55 @@
 namespace sweetspot {
 
 BattingCage::BattingCage(const Assets& assets, std::uint64_t seed)
-    : assets_(assets), types_(load_pitch_types(assets)), rng_(seed), bot_(assets, batter_skill("pro"), 5) {
+    : assets_(assets),
+      types_(load_pitch_types(assets)),
+      rng_(seed),
+      bot_(assets, batter_skill("pro"), 5),
+      pitcher_(league_average_pitcher(types_), seed ^ 0x9E3779B97F4A7C15ULL) {
   call_ = derby_pitch(types_, rng_);
+}
+
+void BattingCage::next_pitch(double t) {
+  call_ = live_ ? pitcher_.next(count_, lefty_).call : derby_pitch(types_, rng_);
+  pitch_ = throw_pitch(assets_, call_);
+  released_at_ = t + kWindupTime / kPitchTimeScale;
+  stage_ = Stage::Pitching;
+  call_text_.clear();
+}
+
+void BattingCage::count_pitch(PitchResult r) {
+  const PlateEnd end = apply_pitch(count_, r);
+  char text[160];
+  if (end == PlateEnd::None) {
+    static const char* kWords[] = {"Ball", "Called strike", "Swinging strike", "Foul", "Foul tip", "In play", "Hit by pitch"};
+    std::snprintf(text, sizeof text, "%s   (%d-%d)", kWords[static_cast<int>(r)], count_.balls, count_.strikes);
+    // A foul's or a miss's own words (call_text_) come first when the swing made some.
+    call_text_ = (r == PitchResult::Foul || r == PitchResult::SwingingStrike) && !call_text_.empty()
+                     ? call_text_ + "   (" + std::to_string(count_.balls) + "-" + std::to_string(count_.strikes) + ")"
+                     : std::string(text);
+    return;
+  }
+  ++at_bats_.pa;
+  switch (end) {
+    case PlateEnd::Strikeout:
+      ++at_bats_.strikeouts;
+      ++at_bats_.outs;
+      call_text_ = r == PitchResult::CalledStrike ? "Strikeout looking" : r == PitchResult::FoulTip ? "Strikeout on a foul tip"
+                                                                                                  : "Strikeout swinging";
+      break;
+    case PlateEnd::Walk: ++at_bats_.walks; call_text_ = "Walk"; break;
+    case PlateEnd::HitByPitch: ++at_bats_.hit_by_pitch; call_text_ = "Hit by pitch"; break;
+    default: {
+      const BattedOutcome o = last_.result.outcome;
+      const bool hit = o == BattedOutcome::Single || o == BattedOutcome::Double || o == BattedOutcome::Triple ||
+                       o == BattedOutcome::HomeRun;
+      at_bats_.hits += hit;
+      at_bats_.home_runs += o == BattedOutcome::HomeRun;
+      at_bats_.outs += o == BattedOutcome::Out;
+      break;  // the batted ball's words stay
+    }
+  }
+  count_ = Count{};
 }
 
 void BattingCage::update(const Intents& intents, double now) {
@@ -25,8 +72,15 @@ void BattingCage::advance(double t) {
     last_.call = call_;
     last_.pitch = pitch_;
     last_.swung = false;
-    call_text_ = in_zone(pitch_.plate, assets_.equipment().ball("mlb").radius) ? "Called strike" : "Ball";
+    const double r = assets_.equipment().ball("mlb").radius;
+    call_text_ = in_zone(pitch_.plate, r) ? "Called strike" : "Ball";
     stage_ = Stage::Called;
+    if (live_) {
+      const PitchResult call = hits_batter(pitch_.plate, lefty_, r) ? PitchResult::HitByPitch
+                               : StrikeZone::contains(pitch_.plate, r) ? PitchResult::CalledStrike
+                                                                     : PitchResult::Ball;
+      count_pitch(call);
+    }
   }
   if (stage_ == Stage::Batted && t - batted_at_ >= duration(last_.result.shot.trajectory)) stage_ = Stage::Called;
 }
@@ -61,6 +115,12 @@ void BattingCage::swing(const SwingInput& s, double t) {
     stage_ = Stage::Called;
   }
   call_text_ = text;
+  if (live_) {
+    const BattedOutcome o = last_.result.outcome;
+    count_pitch(!last_.result.contact     ? PitchResult::SwingingStrike
+                : o == BattedOutcome::Foul ? (last_.result.foul_tip ? PitchResult::FoulTip : PitchResult::Foul)
+                                           : PitchResult::InPlay);
+  }
 }
 
 void BattingCage::apply(const Intent& in) {
@@ -73,22 +133,27 @@ void BattingCage::apply(const Intent& in) {
       break;
     case IntentKind::TogglePower: power_ = !power_; break;
     case IntentKind::ToggleSide: lefty_ = !lefty_; break;
+    case IntentKind::ToggleLive:
+      // Between pitches: batting practice, or a live at-bat from 0-0.
+      if (stage_ == Stage::Pitching) break;
+      live_ = !live_;
+      count_ = Count{};
+      call_text_ = live_ ? "Live at-bat against the league's pitcher" : "Batting practice";
+      break;
     case IntentKind::Restart:
       // A fresh session: the record cleared, the next pitch on call.
       swings_.clear();
       last_ = SwingRecord{};
       call_text_.clear();
+      count_ = Count{};
+      at_bats_ = AtBats{};
       stage_ = Stage::Ready;
       break;
     case IntentKind::Pitch:
     case IntentKind::Swing:
       if (stage_ != Stage::Pitching) {
         // Space between pitches calls for the next one, as P does.
-        call_ = derby_pitch(types_, rng_);
-        pitch_ = throw_pitch(assets_, call_);
-        released_at_ = t + kWindupTime / kPitchTimeScale;
-        stage_ = Stage::Pitching;
-        call_text_.clear();
+        next_pitch(t);
       } else if (in.kind == IntentKind::Swing && pitch_clock(t) >= 0.0) {  // he holds until the ball is on its way
         SwingInput s;
         s.timing_ms = std::clamp(1000.0 * (pitch_clock(t) - pitch_.flight_time), SwingInput::kTiming.min, SwingInput::kTiming.max);

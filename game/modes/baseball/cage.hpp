@@ -1,4 +1,6 @@
-// The batting cage as a headless model (DESIGN §1, §9): batting-practice pitches on call,
+// The batting cage as a headless model (DESIGN §1, §9): batting-practice pitches on call, or
+// live at-bats against the league's pitcher (his arsenal and plan by count, balls, strikes,
+// fouls, walks, strikeouts, hit-by-pitch),
 // the swing judged from the moment its key went down against the pitch's arrival, the bat's
 // height, power or contact, the batter's side, the pro bot on request, and the session's
 // record. The window's view draws it; the tests drive it with scripted intents.
@@ -7,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "game/modes/baseball/pitcher.hpp"
 #include "game/modes/baseball/session.hpp"
 #include "game/modes/intent.hpp"
 
@@ -44,11 +47,21 @@ class BattingCage {
   const SwingRecord& last() const { return last_; }
   const std::vector<SwingRecord>& swings() const { return swings_; }
   const std::string& call_text() const { return call_text_; }
+  /// Live at-bats: the count, and the plate appearances so far.
+  bool live() const { return live_; }
+  const Count& count() const { return count_; }
+  struct AtBats {
+    int pa = 0, strikeouts = 0, walks = 0, hit_by_pitch = 0, hits = 0, home_runs = 0, outs = 0;
+  };
+  const AtBats& at_bats() const { return at_bats_; }
 
  private:
   void apply(const Intent& in);
   void advance(double t);
   void swing(const SwingInput& s, double t);
+  void next_pitch(double t);
+  /// Live: the pitch's result on the count, and the plate appearance's end when it comes.
+  void count_pitch(PitchResult r);
 
   const Assets& assets_;
   std::vector<PitchType> types_;
@@ -64,6 +77,10 @@ class BattingCage {
   SwingRecord last_;
   std::vector<SwingRecord> swings_;
   std::string call_text_;
+  bool live_ = false;
+  Pitcher pitcher_;
+  Count count_;
+  AtBats at_bats_;
 };
 
 }  // namespace sweetspot

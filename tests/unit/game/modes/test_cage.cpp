@@ -2,6 +2,9 @@
 // press against the pitch's arrival, whatever the frame rate.
 #include <catch2/catch.hpp>
 
+#include <set>
+#include <string>
+
 #include "game/modes/baseball/cage.hpp"
 #include "game/modes/baseball/figures.hpp"
 #include "support/test_assets.hpp"
@@ -61,4 +64,36 @@ TEST_CASE("a pitch left alone is called; the pro swings on request; restart clea
   cage.update({at(IntentKind::Restart, 6.0)}, 6.0);
   CHECK(cage.swings().empty());
   CHECK(cage.stage() == BattingCage::Stage::Ready);
+}
+
+TEST_CASE("a live at-bat: the league's pitcher mixes his pitches, the count decides the plate appearance",
+          "[modes][baseball]") {
+  BattingCage cage(test::assets(), 3);
+  cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);
+  REQUIRE(cage.live());
+  double now = 1.0;
+  std::set<std::string> types;
+  // A batter who never swings: every plate appearance ends in a walk, a called strikeout or
+  // a hit-by-pitch, and the count follows the calls.
+  while (cage.at_bats().pa < 3) {
+    const Count before = cage.count();
+    cage.update({at(IntentKind::Pitch, now)}, now);
+    REQUIRE(cage.stage() == BattingCage::Stage::Pitching);
+    types.insert(cage.call().type.type);
+    now += (kWindupTime + cage.pitch().flight_time + BattingCage::kTakenAfter) / BattingCage::kPitchTimeScale + 0.01;
+    cage.update({}, now);
+    REQUIRE(cage.stage() == BattingCage::Stage::Called);
+    const std::string& text = cage.call_text();
+    const bool ended = text == "Walk" || text == "Strikeout looking" || text == "Hit by pitch";
+    if (ended) {
+      CHECK((cage.count().balls == 0 && cage.count().strikes == 0));
+    } else {
+      CHECK(cage.count().balls + cage.count().strikes == before.balls + before.strikes + 1);
+    }
+    now += 0.5;
+  }
+  const BattingCage::AtBats& a = cage.at_bats();
+  CHECK(a.walks + a.strikeouts + a.hit_by_pitch == 3);
+  CHECK(a.hits == 0);
+  CHECK(types.size() >= 2);  // not one pitch over and over
 }

@@ -50,7 +50,8 @@ int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
     if (o.games == 1) {
       for (const PlateAppearance& pa : game.plate_appearances)
         std::printf("%s %-2d %-6s #%d  %-32s %s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
-                    pa.batter + 1, pa.description.c_str(), pa.runs > 0 ? (std::to_string(pa.runs) + " run(s) score").c_str() : "");
+                    pa.batter + 1, pa.description.c_str(),
+                    pa.runs == 1 ? "1 run scores" : pa.runs > 1 ? (std::to_string(pa.runs) + " runs score").c_str() : "");
       std::printf("\n%s", box_score_text(game).c_str());
     } else {
       std::printf("game %d (seed %llu): away %d, home %d in %d innings\n", i + 1, static_cast<unsigned long long>(g.seed),

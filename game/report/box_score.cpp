@@ -22,7 +22,14 @@ nlohmann::json team_json(const TeamBox& t) {
     b["bats"] = bats_left(static_cast<int>(i)) ? "L" : "R";
     batting.push_back(b);
   }
-  const PitchingLine& p = t.pitching;
+  const auto pitching = [](const PitchingLine& p) {
+    return nlohmann::json{{"outs", p.outs},
+                          {"innings_pitched", std::to_string(p.outs / 3) + "." + std::to_string(p.outs % 3)},
+                          {"batters_faced", p.batters}, {"h", p.h}, {"r", p.r}, {"bb", p.bb}, {"so", p.so}, {"hr", p.hr},
+                          {"hbp", p.hbp}, {"pitches", p.pitches}, {"strikes", p.strikes}};
+  };
+  nlohmann::json pitchers = nlohmann::json::array();
+  for (const PitchingLine& p : t.pitchers) pitchers.push_back(pitching(p));
   return {{"team", t.name},
           {"runs_by_inning", t.runs_by_inning},
           {"runs", t.runs},
@@ -30,10 +37,8 @@ nlohmann::json team_json(const TeamBox& t) {
           {"errors", t.errors},
           {"left_on_base", t.left_on_base},
           {"batting", batting},
-          {"pitching",
-           {{"outs", p.outs}, {"innings_pitched", std::to_string(p.outs / 3) + "." + std::to_string(p.outs % 3)},
-            {"batters_faced", p.batters}, {"h", p.h}, {"r", p.r}, {"bb", p.bb}, {"so", p.so}, {"hr", p.hr},
-            {"hbp", p.hbp}, {"pitches", p.pitches}, {"strikes", p.strikes}}}};
+          {"pitching", pitching(t.pitching)},
+          {"pitchers", pitchers}};
 }
 
 nlohmann::json pitch_json(const PitchRecord& p) {
@@ -145,11 +150,14 @@ std::string box_score_text(const GameRecord& g) {
     line(out, "%-10s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d   LOB %d\n", "Totals", sum.ab, sum.r, sum.h, sum.doubles,
          sum.triples, sum.hr, sum.rbi, sum.bb, sum.so, sum.hbp, sum.sf, t->left_on_base);
   }
-  line(out, "\nPitching     IP   H  R BB SO HR  Pitches-strikes\n");
+  line(out, "\nPitching       IP   H  R BB SO HR  Pitches-strikes\n");
   for (const TeamBox* t : {&g.away, &g.home}) {
-    const PitchingLine& p = t->pitching;
-    line(out, "%-10s %2d.%d %3d %2d %2d %2d %2d  %d-%d\n", t->name.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.bb, p.so, p.hr,
-         p.pitches, p.strikes);
+    for (std::size_t i = 0; i < t->pitchers.size(); ++i) {
+      const PitchingLine& p = t->pitchers[i];
+      const std::string who = t->name + (i == 0 ? " SP" : " RP" + std::to_string(i));
+      line(out, "%-12s %2d.%d %3d %2d %2d %2d %2d  %d-%d\n", who.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.bb, p.so, p.hr,
+           p.pitches, p.strikes);
+    }
   }
   if (g.walk_off) line(out, "\nWalk-off in the %s.\n", ordinal(g.innings_played).c_str());
   if (g.stopped_tied) line(out, "\nStopped tied after %d innings.\n", g.innings_played);

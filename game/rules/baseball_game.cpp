@@ -80,6 +80,13 @@ std::string box_score_mismatch(const TeamBox& bat, const TeamBox& field) {
   if (sum.r != bat.runs) return who + "the batters' runs do not add up to the team's";
   if (sum.h != bat.hits) return who + "the batters' hits do not add up to the team's";
   const PitchingLine& p = field.pitching;
+  if (!field.pitchers.empty()) {
+    PitchingLine staff;
+    for (const PitchingLine& one : field.pitchers) staff += one;
+    if (staff.outs != p.outs || staff.r != p.r || staff.h != p.h || staff.bb != p.bb || staff.so != p.so ||
+        staff.pitches != p.pitches || staff.batters != p.batters)
+      return field.name + ": the pitchers' lines do not add up to the staff's";
+  }
   if (p.r != bat.runs || p.h != bat.hits || p.bb != sum.bb || p.so != sum.so || p.hr != sum.hr || p.hbp != sum.hbp ||
       p.batters != sum.pa)
     return who + "the opposing pitcher's line does not match the batting";

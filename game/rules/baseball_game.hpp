@@ -59,13 +59,14 @@ struct TeamBox {
   std::vector<int> runs_by_inning;  ///< one entry per half it batted
   int runs = 0, hits = 0, errors = 0, left_on_base = 0;
   std::vector<BattingLine> batting;  ///< by batting order
-  PitchingLine pitching;             ///< its pitcher, against the other team
+  PitchingLine pitching;             ///< its pitchers together, against the other team
+  std::vector<PitchingLine> pitchers;///< each pitcher in the order they pitched
 };
 
 /// Every way the lines of a box score must agree (the runs by inning add up to the runs, the
-/// batters' runs and hits to the team's, the opponents' pitching to the batting, a plate
-/// appearance is an at-bat, a walk, a hit-by-pitch or a sacrifice fly); "" when they all
-/// do, otherwise the first that does not.
+/// batters' runs and hits to the team's, the opponents' pitching to the batting, their
+/// pitchers' lines to their staff's, a plate appearance is an at-bat, a walk, a hit-by-pitch
+/// or a sacrifice fly); "" when they all do, otherwise the first that does not.
 std::string box_score_mismatch(const TeamBox& batting, const TeamBox& fielding);
 
 }  // namespace sweetspot

@@ -38,6 +38,14 @@ double run_time(double speed, double distance) { return distance / std::max(spee
 
 bool bats_left(int order) { return order == 1 || order == 3 || order == 5 || order == 8; }
 
+bool Team::to_the_bullpen(std::uint64_t seed) {
+  const int thrown = pitcher.pitches_thrown();
+  if (pitchers_used == 1 ? thrown < kStarterPitches : thrown == 0) return false;
+  pitcher = Pitcher(pitcher.profile(), seed);
+  ++pitchers_used;
+  return true;
+}
+
 Team::Team(const Assets& assets, std::string team_name, const BatterSkill& skill, std::uint64_t seed)
     : name(std::move(team_name)),
       pitcher(league_average_pitcher(load_pitch_types(assets)), seed ^ 0x9E3779B97F4A7C15ULL),
@@ -262,6 +270,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
   for (int t = 0; t < 2; ++t) {
     box[t].name = teams[t].name;
     box[t].batting.assign(9, BattingLine{});
+    box[t].pitchers.assign(1, PitchingLine{});
   }
   int next_up[2] = {0, 0};
   GameSituation s;
@@ -275,6 +284,9 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
       Team& bat = teams[half];
       Team& field = teams[1 - half];
       HalfInning h{assets, env, {-1, -1, -1}, 0};
+      // The fielding team's bullpen: a fresh pitcher for the inning when his turn has come.
+      if (field.to_the_bullpen(o.seed * 1000003ULL + static_cast<std::uint64_t>(2 * s.inning + half)))
+        box[1 - half].pitchers.emplace_back();
       // Extra innings start with a runner on second: the batter before this half's leadoff
       // man (MLB Rule 7.01(b), since 2023).
       if (s.inning > s.scheduled) h.bases[1] = (next_up[half] + 8) % 9;
@@ -312,6 +324,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
         (s.bottom ? s.home_runs : s.away_runs) += pa.runs;
         credit_batter(box[half].batting[static_cast<std::size_t>(batter)], pa);
         charge_pitcher(box[1 - half].pitching, pa);
+        charge_pitcher(box[1 - half].pitchers.back(), pa);
         g.plate_appearances.push_back(std::move(pa));
         s.outs = h.outs;
         if (s.bottom && game_over(s) && h.outs < 3) {

@@ -54,8 +54,15 @@ class Team {
   Team(const Assets& assets, std::string name, const BatterSkill& skill, std::uint64_t seed);
   std::string name;
   std::vector<Hitter> lineup;
-  Pitcher pitcher;
-  ScoutingReport report;  ///< of this team's pitcher, as the other team knows him
+  Pitcher pitcher;         ///< the one on the mound
+  ScoutingReport report;   ///< of this team's pitchers, as the other team knows them
+  int pitchers_used = 1;
+  /// Between half-innings: the starter gives way to the bullpen once he has thrown
+  /// kStarterPitches, each reliever after an inning of work (ESTIMATE of today's usage: MLB
+  /// starters averaged ~88 pitches in 2023, relievers about an inning). Returns whether he did.
+  bool to_the_bullpen(std::uint64_t seed);
+  static constexpr int kStarterPitches = 95;
+  int pitcher_started_inning = 1;
   Defense defense;
   Rng fielding_rng;
 };

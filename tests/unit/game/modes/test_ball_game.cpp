@@ -62,6 +62,11 @@ TEST_CASE("a nine-inning game: the box score adds up, 27 outs a side unless the 
     } else {
       CHECK(outs_of(g, true) == 3 * innings);
     }
+    // The starter gives way to the bullpen: nobody throws a hundred and fifty pitches.
+    for (const TeamBox* t : {&g.away, &g.home}) {
+      CHECK(t->pitchers.size() >= 2);
+      for (const PitchingLine& p : t->pitchers) CHECK(p.pitches <= 135);
+    }
     // Runs by inning: one entry a half played.
     CHECK(g.away.runs_by_inning.size() == static_cast<std::size_t>(innings));
     // Every plate appearance ends in one of the documented results.

@@ -73,14 +73,13 @@ void BattingCage::advance(double t) {
     last_.pitch = pitch_;
     last_.swung = false;
     const double r = assets_.equipment().ball("mlb").radius;
-    call_text_ = in_zone(pitch_.plate, r) ? "Called strike" : "Ball";
+    const bool strike = StrikeZone::contains(pitch_.plate, r);
+    call_text_ = strike ? "Called strike" : "Ball";
     stage_ = Stage::Called;
-    if (live_) {
-      const PitchResult call = hits_batter(pitch_.plate, lefty_, r) ? PitchResult::HitByPitch
-                               : StrikeZone::contains(pitch_.plate, r) ? PitchResult::CalledStrike
-                                                                     : PitchResult::Ball;
-      count_pitch(call);
-    }
+    if (live_)
+      count_pitch(hits_batter(pitch_.plate, lefty_, r) ? PitchResult::HitByPitch
+                  : strike                              ? PitchResult::CalledStrike
+                                                        : PitchResult::Ball);
   }
   if (stage_ == Stage::Batted && t - batted_at_ >= duration(last_.result.shot.trajectory)) stage_ = Stage::Called;
 }

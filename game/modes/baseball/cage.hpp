@@ -22,7 +22,7 @@ class BattingCage {
   /// The pitch plays at this fraction of real time: 0.4 s is a hitter's lifetime, not a game's.
   static constexpr double kPitchTimeScale = 0.5;
   /// The strike zone's bottom and top (ft 1.6 and 3.5, as in_zone) and the plate's half width, m.
-  static constexpr double kZoneLow = 1.6 * 0.3048, kZoneHigh = 3.5 * 0.3048, kPlateHalf = 0.2159;
+  static constexpr double kZoneLow = StrikeZone::kLow, kZoneHigh = StrikeZone::kHigh, kPlateHalf = StrikeZone::kHalfWidth;
   /// After the pitch crosses the plate it is taken (called) once this much pitch time more has passed.
   static constexpr double kTakenAfter = 0.15;  // s
   /// The pitcher's delivery before the release, in pitch time (figures.hpp kWindupTime): a

@@ -87,6 +87,11 @@ bool in_foul_ground(const Vec3& p) {
   return out <= kFoulGround && std::hypot(p.x(), p.z()) < 140.0;
 }
 
+// From having the ball at `from` to the ball at base `base`: the transfer, then the throw.
+double transfer_and_throw(const Thrower& thrower, const Vec3& from, int base) {
+  return kTransfer + thrower.to(std::min(horizontal(from, base_position(base)), 999.0)).time;
+}
+
 const char* field_part(const Vec3& p) {
   const double a = rad_to_deg(spray(p));
   return a < -15.0 ? "LF" : a > 15.0 ? "RF" : "CF";
@@ -205,8 +210,7 @@ double catch_probability(double spare) {
 }
 
 double throw_time(const FielderAbility& f, const AeroModel& aero, const Environment& env, const Vec3& from, int base) {
-  const Thrower thrower(aero, env, f.arm, kTransfer);
-  return kTransfer + thrower.to(std::min(horizontal(from, base_position(base)), 999.0)).time;
+  return transfer_and_throw(Thrower(aero, env, f.arm, kTransfer), from, base);
 }
 
 FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Environment& env, const Defense& defense,
@@ -312,7 +316,8 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   play.fielded_time = first_t;
   play.goal[first_f] = first_p;
   const FielderAbility& f = defense.ability[first_f];
-  const auto defence = [&](int base) { return first_t + throw_time(f, aero, env, first_p, base); };
+  const Thrower thrower(aero, env, f.arm, kTransfer);  // once for the bases he may throw to
+  const auto defence = [&](int base) { return first_t + transfer_and_throw(thrower, first_p, base); };
   const double to_first = play.batter_to_first;
   const double base_to_base = kBaseLine / std::max(batter_sprint, 1.0) + kTurn;
   if (defence(1) < to_first) {

@@ -9,15 +9,9 @@
 namespace sweetspot {
 namespace {
 
-constexpr double kPlateHalf = 0.2159;          // m, 17 in / 2
-constexpr double kZoneLow = 1.6 * 0.3048, kZoneHigh = 3.5 * 0.3048;
 constexpr double kDerbySpeed = 27.7;           // m/s, ~62 mph
 
 }  // namespace
-
-bool in_zone(const Vec3& p, double r) {
-  return std::abs(p.z()) <= kPlateHalf + r && p.y() >= kZoneLow - r && p.y() <= kZoneHigh + r;
-}
 
 PitchCall derby_pitch(const std::vector<PitchType>& types, Rng& rng) {
   PitchCall c;
@@ -78,16 +72,6 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
   s.timing_ms = std::clamp(timing + rng_.normal(skill_.timing_sd_ms), SwingInput::kTiming.min, SwingInput::kTiming.max);
   s.undercut = std::clamp(s.undercut + rng_.normal(skill_.height_sd), SwingInput::kUndercut.min, SwingInput::kUndercut.max);
   return s;
-}
-
-bool BotBatter::swings_at(const PitchFlight& pitch, int strikes) {
-  Vec3 seen = pitch.plate;
-  seen.y() += rng_.normal(skill_.eye_sd);
-  seen.z() += rng_.normal(skill_.eye_sd);
-  const double r = 0.0369;
-  if (in_zone(seen, r)) return true;
-  // With two strikes, protect the plate: swing at anything close.
-  return strikes >= 2 && in_zone(seen, r + 0.08);
 }
 
 std::vector<SwingRecord> run_session(const Assets& assets, const SessionOptions& o, BotBatter& bot, std::uint64_t seed) {

@@ -42,8 +42,6 @@ class BotBatter {
   /// The swing it means (timing 0, the height that drives the ball farthest for a derby, a
   /// line drive otherwise), then its errors.
   SwingInput plan(const PitchFlight& pitch, bool derby, bool left_handed);
-  /// Whether it offers at a pitch: it reads the location with its eye's error.
-  bool swings_at(const PitchFlight& pitch, int strikes);
   const BatterSkill& skill() const { return skill_; }
 
  private:
@@ -53,10 +51,6 @@ class BotBatter {
   double derby_undercut_ = -1.0;
   double derby_timing_ = 0.0;
 };
-
-/// The strike zone at the plate: 17 in wide (the plate), 1.6 to 3.5 ft high (the league's
-/// typical zone; MLB Rule 2.00 defines it by the batter's stance). Ball-centre limits.
-bool in_zone(const Vec3& plate, double ball_radius);
 
 /// Runs a session with the bot; every swing recorded (JSON as DESIGN §9 for the derby).
 std::vector<SwingRecord> run_session(const Assets& assets, const SessionOptions& o, BotBatter& bot, std::uint64_t seed);

@@ -180,6 +180,20 @@ Vec3 flight_position_between(const Vec3& p0, const Vec3& v0, double t0, const Ve
 }
 
 // ---- 3. recording --------------------------------------------------------------------------
+namespace {
+
+// The summary's landing figures from the state at the first touch and the velocity it came in with.
+void note_landing(FlightSummary& sum, const Vec3& launch, const ShotState& after, const Vec3& v) {
+  const Vec3 p = after.position();
+  sum.carry_m = std::hypot(p.x() - launch.x(), p.z() - launch.z());
+  sum.hang_time_s = after.t;
+  sum.lateral_m = p.z() - launch.z();
+  sum.landing_position = p;
+  sum.landing_angle_deg = rad_to_deg(std::atan2(-v.y(), std::hypot(v.x(), v.z())));
+}
+
+}  // namespace
+
 TrajectoryRecorder::TrajectoryRecorder(const ShotState& launch, bool record_samples, double interval)
     : launch_(launch.position()), record_(record_samples), interval_(interval) {
   if (record_) {
@@ -193,15 +207,7 @@ void TrajectoryRecorder::add(const ShotState& before, const ShotState& after, co
   FlightSummary& sum = out_.summary;
   const bool touched = ev.kind == ShotEventKind::Landing || ev.kind == ShotEventKind::Bounce ||
                        ev.kind == ShotEventKind::Roll;
-  if (ev.kind == ShotEventKind::Landing) {
-    const Vec3 p = after.position();
-    sum.carry_m = std::hypot(p.x() - launch_.x(), p.z() - launch_.z());
-    sum.hang_time_s = after.t;
-    sum.lateral_m = p.z() - launch_.z();
-    sum.landing_position = p;
-    const Vec3& v = ev.velocity_in;
-    sum.landing_angle_deg = rad_to_deg(std::atan2(-v.y(), std::hypot(v.x(), v.z())));
-  }
+  if (ev.kind == ShotEventKind::Landing) note_landing(sum, launch_, after, ev.velocity_in);
   if (!record_) return;
   const bool was_airborne = before.phase == Phase::Flight || before.phase == Phase::Bounce;
   if (was_airborne) {
@@ -225,6 +231,38 @@ void TrajectoryRecorder::add(const ShotState& before, const ShotState& after, co
                           : after.phase == Phase::Roll ? Phase::Roll
                                                         : Phase::Bounce});
   if (after.phase == Phase::Bounce) next_sample_ = after.t + interval_;
+}
+
+ShotTrajectory TrajectoryRecorder::finish(const ShotState& last, const ShotModel& model) {
+  ShotTrajectory out = finish(last);
+  const double field = model.terrain->reference_height();
+  if (last.landed || last.end != EndReason::LeftWorld || last.phase != Phase::Flight ||
+      !(last.position().y() > field + model.ball.radius)) {
+    return out;  // landed, stopped for another reason, or left below the field's level
+  }
+  // The rest of the flight over open ground: the same air, ball and settings, no world.
+  const FlatGround open_ground(default_fairway(), field);
+  ShotModel open = model;
+  open.terrain = &open_ground;
+  open.cup.reset();
+  // The flight so far was judged against its own tolerance; its rest, a few hundred metres
+  // more air, is flown at a twentieth of it so the projected carry holds flight's 1 cm
+  // contract (at the shot's tolerance the default-tolerance carries of long drives that
+  // leave golf_hole drift 8 mm from the tight reference). It runs only for such shots.
+  open.settings.rel_tol = model.settings.rel_tol / 20.0;
+  ShotState s = last;
+  s.ended = false;
+  // Bounded: a ball a few hundred metres up comes down within a minute of air time.
+  constexpr double kMaxExtraTime = 120.0;  // s
+  while (!s.ended && s.t < last.t + kMaxExtraTime) {
+    const ShotEvent ev = step(open, s);
+    if (ev.kind != ShotEventKind::Landing) continue;
+    note_landing(out.summary, launch_, s, ev.velocity_in);
+    out.summary.total_m = out.summary.carry_m;
+    out.summary.apex_m = std::max(out.summary.apex_m, s.max_height - launch_.y());
+    break;
+  }
+  return out;
 }
 
 ShotTrajectory TrajectoryRecorder::finish(const ShotState& last) {
@@ -273,7 +311,7 @@ ShotTrajectory simulate_shot(const ShotModel& model, const LaunchState& launch, 
     const ShotEvent ev = step(model, s);
     rec.add(before, s, ev);
   }
-  return rec.finish(s);
+  return rec.finish(s, model);
 }
 
 }  // namespace sweetspot

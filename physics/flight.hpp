@@ -179,6 +179,12 @@ class TrajectoryRecorder {
   void add(const ShotState& before, const ShotState& after, const ShotEvent& event);
   /// The trajectory ending at `last` (its end reason and rest position).
   ShotTrajectory finish(const ShotState& last);
+  /// The same, and a ball that left the world's bounds in the air is flown on over open,
+  /// flat ground at the field's level (the terrain's reference height) with `model`'s air:
+  /// its carry, hang time, landing angle and apex are where it would have come down, as
+  /// Statcast projects a home run's distance to field level. Its rest position stays where
+  /// it left the world; its total is that carry.
+  ShotTrajectory finish(const ShotState& last, const ShotModel& model);
 
  private:
   ShotTrajectory out_;

@@ -187,7 +187,7 @@ ShotResult run_shot(const ResolvedShot& s, const std::string& name, const RunOpt
     recorder.add(before, state, ev);
     over = rules->observe(before, state, ev);
   }
-  r.trajectory = recorder.finish(state);
+  r.trajectory = recorder.finish(state, rules->model());
   r.end = rules->outcome(state);
   r.final_state = state;
   return r;

@@ -142,3 +142,27 @@ TEST_CASE("values outside what laboratories measure run, with a warning naming t
   for (const char* s : {"golf/driver", "golf/7-iron", "golf/pw", "baseball/line-drive"})
     CHECK_FALSE(mentions(warnings_of(s, {}), "measured for"));
 }
+
+TEST_CASE("a ball that leaves the ballpark in the air reports where it comes down at field level", "[run_shot][projection]") {
+  // Statcast projects a home run's distance to field level. The ballpark's bounds end
+  // ~130 m out; a 120 mph fly carries ~150 m. Over the flat world the same launch lands in
+  // open air all the way: the projection must match it (same air, same field level).
+  const Assets& A = test::assets();
+  const std::vector<std::string> launch = {"launch.ball_speed=120mph", "launch.vertical_angle=30deg",
+                                           "launch.spin=1500rpm"};
+  auto with_world = [&](const char* world) {
+    std::vector<std::string> sets = launch;
+    sets.push_back(std::string("world.name=") + world);
+    ScenarioDoc doc = parse_toml_doc("sport = \"baseball\"\n", "test");
+    for (const auto& s : sets) apply_set(doc, s);
+    return run_scenario(scenario_from_doc(A, doc, "projection"), RunOptions{true, false});
+  };
+  const ShotResult park = with_world("ballpark");
+  const ShotResult open = with_world("none");
+  REQUIRE(park.trajectory.summary.end == EndReason::LeftWorld);
+  CHECK(park.trajectory.summary.carry_m > 140.0);
+  CHECK(std::fabs(park.trajectory.summary.carry_m - open.trajectory.summary.carry_m) < 0.01);
+  CHECK(std::fabs(park.trajectory.summary.landing_angle_deg - open.trajectory.summary.landing_angle_deg) < 0.05);
+  CHECK(std::fabs(park.trajectory.summary.hang_time_s - open.trajectory.summary.hang_time_s) < 1e-3);
+  CHECK(park.trajectory.summary.total_m == park.trajectory.summary.carry_m);
+}

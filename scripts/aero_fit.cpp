@@ -15,6 +15,13 @@
 // Titleist's ~6 %, Frank Thomas's ~9 %, aero_models.toml), plus 10 × how far the worst of
 // them leaves its band, plus 10 × how far the 7-iron's Denver gain exceeds the driver's.
 //
+// AERO_FIT_TEMPERATURE=1 adds TrackMan's temperature study (each 10 F warmer: 1.33-1.66 yd
+// more carry for every club, i.e. 6.0 +- 0.7 yd from 50 to 90 F for the driver, 7-iron and
+// PW) to the objective and drops the 7-iron-below-driver penalty. Measured: the family of
+// Cd(S), Cl(S) with a drag crisis cannot meet it and TrackMan's landing angles together
+// (driver +7.5, 7-iron +6.3, PW +4.5 yd, but PGA rows 2.2 bands out: the fit flattens the
+// crisis that steepens the irons' descent). docs/validation.md has the analysis.
+//
 // ctest runs it for a few hundred steps from the shipped model: a model at the fit's optimum
 // barely improves (the check fails if the objective falls by more than 2 %, i.e. someone
 // edited the coefficients without fitting them again).
@@ -41,14 +48,19 @@ namespace {
 constexpr double kDenver = 1609.0;                     // m, "mile high"
 constexpr double kGainTarget = 0.075, kGainBand = 0.015;  // Titleist ~6 %, F. Thomas ~9 %
 
-FlightSummary fly(const AeroModel& aero, const TourFlight& r, double altitude) {
+FlightSummary fly(const AeroModel& aero, const TourFlight& r, double altitude, double temperature = 294.15) {
   Environment env;
   env.altitude = altitude;
+  env.temperature = temperature;
   const BallProperties ball = golf_ball_properties();
   const ShotModel m = make_shot_model(ball, aero, env, nullptr, FlightSettings{});
   const LaunchState l = launch_from_metrics(mph_to_mps(r.ball_mph), deg_to_rad(r.launch_deg), 0.0,
                                             rpm_to_radps(r.spin_rpm), 0.0, Vec3(0.0, ball.radius, 0.0));
   return simulate_shot(m, l, false).summary;
+}
+
+double warm_gain_yd(const AeroModel& aero, const TourFlight& r) {
+  return m_to_yd(fly(aero, r, 0.0, fahrenheit_to_kelvin(90.0)).carry_m - fly(aero, r, 0.0, fahrenheit_to_kelvin(50.0)).carry_m);
 }
 
 double denver_gain(const AeroModel& aero, const TourFlight& r) { return fly(aero, r, kDenver).carry_m / fly(aero, r, 0.0).carry_m - 1.0; }
@@ -91,10 +103,13 @@ double objective(const AeroModel& base, const Params& p) {
   const double driver = denver_gain(m, tour_flight(kPgaTourFlights, "driver")),
                seven = denver_gain(m, tour_flight(kPgaTourFlights, "7-iron"));
   b.push_back(std::abs(driver - kGainTarget) / kGainBand);
+  if (std::getenv("AERO_FIT_TEMPERATURE"))
+    for (const char* club : {"driver", "7-iron", "pw"})
+      b.push_back(std::abs(warm_gain_yd(m, tour_flight(kPgaTourFlights, club)) - 6.0) / 0.7);
   double ss = 0.0, worst = 0.0;
   for (const double x : b) ss += x * x, worst = std::max(worst, x);
   return std::sqrt(ss / static_cast<double>(b.size())) + 10.0 * std::max(0.0, worst - 1.0) +
-         10.0 * std::max(0.0, seven - driver);
+         (std::getenv("AERO_FIT_TEMPERATURE") ? 0.0 : 10.0 * std::max(0.0, seven - driver));
 }
 
 /// Nelder-Mead (reflection 1, expansion 2, contraction 1/2, shrink 1/2) from `start`, each
@@ -175,6 +190,9 @@ int run(int argc, char** argv) {
   std::printf("TrackMan LPGA (not fitted):\n");
   const double lpga = worst(bands(m, kLpgaTourFlights, true));
   std::printf("worst of a band: PGA %.2f, LPGA %.2f\n", pga, lpga);
+  std::printf("50->90 F carry gain: driver %+.1f yd, 7-iron %+.1f yd, PW %+.1f yd\n",
+              warm_gain_yd(m, tour_flight(kPgaTourFlights, "driver")), warm_gain_yd(m, tour_flight(kPgaTourFlights, "7-iron")),
+              warm_gain_yd(m, tour_flight(kPgaTourFlights, "pw")));
   std::printf("Denver carry gain: driver %+.1f %%, 7-iron %+.1f %%, PW %+.1f %%, LPGA driver %+.1f %%\n",
               100.0 * denver_gain(m, tour_flight(kPgaTourFlights, "driver")),
               100.0 * denver_gain(m, tour_flight(kPgaTourFlights, "7-iron")),

@@ -1,7 +1,9 @@
-// `sweetspot validate [--json] [--junit FILE] [--filter TAG] [--min-pass-rate P] [--library PATH]`:
+// `sweetspot validate [--json] [--junit FILE] [--filter TAG] [--min-pass-rate P [--min-unfitted-pass-rate Q]]
+// [--library PATH]`:
 // the published references of assets/validation run through the shot and pitch paths
 // (docs/validation.md). Exit 0 when every case passes (with --min-pass-rate: when at least
-// P % do), 1 otherwise, 2 for a bad library or flag (nothing written).
+// P % do, and Q % of those never fitted), 1 otherwise, 2 for a bad library or flag (nothing
+// written).
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -19,6 +21,7 @@ namespace {
 struct ValidateOptions {
   std::string library, junit, filter;
   double min_pass_rate = -1.0;
+  double min_unfitted_pass_rate = -1.0;
   bool json = false;
 };
 
@@ -29,6 +32,9 @@ RunFn setup_validate(CLI::App& sub) {
   sub.add_option("--filter", o->filter, "run only the cases with this tag (golf, baseball, launch, carry, roll, ...)");
   sub.add_option("--min-pass-rate", o->min_pass_rate,
                  "exit 0 when at least this percent of the cases pass (default: every case must)")
+      ->check(CLI::Range(0.0, 100.0));
+  sub.add_option("--min-unfitted-pass-rate", o->min_unfitted_pass_rate,
+                 "with --min-pass-rate: also at least this percent of the cases no model was fitted to")
       ->check(CLI::Range(0.0, 100.0));
   sub.add_option("--library", o->library, "a validation file or folder (default: the assets' validation/)");
   return [o](const Assets& assets) -> int {
@@ -51,7 +57,13 @@ RunFn setup_validate(CLI::App& sub) {
     else
       std::cout << validation_scorecard(lib, outcomes);
     const ValidationTotals t = validation_totals(outcomes);
-    if (o->min_pass_rate >= 0.0) return t.all.percent() + 1e-9 >= o->min_pass_rate ? 0 : 1;
+    if (o->min_unfitted_pass_rate >= 0.0 && o->min_pass_rate < 0.0)
+      throw InputError("--min-unfitted-pass-rate: give --min-pass-rate too (without it every case must pass)");
+    if (o->min_pass_rate >= 0.0) {
+      const bool all_ok = t.all.percent() + 1e-9 >= o->min_pass_rate;
+      const bool unfitted_ok = o->min_unfitted_pass_rate < 0.0 || t.not_fitted.percent() + 1e-9 >= o->min_unfitted_pass_rate;
+      return all_ok && unfitted_ok ? 0 : 1;
+    }
     return t.all.failed == 0 ? 0 : 1;
   };
 }

@@ -57,6 +57,12 @@ set +e
 "$bin" validate --library "$tmp/lib.toml" --min-pass-rate 51 >/dev/null; rc=$?
 set -e
 [ $rc -eq 1 ] || fail "--min-pass-rate 51 gave exit $rc, want 1"
+# The one unfitted case fails: 0 % of them pass.
+"$bin" validate --library "$tmp/lib.toml" --min-pass-rate 50 --min-unfitted-pass-rate 0 >/dev/null || fail "unfitted floor 0"
+set +e
+"$bin" validate --library "$tmp/lib.toml" --min-pass-rate 50 --min-unfitted-pass-rate 1 >/dev/null; rc=$?
+set -e
+[ $rc -eq 1 ] || fail "--min-unfitted-pass-rate 1 gave exit $rc, want 1"
 
 set +e
 "$bin" validate --library "$tmp/lib.toml" --json >"$tmp/v.json"; rc=$?
@@ -88,6 +94,7 @@ expect2() {
 expect2 "unknown tag" "--filter" --library "$tmp/lib.toml" --filter swimming
 expect2 "rate out of range" "min-pass-rate" --library "$tmp/lib.toml" --min-pass-rate 101
 expect2 "missing library" "nope" --library "$tmp/nope"
+expect2 "unfitted floor alone" "min-pass-rate" --library "$tmp/lib.toml" --min-unfitted-pass-rate 10
 sed 's/published = "350yd"/published = "350"/' "$tmp/lib.toml" >"$tmp/bad.toml"
 expect2 "unitless value" "bad.toml:25" --library "$tmp/bad.toml" --junit "$tmp/bad.xml"
 [ ! -e "$tmp/bad.xml" ] || fail "JUnit written for a bad library"

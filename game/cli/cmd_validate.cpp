@@ -55,7 +55,7 @@ RunFn setup_validate(CLI::App& sub) {
     if (o->json)
       std::cout << json_text(validation_json(lib, outcomes)) << "\n";
     else
-      std::cout << validation_scorecard(lib, outcomes);
+      std::cout << validation_scorecard(outcomes);
     const ValidationTotals t = validation_totals(outcomes);
     if (o->min_unfitted_pass_rate >= 0.0 && o->min_pass_rate < 0.0)
       throw InputError("--min-unfitted-pass-rate: give --min-pass-rate too (without it every case must pass)");

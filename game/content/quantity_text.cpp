@@ -19,10 +19,6 @@ std::string_view trim(std::string_view s) {
 
 bool needs_unit(Dimension dim) { return dim != Dimension::Dimensionless; }
 
-namespace {
-
-// The text after a quantity's number ("mph" of "113 mph"), trimmed; all of it when it does
-// not start with a number.
 std::string_view unit_part(std::string_view t) {
   t = trim(t);
   const char* first = t.data();
@@ -33,8 +29,6 @@ std::string_view unit_part(std::string_view t) {
   if (res.ec == std::errc::invalid_argument) return t;
   return trim(std::string_view(res.ptr, static_cast<std::size_t>(last - res.ptr)));
 }
-
-}  // namespace
 
 bool has_unit(std::string_view t) { return trim(t).empty() || !unit_part(t).empty(); }
 

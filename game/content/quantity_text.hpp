@@ -15,6 +15,10 @@ namespace sweetspot {
 /// True when `dim` needs a unit in text: everything but Dimensionless (fractions too: "50%").
 bool needs_unit(Dimension dim);
 
+/// The text after a quantity's number ("mph" of "113 mph"), trimmed; "" for a bare number,
+/// all of it when it does not start with a number.
+std::string_view unit_part(std::string_view text);
+
 /// True when something follows the number ("113mph"); a malformed number counts as having
 /// a unit so the parser reports it properly.
 bool has_unit(std::string_view text);

@@ -1,8 +1,8 @@
 #include "game/content/validation_file.hpp"
 
 #include <algorithm>
-#include <cctype>
 
+#include "game/content/quantity_text.hpp"
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
 
@@ -34,15 +34,10 @@ std::vector<std::string> assignments(const TomlFile& f, const toml::node& n, std
   return out;
 }
 
-// The unit text after the number ("275yd" -> "yd"); "" for a bare number.
+// The unit `published` was written in ("275yd" -> "yd"); "" for a bare number.
 std::string unit_text(const toml::node& n) {
   const auto s = n.value_exact<std::string>();
-  if (!s) return "";
-  std::size_t i = 0;
-  while (i < s->size() && (std::isdigit(static_cast<unsigned char>((*s)[i])) || (*s)[i] == '.' || (*s)[i] == '-' ||
-                           (*s)[i] == '+' || (*s)[i] == 'e' || (*s)[i] == 'E' || (*s)[i] == ' '))
-    ++i;
-  return s->substr(i);
+  return s ? std::string(unit_part(*s)) : std::string();
 }
 
 void read_sources(const TomlFile& f, ValidationLibrary& lib) {
@@ -125,16 +120,26 @@ void read_cases(const TomlFile& f, ValidationLibrary& lib) {
 
 const std::vector<ValidationQuantity>& validation_quantities() {
   static const std::vector<ValidationQuantity> q{
-      {"ball_speed", Dimension::Speed, false},       {"vertical_angle", Dimension::Angle, false},
-      {"horizontal_angle", Dimension::Angle, false}, {"spin", Dimension::AngularVelocity, false},
-      {"backspin", Dimension::AngularVelocity, false}, {"sidespin", Dimension::AngularVelocity, false},
-      {"spin_axis", Dimension::Angle, false},        {"smash_factor", Dimension::Dimensionless, false},
-      {"carry", Dimension::Length, false},           {"total", Dimension::Length, false},
-      {"roll", Dimension::Length, false},            {"apex", Dimension::Length, false},
-      {"landing_angle", Dimension::Angle, false},    {"hang_time", Dimension::Time, false},
-      {"lateral", Dimension::Length, false},         {"distance", Dimension::Length, false},
-      {"induced_vertical_break", Dimension::Length, true}, {"horizontal_break", Dimension::Length, true},
-      {"flight_time", Dimension::Time, true},        {"plate_speed", Dimension::Speed, true},
+      {"ball_speed", Dimension::Speed, false, false},
+      {"vertical_angle", Dimension::Angle, false, false},
+      {"horizontal_angle", Dimension::Angle, false, false},
+      {"spin", Dimension::AngularVelocity, false, false},
+      {"backspin", Dimension::AngularVelocity, false, false},
+      {"sidespin", Dimension::AngularVelocity, false, false},
+      {"spin_axis", Dimension::Angle, false, false},
+      {"smash_factor", Dimension::Dimensionless, false, false},
+      {"carry", Dimension::Length, false, true},
+      {"total", Dimension::Length, false, true},
+      {"roll", Dimension::Length, false, true},
+      {"apex", Dimension::Length, false, true},
+      {"landing_angle", Dimension::Angle, false, true},
+      {"hang_time", Dimension::Time, false, true},
+      {"lateral", Dimension::Length, false, true},
+      {"distance", Dimension::Length, false, true},
+      {"induced_vertical_break", Dimension::Length, true, true},
+      {"horizontal_break", Dimension::Length, true, true},
+      {"flight_time", Dimension::Time, true, true},
+      {"plate_speed", Dimension::Speed, true, true},
   };
   return q;
 }

@@ -27,7 +27,8 @@ struct ValidationSource {
 struct ValidationQuantity {
   std::string_view name;
   Dimension dim;
-  bool pitch;  ///< measured on a pitch (`scenario = "pitch:TYPE"`) rather than a shot
+  bool pitch;   ///< measured on a pitch (`scenario = "pitch:TYPE"`) rather than a shot
+  bool flight;  ///< a shot's quantity that needs the flight, not just the launch
 };
 
 /// Every quantity a case may name (docs/validation.md lists them with their meaning).

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +12,7 @@
 #include <sstream>
 
 #include "game/tuning/impact_case.hpp"
+#include "game/content/quantity_text.hpp"
 #include "game/content/scenario.hpp"
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
@@ -48,20 +48,14 @@ Measured measure_shot(const ShotResult& r) {
   return m;
 }
 
-// The unit a value text was written in: whatever follows the number ("167mph" -> "mph").
+// The unit a value text was written in: whatever follows the number ("167mph" -> "mph"); of
+// a list, its first element's.
 std::string unit_of(std::string_view text) {
   while (!text.empty() && (text.front() == ' ' || text.front() == '[' || text.front() == '"')) text.remove_prefix(1);
   const auto comma = text.find(',');
   if (comma != std::string_view::npos) text = text.substr(0, comma);
   while (!text.empty() && (text.back() == ' ' || text.back() == ']' || text.back() == '"')) text.remove_suffix(1);
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (first != last && (*first == '+' || *first == '-')) ++first;
-  double v = 0.0;
-  const auto res = std::from_chars(first, last, v);
-  std::string_view unit(res.ptr, static_cast<std::size_t>(last - res.ptr));
-  while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
-  return std::string(unit);
+  return std::string(unit_part(text));
 }
 
 std::string number(double v, int digits) {

@@ -61,10 +61,7 @@ double measure_shot(const Assets& assets, const ValidationCase& c, const std::ve
                                        : read_toml_doc(resolve_scenario(assets, c.scenario));
   for (const auto& [s, origin] : conditions(c, extra)) apply_set(doc, s, origin);
   const Scenario sc = scenario_from_doc(assets, doc, c.id);
-  const bool flies = c.quantity->name != "ball_speed" && c.quantity->name != "vertical_angle" &&
-                     c.quantity->name != "horizontal_angle" && c.quantity->name.find("spin") == std::string_view::npos &&
-                     c.quantity->name != "smash_factor";
-  return shot_quantity(run_scenario(sc, RunOptions{flies, false}), c.quantity->name);
+  return shot_quantity(run_scenario(sc, RunOptions{c.quantity->flight, false}), c.quantity->name);
 }
 
 double measure_pitch(const Assets& assets, const ValidationCase& c, const std::vector<std::string>& extra) {

@@ -12,11 +12,11 @@
 namespace sweetspot {
 namespace {
 
+// `si` in the unit the case wrote; a difference (a change, a tolerance) without the unit's
+// offset (none of the quantities has one today, but a temperature would).
 std::string shown(double si, const ValidationCase& c, bool difference) {
   const Dimension dim = c.quantity->dim;
-  // A difference has no affine offset; a quantity that is one (a baseline case) neither.
-  double v = si_to_unit(si, c.unit, dim);
-  if (difference) v = si_to_unit(si, c.unit, dim) - si_to_unit(0.0, c.unit, dim);
+  const double v = si_to_unit(si, c.unit, dim) - (difference ? si_to_unit(0.0, c.unit, dim) : 0.0);
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.4g", std::fabs(v) < 1e-12 ? 0.0 : v);
   return std::string(buf) + (c.unit.empty() ? "" : " " + c.unit);
@@ -44,9 +44,7 @@ ValidationTotals validation_totals(const std::vector<ValidationOutcome>& outcome
   return t;
 }
 
-std::string validation_scorecard(const ValidationLibrary& lib, const std::vector<ValidationOutcome>& outcomes,
-                                 std::size_t worst) {
-  (void)lib;
+std::string validation_scorecard(const std::vector<ValidationOutcome>& outcomes, std::size_t worst) {
   const ValidationTotals totals = validation_totals(outcomes);
   std::string out = "validate: " + std::to_string(outcomes.size()) + " published references from " +
                     std::to_string(totals.sources) + " sources (" +

@@ -27,8 +27,7 @@ ValidationTotals validation_totals(const std::vector<ValidationOutcome>& outcome
 
 /// The scorecard, ending with the line "validate: N passed, M failed". `worst` caps the
 /// list of worst cases (every failing case is listed, then passing ones nearest their edge).
-std::string validation_scorecard(const ValidationLibrary& lib, const std::vector<ValidationOutcome>& outcomes,
-                                 std::size_t worst = 25);
+std::string validation_scorecard(const std::vector<ValidationOutcome>& outcomes, std::size_t worst = 25);
 
 nlohmann::json validation_json(const ValidationLibrary& lib, const std::vector<ValidationOutcome>& outcomes);
 

@@ -62,7 +62,6 @@ class Team {
   /// starters averaged ~88 pitches in 2023, relievers about an inning). Returns whether he did.
   bool to_the_bullpen(std::uint64_t seed);
   static constexpr int kStarterPitches = 95;
-  int pitcher_started_inning = 1;
   Defense defense;
   Rng fielding_rng;
 };

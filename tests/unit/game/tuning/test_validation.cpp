@@ -94,7 +94,7 @@ TEST_CASE("validate runs a case through the shot path, a baseline as a differenc
   CHECK(t.all.passed == 2);
   CHECK(t.all.failed == 1);
   CHECK(t.not_fitted.total() == 2);
-  const std::string card = validation_scorecard(lib, out);
+  const std::string card = validation_scorecard(out);
   CHECK_THAT(card, Contains("validate: 2 passed, 1 failed") && Contains("hot-day") && Contains("FAIL"));
   const auto j = validation_json(lib, out);
   CHECK(j["passed"] == 2);

@@ -34,6 +34,11 @@ struct AeroCoefficients {
 /// keeps its spin longer.
 inline constexpr double kSpinDecayReferenceDensity = 1.1944245034101437;
 
+/// The Reynolds number (ρ|v|D/µ) every aero model is stated and checked up to
+/// (validate_aero_model): a baseball line drive into a 60 m/s wind. A flight that starts
+/// beyond it (a large, fast ball) is refused, not integrated.
+inline constexpr double kMaxReynolds = 6e5;
+
 /// A named drag/lift/spin-decay model. Immutable data; evaluate with coefficients(). The
 /// shipped models and their sources are in assets/aero_models.toml.
 struct AeroModel {

@@ -111,7 +111,11 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
         throw InputError(s.where + ": " + e.what());
       }
     } else if (script_turn && !scripted_plays_on) {
-      break;  // the script ran out and no bot plays on
+      // The script ran out mid-round and no bot plays on: a card with unfinished holes is
+      // not a round.
+      throw InputError(o.swings + ": the script ran out after its " + std::to_string(script.size()) +
+                       " strokes, on hole " + std::to_string(group.hole_index() + 1) +
+                       " (give more [[stroke]] entries, or a --bot to play on after it)");
     } else {
       group.play_bot();
     }
@@ -219,6 +223,8 @@ RunFn setup_round(CLI::App& sub) {
       throw InputError("--stop-after " + std::to_string(o->stop_after) + " is out of range (allowed [1, 18])");
     if (o->stop_after > 0 && o->save.empty()) throw InputError("--stop-after: the round stops to be saved; give --save FILE");
     if (!o->save.empty()) check_output_path(o->save, "--save");
+    if (!o->save.empty() && !o->plot.empty() && same_output_file(o->save, o->plot))
+      throw InputError("--save " + o->save + " --plot " + o->plot + ": the saved round and the plot would overwrite each other");
     for (const std::string& b : o->bots) golfer_skill(b);  // refuse an unknown skill before any work
     golf_format(o->format);
     if (o->mode != "stroke" && (o->bots.size() > 1 || o->format != "stroke"))

@@ -12,7 +12,9 @@
 #include "game/cli/command.hpp"
 #include "game/content/quantity_text.hpp"
 #include "game/content/toml_file.hpp"
+#include "game/net/message_framer.hpp"
 #include "game/net/open_connect.hpp"
+#include "game/util/terminal_text.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot::cli {
@@ -49,6 +51,8 @@ std::vector<Outgoing> read_session(const std::string& path) {
         throw InputError(where + ": an object longer than 65536 bytes (no launch monitor sends one)");
       if (piece.kind == MessageFramer::Piece::Kind::TooDeep)
         throw InputError(where + ": objects nested deeper than " + std::to_string(MessageFramer::kMaxDepth));
+      if (piece.kind == MessageFramer::Piece::Kind::Broken)
+        throw InputError(where + ": malformed JSON: " + piece.reason + " (near '" + piece.text.substr(0, 24) + "')");
       if (piece.kind != MessageFramer::Piece::Kind::Message)
         throw InputError(where + ": not a JSON object (near '" + piece.text.substr(0, 24) + "')");
       OcMessage m;
@@ -115,7 +119,9 @@ RunFn setup_send(CLI::App& sub) {
             return;
           }
           for (const auto& piece : replies.feed(std::string_view(buf.data(), n))) {
-            std::cout << piece.text << "\n";
+            // A server's bytes are printed escaped: an escape sequence in a reply must not
+            // reach the operator's terminal.
+            std::cout << terminal_safe(piece.text) << "\n";
             // The answer to a message is a 200 or an error; 201-203 come unasked.
             const auto reply = nlohmann::json::parse(piece.text, nullptr, false);
             const int code = reply.is_object() && reply.contains("Code") && reply["Code"].is_number_integer()

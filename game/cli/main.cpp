@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "game/cli/command.hpp"
+#include "game/util/terminal_text.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot::cli {
@@ -24,18 +25,7 @@ namespace {
 /// run of over 240 characters without a space (a 100 kB argument) keeps its first 160 and
 /// last 40, with the count of what was left out between.
 std::string printable_message(const std::string& message) {
-  std::string text;
-  for (const char c : message) {
-    if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) {
-      text += c;
-    } else if (c == '\n' || c == '\t') {
-      text += c == '\n' ? "\\n" : "\\t";
-    } else {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-      text += buf;
-    }
-  }
+  const std::string text = sweetspot::terminal_safe(message);
   constexpr std::size_t kLong = 240, kHead = 160, kTail = 40;
   std::string out;
   for (std::size_t i = 0; i < text.size();) {

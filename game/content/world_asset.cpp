@@ -135,6 +135,25 @@ Vec3 vec3(const TomlFile& f, const toml::node& n, std::string_view key) {
   return Vec3(v[0], v[1], v[2]);
 }
 
+// A world's own cup sits on its green: a pin over the rough, floating above the green or
+// buried under it would make its hole unfinishable.
+void check_pin_on_green(const WorldAsset& a, const std::string& where) {
+  constexpr double kOnSurface = 0.05;  // m: a cup's rim on the mesh, beyond a modeller's rounding
+  const Vec3 p = *a.pin;
+  const WorldDescription& d = a.description();
+  SurfaceContact hit;
+  const std::string at = "pin = [" + std::to_string(p.x()) + " m, " + std::to_string(p.y()) + " m, " +
+                         std::to_string(p.z()) + " m]";
+  if (!ground_under(*a.world, p.x(), p.z(), d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit))
+    throw InputError(where + ": " + at + ": no ground under it (the cup sits on the world's green)");
+  const SurfaceKind kind = a.world->material(hit.material).kind;
+  if (kind != SurfaceKind::Green)
+    throw InputError(where + ": " + at + " lies over " + to_string(kind) + " (the cup sits on the world's green)");
+  if (std::abs(p.y() - hit.point.y()) > kOnSurface)
+    throw InputError(where + ": " + at + ": the green's surface there is at y = " + std::to_string(hit.point.y()) +
+                     " m (the cup sits on it, within 0.05 m)");
+}
+
 }  // namespace
 
 bool is_world_path(const std::string& name_or_path) {
@@ -148,6 +167,7 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
   const fs::path path = resolve_world(root, name_or_path);
   WorldAsset a;
   a.source = path;
+  std::string pin_where;  // file:line of the pin key
   WorldDescription d;
   d.materials = materials;
   if (path.extension() == ".obj") {
@@ -182,7 +202,10 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
     if (const toml::node* n = t.get("origin")) d.origin = vec3(f, *n, "origin");
     if (const toml::node* n = t.get("bounds_min")) d.bounds_min = vec3(f, *n, "bounds_min");
     if (const toml::node* n = t.get("bounds_max")) d.bounds_max = vec3(f, *n, "bounds_max");
-    if (const toml::node* n = t.get("pin")) a.pin = vec3(f, *n, "pin");
+    if (const toml::node* n = t.get("pin")) {
+      a.pin = vec3(f, *n, "pin");
+      pin_where = f.where(*n);
+    }
     a.fence_height = f.quantity_or(t, "fence_height", Dimension::Length, 0.0, &WorldAsset::kFenceHeight);
     if (const toml::node* n = t.get("fence_line")) {
       const toml::array* arr = n->as_array();
@@ -211,6 +234,7 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
   a.name = d.name;
   if (const std::string why = validate_world(d); !why.empty()) throw InputError(path.string() + ": " + why);
   a.world = std::make_unique<const World>(std::move(d));
+  if (a.pin) check_pin_on_green(a, pin_where);
   return a;
 }
 

@@ -10,7 +10,9 @@
 
 #include <asio.hpp>
 
+#include "game/net/message_framer.hpp"
 #include "game/net/session_file.hpp"
+#include "game/util/terminal_text.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -38,15 +40,21 @@ constexpr std::size_t kMaxQueuedBytes = 1 << 20;
 // until the idle timeout. A live connector between shots is silent too, but then nobody
 // else is knocking. 60 s is longer than any connector's heartbeat period (3-6 s).
 constexpr auto kStaleAfter = std::chrono::seconds(60);
+// A client that has held an unfinished message this long is stuck (cut off, or trickling a
+// byte at a time): it does not keep the slot from a launch monitor that knocks. Connectors
+// write each message whole, in one send.
+constexpr auto kStuckAfter = std::chrono::seconds(3);
+// Bytes of an unfinished message that then sat this long without another byte are looked
+// through for a whole message that began inside them (MessageFramer::flush_stalled): a
+// message cut short and followed by a shot is answered although the sender waits.
+constexpr auto kStallAfter = std::chrono::seconds(2);
+// A knock while the slot is held is decided this much later: a launch monitor that drops
+// and reconnects at once is served once its old socket's close has been read.
+constexpr auto kKnockGrace = std::chrono::milliseconds(250);
 
-// What a client sent, made safe for a terminal: control bytes (an escape sequence could
-// rewrite the operator's screen) and bytes beyond ASCII shown as '?'.
-std::string printable(std::string_view text) {
-  std::string out(text.substr(0, 200));
-  for (char& c : out)
-    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
-  return out;
-}
+// What a client sent, made safe for a terminal (an escape sequence could rewrite the
+// operator's screen) and short.
+std::string printable(std::string_view text) { return terminal_safe(text.substr(0, 200)); }
 
 std::string endpoint_text(const tcp::socket& s) {
   asio::error_code ec;
@@ -78,8 +86,11 @@ struct ConnectServer::Impl : std::enable_shared_from_this<ConnectServer::Impl> {
   Impl(const Assets& a, const ConnectOptions& o, std::ostream& out_, std::ostream& log_)
       : assets(a), options(o), out(out_), log(log_), table(a, o.table) {}
 
+  bool stopping_all = false;  ///< shutdown() ran: knocks still waiting are dropped
+
   void listen();
   void accept();
+  void take(tcp::socket socket);
   void refuse(tcp::socket socket);
   void shutdown();
 };
@@ -88,13 +99,13 @@ class Session : public std::enable_shared_from_this<Session> {
  public:
   Session(tcp::socket socket, ConnectServer::Impl& server)
       : socket_(std::move(socket)), server_(server), idle_(server.io), gap_(server.io), player_(server.io),
-        framer_(server.options.max_message), peer_(endpoint_text(socket_)) {}
+        stall_(server.io), framer_(server.options.max_message), peer_(endpoint_text(socket_)) {}
 
   void start() {
     asio::error_code ec;
     socket_.set_option(tcp::no_delay(true), ec);  // one reply per segment, sent at once
     server_.log << "sweetspot connect: " << peer_ << " connected; " << server_.table.where() << "\n";
-    last_heard_ = Clock::now();
+    last_heard_ = last_message_ = Clock::now();
     arm_idle();
     want_player_info();  // the greeting: which club the game expects
     read();
@@ -110,10 +121,17 @@ class Session : public std::enable_shared_from_this<Session> {
     idle_.cancel();
     gap_.cancel();
     player_.cancel();
+    stall_.cancel();
   }
 
   bool open() const { return !closed_; }
-  Clock::duration silent_for() const { return Clock::now() - last_heard_; }
+  /// May a launch monitor that knocks take this one's place? When it has gone (its close
+  /// read), sent no whole message for kStaleAfter, or held an unfinished one for kStuckAfter.
+  bool replaceable() const {
+    const auto now = Clock::now();
+    return closed_ || read_closed_ || now - last_message_ >= kStaleAfter ||
+           (framer_.pending() > 0 && now - pending_since_ >= kStuckAfter);
+  }
   bool idle_writer() const { return out_.empty() && !writing_; }
 
  private:
@@ -121,43 +139,76 @@ class Session : public std::enable_shared_from_this<Session> {
     auto self = shared_from_this();
     socket_.async_read_some(asio::buffer(buf_), [this, self](const asio::error_code& ec, std::size_t n) {
       if (closed_) return;
+      if (ec == asio::error::eof) {
+        // The client has sent its last bytes (it may still read): answer everything it
+        // sent, a message cut off at the end included, then close once the replies are out.
+        read_closed_ = true;
+        player_due_ = false;
+        stall_.cancel();
+        guarded([&] { handle_pieces(framer_.finish()); });
+        if (idle_writer()) close("disconnected");
+        return;
+      }
       if (ec) {
-        close(ec == asio::error::eof ? "disconnected" : "dropped: " + ec.message());
+        close("dropped: " + ec.message());
         return;
       }
       last_heard_ = Clock::now();
-      try {
-        on_bytes(std::string_view(buf_.data(), n));
-      } catch (const std::exception& e) {
-        // A bug of ours must not take the server (and the player's round) down: say so
-        // and go on with the next message.
-        server_.log << "sweetspot connect: " << peer_ << ": internal error: " << printable(e.what()) << "\n";
-        send(reply_status(500, "Internal error"), Clock::duration{0});
+      const bool was_pending = framer_.pending() > 0;
+      guarded([&] { handle_pieces(framer_.feed(std::string_view(buf_.data(), n))); });
+      if (framer_.pending() > 0) {
+        if (!was_pending) pending_since_ = last_heard_;
+        arm_stall();
       }
       if (!closed_) read();
     });
   }
 
-  void on_bytes(std::string_view bytes) {
+  // A bug of ours must not take the server (and the player's round) down: say so and go on
+  // with the next message.
+  template <class F>
+  void guarded(F&& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      server_.log << "sweetspot connect: " << peer_ << ": internal error: " << printable(e.what()) << "\n";
+      send(reply_status(500, "Internal error"), Clock::duration{0});
+    }
+  }
+
+  // The sender went quiet with an unfinished message: a whole one that began inside it
+  // (the first was cut short) is answered now rather than when more bytes come.
+  void arm_stall() {
+    auto self = shared_from_this();
+    stall_.expires_at(last_heard_ + kStallAfter);
+    stall_.async_wait([this, self](const asio::error_code& ec) {
+      if (ec || closed_ || read_closed_) return;
+      if (Clock::now() - last_heard_ < kStallAfter) return;  // bytes came since: re-armed then
+      guarded([&] { handle_pieces(framer_.flush_stalled()); });
+      if (framer_.pending() > 0) pending_since_ = std::min(pending_since_, last_heard_);
+    });
+  }
+
+  // Answers what the framer found, each reply kReplyGap after the one before.
+  void handle_pieces(const std::vector<MessageFramer::Piece>& pieces) {
     Clock::duration delay{0};
-    bool answered_garbage = false;
-    for (const MessageFramer::Piece& piece : framer_.feed(bytes)) {
-      if (closed_) return;
+    for (const MessageFramer::Piece& piece : pieces) {
+      // Stopping (max_shots): not one shot more is played or answered.
+      if (closed_ || server_.stopping) return;
       using Kind = MessageFramer::Piece::Kind;
       if (piece.kind != Kind::Message) {
-        // At most one complaint per read about bytes that are not a message.
-        if (piece.kind == Kind::Garbage && answered_garbage) continue;
-        answered_garbage = answered_garbage || piece.kind == Kind::Garbage;
-        const std::string why = piece.kind == Kind::Oversized
-                                    ? "message longer than " + std::to_string(server_.options.max_message) + " bytes"
-                                : piece.kind == Kind::TooDeep
-                                    ? "objects nested deeper than " + std::to_string(MessageFramer::kMaxDepth)
-                                    : "bytes outside a JSON object";
-        server_.log << "sweetspot connect: " << peer_ << ": bad format: " << why << "\n";
+        const std::string why =
+            piece.kind == Kind::Oversized ? "message longer than " + std::to_string(server_.options.max_message) + " bytes"
+            : piece.kind == Kind::TooDeep ? "objects nested deeper than " + std::to_string(MessageFramer::kMaxDepth)
+            : piece.kind == Kind::Broken  ? "malformed JSON: " + piece.reason
+                                          : std::string("bytes outside a JSON object");
+        server_.log << "sweetspot connect: " << peer_ << ": bad format: " << printable(why) << " (near '"
+                    << printable(piece.text.substr(0, 40)) << "')\n";
         send(reply_status(501, "Bad format: " + why), delay);
         delay += kReplyGap;
         continue;
       }
+      last_message_ = Clock::now();
       handle(piece.text, delay);
       delay += kReplyGap;
     }
@@ -237,6 +288,7 @@ class Session : public std::enable_shared_from_this<Session> {
       writing_ = false;
       // Stopping (max_shots): once the last replies, the player information included, are out.
       if (server_.stopping && !player_due_) server_.shutdown();
+      else if (read_closed_) close("disconnected");
       return;
     }
     writing_ = true;
@@ -274,7 +326,7 @@ class Session : public std::enable_shared_from_this<Session> {
     auto self = shared_from_this();
     player_.expires_at(when);
     player_.async_wait([this, self](const asio::error_code& ec) {
-      if (ec || closed_ || !player_due_) return;
+      if (ec || closed_ || !player_due_ || read_closed_) return;
       if (!idle_writer() || Clock::now() < quiet_from()) {
         // The client spoke, or a reply is still going out: wait again.
         arm_player(idle_writer() ? quiet_from() : Clock::now() + kPlayerInfoQuiet);
@@ -306,13 +358,16 @@ class Session : public std::enable_shared_from_this<Session> {
   };
   tcp::socket socket_;
   ConnectServer::Impl& server_;
-  asio::steady_timer idle_, gap_, player_;
+  asio::steady_timer idle_, gap_, player_, stall_;
   MessageFramer framer_;
   std::array<char, 16 * 1024> buf_{};
   std::deque<Outgoing> out_;
   std::size_t queued_bytes_ = 0;
   bool writing_ = false, closed_ = false, player_due_ = false;
+  bool read_closed_ = false;  ///< the client half-closed: no more bytes will come
   Clock::time_point last_heard_, last_written_;
+  Clock::time_point last_message_;   ///< the last whole message (or the connect)
+  Clock::time_point pending_since_;  ///< since when an unfinished message has been held
   std::string peer_;
 };
 
@@ -347,16 +402,29 @@ void ConnectServer::Impl::accept() {
   acceptor.async_accept([this](const asio::error_code& ec, tcp::socket socket) {
     if (ec) return;  // closed by shutdown()
     const auto live = current.lock();
-    if (live && live->open() && live->silent_for() < kStaleAfter) {
-      refuse(std::move(socket));
+    if (live && live->open() && !live->replaceable()) {
+      // Held: decide a moment later (a reconnect's old socket may have closed meanwhile).
+      auto knock = std::make_shared<tcp::socket>(std::move(socket));
+      auto timer = std::make_shared<asio::steady_timer>(io, kKnockGrace);
+      timer->async_wait([this, knock, timer](const asio::error_code& e) {
+        if (e || stopping_all) return;
+        const auto holder = current.lock();
+        if (holder && holder->open() && !holder->replaceable()) refuse(std::move(*knock));
+        else take(std::move(*knock));
+      });
     } else {
-      if (live && live->open()) live->close("replaced: silent for over 60 s while another launch monitor connected");
-      auto session = std::make_shared<Session>(std::move(socket), *this);
-      current = session;
-      session->start();
+      take(std::move(socket));
     }
     accept();
   });
+}
+
+void ConnectServer::Impl::take(tcp::socket socket) {
+  if (const auto live = current.lock(); live && live->open())
+    live->close("replaced: another launch monitor connected while this one sent no whole message");
+  auto session = std::make_shared<Session>(std::move(socket), *this);
+  current = session;
+  session->start();
 }
 
 void ConnectServer::Impl::refuse(tcp::socket socket) {
@@ -372,6 +440,7 @@ void ConnectServer::Impl::refuse(tcp::socket socket) {
 }
 
 void ConnectServer::Impl::shutdown() {
+  stopping_all = true;
   asio::error_code ec;
   acceptor.close(ec);
   if (signals) signals->cancel(ec);

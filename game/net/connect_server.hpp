@@ -1,8 +1,11 @@
 // `sweetspot connect` (DESIGN §10): a GSPro Open Connect v1 server on standalone Asio.
 //
 // One launch monitor at a time, as GSPro: a second client gets a 503 reply and is closed,
-// unless the current one has been silent for a minute (a dead connection: it is replaced).
-// The byte stream is cut into messages by MessageFramer (bounded); each shot is answered
+// unless the current one has gone (its close read within 250 ms of the knock, so a quick
+// reconnect is served), sent no whole message for a minute (a dead connection), or held an
+// unfinished message for 3 s (cut off, or trickling bytes): then it is replaced.
+// The byte stream is cut into messages by MessageFramer (bounded; every whole message after
+// a broken one is still found, and each broken part answered once); each shot is answered
 // with 200 ("Ball Data received" / "Club & Ball Data received") and played by a ShotTable,
 // its line (DESIGN §10) written to `out`; heartbeats and status ("ready") messages are
 // answered with 200 and play nothing (real GSPro is silent to them; here every message is
@@ -11,8 +14,10 @@
 // and the connection stays up. The player information (201) goes out on connect and
 // whenever the club the game expects changes, in its own write once the client has been
 // quiet for 50 ms (so it never overtakes the 200 a connector is waiting for); 203 "GSPro
-// round ended" when a round is over. A client silent for `idle_timeout` is closed; SIGINT
-// and SIGTERM close the sockets and make run() return 0.
+// round ended" when a round is over. A client that half-closes (sends its last bytes and
+// shuts its side) gets every reply before the close. A client silent for `idle_timeout` is
+// closed; SIGINT and SIGTERM close the sockets and make run() return 0. With max_shots the
+// server plays exactly that many shots: messages after the last are not answered.
 //
 // Single-threaded: every handler runs on the thread that calls run() (or poll(), for the
 // window, which drives the server from its frame loop).

@@ -2,102 +2,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <system_error>
 
 #include "physics/error.hpp"
 
 namespace sweetspot {
-
-void MessageFramer::start_message() {
-  buf_.assign(1, '{');
-  depth_ = 1;
-  in_string_ = escape_ = skipping_ = false;
-  last_ = '{';
-}
-
-std::vector<MessageFramer::Piece> MessageFramer::feed(std::string_view bytes) {
-  std::vector<Piece> out;
-  const auto flush_garbage = [&] {
-    if (!garbage_.empty()) {
-      out.push_back({Piece::Kind::Garbage, garbage_.substr(0, 64)});
-      garbage_.clear();
-    }
-  };
-  const auto is_space = [](char ch) { return std::isspace(static_cast<unsigned char>(ch)) || ch == '\0'; };
-  for (const char ch : bytes) {
-    if (depth_ == 0 && !skipping_) {
-      if (ch == '{') {
-        flush_garbage();
-        start_message();
-      } else if (!is_space(ch)) {
-        garbage_ += ch;
-        if (garbage_.size() > max_) flush_garbage();
-      }
-      continue;
-    }
-    if (skipping_) {
-      // After a refused message: drop bytes until the braces balance or a "}{" boundary.
-      // Strings are not trusted here (the refused bytes may have opened one and never
-      // closed it), so the boundary is looked for in the raw bytes.
-      if (ch == '{' && last_ == '}') {
-        start_message();
-        continue;
-      }
-      if (!is_space(ch)) last_ = ch;
-      if (in_string_) {
-        if (escape_) escape_ = false;
-        else if (ch == '\\') escape_ = true;
-        else if (ch == '"') in_string_ = false;
-      } else if (ch == '"') {
-        in_string_ = true;
-      } else if (ch == '{') {
-        depth_ = std::min(depth_ + 1, kSkipDepthCap);
-      } else if (ch == '}' && --depth_ <= 0) {
-        depth_ = 0;
-        skipping_ = false;
-        in_string_ = escape_ = false;
-      }
-      continue;
-    }
-    if (in_string_) {
-      buf_ += ch;
-      if (escape_) escape_ = false;
-      else if (ch == '\\') escape_ = true;
-      else if (ch == '"') in_string_ = false;
-    } else if (ch == '{' && last_ == '}') {
-      // "}{" inside an unfinished message: that message was cut short. Hand it on (it will
-      // not parse) and start the new one here.
-      out.push_back({Piece::Kind::Message, std::move(buf_)});
-      start_message();
-      continue;
-    } else {
-      buf_ += ch;
-      if (!is_space(ch)) last_ = ch;
-      if (ch == '"') {
-        in_string_ = true;
-      } else if (ch == '{') {
-        if (++depth_ > kMaxDepth) {
-          out.push_back({Piece::Kind::TooDeep, buf_.substr(0, 64)});
-          buf_.clear();
-          skipping_ = true;
-          continue;
-        }
-      } else if (ch == '}' && --depth_ == 0 && buf_.size() <= max_) {
-        out.push_back({Piece::Kind::Message, std::move(buf_)});
-        buf_.clear();
-        continue;
-      }
-    }
-    if (buf_.size() > max_) {
-      out.push_back({Piece::Kind::Oversized, buf_.substr(0, 64)});
-      buf_.clear();
-      skipping_ = depth_ > 0;  // at depth 0 the refused message is already complete
-    }
-  }
-  flush_garbage();
-  return out;
-}
 
 namespace {
 
@@ -122,20 +35,44 @@ std::string short_number(double v) {
   return buf;
 }
 
+// A number as the protocol sends it: a JSON number, or a string holding exactly one (some
+// connectors quote their numbers). A unit or any other text ("150 km/h", "150mph") is
+// refused: the protocol's units are fixed (mph, degrees, rpm), so a unit could only be
+// misread.
+bool number_text(std::string_view t) {
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    return i > from;
+  };
+  if (i < t.size() && t[i] == '-') ++i;
+  if (!digits()) return false;
+  if (i < t.size() && t[i] == '.') {
+    ++i;
+    if (!digits()) return false;
+  }
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    if (!digits()) return false;
+  }
+  return i == t.size();
+}
+
 std::optional<double> number(const nlohmann::json& o, const char* key, const char* where, double lo, double hi) {
   const nlohmann::json* v = field(o, key);
   if (v == nullptr) return std::nullopt;
   double d = 0.0;
-  if (v->is_number()) d = v->get<double>();
-  else if (v->is_string()) {  // some connectors quote their numbers
-    try {
-      std::size_t used = 0;
-      d = std::stod(v->get<std::string>(), &used);
-    } catch (const std::exception&) {
-      throw InputError(std::string(where) + "." + key + ": not a number");
-    }
+  if (v->is_number()) {
+    d = v->get<double>();
+  } else if (v->is_string() && number_text(v->get<std::string>())) {
+    const std::string& t = v->get_ref<const std::string&>();
+    // Out of a double's range ("1e999") reads as infinite and is refused below.
+    if (std::from_chars(t.data(), t.data() + t.size(), d).ec != std::errc()) d = std::numeric_limits<double>::infinity();
   } else {
-    throw InputError(std::string(where) + "." + key + ": not a number");
+    throw InputError(std::string(where) + "." + key + " = " + v->dump().substr(0, 40) +
+                     ": not a number (a JSON number, or a string of digits only: the protocol's units are mph, degrees and rpm)");
   }
   if (!std::isfinite(d) || d < lo || d > hi)
     throw InputError(std::string(where) + "." + key + " = " + short_number(d) + " is out of range (allowed [" +
@@ -143,20 +80,59 @@ std::optional<double> number(const nlohmann::json& o, const char* key, const cha
   return d;
 }
 
-bool flag(const nlohmann::json& o, const char* key) {
+// A flag: JSON true or false. Anything else ("true", 1) is refused rather than read as
+// false: a shot whose ContainsBallData is "true" must not be answered and dropped.
+bool flag(const nlohmann::json& o, const char* key, const char* where) {
   const nlohmann::json* v = field(o, key);
-  return v != nullptr && v->is_boolean() && v->get<bool>();
+  if (v == nullptr) return false;
+  if (!v->is_boolean())
+    throw InputError(std::string(where) + "." + key + " = " + v->dump().substr(0, 40) + ": not a boolean (send true or false)");
+  return v->get<bool>();
+}
+
+// Parses `text`, refusing a key given twice in one object (keys match without case, so
+// "Speed" and "speed" are the same key): which one a reader takes would be a guess.
+nlohmann::json parse_unique_keys(std::string_view text) {
+  std::vector<std::vector<std::string>> seen;  // the keys of each open object
+  std::vector<std::string> names{"message"};   // what each open object is called
+  std::string last_key, duplicate;
+  const nlohmann::json::parser_callback_t check = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    if (event == E::object_start) {
+      if (!seen.empty()) names.push_back(last_key.empty() ? std::string("(array item)") : last_key);
+      seen.emplace_back();
+    } else if (event == E::object_end) {
+      if (!seen.empty()) seen.pop_back();
+      if (names.size() > 1) names.pop_back();
+      last_key.clear();
+    } else if (event == E::key && !seen.empty()) {
+      last_key = parsed.get<std::string>();
+      const std::string k = lower(last_key);
+      auto& keys = seen.back();
+      if (std::find(keys.begin(), keys.end(), k) != keys.end()) {
+        if (duplicate.empty()) duplicate = names.back() + "." + last_key;
+      } else {
+        keys.push_back(k);
+      }
+    } else if (event == E::array_start) {
+      last_key.clear();
+    }
+    return true;
+  };
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text, check);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(std::string("malformed JSON: ") + e.what());
+  }
+  if (!duplicate.empty()) throw InputError(duplicate + " is given twice (keys match without case)");
+  return j;
 }
 
 }  // namespace
 
 OcMessage parse_open_connect(std::string_view text) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(std::string("malformed JSON: ") + e.what());
-  }
+  const nlohmann::json j = parse_unique_keys(text);
   if (!j.is_object()) throw InputError("a message must be a JSON object");
   OcMessage m;
   if (const nlohmann::json* d = field(j, "DeviceID"); d && d->is_string()) m.device_id = d->get<std::string>();
@@ -178,12 +154,12 @@ OcMessage parse_open_connect(std::string_view text) {
   const nlohmann::json* opts = field(j, "ShotDataOptions");
   const nlohmann::json empty = nlohmann::json::object();
   const nlohmann::json& o = opts ? *opts : empty;
-  const bool has_ball = flag(o, "ContainsBallData") || (opts == nullptr && field(j, "BallData") != nullptr);
-  const bool has_club = flag(o, "ContainsClubData");
-  m.ready = flag(o, "LaunchMonitorIsReady");
-  m.ball_detected = flag(o, "LaunchMonitorBallDetected");
+  const bool has_ball = flag(o, "ContainsBallData", "ShotDataOptions") || (opts == nullptr && field(j, "BallData") != nullptr);
+  const bool has_club = flag(o, "ContainsClubData", "ShotDataOptions");
+  m.ready = flag(o, "LaunchMonitorIsReady", "ShotDataOptions");
+  m.ball_detected = flag(o, "LaunchMonitorBallDetected", "ShotDataOptions");
   if (!has_ball && !has_club) {
-    m.kind = flag(o, "IsHeartBeat") ? OcMessage::Kind::Heartbeat : OcMessage::Kind::Status;
+    m.kind = flag(o, "IsHeartBeat", "ShotDataOptions") ? OcMessage::Kind::Heartbeat : OcMessage::Kind::Status;
     return m;
   }
   m.kind = OcMessage::Kind::Shot;

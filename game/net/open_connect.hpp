@@ -7,6 +7,7 @@
 // "Backspin"), no delimiter between messages (so the stream is framed by brace depth), the
 // exact reply strings of the real program ("Ball Data received", "Club & Ball Data received",
 // "GSPro Player Information", "Bad format"), replies as compact JSON without a newline.
+// The stream is cut into messages by game/net/message_framer.
 #pragma once
 
 #include <cstddef>
@@ -18,39 +19,6 @@
 #include <nlohmann/json.hpp>
 
 namespace sweetspot {
-
-/// Cuts a TCP byte stream into whole JSON objects: brace depth, aware of strings and their
-/// escapes; whitespace (and NULs) between objects skipped; anything else between objects is
-/// garbage, reported and skipped up to the next '{'. An object longer than `max_bytes` is
-/// refused as oversized, one nested deeper than kMaxDepth as too deep, and the stream is
-/// resynchronised where the braces balance again or at a "}{" boundary: a '}' followed
-/// (after whitespace) by '{' never occurs inside one JSON value, so it always starts a new
-/// message. The same boundary ends an unbalanced message early (it is then malformed), so a
-/// client that sends half a message and then whole ones loses only the half.
-class MessageFramer {
- public:
-  static constexpr int kMaxDepth = 32;  ///< Open Connect messages nest 2 deep
-  /// Depth is still counted while a refused message is skipped, saturating here (no overflow).
-  static constexpr int kSkipDepthCap = 1 << 30;
-  explicit MessageFramer(std::size_t max_bytes = 64 * 1024) : max_(max_bytes) {}
-  struct Piece {
-    enum class Kind { Message, Garbage, Oversized, TooDeep } kind;
-    std::string text;  ///< the message (Message); a short excerpt otherwise
-  };
-  /// Feeds received bytes; returns what became complete.
-  std::vector<Piece> feed(std::string_view bytes);
-  /// Bytes of an unfinished message held.
-  std::size_t pending() const { return buf_.size(); }
-
- private:
-  void start_message();
-  std::size_t max_;
-  std::string buf_;
-  int depth_ = 0;
-  bool in_string_ = false, escape_ = false, skipping_ = false;
-  char last_ = ' ';  ///< the last non-whitespace byte outside strings (for the "}{" boundary)
-  std::string garbage_;
-};
 
 struct OcBallData {
   double speed_mph = 0.0;      ///< ball speed

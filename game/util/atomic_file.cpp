@@ -118,6 +118,14 @@ void note_input_file(const fs::path& path) {
   g_inputs.insert(input_key(st));
 }
 
+namespace {
+// A file someone made read-only: no write bit at all (root may write anything, but a
+// chmod a-w still says "keep this"), or none for us.
+bool read_only(const fs::path& file, const struct stat& st) {
+  return (st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0 || ::access(file.c_str(), W_OK) != 0;
+}
+}  // namespace
+
 void write_file_atomic(const fs::path& path, std::string_view contents, OverInput over_input) {
   if (path.empty()) throw InputError("cannot write a file with an empty name");
   const fs::path target = follow_links(path);
@@ -133,6 +141,7 @@ void write_file_atomic(const fs::path& path, std::string_view contents, OverInpu
   }
   if (exists) {
     if (S_ISDIR(st.st_mode)) fail(path, "it is a directory", 0);
+    if (S_ISREG(st.st_mode) && read_only(target, st)) fail(path, "it is read-only (no write permission): not replaced", 0);
     if (S_ISCHR(st.st_mode)) {
       // A device is written in place (replacing /dev/null with a file would be a disaster).
       const int fd = ::open(target.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
@@ -205,6 +214,8 @@ void check_output_path(const fs::path& path, const char* flag) {
     if (S_ISDIR(st.st_mode)) throw InputError(where + ": it is a directory");
     if (!S_ISREG(st.st_mode) && !S_ISCHR(st.st_mode))
       throw InputError(where + ": not a regular file (a FIFO, socket or block device)");
+    if (S_ISREG(st.st_mode) && read_only(target, st))
+      throw InputError(where + ": it is read-only (no write permission): not replaced");
   }
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   if (std::error_code ec; !fs::is_directory(dir, ec))
@@ -218,7 +229,9 @@ bool same_output_file(const fs::path& a, const fs::path& b) {
   // folders made canonical ("./x" and "x", "d/../x").
   const auto final_name = [](const fs::path& p) {
     std::error_code e;
-    const fs::path t = follow_links(p);
+    // Absolute first: weakly_canonical keeps a relative name whose first part does not
+    // exist as it is ("X" against "./X").
+    const fs::path t = fs::absolute(follow_links(p), e);
     const fs::path c = fs::weakly_canonical(t, e);
     return (e ? fs::absolute(t, e) : c).lexically_normal();
   };

@@ -265,7 +265,19 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   double t1 = s.t;
   State9 y1 = s.y;
   const Dynamics f(m, ContactLayer::of(m, s));
-  if (!(carry.h > 0.0)) carry.h = launch_step(tol.rel_tol);  // a launch: no step taken yet
+  if (!(carry.h > 0.0)) {  // a launch (or a restart after a bounce): no step taken yet
+    // The aero models are stated up to kMaxReynolds: a large, fast ball beyond it (a 20 cm
+    // ball at 100 mph) has no drag or lift law to fly by, and its integration blows up.
+    const double speed = f.air_velocity(s.y).norm();
+    const double re = speed * f.aero.re_per_speed;
+    if (re > kMaxReynolds)
+      throw InputError("flight: a ball of radius " + std::to_string(static_cast<int>(std::lround(1000.0 * m.ball.radius))) +
+                       " mm (ball.radius) at " + std::to_string(static_cast<int>(std::lround(speed))) +
+                       " m/s through the air has a Reynolds number of " + std::to_string(static_cast<int>(re)) +
+                       ", beyond the aero models' range (at most " + std::to_string(static_cast<int>(kMaxReynolds)) +
+                       ": a tour drive is 2.2e5, a 110 mph batted ball 3.4e5); a smaller ball or a slower launch");
+    carry.h = launch_step(tol.rel_tol);
+  }
   const double t_end = std::min(until, set.max_time);
   if (short_hop(s, f, t_end, &seg)) {
     y1 = seg.at(seg.t1());

@@ -111,4 +111,22 @@ expect2 "--shot-number range" "--shot-number" "$bin" shot golf/driver --gspro --
 # Nothing listening: exit 1 with the reason.
 rc=0; "$bin" send "$tmp/session.jsonl" --port 1 --timeout 1s >/dev/null 2>"$tmp/refused.err" || rc=$?
 [ "$rc" = 1 ] && grep -q "cannot connect" "$tmp/refused.err" || fail "send to a closed port: rc=$rc $(cat "$tmp/refused.err")"
+# A hostile server: its replies carry a terminal's escape sequences (raw ESC in garbage, a C1
+# CSI inside a JSON string). `send` prints them escaped, never raw.
+python3 - "$tmp/evil.port" <<'PY' &
+import socket, sys
+s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(1)
+open(sys.argv[1], "w").write(str(s.getsockname()[1]))
+c, _ = s.accept(); c.recv(65536)
+c.sendall(b'\x1b]0;owned\x07\x1b[2J{"Code":200,"Message":"\xc2\x9b31mred","Player":null}')
+c.close()
+PY
+pids+=("$!")
+for _ in $(seq 1 50); do [ -s "$tmp/evil.port" ] && break; sleep 0.1; done
+head -1 "$tmp/session.jsonl" >"$tmp/one_line.jsonl"
+"$bin" send "$tmp/one_line.jsonl" --port "$(cat "$tmp/evil.port")" --timeout 2s >"$tmp/evil.out" 2>/dev/null || true
+grep -q "Code" "$tmp/evil.out" || fail "send printed no reply from the hostile server: $(cat -v "$tmp/evil.out")"
+if LC_ALL=C grep -q "$(printf '\033')" "$tmp/evil.out" || LC_ALL=C grep -q "$(printf '\302\233')" "$tmp/evil.out"; then
+  fail "send printed a server's escape sequence raw: $(cat -v "$tmp/evil.out")"
+fi
 echo "connect: ok"

@@ -99,6 +99,32 @@ printf 'mtllib ../../../../../../etc/passwd\nusemtl fairway\nv -30 0 -70\nv -30 
 printf 'sport = "golf"\nmesh = "far.obj"\n' > w/far.toml
 expect_rc 2 "outside the mesh's folder" -- "$bin" shot golf/driver --set world.name=w/far.toml
 
+# A world's own pin sits on its green: one over the fairway, or 300 m above it, is refused
+# naming the world file's line (the hole would be unfinishable).
+printf 'usemtl fairway\nv -30 0 -70\nv -30 0 70\nv 300 0 70\nv 300 0 -70\nf 1 2 3\nf 1 3 4\nusemtl green\nv 300 0 -70\nv 300 0 70\nv 450 0 70\nv 450 0 -70\nf 5 6 7\nf 5 7 8\n' > w/hole.obj
+printf 'sport = "golf"\nmesh = "hole.obj"\npin = ["100m", "0m", "0m"]\n' > w/pin_fairway.toml
+expect_rc 2 "pin_fairway.toml:3" -- "$bin" shot golf/pw --set world.name=w/pin_fairway.toml
+printf 'sport = "golf"\nmesh = "hole.obj"\npin = ["400m", "300m", "0m"]\n' > w/pin_high.toml
+expect_rc 2 "green's surface" -- "$bin" shot golf/pw --set world.name=w/pin_high.toml
+printf 'sport = "golf"\nmesh = "hole.obj"\npin = ["400m", "0m", "0m"]\n' > w/pin_ok.toml
+expect_rc 0 "" -- "$bin" shot golf/pw --set world.name=w/pin_ok.toml
+
+# A mesh of more objects than the OBJ reader reads in reasonable time is refused with the
+# limit (assimp looks each object up among all before it: 40 000 took 10.7 s).
+python3 -c '
+import sys
+with open("w/many.obj", "w") as f:
+    f.write("usemtl fairway\n")
+    for i in range(10001):
+        x = (i % 100) * 3.0 - 150; z = (i // 100) * 3.0 - 150
+        f.write(f"o part{i}\nv {x} 0 {z}\nv {x} 0 {z+3}\nv {x+3} 0 {z+3}\nf -3 -2 -1\n")'
+printf 'sport = "golf"\nmesh = "many.obj"\n' > w/many.toml
+expect_rc 2 "over 10000 objects" -- "$bin" shot golf/pw --set world.name=w/many.toml
+
+# A ball the aero models cannot fly (a light 20 cm ball at a drive's speed: Reynolds number
+# past their range) is refused naming the key, not integrated into NaN.
+expect_rc 2 "ball.radius" -- "$bin" shot golf/driver --set ball.mass=10g --set ball.radius=0.1m
+
 # A file-size limit: exit 2 naming the file, the old file kept, no temporary left behind.
 echo old > big.csv
 rc=0; (ulimit -f 1; exec "$bin" sweep s.toml --e 0.5:0.9:6 --mu 0.2:0.6:6 --csv big.csv) >/dev/null 2>err.txt || rc=$?
@@ -113,6 +139,21 @@ expect_rc 2 "--seed" -- "$bin" derby --seed 1.5
 expect_rc 2 "drop B" -- "$bin" sweep s.toml --e 0.7:0.8:1 --mu 0.3:0.4:2
 expect_rc 2 "--set impact.mu" -- "$bin" sweep s.toml "${grid[@]}" --set impact.mu=0.5
 expect_rc 2 "out of range" -- "$bin" shot golf/driver --set swing.speed=1e-300mph
+
+# Two outputs of one run that name one file however they are spelt (relative, "./",
+# absolute) are refused before anything is written.
+rm -f same.png
+expect_rc 2 "overwrite each other" -- "$bin" sweep s.toml "${grid[@]}" --csv ./same.png --plot same.png
+expect_rc 2 "overwrite each other" -- "$bin" sweep s.toml "${grid[@]}" --csv "$PWD/same.png" --plot same.png
+[ ! -e same.png ] || fail "a refused pair of outputs wrote same.png"
+expect_rc 2 "overwrite each other" -- "$bin" round --save ./r.png --plot r.png
+[ ! -e r.png ] || fail "a refused pair of outputs wrote r.png"
+# A read-only output is refused, not replaced (rename would replace it: the folder is ours).
+echo keep > ro.csv
+chmod a-w ro.csv
+expect_rc 2 "read-only" -- "$bin" sweep s.toml "${grid[@]}" --csv ro.csv
+[ "$(cat ro.csv)" = keep ] || fail "a read-only output was replaced"
+chmod u+w ro.csv
 
 # A file name that is not UTF-8 does not break the JSON writer.
 cp s.toml "$(printf 'd\xff.toml')"

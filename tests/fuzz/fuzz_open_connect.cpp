@@ -3,14 +3,20 @@
 // each framed message through the parser. Nothing may crash, hang or throw anything but
 // InputError; the framer's memory stays bounded; a parsed shot has finite numbers inside
 // the protocol's ranges; every reply is valid compact JSON.
+// The resynchronisation property (issue 42): the input (up to 64 KiB) as a garbage prefix,
+// then a valid shot: the shot is framed exactly once, as the last message, and parses.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "game/net/message_framer.hpp"
 #include "game/net/open_connect.hpp"
 #include "physics/error.hpp"
 
@@ -53,5 +59,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     if (framer.pending() > max_bytes + 1) std::abort();
   }
+  for (const auto& piece : framer.finish())
+    if (piece.kind == sweetspot::MessageFramer::Piece::Kind::Message && piece.text.size() > max_bytes) std::abort();
+  if (framer.pending() != 0) std::abort();
+
+  static const std::string kShot =
+      R"({"DeviceID":"fuzz-property-7f3a","ShotNumber":9,"BallData":{"Speed":150,"VLA":12,"TotalSpin":3000},)"
+      R"("ShotDataOptions":{"ContainsBallData":true}})";
+  const std::string resync = std::string(stream.substr(0, 64 * 1024)) + kShot;
+  sweetspot::MessageFramer again;
+  std::vector<std::string> found;
+  const auto take = [&](const std::vector<sweetspot::MessageFramer::Piece>& pieces) {
+    for (const auto& p : pieces)
+      if (p.kind == sweetspot::MessageFramer::Piece::Kind::Message) found.push_back(p.text);
+  };
+  for (std::size_t at = 0; at < resync.size(); at += packet) take(again.feed(std::string_view(resync).substr(at, packet)));
+  take(again.finish());
+  if (found.empty() || found.back() != kShot) std::abort();
+  if (stream.find("fuzz-property-7f3a") == std::string_view::npos &&
+      std::count(found.begin(), found.end(), kShot) != 1)
+    std::abort();
+  if (sweetspot::parse_open_connect(found.back()).kind != sweetspot::OcMessage::Kind::Shot) std::abort();
   return 0;
 }

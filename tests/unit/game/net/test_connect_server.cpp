@@ -13,9 +13,11 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <memory>
 #include <thread>
 
 #include "game/net/connect_server.hpp"
+#include "game/net/message_framer.hpp"
 #include "game/net/open_connect.hpp"
 #include "support/test_assets.hpp"
 
@@ -53,6 +55,8 @@ class Client {
   Client& operator=(const Client&) = delete;
 
   bool connected() const { return connected_; }
+  /// Half-closes: no more bytes from us, replies still read.
+  void shutdown_write() { ::shutdown(fd_, SHUT_WR); }
   void close() {
     if (fd_ >= 0) ::close(fd_);
     fd_ = -1;
@@ -305,4 +309,90 @@ TEST_CASE("10000 shots in a row leave the server healthy", "[net][server][soak]"
     ++checked;
   }
   CHECK(checked == kShots);
+}
+
+TEST_CASE("a client that half-closes after its last shots gets every reply", "[net][server][hostile]") {
+  // Before: the server closed on reading the end of the stream, and only the first of the
+  // replies (spaced 5 ms apart) went out.
+  Served s;
+  Client c(s.server.port());
+  REQUIRE(c.next_with(201));
+  std::string burst;
+  for (int i = 1; i <= 5; ++i) burst += shot(i);
+  REQUIRE(c.send(burst + R"({"DeviceID":"cut","BallData":{"Speed":1)"));
+  c.shutdown_write();
+  int ok = 0, bad = 0;
+  for (auto r = c.next(); r; r = c.next()) {
+    ok += (*r)["Code"] == 200;
+    bad += (*r)["Code"] == 501;
+  }
+  CHECK(ok == 5);
+  CHECK(bad == 1);  // the message cut off by the close, answered once
+  s.finish();
+  CHECK(s.lines() == 5);
+}
+
+TEST_CASE("a client that trickles bytes does not hold the slot against a launch monitor", "[net][server][hostile]") {
+  // Before: any byte kept the slot, so a client sending one a second held it forever.
+  Served s;
+  Client trickler(s.server.port());
+  REQUIRE(trickler.next_with(201));
+  REQUIRE(trickler.send(R"({"DeviceID":"slow","BallData":{"Speed":)"));
+  const auto t0 = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - t0 < std::chrono::milliseconds(3500)) {
+    REQUIRE(trickler.send("1"));
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  }
+  Client monitor(s.server.port());
+  REQUIRE(monitor.next_with(201));
+  REQUIRE(monitor.send(shot(1)));
+  CHECK(monitor.next_with(200));
+  CHECK(trickler.closed_by_server());
+}
+
+TEST_CASE("a launch monitor that reconnects at once is served, not refused", "[net][server][hostile]") {
+  // Before: about half of quick reconnects got 503 before the old socket's close was read.
+  Served s;
+  for (int round = 0; round < 20; ++round) {
+    auto a = std::make_unique<Client>(s.server.port());
+    REQUIRE(a->next_with(201));
+    a.reset();  // closed
+    Client b(s.server.port());
+    const auto first = b.next();
+    REQUIRE(first);
+    INFO("round " << round);
+    CHECK((*first)["Code"] == 201);
+  }
+}
+
+TEST_CASE("--max-shots plays exactly that many shots, a burst included", "[net][server][hostile]") {
+  ConnectOptions o = Served::defaults();
+  o.max_shots = 3;
+  Served s(o);
+  Client c(s.server.port());
+  REQUIRE(c.next_with(201));
+  std::string burst;
+  for (int i = 1; i <= 6; ++i) burst += shot(i);
+  REQUIRE(c.send(burst));
+  int ok = 0;
+  for (auto r = c.next(); r; r = c.next()) ok += (*r)["Code"] == 200;
+  CHECK(ok == 3);
+  s.finish();
+  CHECK(s.server.shots() == 3);
+  CHECK(s.lines() == 3);
+}
+
+TEST_CASE("a flag sent as a string is refused, not answered and dropped", "[net][server][hostile]") {
+  Served s;
+  Client c(s.server.port());
+  REQUIRE(c.next_with(201));
+  std::string quoted = shot(1);
+  quoted.replace(quoted.find("\"ContainsBallData\":true"), 23, "\"ContainsBallData\":\"true\"");
+  REQUIRE(c.send(quoted));
+  const auto r = c.next();
+  REQUIRE(r);
+  CHECK((*r)["Code"] == 501);
+  CHECK((*r)["Message"].get<std::string>().find("ContainsBallData") != std::string::npos);
+  s.finish();
+  CHECK(s.lines() == 0);
 }

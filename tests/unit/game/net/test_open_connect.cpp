@@ -6,6 +6,7 @@
 #include <string>
 
 #include "game/modes/golf/round.hpp"
+#include "game/net/message_framer.hpp"
 #include "game/net/open_connect.hpp"
 #include "game/net/shot_table.hpp"
 #include "physics/error.hpp"
@@ -103,23 +104,29 @@ TEST_CASE("nesting deeper than the limit is refused, then the stream resynchroni
   deep += "1";
   for (int i = 0; i < 1000; ++i) deep += "}";
   const auto pieces = f.feed(deep + kDocExample);
-  REQUIRE(pieces.size() == 2);
+  // One refusal for the deep object; its innermost 32 levels are a whole object by the
+  // grammar (a piece of the broken part, answered as a status); then the example.
+  REQUIRE(pieces.size() == 3);
   CHECK(pieces[0].kind == Kind::TooDeep);
   CHECK(pieces[1].kind == Kind::Message);
-  CHECK(pieces[1].text == kDocExample);
+  CHECK(parse_open_connect(pieces[1].text).kind == OcMessage::Kind::Status);
+  CHECK(pieces[2].kind == Kind::Message);
+  CHECK(pieces[2].text == kDocExample);
 }
 
 TEST_CASE("half a message followed by whole ones loses only the half", "[net][framer]") {
   MessageFramer f;
   const std::string half = kDocExample.substr(0, kDocExample.size() / 2);
-  // The half ends inside BallData ("...}" is not there), so the boundary is the next "}{"
-  // of a whole message after it: cut it where one message's '}' meets the next '{'.
+  // Cut where one message's '}' meets the next '{': no JSON value goes on with "}{", so the
+  // cut message is broken there; the object nested in it is whole by the grammar (answered
+  // as a status), and the example after it is found whole.
   const std::string cut = R"({"DeviceID":"x","BallData":{"Speed":100})";
   const auto pieces = f.feed(cut + kDocExample);
-  REQUIRE(pieces.size() == 2);
-  CHECK(pieces[0].kind == Kind::Message);
-  CHECK_THROWS_AS(parse_open_connect(pieces[0].text), InputError);
-  CHECK(pieces[1].text == kDocExample);
+  REQUIRE(pieces.size() == 3);
+  CHECK(pieces[0].kind == Kind::Broken);
+  CHECK(pieces[0].reason == "expected ',' or '}' after a value at byte 41");
+  CHECK(pieces[1].text == R"({"Speed":100})");
+  CHECK(pieces[2].text == kDocExample);
   // A half that stops inside a string keeps the framer waiting, bounded by max_bytes.
   MessageFramer g(4096);
   CHECK(g.feed(half).empty());
@@ -183,7 +190,7 @@ TEST_CASE("bad numbers are refused with the key and the range", "[net][parser][h
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":900)")), Catch::Contains("BallData.Speed") && Catch::Contains("allowed"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":"NaN")")), Catch::Contains("BallData.Speed"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":1e999)")), Catch::Contains("malformed JSON") || Catch::Contains("Speed"));
-  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":[1])")), Catch::Contains("BallData.VLA: not a number"));
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":[1])")), Catch::Contains("BallData.VLA = [1]: not a number"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("VLA":10)")), Catch::Contains("BallData.Speed is missing"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":10,"TotalSpin":-5)")), Catch::Contains("TotalSpin"));
   // Refused, not flown as 0, truncated or accepted: a shot without its launch angle or any
@@ -206,6 +213,40 @@ TEST_CASE("bad numbers are refused with the key and the range", "[net][parser][h
                     Catch::Contains("BallData is missing"));
   CHECK_THROWS_WITH(parse_open_connect("[1,2]"), Catch::Contains("JSON object"));
   CHECK_THROWS_AS(parse_open_connect(""), InputError);
+}
+
+TEST_CASE("one strict value rule on the wire: numbers without units, booleans as booleans, no key twice", "[net][parser][hostile]") {
+  const auto shot = [](const std::string& ball, const std::string& options = R"("ContainsBallData":true)") {
+    return R"({"ShotNumber":1,"BallData":{)" + ball + R"(},"ShotDataOptions":{)" + options + "}}";
+  };
+  // Before: a unit after a quoted number was ignored ("150 km/h" flew as 150 mph).
+  for (const std::string speed : {R"("150 km/h")", R"("150mph")", R"("150 ")", R"(" 150")", R"("0x96")", R"("inf")",
+                                  R"("1e2x")", R"("")", R"("+150")"})
+    CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":)" + speed + R"(,"VLA":10,"TotalSpin":2500)")),
+                      Catch::Contains("BallData.Speed") && Catch::Contains("not a number"));
+  CHECK(parse_open_connect(shot(R"("Speed":"150.25","VLA":"-1.5e1","TotalSpin":"2500")")).ball->vla_deg == -15.0);
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":"1e999","VLA":10,"TotalSpin":2500)")),
+                    Catch::Contains("BallData.Speed") && Catch::Contains("out of range"));
+  // Before: "true" (or 1) was read as false, and the shot was answered 200 and dropped.
+  for (const std::string flag : {R"("true")", "1", R"("yes")", "null"}) {
+    INFO(flag);
+    if (flag == "null") {
+      CHECK(parse_open_connect(shot(R"("Speed":100,"VLA":10,"TotalSpin":2500)", R"("ContainsBallData":null)")).kind !=
+            OcMessage::Kind::Shot);  // null is an absent key
+      continue;
+    }
+    CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":10,"TotalSpin":2500)", R"("ContainsBallData":)" + flag)),
+                      Catch::Contains("ShotDataOptions.ContainsBallData") && Catch::Contains("not a boolean"));
+  }
+  // Before: a key given twice (in any case) was resolved silently, last one winning.
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"speed":200,"VLA":10,"TotalSpin":2500)")),
+                    Catch::Contains("BallData.speed is given twice"));
+  CHECK_THROWS_WITH(parse_open_connect(R"({"BallData":{"Speed":100,"VLA":10,"TotalSpin":2500},"balldata":{"Speed":1},)"
+                                       R"("ShotDataOptions":{"ContainsBallData":true}})"),
+                    Catch::Contains("message.balldata is given twice"));
+  // The same key in different objects is not a duplicate.
+  CHECK_NOTHROW(parse_open_connect(R"({"Speed":1,"BallData":{"Speed":100,"VLA":10,"TotalSpin":2500},)"
+                                   R"("ClubData":{"Speed":90},"ShotDataOptions":{"ContainsBallData":true}})"));
 }
 
 TEST_CASE("replies are the protocol's objects, compact, without a newline", "[net][reply]") {
@@ -304,9 +345,9 @@ TEST_CASE("a message whose closing brace passes the bound is oversized, and the 
   CHECK(pieces[0].kind == Kind::Message);
   const std::string over = R"({"DeviceID":")" + std::string(64 - 14, 'x') + R"("})";  // 65 bytes
   pieces = f.feed(over + "x" + R"({"a":1})");
-  REQUIRE(pieces.size() == 3);
+  // The "x" after the refused message is part of what was refused: one reply for both.
+  REQUIRE(pieces.size() == 2);
   CHECK(pieces[0].kind == Kind::Oversized);
-  CHECK(pieces[1].kind == Kind::Garbage);
-  CHECK(pieces[2].kind == Kind::Message);
-  CHECK(pieces[2].text == R"({"a":1})");
+  CHECK(pieces[1].kind == Kind::Message);
+  CHECK(pieces[1].text == R"({"a":1})");
 }

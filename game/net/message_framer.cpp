@@ -1,0 +1,324 @@
+#include "game/net/message_framer.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace sweetspot {
+
+// ---- JsonScanner ---------------------------------------------------------------------
+
+JsonScanner::JsonScanner(int max_depth) : max_depth_(max_depth) {}
+
+void JsonScanner::reset() {
+  state_ = State::Start;
+  stack_.clear();
+  key_ = false;
+  hex_left_ = 0;
+  literal_ = nullptr;
+  reason_ = "";
+  too_deep_ = false;
+}
+
+JsonScanner::Status JsonScanner::fail(const char* why) {
+  reason_ = why;
+  return Status::Invalid;
+}
+
+JsonScanner::Status JsonScanner::value_done() {
+  state_ = State::AfterValue;
+  return Status::More;
+}
+
+namespace {
+bool json_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool digit(char c) { return c >= '0' && c <= '9'; }
+bool hex(char c) { return digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
+}  // namespace
+
+JsonScanner::Status JsonScanner::after_value(char c) {
+  if (json_space(c)) return Status::More;
+  const bool object = stack_.back();
+  if (c == ',') {
+    state_ = object ? State::ObjectKey : State::Value;
+    return Status::More;
+  }
+  if (c == (object ? '}' : ']')) {
+    stack_.pop_back();
+    return stack_.empty() ? Status::Complete : value_done();
+  }
+  return fail(object ? "expected ',' or '}' after a value" : "expected ',' or ']' after a value");
+}
+
+JsonScanner::Status JsonScanner::feed(char c) {
+  const auto open = [&](bool object) {
+    if (static_cast<int>(stack_.size()) >= max_depth_) {
+      too_deep_ = true;
+      return fail("objects nested too deep");
+    }
+    stack_.push_back(object);
+    state_ = object ? State::ObjectKeyOrEnd : State::ArrayValueOrEnd;
+    return Status::More;
+  };
+  const auto begin_value = [&](char v) {
+    switch (v) {
+      case '"': key_ = false; state_ = State::String; return Status::More;
+      case '{': return open(true);
+      case '[': return open(false);
+      case '-': state_ = State::NumberMinus; return Status::More;
+      case '0': state_ = State::NumberZero; return Status::More;
+      case 't': literal_ = "rue"; state_ = State::Literal; return Status::More;
+      case 'f': literal_ = "alse"; state_ = State::Literal; return Status::More;
+      case 'n': literal_ = "ull"; state_ = State::Literal; return Status::More;
+      default:
+        if (digit(v)) {
+          state_ = State::NumberInt;
+          return Status::More;
+        }
+        return fail("expected a value");
+    }
+  };
+  switch (state_) {
+    case State::Start:
+      return c == '{' ? open(true) : fail("a message starts with '{'");
+    case State::ObjectKeyOrEnd:
+      if (json_space(c)) return Status::More;
+      if (c == '}') return after_value(c);
+      [[fallthrough]];
+    case State::ObjectKey:
+      if (json_space(c)) return Status::More;
+      if (c != '"') return fail("expected a key in quotes");
+      key_ = true;
+      state_ = State::String;
+      return Status::More;
+    case State::Colon:
+      if (json_space(c)) return Status::More;
+      if (c != ':') return fail("expected ':' after a key");
+      state_ = State::Value;
+      return Status::More;
+    case State::ArrayValueOrEnd:
+      if (json_space(c)) return Status::More;
+      if (c == ']') return after_value(c);
+      return begin_value(c);
+    case State::Value:
+      return json_space(c) ? Status::More : begin_value(c);
+    case State::AfterValue:
+      return after_value(c);
+    case State::String:
+      if (c == '"') {
+        if (key_) {
+          key_ = false;
+          state_ = State::Colon;
+          return Status::More;
+        }
+        return value_done();
+      }
+      if (c == '\\') state_ = State::Escape;
+      else if (static_cast<unsigned char>(c) < 0x20) return fail("a control byte inside a string");
+      return Status::More;
+    case State::Escape:
+      if (c == 'u') {
+        hex_left_ = 4;
+        state_ = State::Hex;
+        return Status::More;
+      }
+      if (c == '\0' || std::strchr("\"\\/bfnrt", c) == nullptr) return fail("a bad escape in a string");
+      state_ = State::String;
+      return Status::More;
+    case State::Hex:
+      if (!hex(c)) return fail("a bad \\u escape in a string");
+      if (--hex_left_ == 0) state_ = State::String;
+      return Status::More;
+    case State::NumberMinus:
+      if (c == '0') state_ = State::NumberZero;
+      else if (digit(c)) state_ = State::NumberInt;
+      else return fail("a digit must follow '-'");
+      return Status::More;
+    case State::NumberInt:
+      if (digit(c)) return Status::More;
+      [[fallthrough]];
+    case State::NumberZero:
+      if (c == '.') state_ = State::NumberDot;
+      else if (c == 'e' || c == 'E') state_ = State::NumberE;
+      else return after_value(c);
+      return Status::More;
+    case State::NumberDot:
+      if (!digit(c)) return fail("a digit must follow '.'");
+      state_ = State::NumberFrac;
+      return Status::More;
+    case State::NumberFrac:
+      if (digit(c)) return Status::More;
+      if (c == 'e' || c == 'E') {
+        state_ = State::NumberE;
+        return Status::More;
+      }
+      return after_value(c);
+    case State::NumberE:
+      if (c == '+' || c == '-') {
+        state_ = State::NumberESign;
+        return Status::More;
+      }
+      [[fallthrough]];
+    case State::NumberESign:
+      if (!digit(c)) return fail("a digit must follow the exponent");
+      state_ = State::NumberExp;
+      return Status::More;
+    case State::NumberExp:
+      return digit(c) ? Status::More : after_value(c);
+    case State::Literal:
+      if (c != *literal_) return fail("expected true, false or null");
+      if (*++literal_ == '\0') return value_done();
+      return Status::More;
+  }
+  return fail("scanner state");
+}
+
+// ---- MessageFramer -------------------------------------------------------------------
+
+namespace {
+// Between messages: JSON's whitespace, and NULs some serial bridges pad with.
+bool gap_byte(char c) { return json_space(c) || c == '\0'; }
+constexpr std::size_t kExcerpt = 64;
+}  // namespace
+
+MessageFramer::MessageFramer(std::size_t max_bytes) : max_(max_bytes), scanner_(kMaxDepth) {}
+
+std::vector<MessageFramer::Piece> MessageFramer::feed(std::string_view bytes) {
+  buf_.append(bytes);
+  std::vector<Piece> out;
+  resolve(out);
+  return out;
+}
+
+void MessageFramer::start_candidate(std::size_t at) {
+  head_ = scanned_ = at;
+  scanner_.reset();
+  scanning_ = true;
+}
+
+std::string MessageFramer::excerpt(std::size_t from, std::size_t to) const {
+  return buf_.substr(from, std::min(to, buf_.size()) - from).substr(0, kExcerpt);
+}
+
+void MessageFramer::flush_garbage(std::vector<Piece>& out) {
+  if (!garbage_seen_) return;
+  out.push_back({Piece::Kind::Garbage, garbage_, ""});
+  garbage_.clear();
+  garbage_seen_ = false;
+  in_broken_ = true;  // the rest of this run, up to the next '{', was answered with it
+}
+
+void MessageFramer::broken(std::vector<Piece>& out, Piece::Kind kind, std::size_t end, const std::string& reason) {
+  // A candidate that began inside an earlier broken part is a piece of that part.
+  if (head_ >= broken_end_) out.push_back({kind, excerpt(head_, end), reason});
+  broken_end_ = std::max(broken_end_, end);
+}
+
+void MessageFramer::resume_inside(std::size_t end) {
+  const std::size_t next = buf_.find('{', head_ + 1);
+  if (next != std::string::npos && next < end) {
+    start_candidate(next);
+    return;
+  }
+  // No '{' inside the broken span: it runs on, unanswered again, to the next '{'.
+  head_ = end;
+  scanning_ = false;
+  in_broken_ = true;
+}
+
+void MessageFramer::resolve(std::vector<Piece>& out) {
+  for (;;) {
+    if (!scanning_) {
+      while (head_ < buf_.size() && buf_[head_] != '{') {
+        const char c = buf_[head_++];
+        if (in_broken_ || gap_byte(c)) continue;
+        garbage_seen_ = true;
+        if (garbage_.size() < kExcerpt) garbage_ += c;
+      }
+      if (head_ == buf_.size()) {
+        flush_garbage(out);  // answered now, not when the next '{' comes
+        compact();
+        return;
+      }
+      flush_garbage(out);
+      start_candidate(head_);
+    }
+    JsonScanner::Status status = JsonScanner::Status::More;
+    while (scanned_ < buf_.size() && scanned_ - head_ <= max_) {
+      status = scanner_.feed(buf_[scanned_++]);
+      if (status != JsonScanner::Status::More) break;
+    }
+    if (status == JsonScanner::Status::Complete && scanned_ - head_ <= max_) {
+      out.push_back({Piece::Kind::Message, buf_.substr(head_, scanned_ - head_), ""});
+      // A message found inside a broken part may be a piece of it (an object nested in the
+      // broken one): the bytes after it, up to the next '{', are that part's, not new garbage.
+      in_broken_ = head_ < broken_end_;
+      head_ = scanned_;
+      scanning_ = false;
+      continue;
+    }
+    if (status == JsonScanner::Status::Invalid) {
+      const std::size_t bad = scanned_ - 1;
+      broken(out, scanner_.too_deep() ? Piece::Kind::TooDeep : Piece::Kind::Broken, bad + 1,
+             std::string(scanner_.reason()) + " at byte " + std::to_string(bad - head_ + 1));
+      resume_inside(bad + 1);  // the refused byte may itself begin the next message
+      continue;
+    }
+    if (scanned_ - head_ > max_) {
+      broken(out, Piece::Kind::Oversized, scanned_, "longer than " + std::to_string(max_) + " bytes");
+      resume_inside(scanned_);
+      continue;
+    }
+    compact();
+    return;  // unfinished: wait for more bytes
+  }
+}
+
+std::vector<MessageFramer::Piece> MessageFramer::finish() {
+  std::vector<Piece> out;
+  resolve(out);
+  while (scanning_) {
+    broken(out, Piece::Kind::Broken, buf_.size(), "cut off: the stream ended inside it");
+    resume_inside(buf_.size());
+    resolve(out);
+  }
+  flush_garbage(out);
+  buf_.clear();
+  head_ = scanned_ = broken_end_ = 0;
+  in_broken_ = false;
+  return out;
+}
+
+bool MessageFramer::whole_message_at(std::size_t at) const {
+  JsonScanner scanner(kMaxDepth);
+  for (std::size_t i = at; i < buf_.size() && i - at < max_; ++i) {
+    const JsonScanner::Status status = scanner.feed(buf_[i]);
+    if (status == JsonScanner::Status::Complete) return true;
+    if (status == JsonScanner::Status::Invalid) return false;
+  }
+  return false;
+}
+
+std::vector<MessageFramer::Piece> MessageFramer::flush_stalled() {
+  std::vector<Piece> out;
+  if (!scanning_) return out;
+  for (std::size_t s = buf_.find('{', head_ + 1); s != std::string::npos; s = buf_.find('{', s + 1)) {
+    if (!whole_message_at(s)) continue;
+    broken(out, Piece::Kind::Broken, s, "cut off: a whole message began inside it");
+    start_candidate(s);
+    resolve(out);
+    break;
+  }
+  return out;
+}
+
+void MessageFramer::compact() {
+  // Drop what is behind the current candidate once it is a good share of the buffer
+  // (amortised O(1) a byte).
+  if (head_ < 4096 && head_ * 2 < buf_.size()) return;
+  buf_.erase(0, head_);
+  scanned_ = scanned_ > head_ ? scanned_ - head_ : 0;
+  broken_end_ = broken_end_ > head_ ? broken_end_ - head_ : 0;
+  head_ = 0;
+}
+
+}  // namespace sweetspot

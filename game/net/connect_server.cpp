@@ -125,6 +125,8 @@ class Session : public std::enable_shared_from_this<Session> {
   }
 
   bool open() const { return !closed_; }
+  /// The client sent its last bytes; its replies may still be going out.
+  bool half_closed() const { return read_closed_; }
   /// May a launch monitor that knocks take this one's place? When it has gone (its close
   /// read), sent no whole message for kStaleAfter, or held an unfinished one for kStuckAfter.
   bool replaceable() const {
@@ -146,7 +148,7 @@ class Session : public std::enable_shared_from_this<Session> {
         player_due_ = false;
         stall_.cancel();
         guarded([&] { handle_pieces(framer_.finish()); });
-        if (idle_writer()) close("disconnected");
+        if (idle_writer()) finish_writing();
         return;
       }
       if (ec) {
@@ -155,9 +157,11 @@ class Session : public std::enable_shared_from_this<Session> {
       }
       last_heard_ = Clock::now();
       const bool was_pending = framer_.pending() > 0;
+      const std::uint64_t candidate = framer_.candidates();
       guarded([&] { handle_pieces(framer_.feed(std::string_view(buf_.data(), n))); });
-      if (framer_.pending() > 0) {
-        if (!was_pending) pending_since_ = last_heard_;
+      if (framer_.pending() > 0 && !closed_) {
+        // Since when the unfinished message now held has been coming: a new one restarts it.
+        if (!was_pending || framer_.candidates() != candidate) pending_since_ = last_heard_;
         arm_stall();
       }
       if (!closed_) read();
@@ -184,8 +188,9 @@ class Session : public std::enable_shared_from_this<Session> {
     stall_.async_wait([this, self](const asio::error_code& ec) {
       if (ec || closed_ || read_closed_) return;
       if (Clock::now() - last_heard_ < kStallAfter) return;  // bytes came since: re-armed then
+      const std::uint64_t candidate = framer_.candidates();
       guarded([&] { handle_pieces(framer_.flush_stalled()); });
-      if (framer_.pending() > 0) pending_since_ = std::min(pending_since_, last_heard_);
+      if (framer_.candidates() != candidate) pending_since_ = last_heard_;
     });
   }
 
@@ -270,6 +275,13 @@ class Session : public std::enable_shared_from_this<Session> {
     if (server_.options.max_shots > 0 && server_.shots >= server_.options.max_shots) server_.stopping = true;
   }
 
+  // Every reply is out: stopping (max_shots) ends the server, once the player information
+  // is out too (a half-closed client is sent none); a half-closed client is closed.
+  void finish_writing() {
+    if (server_.stopping) server_.shutdown();
+    else if (read_closed_) close("disconnected");
+  }
+
   // Queues a reply to go out no earlier than `delay` from now, after those queued before it.
   void send(std::string text, Clock::duration delay) {
     if (closed_) return;
@@ -286,9 +298,7 @@ class Session : public std::enable_shared_from_this<Session> {
     if (closed_) return;
     if (out_.empty()) {
       writing_ = false;
-      // Stopping (max_shots): once the last replies, the player information included, are out.
-      if (server_.stopping && !player_due_) server_.shutdown();
-      else if (read_closed_) close("disconnected");
+      if (server_.stopping ? !player_due_ || read_closed_ : read_closed_) finish_writing();
       return;
     }
     writing_ = true;
@@ -420,7 +430,8 @@ void ConnectServer::Impl::accept() {
 }
 
 void ConnectServer::Impl::take(tcp::socket socket) {
-  if (const auto live = current.lock(); live && live->open())
+  // A half-closed holder keeps its socket until its last replies are out; it closes itself.
+  if (const auto live = current.lock(); live && live->open() && !live->half_closed())
     live->close("replaced: another launch monitor connected while this one sent no whole message");
   auto session = std::make_shared<Session>(std::move(socket), *this);
   current = session;

@@ -35,6 +35,13 @@ bool digit(char c) { return c >= '0' && c <= '9'; }
 bool hex(char c) { return digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
 }  // namespace
 
+// A number ends at the first byte that cannot continue it, which then follows the value
+// (whitespace included: "1 2" is two values, not one).
+JsonScanner::Status JsonScanner::end_number(char c) {
+  state_ = State::AfterValue;
+  return after_value(c);
+}
+
 JsonScanner::Status JsonScanner::after_value(char c) {
   if (json_space(c)) return Status::More;
   const bool object = stack_.back();
@@ -139,7 +146,7 @@ JsonScanner::Status JsonScanner::feed(char c) {
     case State::NumberZero:
       if (c == '.') state_ = State::NumberDot;
       else if (c == 'e' || c == 'E') state_ = State::NumberE;
-      else return after_value(c);
+      else return end_number(c);
       return Status::More;
     case State::NumberDot:
       if (!digit(c)) return fail("a digit must follow '.'");
@@ -151,7 +158,7 @@ JsonScanner::Status JsonScanner::feed(char c) {
         state_ = State::NumberE;
         return Status::More;
       }
-      return after_value(c);
+      return end_number(c);
     case State::NumberE:
       if (c == '+' || c == '-') {
         state_ = State::NumberESign;
@@ -163,7 +170,7 @@ JsonScanner::Status JsonScanner::feed(char c) {
       state_ = State::NumberExp;
       return Status::More;
     case State::NumberExp:
-      return digit(c) ? Status::More : after_value(c);
+      return digit(c) ? Status::More : end_number(c);
     case State::Literal:
       if (c != *literal_) return fail("expected true, false or null");
       if (*++literal_ == '\0') return value_done();
@@ -193,6 +200,7 @@ void MessageFramer::start_candidate(std::size_t at) {
   head_ = scanned_ = at;
   scanner_.reset();
   scanning_ = true;
+  ++candidates_;
 }
 
 std::string MessageFramer::excerpt(std::size_t from, std::size_t to) const {
@@ -248,6 +256,15 @@ void MessageFramer::resolve(std::vector<Piece>& out) {
       if (status != JsonScanner::Status::More) break;
     }
     if (status == JsonScanner::Status::Complete && scanned_ - head_ <= max_) {
+      if (head_ < broken_end_ && inside_structure(scanned_)) {
+        // An object nested in the broken part (a ',', ':', '}' or ']' goes on after it): a
+        // piece of what was answered already, not a message.
+        broken_end_ = std::max(broken_end_, scanned_);
+        head_ = scanned_;
+        scanning_ = false;
+        in_broken_ = true;
+        continue;
+      }
       out.push_back({Piece::Kind::Message, buf_.substr(head_, scanned_ - head_), ""});
       // A message found inside a broken part may be a piece of it (an object nested in the
       // broken one): the bytes after it, up to the next '{', are that part's, not new garbage.
@@ -288,11 +305,23 @@ std::vector<MessageFramer::Piece> MessageFramer::finish() {
   return out;
 }
 
-bool MessageFramer::whole_message_at(std::size_t at) const {
+bool MessageFramer::inside_structure(std::size_t at) const {
+  for (std::size_t i = at; i < buf_.size(); ++i) {
+    const char c = buf_[i];
+    if (gap_byte(c)) continue;
+    return c == ',' || c == ':' || c == '}' || c == ']';
+  }
+  return false;  // nothing after it yet: it may well be the last message
+}
+
+bool MessageFramer::whole_message_at(std::size_t at, std::size_t* end) const {
   JsonScanner scanner(kMaxDepth);
   for (std::size_t i = at; i < buf_.size() && i - at < max_; ++i) {
     const JsonScanner::Status status = scanner.feed(buf_[i]);
-    if (status == JsonScanner::Status::Complete) return true;
+    if (status == JsonScanner::Status::Complete) {
+      *end = i + 1;
+      return true;
+    }
     if (status == JsonScanner::Status::Invalid) return false;
   }
   return false;
@@ -300,13 +329,21 @@ bool MessageFramer::whole_message_at(std::size_t at) const {
 
 std::vector<MessageFramer::Piece> MessageFramer::flush_stalled() {
   std::vector<Piece> out;
-  if (!scanning_) return out;
-  for (std::size_t s = buf_.find('{', head_ + 1); s != std::string::npos; s = buf_.find('{', s + 1)) {
-    if (!whole_message_at(s)) continue;
-    broken(out, Piece::Kind::Broken, s, "cut off: a whole message began inside it");
-    start_candidate(s);
-    resolve(out);
-    break;
+  // Each cut may leave another unfinished candidate holding a whole message: go on.
+  for (bool cut = true; cut && scanning_;) {
+    cut = false;
+    for (std::size_t s = buf_.find('{', head_ + 1); s != std::string::npos; s = buf_.find('{', s + 1)) {
+      // A whole object followed by more of a structure (',' or '}' after it) is a part of
+      // a sound message that is merely slow (its BallData); only one the stream leaves
+      // standing alone can be a message that the stuck one hides.
+      std::size_t end = 0;
+      if (!whole_message_at(s, &end) || inside_structure(end)) continue;
+      broken(out, Piece::Kind::Broken, s, "cut off: a whole message began inside it");
+      start_candidate(s);
+      resolve(out);
+      cut = true;
+      break;
+    }
   }
   return out;
 }

@@ -7,17 +7,20 @@
 // latest a few bytes into that next message, since no JSON value continues with `}{` or
 // with a key outside its quotes. The next candidates are then the '{' bytes inside the broken
 // span, in order. The one the writer meant as the next message is among them, so no whole
-// message after a broken part is lost, whatever the broken part held, strings included.
+// message after a broken part is lost, whatever the broken part held, strings included, as
+// long as the message opens with a key that does not itself begin with a quote or a brace
+// (`{"}":1}` after an open string reads as that string's end; Open Connect's keys are words).
 //
 // Each broken part is reported once: a candidate that starts inside an earlier broken part
-// and breaks too is part of it. Bytes outside any object are one Garbage piece per run.
+// and breaks too is part of it, and so is an object nested in it that a ',', ':', '}' or ']'
+// follows (one the stream ends after, or a '{' follows, is taken as a message). Bytes outside any object are one Garbage piece per run.
 // Memory is bounded: a candidate longer than `max_bytes` is refused as Oversized and the
 // search resumes inside it; one nested deeper than kMaxDepth is broken (TooDeep).
 //
 // A candidate that never completes would hide the whole messages inside it: finish() (the
 // stream ended) cuts every unfinished candidate; flush_stalled() (the sender went quiet)
-// cuts one only when a whole message can be found inside it, so a slow but sound message is
-// left to finish.
+// cuts one only when a whole message that stands alone (nothing but a '{' or the end after
+// it) can be found inside it, so a slow but sound message is left to finish.
 #pragma once
 
 #include <cstddef>
@@ -48,6 +51,7 @@ class JsonScanner {
   };
   Status fail(const char* why);
   Status value_done();
+  Status end_number(char c);
   Status after_value(char c);
   int max_depth_;
   State state_ = State::Start;
@@ -78,6 +82,8 @@ class MessageFramer {
   std::vector<Piece> flush_stalled();
   /// Bytes held for an unfinished candidate.
   std::size_t pending() const { return scanning_ ? buf_.size() - head_ : 0; }
+  /// Candidates begun so far: a change means the unfinished one (if any) is a new one.
+  std::uint64_t candidates() const { return candidates_; }
 
  private:
   void resolve(std::vector<Piece>& out);
@@ -85,7 +91,10 @@ class MessageFramer {
   void broken(std::vector<Piece>& out, Piece::Kind kind, std::size_t end, const std::string& reason);
   void resume_inside(std::size_t end);
   void flush_garbage(std::vector<Piece>& out);
-  bool whole_message_at(std::size_t at) const;
+  /// Whether a whole object starts at `at` (then `*end` is one past it).
+  bool whole_message_at(std::size_t at, std::size_t* end) const;
+  /// Whether the next byte after `at` that is not whitespace goes on with a structure.
+  bool inside_structure(std::size_t at) const;
   std::string excerpt(std::size_t from, std::size_t to) const;
   void compact();
 
@@ -100,6 +109,7 @@ class MessageFramer {
   bool in_broken_ = false;   ///< skipping the rest of a broken part up to the next '{'
   std::string garbage_;      ///< excerpt of the current run of bytes outside any object
   bool garbage_seen_ = false;
+  std::uint64_t candidates_ = 0;
 };
 
 }  // namespace sweetspot

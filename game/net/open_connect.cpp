@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <system_error>
+#include <unordered_set>
 
 #include "physics/error.hpp"
 
@@ -69,7 +70,9 @@ std::optional<double> number(const nlohmann::json& o, const char* key, const cha
   } else if (v->is_string() && number_text(v->get<std::string>())) {
     const std::string& t = v->get_ref<const std::string&>();
     // Out of a double's range ("1e999") reads as infinite and is refused below.
-    if (std::from_chars(t.data(), t.data() + t.size(), d).ec != std::errc()) d = std::numeric_limits<double>::infinity();
+    // Past a double's range: "1e999" reads as infinite (refused below), "1e-999" as 0.
+    if (std::from_chars(t.data(), t.data() + t.size(), d).ec != std::errc())
+      d = t.find("e-") != std::string::npos || t.find("E-") != std::string::npos ? 0.0 : std::numeric_limits<double>::infinity();
   } else {
     throw InputError(std::string(where) + "." + key + " = " + v->dump().substr(0, 40) +
                      ": not a number (a JSON number, or a string of digits only: the protocol's units are mph, degrees and rpm)");
@@ -93,7 +96,7 @@ bool flag(const nlohmann::json& o, const char* key, const char* where) {
 // Parses `text`, refusing a key given twice in one object (keys match without case, so
 // "Speed" and "speed" are the same key): which one a reader takes would be a guess.
 nlohmann::json parse_unique_keys(std::string_view text) {
-  std::vector<std::vector<std::string>> seen;  // the keys of each open object
+  std::vector<std::unordered_set<std::string>> seen;  // the keys of each open object
   std::vector<std::string> names{"message"};   // what each open object is called
   std::string last_key, duplicate;
   const nlohmann::json::parser_callback_t check = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
@@ -108,12 +111,7 @@ nlohmann::json parse_unique_keys(std::string_view text) {
     } else if (event == E::key && !seen.empty()) {
       last_key = parsed.get<std::string>();
       const std::string k = lower(last_key);
-      auto& keys = seen.back();
-      if (std::find(keys.begin(), keys.end(), k) != keys.end()) {
-        if (duplicate.empty()) duplicate = names.back() + "." + last_key;
-      } else {
-        keys.push_back(k);
-      }
+      if (!seen.back().insert(k).second && duplicate.empty()) duplicate = names.back() + "." + last_key;
     } else if (event == E::array_start) {
       last_key.clear();
     }

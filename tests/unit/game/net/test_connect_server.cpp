@@ -382,6 +382,25 @@ TEST_CASE("--max-shots plays exactly that many shots, a burst included", "[net][
   CHECK(s.lines() == 3);
 }
 
+TEST_CASE("--max-shots ends the server even when the client closes at once", "[net][server][hostile]") {
+  // The greeting (201) may still be waiting when the last 200 is out; a client that closes
+  // then must not leave the server running forever.
+  ConnectOptions o = Served::defaults();
+  o.max_shots = 1;
+  Served s(o);
+  {
+    Client c(s.server.port());
+    REQUIRE(c.send(shot(1)));
+    c.shutdown_write();
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!s.server.stopped() && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(5))
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  CHECK(s.server.stopped());
+  s.finish();
+  CHECK(s.server.shots() == 1);
+}
+
 TEST_CASE("a flag sent as a string is refused, not answered and dropped", "[net][server][hostile]") {
   Served s;
   Client c(s.server.port());

@@ -95,6 +95,23 @@ TEST_CASE("a quiet sender's whole message inside an unfinished one is found", "[
   CHECK(messages(g.feed(slow.substr(40))) == std::vector<std::string>{slow});
 }
 
+TEST_CASE("a slow message is not cut at a quiet moment after one of its nested objects", "[net][framer]") {
+  const std::string slow = shot("slow");
+  const std::size_t after_ball = slow.find("},") + 2;  // BallData closed, the rest to come
+  MessageFramer f;
+  CHECK(f.feed(slow.substr(0, after_ball)).empty());
+  CHECK(f.flush_stalled().empty());
+  CHECK(messages(f.feed(slow.substr(after_ball))) == std::vector<std::string>{slow});
+}
+
+TEST_CASE("an object nested in a broken message is a piece of it, not a message", "[net][framer]") {
+  MessageFramer f;
+  auto pieces = f.feed(R"({"a":{"b":1},"c":x})" + shot("next"));
+  append(pieces, f.finish());
+  CHECK(messages(pieces) == std::vector<std::string>{shot("next")});
+  CHECK(bad_pieces(pieces) == 1);
+}
+
 TEST_CASE("the scanner holds JSON's grammar", "[net][framer]") {
   const auto whole = [](const std::string& text) {
     JsonScanner s(MessageFramer::kMaxDepth);
@@ -111,7 +128,8 @@ TEST_CASE("the scanner holds JSON's grammar", "[net][framer]") {
     CHECK(whole(ok.substr(ok.find('{'))) == S::Complete);
   for (const std::string bad : {R"({"a":01})", R"({"a":1.})", R"({"a":-})", R"({"a":.5})", R"({"a":tru})",
                                 R"({"a":"\x"})", R"({"a":"\u12g4"})", R"({a:1})", R"({"a" 1})", R"({"a":1,})",
-                                R"({"a":[1,]})", R"({"a":[1}})", R"({"a":1]})", "{\"a\":\"\x01\"}"})
+                                R"({"a":[1,]})", R"({"a":[1}})", R"({"a":1]})", "{\"a\":\"\x01\"}", R"({"a":1 2})",
+                                R"({"a":1 .5})", R"({"a":0 e3})", R"({"a":1.5 5})", R"({"a":-1e5 1})"})
     CHECK(whole(bad) == S::Invalid);
 }
 

@@ -275,7 +275,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
                        " mm (ball.radius) at " + std::to_string(static_cast<int>(std::lround(speed))) +
                        " m/s through the air has a Reynolds number of " + std::to_string(static_cast<int>(re)) +
                        ", beyond the aero models' range (at most " + std::to_string(static_cast<int>(kMaxReynolds)) +
-                       ": a tour drive is 2.2e5, a 110 mph batted ball 3.4e5); a smaller ball or a slower launch");
+                       ": a tour drive is 2.1e5, a 110 mph batted ball 2.4e5); a smaller ball or a slower launch");
     carry.h = launch_step(tol.rel_tol);
   }
   const double t_end = std::min(until, set.max_time);

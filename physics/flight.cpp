@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
+#include <string>
 
 #include "physics/detail/flight_steps.hpp"
 #include "physics/error.hpp"
@@ -13,6 +15,40 @@
 namespace sweetspot {
 
 // ---- 1. model and state --------------------------------------------------------------------
+namespace {
+
+/// Air density (kg/m³) times this is the least density of a ball the flight equations hold
+/// for: they leave out buoyancy (ρ_air/ρ_ball of the weight) and the air the ball carries
+/// along (added mass, half the displaced air's: ρ_air/(2ρ_ball) of the mass), so both stay
+/// under 1 %. A golf ball is ~950 times sea-level air, a softball ~330 times; a 10 g ball of
+/// radius 10 cm is 2 times, as light as a party balloon, and floats half its weight.
+constexpr double kMinDensityOverAir = 100.0;
+
+/// Osmium, the densest element (22.59 g/cm³, CRC Handbook of Chemistry and Physics): no ball
+/// of any material is denser (a 500 g ball of radius 10 mm would be 119 g/cm³).
+constexpr double kMaxBallDensity = 22590.0;  // kg/m³
+
+std::string grams_per_cm3(double kg_per_m3) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g g/cm³", kg_per_m3 / 1000.0);
+  return text;
+}
+
+/// A mass and a radius each inside their ranges can still make no ball the models know.
+void check_ball_density(const BallProperties& ball, double air_density) {
+  const double density = ball.mass / (4.0 / 3.0 * kPi * ball.radius * ball.radius * ball.radius);
+  const std::string what = "a ball of " + std::to_string(std::lround(1000.0 * ball.mass)) + " g (ball.mass) and radius " +
+                           std::to_string(std::lround(1000.0 * ball.radius)) + " mm (ball.radius) has a density of " +
+                           grams_per_cm3(density);
+  if (density > kMaxBallDensity)
+    throw InputError("flight: " + what + ", denser than any material (osmium, the densest, is 22.6 g/cm³)");
+  if (density < kMinDensityOverAir * air_density)
+    throw InputError("flight: " + what + ", less than 100 times the air's (" + grams_per_cm3(air_density) +
+                     "): the air would carry over 1 % of its weight and mass, which the flight model leaves out; a heavier or smaller ball");
+}
+
+}  // namespace
+
 ShotModel make_shot_model(const BallProperties& ball, const AeroModel& aero, const Environment& environment,
                           const Terrain* terrain, const FlightSettings& settings) {
   if (!(ball.mass > 0.0 && ball.mass <= 1.0)) throw InputError("ball.mass out of range (allowed (0, 1] kg)");
@@ -40,6 +76,7 @@ ShotModel make_shot_model(const BallProperties& ball, const AeroModel& aero, con
   m.settings = settings;
   m.air_density = air_density(environment);
   m.air_viscosity = air_viscosity(environment.temperature);
+  check_ball_density(ball, m.air_density);
   return m;
 }
 
@@ -147,7 +184,21 @@ ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   // random-world soak).
   constexpr int kStalledSteps = 64;
   constexpr double kNoProgress = 1e-7;  // s
-  state.stalled = state.t > t0 + kNoProgress ? 0 : state.stalled + 1;
+  const bool progressed = state.t > t0 + kNoProgress;
+  state.stalled = progressed ? 0 : state.stalled + 1;
+  // Free flight that makes no progress is no ball held by faces: the flight equations are
+  // too stiff to integrate (an aero law that explodes, a ball the models were not made for).
+  // Put to rest, it would end the shot mid-air at an arbitrary instant and report it as a
+  // result; it is refused like a non-finite state.
+  const bool free_flight = airborne && ev.kind == ShotEventKind::Step &&
+                           (state.phase == Phase::Flight || state.phase == Phase::Bounce);
+  state.stalled_in_air = !progressed && free_flight ? state.stalled_in_air + 1 : 0;
+  if (state.stalled_in_air >= kStalledSteps)
+    throw InputError("flight: the flight equations stopped advancing at t = " + std::to_string(state.t) + " s, at " +
+                     std::to_string(state.velocity().norm()) + " m/s, for a ball of " +
+                     std::to_string(1000.0 * model.ball.mass) + " g (ball.mass) and " +
+                     std::to_string(1000.0 * model.ball.radius) +
+                     " mm (ball.radius); the inputs are outside what the flight models can represent");
   if (!state.ended && state.stalled >= kStalledSteps) put_to_rest();
   // Asleep: a ball rolling slower than rest_speed for half a second is at rest where it is,
   // as a rigid-body engine puts a body to sleep (Box2D: linear sleep tolerance 1 cm/s, time

@@ -2,9 +2,11 @@
 // the landing instant by root finding on the step's dense output.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "physics/detail/flight_steps.hpp"
 #include "physics/error.hpp"
+#include "physics/units.hpp"
 
 namespace sweetspot::detail {
 namespace {
@@ -244,6 +246,30 @@ double launch_step(double rel_tol) {
   return std::clamp(kStepAtMicro * std::pow(rel_tol / 1e-6, 0.2), 1e-4, 1.0);
 }
 
+/// The aero models are stated up to kMaxReynolds, for the flow past the ball and for the flow
+/// its spinning surface drags along: a large, fast ball beyond it (a 20 cm ball at 100 mph),
+/// or one whose surface spins faster than any measured ball's (a 20 cm ball at 20 000 rpm: its
+/// surface at 209 m/s, 4.7x a golf ball's at the same rate), has no drag, lift or decay law to
+/// fly by, and its integration blows up. The surface's Reynolds number is ρ(ωR)D/µ, the same
+/// number with the surface speed for the ball's: a golf ball at 20 000 rpm is 1.3e5, a
+/// baseball at 20 000 rpm 3.7e5, both inside.
+void refuse_beyond_aero_range(const ShotModel& m, const Dynamics& f, const State9& y) {
+  const auto whole = [](double x) { return std::to_string(static_cast<long long>(std::llround(x))); };
+  const std::string ball = "a ball of radius " + whole(1000.0 * m.ball.radius) + " mm (ball.radius)";
+  const std::string range = ", beyond the aero models' range (at most " + whole(kMaxReynolds) + ": ";
+  const double speed = f.air_velocity(y).norm();
+  const double re = speed * f.aero.re_per_speed;
+  if (re > kMaxReynolds)
+    throw InputError("flight: " + ball + " at " + whole(speed) + " m/s through the air has a Reynolds number of " +
+                     whole(re) + range + "a tour drive is 2.1e5, a 110 mph batted ball 2.4e5); a smaller ball or a slower launch");
+  const double surface_speed = y.segment<3>(6).norm() * m.ball.radius;
+  const double re_spin = surface_speed * f.aero.re_per_speed;
+  if (re_spin > kMaxReynolds)
+    throw InputError("flight: " + ball + " spinning at " + whole(radps_to_rpm(y.segment<3>(6).norm())) +
+                     " rpm moves its surface at " + whole(surface_speed) + " m/s, a spin Reynolds number of " +
+                     whole(re_spin) + range + "a golf ball at 20000 rpm is 1.3e5); a smaller ball or less spin");
+}
+
 }  // namespace
 
 ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
@@ -266,16 +292,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   State9 y1 = s.y;
   const Dynamics f(m, ContactLayer::of(m, s));
   if (!(carry.h > 0.0)) {  // a launch (or a restart after a bounce): no step taken yet
-    // The aero models are stated up to kMaxReynolds: a large, fast ball beyond it (a 20 cm
-    // ball at 100 mph) has no drag or lift law to fly by, and its integration blows up.
-    const double speed = f.air_velocity(s.y).norm();
-    const double re = speed * f.aero.re_per_speed;
-    if (re > kMaxReynolds)
-      throw InputError("flight: a ball of radius " + std::to_string(static_cast<int>(std::lround(1000.0 * m.ball.radius))) +
-                       " mm (ball.radius) at " + std::to_string(static_cast<int>(std::lround(speed))) +
-                       " m/s through the air has a Reynolds number of " + std::to_string(static_cast<int>(re)) +
-                       ", beyond the aero models' range (at most " + std::to_string(static_cast<int>(kMaxReynolds)) +
-                       ": a tour drive is 2.1e5, a 110 mph batted ball 2.4e5); a smaller ball or a slower launch");
+    refuse_beyond_aero_range(m, f, s.y);
     carry.h = launch_step(tol.rel_tol);
   }
   const double t_end = std::min(until, set.max_time);
@@ -302,8 +319,12 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   }
   ++s.counters.flight_steps;
   if (!finite(y1) || !std::isfinite(carry.h)) {
-    throw InputError("flight: the ball's state became non-finite at t = " + std::to_string(s.t) +
-                     " s; the inputs are outside what the flight models can represent");
+    throw InputError("flight: the ball's state became non-finite at t = " + std::to_string(s.t) + " s, from " +
+                     std::to_string(s.y.segment<3>(3).norm()) + " m/s and " +
+                     std::to_string(radps_to_rpm(s.y.segment<3>(6).norm())) + " rpm, for a ball of " +
+                     std::to_string(1000.0 * m.ball.mass) + " g (ball.mass) and " +
+                     std::to_string(1000.0 * m.ball.radius) +
+                     " mm (ball.radius); the inputs are outside what the flight models can represent");
   }
   // Apex: vertical velocity crossing zero inside the step. The dense output's height is at
   // most r1 + |r2| + |r3| + |r4| + |r5| (θ and 1 − θ lie in [0, 1]); a step that cannot rise

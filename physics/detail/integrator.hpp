@@ -145,10 +145,12 @@ int dopri_step(const F& f, const IntegratorTolerances& tol, DopriCarry<N>& carry
     }
     const double norm = std::sqrt((err.array() / sc).square().sum() / N);
     // Standard controller: safety 0.9, growth limited to [0.2, 5].
-    const double factor = step_growth(norm);
-    // A NaN error norm (a state gone non-finite) is accepted here so the caller sees the
-    // non-finite state and refuses it, instead of rejecting forever.
-    if (norm <= 1.0 || h <= tol.h_min || std::isnan(norm)) {
+    // A NaN norm is a trial whose stages overflowed (a step far too long for a stiff drag,
+    // e.g. a 10 g ball of 20 cm at 40 m/s): rejected with the smallest factor like any huge
+    // error. At h_min it is accepted, so the caller sees the non-finite state and refuses it
+    // instead of rejecting forever.
+    const double factor = std::isnan(norm) ? 0.2 : step_growth(norm);
+    if (norm <= 1.0 || h <= tol.h_min) {
       dense.t0 = t;
       dense.h = h;
       dense.r1 = y;

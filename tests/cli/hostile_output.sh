@@ -121,9 +121,14 @@ with open("w/many.obj", "w") as f:
 printf 'sport = "golf"\nmesh = "many.obj"\n' > w/many.toml
 expect_rc 2 "over 10000 objects" -- "$bin" shot golf/pw --set world.name=w/many.toml
 
-# A ball the aero models cannot fly (a light 20 cm ball at a drive's speed: Reynolds number
-# past their range) is refused naming the key, not integrated into NaN.
-expect_rc 2 "ball.radius" -- "$bin" shot golf/driver --set ball.mass=10g --set ball.radius=0.1m
+# Balls the models cannot fly are refused naming the keys, not integrated into NaN or put to
+# rest after 1e-14 s: as light as a balloon (10 g, radius 10 cm), denser than osmium, a
+# Reynolds number past the aero models' range (500 g, radius 8 cm, at a drive's speed), a
+# surface spun past it (20 000 rpm at radius 8 cm).
+expect_rc 2 "100 times the air" -- "$bin" shot golf/driver --set ball.mass=10g --set ball.radius=0.1m
+expect_rc 2 "ball.mass" -- "$bin" flight --ball-speed 30m/s --launch-angle 10deg --spin 0rpm --set ball.mass=500g --set ball.radius=10mm
+expect_rc 2 "ball.radius" -- "$bin" flight --ball-speed 70m/s --launch-angle 10deg --spin 2000rpm --set ball.mass=500g --set ball.radius=80mm
+expect_rc 2 "spin Reynolds" -- "$bin" flight --ball-speed 5m/s --launch-angle 45deg --spin 20000rpm --spin-axis 180deg --set ball.mass=500g --set ball.radius=80mm
 
 # A file-size limit: exit 2 naming the file, the old file kept, no temporary left behind.
 echo old > big.csv

@@ -377,12 +377,64 @@ TEST_CASE("step(): `until` stops a flight step at that time", "[flight][state]")
 }
 
 TEST_CASE("a state that turns non-finite is refused, never looped on", "[flight][input]") {
-  // An aero model with a lift that explodes with speed (a corrupt table) sends the state
-  // to infinity within a few steps; the step refuses it with a message instead of hanging.
+  // An aero model with a drag that pushes forward (a corrupt table) sends the speed to
+  // infinity in a microsecond; the steps shrink toward the integrator's smallest. The shot is
+  // refused with a message naming the ball's keys, instead of hanging or being put to rest
+  // in mid-air at 1e10 m/s as a ball held by faces would be.
   AeroModel bad;
   bad.name = "exploding";
   bad.d0 = -1e6;  // drag pushing forward: energy without bound
   FlightCase in = golf_launch(100.0, 20.0, 2000.0);
   in.aero = &bad;
-  CHECK_THROWS_WITH(fly(in), Catch::Contains("non-finite"));
+  CHECK_THROWS_WITH(fly(in), Catch::Contains("outside what the flight models can represent") &&
+                                 Catch::Contains("ball.mass") && Catch::Contains("ball.radius"));
+}
+
+namespace {
+/// A launch of a ball of `mass` (kg) and `radius` (m), a solid sphere, from the ground.
+FlightCase ball_launch(double mass, double radius, double mps, double launch_deg, double rpm) {
+  FlightCase c = golf_launch(0.0, 0.0, 0.0);
+  c.ball = {mass, radius, 0.4 * mass * radius * radius};
+  c.launch = launch_from_metrics(mps, deg_to_rad(launch_deg), 0.0, rpm_to_radps(rpm), 0.0, Vec3(0.0, radius, 0.0));
+  return c;
+}
+}  // namespace
+
+TEST_CASE("a ball the air would float, or denser than any material, is refused naming its keys", "[flight][input]") {
+  // Each within its own range (10..500 g, 10..100 mm), together no ball the flight model
+  // holds for. 10 g of radius 10 cm: 2.4 kg/m³, twice the air's, buoyancy half its weight
+  // (once "at rest" after 1e-14 s, or non-finite). 500 g of radius 1 cm: 119 g/cm³.
+  CHECK_THROWS_WITH(fly(ball_launch(0.010, 0.100, 30.0, 10.0, 3000.0)),
+                    Catch::Contains("ball.mass") && Catch::Contains("ball.radius") && Catch::Contains("100 times the air"));
+  CHECK_THROWS_WITH(fly(ball_launch(0.500, 0.010, 30.0, 10.0, 3000.0)),
+                    Catch::Contains("ball.mass") && Catch::Contains("ball.radius") && Catch::Contains("osmium"));
+  // The balls people play with fly: golf (1.13 g/cm³), baseball (0.69), a 12 in softball
+  // (190 g, radius 48.5 mm: 0.40), a 10 g ball of radius 2.5 cm (0.15, 130 times the air).
+  for (const auto& [mass, radius] : {std::pair{0.04593, 0.021335}, std::pair{0.145, 0.0369},
+                                     std::pair{0.190, 0.0485}, std::pair{0.010, 0.025}}) {
+    const ShotTrajectory tr = fly(ball_launch(mass, radius, 30.0, 20.0, 2000.0));
+    CHECK(tr.summary.carry_m > 5.0);
+    CHECK(tr.summary.end == EndReason::Rest);
+  }
+}
+
+TEST_CASE("a surface spinning past the aero models' Reynolds range is refused, naming ball.radius", "[flight][input]") {
+  // 20 000 rpm on a ball of radius 8 cm moves its surface at 168 m/s (spin Reynolds number
+  // 1.8e6; at 10 cm this went non-finite after 13 s, naming no key). A golf ball (1.3e5) and a
+  // baseball (3.7e5) at the same 20 000 rpm fly.
+  CHECK_THROWS_WITH(fly(ball_launch(0.5, 0.080, 5.0, 45.0, 20000.0)),
+                    Catch::Contains("ball.radius") && Catch::Contains("spin Reynolds number"));
+  CHECK(fly(ball_launch(0.04593, 0.021335, 5.0, 45.0, 20000.0)).summary.end == EndReason::Rest);
+  CHECK(fly(ball_launch(0.145, 0.0369, 5.0, 45.0, 20000.0)).summary.end == EndReason::Rest);
+}
+
+TEST_CASE("a light ball in stiff drag flies: a first step that overflows is taken again shorter", "[flight]") {
+  // 10 g of radius 25 mm at 42 m/s: drag decelerates it at ~70 g, a time constant of ~50 ms
+  // under the launch's first trial step. It flies and lands short, never non-finite.
+  for (double mps : {40.0, 42.0, 44.0, 80.0}) {
+    const ShotTrajectory tr = fly(ball_launch(0.010, 0.025, mps, 10.0, 3000.0));
+    CHECK(tr.summary.end == EndReason::Rest);
+    CHECK(tr.summary.carry_m > 1.0);
+    CHECK(tr.summary.carry_m < 60.0);
+  }
 }

@@ -90,6 +90,7 @@ struct ConnectServer::Impl : std::enable_shared_from_this<ConnectServer::Impl> {
 
   void listen();
   void accept();
+  void decide_knock(std::shared_ptr<tcp::socket> knock, Clock::duration after);
   void take(tcp::socket socket);
   void refuse(tcp::socket socket);
   void shutdown();
@@ -135,6 +136,12 @@ class Session : public std::enable_shared_from_this<Session> {
            (framer_.pending() > 0 && now - pending_since_ >= kStuckAfter);
   }
   bool idle_writer() const { return out_.empty() && !writing_; }
+  /// How long until an unfinished message makes this one replaceable (zero when none is
+  /// unfinished): a knock meanwhile waits for it rather than being refused at once.
+  Clock::duration until_stuck() const {
+    if (framer_.pending() == 0) return Clock::duration::zero();
+    return std::max(Clock::duration::zero(), pending_since_ + kStuckAfter - Clock::now());
+  }
 
  private:
   void read() {
@@ -414,18 +421,30 @@ void ConnectServer::Impl::accept() {
     const auto live = current.lock();
     if (live && live->open() && !live->replaceable()) {
       // Held: decide a moment later (a reconnect's old socket may have closed meanwhile).
-      auto knock = std::make_shared<tcp::socket>(std::move(socket));
-      auto timer = std::make_shared<asio::steady_timer>(io, kKnockGrace);
-      timer->async_wait([this, knock, timer](const asio::error_code& e) {
-        if (e || stopping_all) return;
-        const auto holder = current.lock();
-        if (holder && holder->open() && !holder->replaceable()) refuse(std::move(*knock));
-        else take(std::move(*knock));
-      });
+      decide_knock(std::make_shared<tcp::socket>(std::move(socket)), kKnockGrace);
     } else {
       take(std::move(socket));
     }
     accept();
+  });
+}
+
+void ConnectServer::Impl::decide_knock(std::shared_ptr<tcp::socket> knock, Clock::duration after) {
+  auto timer = std::make_shared<asio::steady_timer>(io, after);
+  timer->async_wait([this, knock, timer](const asio::error_code& e) {
+    if (e || stopping_all) return;
+    const auto holder = current.lock();
+    if (!(holder && holder->open() && !holder->replaceable())) {
+      take(std::move(*knock));
+    } else if (const auto wait = holder->until_stuck(); wait > Clock::duration::zero()) {
+      // The holder is in the middle of a message: the knock waits until it finishes it (then
+      // refused) or has held it kStuckAfter (then served), so a launch monitor that knocks
+      // while a client trickles is served within kStuckAfter instead of sent away. Looked
+      // at again every 100 ms, so a refusal comes soon after the message is whole.
+      decide_knock(knock, std::min<Clock::duration>(wait + std::chrono::milliseconds(10), std::chrono::milliseconds(100)));
+    } else {
+      refuse(std::move(*knock));
+    }
   });
 }
 

@@ -8,6 +8,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <deque>
 #include <optional>
@@ -348,6 +349,47 @@ TEST_CASE("a client that trickles bytes does not hold the slot against a launch 
   REQUIRE(monitor.send(shot(1)));
   CHECK(monitor.next_with(200));
   CHECK(trickler.closed_by_server());
+}
+
+TEST_CASE("a launch monitor that knocks while a client trickles waits and is served, not sent away", "[net][server][hostile]") {
+  // Before: a knock 0.5 s into a trickle was answered 503 (the holder not yet stuck), and the
+  // launch monitor had to retry. Now the knock waits for the holder's message: finished, the
+  // knock is refused; held 3 s, the knock takes the slot.
+  Served s;
+  Client trickler(s.server.port());
+  REQUIRE(trickler.next_with(201));
+  REQUIRE(trickler.send(R"({"DeviceID":"slow","BallData":{"Speed":)"));
+  std::atomic<bool> stop{false};
+  std::thread drip([&] {
+    for (int i = 0; i < 24 && !stop; ++i) {
+      if (!trickler.send("1")) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    }
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  Client monitor(s.server.port());
+  const auto first = monitor.next();
+  stop = true;
+  drip.join();
+  REQUIRE(first);
+  CHECK((*first)["Code"] == 201);
+  REQUIRE(monitor.send(shot(1)));
+  CHECK(monitor.next_with(200));
+}
+
+TEST_CASE("a knock while the holder finishes its message is refused once it is whole", "[net][server][hostile]") {
+  Served s;
+  Client holder(s.server.port());
+  REQUIRE(holder.next_with(201));
+  const std::string whole = shot(1);
+  REQUIRE(holder.send(whole.substr(0, 20)));
+  Client knocker(s.server.port());
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  REQUIRE(holder.send(whole.substr(20)));
+  CHECK(holder.next_with(200));
+  const auto reply = knocker.next();
+  REQUIRE(reply);
+  CHECK((*reply)["Code"] == 503);
 }
 
 TEST_CASE("a launch monitor that reconnects at once is served, not refused", "[net][server][hostile]") {

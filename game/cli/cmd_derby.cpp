@@ -6,6 +6,7 @@
 #include "game/cli/command.hpp"
 #include "game/render/image.hpp"
 #include "game/report/report.hpp"
+#include "game/modes/baseball/batting.hpp"
 #include "game/modes/baseball/session.hpp"
 #include "game/report/session_json.hpp"
 #include "game/report/box_score.hpp"
@@ -66,7 +67,8 @@ int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
 
 RunFn setup_derby(CLI::App& sub) {
   auto o = std::make_shared<DerbyOptions>();
-  sub.add_option("--bot", o->bot, "batter skill: pro or amateur (default pro)");
+  sub.add_option("--bot", o->bot, "batter skill: pro or amateur (default pro)")
+      ->check(checked_by([](const std::string& t) { batter_skill(t); }, "SKILL"));
   sub.add_option("--seed", o->seed, "seed of the pitcher's and the batter's errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   auto* outs = sub.add_option("--outs", o->session.outs, "derby: outs before it ends, 1..50 (default 10)");
   sub.add_option("--mode", o->session.mode, "derby (default), at-bat, practice or game (two bot lineups against bot pitchers)");
@@ -78,7 +80,9 @@ RunFn setup_derby(CLI::App& sub) {
   sub.add_option("--plot", o->plot, "write the session's spray chart (PNG)");
   return [o, outs, swings, innings, games](const Assets& assets) -> int {
     // A flag of another mode would be ignored without a word: refuse it.
-    const std::string& mode = o->session.mode;  // an unknown one is refused by run_session
+    const std::string& mode = o->session.mode;
+    if (mode != "derby" && mode != "at-bat" && mode != "practice" && mode != "game")
+      throw InputError("--mode " + mode + ": unknown mode (allowed: derby, at-bat, practice, game)");
     if (mode != "game" && (innings->count() > 0 || games->count() > 0))
       throw InputError("--innings, --games: only a game has innings (--mode game)");
     if (mode == "game") return run_game(assets, *o, outs->count() + swings->count() > 0);

@@ -16,6 +16,8 @@
 #include "game/content/swings_file.hpp"
 #include "game/modes/golf/bot.hpp"
 #include "game/modes/golf/golf_group.hpp"
+#include "game/modes/golf/golfer.hpp"
+#include "game/rules/golf_scoring.hpp"
 #include "game/modes/golf/range_session.hpp"
 #include "game/render/dispersion_plot.hpp"
 #include "game/report/round_json.hpp"
@@ -189,11 +191,15 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
 RunFn setup_round(CLI::App& sub) {
   auto o = std::make_shared<RoundOptions>();
   sub.add_option("course", o->course, "a course of assets/courses (default links) or a .toml file");
-  sub.add_option("--bot", o->bots, "a bot player of this skill: tour, scratch, amateur or beginner; repeat for up to 4 players (default one tour bot)");
+  sub.add_option("--bot", o->bots, "a bot player of this skill: tour, scratch, amateur or beginner; repeat for up to 4 players (default one tour bot)")
+      ->check(checked_by([](const std::string& t) { golfer_skill(t); }, "SKILL"));
   sub.add_option("--bag", o->bag, "the first player's measured bag (range --bag-out): their caddie's carries");
-  sub.add_option("--handicap", o->handicaps, "course handicap per player in order, 0..54 (default 0)");
-  sub.add_option("--format", o->format, "stroke (default), match (two players), stableford or skins");
-  sub.add_option("--gimme", o->gimme, "putts this close (m) are conceded, 0..3 (default: 0.6 in match play, else off)");
+  sub.add_option("--handicap", o->handicaps, "course handicap per player in order, 0..54 (default 0)")
+      ->check(CLI::Range(0, kMaxHandicap));
+  sub.add_option("--format", o->format, "stroke (default), match (two players), stableford or skins")
+      ->check(checked_by([](const std::string& t) { golf_format(t); }, "FORMAT"));
+  sub.add_option("--gimme", o->gimme, "putts this close (m) are conceded, 0..3 (default: 0.6 in match play, else off)")
+      ->check(CLI::Range(GolfOptions::kGimme.min, GolfOptions::kGimme.max));
   sub.add_flag("--calm", o->calm, "no wind on any hole (default: the course's wind, else drawn from the seed)");
   sub.add_option("--seed", o->seed, "seed of the bot's swing errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   sub.add_option("--swings", o->swings, "scripted meter inputs, one [[stroke]] per stroke (TOML)");

@@ -38,6 +38,9 @@ RunFn setup_validate(CLI::App& sub) {
       ->check(CLI::Range(0.0, 100.0));
   sub.add_option("--library", o->library, "a validation file or folder (default: the assets' validation/)");
   return [o](const Assets& assets) -> int {
+    // Every flag is checked before a case runs: a bad one prints nothing but its message.
+    if (o->min_unfitted_pass_rate >= 0.0 && o->min_pass_rate < 0.0)
+      throw InputError("--min-unfitted-pass-rate: give --min-pass-rate too (without it every case must pass)");
     if (!o->filter.empty()) {
       const auto& tags = validation_tags();
       if (std::find(tags.begin(), tags.end(), o->filter) == tags.end()) {
@@ -57,8 +60,6 @@ RunFn setup_validate(CLI::App& sub) {
     else
       std::cout << validation_scorecard(outcomes);
     const ValidationTotals t = validation_totals(outcomes);
-    if (o->min_unfitted_pass_rate >= 0.0 && o->min_pass_rate < 0.0)
-      throw InputError("--min-unfitted-pass-rate: give --min-pass-rate too (without it every case must pass)");
     if (o->min_pass_rate >= 0.0) {
       const bool all_ok = t.all.percent() + 1e-9 >= o->min_pass_rate;
       const bool unfitted_ok = o->min_unfitted_pass_rate < 0.0 || t.not_fitted.percent() + 1e-9 >= o->min_unfitted_pass_rate;

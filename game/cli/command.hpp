@@ -18,6 +18,7 @@
 #include <CLI/CLI.hpp>
 
 #include "game/content/assets.hpp"
+#include "physics/error.hpp"
 
 namespace sweetspot::cli {
 
@@ -41,6 +42,21 @@ inline const CLI::Validator kNotEmpty(
       return text.empty() ? "an empty value: give one, or leave the option out for its default" : std::string();
     },
     "");
+/// A flag checked by the model's own lookup (a skill, a format): its InputError's message
+/// becomes the flag's error, so the one list of allowed values stays with the model.
+template <class Check>
+CLI::Validator checked_by(Check check, std::string description) {
+  return CLI::Validator(
+      [check](std::string& text) -> std::string {
+        try {
+          check(text);
+          return {};
+        } catch (const InputError& e) {
+          return e.what();
+        }
+      },
+      std::move(description));
+}
 using SetupFn = RunFn (*)(CLI::App& sub);
 
 struct CommandInfo {

@@ -83,7 +83,7 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
     throw InputError(source + ": not a saved round (JSON: " + e.what() + ")");
   }
   const Reader r{source};

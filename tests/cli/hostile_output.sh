@@ -130,6 +130,21 @@ expect_rc 2 "ball.mass" -- "$bin" flight --ball-speed 30m/s --launch-angle 10deg
 expect_rc 2 "ball.radius" -- "$bin" flight --ball-speed 70m/s --launch-angle 10deg --spin 2000rpm --set ball.mass=500g --set ball.radius=80mm
 expect_rc 2 "spin Reynolds" -- "$bin" flight --ball-speed 5m/s --launch-angle 45deg --spin 20000rpm --spin-axis 180deg --set ball.mass=500g --set ball.radius=80mm
 
+# A flag is checked before any work: a bad one prints its message and nothing else. An
+# unknown mode names the flag and every mode; a saved round with a number past a double is
+# bad input naming the file (it was an internal error, exit 4).
+expect_rc 2 "give --min-pass-rate too" -- "$bin" validate --min-unfitted-pass-rate 50
+[ -s out.txt ] && fail "validate printed a scorecard before refusing its flags"
+expect_rc 2 "allowed: derby, at-bat, practice, game" -- "$bin" derby --mode x
+expect_rc 2 "\-\-bot: unknown batter skill 'god'" -- "$bin" derby --bot god
+expect_rc 2 "\-\-bot: unknown golfer skill 'god'" -- "$bin" round --bot god
+expect_rc 2 "\-\-format: format 'x'" -- "$bin" round --format x
+expect_rc 2 "\-\-handicap: .*54" -- "$bin" round --handicap 99
+expect_rc 2 "\-\-gimme: " -- "$bin" round --gimme 5
+"$bin" round --bot tour --stop-after 1 --save r.json >/dev/null
+python3 -c 'import sys; t=open("r.json").read(); open("r.json","w").write(t.replace("{", "{\"gimme_m\": 1e999, ", 1))'
+expect_rc 2 "r.json" -- "$bin" round --resume r.json
+
 # A file-size limit: exit 2 naming the file, the old file kept, no temporary left behind.
 echo old > big.csv
 rc=0; (ulimit -f 1; exec "$bin" sweep s.toml --e 0.5:0.9:6 --mu 0.2:0.6:6 --csv big.csv) >/dev/null 2>err.txt || rc=$?

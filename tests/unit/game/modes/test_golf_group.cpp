@@ -215,4 +215,9 @@ TEST_CASE("a saved round resumes to the same state and finishes bit for bit the 
   bad = nlohmann::json::parse(text);
   bad["players"][1]["handicap"] = 60;
   CHECK_THROWS_WITH(parse_round_save(bad.dump(), "save.json"), Catch::Contains("players[1].handicap") && Catch::Contains("54"));
+  // A number beyond a double (1e999) is bad input naming the file, not an internal error.
+  std::string huge = text;
+  huge.replace(huge.find("\"sweetspot_round\""), 0, "\"gimme_m\": 1e999, ");
+  CHECK_THROWS_AS(parse_round_save(huge, "save.json"), InputError);
+  CHECK_THROWS_WITH(parse_round_save(huge, "save.json"), Catch::Contains("save.json"));
 }

@@ -37,14 +37,14 @@ std::string grams_per_cm3(double kg_per_m3) {
 /// A mass and a radius each inside their ranges can still make no ball the models know.
 void check_ball_density(const BallProperties& ball, double air_density) {
   const double density = ball.mass / (4.0 / 3.0 * kPi * ball.radius * ball.radius * ball.radius);
-  const std::string what = "a ball of " + std::to_string(std::lround(1000.0 * ball.mass)) + " g (ball.mass) and radius " +
-                           std::to_string(std::lround(1000.0 * ball.radius)) + " mm (ball.radius) has a density of " +
-                           grams_per_cm3(density);
-  if (density > kMaxBallDensity)
-    throw InputError("flight: " + what + ", denser than any material (osmium, the densest, is 22.6 g/cm³)");
-  if (density < kMinDensityOverAir * air_density)
-    throw InputError("flight: " + what + ", less than 100 times the air's (" + grams_per_cm3(air_density) +
-                     "): the air would carry over 1 % of its weight and mass, which the flight model leaves out; a heavier or smaller ball");
+  const bool too_dense = density > kMaxBallDensity;
+  if (!too_dense && density >= kMinDensityOverAir * air_density) return;
+  const std::string what = "flight: a ball of " + std::to_string(std::lround(1000.0 * ball.mass)) +
+                           " g (ball.mass) and radius " + std::to_string(std::lround(1000.0 * ball.radius)) +
+                           " mm (ball.radius) has a density of " + grams_per_cm3(density);
+  if (too_dense) throw InputError(what + ", denser than any material (osmium, the densest, is 22.6 g/cm³)");
+  throw InputError(what + ", less than 100 times the air's (" + grams_per_cm3(air_density) +
+                   "): the air would carry over 1 % of its weight and mass, which the flight model leaves out; a heavier or smaller ball");
 }
 
 }  // namespace
@@ -158,6 +158,19 @@ void keep_centre_above_ground(const ShotModel& m, ShotState& s, const Vec3& from
 
 }  // namespace
 
+namespace {
+
+/// Out of line: the message is built only on this cold path, off step()'s hot one.
+[[noreturn, gnu::cold, gnu::noinline]] void refuse_stalled_flight(const ShotModel& model, const ShotState& state) {
+  throw InputError("flight: the flight equations stopped advancing at t = " + std::to_string(state.t) + " s, at " +
+                   std::to_string(state.velocity().norm()) + " m/s, for a ball of " +
+                   std::to_string(1000.0 * model.ball.mass) + " g (ball.mass) and " +
+                   std::to_string(1000.0 * model.ball.radius) +
+                   " mm (ball.radius); the inputs are outside what the flight models can represent");
+}
+
+}  // namespace
+
 ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   if (state.ended) return ShotEvent{state.end == EndReason::Rest ? ShotEventKind::Rest : ShotEventKind::Step, {}, {}};
   const bool airborne = state.phase == Phase::Flight || state.phase == Phase::Bounce;
@@ -193,12 +206,7 @@ ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   const bool free_flight = airborne && ev.kind == ShotEventKind::Step &&
                            (state.phase == Phase::Flight || state.phase == Phase::Bounce);
   state.stalled_in_air = !progressed && free_flight ? state.stalled_in_air + 1 : 0;
-  if (state.stalled_in_air >= kStalledSteps)
-    throw InputError("flight: the flight equations stopped advancing at t = " + std::to_string(state.t) + " s, at " +
-                     std::to_string(state.velocity().norm()) + " m/s, for a ball of " +
-                     std::to_string(1000.0 * model.ball.mass) + " g (ball.mass) and " +
-                     std::to_string(1000.0 * model.ball.radius) +
-                     " mm (ball.radius); the inputs are outside what the flight models can represent");
+  if (state.stalled_in_air >= kStalledSteps) refuse_stalled_flight(model, state);
   if (!state.ended && state.stalled >= kStalledSteps) put_to_rest();
   // Asleep: a ball rolling slower than rest_speed for half a second is at rest where it is,
   // as a rigid-body engine puts a body to sleep (Box2D: linear sleep tolerance 1 cm/s, time

@@ -253,21 +253,30 @@ double launch_step(double rel_tol) {
 /// fly by, and its integration blows up. The surface's Reynolds number is ρ(ωR)D/µ, the same
 /// number with the surface speed for the ball's: a golf ball at 20 000 rpm is 1.3e5, a
 /// baseball at 20 000 rpm 3.7e5, both inside.
+/// Out of line: the message is built only on this cold path, off air_step's hot one.
+[[noreturn, gnu::cold, gnu::noinline]] void refuse_non_finite(const ShotModel& m, const ShotState& s) {
+  throw InputError("flight: the ball's state became non-finite at t = " + std::to_string(s.t) + " s, from " +
+                   std::to_string(s.y.segment<3>(3).norm()) + " m/s and " +
+                   std::to_string(radps_to_rpm(s.y.segment<3>(6).norm())) + " rpm, for a ball of " +
+                   std::to_string(1000.0 * m.ball.mass) + " g (ball.mass) and " + std::to_string(1000.0 * m.ball.radius) +
+                   " mm (ball.radius); the inputs are outside what the flight models can represent");
+}
+
 void refuse_beyond_aero_range(const ShotModel& m, const Dynamics& f, const State9& y) {
-  const auto whole = [](double x) { return std::to_string(static_cast<long long>(std::llround(x))); };
-  const std::string ball = "a ball of radius " + whole(1000.0 * m.ball.radius) + " mm (ball.radius)";
-  const std::string range = ", beyond the aero models' range (at most " + whole(kMaxReynolds) + ": ";
   const double speed = f.air_velocity(y).norm();
   const double re = speed * f.aero.re_per_speed;
-  if (re > kMaxReynolds)
-    throw InputError("flight: " + ball + " at " + whole(speed) + " m/s through the air has a Reynolds number of " +
-                     whole(re) + range + "a tour drive is 2.1e5, a 110 mph batted ball 2.4e5); a smaller ball or a slower launch");
   const double surface_speed = y.segment<3>(6).norm() * m.ball.radius;
   const double re_spin = surface_speed * f.aero.re_per_speed;
-  if (re_spin > kMaxReynolds)
-    throw InputError("flight: " + ball + " spinning at " + whole(radps_to_rpm(y.segment<3>(6).norm())) +
-                     " rpm moves its surface at " + whole(surface_speed) + " m/s, a spin Reynolds number of " +
-                     whole(re_spin) + range + "a golf ball at 20000 rpm is 1.3e5); a smaller ball or less spin");
+  if (re <= kMaxReynolds && re_spin <= kMaxReynolds) return;
+  const auto whole = [](double x) { return std::to_string(static_cast<long long>(std::llround(x))); };
+  const std::string ball = "flight: a ball of radius " + whole(1000.0 * m.ball.radius) + " mm (ball.radius)";
+  const std::string range = ", beyond the aero models' range (at most " + whole(kMaxReynolds) + ": ";
+  if (re > kMaxReynolds)
+    throw InputError(ball + " at " + whole(speed) + " m/s through the air has a Reynolds number of " + whole(re) + range +
+                     "a tour drive is 2.1e5, a 110 mph batted ball 2.4e5); a smaller ball or a slower launch");
+  throw InputError(ball + " spinning at " + whole(radps_to_rpm(y.segment<3>(6).norm())) + " rpm moves its surface at " +
+                   whole(surface_speed) + " m/s, a spin Reynolds number of " + whole(re_spin) + range +
+                   "a golf ball at 20000 rpm is 1.3e5); a smaller ball or less spin");
 }
 
 }  // namespace
@@ -319,12 +328,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   }
   ++s.counters.flight_steps;
   if (!finite(y1) || !std::isfinite(carry.h)) {
-    throw InputError("flight: the ball's state became non-finite at t = " + std::to_string(s.t) + " s, from " +
-                     std::to_string(s.y.segment<3>(3).norm()) + " m/s and " +
-                     std::to_string(radps_to_rpm(s.y.segment<3>(6).norm())) + " rpm, for a ball of " +
-                     std::to_string(1000.0 * m.ball.mass) + " g (ball.mass) and " +
-                     std::to_string(1000.0 * m.ball.radius) +
-                     " mm (ball.radius); the inputs are outside what the flight models can represent");
+    refuse_non_finite(m, s);
   }
   // Apex: vertical velocity crossing zero inside the step. The dense output's height is at
   // most r1 + |r2| + |r3| + |r4| + |r5| (θ and 1 − θ lie in [0, 1]); a step that cannot rise

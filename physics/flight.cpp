@@ -158,19 +158,6 @@ void keep_centre_above_ground(const ShotModel& m, ShotState& s, const Vec3& from
 
 }  // namespace
 
-namespace {
-
-/// Out of line: the message is built only on this cold path, off step()'s hot one.
-[[noreturn, gnu::cold, gnu::noinline]] void refuse_stalled_flight(const ShotModel& model, const ShotState& state) {
-  throw InputError("flight: the flight equations stopped advancing at t = " + std::to_string(state.t) + " s, at " +
-                   std::to_string(state.velocity().norm()) + " m/s, for a ball of " +
-                   std::to_string(1000.0 * model.ball.mass) + " g (ball.mass) and " +
-                   std::to_string(1000.0 * model.ball.radius) +
-                   " mm (ball.radius); the inputs are outside what the flight models can represent");
-}
-
-}  // namespace
-
 ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   if (state.ended) return ShotEvent{state.end == EndReason::Rest ? ShotEventKind::Rest : ShotEventKind::Step, {}, {}};
   const bool airborne = state.phase == Phase::Flight || state.phase == Phase::Bounce;
@@ -206,7 +193,9 @@ ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   const bool free_flight = airborne && ev.kind == ShotEventKind::Step &&
                            (state.phase == Phase::Flight || state.phase == Phase::Bounce);
   state.stalled_in_air = !progressed && free_flight ? state.stalled_in_air + 1 : 0;
-  if (state.stalled_in_air >= kStalledSteps) refuse_stalled_flight(model, state);
+  if (state.stalled_in_air >= kStalledSteps)
+    detail::refuse_unrepresentable(model, "the flight equations stopped advancing at t = " + std::to_string(state.t) +
+                                              " s, at " + std::to_string(state.velocity().norm()) + " m/s");
   if (!state.ended && state.stalled >= kStalledSteps) put_to_rest();
   // Asleep: a ball rolling slower than rest_speed for half a second is at rest where it is,
   // as a rigid-body engine puts a body to sleep (Box2D: linear sleep tolerance 1 cm/s, time

@@ -253,15 +253,6 @@ double launch_step(double rel_tol) {
 /// fly by, and its integration blows up. The surface's Reynolds number is ρ(ωR)D/µ, the same
 /// number with the surface speed for the ball's: a golf ball at 20 000 rpm is 1.3e5, a
 /// baseball at 20 000 rpm 3.7e5, both inside.
-/// Out of line: the message is built only on this cold path, off air_step's hot one.
-[[noreturn, gnu::cold, gnu::noinline]] void refuse_non_finite(const ShotModel& m, const ShotState& s) {
-  throw InputError("flight: the ball's state became non-finite at t = " + std::to_string(s.t) + " s, from " +
-                   std::to_string(s.y.segment<3>(3).norm()) + " m/s and " +
-                   std::to_string(radps_to_rpm(s.y.segment<3>(6).norm())) + " rpm, for a ball of " +
-                   std::to_string(1000.0 * m.ball.mass) + " g (ball.mass) and " + std::to_string(1000.0 * m.ball.radius) +
-                   " mm (ball.radius); the inputs are outside what the flight models can represent");
-}
-
 void refuse_beyond_aero_range(const ShotModel& m, const Dynamics& f, const State9& y) {
   const double speed = f.air_velocity(y).norm();
   const double re = speed * f.aero.re_per_speed;
@@ -280,6 +271,12 @@ void refuse_beyond_aero_range(const ShotModel& m, const Dynamics& f, const State
 }
 
 }  // namespace
+
+void refuse_unrepresentable(const ShotModel& m, const std::string& what) {
+  throw InputError("flight: " + what + ", for a ball of " + std::to_string(1000.0 * m.ball.mass) + " g (ball.mass) and " +
+                   std::to_string(1000.0 * m.ball.radius) +
+                   " mm (ball.radius); the inputs are outside what the flight models can represent");
+}
 
 ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   ShotEvent ev;
@@ -328,7 +325,9 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   }
   ++s.counters.flight_steps;
   if (!finite(y1) || !std::isfinite(carry.h)) {
-    refuse_non_finite(m, s);
+    refuse_unrepresentable(m, "the ball's state became non-finite at t = " + std::to_string(s.t) + " s, from " +
+                                  std::to_string(s.y.segment<3>(3).norm()) + " m/s and " +
+                                  std::to_string(radps_to_rpm(s.y.segment<3>(6).norm())) + " rpm");
   }
   // Apex: vertical velocity crossing zero inside the step. The dense output's height is at
   // most r1 + |r2| + |r3| + |r4| + |r5| (θ and 1 − θ lie in [0, 1]); a step that cannot rise

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <string>
 
 #include "physics/detail/aero_kernel.hpp"
 #include "physics/detail/integrator.hpp"
@@ -144,6 +145,10 @@ inline double hop_step(const ShotState& s) {
 }
 
 /// One airborne step: an integrator step, cut at the first contact (which is resolved).
+/// Refuses a flight the models cannot carry on (`what` happened), naming ball.mass and
+/// ball.radius. Cold and out of line: its message is built only when it throws.
+[[noreturn, gnu::cold, gnu::noinline]] void refuse_unrepresentable(const ShotModel& m, const std::string& what);
+
 ShotEvent air_step(const ShotModel& m, ShotState& s, double until);
 /// The ball at contact `c` (its position on the contact): land, bounce, sink or start to roll.
 ShotEvent touch_surface(const ShotModel& m, ShotState& s, const SurfaceContact& c);

@@ -245,13 +245,18 @@ void check_obj_objects(const std::filesystem::path& path, const char* what) {
   std::uint64_t objects = 0;
   std::size_t column = 0;  // of the byte read, in its line
   char prev = '\n';
-  for (char c; in.get(c); prev = c) {
-    // An object statement: 'o' first on its line, then a space or tab.
-    if (column == 1 && prev == 'o' && (c == ' ' || c == '\t') && ++objects > kMaxObjObjects)
-      throw InputError(path.string() + ": the " + what + " has over " + std::to_string(kMaxObjObjects) +
-                       " objects ('o' lines; the limit: the OBJ reader slows with their square); join them "
-                       "(one object per surface is enough: usemtl gives the material) or use groups ('g')");
-    column = c == '\n' ? 0 : column + 1;
+  std::vector<char> block(1 << 16);  // read a block at a time: a world's mesh is read at every start
+  while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
+    const std::size_t n = static_cast<std::size_t>(in.gcount());
+    for (std::size_t i = 0; i < n; prev = block[i], ++i) {
+      const char c = block[i];
+      // An object statement: 'o' first on its line, then a space or tab.
+      if (column == 1 && prev == 'o' && (c == ' ' || c == '\t') && ++objects > kMaxObjObjects)
+        throw InputError(path.string() + ": the " + what + " has over " + std::to_string(kMaxObjObjects) +
+                         " objects ('o' lines; the limit: the OBJ reader slows with their square); join them "
+                         "(one object per surface is enough: usemtl gives the material) or use groups ('g')");
+      column = c == '\n' ? 0 : column + 1;
+    }
   }
 }
 

@@ -131,9 +131,8 @@ class Session : public std::enable_shared_from_this<Session> {
   /// May a launch monitor that knocks take this one's place? When it has gone (its close
   /// read), sent no whole message for kStaleAfter, or held an unfinished one for kStuckAfter.
   bool replaceable() const {
-    const auto now = Clock::now();
-    return closed_ || read_closed_ || now - last_message_ >= kStaleAfter ||
-           (framer_.pending() > 0 && now - pending_since_ >= kStuckAfter);
+    return closed_ || read_closed_ || Clock::now() - last_message_ >= kStaleAfter ||
+           (framer_.pending() > 0 && until_stuck() == Clock::duration::zero());
   }
   bool idle_writer() const { return out_.empty() && !writing_; }
   /// How long until an unfinished message makes this one replaceable (zero when none is

@@ -181,22 +181,9 @@ ShotEvent step(const ShotModel& model, ShotState& state, double until) {
   // A step shorter than 0.1 µs is no progress (the integrator's smallest useful step at a
   // touch is ~1e-6 s; a loop that advances by round-off counts as held: a ball skidding
   // off one face of a steep pit and touching it again 2e-8 s later, 2 500 times, in the
-  // random-world soak).
-  constexpr int kStalledSteps = 64;
-  constexpr double kNoProgress = 1e-7;  // s
-  const bool progressed = state.t > t0 + kNoProgress;
-  state.stalled = progressed ? 0 : state.stalled + 1;
-  // Free flight that makes no progress is no ball held by faces: the flight equations are
-  // too stiff to integrate (an aero law that explodes, a ball the models were not made for).
-  // Put to rest, it would end the shot mid-air at an arbitrary instant and report it as a
-  // result; it is refused like a non-finite state.
-  const bool free_flight = airborne && ev.kind == ShotEventKind::Step &&
-                           (state.phase == Phase::Flight || state.phase == Phase::Bounce);
-  state.stalled_in_air = !progressed && free_flight ? state.stalled_in_air + 1 : 0;
-  if (state.stalled_in_air >= kStalledSteps)
-    detail::refuse_unrepresentable(model, "the flight equations stopped advancing at t = " + std::to_string(state.t) +
-                                              " s, at " + std::to_string(state.velocity().norm()) + " m/s");
-  if (!state.ended && state.stalled >= kStalledSteps) put_to_rest();
+  // random-world soak). (Free flight that stops advancing is refused in air_step instead.)
+  state.stalled = state.t > t0 + detail::kNoProgress ? 0 : state.stalled + 1;
+  if (!state.ended && state.stalled >= detail::kStalledSteps) put_to_rest();
   // Asleep: a ball rolling slower than rest_speed for half a second is at rest where it is,
   // as a rigid-body engine puts a body to sleep (Box2D: linear sleep tolerance 1 cm/s, time
   // to sleep 0.5 s). A slope too steep to hold a ball still speeds it past rest_speed well

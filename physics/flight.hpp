@@ -111,7 +111,8 @@ struct ShotState {
   /// Consecutive steps that did not advance the clock (a ball the faces hold, passed from a
   /// touch to a roll and back at one instant): see step().
   int stalled = 0;
-  /// Of those, the consecutive ones in free flight (no surface touched): see step().
+  /// Consecutive air steps in free flight (no surface touched) that did not advance the
+  /// clock: see air_step().
   int stalled_in_air = 0;
   /// s; the last time the ball was in the air or rolling at rest_speed or faster (a ball
   /// slower than that for half a second is asleep: see step()).

@@ -179,6 +179,9 @@ bool short_hop(const ShotState& s, const Dynamics& f, double t_end, Segment* seg
   if (!s.landed || s.rate_valid || s.phase != Phase::Bounce || !(up_speed > 0.0) || up_speed > kShortHopSpeed)
     return false;
   const double hop = 2.0 * up_speed / kGravity;  // vacuum flight time back to the height it left
+  // A hop shorter than kNoProgress (up at under 0.5 µm/s: a ball at its apex) would not move
+  // the clock, over and over; the integrator's step takes it on instead.
+  if (!(hop > kNoProgress)) return false;
   const double h = std::min(1.25 * hop, t_end - s.t);
   if (!(h > 0.0)) return false;
   const State9 f0 = f(s.t, s.y);
@@ -363,6 +366,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     return ev;
   }
   if (touches) {
+    s.stalled_in_air = 0;
     s.t = hit.t;
     s.y = seg.at(hit.t);
     s.max_height = std::max(s.max_height, s.y[1]);
@@ -380,6 +384,13 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
     m.terrain->refine_contact(centre, &c);
     return touch_surface(m, s, c);
   }
+  // Free flight, no surface touched, that stops advancing is no ball held by faces: the
+  // equations are too stiff to integrate (an aero law that explodes). Put to rest as a held
+  // ball is, it would end the shot in mid-air at an arbitrary instant: refused instead.
+  s.stalled_in_air = t1 > s.t + kNoProgress ? 0 : s.stalled_in_air + 1;
+  if (s.stalled_in_air >= kStalledSteps)
+    refuse_unrepresentable(m, "the flight equations stopped advancing at t = " + std::to_string(t1) + " s, at " +
+                                  std::to_string(y1.segment<3>(3).norm()) + " m/s");
   s.t = t1;
   s.y = y1;
   s.max_height = std::max(s.max_height, s.y[1]);

@@ -145,6 +145,11 @@ inline double hop_step(const ShotState& s) {
 }
 
 /// One airborne step: an integrator step, cut at the first contact (which is resolved).
+/// Steps shorter than kNoProgress (s) make no progress; kStalledSteps of them in a row are a
+/// ball held where it is (step()) or, in free flight, equations too stiff to go on (air_step).
+inline constexpr double kNoProgress = 1e-7;
+inline constexpr int kStalledSteps = 64;
+
 /// Refuses a flight the models cannot carry on (`what` happened), naming ball.mass and
 /// ball.radius. Cold and out of line: its message is built only when it throws.
 [[noreturn, gnu::cold, gnu::noinline]] void refuse_unrepresentable(const ShotModel& m, const std::string& what);

@@ -438,3 +438,19 @@ TEST_CASE("a light ball in stiff drag flies: a first step that overflows is take
     CHECK(tr.summary.carry_m < 60.0);
   }
 }
+
+TEST_CASE("a hop's apex in a hurricane is flown on: never held in mid-air, never refused", "[flight][soak]") {
+  // 5 m/s at -10 deg into the ground under a uniform 60 m/s wind: a hop reached its apex
+  // 2.3 cm up with a vertical speed of 8e-17 m/s, and the short-hop step of 1.6e-17 s left the
+  // clock where it was, 64 times: once put to rest there in mid-air, then refused.
+  Environment env;
+  env.wind_speed = 60.0;
+  env.wind_profile = WindProfile::Uniform;
+  const ShotModel model = test::golf_model(nullptr, env);
+  ShotState s = start_state(golf_launch(5.0 / 0.44704, -10.0, 0.0).launch);
+  REQUIRE_NOTHROW([&] {
+    while (!s.ended) step(model, s, 1e9);
+  }());
+  CHECK(s.t > 1.0);
+  if (s.end == EndReason::Rest) CHECK(s.y[1] == Approx(model.ball.radius).margin(1e-3));
+}

@@ -22,6 +22,11 @@ btVector3 bt(const Vec3& v) { return btVector3(v.x(), v.y(), v.z()); }
 
 bool finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
 
+}  // namespace
+
+// World::Impl's parts: named (not anonymous) because Impl, a class with linkage, holds them.
+namespace world_parts {
+
 struct TriRef {
   int mesh = -1;
   int tri = -1;
@@ -50,6 +55,14 @@ struct CellTriangle {
   int mesh = 0;
   int tri = 0;
 };
+
+}  // namespace world_parts
+
+using world_parts::CellTriangle;
+using world_parts::CollisionMesh;
+using world_parts::TriRef;
+
+namespace {
 
 /// Sweeps whose boxes cover more grid cells than this walk Bullet's tree instead.
 constexpr int kMaxGridCells = 16;

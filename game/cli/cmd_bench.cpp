@@ -122,7 +122,7 @@ RunFn setup_bench(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{80, "bench", "measure throughput (impact solves/s, ...)", setup_bench};
+const CommandRegistrar bench_command{80, "bench", "measure throughput (impact solves/s, ...)", setup_bench};
 
 }  // namespace
 }  // namespace sweetspot::cli

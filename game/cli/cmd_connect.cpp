@@ -68,7 +68,7 @@ RunFn setup_connect(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{37, "connect", "serve a launch monitor (GSPro Open Connect v1): its shots play the course or the range",
+const CommandRegistrar connect_command{37, "connect", "serve a launch monitor (GSPro Open Connect v1): its shots play the course or the range",
                            setup_connect};
 
 }  // namespace

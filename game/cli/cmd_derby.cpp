@@ -134,7 +134,7 @@ RunFn setup_derby(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{45, "derby", "a bot batter: home-run derby, at-bat or batting practice (§9 JSON, --plot)", setup_derby};
+const CommandRegistrar derby_command{45, "derby", "a bot batter: home-run derby, at-bat or batting practice (§9 JSON, --plot)", setup_derby};
 
 }  // namespace
 }  // namespace sweetspot::cli

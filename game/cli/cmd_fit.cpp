@@ -61,7 +61,7 @@ RunFn setup_fit(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{50, "fit", "solve e and mu that reproduce measured launch numbers", setup_fit};
+const CommandRegistrar fit_command{50, "fit", "solve e and mu that reproduce measured launch numbers", setup_fit};
 
 }  // namespace
 }  // namespace sweetspot::cli

@@ -44,7 +44,7 @@ RunFn setup_flight(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{30, "flight", "fly, bounce and roll a ball from launch-monitor numbers", setup_flight};
+const CommandRegistrar flight_command{30, "flight", "fly, bounce and roll a ball from launch-monitor numbers", setup_flight};
 
 }  // namespace
 }  // namespace sweetspot::cli

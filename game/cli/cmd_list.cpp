@@ -19,7 +19,7 @@ RunFn setup_list(CLI::App& /*sub*/) {
   };
 }
 
-const CommandRegistrar reg{90, "list", "list the built-in scenarios", setup_list};
+const CommandRegistrar list_command{90, "list", "list the built-in scenarios", setup_list};
 
 }  // namespace
 }  // namespace sweetspot::cli

@@ -58,7 +58,7 @@ RunFn setup_pitch(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{40, "pitch", "throw a pitch type to the plate: flight time, plate crossing, break (§9)", setup_pitch};
+const CommandRegistrar pitch_command{42, "pitch", "throw a pitch type to the plate: flight time, plate crossing, break (§9)", setup_pitch};
 
 }  // namespace
 }  // namespace sweetspot::cli

@@ -100,7 +100,7 @@ RunFn setup_play(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{10, "play", "play a shot scenario in a window (headless without a display)", setup_play};
+const CommandRegistrar play_command{10, "play", "play a shot scenario in a window (headless without a display)", setup_play};
 
 }  // namespace
 }  // namespace sweetspot::cli

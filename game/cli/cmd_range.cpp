@@ -64,7 +64,7 @@ RunFn setup_range(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{36, "range", "the practice range: a bag-gapping session, each club's carry and spread (--bag-out)",
+const CommandRegistrar range_command{36, "range", "the practice range: a bag-gapping session, each club's carry and spread (--bag-out)",
                            setup_range};
 
 }  // namespace

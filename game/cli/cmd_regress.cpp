@@ -69,7 +69,7 @@ RunFn setup_regress(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{30, "regress", "launch spin/velocity regression over tests/regression (exit 1 on drift)",
+const CommandRegistrar regress_command{31, "regress", "launch spin/velocity regression over tests/regression (exit 1 on drift)",
                            setup_regress};
 
 }  // namespace

@@ -116,7 +116,7 @@ RunFn setup_render(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{40, "render", "render a shot to a PNG off-screen (EGL; llvmpipe without a GPU)", setup_render};
+const CommandRegistrar render_command{40, "render", "render a shot to a PNG off-screen (EGL; llvmpipe without a GPU)", setup_render};
 
 }  // namespace
 }  // namespace sweetspot::cli

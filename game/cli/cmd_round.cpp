@@ -241,7 +241,7 @@ RunFn setup_round(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{35, "round", "play a golf course headless: a bot or scripted swings, scorecard or §9 JSON",
+const CommandRegistrar round_command{35, "round", "play a golf course headless: a bot or scripted swings, scorecard or §9 JSON",
                            setup_round};
 
 }  // namespace

@@ -166,7 +166,7 @@ RunFn setup_send(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{38, "send", "play a recorded launch-monitor session back to an Open Connect server", setup_send};
+const CommandRegistrar send_command{38, "send", "play a recorded launch-monitor session back to an Open Connect server", setup_send};
 
 }  // namespace
 }  // namespace sweetspot::cli

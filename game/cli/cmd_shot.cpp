@@ -103,7 +103,7 @@ RunFn setup_shot(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{20, "shot", "simulate one scenario: launch-monitor table, --json, --gspro or --csv", setup_shot};
+const CommandRegistrar shot_command{20, "shot", "simulate one scenario: launch-monitor table, --json, --gspro or --csv", setup_shot};
 
 }  // namespace
 }  // namespace sweetspot::cli

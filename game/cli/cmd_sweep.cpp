@@ -114,7 +114,7 @@ RunFn setup_sweep(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{40, "sweep", "run the e x mu grid of a scenario on all cores", setup_sweep};
+const CommandRegistrar sweep_command{41, "sweep", "run the e x mu grid of a scenario on all cores", setup_sweep};
 
 }  // namespace
 }  // namespace sweetspot::cli

@@ -69,7 +69,7 @@ RunFn setup_validate(CLI::App& sub) {
   };
 }
 
-const CommandRegistrar reg{32, "validate", "run the published references of assets/validation (exit 1 when one fails)",
+const CommandRegistrar validate_command{32, "validate", "run the published references of assets/validation (exit 1 when one fails)",
                            setup_validate};
 
 }  // namespace

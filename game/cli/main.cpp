@@ -68,8 +68,10 @@ int main(int argc, char** argv) {
   });
 
   auto& registry = command_registry();
-  std::sort(registry.begin(), registry.end(),
-            [](const CommandInfo& a, const CommandInfo& b) { return a.order < b.order; });
+  // The name breaks a tie: the order of static initialisation across files is unspecified.
+  std::sort(registry.begin(), registry.end(), [](const CommandInfo& a, const CommandInfo& b) {
+    return a.order != b.order ? a.order < b.order : std::string_view(a.name) < std::string_view(b.name);
+  });
   std::vector<std::pair<CLI::App*, RunFn>> runs;
   for (const auto& c : registry) {
     CLI::App* sub = app.add_subcommand(c.name, c.summary);

@@ -23,7 +23,7 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-std::string_view section_of(std::string_view key) {
+std::string_view parent_section_of(std::string_view key) {
   const auto dot = key.rfind('.');
   return dot == std::string_view::npos ? std::string_view() : key.substr(0, dot);
 }
@@ -286,7 +286,7 @@ CheckedDoc::CheckedDoc(const ScenarioDoc& doc, const Schema& schema, const Sport
 
   for (const auto& s : doc.sections) {
     if (schema.has_section(s.key) || schema.find(s.key, kAnyStrike) != nullptr) continue;
-    const auto parent = section_of(s.key);
+    const auto parent = parent_section_of(s.key);
     if (!parent.empty() && schema.has_section(parent)) {
       fail(s.origin, s.key, unknown_in(parent));
     }
@@ -302,7 +302,7 @@ CheckedDoc::CheckedDoc(const ScenarioDoc& doc, const Schema& schema, const Sport
         fail(e.origin, e.key, std::string("applies to scenarios that swing a ") + (club ? "club" : "bat") +
                                   "; this one is " + (sport_ ? sport_->name : std::string("another sport")));
       }
-      const auto section = section_of(e.key);
+      const auto section = parent_section_of(e.key);
       if (!section.empty() && schema.has_section(section)) {
         fail(e.origin, e.key, unknown_in(section));
       }

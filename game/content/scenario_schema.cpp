@@ -221,7 +221,7 @@ void append_unique(std::string& out, std::set<std::string_view>& seen, std::stri
   out += item;
 }
 
-std::string_view section_of(std::string_view key) {
+std::string_view top_section_of(std::string_view key) {
   const auto dot = key.find('.');
   return dot == std::string_view::npos ? std::string_view() : key.substr(0, dot);
 }
@@ -237,7 +237,7 @@ const KeySpec* Schema::find(std::string_view key, std::uint8_t strikes) const {
 
 bool Schema::has_section(std::string_view section) const {
   for (const auto& k : keys) {
-    if (section_of(k.key) == section) return true;
+    if (top_section_of(k.key) == section) return true;
   }
   return false;
 }
@@ -247,7 +247,7 @@ std::string Schema::keys_in_section(std::string_view section, std::uint8_t strik
   std::set<std::string_view> seen;
   for (const auto& k : keys) {
     if ((k.strikes & strikes) == 0) continue;
-    if (section_of(k.key) != section) continue;
+    if (top_section_of(k.key) != section) continue;
     append_unique(out, seen, k.key);
   }
   return out;
@@ -257,7 +257,7 @@ std::string Schema::section_names() const {
   std::string out;
   std::set<std::string_view> seen;
   for (const auto& k : keys) {
-    const auto sec = section_of(k.key);
+    const auto sec = top_section_of(k.key);
     append_unique(out, seen, sec.empty() ? k.key : sec);
   }
   return out;

@@ -9,6 +9,11 @@ const Assets& assets() {
   return a;
 }
 
+const Course& links() {
+  static const Course c = load_course(assets(), "links");
+  return c;
+}
+
 ShotModel golf_model(const Terrain* terrain, const Environment& env, const FlightSettings& settings) {
   return make_shot_model(golf_ball_properties(), assets().aero(assets().sport("golf").default_aero), env, terrain, settings);
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "game/content/assets.hpp"
+#include "game/content/course_file.hpp"
 #include "game/core/shot_spec.hpp"
 #include "physics/flight.hpp"
 
@@ -10,6 +11,8 @@ namespace sweetspot::test {
 
 /// The assets folder of the source tree, loaded on first use.
 const Assets& assets();
+/// The built-in Sweetspot Links course, loaded on first use.
+const Course& links();
 
 /// A golf ball with the golf sport's default aero model (tour_fit) in the default environment over `terrain`
 /// (nullptr = the flat fairway).

@@ -13,8 +13,7 @@ namespace {
 constexpr double kBall = 0.0369;       // m, the baseball's radius (assets' "mlb")
 constexpr double kLead = 3.0;          // m a runner's lead and secondary lead (~10 ft; ESTIMATE)
 constexpr double kRead = 0.3;          // s a runner takes to read a ball on the ground (ESTIMATE)
-constexpr double kTurn = 0.3;          // s lost rounding a base (ESTIMATE, as fielding.cpp)
-constexpr double kSafeMargin = 0.5;    // s to spare for a runner sent for an extra base (ESTIMATE)
+constexpr double kRunnerExtraBaseMargin = 0.5;  // s to spare for a runner on base sent for an extra base (ESTIMATE)
 constexpr double kPivotExtra = 0.1;    // s the pivot man's turn takes beyond a clean transfer (ESTIMATE)
 constexpr int kMaxExtra = 40;          // extra innings before a game still tied is stopped (MLB's longest: 26 innings)
 
@@ -119,9 +118,9 @@ struct HalfInning {
   // Runner from `from` (1..3) sent to `to`: starting `start` s after contact.
   bool beats_throw(const FieldingPlay& p, const FielderAbility& f, double sprint, int from, int to, double start) const {
     const double dist = (to - from) * kBaseLine - (start <= kRead ? kLead : 0.0);
-    const double runner = start + run_time(sprint, dist) + (to - from - 1) * kTurn;
+    const double runner = start + run_time(sprint, dist) + (to - from - 1) * kBaseRoundingTime;
     const double defence = p.fielded_time + throw_time(f, *env.aero, env.environment, p.fielded_at, to);
-    return runner + kSafeMargin < defence;
+    return runner + kRunnerExtraBaseMargin < defence;
   }
 
   // Runs scored (each runner who reached home pushed to `scored`).

@@ -42,8 +42,7 @@ constexpr double kLeap = 3.2;         // m: at the wall he can leap (standing re
 constexpr double kTransfer = 0.6;     // s to field cleanly and release a throw (ESTIMATE)
 constexpr double kHomeToFirst = 4.47; // s, Statcast 2024 mean home-to-first
 constexpr double kMeanSprint = 27.0 * 0.3048;  // m/s, Statcast's league-average sprint speed
-constexpr double kTurn = 0.3;         // s a runner loses rounding a base (ESTIMATE)
-constexpr double kSafeMargin = 0.2;   // s: an extra base is taken only with this to spare (ESTIMATE)
+constexpr double kBatterExtraBaseMargin = 0.2;  // s: the batter takes an extra base only with this to spare (ESTIMATE)
 constexpr double kOutfieldGather = 0.6;  // s an outfielder loses slowing to pick up a ball on the
                                          // ground and setting his feet (a crow hop) (ESTIMATE)
 constexpr double kCatchSpread = 0.4; // s, catch_probability's spread
@@ -319,13 +318,13 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   const Thrower thrower(aero, env, f.arm, kTransfer);  // once for the bases he may throw to
   const auto defence = [&](int base) { return first_t + transfer_and_throw(thrower, first_p, base); };
   const double to_first = play.batter_to_first;
-  const double base_to_base = kBaseLine / std::max(batter_sprint, 1.0) + kTurn;
+  const double base_to_base = kBaseLine / std::max(batter_sprint, 1.0) + kBaseRoundingTime;
   if (defence(1) < to_first) {
     play.outcome = BattedOutcome::Out;
     if (rng && rng->uniform() < kBootRate) play.outcome = BattedOutcome::Error;
-  } else if (defence(2) < to_first + base_to_base + kSafeMargin) {
+  } else if (defence(2) < to_first + base_to_base + kBatterExtraBaseMargin) {
     play.outcome = BattedOutcome::Single;
-  } else if (defence(3) < to_first + 2.0 * base_to_base + kSafeMargin) {
+  } else if (defence(3) < to_first + 2.0 * base_to_base + kBatterExtraBaseMargin) {
     play.outcome = BattedOutcome::Double;
   } else {
     play.outcome = BattedOutcome::Triple;

@@ -83,6 +83,9 @@ struct FieldingPlay {
 /// home run is foul.
 bool is_fair_ball(const ShotResult& shot);
 
+/// Seconds a runner loses rounding a base (ESTIMATE), for the batter and the runners alike.
+inline constexpr double kBaseRoundingTime = 0.3;
+
 /// How long a fielder needs to cover `distance` m (reaction, acceleration, top speed, the
 /// glove's reach).
 double fielder_run_time(const FielderAbility& f, double distance);

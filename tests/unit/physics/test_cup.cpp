@@ -14,7 +14,7 @@ using namespace sweetspot;
 
 namespace {
 
-constexpr double kR = 0.021335;  // golf ball radius
+constexpr double kBallR = 0.021335;  // golf ball radius
 
 SurfaceMaterial stimp_green(double feet) {
   SurfaceMaterial g = default_fairway();
@@ -37,9 +37,9 @@ EndReason putt(double arrive, double offset, bool flagstick, double distance = 2
   const double a = rolling_resistance_from_stimp(ft_to_m(10.0)) * kGravity;
   const double v0 = std::sqrt(arrive * arrive + 2.0 * a * distance);
   LaunchState l;
-  l.position = Vec3(0.0, kR, 0.0);
+  l.position = Vec3(0.0, kBallR, 0.0);
   l.velocity = Vec3(v0, 0.0, 0.0);
-  l.spin = Vec3(0.0, 0.0, -v0 / kR);  // rolling
+  l.spin = Vec3(0.0, 0.0, -v0 / kBallR);  // rolling
   ShotState s = start_state(l);
   while (!s.ended) step(model, s);
   return s.end;
@@ -51,15 +51,15 @@ TEST_CASE("Holmes's capture speeds: 1.31 m/s through the centre, falling to 0 at
   // Holmes, Am. J. Phys. 59 (1991): a centred ball drops if slower than 1.31 m/s (4.3 ft/s)
   // on a 4.25 in hole.
   const Cup cup;
-  CHECK(cup_capture_speed(cup, kR, 0.0) == Approx(1.31).epsilon(0.01));
+  CHECK(cup_capture_speed(cup, kBallR, 0.0) == Approx(1.31).epsilon(0.01));
   double last = 10.0;
   for (double b = 0.0; b < cup.radius; b += 0.005) {
-    const double v = cup_capture_speed(cup, kR, b);
+    const double v = cup_capture_speed(cup, kBallR, b);
     CHECK(v <= last);
     last = v;
   }
-  CHECK(cup_capture_speed(cup, kR, cup.radius) == 0.0);
-  CHECK(cup_capture_speed(cup, kR, 0.06) == 0.0);  // outside the hole
+  CHECK(cup_capture_speed(cup, kBallR, cup.radius) == 0.0);
+  CHECK(cup_capture_speed(cup, kBallR, 0.06) == 0.0);  // outside the hole
 }
 
 TEST_CASE("a rolling putt drops below the capture speed and rides over above it", "[cup]") {
@@ -102,7 +102,7 @@ TEST_CASE("a putt skids, then rolls at 5/7 of its speed", "[cup][skid]") {
   const FlatGround green(stimp_green(10.0));
   ShotModel model = test::golf_model(&green);
   LaunchState l;
-  l.position = Vec3(0.0, kR, 0.0);
+  l.position = Vec3(0.0, kBallR, 0.0);
   l.velocity = Vec3(2.0, 0.0, 0.0);
   ShotState s = start_state(l);
   ShotEvent ev;

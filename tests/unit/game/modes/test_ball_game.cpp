@@ -108,7 +108,7 @@ const BattingRates& pro_rates() {
 
 TEST_CASE("over 60+ innings the league's hitter strikes out, walks and hits balls in play as MLB's do; the amateur "
           "clearly below",
-          "[baseball][game][reference]") {
+          "[baseball][game][reference][statistics]") {
   const BattingRates& pro = pro_rates();
   INFO(rates_text(pro, "pro"));
   CHECK(pro.k_rate >= 0.18);
@@ -140,7 +140,7 @@ TEST_CASE("over 60+ innings the league's hitter strikes out, walks and hits ball
 // 3500), and the spin's drag costs them 30-50 ft, so home runs and extra bases fall short of
 // MLB's. This case asserts MLB's bands and is expected to fail until the batted ball's spin
 // matches; when it passes, drop the tag.
-TEST_CASE("over 60+ innings the league's hitter hits for MLB's power", "[baseball][game][reference][!shouldfail]") {
+TEST_CASE("over 60+ innings the league's hitter hits for MLB's power", "[baseball][game][reference][statistics][!shouldfail]") {
   const BattingRates& pro = pro_rates();
   INFO(rates_text(pro, "pro"));
   CHECK(pro.hr_rate >= 0.020);

@@ -18,11 +18,6 @@ using namespace sweetspot;
 
 namespace {
 
-const Course& links() {
-  static const Course c = load_course(test::assets(), "links");
-  return c;
-}
-
 GolfPlayer bot(const std::string& skill, int handicap = 0) { return {skill + " bot", skill, false, handicap, {}}; }
 
 void play_out(GolfGroup& g) {
@@ -39,7 +34,7 @@ TEST_CASE("a 3-player stableford round: points from net strokes by Rule 21.1b, s
   GolfOptions o;
   o.format = GolfFormat::Stableford;
   o.seed = 11;
-  GolfGroup g(test::assets(), links(), {bot("tour", 0), bot("amateur", 15), bot("beginner", 28)}, o);
+  GolfGroup g(test::assets(), test::links(), {bot("tour", 0), bot("amateur", 15), bot("beginner", 28)}, o);
   play_out(g);
   const Standings s = standings(g);
   REQUIRE(s.holes == 3);
@@ -81,7 +76,7 @@ TEST_CASE("a 3-player stableford round: points from net strokes by Rule 21.1b, s
 }
 
 TEST_CASE("turn order: honours on the tee, then the ball farthest from the hole", "[modes][golf][formats]") {
-  GolfGroup g(test::assets(), links(), {bot("beginner"), bot("tour"), bot("amateur")}, {});
+  GolfGroup g(test::assets(), test::links(), {bot("beginner"), bot("tour"), bot("amateur")}, {});
   // Hole 1: everyone tees off in the order given.
   for (int p = 0; p < 3; ++p) {
     REQUIRE(g.to_play() == p);
@@ -111,7 +106,7 @@ TEST_CASE("match play: the status follows the holes won, a short putt is concede
   o.format = GolfFormat::Match;
   o.gimme_m = kMatchGimme;
   o.seed = 4;
-  GolfGroup g(test::assets(), links(), {bot("tour", 2), bot("amateur", 14)}, o);
+  GolfGroup g(test::assets(), test::links(), {bot("tour", 2), bot("amateur", 14)}, o);
   // Match play gives the difference: 12 over three holes is 2 strokes, on index 1 and 2.
   CHECK(g.strokes_received(0) == std::vector<int>{0, 0, 0});
   CHECK(g.strokes_received(1) == std::vector<int>{0, 1, 1});
@@ -147,7 +142,7 @@ TEST_CASE("match play: the status follows the holes won, a short putt is concede
         else CHECK(from > kMatchGimme);
       }
   // Stroke play refuses a concession.
-  GolfGroup stroke(test::assets(), links(), {bot("tour")}, {});
+  GolfGroup stroke(test::assets(), test::links(), {bot("tour")}, {});
   CHECK_THROWS_AS(stroke.concede_hole(), InputError);
 }
 
@@ -155,7 +150,7 @@ TEST_CASE("gimmes and auto-putt: conceded putts count one stroke, auto-putts cou
   GolfOptions o;
   o.gimme_m = 2.0;
   o.seed = 3;
-  GolfGroup g(test::assets(), links(), {bot("amateur")}, o);
+  GolfGroup g(test::assets(), test::links(), {bot("amateur")}, o);
   play_out(g);
   int conceded = 0;
   for (const HoleCard& c : g.round(0).card()) {
@@ -172,7 +167,7 @@ TEST_CASE("gimmes and auto-putt: conceded putts count one stroke, auto-putts cou
   GolfOptions a;
   a.auto_putt = true;
   a.seed = 8;
-  GolfGroup h(test::assets(), links(), {{"You", "amateur", true, 0, {}}}, a);
+  GolfGroup h(test::assets(), test::links(), {{"You", "amateur", true, 0, {}}}, a);
   int putts_auto = 0, turns = 0;
   while (!h.finished()) {
     const bool green = h.round(0).lie() == "green";
@@ -191,12 +186,12 @@ TEST_CASE("a saved round resumes to the same state and finishes bit for bit the 
   o.format = GolfFormat::Skins;
   o.seed = 5;
   const std::vector<GolfPlayer> players{bot("tour", 0), bot("scratch", 2), bot("amateur", 15), {"You", "amateur", true, 18, {}}};
-  GolfGroup whole(test::assets(), links(), players, o);
+  GolfGroup whole(test::assets(), test::links(), players, o);
   play_out(whole);
 
-  GolfGroup part(test::assets(), links(), players, o);
+  GolfGroup part(test::assets(), test::links(), players, o);
   for (int k = 0; k < 9; ++k) part.play_bot();
-  const std::string text = json_text(round_save_json(part, links().source.string()));
+  const std::string text = json_text(round_save_json(part, test::links().source.string()));
   GolfGroup resumed = resume_round(test::assets(), parse_round_save(text, "save.json"));
   CHECK(resumed.to_play() == part.to_play());
   CHECK(resumed.hole_index() == part.hole_index());

@@ -20,15 +20,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const Course& links() {
-  static const Course c = load_course(test::assets(), "links");
-  return c;
-}
-
 // The links with only hole `n` (1-based), its tee moved to `tee` (x, z) when given.
 Course one_hole(int n, std::optional<std::pair<double, double>> tee = std::nullopt) {
-  Course c = links();
-  c.holes = {links().holes[static_cast<std::size_t>(n - 1)]};
+  Course c = test::links();
+  c.holes = {test::links().holes[static_cast<std::size_t>(n - 1)]};
   c.holes[0].number = 1;
   if (tee) {
     SurfaceContact hit;
@@ -60,7 +55,7 @@ struct TempFile {
 }  // namespace
 
 TEST_CASE("the Sweetspot Links: a par 3, a par 4 and a par 5 with tees and cups", "[golf][course]") {
-  const Course& c = links();
+  const Course& c = test::links();
   REQUIRE(c.holes.size() == 3);
   CHECK(c.holes[0].par == 3);
   CHECK(c.holes[1].par == 4);
@@ -89,7 +84,7 @@ TEST_CASE("out of bounds costs stroke and distance; water a stroke and a drop", 
   CHECK(first.penalty == 1);
   CHECK(ob.card()[0].strokes == 2);  // the shot and the penalty
   CHECK(ob.teed());                  // played again from the tee
-  CHECK((ob.ball() - links().holes[2].tee).norm() < 1e-9);
+  CHECK((ob.ball() - test::links().holes[2].tee).norm() < 1e-9);
 
   // Hole 1: the pond fills the approach short of the green; a soft 7-iron finds it.
   GolfRound water(test::assets(), one_hole(1), golfer_skill("tour"));
@@ -106,7 +101,7 @@ TEST_CASE("out of bounds costs stroke and distance; water a stroke and a drop", 
 
 TEST_CASE("a putt lips out at too high a speed and drops at a lower one", "[golf][round][putting]") {
   // Hole 1's green, 3 m short of the cup on its line.
-  const CourseHole& h = links().holes[0];
+  const CourseHole& h = test::links().holes[0];
   const auto tee = std::make_pair(h.pin.x() - 3.0, h.pin.z());
   GolfRound probe(test::assets(), one_hole(1, tee), golfer_skill("tour"));
   REQUIRE(probe.lie() == "green");
@@ -152,7 +147,7 @@ TEST_CASE("a putt lips out at too high a speed and drops at a lower one", "[golf
 }
 
 TEST_CASE("the lie is the surface under the ball and changes the strike", "[golf][round][lie]") {
-  const CourseHole& h = links().holes[1];
+  const CourseHole& h = test::links().holes[1];
   GolfRound fairway(test::assets(), one_hole(2, std::make_pair(150.0, -2.0)), golfer_skill("tour"));
   GolfRound rough(test::assets(), one_hole(2, std::make_pair(150.0, 40.0)), golfer_skill("tour"));
   REQUIRE(fairway.lie() == "fairway");
@@ -175,7 +170,7 @@ TEST_CASE("a hole ends at the 10-stroke pick-up", "[golf][round][rules]") {
 
 TEST_CASE("a bot round is the same bit for bit for the same seed, and holes out", "[golf][bot]") {
   auto play = [](std::uint64_t seed) {
-    GolfRound round(test::assets(), links(), golfer_skill("tour"));
+    GolfRound round(test::assets(), test::links(), golfer_skill("tour"));
     GolfBot bot(test::assets(), golfer_skill("tour"), seed);
     std::vector<Vec3> rests;
     while (!round.finished()) rests.push_back(round.play(bot.plan(round)).rest);

@@ -4,7 +4,7 @@
 // Hashing state bytes rather than printed JSON (as Box2D hashes its transforms) catches a
 // change in the last bit that a printed number could round away, and it does not change
 // when a report's formatting does. CI runs this in the Release build and again in the
-// ASan+UBSan build (`ctest -L unit` in build/asan), so a hash that differs between
+// ASan+UBSan build (`ctest -L unit` in build/fuzz, clang), so a hash that differs between
 // optimisation levels or under the sanitizers fails there.
 //
 // What legitimately changes the hash: any change to the physics or models (impact solver,

@@ -66,12 +66,6 @@ constexpr std::array kUnits{
     UnitDef{Dimension::Inertia, "gcm2", 1e-7, 0.0},
 };
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
 [[noreturn]] void fail(std::string_view text, Dimension dim, std::string_view why) {
   std::string msg = "invalid ";
   msg += dimension_name(dim);
@@ -134,7 +128,7 @@ std::string accepted_units(Dimension d) {
 }
 
 double parse_quantity(std::string_view text, Dimension dim) {
-  const std::string_view s = trim(text);
+  const std::string_view s = trim_blanks(text);
   if (s.empty()) fail(text, dim, "empty value");
   double value = 0.0;
   const char* first = s.data();
@@ -145,7 +139,7 @@ double parse_quantity(std::string_view text, Dimension dim) {
   if (ec == std::errc::result_out_of_range) fail(text, dim, "number out of range");
   if (ec != std::errc() || ptr == first) fail(text, dim, "missing or malformed number");
   if (!std::isfinite(value)) fail(text, dim, "NaN and infinity are not allowed");
-  const std::string_view unit = trim(std::string_view(ptr, static_cast<size_t>(last - ptr)));
+  const std::string_view unit = trim_blanks(std::string_view(ptr, static_cast<size_t>(last - ptr)));
   if (unit.empty()) return value;  // bare number: SI
   for (const auto& u : kUnits) {
     if (u.dim == dim && u.spelling == unit) {
@@ -158,13 +152,13 @@ double parse_quantity(std::string_view text, Dimension dim) {
 }
 
 std::vector<double> parse_quantity_list(std::string_view text, Dimension dim) {
-  std::string_view s = trim(text);
+  std::string_view s = trim_blanks(text);
   if (!s.empty() && s.front() == '[') {
     if (s.back() != ']') fail(text, dim, "list opened with '[' is not closed with ']'");
     s = s.substr(1, s.size() - 2);
   }
   std::vector<double> out;
-  if (trim(s).empty()) return out;
+  if (trim_blanks(s).empty()) return out;
   while (true) {
     const size_t comma = s.find(',');
     out.push_back(parse_quantity(s.substr(0, comma), dim));
@@ -172,6 +166,12 @@ std::vector<double> parse_quantity_list(std::string_view text, Dimension dim) {
     s.remove_prefix(comma + 1);
   }
   return out;
+}
+
+std::string_view trim_blanks(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
 }
 
 }  // namespace sweetspot

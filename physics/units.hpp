@@ -66,6 +66,9 @@ std::string_view si_unit_name(Dimension d);
 /// The accepted unit spellings for `d`, e.g. "m/s, mph, km/h, kph, ft/s, fps".
 std::string accepted_units(Dimension d);
 
+/// `s` without leading and trailing spaces and tabs.
+std::string_view trim_blanks(std::string_view s);
+
 /// Parses "113mph", "113 mph", "-1.3deg", "5%", "0.83" into SI. Throws InputError naming
 /// the text, the dimension and the accepted units on: a missing or malformed number, an
 /// unknown unit, trailing garbage, NaN or infinity.

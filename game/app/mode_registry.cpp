@@ -5,6 +5,7 @@
 #include "game/content/bag_file.hpp"
 #include "game/content/course_file.hpp"
 #include "game/content/settings_file.hpp"
+#include "game/modes/golf/golfer.hpp"
 #include "game/modes/golf/range_session.hpp"
 #include "game/report/round_save.hpp"
 #include "game/ui/cage_view.hpp"
@@ -38,7 +39,7 @@ std::unique_ptr<GolfPlay> golf_model(const Assets& assets, const PlayOptions& o)
   }
   GolfPlayer you{"You", o.skill, true, 0, {}};
   // A bag the range has not written yet (play --mode range --bag F, Tab to golf) is no bag.
-  if (!o.bag.empty() && std::filesystem::exists(o.bag)) you.bag = bag_stock(load_bag(assets, o.bag));
+  if (!o.bag.empty() && std::filesystem::exists(o.bag)) you.bag = bag_stock(load_bag(assets, o.bag, golfer_skill_names()));
   setup.players.push_back(you);
   for (const std::string& name : o.humans) setup.players.push_back({name, o.skill, true, 0, {}});
   // No bot asked for: one of your skill when you play alone, none when friends play.

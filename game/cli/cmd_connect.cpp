@@ -8,6 +8,9 @@
 #include "game/app/connect_app.hpp"
 #include "game/app/display.hpp"
 #include "game/cli/command.hpp"
+#include "game/content/assets.hpp"
+#include "game/content/course_file.hpp"
+#include "game/content/world_asset.hpp"
 #include "game/render/image.hpp"
 #include "game/content/quantity_text.hpp"
 #include "game/net/connect_server.hpp"
@@ -42,6 +45,24 @@ RunFn setup_connect(CLI::App& sub) {
   sub.add_option("--frames", o->frames, "window: run N frames then exit (automation)")->check(CLI::Range(1, 1000000));
   sub.add_option("--screenshot", o->screenshot, "window: save the last frame to FILE.png");
   return [o](const Assets& assets) -> int {
+    // The course or range is checked before the port opens, so a typo is named by its flag
+    // instead of answered as an error to the launch monitor's first shot.
+    if (!o->server.table.world.empty()) {
+      try {
+        const WorldAsset* w = assets.world(o->server.table.world);
+        if (!w->sport.empty() && w->sport != "golf")
+          throw InputError("'" + o->server.table.world + "' is a " + w->sport + " world; a launch monitor's range is a golf world");
+      } catch (const InputError& e) {
+        throw InputError(std::string("--world: ") + e.what());
+      }
+    }
+    if (!o->server.table.course.empty()) {
+      try {
+        load_course(assets, o->server.table.course);
+      } catch (const InputError& e) {
+        throw InputError(std::string("--course: ") + e.what());
+      }
+    }
     const Range idle_range{ConnectOptions::kMinIdle, ConnectOptions::kMaxIdle};
     o->server.idle_timeout = flag_quantity("--idle-timeout", o->idle, Dimension::Time, &idle_range);
     std::string why;

@@ -10,6 +10,7 @@
 #include "game/app/display.hpp"
 #include "game/content/bag_file.hpp"
 #include "game/content/settings_file.hpp"
+#include "game/modes/golf/golfer.hpp"
 #include "game/modes/golf/golf_group.hpp"
 #include "game/modes/golf/meter_clock.hpp"
 #include "game/report/round_save.hpp"
@@ -72,7 +73,7 @@ RunFn setup_play(CLI::App& sub) {
       if (hc < 0 || hc > kMaxHandicap) throw InputError("--handicap " + std::to_string(hc) + " is out of range (allowed [0, 54])");
     check_range("--gimme", o->gimme < 0.0 ? 0.0 : o->gimme, GolfOptions::kGimme, "m");
     // The range writes the bag (S): there the file may not exist yet.
-    if (!o->bag.empty() && (o->mode != "range" || std::filesystem::exists(o->bag))) load_bag(assets, o->bag);
+    if (!o->bag.empty() && (o->mode != "range" || std::filesystem::exists(o->bag))) load_bag(assets, o->bag, golfer_skill_names());
     if (!o->resume.empty()) resume_round(assets, read_round_save(o->resume));  // its turns replay, or it is named now
     load_settings(settings_path());  // a bad settings file is named now, not when golf opens
     std::string why;

@@ -70,7 +70,7 @@ std::vector<GolfPlayer> round_players(const RoundOptions& o) {
 }
 
 void give_bag(const Assets& assets, const RoundOptions& o, std::vector<GolfPlayer>& players) {
-  if (!o.bag.empty()) players.front().bag = bag_stock(load_bag(assets, o.bag));
+  if (!o.bag.empty()) players.front().bag = bag_stock(load_bag(assets, o.bag, golfer_skill_names()));
 }
 
 GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
@@ -86,6 +86,9 @@ GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
   options.gimme_m = o.gimme >= 0.0 ? o.gimme : options.format == GolfFormat::Match ? kMatchGimme : 0.0;
   options.seed = o.seed;
   std::vector<GolfPlayer> players = round_players(o);
+  if (options.format == GolfFormat::Match && players.size() != 2)
+    throw InputError("--format match: match play is between two players (--bot twice, or --swings and one --bot), not " +
+                     std::to_string(players.size()));
   give_bag(assets, o, players);
   return GolfGroup(assets, course, players, options);
 }

@@ -52,6 +52,22 @@ bool stdout_failed() {
   return true;
 }
 
+/// CLI11 says only "Could not convert: --balls = x" when a flag's value is not a number;
+/// this says what the flag takes, from its help text (which gives the range).
+std::string conversion_help(const CLI::App* top, const CLI::Error& e) {
+  const std::string what = e.what();
+  if (e.get_name() != "ConversionError") return what;
+  const auto colon = what.find(": "), eq = what.find(" = ");
+  if (colon == std::string::npos || eq == std::string::npos || eq < colon) return what;
+  const std::string flag = what.substr(colon + 2, eq - colon - 2), value = what.substr(eq + 3);
+  for (const CLI::App* sub : top->get_subcommands([](const CLI::App* a) { return a->parsed(); })) {
+    const CLI::Option* opt = sub->get_option_no_throw(flag);
+    if (opt == nullptr) continue;
+    return flag + ": '" + value + "' is not a value it takes: " + opt->get_description();
+  }
+  return what;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -63,8 +79,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "sweetspot 0.1");
   // Usage errors read like every other error: prefixed, one per line, pointing at --help.
-  app.failure_message([](const CLI::App*, const CLI::Error& e) {
-    return std::string("sweetspot: error: ") + e.what() + " (run with --help for the options and their ranges)\n";
+  app.failure_message([](const CLI::App* top, const CLI::Error& e) {
+    return std::string("sweetspot: error: ") + conversion_help(top, e) + " (run with --help for the options and their ranges)\n";
   });
 
   auto& registry = command_registry();

@@ -1,11 +1,13 @@
 #include "game/content/aero_file.hpp"
 
+#include <algorithm>
+
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
 
-std::vector<AeroModel> load_aero_models(const std::filesystem::path& path) {
+std::vector<AeroModel> load_aero_models(const std::filesystem::path& path, const SportCatalog& sports) {
   const TomlFile f = TomlFile::read(path, "aero models");
   f.only_keys(f.root(), "", {"model"});
   std::vector<AeroModel> out;
@@ -14,7 +16,10 @@ std::vector<AeroModel> load_aero_models(const std::filesystem::path& path) {
                               "decay_length", "decay_tau", "lift_onset", "drag_crisis", "drag_re_slope"});
     AeroModel m;
     m.name = f.text(f.required(*t, "name", "the model's name"), "name");
-    m.sport = f.text(f.required(*t, "sport", "golf or baseball"), "sport");
+    const toml::node& sport = f.required(*t, "sport", "the sport whose ball it flies: " + sports.names());
+    m.sport = f.text(sport, "sport");
+    if (std::none_of(sports.sports.begin(), sports.sports.end(), [&](const SportProfile& p) { return p.name == m.sport; }))
+      f.fail(sport, "sport", "unknown sport '" + m.sport + "' (allowed: " + sports.names() + ")");
     m.source = f.text(f.required(*t, "source", "the citation"), "source");
     const auto drag = f.quantities(f.required(*t, "drag", "[d0, d1, d2]"), "drag", Dimension::Dimensionless, 3);
     m.d0 = drag[0];

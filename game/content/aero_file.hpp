@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <vector>
 
+#include "game/core/sport.hpp"
 #include "physics/aero.hpp"
 
 namespace sweetspot {
 
-/// Reads and validates every [[model]]. Throws InputError naming file:line and key.
-std::vector<AeroModel> load_aero_models(const std::filesystem::path& path);
+/// Reads and validates every [[model]]; each model's sport must be one of `sports`. Throws
+/// InputError naming file:line and key.
+std::vector<AeroModel> load_aero_models(const std::filesystem::path& path, const SportCatalog& sports);
 
 }  // namespace sweetspot

@@ -67,7 +67,8 @@ const SportCatalog& Assets::sports() const {
 }
 
 const std::vector<AeroModel>& Assets::aero_models() const {
-  return impl_->once(impl_->aero, [&] { return load_aero_models(impl_->root / "aero_models.toml"); });
+  const SportCatalog& catalog = sports();
+  return impl_->once(impl_->aero, [&] { return load_aero_models(impl_->root / "aero_models.toml", catalog); });
 }
 
 const AeroModel& Assets::aero(std::string_view name) const {

@@ -8,12 +8,17 @@
 
 namespace sweetspot {
 
-Bag load_bag(const Assets& assets, const std::filesystem::path& path) {
+Bag load_bag(const Assets& assets, const std::filesystem::path& path, const std::vector<std::string>& skills) {
   const TomlFile f = TomlFile::read(path, "bag");
   f.only_keys(f.root(), "", {"player", "skill", "club"});
   Bag bag;
   bag.player = f.text_or(f.root(), "player", "you");
-  bag.skill = f.text(f.required(f.root(), "skill", "the golfer skill that swung: tour, scratch, amateur, beginner"), "skill");
+  std::string skill_names;
+  for (const std::string& s : skills) skill_names += (skill_names.empty() ? "" : ", ") + s;
+  const toml::node& skill = f.required(f.root(), "skill", "the golfer skill that swung: " + skill_names);
+  bag.skill = f.text(skill, "skill");
+  if (std::find(skills.begin(), skills.end(), bag.skill) == skills.end())
+    f.fail(skill, "skill", "unknown skill '" + bag.skill + "' (allowed: " + skill_names + ")");
   for (const toml::table* t : f.tables(f.root(), "club", true)) {
     f.only_keys(*t, "club", {"name", "carry", "total", "carry_sd", "side_sd", "shots"});
     BagClub c;

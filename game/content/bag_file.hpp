@@ -31,8 +31,9 @@ struct Bag {
 };
 
 /// Reads a bag file; InputError naming file:line and the key (an unknown club, a distance out
-/// of range, a carry longer than the total, the same club twice, the putter).
-Bag load_bag(const Assets& assets, const std::filesystem::path& path);
+/// of range, a carry longer than the total, the same club twice, the putter, a skill not in
+/// `skills`: the game's golfer skills, which live above this layer).
+Bag load_bag(const Assets& assets, const std::filesystem::path& path, const std::vector<std::string>& skills);
 /// The bag as TOML that load_bag() reads back to the same numbers.
 std::string bag_toml(const Bag& bag);
 

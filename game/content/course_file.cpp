@@ -20,7 +20,7 @@ Vec3 ground_at(const WorldAsset& w, double x, double z, const std::string& where
   SurfaceContact hit;
   const std::string spot = what + " [" + std::to_string(x) + " m, " + std::to_string(z) + " m]";
   if (!ground_under(*w.world, x, z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit))
-    throw InputError(where + ": " + spot + " is off the ground of world '" + w.name + "'");
+    throw InputError(where + ": " + spot + " is off the ground of world '" + w.name + "' (" + ground_extent_text(d) + ")");
   const SurfaceKind kind = w.world->material(hit.material).kind;
   if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end()) {
     std::string names;

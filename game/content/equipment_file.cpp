@@ -11,22 +11,33 @@ namespace sweetspot {
 namespace {
 
 /// A mesh of assets/meshes by its plain name ("driver_head"): a path ("../../etc/passwd")
-/// would reach outside the assets, so it is refused here, at the file's line.
-std::string mesh_name(const TomlFile& f, const toml::node& n) {
+/// would reach outside the assets, so it is refused here, at the file's line, and so is a
+/// name with no `meshes`/NAME.obj (the window would draw nothing for it).
+std::string mesh_name(const TomlFile& f, const toml::node& n, const std::filesystem::path& meshes) {
   const std::string name = f.text(n, "mesh");
   const bool plain = name.find_first_of("/\\") == std::string::npos && name != "." && name != ".." &&
                      name.find('\0') == std::string::npos;
   if (!plain) f.fail(n, "mesh", "'" + name + "' is not a mesh name of assets/meshes (a plain name such as driver_head)");
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(meshes / (name + ".obj"), ec))
+    f.fail(n, "mesh", "no mesh '" + name + "' in " + meshes.string() + " (a NAME.obj there, such as driver_head)");
   return name;
 }
 
-// Runs a physics validator and re-throws its message with the file and line.
+// Runs a physics validator and re-throws its message with the file and line: the line of
+// the key it names ("club 'driver': head_mass = ..." -> head_mass), else the table's. The
+// validator's own "club 'driver': " is dropped, since the caller puts the entry in context.
 template <class F>
-void validated(const TomlFile& f, const toml::node& where, F&& check) {
+void validated(const TomlFile& f, const toml::table& t, const std::string& who, F&& check) {
   try {
     check();
   } catch (const InputError& e) {
-    throw InputError(f.where(where) + ": " + e.what());
+    std::string message = e.what();
+    if (message.rfind(who + ": ", 0) == 0) message.erase(0, who.size() + 2);
+    // The physics name may be a member path ("compliance.stiffness"); the file's key is its last part.
+    const std::string named = message.substr(0, message.find_first_of(" :(="));
+    const toml::node* key = t.get(named.substr(named.rfind('.') + 1));
+    throw InputError(f.where(key != nullptr ? *key : t) + ": " + message);
   }
 }
 
@@ -64,7 +75,7 @@ BallSpec read_ball(const TomlFile& f, const toml::table& t) {
   b.compliance.poisson = f.quantity_or(t, "poisson", Dimension::Dimensionless, b.compliance.poisson, &BallCompliance::kPoisson);
   b.compliance.tangential_damping = f.quantity_or(t, "tangential_damping", Dimension::Dimensionless,
                                                  b.compliance.tangential_damping, &BallCompliance::kTangentialDamping);
-  validated(f, t, [&] { validate_ball(b); });
+  validated(f, t, "ball '" + b.name + "'", [&] { validate_ball(b); });
   return b;
 }
 
@@ -116,7 +127,8 @@ FaceLaw read_face(const TomlFile& f, const toml::table& root) {
   return law;
 }
 
-void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, ClubSpec& k, ClubInfo& info) {
+void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, const std::filesystem::path& meshes,
+               ClubSpec& k, ClubInfo& info) {
   f.only_keys(t, "club", {"name", "kind", "mesh", "tee_height", "tour_speed", "tour_attack", "loft", "lie", "dynamic_loft", "strike_height", "head_mass", "cg",
                           "inertia", "inertia_products", "bulge_radius", "roll_radius", "cor", "length", "face_size",
                           "cor_edge_drop"});
@@ -126,7 +138,7 @@ void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, Clu
   if (info.kind != "wood" && info.kind != "hybrid" && info.kind != "iron" && info.kind != "wedge" &&
       info.kind != "putter")
     f.fail(*t.get("kind"), "kind", "unknown kind '" + info.kind + "' (allowed: wood, hybrid, iron, wedge, putter)");
-  info.mesh = mesh_name(f, f.required(t, "mesh", "the head mesh in assets/meshes"));
+  info.mesh = mesh_name(f, f.required(t, "mesh", "the head mesh in assets/meshes"), meshes);
   info.tee_height = f.quantity_or(t, "tee_height", Dimension::Length, 0.0, &ClubInfo::kTeeHeight);
   info.tour_speed = f.quantity(f.required(t, "tour_speed", "a tour player's full-swing club speed"), "tour_speed",
                                Dimension::Speed, &GolfSwing::kClubSpeed);
@@ -176,15 +188,15 @@ void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, Clu
   } else {
     k.face.e = CorCurve::constant(cor);
   }
-  validated(f, t, [&] { validate_club(k); });
+  validated(f, t, "club '" + k.name + "'", [&] { validate_club(k); });
 }
 
-void read_bat(const TomlFile& f, const toml::table& t, BatSpec& b, BatInfo& info) {
+void read_bat(const TomlFile& f, const toml::table& t, const std::filesystem::path& meshes, BatSpec& b, BatInfo& info) {
   f.only_keys(t, "bat", {"name", "mesh", "length", "mass", "cg_from_knob", "inertia_cg", "inertia_axial",
                          "barrel_profile", "sweet_spot_from_tip", "pivot_from_knob", "material"});
   b.name = f.text(f.required(t, "name", "the bat's name"), "name");
   info.name = b.name;
-  info.mesh = t.get("mesh") != nullptr ? mesh_name(f, *t.get("mesh")) : std::string("bat");
+  info.mesh = t.get("mesh") != nullptr ? mesh_name(f, *t.get("mesh"), meshes) : std::string("bat");
   b.length = f.quantity(f.required(t, "length", "m"), "length", Dimension::Length, &BatSpec::kLength);
   b.mass = f.quantity(f.required(t, "mass", "kg"), "mass", Dimension::Mass, &BatSpec::kMass);
   b.cg_from_knob = f.quantity(f.required(t, "cg_from_knob", "m"), "cg_from_knob", Dimension::Length);
@@ -204,7 +216,7 @@ void read_bat(const TomlFile& f, const toml::table& t, BatSpec& b, BatInfo& info
   b.material.friction = friction(f, m);
   if (const toml::node* cp = m.get("cor_profile"))
     b.cor_profile = f.pairs(*cp, "material.cor_profile", Dimension::Length, Dimension::Dimensionless);
-  validated(f, t, [&] { validate_bat(b); });
+  validated(f, t, "bat '" + b.name + "'", [&] { validate_bat(b); });
 }
 
 template <class T>
@@ -233,6 +245,7 @@ const BatInfo& EquipmentCatalog::bat_info_of(std::string_view name) const { retu
 
 EquipmentCatalog load_equipment(const std::filesystem::path& dir) {
   EquipmentCatalog cat;
+  const std::filesystem::path meshes = dir.parent_path() / "meshes";
   {
     const TomlFile f = TomlFile::read(dir / "balls.toml", "equipment");
     f.only_keys(f.root(), "", {"ball"});
@@ -258,7 +271,7 @@ EquipmentCatalog load_equipment(const std::filesystem::path& dir) {
       cat.clubs.emplace_back();
       cat.club_info.emplace_back();
       try {
-        read_club(f, *t, face, cat.clubs.back(), cat.club_info.back());
+        read_club(f, *t, face, meshes, cat.clubs.back(), cat.club_info.back());
       } catch (const InputError& e) {
         throw InputError(f.in_context(e.what(), "club '" + f.text_or(*t, "name", "?") + "'"));
       }
@@ -272,7 +285,7 @@ EquipmentCatalog load_equipment(const std::filesystem::path& dir) {
       cat.bats.emplace_back();
       cat.bat_info.emplace_back();
       try {
-        read_bat(f, *t, cat.bats.back(), cat.bat_info.back());
+        read_bat(f, *t, meshes, cat.bats.back(), cat.bat_info.back());
       } catch (const InputError& e) {
         throw InputError(f.in_context(e.what(), "bat '" + f.text_or(*t, "name", "?") + "'"));
       }

@@ -60,7 +60,8 @@ struct EquipmentCatalog {
   const BatInfo& bat_info_of(std::string_view name) const;
 };
 
-/// Reads balls.toml, clubs.toml and bats.toml from `dir`. Throws InputError
+/// Reads balls.toml, clubs.toml and bats.toml from `dir`; heads' meshes are looked up in
+/// `dir`/../meshes (the assets layout). Throws InputError
 /// ("clubs.toml:42: club 'driver': head_mass = 5 kg is out of range (allowed [0.05, 1] kg)").
 EquipmentCatalog load_equipment(const std::filesystem::path& dir);
 

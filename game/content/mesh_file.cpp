@@ -17,6 +17,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "game/content/obj_scan.hpp"
 #include "game/content/toml_file.hpp"
 #include "game/util/atomic_file.hpp"
 #include "game/util/isolated_call.hpp"
@@ -238,32 +239,10 @@ void add_node(const aiScene* scene, const aiNode* node, const aiMatrix4x4& paren
   for (unsigned c = 0; c < node->mNumChildren; ++c) add_node(scene, node->mChildren[c], xf, out);
 }
 
-/// Refuses a mesh with more than kMaxObjObjects `o` lines before assimp spends O(n^2) on it.
-void check_obj_objects(const std::filesystem::path& path, const char* what) {
-  // Every file is counted, not only *.obj: assimp also recognises an OBJ by its contents.
-  std::ifstream in(path, std::ios::binary);
-  std::uint64_t objects = 0;
-  std::size_t column = 0;  // of the byte read, in its line
-  char prev = '\n';
-  std::vector<char> block(1 << 16);  // read a block at a time: a world's mesh is read at every start
-  while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
-    const std::size_t n = static_cast<std::size_t>(in.gcount());
-    for (std::size_t i = 0; i < n; prev = block[i], ++i) {
-      const char c = block[i];
-      // An object statement: 'o' first on its line, then a space or tab.
-      if (column == 1 && prev == 'o' && (c == ' ' || c == '\t') && ++objects > kMaxObjObjects)
-        throw InputError(path.string() + ": the " + what + " has over " + std::to_string(kMaxObjObjects) +
-                         " objects ('o' lines; the limit: the OBJ reader slows with their square); join them "
-                         "(one object per surface is enough: usemtl gives the material) or use groups ('g')");
-      column = c == '\n' ? 0 : column + 1;
-    }
-  }
-}
-
 /// The import itself, run in the child.
 std::string import_in_child(const std::filesystem::path& path, const char* what, std::uintmax_t max_bytes,
                             unsigned flags) {
-  check_obj_objects(path, what);
+  check_obj_text(path, what);
   Assimp::Importer importer;
   auto* io = new BoundedFileSystem(max_bytes, path);  // owned by the importer
   importer.SetIOHandler(io);

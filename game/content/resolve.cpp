@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "game/content/world_asset.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 
@@ -126,7 +127,7 @@ ResolvedShot resolve(const ShotSpec& spec, const Assets& assets) {
     if (!ground_under(*r.world->world, r.ground.x(), r.ground.z(), d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(),
                       &hit)) {
       throw InputError("world.ball_position: no ground under [" + std::to_string(p.x) + " m, " + std::to_string(p.z) +
-                       " m] in world " + r.world_name);
+                       " m] in world " + r.world_name + " (from its origin, " + ground_extent_text(d, d.origin) + ")");
     }
     r.ground.y() = hit.point.y();
     const SurfaceMaterial& under = r.world->world->material(hit.material);

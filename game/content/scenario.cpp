@@ -1,7 +1,10 @@
 // Scenario document -> checked values -> ShotSpec -> resolve. See scenario.hpp.
 #include "game/content/scenario.hpp"
 
+#include <cctype>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
 #include "physics/error.hpp"
 
@@ -149,6 +152,13 @@ ShotSpec spec_from(const CheckedDoc& doc) {
       if (msg.rfind(key, 0) == 0 && key.size() > best.size()) best = key;
     }
   }
+  if (best.empty()) {
+    // A message that already names its own file (a broken materials.toml or sports.toml
+    // found while resolving) is about that file, not the scenario.
+    const std::string first = msg.substr(0, msg.find(':'));
+    std::error_code ec;
+    if (first.find('.') != std::string::npos && std::filesystem::is_regular_file(first, ec)) throw InputError(msg);
+  }
   throw InputError((best.empty() ? doc.source() : doc.origin(best)) + ": " + msg);
 }
 
@@ -189,6 +199,23 @@ Scenario load_scenario(const Assets& assets, std::string_view name_or_path, cons
   return scenario_from_doc(assets, doc, std::string(name_or_path));
 }
 
+
+std::string origins_named_in(const ScenarioDoc& doc, const std::string& message) {
+  const auto key_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.'; };
+  std::string out;
+  for (const DocEntry& e : doc.entries) {
+    // The key as a whole word ("ball.mass", not "ball.mass_x"), from an origin not said yet.
+    bool named = false;
+    for (auto at = message.find(e.key); at != std::string::npos && !named; at = message.find(e.key, at + 1)) {
+      const std::size_t end = at + e.key.size();
+      named = (at == 0 || !key_char(message[at - 1])) && (end == message.size() || !key_char(message[end]) ||
+                                                         (message[end] == '.' && (end + 1 == message.size() || message[end + 1] == ' ')));
+    }
+    if (!named || message.find(e.origin) != std::string::npos) continue;
+    out += (out.empty() ? " (" : "; ") + e.key + " from " + e.origin;
+  }
+  return out.empty() ? out : out + ")";
+}
 
 std::string scenario_description(const BuiltinScenario& s) {
   try {

@@ -44,6 +44,11 @@ Scenario load_scenario(const Assets& assets, std::string_view name_or_path, cons
 /// The same from an already-parsed document (UI edits, flags, tests); `name` labels it.
 Scenario scenario_from_doc(const Assets& assets, const ScenarioDoc& doc, std::string name);
 
+/// Where the keys a message names came from, for a refusal found only when the shot runs
+/// (a ball the flight model cannot carry): " (ball.mass from --set ball.mass=10g; ball.radius
+/// from case.toml:4)", or "" when the message names none of the document's keys.
+std::string origins_named_in(const ScenarioDoc& doc, const std::string& message);
+
 /// The description line of a built-in scenario file, or "(unreadable: why)".
 std::string scenario_description(const BuiltinScenario& s);
 

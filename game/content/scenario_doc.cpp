@@ -17,12 +17,6 @@
 namespace sweetspot {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
 std::string_view parent_section_of(std::string_view key) {
   const auto dot = key.rfind('.');
   return dot == std::string_view::npos ? std::string_view() : key.substr(0, dot);
@@ -89,7 +83,7 @@ void flatten(const toml::table& table, const std::string& prefix, const std::str
 
 // One element of a quantity: the one rule of quantity_text.hpp, then the parameter's range.
 double check_number(const KeySpec& spec, const Range* range, std::string_view text, const std::string& origin) {
-  const std::string_view t = trim(text);
+  const std::string_view t = trim_blanks(text);
   double v = 0.0;
   try {
     v = read_quantity(t, spec.dim);
@@ -103,13 +97,13 @@ double check_number(const KeySpec& spec, const Range* range, std::string_view te
 }
 
 std::vector<std::string_view> split_list(std::string_view text) {
-  std::string_view s = trim(text);
+  std::string_view s = trim_blanks(text);
   if (!s.empty() && s.front() == '[' && s.back() == ']') s = s.substr(1, s.size() - 2);
   std::vector<std::string_view> out;
-  if (trim(s).empty()) return out;
+  if (trim_blanks(s).empty()) return out;
   while (true) {
     const auto comma = s.find(',');
-    out.push_back(trim(s.substr(0, comma)));
+    out.push_back(trim_blanks(s.substr(0, comma)));
     if (comma == std::string_view::npos) break;
     s.remove_prefix(comma + 1);
   }
@@ -158,7 +152,7 @@ ScenarioDoc read_toml_doc(const std::filesystem::path& path) {
 
 std::string set_key(std::string_view assignment) {
   const auto eq = assignment.find('=');
-  return eq == std::string_view::npos ? std::string() : std::string(trim(assignment.substr(0, eq)));
+  return eq == std::string_view::npos ? std::string() : std::string(trim_blanks(assignment.substr(0, eq)));
 }
 
 void apply_set(ScenarioDoc& doc, std::string_view assignment, std::string_view origin_in) {
@@ -167,8 +161,8 @@ void apply_set(ScenarioDoc& doc, std::string_view assignment, std::string_view o
   if (eq == std::string_view::npos) {
     throw InputError(origin + ": expected key=value in dotted form, e.g. --set swing.speed=105mph");
   }
-  const std::string key(trim(assignment.substr(0, eq)));
-  const std::string value(trim(assignment.substr(eq + 1)));
+  const std::string key(trim_blanks(assignment.substr(0, eq)));
+  const std::string value(trim_blanks(assignment.substr(eq + 1)));
   if (key.empty()) throw InputError(origin + ": empty key; expected key=value, e.g. --set swing.speed=105mph");
   DocEntry e;
   e.key = key;
@@ -205,7 +199,7 @@ CheckedValue check_value(const KeySpec& spec, std::string_view text, RawKind kin
       }
       if (kind != RawKind::Text && kind != RawKind::String && needs_unit(spec.dim)) {
         fail(origin, spec.key,
-             "missing unit: write the value as a string with a unit, e.g. \"" + std::string(trim(text)) + std::string(spec.unit) + "\"",
+             "missing unit: write the value as a string with a unit, e.g. \"" + std::string(trim_blanks(text)) + std::string(spec.unit) + "\"",
              &spec);
       }
       out.number = check_number(spec, spec.range[0], text, origin);
@@ -228,14 +222,14 @@ CheckedValue check_value(const KeySpec& spec, std::string_view text, RawKind kin
     }
     case ValueType::Choice: {
       if (!textual) wrong_type("a string");
-      const std::string v(trim(text));
+      const std::string v(trim_blanks(text));
       if (!in_choices(spec.choices, v)) fail(origin, spec.key, "unknown value '" + v + "'", &spec);
       out.text = v;
       break;
     }
     case ValueType::Name: {
       if (!textual) wrong_type("a name (string)");
-      out.text = std::string(trim(text));
+      out.text = std::string(trim_blanks(text));
       if (out.text.empty()) fail(origin, spec.key, "empty name (leave the key out for the default)");
       break;
     }
@@ -245,7 +239,7 @@ CheckedValue check_value(const KeySpec& spec, std::string_view text, RawKind kin
       break;
     }
     case ValueType::Bool: {
-      const std::string v(trim(text));
+      const std::string v(trim_blanks(text));
       if (kind != RawKind::Boolean && !(kind == RawKind::Text && (v == "true" || v == "false"))) {
         wrong_type("true or false");
       }
@@ -259,6 +253,7 @@ CheckedValue check_value(const KeySpec& spec, std::string_view text, RawKind kin
 CheckedDoc::CheckedDoc(const ScenarioDoc& doc, const Schema& schema, const SportCatalog* sports)
     : source_(doc.source), schema_(&schema) {
   strikes_ = kAnyStrike;
+  std::string sport_origin;  // where the sport was given: the file's line or "--set sport=..."
   if (const KeySpec* sport_spec = schema.find("sport", kAnyStrike)) {
     const DocEntry* e = doc.find("sport");
     if (e == nullptr) {
@@ -266,6 +261,7 @@ CheckedDoc::CheckedDoc(const ScenarioDoc& doc, const Schema& schema, const Sport
                        (sports ? " (allowed: " + sports->names() + ")" : std::string()));
     }
     const auto v = check_value(*sport_spec, e->text, e->kind, e->kind_name, e->origin);
+    sport_origin = e->origin;
     if (sports != nullptr) {
       try {
         sport_ = &sports->get(v.text);
@@ -299,8 +295,12 @@ CheckedDoc::CheckedDoc(const ScenarioDoc& doc, const Schema& schema, const Sport
     if (spec == nullptr) {
       if (const KeySpec* other = schema.find(e.key, kAnyStrike)) {
         const bool club = (other->strikes & kClubKeys) != 0;
+        // A sport switched by --set leaves the file's keys of the other sport: say which set it.
+        const std::string switched = sport_origin.rfind("--set", 0) == 0
+                                         ? " (" + sport_origin + "; a scenario's sport is not switched by --set: pick a scenario of that sport)"
+                                         : std::string();
         fail(e.origin, e.key, std::string("applies to scenarios that swing a ") + (club ? "club" : "bat") +
-                                  "; this one is " + (sport_ ? sport_->name : std::string("another sport")));
+                                  "; this one is " + (sport_ ? sport_->name : std::string("another sport")) + switched);
       }
       const auto section = parent_section_of(e.key);
       if (!section.empty() && schema.has_section(section)) {

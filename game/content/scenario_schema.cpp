@@ -75,7 +75,8 @@ void add_expectations(std::vector<KeySpec>& keys, const std::vector<ExpectSpec>&
       keys.push_back(list(value_key, e.dim, e.list_size, {&kAnyFinite, &kAnyFinite, &kAnyFinite}, e.unit, "",
                           "expected value (regression)"));
     } else {
-      keys.push_back(quantity(value_key, e.dim, &kAnyFinite, e.unit, "", "expected value (regression)"));
+      keys.push_back(quantity(value_key, e.dim, e.range != nullptr ? e.range : &kAnyFinite, e.unit, "",
+                              "expected value (regression)"));
     }
     keys.push_back(quantity(tol_key, e.dim, &kTolerance, e.unit, "", "allowed |got - expected|"));
   }
@@ -273,21 +274,29 @@ const Schema& impact_case_schema() {
   return s;
 }
 
+namespace {
+// What a measured quantity can be: a speed, a distance, a time or a total spin is never
+// negative; an angle lies in its half or whole turn. An expectation outside can never pass.
+constexpr Range kNonNegative{0.0, kInf};
+constexpr Range kElevation{-kPi / 2.0, kPi / 2.0};
+constexpr Range kHeading{-kPi, kPi};
+}  // namespace
+
 const std::vector<ExpectSpec>& scenario_expectations() {
   static const std::vector<ExpectSpec> v{
-      {"ball_speed", Dimension::Speed, "mph", 0},
-      {"vertical_angle", Dimension::Angle, "deg", 0},
-      {"horizontal_angle", Dimension::Angle, "deg", 0},
-      {"spin", Dimension::AngularVelocity, "rpm", 0},
+      {"ball_speed", Dimension::Speed, "mph", 0, &kNonNegative},
+      {"vertical_angle", Dimension::Angle, "deg", 0, &kElevation},
+      {"horizontal_angle", Dimension::Angle, "deg", 0, &kHeading},
+      {"spin", Dimension::AngularVelocity, "rpm", 0, &kNonNegative},
       {"backspin", Dimension::AngularVelocity, "rpm", 0},
       {"sidespin", Dimension::AngularVelocity, "rpm", 0},
-      {"spin_axis", Dimension::Angle, "deg", 0},
-      {"smash_factor", Dimension::Dimensionless, "", 0},
-      {"carry", Dimension::Length, "yd", 0},
-      {"total", Dimension::Length, "yd", 0},
-      {"apex", Dimension::Length, "yd", 0},
-      {"landing_angle", Dimension::Angle, "deg", 0},
-      {"hang_time", Dimension::Time, "s", 0},
+      {"spin_axis", Dimension::Angle, "deg", 0, &kHeading},
+      {"smash_factor", Dimension::Dimensionless, "", 0, &kNonNegative},
+      {"carry", Dimension::Length, "yd", 0, &kNonNegative},
+      {"total", Dimension::Length, "yd", 0, &kNonNegative},
+      {"apex", Dimension::Length, "yd", 0, &kNonNegative},
+      {"landing_angle", Dimension::Angle, "deg", 0, &kElevation},
+      {"hang_time", Dimension::Time, "s", 0, &kNonNegative},
       {"lateral", Dimension::Length, "yd", 0},
   };
   return v;
@@ -298,11 +307,11 @@ const std::vector<ExpectSpec>& impact_case_expectations() {
       {"ball_velocity", Dimension::Speed, "m/s", 3},
       {"impactor_velocity", Dimension::Speed, "m/s", 3},
       {"ball_spin", Dimension::AngularVelocity, "rad/s", 3},
-      {"ball_speed", Dimension::Speed, "m/s", 0},
-      {"ball_direction", Dimension::Angle, "deg", 0},
+      {"ball_speed", Dimension::Speed, "m/s", 0, &kNonNegative},
+      {"ball_direction", Dimension::Angle, "deg", 0, &kHeading},
       {"ball_tangential_velocity", Dimension::Speed, "m/s", 0},
       {"contact_tangential_velocity", Dimension::Speed, "m/s", 0},
-      {"energy_ratio", Dimension::Dimensionless, "", 0},
+      {"energy_ratio", Dimension::Dimensionless, "", 0, &kNonNegative},
   };
   return v;
 }

@@ -77,6 +77,7 @@ struct ExpectSpec {
   Dimension dim;
   std::string_view unit;           ///< display unit in the regression table
   int list_size;                   ///< 0 = scalar, 3 = vector
+  const Range* range = nullptr;    ///< the values the quantity can take (SI); nullptr: any finite
 };
 const std::vector<ExpectSpec>& scenario_expectations();
 const std::vector<ExpectSpec>& impact_case_expectations();

@@ -105,11 +105,16 @@ void TomlFile::fail(const toml::node& n, std::string_view key, std::string_view 
 }
 
 std::string TomlFile::in_context(const std::string& message, const std::string& context) const {
+  const std::string prefix = context + ": ";
   if (message.rfind(source_ + ":", 0) == 0) {
     const auto colon = message.find(": ", source_.size() + 1);
-    if (colon != std::string::npos) return message.substr(0, colon + 2) + context + ": " + message.substr(colon + 2);
+    if (colon != std::string::npos) {
+      if (message.compare(colon + 2, prefix.size(), prefix) == 0) return message;  // said already
+      return message.substr(0, colon + 2) + prefix + message.substr(colon + 2);
+    }
   }
-  return source_ + ": " + context + ": " + message;
+  if (message.rfind(prefix, 0) == 0) return source_ + ": " + message;
+  return source_ + ": " + prefix + message;
 }
 
 void TomlFile::only_keys(const toml::table& t, std::string_view what,
@@ -149,15 +154,10 @@ double TomlFile::quantity(const toml::node& n, std::string_view key, Dimension d
   } catch (const InputError& e) {
     fail(n, key, e.what());
   }
-  if (range != nullptr) {
-    // Fractions are written and read as percent ("140%"): say it in percent too.
-    const bool pct = dim == Dimension::Fraction;
-    const Range shown = pct ? Range{100.0 * range->min, 100.0 * range->max, range->min_open, range->max_open} : *range;
-    if (const std::string why = range_refusal(key, pct ? 100.0 * v : v, shown, pct ? "%" : si_unit_name(dim));
-        !why.empty()) {
+  // Said in the unit it was written in ("140%", "400mph"), with SI beside it.
+  if (range != nullptr)
+    if (const std::string why = written_range_refusal(key, text, v, dim, *range); !why.empty())
       throw InputError(where(n) + ": " + why);
-    }
-  }
   return v;
 }
 

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <system_error>
 
 #include "game/content/mesh_file.hpp"
@@ -156,6 +158,22 @@ void check_pin_on_green(const WorldAsset& a, const std::string& where) {
 
 }  // namespace
 
+std::string ground_extent_text(const WorldDescription& d, const Vec3& relative_to) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const WorldMesh& m : d.meshes)
+    for (const Vec3& v : m.vertices) {
+      lo = lo.cwiseMin(v - relative_to);
+      hi = hi.cwiseMax(v - relative_to);
+    }
+  if (!(lo.x() <= hi.x())) return "it has no ground";
+  const auto m = [](double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", x);
+    return std::string(buf);
+  };
+  return "its ground spans x " + m(lo.x()) + " to " + m(hi.x()) + " m and z " + m(lo.z()) + " to " + m(hi.z()) + " m";
+}
+
 bool is_world_path(const std::string& name_or_path) {
   return name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".toml") ||
          name_or_path.ends_with(".obj");
@@ -225,6 +243,14 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
     if (t.get("pin") != nullptr && !inside(*a.pin)) f.fail(*t.get("pin"), "pin", "lies outside the world's bounds_min .. bounds_max");
     if (t.get("fence_height") != nullptr && a.fence_line.empty())
       f.fail(*t.get("fence_height"), "fence_height", "a fence needs its fence_line = [[x, z], ...] too");
+    if (const toml::array* arr = t.get("fence_line") != nullptr ? t.get("fence_line")->as_array() : nullptr) {
+      // A fence point off the world would put a home run where no ball can reach.
+      for (size_t i = 0; i < a.fence_line.size(); ++i) {
+        const Vec3& q = a.fence_line[i];
+        if (q.x() < d.bounds_min.x() || q.x() > d.bounds_max.x() || q.z() < d.bounds_min.z() || q.z() > d.bounds_max.z())
+          f.fail(*arr->get(i), "fence_line", "point " + std::to_string(i) + " lies outside the world's bounds_min .. bounds_max in x or z");
+      }
+    }
     for (size_t i = 1; i < a.fence_line.size(); ++i)
       if ((a.fence_line[i] - a.fence_line[i - 1]).norm() < 0.01)
         f.fail(*t.get("fence_line"), "fence_line", "points " + std::to_string(i - 1) + " and " + std::to_string(i) +

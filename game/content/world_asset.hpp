@@ -60,6 +60,11 @@ struct WorldAsset {
 /// name of <root>/worlds.
 bool is_world_path(const std::string& name_or_path);
 
+/// Where a world's ground lies, for a refusal of a spot off it: "its ground spans x -30 to
+/// 450 m and z -70 to 70 m" (coordinates less `relative_to`: a tee or ball position is
+/// given from the world's origin, a course's spots in world coordinates).
+std::string ground_extent_text(const WorldDescription& d, const Vec3& relative_to = Vec3::Zero());
+
 /// `sports`, when given, is what the file's `sport` key may name.
 WorldAsset load_world_asset(const std::filesystem::path& root, const std::string& name_or_path,
                             const std::vector<SurfaceMaterial>& materials, const SportCatalog* sports = nullptr);

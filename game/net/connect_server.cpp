@@ -90,7 +90,7 @@ struct ConnectServer::Impl : std::enable_shared_from_this<ConnectServer::Impl> {
 
   void listen();
   void accept();
-  void decide_knock(std::shared_ptr<tcp::socket> knock, Clock::duration after);
+  void decide_knock(std::shared_ptr<tcp::socket> knock, Clock::duration after, Clock::time_point deadline);
   void take(tcp::socket socket);
   void refuse(tcp::socket socket);
   void shutdown();
@@ -420,7 +420,7 @@ void ConnectServer::Impl::accept() {
     const auto live = current.lock();
     if (live && live->open() && !live->replaceable()) {
       // Held: decide a moment later (a reconnect's old socket may have closed meanwhile).
-      decide_knock(std::make_shared<tcp::socket>(std::move(socket)), kKnockGrace);
+      decide_knock(std::make_shared<tcp::socket>(std::move(socket)), kKnockGrace, Clock::now() + kKnockGrace + kStuckAfter);
     } else {
       take(std::move(socket));
     }
@@ -428,19 +428,23 @@ void ConnectServer::Impl::accept() {
   });
 }
 
-void ConnectServer::Impl::decide_knock(std::shared_ptr<tcp::socket> knock, Clock::duration after) {
+void ConnectServer::Impl::decide_knock(std::shared_ptr<tcp::socket> knock, Clock::duration after,
+                                       Clock::time_point deadline) {
   auto timer = std::make_shared<asio::steady_timer>(io, after);
-  timer->async_wait([this, knock, timer](const asio::error_code& e) {
+  timer->async_wait([this, knock, timer, deadline](const asio::error_code& e) {
     if (e || stopping_all) return;
     const auto holder = current.lock();
     if (!(holder && holder->open() && !holder->replaceable())) {
       take(std::move(*knock));
-    } else if (const auto wait = holder->until_stuck(); wait > Clock::duration::zero()) {
+    } else if (const auto wait = holder->until_stuck(); wait > Clock::duration::zero() && Clock::now() < deadline) {
       // The holder is in the middle of a message: the knock waits until it finishes it (then
       // refused) or has held it kStuckAfter (then served), so a launch monitor that knocks
       // while a client trickles is served within kStuckAfter instead of sent away. Looked
-      // at again every 100 ms, so a refusal comes soon after the message is whole.
-      decide_knock(knock, std::min<Clock::duration>(wait + std::chrono::milliseconds(10), std::chrono::milliseconds(100)));
+      // at again every 100 ms, so a refusal comes soon after the message is whole. A holder
+      // that finishes each message and at once starts the next is sending shots, not
+      // stuck: past the deadline (one kStuckAfter) the knock is refused, not kept waiting.
+      decide_knock(knock, std::min<Clock::duration>(wait + std::chrono::milliseconds(10), std::chrono::milliseconds(100)),
+                   deadline);
     } else {
       refuse(std::move(*knock));
     }

@@ -7,25 +7,20 @@
 #include <cstdio>
 #include <limits>
 #include <system_error>
-#include <unordered_set>
 
+#include "game/content/json_unique_keys.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
 
 namespace {
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
 // The value under `key` matched without case; nullptr when absent or null.
 const nlohmann::json* field(const nlohmann::json& o, const char* key) {
   if (!o.is_object()) return nullptr;
-  const std::string want = lower(key);
+  const std::string want = ascii_lower(key);
   for (auto it = o.begin(); it != o.end(); ++it)
-    if (lower(it.key()) == want) return it.value().is_null() ? nullptr : &it.value();
+    if (ascii_lower(it.key()) == want) return it.value().is_null() ? nullptr : &it.value();
   return nullptr;
 }
 
@@ -69,7 +64,6 @@ std::optional<double> number(const nlohmann::json& o, const char* key, const cha
     d = v->get<double>();
   } else if (v->is_string() && number_text(v->get<std::string>())) {
     const std::string& t = v->get_ref<const std::string&>();
-    // Out of a double's range ("1e999") reads as infinite and is refused below.
     // Past a double's range: "1e999" reads as infinite (refused below), "1e-999" as 0.
     if (std::from_chars(t.data(), t.data() + t.size(), d).ec != std::errc())
       d = t.find("e-") != std::string::npos || t.find("E-") != std::string::npos ? 0.0 : std::numeric_limits<double>::infinity();
@@ -93,48 +87,16 @@ bool flag(const nlohmann::json& o, const char* key, const char* where) {
   return v->get<bool>();
 }
 
-// Parses `text`, refusing a key given twice in one object (keys match without case, so
-// "Speed" and "speed" are the same key): which one a reader takes would be a guess.
-nlohmann::json parse_unique_keys(std::string_view text) {
-  std::vector<std::unordered_set<std::string>> seen;  // the keys of each open object
-  std::vector<std::string> names{"message"};   // what each open object is called
-  std::string last_key, duplicate;
-  const nlohmann::json::parser_callback_t check = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-    using E = nlohmann::json::parse_event_t;
-    if (event == E::object_start) {
-      if (!seen.empty()) names.push_back(last_key.empty() ? std::string("(array item)") : last_key);
-      seen.emplace_back();
-    } else if (event == E::object_end) {
-      if (!seen.empty()) seen.pop_back();
-      if (names.size() > 1) names.pop_back();
-      last_key.clear();
-    } else if (event == E::key && !seen.empty()) {
-      last_key = parsed.get<std::string>();
-      const std::string k = lower(last_key);
-      if (!seen.back().insert(k).second && duplicate.empty()) duplicate = names.back() + "." + last_key;
-    } else if (event == E::array_start) {
-      last_key.clear();
-    }
-    return true;
-  };
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text, check);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(std::string("malformed JSON: ") + e.what());
-  }
-  if (!duplicate.empty()) throw InputError(duplicate + " is given twice (keys match without case)");
-  return j;
-}
 
 }  // namespace
 
 OcMessage parse_open_connect(std::string_view text) {
-  const nlohmann::json j = parse_unique_keys(text);
+  const nlohmann::json j = parse_json_unique_keys(text, "message");
   if (!j.is_object()) throw InputError("a message must be a JSON object");
   OcMessage m;
   if (const nlohmann::json* d = field(j, "DeviceID"); d && d->is_string()) m.device_id = d->get<std::string>();
-  if (const auto n = number(j, "ShotNumber", "message", -1e9, 1e9)) {
+  // A count of the launch monitor's shots: never negative (GSPro's own counts from 0 or 1).
+  if (const auto n = number(j, "ShotNumber", "message", 0.0, 1e9)) {
     if (*n != std::floor(*n)) throw InputError("message.ShotNumber = " + short_number(*n) + " is not a whole number");
     m.shot_number = static_cast<int>(*n);
   }
@@ -145,7 +107,7 @@ OcMessage parse_open_connect(std::string_view text) {
     if (text != "1") throw InputError("message.APIversion = " + v->dump() + ": this server speaks Open Connect v1 (\"1\")");
   }
   if (const nlohmann::json* u = field(j, "Units"); u != nullptr) {
-    const std::string text = u->is_string() ? lower(u->get<std::string>()) : std::string();
+    const std::string text = u->is_string() ? ascii_lower(u->get<std::string>()) : std::string();
     if (text != "yards" && text != "meters")
       throw InputError("message.Units = " + u->dump() + " (allowed: \"Yards\", \"Meters\")");
   }

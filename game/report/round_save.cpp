@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "game/content/course_file.hpp"
+#include "game/content/json_unique_keys.hpp"
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
 
@@ -43,6 +44,17 @@ struct Reader {
     if (!v.is_boolean()) fail(path + key, "must be true or false");
     return v.get<bool>();
   }
+  // A key the reader does not know would be dropped without a word (a misspelt "sed" for
+  // "seed"); the save names every key it has.
+  void only_keys(const nlohmann::json& j, std::initializer_list<const char*> keys, const std::string& path) const {
+    if (!j.is_object()) fail(path.empty() ? std::string("(top level)") : path.substr(0, path.size() - 1), "must be an object");
+    for (auto it = j.begin(); it != j.end(); ++it)
+      if (std::none_of(keys.begin(), keys.end(), [&](const char* k) { return it.key() == k; })) {
+        std::string allowed;
+        for (const char* k : keys) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
+        fail(path + it.key(), "unknown key (allowed: " + allowed + ")");
+      }
+  }
   std::uint64_t whole(const nlohmann::json& j, const std::string& key, const std::string& path = "") const {
     const auto& v = at(j, key, path);
     if (!v.is_number_unsigned()) fail(path + key, "must be a whole number >= 0");
@@ -82,12 +94,13 @@ nlohmann::json round_save_json(const GolfGroup& g, const std::string& course) {
 SavedRound parse_round_save(const std::string& text, const std::string& source) {
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(source + ": not a saved round (JSON: " + e.what() + ")");
+    j = parse_json_unique_keys(text, "round");
+  } catch (const InputError& e) {
+    throw InputError(source + ": not a saved round (" + e.what() + ")");
   }
   const Reader r{source};
   if (!j.is_object() || !j.contains("sweetspot_round")) r.fail("sweetspot_round", "missing: not a saved round");
+  r.only_keys(j, {"sweetspot_round", "course", "holes", "players", "format", "gimme_m", "auto_putt", "seed", "events"}, "");
   if (j["sweetspot_round"] != kVersion) r.fail("sweetspot_round", "version " + j["sweetspot_round"].dump() + " (allowed: 1)");
   SavedRound s;
   s.source = source;
@@ -103,6 +116,7 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
   for (std::size_t i = 0; i < players.size(); ++i) {
     const std::string path = "players[" + std::to_string(i) + "].";
     GolfPlayer p;
+    r.only_keys(players[i], {"name", "skill", "human", "handicap", "bag"}, path);
     p.name = r.text(players[i], "name", path);
     p.skill = r.text(players[i], "skill", path);
     p.human = r.flag(players[i], "human", path);
@@ -119,6 +133,7 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
     for (std::size_t k = 0; k < bag.size(); ++k) {
       const std::string at = path + "bag[" + std::to_string(k) + "].";
       GolfBot::Stock st;
+      r.only_keys(bag[k], {"club", "carry_m", "total_m", "spread_m", "side_spread_m"}, at);
       st.club = r.text(bag[k], "club", at);
       if (st.club == "putter" || std::find(golf_bag().begin(), golf_bag().end(), st.club) == golf_bag().end())
         r.fail(at + "club", "'" + st.club + "' is not a club of the bag (the putter has no carry)");
@@ -149,8 +164,10 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
     e.player = static_cast<int>(player);
     const std::string kind = r.text(events[i], "kind", path);
     if (kind == "concede_hole") {
+      r.only_keys(events[i], {"player", "kind"}, path);
       e.kind = GolfEvent::Kind::ConcedeHole;
     } else if (kind == "stroke") {
+      r.only_keys(events[i], {"player", "kind", "club", "aim_rad", "power", "accuracy_ms", "drawn"}, path);
       e.stroke.club = r.text(events[i], "club", path);
       if (std::find(golf_bag().begin(), golf_bag().end(), e.stroke.club) == golf_bag().end())
         r.fail(path + "club", "'" + e.stroke.club + "' is not a club of the bag");

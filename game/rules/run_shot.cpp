@@ -205,6 +205,13 @@ double flat_roll_distance(const ResolvedShot& s, const SurfaceMaterial& surface)
   return std::hypot(end.x() - start.x(), end.z() - start.z());
 }
 
-ShotResult run_scenario(const Scenario& s, const RunOptions& options) { return run_shot(s.resolved, s.name, options); }
+ShotResult run_scenario(const Scenario& s, const RunOptions& options) {
+  try {
+    return run_shot(s.resolved, s.name, options);
+  } catch (const InputError& e) {
+    // Refused only in flight (a ball the aero model cannot carry): say where its keys were set.
+    throw InputError(e.what() + origins_named_in(s.doc, e.what()));
+  }
+}
 
 }  // namespace sweetspot

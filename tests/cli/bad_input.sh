@@ -119,5 +119,14 @@ expect_bad "a pin outside the world" "pin.toml:4|outside the world" -- shot golf
 expect_bad "a plot that is not a PNG" "name it FILE.png" -- derby --plot "$tmp/spray.jpg"
 expect_bad "a strike off the 7-iron's face" "on the 7-iron's face|[-0.023, 0.023] m" -- shot golf/7-iron --set "swing.impact_offset=[0mm,28mm]"
 expect_bad "sweep mu without friction" "--mu|friction model is none" -- sweep golf/driver --e 0.7:0.8:2 --mu 0.2:0.4:2 --set impact.friction=none --no-flight
+# A sport switched by --set: the file's club keys are not blamed alone.
+expect_bad "--set sport" "club.name|--set sport=baseball|pick a scenario of that sport" -- shot golf/driver --set sport=baseball
+# A ball the flight model cannot carry, refused once it flies: the keys' own --set named.
+expect_bad "light large ball" "ball.mass from --set ball.mass=10g|ball.radius from --set ball.radius=10cm" -- shot golf/driver --set ball.mass=10g --set ball.radius=10cm
+# A ball placed off the world says where the ground is.
+expect_bad "ball off the world" "world.ball_position|no ground|its ground spans x" -- shot golf/driver --set "world.ball_position=[0m,300m]"
+# A number flag given text says what the flag takes, with its range.
+expect_bad "text for a number flag" "--balls: 'x'|1..100" -- round --mode ctp --balls x
+expect_bad "text for the port" "--port: 'abc'|0..65535" -- connect --headless --port abc
 [ -z "$(ls -A "$tmp" | grep -v -E '\.toml$|^(out|err)$')" ] || fail "stray files: $(ls -A "$tmp")"
 echo "bad_input: ok"

@@ -97,7 +97,9 @@ expect2() {
 expect2 "port range" "--port" "$bin" connect --headless --port 70000
 expect2 "bad bind" "--bind" "$bin" connect --headless --port 0 --bind nowhere
 expect2 "idle range" "--idle-timeout" "$bin" connect --headless --port 0 --idle-timeout 0.1s
-expect2 "unknown course" "nowhere" "$bin" connect --headless --port 0 --course nowhere
+expect2 "unknown course" "--course: .*nowhere" "$bin" connect --headless --port 0 --course nowhere
+expect2 "unknown world" "--world: .*moon" "$bin" connect --headless --port 0 --world moon
+expect2 "baseball world" "--world: .*baseball" "$bin" connect --headless --port 0 --world ballpark
 printf '%s\n{"ShotNumber":2,"BallData":{"Speed":900},"ShotDataOptions":{"ContainsBallData":true}}\n' \
   "$(head -1 "$tmp/session.jsonl")" >"$tmp/bad_session.jsonl"
 expect2 "bad session line" "bad_session.jsonl:2: BallData.Speed" "$bin" send "$tmp/bad_session.jsonl" --port 9

@@ -155,7 +155,8 @@ cmp -s "$tmp/whole.json" "$tmp/resumed.json" || fail "resumed round differs from
 set +e; msg=$("$bin" round --resume "$tmp/r.save" --bot tour 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q -- "--resume" <<<"$msg" || fail "resume with --bot: $rc $msg"
 set +e; msg=$("$bin" round --bot tour --format match 2>&1); rc=$?; set -e
-[ $rc -eq 2 ] && grep -q "two players" <<<"$msg" || fail "match of one: $rc $msg"
+[ $rc -eq 2 ] && grep -q "two players" <<<"$msg" && grep -q -- "--format match" <<<"$msg" && ! grep -q -- "--human" <<<"$msg" \
+  || fail "match of one (names round's own flags, not play's --human): $rc $msg"
 set +e; msg=$("$bin" round --bot tour --bot amateur --handicap 60 --handicap 1 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q "54" <<<"$msg" || fail "handicap 60: $rc $msg"
 

@@ -21,7 +21,7 @@ GolfGroup::GolfGroup(const Assets& assets, const Course& course, std::vector<Gol
   if (players_.empty() || players_.size() > 4)
     throw InputError("a round has 1 to 4 players, not " + std::to_string(players_.size()));
   if (options_.format == GolfFormat::Match && players_.size() != 2)
-    throw InputError("match play is between two players (--bot/--human twice), not " + std::to_string(players_.size()));
+    throw InputError("match play is between two players, not " + std::to_string(players_.size()));
   check_range("gimme", options_.gimme_m, GolfOptions::kGimme, "m");
   winds_ = round_winds(course_, options_.seed);
   // The first player's bot draws from the round's seed itself (a one-bot round as `round

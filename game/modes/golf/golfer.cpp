@@ -15,6 +15,12 @@ const std::vector<GolferSkill>& golfer_skills() {
   return skills;
 }
 
+std::vector<std::string> golfer_skill_names() {
+  std::vector<std::string> names;
+  for (const GolferSkill& g : golfer_skills()) names.push_back(g.name);
+  return names;
+}
+
 const GolferSkill& golfer_skill(std::string_view name) {
   std::string names;
   for (const GolferSkill& g : golfer_skills()) {

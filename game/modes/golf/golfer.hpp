@@ -35,6 +35,8 @@ struct GolferSkill {
 const std::vector<GolferSkill>& golfer_skills();
 /// The skill by name; InputError listing the names.
 const GolferSkill& golfer_skill(std::string_view name);
+/// The skills' names, in golfer_skills() order.
+std::vector<std::string> golfer_skill_names();
 
 /// A golfer's full-swing club speed (m/s) with `club`: the club's tour speed scaled by the
 /// golfer's driver speed over the tour's. The putter's is the same for everyone.

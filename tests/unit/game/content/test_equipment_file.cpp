@@ -19,16 +19,19 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kEquipment = fs::path(SWEETSPOT_SOURCE_DIR) / "assets" / "equipment";
 
-// A scratch copy of the equipment directory with one file's text edited.
+// A scratch copy of the equipment directory with one file's text edited, in the assets
+// layout (the meshes beside it are the shipped ones).
 struct ScratchDir {
-  fs::path dir;
+  fs::path root, dir;
   ScratchDir() {
-    dir = fs::temp_directory_path() / ("sweetspot_eq_" + std::to_string(::getpid()) + "_" +
-                                       std::to_string(reinterpret_cast<std::uintptr_t>(this)));
+    root = fs::temp_directory_path() / ("sweetspot_eq_" + std::to_string(::getpid()) + "_" +
+                                        std::to_string(reinterpret_cast<std::uintptr_t>(this)));
+    dir = root / "equipment";
     fs::create_directories(dir);
+    fs::create_directory_symlink(kEquipment.parent_path() / "meshes", root / "meshes");
     for (const char* f : {"balls.toml", "clubs.toml", "bats.toml"}) fs::copy_file(kEquipment / f, dir / f);
   }
-  ~ScratchDir() { fs::remove_all(dir); }
+  ~ScratchDir() { fs::remove_all(root); }
   void replace(const char* file, const std::string& from, const std::string& to) {
     std::ifstream in(dir / file);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -125,6 +128,12 @@ TEST_CASE("bad equipment files name file, line, entry, key and range", "[equipme
     CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("mesh") && Contains("not a mesh name"));
   }
   {
+    // A mesh that is not there: the club would be drawn as nothing.
+    ScratchDir s;
+    s.replace("clubs.toml", "mesh = \"driver_head\"", "mesh = \"nope\"");
+    CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("mesh") && Contains("no mesh 'nope'"));
+  }
+  {
     ScratchDir s;
     s.replace("balls.toml", "stiffness = 2.36e7", "stiffness = 1e-3");
     CHECK_THROWS_WITH(load_equipment(s.dir), Contains("stiffness") && Contains("too soft"));
@@ -150,6 +159,20 @@ TEST_CASE("bad equipment files name file, line, entry, key and range", "[equipme
     s.replace("clubs.toml", "head_mass = \"204g\"", "head_mass = \"5000g\"");
     CHECK_THROWS_WITH(load_equipment(s.dir), Contains("clubs.toml:") && Contains("club 'driver'") &&
                                                  Contains("head_mass") && Contains("[0.05, 1] kg"));
+  }
+  {
+    // A check across keys (the cg must sit behind the face) names the key's own line and
+    // the club once.
+    ScratchDir s;
+    s.replace("clubs.toml", "cg = [\"-42.3mm\"", "cg = [\"5mm\"");
+    try {
+      load_equipment(s.dir);
+      FAIL("a cg in front of the face was accepted");
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      CHECK_THAT(m, Contains("clubs.toml:109: club 'driver': cg must be"));
+      CHECK(m.find("club 'driver'") == m.rfind("club 'driver'"));
+    }
   }
   {
     ScratchDir s;

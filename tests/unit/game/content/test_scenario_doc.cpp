@@ -162,6 +162,12 @@ TEST_CASE("expectations come with tolerances", "[scenario][bad-input]") {
   CHECK(d.quantity("expect.spin") == Approx(rpm_to_radps(2686)).epsilon(1e-15));
   CHECK_THAT(error_of(std::string(kDriver) + "[expect]\nspin = \"2686rpm\"\nspin_tol = \"-5rpm\"\n"),
              Contains("out of range"));
+  // An expectation no shot can meet (a negative carry, a launch past vertical) can never pass.
+  CHECK_THAT(error_of(std::string(kDriver) + "[expect]\ncarry = \"-5yd\"\ncarry_tol = \"1yd\"\n"),
+             Contains("case.toml:") && Contains("expect.carry") && Contains("out of range"));
+  CHECK_THAT(error_of(std::string(kDriver) + "[expect]\nvertical_angle = \"100deg\"\nvertical_angle_tol = \"1deg\"\n"),
+             Contains("expect.vertical_angle") && Contains("out of range"));
+  CHECK(check(std::string(kDriver) + "[expect]\nbackspin = \"-500rpm\"\nbackspin_tol = \"50rpm\"\n").quantity("expect.backspin") < 0.0);
 }
 
 TEST_CASE("a missing file is named", "[scenario][bad-input]") {

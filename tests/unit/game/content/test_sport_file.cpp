@@ -34,9 +34,14 @@ TEST_CASE("a bad sports or aero file is named with its line and key", "[sport][i
   CHECK_THROWS_WITH(load_sports(dir / "sports.toml"), Contains("sports.toml:4") && Contains("impactor") && Contains("club, bat"));
   std::ofstream(dir / "aero.toml") << "[[model]]\nname = \"x\"\nsport = \"golf\"\nsource = \"s\"\ndrag = [-1, 0, 0]\n"
                                       "lift_law = \"quadratic\"\nlift = [0, 1, 0]\n";
-  CHECK_THROWS_WITH(load_aero_models(dir / "aero.toml"), Contains("aero.toml:1") && Contains("Cd must be > 0"));
+  CHECK_THROWS_WITH(load_aero_models(dir / "aero.toml", test::assets().sports()), Contains("aero.toml:1") && Contains("Cd must be > 0"));
   std::ofstream(dir / "aero.toml") << "[[model]]\nname = \"x\"\nsport = \"golf\"\nsource = \"s\"\ndrag = [0.2, 0, 0]\n"
                                       "lift_law = \"quadratic\"\nlift = [0, 1, 0]\ndrag_re_slope = -0.2\n";
-  CHECK_THROWS_WITH(load_aero_models(dir / "aero.toml"), Contains("aero.toml:1") && Contains("drag_re_slope") && Contains("[0, 0.3]"));
+  CHECK_THROWS_WITH(load_aero_models(dir / "aero.toml", test::assets().sports()), Contains("aero.toml:1") && Contains("drag_re_slope") && Contains("[0, 0.3]"));
+  // A model for a sport the build does not know would never be chosen, and said nothing.
+  std::ofstream(dir / "aero.toml") << "[[model]]\nname = \"x\"\nsport = \"tennis\"\nsource = \"s\"\ndrag = [0.2, 0, 0]\n"
+                                      "lift_law = \"quadratic\"\nlift = [0, 1, 0]\n";
+  CHECK_THROWS_WITH(load_aero_models(dir / "aero.toml", test::assets().sports()),
+                    Contains("aero.toml:3") && Contains("sport") && Contains("'tennis'") && Contains("golf, baseball"));
   fs::remove_all(dir);
 }

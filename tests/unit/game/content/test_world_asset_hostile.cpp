@@ -61,6 +61,29 @@ TEST_CASE("hostile OBJ: empty and truncated files are rejected naming the file",
                     Catch::Contains("garbage.obj"));
 }
 
+TEST_CASE("hostile OBJ: a short vertex, a stray statement or a face past the vertices is named by its line",
+          "[assets][input][hostile]") {
+  // The importer says "vertex index out of range" for all of these, naming no line.
+  const TempDir dir;
+  const std::string head = "mtllib w.mtl\nusemtl fairway\n";
+  CHECK_THROWS_WITH(load(dir.write("short.obj", head + "v 0 0 0\nv 1 2\nv 0 0 1\nf 1 2 3\n")),
+                    Catch::Contains("short.obj:4") && Catch::Contains("x, y and z") && Catch::Contains("has 2"));
+  CHECK_THROWS_WITH(load(dir.write("word.obj", head + "v 0 0 0\nv 1 zero 0\nv 0 0 1\nf 1 2 3\n")),
+                    Catch::Contains("word.obj:4") && Catch::Contains("'zero' is not a number"));
+  CHECK_THROWS_WITH(load(dir.write("vx.obj", head + "v 0 0 0\nvx 1 0 0\nv 0 0 1\nf 1 2 3\n")),
+                    Catch::Contains("vx.obj:4") && Catch::Contains("unknown statement 'vx'"));
+  CHECK_THROWS_WITH(load(dir.write("past.obj", head + "v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 0 1\n")),
+                    Catch::Contains("past.obj:5") && Catch::Contains("corner 3 refers to vertex 3") &&
+                        Catch::Contains("2 vertices are defined before"));
+  CHECK_THROWS_WITH(load(dir.write("zero.obj", head + "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 0 1 2\n")),
+                    Catch::Contains("zero.obj:6") && Catch::Contains("corner 1 '0'"));
+  // What OBJ allows still loads: texture and normal indices, negative (relative) indices,
+  // a fourth coordinate.
+  const WorldAsset ok = load(dir.write("ok.obj", head + "v -10 0 -10 1\nv 10 0 -10\nv 10 0 10\nvn 0 1 0\nvt 0 0\n"
+                                                        "f -1/1/1 -2/1/1 -3/1/1\n"));
+  CHECK(ok.world->collision_triangles() == 1);
+}
+
 TEST_CASE("hostile OBJ: degenerate and non-finite geometry", "[assets][input][hostile]") {
   const TempDir dir;
   // Only zero-area triangles: nothing to stand on -> rejected, not an empty world.
@@ -246,6 +269,10 @@ TEST_CASE("hostile world TOML: coordinates beyond the world limit and an unknown
                     Catch::Contains("box.toml:2") && Catch::Contains("bounds_min"));
   CHECK_THROWS_WITH(load(dir.write("fence.toml", "mesh = \"g.obj\"\nfence_line = [[\"0m\", \"0m\"], [\"1e9m\", \"0m\"]]\n")),
                     Catch::Contains("fence.toml:2") && Catch::Contains("fence_line"));
+  // Within the coordinate limit but off the world: a home run no ball could reach.
+  CHECK_THROWS_WITH(load(dir.write("far.toml", "mesh = \"g.obj\"\nfence_line = [[\"0m\", \"0m\"],\n  [\"1e5m\", \"0m\"]]\n")),
+                    Catch::Contains("far.toml:3") && Catch::Contains("fence_line") && Catch::Contains("point 1") &&
+                        Catch::Contains("outside the world"));
   const SportCatalog& sports = test::assets().sports();
   CHECK_THROWS_WITH(load_world_asset(fs::temp_directory_path(), dir.write("tennis.toml", "sport = \"tennis\"\nmesh = \"g.obj\"\n"),
                                      test::assets().materials(), &sports),

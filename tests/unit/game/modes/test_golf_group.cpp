@@ -215,4 +215,18 @@ TEST_CASE("a saved round resumes to the same state and finishes bit for bit the 
   huge.replace(huge.find("\"sweetspot_round\""), 0, "\"gimme_m\": 1e999, ");
   CHECK_THROWS_AS(parse_round_save(huge, "save.json"), InputError);
   CHECK_THROWS_WITH(parse_round_save(huge, "save.json"), Catch::Contains("save.json"));
+  // Keys the save does not have were dropped without a word; a key given twice was read as
+  // one of them by guess.
+  bad = nlohmann::json::parse(text);
+  bad["sed"] = 3;
+  CHECK_THROWS_WITH(parse_round_save(bad.dump(), "save.json"), Catch::Contains("save.json: sed: unknown key") && Catch::Contains("seed"));
+  bad = nlohmann::json::parse(text);
+  bad["players"][0]["skil"] = "tour";
+  CHECK_THROWS_WITH(parse_round_save(bad.dump(), "save.json"), Catch::Contains("players[0].skil: unknown key"));
+  bad = nlohmann::json::parse(text);
+  bad["events"][0]["aim"] = 0.1;
+  CHECK_THROWS_WITH(parse_round_save(bad.dump(), "save.json"), Catch::Contains("events[0].aim: unknown key") && Catch::Contains("aim_rad"));
+  std::string twice = text;
+  twice.replace(twice.find("\"sweetspot_round\""), 0, "\"seed\": 99, ");
+  CHECK_THROWS_WITH(parse_round_save(twice, "save.json"), Catch::Contains("save.json") && Catch::Contains("round.seed is given twice"));
 }

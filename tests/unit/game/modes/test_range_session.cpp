@@ -40,7 +40,7 @@ TEST_CASE("the bag file reads back the same and the caddie chooses by it", "[mod
   std::filesystem::create_directories(dir);
   const auto path = dir / "bag.toml";
   std::ofstream(path) << bag_toml(measured);
-  const Bag back = load_bag(test::assets(), path);
+  const Bag back = load_bag(test::assets(), path, golfer_skill_names());
   REQUIRE(back.clubs.size() == measured.clubs.size());
   for (std::size_t k = 0; k < back.clubs.size(); ++k) {
     CHECK(back.clubs[k].club == measured.clubs[k].club);
@@ -60,8 +60,12 @@ TEST_CASE("the bag file reads back the same and the caddie chooses by it", "[mod
   CHECK(carry_bag < carry_stock);
   // Hostile bag files: named file:line and key.
   std::ofstream(dir / "bad.toml") << "skill = \"tour\"\n[[club]]\nname = \"putter\"\ncarry = \"10m\"\ntotal = \"12m\"\n";
-  CHECK_THROWS_WITH(load_bag(test::assets(), dir / "bad.toml"), Catch::Contains("bad.toml:3") && Catch::Contains("putter"));
+  CHECK_THROWS_WITH(load_bag(test::assets(), dir / "bad.toml", golfer_skill_names()), Catch::Contains("bad.toml:3") && Catch::Contains("putter"));
   std::ofstream(dir / "bad2.toml") << "skill = \"tour\"\n[[club]]\nname = \"7-iron\"\ncarry = \"150m\"\ntotal = \"120m\"\n";
-  CHECK_THROWS_WITH(load_bag(test::assets(), dir / "bad2.toml"), Catch::Contains("bad2.toml:5") && Catch::Contains("total"));
+  CHECK_THROWS_WITH(load_bag(test::assets(), dir / "bad2.toml", golfer_skill_names()), Catch::Contains("bad2.toml:5") && Catch::Contains("total"));
+  // A skill the game does not have was read and never used: a bag that meant nothing.
+  std::ofstream(dir / "bad3.toml") << "player = \"me\"\nskill = \"god\"\n";
+  CHECK_THROWS_WITH(load_bag(test::assets(), dir / "bad3.toml", golfer_skill_names()),
+                    Catch::Contains("bad3.toml:2") && Catch::Contains("'god'") && Catch::Contains("tour, scratch"));
   std::filesystem::remove_all(dir);
 }

@@ -392,6 +392,37 @@ TEST_CASE("a knock while the holder finishes its message is refused once it is w
   CHECK((*reply)["Code"] == 503);
 }
 
+TEST_CASE("a knock while the holder streams shot after shot is answered within kStuckAfter, not kept waiting",
+          "[net][server][hostile]") {
+  // The holder finishes each message and at once starts the next, so it is nearly always in
+  // the middle of one. Before, the knock waited for a moment when it was not, which such a
+  // client never gives: the launch monitor heard nothing for as long as the stream lasted.
+  Served s;
+  Client holder(s.server.port());
+  REQUIRE(holder.next_with(201));
+  std::atomic<bool> stop{false};
+  std::thread stream([&] {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    std::string rest;
+    for (int i = 1; !stop && std::chrono::steady_clock::now() < until; ++i) {
+      const std::string whole = shot(i);
+      if (!holder.send(rest + whole.substr(0, 20))) break;
+      rest = whole.substr(20);
+      std::this_thread::sleep_for(std::chrono::milliseconds(150));
+    }
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const auto knocked = std::chrono::steady_clock::now();
+  Client knocker(s.server.port());
+  const auto reply = knocker.next();
+  const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - knocked).count();
+  stop = true;
+  stream.join();
+  REQUIRE(reply);
+  CHECK((*reply)["Code"] == 503);
+  CHECK(waited < 4.5);  // kKnockGrace + kStuckAfter = 3.25 s, and scheduling
+}
+
 TEST_CASE("a launch monitor that reconnects at once is served, not refused", "[net][server][hostile]") {
   // Before: about half of quick reconnects got 503 before the old socket's close was read.
   Served s;

@@ -199,6 +199,9 @@ TEST_CASE("bad numbers are refused with the key and the range", "[net][parser][h
   CHECK_THROWS_WITH(parse_open_connect(R"({"ShotNumber":1.5,"BallData":{"Speed":100,"VLA":10,"TotalSpin":2500},)"
                                        R"("ShotDataOptions":{"ContainsBallData":true}})"),
                     Catch::Contains("ShotNumber") && Catch::Contains("whole number"));
+  CHECK_THROWS_WITH(parse_open_connect(R"({"ShotNumber":-1,"BallData":{"Speed":100,"VLA":10,"TotalSpin":2500},)"
+                                       R"("ShotDataOptions":{"ContainsBallData":true}})"),
+                    Catch::Contains("ShotNumber") && Catch::Contains("-1"));
   CHECK_THROWS_WITH(parse_open_connect(R"({"APIversion":"2","ShotNumber":1,"BallData":{"Speed":100,"VLA":10,"TotalSpin":2500},)"
                                        R"("ShotDataOptions":{"ContainsBallData":true}})"),
                     Catch::Contains("APIversion"));

@@ -152,13 +152,13 @@ ShotSpec spec_from(const CheckedDoc& doc) {
       if (msg.rfind(key, 0) == 0 && key.size() > best.size()) best = key;
     }
   }
-  if (best.empty()) {
-    // A message that already names its own file (a broken materials.toml or sports.toml
-    // found while resolving) is about that file, not the scenario.
-    const std::string first = msg.substr(0, msg.find(':'));
-    std::error_code ec;
-    if (first.find('.') != std::string::npos && std::filesystem::is_regular_file(first, ec)) throw InputError(msg);
-  }
+  // A message that names its own file (a broken materials.toml read for world.name) is
+  // about that file, not the scenario's line.
+  const std::string rest = !best.empty() && msg.compare(best.size(), 2, ": ") == 0 ? msg.substr(best.size() + 2) : msg;
+  const std::string first = rest.substr(0, rest.find(':'));
+  std::error_code ec;
+  if (first.find('.') != std::string::npos && std::filesystem::is_regular_file(first, ec))
+    throw InputError(rest + (best.empty() ? std::string() : " (read for " + best + ")"));
   throw InputError((best.empty() ? doc.source() : doc.origin(best)) + ": " + msg);
 }
 

@@ -110,6 +110,15 @@ expect_bad "a case given twice" "given twice" -- regress "$SWEETSPOT_ROOT/tests/
 export SWEETSPOT_ASSETS=""
 expect_bad "empty SWEETSPOT_ASSETS" "SWEETSPOT_ASSETS is set but empty" -- list
 unset SWEETSPOT_ASSETS
+# A broken data file of the assets is named itself, not the scenario that led to it.
+assets_copy=$(mktemp -d)
+cp -r "$SWEETSPOT_ROOT/assets/." "$assets_copy/"
+sed -i '0,/^mu = /s/^mu = .*/mu = 9/' "$assets_copy/materials.toml"
+export SWEETSPOT_ASSETS="$assets_copy"
+expect_bad "a broken materials.toml" "materials.toml:|mu = 9|[0, 2]" -- shot golf/driver
+grep -q "driver.toml" "$tmp/err" && fail "a broken materials.toml blamed on the scenario: $(cat "$tmp/err")"
+unset SWEETSPOT_ASSETS
+rm -rf "$assets_copy"
 sed 's/^number = 1$/number = 1.5/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$tmp/course.toml"
 expect_bad "a fractional hole number" "course.toml:|number|whole number" -- round "$tmp/course.toml"
 printf 'sport = "baseball"\nmesh = "x.obj"\nfence_height = "3m"\n' > "$tmp/fence.toml"

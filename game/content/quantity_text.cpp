@@ -47,9 +47,9 @@ std::vector<double> read_quantity_list(std::string_view text, Dimension dim) {
   return out;
 }
 
-std::string written_range_refusal(std::string_view name, std::string_view text, double si_value, Dimension dim,
+std::string written_range_refusal(std::string_view name, std::string_view text, double value_si, Dimension dim,
                                   const Range& range) {
-  if (range.contains(si_value)) return {};
+  if (range.contains(value_si)) return {};
   const std::string_view si_unit = si_unit_name(dim);
   const std::string unit(unit_part(text));
   if (!unit.empty() && unit != si_unit) {
@@ -60,12 +60,12 @@ std::string written_range_refusal(std::string_view name, std::string_view text, 
       Range in_unit = range;
       in_unit.min = shown(range.min);
       in_unit.max = shown(range.max);
-      std::string why = range_refusal(name, shown(si_value), in_unit, unit);
+      std::string why = range_refusal(name, shown(value_si), in_unit, unit);
       if (!si_unit.empty()) why.insert(why.size() - 1, "; in SI " + range_text(range, si_unit));
       return why;
     }
   }
-  return range_refusal(name, si_value, range, si_unit);
+  return range_refusal(name, value_si, range, si_unit);
 }
 
 double flag_quantity(std::string_view flag, std::string_view text, Dimension dim, const Range* range) {

@@ -29,10 +29,10 @@ bool has_unit(std::string_view text);
 /// one of: m/s, mph, ...)", or the parser's message.
 double read_quantity(std::string_view text, Dimension dim);
 
-/// "" when `si_value` (read from `text`) lies in `range`; else the refusal in the unit it was
+/// "" when `value_si` (read from `text`) lies in `range`; else the refusal in the unit it was
 /// written in, with SI beside it: "speed = 400 mph is out of range (allowed [0.22, 201] mph;
 /// in SI [0.1, 90] m/s)". A bare number or an SI unit is answered in SI alone.
-std::string written_range_refusal(std::string_view name, std::string_view text, double si_value, Dimension dim,
+std::string written_range_refusal(std::string_view name, std::string_view text, double value_si, Dimension dim,
                                   const Range& range);
 
 /// A command-line flag's quantity: read_quantity, then the range. InputError names the

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "game/content/scenario_schema.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -53,17 +54,13 @@ std::string written_range_refusal(std::string_view name, std::string_view text, 
   const std::string_view si_unit = si_unit_name(dim);
   const std::string unit(unit_part(text));
   if (!unit.empty() && unit != si_unit) {
-    // The unit's scale and offset come from reading 0 and 1 of it.
-    const double offset = parse_quantity("0" + unit, dim), scale = parse_quantity("1" + unit, dim) - offset;
-    if (scale > 0.0) {
-      const auto shown = [&](double si) { return std::isfinite(si) ? (si - offset) / scale : si; };
-      Range in_unit = range;
-      in_unit.min = shown(range.min);
-      in_unit.max = shown(range.max);
-      std::string why = range_refusal(name, shown(value_si), in_unit, unit);
-      if (!si_unit.empty()) why.insert(why.size() - 1, "; in SI " + range_text(range, si_unit));
-      return why;
-    }
+    const auto shown = [&](double si) { return std::isfinite(si) ? si_to_unit(si, unit, dim) : si; };
+    Range in_unit = range;
+    in_unit.min = shown(range.min);
+    in_unit.max = shown(range.max);
+    std::string why = range_refusal(name, shown(value_si), in_unit, unit);
+    if (!si_unit.empty()) why.insert(why.size() - 1, "; in SI " + range_text(range, si_unit));
+    return why;
   }
   return range_refusal(name, value_si, range, si_unit);
 }

@@ -105,16 +105,11 @@ void TomlFile::fail(const toml::node& n, std::string_view key, std::string_view 
 }
 
 std::string TomlFile::in_context(const std::string& message, const std::string& context) const {
-  const std::string prefix = context + ": ";
   if (message.rfind(source_ + ":", 0) == 0) {
     const auto colon = message.find(": ", source_.size() + 1);
-    if (colon != std::string::npos) {
-      if (message.compare(colon + 2, prefix.size(), prefix) == 0) return message;  // said already
-      return message.substr(0, colon + 2) + prefix + message.substr(colon + 2);
-    }
+    if (colon != std::string::npos) return message.substr(0, colon + 2) + context + ": " + message.substr(colon + 2);
   }
-  if (message.rfind(prefix, 0) == 0) return source_ + ": " + message;
-  return source_ + ": " + prefix + message;
+  return source_ + ": " + context + ": " + message;
 }
 
 void TomlFile::only_keys(const toml::table& t, std::string_view what,

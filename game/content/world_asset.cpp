@@ -230,6 +230,10 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
       if (arr == nullptr || arr->size() < 2) f.fail(*n, "fence_line", "expected [[x, z], ...] with 2 or more points");
       for (const toml::node& p : *arr) {
         const auto xz = f.quantities(p, "fence_line", Dimension::Length, 2, &kWorldCoordinate);
+        // A fence point off the world would put a home run where no ball can reach.
+        if (xz[0] < d.bounds_min.x() || xz[0] > d.bounds_max.x() || xz[1] < d.bounds_min.z() || xz[1] > d.bounds_max.z())
+          f.fail(p, "fence_line", "point " + std::to_string(a.fence_line.size()) +
+                                      " lies outside the world's bounds_min .. bounds_max in x or z");
         a.fence_line.emplace_back(xz[0], d.origin.y(), xz[1]);
       }
     }
@@ -243,14 +247,6 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
     if (t.get("pin") != nullptr && !inside(*a.pin)) f.fail(*t.get("pin"), "pin", "lies outside the world's bounds_min .. bounds_max");
     if (t.get("fence_height") != nullptr && a.fence_line.empty())
       f.fail(*t.get("fence_height"), "fence_height", "a fence needs its fence_line = [[x, z], ...] too");
-    if (const toml::array* arr = t.get("fence_line") != nullptr ? t.get("fence_line")->as_array() : nullptr) {
-      // A fence point off the world would put a home run where no ball can reach.
-      for (size_t i = 0; i < a.fence_line.size(); ++i) {
-        const Vec3& q = a.fence_line[i];
-        if (q.x() < d.bounds_min.x() || q.x() > d.bounds_max.x() || q.z() < d.bounds_min.z() || q.z() > d.bounds_max.z())
-          f.fail(*arr->get(i), "fence_line", "point " + std::to_string(i) + " lies outside the world's bounds_min .. bounds_max in x or z");
-      }
-    }
     for (size_t i = 1; i < a.fence_line.size(); ++i)
       if ((a.fence_line[i] - a.fence_line[i - 1]).norm() < 0.01)
         f.fail(*t.get("fence_line"), "fence_line", "points " + std::to_string(i - 1) + " and " + std::to_string(i) +

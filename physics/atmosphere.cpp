@@ -83,11 +83,13 @@ double air_density(const Environment& env) {
 
 double air_viscosity(double t) { return 1.458e-6 * t * std::sqrt(t) / (t + 110.4); }
 
-Vec3 wind_at(const Environment& env, double height) {
+Vec3 wind_at(const Environment& env, double height) { return wind_at(env, height, env.wind_profile); }
+
+Vec3 wind_at(const Environment& env, double height, WindProfile profile) {
   if (env.wind_speed == 0.0) return Vec3::Zero();
   height = std::min(height, kSurfaceLayerTop);
   double speed = env.wind_speed;
-  switch (env.wind_profile) {
+  switch (profile) {
     case WindProfile::Uniform: break;
     case WindProfile::Logarithmic: {
       const double z0 = env.wind_roughness_length;

@@ -73,20 +73,24 @@ struct Dynamics {
   AeroKernel aero;
   double ground_height;
   bool still_air;
+  /// The flight's wind profile until the ball lands, the surface's log law after (its hops:
+  /// ground_wind_at).
+  WindProfile profile;
   ContactLayer layer;
 
-  explicit Dynamics(const ShotModel& m, ContactLayer l = {})
+  Dynamics(const ShotModel& m, bool landed, ContactLayer l = {})
       : model(&m),
         aero(*m.aero, m.air_density, m.ball.radius, m.air_viscosity, m.ball.mass),
         ground_height(m.terrain->reference_height()),
         still_air(m.environment.wind_speed == 0.0),
+        profile(landed ? WindProfile::Logarithmic : m.environment.wind_profile),
         layer(l) {}
 
   /// The ball's velocity through the air in state y.
   Vec3 air_velocity(const State9& y) const {
     const Vec3 v = y.segment<3>(3);
     // Still air needs no profile (wind_at is a call with logs or powers otherwise).
-    return still_air ? v : Vec3(v - wind_at(model->environment, y[1] - ground_height));
+    return still_air ? v : Vec3(v - wind_at(model->environment, y[1] - ground_height, profile));
   }
 
   /// The spin parameter S = R|ω × v_r|/|v_r|² of state y (as the aero kernel takes it).

@@ -394,8 +394,9 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
   const Vec3 dir = speed > 0.0 ? Vec3(v / speed) : Vec3(slope_acc.normalized());
   // Air drag matters on a fast roll (a ball skidding out at 80 m/s loses more to the air
   // than to the turf); its part along the surface acts through the centre, so a rolling
-  // sphere feels 5/7 of it. Lift on the topspin only presses into the ground.
-  const Vec3 wind = wind_at(m.environment, r);
+  // sphere feels 5/7 of it. Lift on the topspin only presses into the ground. The wind is
+  // the grass's (ground_wind_at), not the flight's profile.
+  const Vec3 wind = ground_wind_at(m.environment, r);
   // The drag at the step's start, as c·|v_r|·v_r along the face (c from the aero model:
   // ½ρA·Cd, with Cd at this speed and spin).
   double drag_c = 0.0;

@@ -81,6 +81,21 @@ TEST_CASE("wind profile: reference height, direction, growth with height", "[atm
   CHECK(std::abs(wind_at(e, 10.0).x()) < 1e-12);
 }
 
+TEST_CASE("the wind in the grass is the surface's log law, whatever the flight's profile", "[atmosphere][wind]") {
+  Environment e;
+  e.wind_speed = 20.0;
+  for (WindProfile p : {WindProfile::Logarithmic, WindProfile::PowerLaw, WindProfile::Uniform}) {
+    e.wind_profile = p;
+    // A golf ball's centre (21 mm) sits below the fairway's roughness length (30 mm): still air.
+    CHECK(ground_wind_at(e, 0.021335).norm() == 0.0);
+    // A hop 1 m up: ln(1/0.03)/ln(10/0.03) = 0.6030 of the 10 m wind.
+    CHECK(ground_wind_at(e, 1.0).x() == Approx(20.0 * std::log(1.0 / 0.03) / std::log(10.0 / 0.03)).epsilon(1e-12));
+    CHECK(ground_wind_at(e, 1.0) == wind_at(e, 1.0, WindProfile::Logarithmic));
+  }
+  e.wind_profile = WindProfile::Uniform;
+  CHECK(wind_at(e, 0.021335).x() == 20.0);  // the flight's convention: one speed at every height
+}
+
 TEST_CASE("environment validation names the field and range", "[atmosphere][input]") {
   Environment e;
   CHECK(validate_environment(e).empty());
@@ -101,6 +116,12 @@ TEST_CASE("environment validation names the field and range", "[atmosphere][inpu
   e.wind_roughness_length = 0.99;
   e.wind_reference_height = 1.0;
   CHECK(validate_environment(e).find("wind_reference_height / 10") != std::string::npos);
+  // Past hurricane force (Beaufort 12, 32.7 m/s) no game is played and a landed ball hops on
+  // at the wind's pace: refused with the range.
+  e = Environment{};
+  e.wind_speed = 33.0;
+  CHECK(validate_environment(e).find("environment.wind_speed = 33 m/s is out of range (allowed [0, 32.7] m/s)") !=
+        std::string::npos);
   // Wind above the surface layer is held at its 100 m value (finite at any height).
   e = Environment{};
   e.wind_speed = 10.0;

@@ -31,10 +31,10 @@ ScoutingReport scout(const Assets& assets, const PitcherProfile& pitcher) {
     c.left_handed = pitcher.left_handed;
     c.target_height = 0.5 * (StrikeZone::kLow + StrikeZone::kHigh);
     const PitchFlight f = throw_pitch(assets, c);
-    r.types.push_back({t.type, f.flight_time, f.induced_vertical_break, f.horizontal_break});
+    r.types.push_back({t.type, f.flight_time, f.flight_break_vertical, f.flight_break_horizontal});
     r.typical.flight_time += t.usage * f.flight_time;
-    r.typical.vertical_break += t.usage * f.induced_vertical_break;
-    r.typical.horizontal_break += t.usage * f.horizontal_break;
+    r.typical.vertical_break += t.usage * f.flight_break_vertical;
+    r.typical.horizontal_break += t.usage * f.flight_break_horizontal;
     total += t.usage;
   }
   if (total > 0.0) {
@@ -63,8 +63,8 @@ PitchRead Hitter::read(const PitchFlight& pitch, const std::string& type, const 
   // whole break × (t/T)² in the last t of it; he expects his type's, it does its own.
   const double T = pitch.flight_time;
   const double unseen = std::pow(std::min(kCommitTime, T) / T, 2.0);
-  const double dy = (pitch.induced_vertical_break - expect.vertical_break) * unseen;
-  const double dz = (pitch.horizontal_break - expect.horizontal_break) * unseen;
+  const double dy = (pitch.flight_break_vertical - expect.vertical_break) * unseen;
+  const double dz = (pitch.flight_break_horizontal - expect.horizontal_break) * unseen;
   const double away = left_ ? -1.0 : 1.0;  // + z is away from a right-handed batter
   r.height_error = dy + rng_.normal(spread * skill_.read_height_sd);
   r.away_error = away * dz + rng_.normal(spread * skill_.read_reach_sd);

@@ -54,8 +54,10 @@ struct Crossing {
   ShotTrajectory trajectory;
 };
 
-// Flies a ball from `release` at `velocity` with `spin` until it crosses x = 0.
-Crossing fly_to_plate(const ShotModel& model, const Vec3& release, const Vec3& velocity, const Vec3& spin, bool record) {
+// Flies a ball from `release` at `velocity` with `spin` until it crosses the plane x = `plane`
+// (the plate's back point: 0).
+Crossing fly_to(const ShotModel& model, const Vec3& release, const Vec3& velocity, const Vec3& spin, bool record,
+                double plane = 0.0) {
   LaunchState l;
   l.position = release;
   l.velocity = velocity;
@@ -67,14 +69,14 @@ Crossing fly_to_plate(const ShotModel& model, const Vec3& release, const Vec3& v
     const ShotState before = s;
     const ShotEvent ev = step(model, s, s.t + 0.002);
     rec.add(before, s, ev);
-    if (s.position().x() <= 0.0) {
+    if (s.position().x() <= plane) {
       // Between the two states: the crossing by Hermite interpolation (bisection on x).
       double lo = before.t, hi = s.t;
       for (int k = 0; k < 50; ++k) {
         const double mid = 0.5 * (lo + hi);
         const Vec3 p = flight_position_between(before.position(), before.velocity(), before.t, s.position(), s.velocity(),
                                                s.t, mid);
-        (p.x() > 0.0 ? lo : hi) = mid;
+        (p.x() > plane ? lo : hi) = mid;
       }
       c.t = 0.5 * (lo + hi);
       c.p = flight_position_between(before.position(), before.velocity(), before.t, s.position(), s.velocity(), s.t, c.t);
@@ -117,22 +119,33 @@ PitchFlight throw_pitch(const Assets& assets, const PitchCall& call) {
   Crossing c;
   for (int i = 0; i < 8; ++i) {
     const Vec3 v = t.speed * (aim - out.release).normalized();
-    c = fly_to_plate(model, out.release, v, out.spin, false);
+    c = fly_to(model, out.release, v, out.spin, false);
     const Vec3 miss = c.p - target;
     if (std::abs(miss.y()) < 1e-5 && std::abs(miss.z()) < 1e-5) break;
     aim -= Vec3(0.0, miss.y(), miss.z());  // the aim point moves by the miss: a near-unit Jacobian
   }
   out.release_velocity = t.speed * (aim - out.release).normalized();
-  c = fly_to_plate(model, out.release, out.release_velocity, out.spin, true);
+  c = fly_to(model, out.release, out.release_velocity, out.spin, true);
   out.flight_time = c.t;
   out.plate = c.p;
   out.plate_velocity = c.v;
   out.plate_spin = c.w;
   out.trajectory = std::move(c.trajectory);
-  // Statcast's convention: against the same release without spin.
-  const Crossing still = fly_to_plate(model, out.release, out.release_velocity, Vec3::Zero(), false);
-  out.induced_vertical_break = c.p.y() - still.p.y();
-  out.horizontal_break = c.p.z() - still.p.z();
+  // The whole flight's break: against the same release without spin.
+  const Crossing still = fly_to(model, out.release, out.release_velocity, Vec3::Zero(), false);
+  out.flight_break_vertical = c.p.y() - still.p.y();
+  out.flight_break_horizontal = c.p.z() - still.p.z();
+  // Statcast's movement: from the state at 50 ft to the plate's front, against the same ball
+  // under an aero law without lift (its drag, spin and spin decay unchanged).
+  const Crossing at_start = fly_to(model, out.release, out.release_velocity, out.spin, false, kMovementStart);
+  const Crossing front = fly_to(model, at_start.p, at_start.v, at_start.w, false, kPlateFront);
+  AeroModel liftless = *model.aero;
+  liftless.lift = LiftLaw::Quadratic;
+  liftless.l0 = liftless.l1 = liftless.l2 = 0.0;
+  const ShotModel no_lift = make_shot_model(model.ball, liftless, model.environment, &ground);
+  const Crossing plain = fly_to(no_lift, at_start.p, at_start.v, at_start.w, false, kPlateFront);
+  out.induced_vertical_break = front.p.y() - plain.p.y();
+  out.horizontal_break = front.p.z() - plain.p.z();
   return out;
 }
 

@@ -54,13 +54,26 @@ struct PitchFlight {
   Vec3 plate = Vec3::Zero();     ///< m, where it crosses x = 0
   Vec3 plate_velocity = Vec3::Zero();
   Vec3 plate_spin = Vec3::Zero();
-  double induced_vertical_break = 0.0;  ///< m: height at the plate minus that of the same pitch thrown without spin
+  /// Statcast's movement (pfx_z, "induced vertical break"), m: from y = 50 ft, where the
+  /// tracking's fit of the pitch starts, to the front of the plate, the pitch's height less
+  /// that of the same ball from the same state at 50 ft whose spin lifts nothing (gravity
+  /// and drag alike): the Magnus force's share of the drop over those 48.6 ft.
+  double induced_vertical_break = 0.0;
   double horizontal_break = 0.0;        ///< m, + toward first base (Statcast's pfx_x sign), the same way
+  /// The whole flight's break, m (up, + toward first base): at the plate's back point, against
+  /// the same release thrown without spin. What a batter sees develop from the hand.
+  double flight_break_vertical = 0.0, flight_break_horizontal = 0.0;
   ShotTrajectory trajectory;     ///< release to the plate (samples), for drawing
 };
 
 /// Distance from the rubber to the plate's back point, 60 ft 6 in (MLB Rule 2.01).
 inline constexpr double kRubberToPlate = 18.4404;
+/// Where Statcast's movement starts and ends, m from the plate's back point: y = 50 ft, the
+/// reference of the tracking's nine-parameter fit (PITCHf/x and Statcast's y0), and the
+/// front of the plate, 17 in ahead of its back point (MLB Rule 2.02), where plate_x and
+/// plate_z are read.
+inline constexpr double kMovementStart = 15.24;
+inline constexpr double kPlateFront = 0.4318;
 
 /// Flies the pitch to the plate, aimed (by the pitcher's release direction) to cross at the
 /// target. Throws InputError for a speed or spin out of range.

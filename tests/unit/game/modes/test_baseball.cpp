@@ -50,6 +50,30 @@ TEST_CASE("a four-seamer and a curveball move as Statcast measures them", "[base
   CHECK(std::abs(ff.plate.z()) < 1e-3);
 }
 
+TEST_CASE("Statcast's movement is the Magnus share from 50 ft to the plate's front", "[baseball][pitch]") {
+  // A pitch without spin has no lift: the ball under the liftless law is the same ball.
+  PitchCall still;
+  still.type = pitch_type(types(), "four-seam");
+  still.type.spin = 0.0;
+  const PitchFlight s = throw_pitch(test::assets(), still);
+  CHECK(s.induced_vertical_break == 0.0);
+  CHECK(s.horizontal_break == 0.0);
+  // A nearly constant Magnus push moves the ball as the square of the time it acts: the
+  // 48.6 ft window is ~0.92 of the flight's time from the hand (6.5 ft of extension), so the
+  // movement is ~0.85 of the whole flight's break, in the same direction, for every type.
+  for (const PitchType& t : types()) {
+    PitchCall c;
+    c.type = t;
+    const PitchFlight f = throw_pitch(test::assets(), c);
+    INFO(t.type);
+    const double whole = std::hypot(f.flight_break_vertical, f.flight_break_horizontal);
+    const double window = std::hypot(f.induced_vertical_break, f.horizontal_break);
+    CHECK(window / whole > 0.78);
+    CHECK(window / whole < 0.92);
+    CHECK(f.induced_vertical_break * f.flight_break_vertical + f.horizontal_break * f.flight_break_horizontal > 0.0);
+  }
+}
+
 TEST_CASE("the pitch types order their rise as Statcast's leaderboard does", "[baseball][pitch]") {
   // Savant 2024 pitch movement: the four-seamer rises most, then the sinker, the slider,
   // and the curveball drops (vertical drop with gravity FF < SI < SL < CU).

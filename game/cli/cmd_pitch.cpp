@@ -37,14 +37,15 @@ RunFn setup_pitch(CLI::App& sub) {
     if (!o->speed.empty()) call.type.speed = flag_quantity("--speed", o->speed, Dimension::Speed, &PitchType::kSpeed);
     if (!o->spin.empty()) call.type.spin = flag_quantity("--spin", o->spin, Dimension::AngularVelocity, &PitchType::kSpin);
     const PitchFlight f = throw_pitch(assets, call);
+    const PitchMovement m = statcast_movement(assets, f);
     if (o->json) {
       const nlohmann::json j = {{"type", call.type.type},
                                 {"release_speed_mps", call.type.speed},
                                 {"spin_rpm", radps_to_rpm(call.type.spin)},
                                 {"flight_time_s", f.flight_time},
                                 {"plate_position_m", {f.plate.x(), f.plate.y(), f.plate.z()}},
-                                {"induced_vertical_break_m", f.induced_vertical_break},
-                                {"horizontal_break_m", f.horizontal_break}};
+                                {"induced_vertical_break_m", m.induced_vertical_break},
+                                {"horizontal_break_m", m.horizontal_break}};
       std::cout << json_text(j) << "\n";
     } else {
       std::printf("%s (%s-handed)\n  release speed  %.1f mph\n  spin           %.0f rpm\n  flight time    %.3f s\n"
@@ -52,7 +53,7 @@ RunFn setup_pitch(CLI::App& sub) {
                   "  induced vertical break  %+.1f in\n  horizontal break        %+.1f in\n",
                   call.type.type.c_str(), o->lefty ? "left" : "right", mps_to_mph(call.type.speed),
                   radps_to_rpm(call.type.spin), f.flight_time, mps_to_mph(f.plate_velocity.norm()), m_to_ft(f.plate.y()),
-                  m_to_ft(f.plate.z()), 12.0 * m_to_ft(f.induced_vertical_break), 12.0 * m_to_ft(f.horizontal_break));
+                  m_to_ft(f.plate.z()), 12.0 * m_to_ft(m.induced_vertical_break), 12.0 * m_to_ft(m.horizontal_break));
     }
     return 0;
   };

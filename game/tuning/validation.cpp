@@ -37,9 +37,9 @@ double shot_quantity(const ShotResult& r, std::string_view q) {
   throw std::logic_error("validation: unhandled shot quantity");
 }
 
-double pitch_quantity(const PitchFlight& f, std::string_view q) {
-  if (q == "induced_vertical_break") return f.induced_vertical_break;
-  if (q == "horizontal_break") return f.horizontal_break;
+double pitch_quantity(const Assets& assets, const PitchFlight& f, std::string_view q) {
+  if (q == "induced_vertical_break") return statcast_movement(assets, f).induced_vertical_break;
+  if (q == "horizontal_break") return statcast_movement(assets, f).horizontal_break;
   if (q == "flight_time") return f.flight_time;
   if (q == "plate_speed") return f.plate_velocity.norm();
   throw std::logic_error("validation: unhandled pitch quantity");
@@ -80,7 +80,7 @@ double measure_pitch(const Assets& assets, const ValidationCase& c, const std::v
     else
       throw InputError(origin + ": a pitch takes pitch.speed, pitch.spin and pitch.active_spin");
   }
-  return pitch_quantity(throw_pitch(assets, call), c.quantity->name);
+  return pitch_quantity(assets, throw_pitch(assets, call), c.quantity->name);
 }
 
 double measure(const Assets& assets, const ValidationCase& c, const std::vector<std::string>& extra) {

@@ -90,18 +90,23 @@ Crossing fly_to(const ShotModel& model, const Vec3& release, const Vec3& velocit
   throw InputError("the pitch never reached the plate (it landed short): check its speed and target");
 }
 
+// The baseball in the default air over ground far below the plate: a pitch is read where it
+// crosses the plate, in the air, so a pitch in the dirt or a trial aim that falls short still
+// reaches the plane.
+ShotModel pitch_model(const Assets& assets) {
+  static const FlatGround ground(default_fairway(), -50.0);
+  const BallSpec& ball = assets.equipment().ball("mlb");
+  return make_shot_model(BallProperties{ball.mass, ball.radius, ball.inertia},
+                         assets.aero(assets.sport("baseball").default_aero), Environment{}, &ground);
+}
+
 }  // namespace
 
 PitchFlight throw_pitch(const Assets& assets, const PitchCall& call) {
   const PitchType& t = call.type;
   check_range("pitch.speed", t.speed, PitchType::kSpeed, "m/s");
   check_range("pitch.spin", t.spin, PitchType::kSpin, "rad/s");
-  const BallSpec& ball = assets.equipment().ball("mlb");
-  // The pitch is read where it crosses the plate, in the air: ground far below it, so a
-  // pitch in the dirt or a trial aim that falls short still reaches the plane.
-  static const FlatGround ground(default_fairway(), -50.0);
-  const ShotModel model = make_shot_model(BallProperties{ball.mass, ball.radius, ball.inertia},
-                                          assets.aero(assets.sport("baseball").default_aero), Environment{}, &ground);
+  const ShotModel model = pitch_model(assets);
   const double hand = call.left_handed ? -1.0 : 1.0;
   PitchFlight out;
   out.release = Vec3(kRubberToPlate - t.extension, t.release_height, hand * t.release_side);
@@ -135,18 +140,20 @@ PitchFlight throw_pitch(const Assets& assets, const PitchCall& call) {
   const Crossing still = fly_to(model, out.release, out.release_velocity, Vec3::Zero(), false);
   out.flight_break_vertical = c.p.y() - still.p.y();
   out.flight_break_horizontal = c.p.z() - still.p.z();
-  // Statcast's movement: from the state at 50 ft to the plate's front, against the same ball
-  // under an aero law without lift (its drag, spin and spin decay unchanged).
-  const Crossing at_start = fly_to(model, out.release, out.release_velocity, out.spin, false, kMovementStart);
+  return out;
+}
+
+PitchMovement statcast_movement(const Assets& assets, const PitchFlight& pitch) {
+  const ShotModel model = pitch_model(assets);
+  const Crossing at_start = fly_to(model, pitch.release, pitch.release_velocity, pitch.spin, false, kMovementStart);
   const Crossing front = fly_to(model, at_start.p, at_start.v, at_start.w, false, kPlateFront);
   AeroModel liftless = *model.aero;
   liftless.lift = LiftLaw::Quadratic;
   liftless.l0 = liftless.l1 = liftless.l2 = 0.0;
-  const ShotModel no_lift = make_shot_model(model.ball, liftless, model.environment, &ground);
+  ShotModel no_lift = model;
+  no_lift.aero = &liftless;
   const Crossing plain = fly_to(no_lift, at_start.p, at_start.v, at_start.w, false, kPlateFront);
-  out.induced_vertical_break = front.p.y() - plain.p.y();
-  out.horizontal_break = front.p.z() - plain.p.z();
-  return out;
+  return {front.p.y() - plain.p.y(), front.p.z() - plain.p.z()};
 }
 
 }  // namespace sweetspot

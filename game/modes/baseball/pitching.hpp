@@ -54,14 +54,9 @@ struct PitchFlight {
   Vec3 plate = Vec3::Zero();     ///< m, where it crosses x = 0
   Vec3 plate_velocity = Vec3::Zero();
   Vec3 plate_spin = Vec3::Zero();
-  /// Statcast's movement (pfx_z, "induced vertical break"), m: from y = 50 ft, where the
-  /// tracking's fit of the pitch starts, to the front of the plate, the pitch's height less
-  /// that of the same ball from the same state at 50 ft whose spin lifts nothing (gravity
-  /// and drag alike): the Magnus force's share of the drop over those 48.6 ft.
-  double induced_vertical_break = 0.0;
-  double horizontal_break = 0.0;        ///< m, + toward first base (Statcast's pfx_x sign), the same way
   /// The whole flight's break, m (up, + toward first base): at the plate's back point, against
-  /// the same release thrown without spin. What a batter sees develop from the hand.
+  /// the same release thrown without spin. What a batter sees develop from the hand;
+  /// statcast_movement() gives what Statcast reports.
   double flight_break_vertical = 0.0, flight_break_horizontal = 0.0;
   ShotTrajectory trajectory;     ///< release to the plate (samples), for drawing
 };
@@ -78,5 +73,16 @@ inline constexpr double kPlateFront = 0.4318;
 /// Flies the pitch to the plate, aimed (by the pitcher's release direction) to cross at the
 /// target. Throws InputError for a speed or spin out of range.
 PitchFlight throw_pitch(const Assets& assets, const PitchCall& call);
+
+/// A pitch's movement as Statcast reports it (pfx_z, "induced vertical break", and pfx_x), m:
+/// from y = 50 ft, where the tracking's fit of the pitch starts, to the front of the plate,
+/// the pitch's position less that of the same ball from the same state at 50 ft under the
+/// aero law without lift (gravity, drag, spin and its decay alike): the Magnus force's share
+/// over those 48.6 ft. Over the whole flight from the hand the same push moves it ~15 % more.
+struct PitchMovement {
+  double induced_vertical_break = 0.0;
+  double horizontal_break = 0.0;  ///< + toward first base (Statcast's pfx_x sign)
+};
+PitchMovement statcast_movement(const Assets& assets, const PitchFlight& pitch);
 
 }  // namespace sweetspot

@@ -31,14 +31,16 @@ TEST_CASE("a four-seamer and a curveball move as Statcast measures them", "[base
   // between-pitcher spread of ~2.9 in, 7.7 in of arm-side run (Savant 2024 movement
   // leaderboard); curveball IVB -9.4 in, 9.0 in glove side, drop spread 7.1 in.
   const PitchFlight ff = pitch("four-seam");
-  INFO("four-seam IVB " << inches(ff.induced_vertical_break) << " in, HB " << inches(ff.horizontal_break) << " in");
-  CHECK(std::abs(inches(ff.induced_vertical_break) - 15.7) <= 2.9);
-  CHECK(inches(ff.horizontal_break) < 0.0);  // a right-hander's fastball runs to the third-base side
-  CHECK(std::abs(-inches(ff.horizontal_break) - 7.7) <= 3.0);
+  const PitchMovement ffm = statcast_movement(test::assets(), ff);
+  INFO("four-seam IVB " << inches(ffm.induced_vertical_break) << " in, HB " << inches(ffm.horizontal_break) << " in");
+  CHECK(std::abs(inches(ffm.induced_vertical_break) - 15.7) <= 2.9);
+  CHECK(inches(ffm.horizontal_break) < 0.0);  // a right-hander's fastball runs to the third-base side
+  CHECK(std::abs(-inches(ffm.horizontal_break) - 7.7) <= 3.0);
   const PitchFlight cu = pitch("curveball");
-  INFO("curveball IVB " << inches(cu.induced_vertical_break) << " in, HB " << inches(cu.horizontal_break) << " in");
-  CHECK(std::abs(inches(cu.induced_vertical_break) - (-9.4)) <= 7.1);
-  CHECK(inches(cu.horizontal_break) > 0.0);  // glove side
+  const PitchMovement cum = statcast_movement(test::assets(), cu);
+  INFO("curveball IVB " << inches(cum.induced_vertical_break) << " in, HB " << inches(cum.horizontal_break) << " in");
+  CHECK(std::abs(inches(cum.induced_vertical_break) - (-9.4)) <= 7.1);
+  CHECK(inches(cum.horizontal_break) > 0.0);  // glove side
   // Flight time: "a typical pitch is airborne for about 400 ms" (Healey & Wang 2021); the
   // 94 mph four-seamer from 6.5 ft of extension takes 0.39-0.42 s.
   CHECK(ff.flight_time > 0.39);
@@ -55,7 +57,7 @@ TEST_CASE("Statcast's movement is the Magnus share from 50 ft to the plate's fro
   PitchCall still;
   still.type = pitch_type(types(), "four-seam");
   still.type.spin = 0.0;
-  const PitchFlight s = throw_pitch(test::assets(), still);
+  const PitchMovement s = statcast_movement(test::assets(), throw_pitch(test::assets(), still));
   CHECK(s.induced_vertical_break == 0.0);
   CHECK(s.horizontal_break == 0.0);
   // A nearly constant Magnus push moves the ball as the square of the time it acts: the
@@ -65,26 +67,28 @@ TEST_CASE("Statcast's movement is the Magnus share from 50 ft to the plate's fro
     PitchCall c;
     c.type = t;
     const PitchFlight f = throw_pitch(test::assets(), c);
+    const PitchMovement m = statcast_movement(test::assets(), f);
     INFO(t.type);
     const double whole = std::hypot(f.flight_break_vertical, f.flight_break_horizontal);
-    const double window = std::hypot(f.induced_vertical_break, f.horizontal_break);
+    const double window = std::hypot(m.induced_vertical_break, m.horizontal_break);
     CHECK(window / whole > 0.78);
     CHECK(window / whole < 0.92);
-    CHECK(f.induced_vertical_break * f.flight_break_vertical + f.horizontal_break * f.flight_break_horizontal > 0.0);
+    CHECK(m.induced_vertical_break * f.flight_break_vertical + m.horizontal_break * f.flight_break_horizontal > 0.0);
   }
 }
 
 TEST_CASE("the pitch types order their rise as Statcast's leaderboard does", "[baseball][pitch]") {
   // Savant 2024 pitch movement: the four-seamer rises most, then the sinker, the slider,
   // and the curveball drops (vertical drop with gravity FF < SI < SL < CU).
-  const auto ivb = [](const char* t) { return pitch(t).induced_vertical_break; };
+  const auto ivb = [](const char* t) { return statcast_movement(test::assets(), pitch(t)).induced_vertical_break; };
   CHECK(ivb("four-seam") > ivb("sinker"));
   CHECK(ivb("sinker") > ivb("slider"));
   CHECK(ivb("slider") > ivb("curveball"));
   // Sinkers and changeups run arm side about twice as far as four-seamers.
-  const double ff = -pitch("four-seam").horizontal_break;
-  CHECK(-pitch("sinker").horizontal_break > 1.5 * ff);
-  CHECK(-pitch("changeup").horizontal_break > 1.5 * ff);
+  const auto hb = [](const char* t) { return statcast_movement(test::assets(), pitch(t)).horizontal_break; };
+  const double ff = -hb("four-seam");
+  CHECK(-hb("sinker") > 1.5 * ff);
+  CHECK(-hb("changeup") > 1.5 * ff);
 }
 
 TEST_CASE("Statcast's barrel, hard-hit and sweet-spot classes", "[baseball]") {

@@ -87,7 +87,7 @@ TEST_CASE("validate runs a case through the shot path, a baseline as a differenc
   PitchCall call;
   call.type = pitch_type(load_pitch_types(A), "slider");
   call.type.speed = 85 * 0.44704;
-  CHECK(out[2].got == throw_pitch(A, call).induced_vertical_break);
+  CHECK(out[2].got == statcast_movement(A, throw_pitch(A, call)).induced_vertical_break);
   CHECK(out[2].passed);
 
   const ValidationTotals t = validation_totals(out);

@@ -92,8 +92,8 @@ Vec3 wind_at(const Environment& env, double height, WindProfile profile);
 /// grass (a golf ball's centre, 21 mm up, sits below a fairway's z0 of 30 mm) and to 60 %
 /// of the 10 m wind at 1 m. A uniform profile is a launch monitor's convention for the air a
 /// shot flies through, and a power law is fitted to heights of metres: carried down to the
-/// turf they blow a landed ball along with the wind of the flag (a tour drive in a 20 m/s
-/// uniform tailwind hopped 619 times over 4 km to the time limit).
+/// turf they would blow a landed ball along with the wind of the flag (in a 20 m/s uniform
+/// tailwind a tour drive would hop on for kilometres).
 inline Vec3 ground_wind_at(const Environment& env, double height) {
   return wind_at(env, height, WindProfile::Logarithmic);
 }

@@ -442,8 +442,8 @@ TEST_CASE("a light ball in stiff drag flies: a first step that overflows is take
 TEST_CASE("a landed ball feels the surface's wind: a drive in a strong uniform tailwind comes to rest",
           "[flight][wind][ground]") {
   // A launch monitor's wind is one speed at every height (uniform). Carried down to the turf,
-  // a 20 m/s tailwind (45 mph) blew the PGA tour drive along in 619 hops over 3976 m to the
-  // time limit. After landing the wind is the surface's log law (ground_wind_at).
+  // a 20 m/s tailwind (45 mph) would blow the PGA tour drive along in 619 hops over 3976 m to
+  // the time limit. After landing the wind is the surface's log law (ground_wind_at).
   for (const WindProfile profile : {WindProfile::Uniform, WindProfile::PowerLaw, WindProfile::Logarithmic}) {
     FlightCase c = golf_launch(167.0, 10.9, 2686.0);
     c.environment.wind_speed = 20.0;
@@ -465,8 +465,8 @@ TEST_CASE("a landed ball feels the surface's wind: a drive in a strong uniform t
 TEST_CASE("every corner of the launch and wind ranges ends: at rest, or refused", "[flight][wind][soak]") {
   // The ranges' corners on open flat ground (the flight command's --world none): a 150 m/s
   // ball at every launch angle, spinless or at 20 000 rpm, in the strongest wind allowed from
-  // behind, across and ahead, in each profile. Before the ground's wind and the hurricane
-  // bound, 60 m/s winds hopped a ball 14 km to the time limit.
+  // behind, across and ahead, in each profile. Past the hurricane bound (60 m/s) a ball's
+  // hops ride the wind 14 km to the time limit.
   for (const double launch_deg : {-10.0, 2.0, 10.0, 45.0, 89.0}) {
     for (const double rpm : {0.0, radps_to_rpm(LaunchNumbers::kSpin.max)}) {
       for (const double wind_deg : {0.0, 90.0, 180.0}) {
@@ -487,10 +487,9 @@ TEST_CASE("every corner of the launch and wind ranges ends: at rest, or refused"
 }
 
 TEST_CASE("a hop's apex in a hurricane is flown on: never held in mid-air, never refused", "[flight][soak]") {
-  // 5 m/s at -10 deg into the ground under a uniform 60 m/s wind (when the range allowed
-  // it): a hop reached its apex 2.3 cm up with a vertical speed of 8e-17 m/s, and the
-  // short-hop step of 1.6e-17 s left the clock where it was, 64 times: once put to rest there
-  // in mid-air, then refused. Now at the range's strongest wind.
+  // 5 m/s at -10 deg into the ground under the strongest uniform wind: at 60 m/s a hop reached
+  // its apex 2.3 cm up with a vertical speed of 8e-17 m/s, and a short-hop step of 1.6e-17 s
+  // left the clock where it was, 64 times; such a ball must fly on, never rest in mid-air.
   Environment env;
   env.wind_speed = Environment::kWindSpeed.max;
   env.wind_profile = WindProfile::Uniform;

@@ -66,8 +66,8 @@ std::string validate_aero_model(const AeroModel& m) {
   // Drag must stay positive over the fitted range, or the ball would be pushed forward; and
   // bounded: a sphere's Cd is ~0.1-0.6 and its Cl under 0.6 in any regime a ball flies in,
   // so a coefficient past 2 is a typo (a hostile drag = [1e300, ...] sends the state to inf).
-  // Checked at every Reynolds number a ball meets, from rest to a 98 m/s drive or a 55 m/s
-  // liner into a 60 m/s wind (~6e5), through the crisis, and at no spin and at the launch
+  // Checked at every Reynolds number a ball meets, from rest to a 150 m/s golf ball into the
+  // strongest wind aloft (~5.5e5: kMaxReynolds), through the crisis, and at no spin and at the launch
   // limit's 20 000 rpm (the Nathan drag term grows with spin): a negative d0 hides behind the
   // rise past the crisis at Re 2e5 and shows at a wedge's 1.2e5.
   const double w = m.crisis_width;

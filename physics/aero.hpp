@@ -35,7 +35,8 @@ struct AeroCoefficients {
 inline constexpr double kSpinDecayReferenceDensity = 1.1944245034101437;
 
 /// The Reynolds number (ρ|v|D/µ) every aero model is stated and checked up to
-/// (validate_aero_model): a baseball line drive into a 60 m/s wind. A flight that starts
+/// (validate_aero_model): the launch range's 150 m/s golf ball into the strongest wind aloft
+/// (hurricane force at 10 m is ~46 m/s at 100 m in the log law), ~5.5e5. A flight that starts
 /// beyond it (a large, fast ball) is refused, not integrated.
 inline constexpr double kMaxReynolds = 6e5;
 

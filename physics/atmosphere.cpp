@@ -52,6 +52,17 @@ std::string validate_environment(const Environment& e) {
     return w;
   if (auto w = bad("wind_power_exponent", e.wind_power_exponent, Environment::kWindPowerExponent, ""); !w.empty())
     return w;
+  // Hurricane force is a wind at 10 m: a wind given at another height is held to it by its
+  // profile's 10 m value, and by the surface's log law that the landed ball feels.
+  const double at10 = std::max(wind_at(e, Environment::kBeaufortHeight).norm(),
+                               ground_wind_at(e, Environment::kBeaufortHeight).norm());
+  if (at10 > Environment::kHurricaneWind * (1.0 + 1e-12)) {
+    std::ostringstream s;
+    s << "environment.wind_speed = " << e.wind_speed << " m/s at wind_reference_height " << e.wind_reference_height
+      << " m is " << at10 << " m/s at 10 m: past hurricane force (allowed up to " << Environment::kHurricaneWind
+      << " m/s at 10 m, Beaufort 12)";
+    return s.str();
+  }
   return {};
 }
 

@@ -38,18 +38,26 @@ struct Environment {
   double wind_speed = 0.0;      ///< m/s at wind_reference_height; a breezy day 5 m/s
   /// Up to hurricane force, Beaufort 12's 32.7 m/s (73 mph): a wind in which no golf or
   /// baseball is played. Past it a ball's hops take from the wind more than the turf takes
-  /// back: a drive hops on at the wind's pace until the time limit (14 km at 60 m/s).
+  /// back: a drive hops on at the wind's pace until the time limit (14 km at 60 m/s). The
+  /// Beaufort scale is a wind at 10 m: validate_environment() also holds the profile's 10 m
+  /// wind, and the surface's (ground_wind_at), to kHurricaneWind.
   static constexpr Range kWindSpeed{0.0, 32.7};
+  static constexpr double kHurricaneWind = 32.7;   ///< m/s at 10 m, Beaufort 12
+  static constexpr double kBeaufortHeight = 10.0;  ///< m
   double wind_direction = 0.0;  ///< rad, direction the wind blows TOWARD: 0 = tailwind (+x), +pi/2 = toward +z (right)
   static constexpr Range kWindDirection{-2.0 * kPi, 2.0 * kPi};
   double wind_reference_height = 10.0;  ///< m where wind_speed is measured (weather stations: 10 m)
   static constexpr Range kWindReferenceHeight{0.5, 100.0};
   WindProfile wind_profile = WindProfile::Logarithmic;
   double wind_roughness_length = 0.03;  ///< m, z0 of the log profile; mown grass / open fairway 0.01..0.05
-  /// 0.1 mm (calm water) to 1 m (a town); the log law also needs z0 <= h_ref / 10 (the
-  /// surface layer well above the roughness elements), else its ratio ln(h/z0)/ln(h_ref/z0)
-  /// blows up as z0 nears the reference height.
-  static constexpr Range kWindRoughnessLength{1e-4, 1.0};
+  /// From 5 mm, the Davenport–Wieringa classification's "smooth" land (the least rough
+  /// ground, class 2; open grass is 30 mm, class 3), to 1 m (a town): the land a course or a
+  /// ballpark stands on, which is also where a landed ball lies (ground_wind_at). Over calm
+  /// water's 0.1 mm a golf ball resting on the grass would sit in 47 % of the 10 m wind, and
+  /// under 5 mm a hurricane keeps a landed ball hopping to the time limit. The log law also
+  /// needs z0 <= h_ref / 10 (the surface layer well above the roughness elements), else its
+  /// ratio ln(h/z0)/ln(h_ref/z0) blows up as z0 nears the reference height.
+  static constexpr Range kWindRoughnessLength{5e-3, 1.0};
   double wind_power_exponent = 1.0 / 7.0;  ///< alpha of the power law; open terrain 0.14
   static constexpr Range kWindPowerExponent{0.0, 1.0};
 };

@@ -299,7 +299,7 @@ ShotEvent air_step(const ShotModel& m, ShotState& s, double until) {
   Segment seg;
   double t1 = s.t;
   State9 y1 = s.y;
-  const Dynamics f(m, s.landed, ContactLayer::of(m, s));
+  const Dynamics f(m, s.landed, s.support.point.dot(up_axis()), ContactLayer::of(m, s));
   if (!(carry.h > 0.0)) {  // a launch (or a restart after a bounce): no step taken yet
     refuse_beyond_aero_range(m, f, s.y);
     carry.h = launch_step(tol.rel_tol);

@@ -78,10 +78,13 @@ struct Dynamics {
   WindProfile profile;
   ContactLayer layer;
 
-  Dynamics(const ShotModel& m, bool landed, ContactLayer l = {})
+  /// `landed`: the ball has touched the ground; its hops then measure the wind's height from
+  /// `hop_ground`, the height of the surface the hop left (the log law is the air over the
+  /// turf the ball bounces on, not over the world's reference).
+  Dynamics(const ShotModel& m, bool landed, double hop_ground, ContactLayer l = {})
       : model(&m),
         aero(*m.aero, m.air_density, m.ball.radius, m.air_viscosity, m.ball.mass),
-        ground_height(m.terrain->reference_height()),
+        ground_height(landed ? hop_ground : m.terrain->reference_height()),
         still_air(m.environment.wind_speed == 0.0),
         profile(landed ? WindProfile::Logarithmic : m.environment.wind_profile),
         layer(l) {}

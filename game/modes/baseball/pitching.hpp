@@ -78,7 +78,7 @@ PitchFlight throw_pitch(const Assets& assets, const PitchCall& call);
 /// from y = 50 ft, where the tracking's fit of the pitch starts, to the front of the plate,
 /// the pitch's position less that of the same ball from the same state at 50 ft under the
 /// aero law without lift (gravity, drag, spin and its decay alike): the Magnus force's share
-/// over those 48.6 ft. Over the whole flight from the hand the same push moves it ~15 % more.
+/// over those 48.6 ft. Over the whole flight from the hand the same push moves it ~18 % more.
 struct PitchMovement {
   double induced_vertical_break = 0.0;
   double horizontal_break = 0.0;  ///< + toward first base (Statcast's pfx_x sign)

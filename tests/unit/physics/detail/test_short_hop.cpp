@@ -23,7 +23,7 @@ struct Touch {
 /// The hop from `s` integrated at 1e-12 with small steps, the touch found by bisection on the
 /// dense output (the ground is the plane y = 0: the centre at the ball's radius).
 Touch reference_touch(const ShotModel& m, const ShotState& s) {
-  const detail::Dynamics f(m, s.landed, detail::ContactLayer::of(m, s));
+  const detail::Dynamics f(m, s.landed, s.support.point.y(), detail::ContactLayer::of(m, s));
   const IntegratorTolerances tight{1e-12, 1e-13, 1e-10, 1e-3};
   DopriCarry<9> carry;
   carry.h = 1e-4;

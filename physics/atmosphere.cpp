@@ -52,10 +52,8 @@ std::string validate_environment(const Environment& e) {
     return w;
   if (auto w = bad("wind_power_exponent", e.wind_power_exponent, Environment::kWindPowerExponent, ""); !w.empty())
     return w;
-  // Hurricane force is a wind at 10 m: a wind given at another height is held to it by its
-  // profile's 10 m value, and by the surface's log law that the landed ball feels.
-  const double at10 = std::max(wind_at(e, Environment::kBeaufortHeight).norm(),
-                               ground_wind_at(e, Environment::kBeaufortHeight).norm());
+  // Hurricane force is a wind at 10 m: a wind given at another height is held to it there.
+  const double at10 = beaufort_wind(e);
   if (at10 > Environment::kHurricaneWind * (1.0 + 1e-12)) {
     std::ostringstream s;
     s << "environment.wind_speed = " << e.wind_speed << " m/s at wind_reference_height " << e.wind_reference_height

@@ -6,6 +6,8 @@
 // assume validated input.
 #pragma once
 
+#include <algorithm>
+
 #include <string>
 
 #include "physics/math.hpp"
@@ -39,11 +41,11 @@ struct Environment {
   /// Up to hurricane force, Beaufort 12's 32.7 m/s (73 mph): a wind in which no golf or
   /// baseball is played. Past it a ball's hops take from the wind more than the turf takes
   /// back: a drive hops on at the wind's pace until the time limit (14 km at 60 m/s). The
-  /// Beaufort scale is a wind at 10 m: validate_environment() also holds the profile's 10 m
-  /// wind, and the surface's (ground_wind_at), to kHurricaneWind.
-  static constexpr Range kWindSpeed{0.0, 32.7};
+  /// Beaufort scale is a wind at 10 m: validate_environment() also holds beaufort_wind() to
+  /// kHurricaneWind.
   static constexpr double kHurricaneWind = 32.7;   ///< m/s at 10 m, Beaufort 12
   static constexpr double kBeaufortHeight = 10.0;  ///< m
+  static constexpr Range kWindSpeed{0.0, kHurricaneWind};
   double wind_direction = 0.0;  ///< rad, direction the wind blows TOWARD: 0 = tailwind (+x), +pi/2 = toward +z (right)
   static constexpr Range kWindDirection{-2.0 * kPi, 2.0 * kPi};
   double wind_reference_height = 10.0;  ///< m where wind_speed is measured (weather stations: 10 m)
@@ -104,6 +106,14 @@ Vec3 wind_at(const Environment& env, double height, WindProfile profile);
 /// tailwind a tour drive would hop on for kilometres).
 inline Vec3 ground_wind_at(const Environment& env, double height) {
   return wind_at(env, height, WindProfile::Logarithmic);
+}
+
+/// The wind speed at Beaufort's 10 m (m/s) that the ball meets: the larger of the flight
+/// profile's and the turf's log law through the same reference (a uniform wind given at 2 m
+/// is that at 10 m, but the log law through it is stronger there).
+inline double beaufort_wind(const Environment& env) {
+  return std::max(wind_at(env, Environment::kBeaufortHeight).norm(),
+                  ground_wind_at(env, Environment::kBeaufortHeight).norm());
 }
 
 }  // namespace sweetspot

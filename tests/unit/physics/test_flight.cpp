@@ -481,9 +481,7 @@ TEST_CASE("every corner of the launch and wind ranges ends at rest", "[flight][w
       env.wind_reference_height = air.reference;
       env.wind_profile = profile;
       env.wind_speed = 1.0;
-      const double per_unit = std::max(wind_at(env, Environment::kBeaufortHeight).norm(),
-                                       ground_wind_at(env, Environment::kBeaufortHeight).norm());
-      env.wind_speed = std::min(Environment::kWindSpeed.max, Environment::kHurricaneWind / per_unit);
+      env.wind_speed = std::min(Environment::kWindSpeed.max, Environment::kHurricaneWind / beaufort_wind(env));
       REQUIRE(validate_environment(env).empty());
       for (const double launch_deg : {-10.0, 2.0, 10.0, 45.0, 89.0}) {
         for (const double rpm : {0.0, radps_to_rpm(LaunchNumbers::kSpin.max)}) {

@@ -91,7 +91,7 @@ nlohmann::json bat_tracking_json(const BatTracking& t) {
   return {{"bat_speed_mps", t.bat_speed_mps},       {"squared_up", t.squared_up},
           {"is_squared_up", t.is_squared_up},       {"blast", t.blast},
           {"swing_length_m", t.swing_length_m},     {"attack_angle_deg", t.attack_angle_deg},
-          {"attack_direction_deg", t.attack_direction_deg}};
+          {"attack_direction_deg", t.attack_direction_deg}, {"swing_path_tilt_deg", t.swing_path_tilt_deg}};
 }
 
 nlohmann::json game_json(const GameRecord& g) {

@@ -23,6 +23,7 @@ BatTracking track_swing(const SwingPath& s, const BatSpec& bat, double pitch_spe
   t.swing_length_m = (bat.length - bat.pivot_from_knob) * s.sweep;
   t.attack_angle_deg = rad_to_deg(s.attack_angle);
   t.attack_direction_deg = rad_to_deg(s.direction);
+  t.swing_path_tilt_deg = rad_to_deg(s.tilt);
   const double possible = max_exit_speed(s.bat_speed, pitch_speed);
   t.squared_up = possible > 0.0 ? exit_speed / possible : 0.0;
   t.is_squared_up = t.squared_up >= kSquaredUp;

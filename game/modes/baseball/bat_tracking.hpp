@@ -17,6 +17,7 @@ struct SwingPath {
   /// field (right field for a right-hander), − pull
   double direction = 0.0;
   double sweep = 0.0;         ///< rad the bat turns from the launch position to contact
+  double tilt = 0.0;          ///< rad, the plane the bat's head turns in, from level
 };
 
 struct BatTracking {
@@ -24,6 +25,7 @@ struct BatTracking {
   double swing_length_m = 0.0;       ///< path of the bat's head from the start of the swing to contact
   double attack_angle_deg = 0.0;     ///< + up
   double attack_direction_deg = 0.0; ///< + toward the opposite field, − pull (FanGraphs' OPP/PULL)
+  double swing_path_tilt_deg = 0.0;  ///< the swing's plane from level (Statcast's swing path tilt)
   double squared_up = 0.0;           ///< exit speed / the most the bat and pitch speeds allow; 0 for a miss
   bool is_squared_up = false;        ///< squared_up ≥ 0.8
   bool blast = false;                ///< squared up and fast: 100·squared_up + bat speed (mph) ≥ 164

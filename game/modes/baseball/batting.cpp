@@ -35,7 +35,8 @@ const std::vector<BatterSkill>& batter_skills() {
     pro.read_height_sd = 0.025;
     pro.read_reach_sd = 0.09;
     pro.discipline = 0.07;
-    pro.attack_angle = deg_to_rad(10.0);
+    pro.attack_angle = deg_to_rad(12.5);
+    pro.swing_tilt = kLeagueSwingTilt;
     pro.sweep = 3.2;
     pro.sprint_speed = 27.0 * 0.3048;
     BatterSkill amateur{"amateur", mph_to_mps(60.0), 10.0, 0.009, 0.09};
@@ -45,6 +46,7 @@ const std::vector<BatterSkill>& batter_skills() {
     amateur.read_reach_sd = 0.09;
     amateur.discipline = 0.11;
     amateur.attack_angle = deg_to_rad(6.0);
+    amateur.swing_tilt = kLeagueSwingTilt;
     amateur.sweep = 3.5;
     amateur.sprint_speed = 25.0 * 0.3048;
     return std::vector<BatterSkill>{pro, amateur};
@@ -73,6 +75,13 @@ double fence_distance(const WorldAsset& world, double spray) {
   return std::numeric_limits<double>::infinity();
 }
 
+double attack_angle_at(double attack, double tilt, double turned) {
+  const double st = std::sin(tilt);
+  if (st <= 0.0) return attack;
+  const double on_time = std::asin(std::clamp(std::sin(attack) / st, -1.0, 1.0));  // β when met on time
+  return std::asin(std::clamp(st * std::sin(on_time - turned), -1.0, 1.0));
+}
+
 bool is_barrel(double ev, double la) { return la <= 50.0 && ev >= 98.0 && 1.5 * ev - la >= 117.0 && ev + la >= 124.0; }
 
 SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const SwingInput& in, double bat_speed,
@@ -81,6 +90,11 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   check_range("swing.undercut", in.undercut, SwingInput::kUndercut, "m");
   check_range("swing.reach_error", in.reach_error, SwingInput::kReach, "m");
   check_range("swing.attack_angle", in.attack_angle, SwingInput::kAttackAngle, "rad");
+  check_range("swing.swing_tilt", in.swing_tilt, SwingInput::kSwingTilt, "rad");
+  if (std::abs(in.attack_angle) > in.swing_tilt)
+    throw InputError("swing.attack_angle: " + std::to_string(rad_to_deg(in.attack_angle)) +
+                     " deg is steeper than the swing's plane (swing.swing_tilt " + std::to_string(rad_to_deg(in.swing_tilt)) +
+                     " deg); allowed: |attack_angle| <= swing_tilt");
   SwingResult out;
   const EquipmentCatalog& eq = assets.equipment();
   const BatSpec& bat = eq.bat(bat_name);
@@ -88,14 +102,15 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   BatSwing s;
   check_range("swing.effort", in.effort, SwingInput::kEffort, "");
   s.bat_speed = bat_speed * (in.power ? 1.0 : 0.92) * in.effort;
-  s.attack_angle = in.attack_angle;
   const double sweet_arm = bat.length - bat.sweet_spot_from_tip - bat.pivot_from_knob;
   const double turned = s.bat_speed / sweet_arm * 1e-3 * in.timing_ms;  // rad
   s.direction = std::clamp(turned, BatSwing::kDirection.min, BatSwing::kDirection.max);
+  s.attack_angle = std::clamp(attack_angle_at(in.attack_angle, in.swing_tilt, turned), BatSwing::kAttackAngle.min,
+                              BatSwing::kAttackAngle.max);
   s.impact_from_tip = bat.sweet_spot_from_tip + kBarrelPerMs * in.timing_ms - in.reach_error;
   s.undercut = in.undercut;
   // Statcast tracks every swing, misses too: the sweet spot's path where it passes the ball.
-  SwingPath path{s.bat_speed, s.attack_angle, s.direction, in.sweep};
+  SwingPath path{s.bat_speed, s.attack_angle, s.direction, in.sweep, in.swing_tilt};
   const double pitch_speed = pitch.release_velocity.norm();  // Statcast's pitch speed is out of the hand
   out.tracking = track_swing(path, bat, pitch_speed, 0.0);
   // Through the zone before or after the ball, or the ball past the end of the bat.

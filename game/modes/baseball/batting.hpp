@@ -14,6 +14,10 @@
 
 namespace sweetspot {
 
+/// Statcast's league-average swing path tilt, 32° (MLB glossary, "Swing Path (Tilt)", 2024:
+/// hitters range from ~20° to ~50°): the plane the bat's head turns in, from level.
+inline constexpr double kLeagueSwingTilt = 0.5585;  // rad (32°)
+
 struct BatterSkill {
   std::string name;           ///< "pro", "amateur"
   double bat_speed = 32.0;    ///< m/s at the sweet spot, power swing
@@ -28,15 +32,18 @@ struct BatterSkill {
   double read_reach_sd = 0.05;   ///< m, along the barrel: how far from him it arrives
   /// m: the pitch he sees this far outside the zone he offers at e^-1 as often as one in it.
   double discipline = 0.07;
-  double attack_angle = 0.175;   ///< rad, his swing's usual attack angle
+  double attack_angle = 0.175;   ///< rad, his swing's usual attack angle (met on time)
+  double swing_tilt = kLeagueSwingTilt;  ///< rad, the plane his bat's head turns in, from level
   double sweep = 3.2;            ///< rad the bat turns from his launch position to contact
   double sprint_speed = 8.23;    ///< m/s, his top running speed (27 ft/s: Statcast's league average)
 };
-/// pro: the league's average hitter: 71.5 mph (Statcast's 2024 average bat speed), attack
-/// angle 10° (Statcast 2024 league ~10°), a 7.3 ft swing (Statcast 2024 average swing length:
+/// pro: the league's average hitter: 71.5 mph (Statcast's 2024 average bat speed), an attack
+/// angle of 12.5° when met on time in the league's 32° plane, which his timing spread turns
+/// into Statcast's league ~10° on the balls he puts in play (measured: 10.5° ± 7.6° over 40
+/// seeded games), a 7.3 ft swing (Statcast 2024 average swing length:
 /// 3.2 rad of the maple bat's 0.69 m beyond the pivot), 27 ft/s; batting-practice timing 5 ms
 /// (17° of spray at 3.4°/ms) and height 4 mm (ESTIMATES: a pro squares a batting-practice ball
-/// up). amateur: a high-school hitter, 60 mph, 10 ms, 9 mm, 6° (ESTIMATES). Their reads of live
+/// up). amateur: a high-school hitter, 60 mph, 10 ms, 9 mm, 6° on time (ESTIMATES). Their reads of live
 /// pitching: hitter.hpp.
 const std::vector<BatterSkill>& batter_skills();
 const BatterSkill& batter_skill(std::string_view name);
@@ -56,8 +63,12 @@ struct SwingInput {
   /// the tip; past the tip the bat misses).
   double reach_error = 0.0;
   static constexpr Range kReach{-0.5, 0.5};
-  double attack_angle = 0.175;  ///< rad, + up
+  double attack_angle = 0.175;  ///< rad, + up: the sweet spot's climb when met on time
   static constexpr Range kAttackAngle{-0.5, 0.7};
+  /// rad: the plane the bat's head turns in, from level; at least |attack_angle| (a path
+  /// cannot climb more steeply than its plane).
+  double swing_tilt = kLeagueSwingTilt;
+  static constexpr Range kSwingTilt{0.0, 1.2};
   double sweep = 3.2;           ///< rad, the bat's turn from the launch position to contact
   double effort = 1.0;          ///< share of his bat speed he swings with (a two-strike swing is shorter)
   static constexpr Range kEffort{0.5, 1.0};
@@ -70,6 +81,14 @@ struct SwingInput {
 /// per ms (early toward the tip, late toward the hands); a bat turned 90° from square lies
 /// along the ball's path and cannot meet it.
 inline constexpr double kBarrelPerMs = 0.003;  // m
+
+/// The attack angle where the bat meets the ball, `turned` rad round its arc from where it
+/// would on time (+ late). The sweet spot runs on a circle in a plane tilted `tilt` from
+/// level; at β round from the circle's lowest point its path climbs at sin α = sin(tilt)·sin β.
+/// On time it climbs at `attack`, so early contact, farther round the arc, climbs more steeply
+/// and late contact less: the pulled fly ball and the late grounder the other way. A level
+/// plane keeps a level path.
+double attack_angle_at(double attack, double tilt, double turned);
 inline constexpr double kMissAngle = 1.5708;   // rad (90°)
 
 struct SwingResult {

@@ -90,6 +90,7 @@ SwingInput Hitter::swing(const PitchRead& r, const Count& c) {
   s.effort = two ? kTwoStrikeEffort : 1.0;
   s.left_handed = left_;
   s.attack_angle = skill_.attack_angle;
+  s.swing_tilt = skill_.swing_tilt;
   s.sweep = skill_.sweep * (two ? kTwoStrikeSweep : 1.0);
   s.timing_ms = std::clamp(r.timing_error_ms, SwingInput::kTiming.min, SwingInput::kTiming.max);
   s.undercut = std::clamp(kAimUndercut + r.height_error, SwingInput::kUndercut.min, SwingInput::kUndercut.max);

@@ -29,15 +29,19 @@ BotBatter::BotBatter(const Assets& assets, const BatterSkill& skill, std::uint64
 SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_handed) {
   SwingInput s;
   s.left_handed = left_handed;
+  s.attack_angle = skill_.attack_angle;
+  s.swing_tilt = skill_.swing_tilt;
   double timing = 0.0;
   if (derby) {
     // Where to meet the ball to clear the fence by the most: how early (pulling toward the
     // shorter fence down the line) and how far under it — found once by trying, as a hitter
     // learns it in batting practice.
-    if (derby_undercut_ < 0.0) {
+    if (!derby_planned_) {
+      derby_planned_ = true;
       const WorldAsset* park = assets_.world("ballpark");
-      // The margin by which it clears (or falls short of) the fence, and the worst of it over
-      // the batter's usual timing spread: a plan that a few ms turn foul is a bad plan.
+      // The margin by which it clears (or falls short of) the fence, averaged over the
+      // batter's usual timing spread (a few ms turn the swing's path up or down, and the ball
+      // pull or oppo): a plan that a few ms turn foul is a bad plan.
       const auto margin = [&](double t, double u) {
         SwingInput trial = s;
         trial.timing_ms = t;
@@ -52,9 +56,9 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
       };
       double best = -1e9;
       for (double t = -8.0; t <= 0.0; t += 1.0) {
-        for (double u = 0.006; u <= 0.036; u += 0.003) {
+        for (double u = -0.006; u <= 0.036; u += 0.003) {
           const double sd = skill_.timing_sd_ms;
-          const double m = std::min({margin(t - sd, u), margin(t, u), margin(t + sd, u)});
+          const double m = (margin(t - sd, u) + margin(t, u) + margin(t + sd, u)) / 3.0;
           if (m > best) {
             best = m;
             derby_undercut_ = u;
@@ -62,7 +66,6 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
           }
         }
       }
-      if (derby_undercut_ < 0.0) derby_undercut_ = 0.02;
     }
     s.undercut = derby_undercut_;
     timing = derby_timing_;

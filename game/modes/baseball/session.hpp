@@ -48,7 +48,8 @@ class BotBatter {
   const Assets& assets_;
   BatterSkill skill_;
   Rng rng_;
-  double derby_undercut_ = -1.0;
+  bool derby_planned_ = false;
+  double derby_undercut_ = 0.02;
   double derby_timing_ = 0.0;
 };
 

@@ -112,6 +112,12 @@ TEST_CASE("timing sends the ball: early pulls, late goes the other way; a late m
   REQUIRE(late.contact);
   CHECK(early.shot.launch.horizontal_angle < -deg_to_rad(10.0));  // pulled to left field (right-handed batter)
   CHECK(late.shot.launch.horizontal_angle > deg_to_rad(10.0));
+  // Out front the bat is farther round its arc and climbing: the same undercut launches higher
+  // (attack_angle_at); late, its path is flatter. The tracking reports the swing's plane.
+  CHECK(early.tracking.attack_angle_deg > rad_to_deg(s.attack_angle) + 10.0);
+  CHECK(late.tracking.attack_angle_deg < rad_to_deg(s.attack_angle) - 10.0);
+  CHECK(early.shot.launch.vertical_angle > late.shot.launch.vertical_angle + deg_to_rad(15.0));
+  CHECK(early.tracking.swing_path_tilt_deg == Approx(32.0).margin(0.01));
   s.left_handed = true;
   s.timing_ms = -15.0;
   CHECK(swing_at(test::assets(), p, s, mph_to_mps(71.5)).shot.launch.horizontal_angle > deg_to_rad(10.0));
@@ -158,6 +164,12 @@ TEST_CASE("derby swings: home runs cross the fence in flight, fouls land outside
 }
 
 TEST_CASE("bad baseball input names the value and its range", "[baseball][input]") {
+  // A path cannot climb more steeply than the plane the bat turns in.
+  SwingInput steep;
+  steep.swing_tilt = deg_to_rad(10.0);
+  steep.attack_angle = deg_to_rad(12.5);
+  CHECK_THROWS_WITH(swing_at(test::assets(), pitch("four-seam"), steep, mph_to_mps(72.0)),
+                    Catch::Contains("swing.attack_angle") && Catch::Contains("swing_tilt") && Catch::Contains("allowed"));
   PitchCall c;
   c.type = pitch_type(types(), "four-seam");
   c.type.speed = mph_to_mps(130.0);

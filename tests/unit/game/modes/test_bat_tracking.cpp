@@ -89,3 +89,25 @@ TEST_CASE("a swing at a pitch carries its bat tracking; on time at the sweet spo
   CHECK((!late.contact || late.outcome == BattedOutcome::Foul));
   CHECK(late.tracking.attack_direction_deg > 45.0);
 }
+
+TEST_CASE("the attack angle follows the bat's arc: early contact climbs, late contact flattens, in the swing's plane",
+          "[baseball][bat_tracking]") {
+  const double tilt = kLeagueSwingTilt, on_time = deg_to_rad(12.5);
+  CHECK(attack_angle_at(on_time, tilt, 0.0) == Approx(on_time));
+  // Early (turned < 0): farther round the arc, steeper; late: flatter, and down past the low point.
+  CHECK(attack_angle_at(on_time, tilt, deg_to_rad(-20.0)) > on_time);
+  CHECK(attack_angle_at(on_time, tilt, deg_to_rad(20.0)) < on_time);
+  CHECK(attack_angle_at(on_time, tilt, deg_to_rad(60.0)) < 0.0);
+  // The closed form: sin α = sin τ · sin β, β measured from the arc's low point.
+  const double beta0 = std::asin(std::sin(on_time) / std::sin(tilt));
+  CHECK(std::sin(attack_angle_at(on_time, tilt, deg_to_rad(-15.0))) ==
+        Approx(std::sin(tilt) * std::sin(beta0 + deg_to_rad(15.0))));
+  // No path climbs more steeply than its plane, however early.
+  for (double turned = -1.5; turned <= 1.5; turned += 0.1) CHECK(std::abs(attack_angle_at(on_time, tilt, turned)) <= tilt + 1e-12);
+  CHECK(attack_angle_at(on_time, tilt, -(kPi / 2.0 - beta0)) == Approx(tilt));
+  // A level plane keeps a level path, whatever the timing.
+  CHECK(attack_angle_at(0.0, 0.0, 0.7) == 0.0);
+  // Near the on-time point a ms of timing moves the path by sin τ · cos β per radian of turn.
+  const double per_rad = (attack_angle_at(on_time, tilt, -1e-4) - attack_angle_at(on_time, tilt, 1e-4)) / 2e-4;
+  CHECK(per_rad == Approx(std::sin(tilt) * std::cos(beta0) / std::cos(on_time)).epsilon(1e-6));
+}

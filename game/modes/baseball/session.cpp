@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include "game/modes/baseball/ball_game.hpp"
 #include "physics/error.hpp"
@@ -54,11 +56,18 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
         return (r.outcome == BattedOutcome::HomeRun ? 30.0 : 0.0) + std::hypot(land.x(), land.z()) -
                fence_distance(*park, std::atan2(land.z(), land.x()));
       };
+      // Neighbouring plans share their trial swings (t ± sd lands on the grid): try each once.
+      std::map<std::pair<long long, long long>, double> tried;
+      const auto trial_margin = [&](double t, double u) {
+        const auto key = std::make_pair(std::llround(t * 1e3), std::llround(u * 1e6));
+        const auto it = tried.find(key);
+        return it != tried.end() ? it->second : tried.emplace(key, margin(t, u)).first->second;
+      };
       double best = -1e9;
       for (double t = -8.0; t <= 0.0; t += 1.0) {
         for (double u = -0.006; u <= 0.036; u += 0.003) {
           const double sd = skill_.timing_sd_ms;
-          const double m = (margin(t - sd, u) + margin(t, u) + margin(t + sd, u)) / 3.0;
+          const double m = (trial_margin(t - sd, u) + trial_margin(t, u) + trial_margin(t + sd, u)) / 3.0;
           if (m > best) {
             best = m;
             derby_undercut_ = u;

@@ -55,8 +55,7 @@ class Solver {
     i2_ = in.ball.inertia_body(0, 0);
     r_ = in.ball_radius;
     k_ = in.contact.ball.stiffness;
-    const double nu = in.contact.ball.poisson;
-    kappa_ = 2.0 * (1.0 - nu) / (2.0 - nu);
+    kappa_ = in.contact.ball.shear_ratio();
     damping_ratio_ = in.contact.ball.tangential_damping;
     mu_ = in.contact.material.friction == FrictionModel::None ? 0.0 : in.contact.material.mu;
   }
@@ -128,6 +127,17 @@ class Solver {
     State mid = st;
     mid.q1 = half;
     st.q1 = advance(st.q1, impactor_omega(mid), dt);
+  }
+
+  // The shear law is incremental (Mindlin & Deresiewicz): the patch's force changes by
+  // k_t(δ) × its stretch, dF_t = −k_t u_t dt, and unloads along the stiffness it has. Stored
+  // as F_t = −k_t(δ) s, a patch pressed harder (δ up, k_t ∝ √δ up) at the same stretch would
+  // gain force it was never stretched for: energy from nowhere, enough that a soft shear
+  // spring returned more tangential speed than came in (e_t > 1). Loading therefore holds the
+  // force: s shrinks by k_t(before)/k_t(after) = √(δ_before/δ_after). Unloading scales the
+  // force down with k_t, which F_t = −k_t(δ) s already does (Thornton's rule).
+  void hold_shear_force(State& st, double delta_before, const Contact& c) const {
+    if (c.delta > delta_before && delta_before > 0.0) st.s *= std::sqrt(delta_before / c.delta);
   }
 
   // The Coulomb cap of the stored shear displacement at zero rate (stick–slip).
@@ -226,14 +236,33 @@ void ImpactSurface::closest(const Vec3& p, Vec3* point, Vec3* normal) const {
       return;
     }
     case Kind::Barrel: {
-      // Around the +x axis with radius r(x); the normal leans with the taper.
-      const double x = p.x();
+      // Around the +x axis with radius r(x); the normal leans with the taper. Past either end
+      // the bat is closed by a flat cap: a ball there touches the cap's face or its rim (a
+      // barrel without caps had no surface there, and a ball met at the very tip jumped from
+      // no overlap to a deep one within a step).
       const Vec3 radial(0.0, p.y(), p.z());
       const double rn = radial.norm();
       const Vec3 dir = rn > 0.0 ? Vec3(radial / rn) : Vec3::UnitY();
+      const double knob = bat->barrel_profile.front().first, tip = bat->barrel_profile.back().first;
+      if (p.x() > tip || p.x() < knob) {
+        const double end = p.x() > tip ? tip : knob;
+        const Vec3 out = p.x() > tip ? Vec3::UnitX() : Vec3(-Vec3::UnitX());
+        const double r_end = bat->radius_at(end);
+        if (rn <= r_end) {
+          *point = Vec3(end, p.y(), p.z());
+          *normal = out;
+        } else {
+          *point = Vec3(end, 0.0, 0.0) + r_end * dir;
+          const Vec3 to = p - *point;
+          *normal = to.norm() > 0.0 ? Vec3(to.normalized()) : Vec3(dir);
+        }
+        return;
+      }
+      const double x = p.x();
       const double r = bat->radius_at(x);
       const double h = 1e-4;
-      const double slope = (bat->radius_at(x + h) - bat->radius_at(x - h)) / (2.0 * h);
+      const double x0 = std::max(knob, x - h), x1 = std::min(tip, x + h);
+      const double slope = (bat->radius_at(x1) - bat->radius_at(x0)) / (x1 - x0);
       *point = Vec3(x, 0.0, 0.0) + r * dir;
       *normal = (dir - slope * Vec3::UnitX()).normalized();
       return;
@@ -256,6 +285,10 @@ std::string validate_compliant_impact(const CompliantImpactInput& in) {
       !w.empty())
     return w;
   if (auto w = range_refusal("ball.poisson", in.contact.ball.poisson, BallCompliance::kPoisson, ""); !w.empty()) return w;
+  if (auto w = range_refusal("ball.shear_stiffness_ratio", in.contact.ball.shear_stiffness_ratio,
+                             BallCompliance::kShearStiffnessRatio, "");
+      !w.empty())
+    return w;
   if (auto w = range_refusal("ball.tangential_damping", in.contact.ball.tangential_damping,
                              BallCompliance::kTangentialDamping, "");
       !w.empty())
@@ -317,7 +350,9 @@ CompliantImpactResult solve_compliant_impact(const CompliantImpactInput& in) noe
     const Vec3 ut_half = solver.force(st, c, lambda).ut;
     solver.drift(st, dt);
     st.s += dt * ut_half;
+    const double loaded_at = c.delta;
     c = solver.contact(st);
+    solver.hold_shear_force(st, loaded_at, c);
     solver.cap_shear(st, c);
     f = solver.force(st, c, lambda);
     const Vec3 j1 = 0.5 * dt * f.f;

@@ -12,16 +12,20 @@
 //                                                    integrated once per e; Flores et al. 2011's
 //                                                    closed form λ ≈ 8(1−e)/(5 e v) returns 0.820
 //                                                    for a requested 0.830).
-//   tangential  F_t = −k_t s − c_t u_t, |F_t| ≤ µ F_n  an elastic shear displacement s of the contact
-//               k_t = κ · dF_n/dδ = κ · (3/2) k δ^{1/2}  patch (Mindlin: κ = 2(1−ν)/(2−ν)) that grips,
-//               c_t = β κ λ k δ^{3/2}                  stretches and slips (Coulomb), damped like the
-//                                                    normal law by the rubber's shear hysteresis β.
+//   tangential  dF_t = −k_t u_t dt, |F_t| ≤ µ F_n    an elastic shear of the contact patch
+//               k_t = κ · dF_n/dδ = κ · (3/2) k δ^{1/2}  (Mindlin: κ = 2(1−ν)/(2−ν), or the ball's
+//               − c_t u_t, c_t = β κ λ k δ^{3/2}        measured ratio) that grips, stretches and
+//                                                    slips (Coulomb), incremental as Mindlin &
+//                                                    Deresiewicz's (pressing harder adds no force
+//                                                    without stretch), damped like the normal law
+//                                                    by the rubber's shear hysteresis β.
 //                                                    Its release at separation is the measured
 //                                                    tangential rebound of balls (Maw, Barber &
 //                                                    Fawcett 1976; Cross 2002): the ball leaves a
 //                                                    steep face over-spinning (e_t ≈ 0.3 on a
 //                                                    wedge), a shallow one nearer rolling.
-// β and µ are fitted once for a ball to TrackMan's PGA irons and woods (balls.toml).
+// β and µ are fitted once for a ball: the golf ball to TrackMan's PGA irons and woods, the
+// baseball to laboratory oblique impacts on bats (balls.toml).
 //
 // The rigid solve_impact (physics/impact.hpp) stays for the textbook's models and is this
 // model's limit: as k → ∞ with µ = 0 both give the same result (a test holds it).

@@ -71,6 +71,8 @@ void validate_ball(const BallSpec& b) {
     throw InputError(who + ": compliance.stiffness = " + std::to_string(b.compliance.stiffness) +
                      " N/m^1.5 is too soft (allowed: 0 for a rigid ball, or at least 1e5; a golf ball is ~2e7)");
   check_range(who + ": compliance.poisson", b.compliance.poisson, BallCompliance::kPoisson, "");
+  check_range(who + ": compliance.shear_stiffness_ratio", b.compliance.shear_stiffness_ratio,
+              BallCompliance::kShearStiffnessRatio, "");
   check_range(who + ": compliance.tangential_damping", b.compliance.tangential_damping, BallCompliance::kTangentialDamping, "");
   check_range(who + ": radius", b.radius, BallSpec::kRadius, "m");
   // A sphere's moment of inertia lies between a thin shell (2/3 m R²) and ... any

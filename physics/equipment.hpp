@@ -30,6 +30,14 @@ struct BallCompliance {
   /// stiffness is 2(1−ν)/(2−ν) (0.67 for ν = 0.5). Rubber cores ~0.48.
   double poisson = 0.48;
   static constexpr Range kPoisson{0.0, 0.5};
+  /// Tangential over normal contact stiffness of the patch, k_t / (dF_n/dδ), when measured
+  /// for the ball itself; 0 = Mindlin's 2(1−ν)/(2−ν) from `poisson`. A wound baseball's
+  /// cover and yarn shear far more easily than a solid rubber's Mindlin ratio allows: Kensrud,
+  /// Nathan & Smith (Am. J. Phys. 85 (2017) 503) fit k_n/k_t = 4.75 (0.21).
+  double shear_stiffness_ratio = 0.0;
+  static constexpr Range kShearStiffnessRatio{0.0, 1.0};
+  /// The ratio the contact uses: the measured one, or Mindlin's from ν.
+  double shear_ratio() const { return shear_stiffness_ratio > 0.0 ? shear_stiffness_ratio : 2.0 * (1.0 - poisson) / (2.0 - poisson); }
   /// The rubber's hysteresis in shear relative to compression: the tangential spring is
   /// damped by this × the Mindlin ratio × the normal law's Hunt–Crossley damping. 0 = an
   /// elastic shear spring (the ball's tangential rebound rings undamped); tour ball 2.0,

@@ -63,7 +63,8 @@ FrictionModel friction(const TomlFile& f, const toml::table& t) {
 }
 
 BallSpec read_ball(const TomlFile& f, const toml::table& t) {
-  f.only_keys(t, "ball", {"name", "mass", "radius", "inertia", "stiffness", "poisson", "tangential_damping"});
+  f.only_keys(t, "ball", {"name", "mass", "radius", "inertia", "stiffness", "poisson", "shear_stiffness_ratio",
+                          "tangential_damping"});
   BallSpec b;
   b.name = f.text(f.required(t, "name", "the ball's name"), "name");
   b.mass = f.quantity(f.required(t, "mass", "kg"), "mass", Dimension::Mass, &BallSpec::kMass);
@@ -73,6 +74,8 @@ BallSpec read_ball(const TomlFile& f, const toml::table& t) {
   // with its unit in the key's documentation (balls.toml).
   b.compliance.stiffness = f.quantity_or(t, "stiffness", Dimension::Dimensionless, 0.0, &BallCompliance::kStiffness);
   b.compliance.poisson = f.quantity_or(t, "poisson", Dimension::Dimensionless, b.compliance.poisson, &BallCompliance::kPoisson);
+  b.compliance.shear_stiffness_ratio = f.quantity_or(t, "shear_stiffness_ratio", Dimension::Dimensionless, 0.0,
+                                                    &BallCompliance::kShearStiffnessRatio);
   b.compliance.tangential_damping = f.quantity_or(t, "tangential_damping", Dimension::Dimensionless,
                                                  b.compliance.tangential_damping, &BallCompliance::kTangentialDamping);
   validated(f, t, "ball '" + b.name + "'", [&] { validate_ball(b); });

@@ -39,7 +39,7 @@ struct BatterSkill {
 };
 /// pro: the league's average hitter: 71.5 mph (Statcast's 2024 average bat speed), an attack
 /// angle of 12.5° when met on time in the league's 32° plane, which his timing spread turns
-/// into Statcast's league ~10° on the balls he puts in play (measured: 10.5° ± 7.6° over 40
+/// into Statcast's league ~10° on the balls he puts in play (measured: 10.6° ± 7.2° over 40
 /// seeded games), a 7.3 ft swing (Statcast 2024 average swing length:
 /// 3.2 rad of the maple bat's 0.69 m beyond the pivot), 27 ft/s; batting-practice timing 5 ms
 /// (17° of spray at 3.4°/ms) and height 4 mm (ESTIMATES: a pro squares a batting-practice ball

@@ -44,7 +44,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x4a2a67bd144d7c39ULL;
+constexpr std::uint64_t kGoldenHash = 0x07535ba4f4064c1cULL;
 
 }  // namespace
 

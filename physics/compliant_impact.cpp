@@ -132,8 +132,8 @@ class Solver {
   // The shear law is incremental (Mindlin & Deresiewicz): the patch's force changes by
   // k_t(δ) × its stretch, dF_t = −k_t u_t dt, and unloads along the stiffness it has. Stored
   // as F_t = −k_t(δ) s, a patch pressed harder (δ up, k_t ∝ √δ up) at the same stretch would
-  // gain force it was never stretched for: energy from nowhere, enough that a soft shear
-  // spring returned more tangential speed than came in (e_t > 1). Loading therefore holds the
+  // gain force it was never stretched for: energy from nowhere, enough for a soft shear
+  // spring to return more tangential speed than came in (e_t > 1). Loading therefore holds the
   // force: s shrinks by k_t(before)/k_t(after) = √(δ_before/δ_after). Unloading scales the
   // force down with k_t, which F_t = −k_t(δ) s already does (Thornton's rule).
   void hold_shear_force(State& st, double delta_before, const Contact& c) const {
@@ -237,9 +237,8 @@ void ImpactSurface::closest(const Vec3& p, Vec3* point, Vec3* normal) const {
     }
     case Kind::Barrel: {
       // Around the +x axis with radius r(x); the normal leans with the taper. Past either end
-      // the bat is closed by a flat cap: a ball there touches the cap's face or its rim (a
-      // barrel without caps had no surface there, and a ball met at the very tip jumped from
-      // no overlap to a deep one within a step).
+      // the bat is closed by a flat cap, whose face or rim a ball there touches: without it a
+      // ball met at the very tip would jump from no overlap to a deep one within a step.
       const Vec3 radial(0.0, p.y(), p.z());
       const double rn = radial.norm();
       const Vec3 dir = rn > 0.0 ? Vec3(radial / rn) : Vec3::UnitY();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "game/modes/baseball/throwing.hpp"
@@ -93,10 +94,12 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   check_range("swing.reach_error", in.reach_error, SwingInput::kReach, "m");
   check_range("swing.attack_angle", in.attack_angle, SwingInput::kAttackAngle, "rad");
   check_range("swing.swing_tilt", in.swing_tilt, SwingInput::kSwingTilt, "rad");
-  if (std::abs(in.attack_angle) > in.swing_tilt)
-    throw InputError("swing.attack_angle: " + std::to_string(rad_to_deg(in.attack_angle)) +
-                     " deg is steeper than the swing's plane (swing.swing_tilt " + std::to_string(rad_to_deg(in.swing_tilt)) +
-                     " deg); allowed: |attack_angle| <= swing_tilt");
+  if (std::abs(in.attack_angle) > in.swing_tilt) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "swing.attack_angle: %.1f deg is steeper than the swing's plane (swing.swing_tilt %.1f deg); allowed: |attack_angle| <= swing_tilt",
+                  rad_to_deg(in.attack_angle), rad_to_deg(in.swing_tilt));
+    throw InputError(msg);
+  }
   SwingResult out;
   const EquipmentCatalog& eq = assets.equipment();
   const BatSpec& bat = eq.bat(bat_name);

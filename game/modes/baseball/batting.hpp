@@ -81,6 +81,7 @@ struct SwingInput {
 /// per ms (early toward the tip, late toward the hands); a bat turned 90° from square lies
 /// along the ball's path and cannot meet it.
 inline constexpr double kBarrelPerMs = 0.003;  // m
+inline constexpr double kMissAngle = 1.5708;   // rad (90°)
 
 /// The attack angle where the bat meets the ball, `turned` rad round its arc from where it
 /// would on time (+ late). The sweet spot runs on a circle in a plane tilted `tilt` from
@@ -89,7 +90,6 @@ inline constexpr double kBarrelPerMs = 0.003;  // m
 /// and late contact less: the pulled fly ball and the late grounder the other way. A level
 /// plane keeps a level path.
 double attack_angle_at(double attack, double tilt, double turned);
-inline constexpr double kMissAngle = 1.5708;   // rad (90°)
 
 struct SwingResult {
   bool contact = false;

@@ -37,7 +37,9 @@ struct BallCompliance {
   double shear_stiffness_ratio = 0.0;
   static constexpr Range kShearStiffnessRatio{0.0, 1.0};
   /// The ratio the contact uses: the measured one, or Mindlin's from ν.
-  double shear_ratio() const { return shear_stiffness_ratio > 0.0 ? shear_stiffness_ratio : 2.0 * (1.0 - poisson) / (2.0 - poisson); }
+  double shear_ratio() const {
+    return shear_stiffness_ratio > 0.0 ? shear_stiffness_ratio : 2.0 * (1.0 - poisson) / (2.0 - poisson);
+  }
   /// The rubber's hysteresis in shear relative to compression: the tangential spring is
   /// damped by this × the Mindlin ratio × the normal law's Hunt–Crossley damping. 0 = an
   /// elastic shear spring (the ball's tangential rebound rings undamped); tour ball 2.0,

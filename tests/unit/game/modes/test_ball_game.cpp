@@ -11,6 +11,7 @@
 #include "game/modes/baseball/ball_game.hpp"
 #include "game/report/box_score.hpp"
 #include "physics/error.hpp"
+#include "physics/units.hpp"
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
@@ -170,7 +171,7 @@ TEST_CASE("batted backspin by launch angle follows Statcast's average (Nathan's 
     const LaunchMetrics& L = last.result.shot.launch;
     const double la = rad_to_deg(L.vertical_angle);
     if (std::abs(rad_to_deg(L.horizontal_angle)) > 15.0 || la < 20.0 || la >= 35.0) continue;  // straightaway fly balls
-    bins[static_cast<int>((la - 20.0) / 5.0)].push_back(L.spin.backspin * 60.0 / (2.0 * kPi));
+    bins[static_cast<int>((la - 20.0) / 5.0)].push_back(radps_to_rpm(L.spin.backspin));
   }
   for (int i = 0; i < 3; ++i) {
     std::vector<double>& b = bins[i];

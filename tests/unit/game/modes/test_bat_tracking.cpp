@@ -103,7 +103,8 @@ TEST_CASE("the attack angle follows the bat's arc: early contact climbs, late co
   CHECK(std::sin(attack_angle_at(on_time, tilt, deg_to_rad(-15.0))) ==
         Approx(std::sin(tilt) * std::sin(beta0 + deg_to_rad(15.0))));
   // No path climbs more steeply than its plane, however early.
-  for (double turned = -1.5; turned <= 1.5; turned += 0.1) CHECK(std::abs(attack_angle_at(on_time, tilt, turned)) <= tilt + 1e-12);
+  for (double turned = -1.5; turned <= 1.5; turned += 0.1)
+    CHECK(std::abs(attack_angle_at(on_time, tilt, turned)) <= tilt + 1e-12);
   CHECK(attack_angle_at(on_time, tilt, -(kPi / 2.0 - beta0)) == Approx(tilt));
   // A level plane keeps a level path, whatever the timing.
   CHECK(attack_angle_at(0.0, 0.0, 0.7) == 0.0);

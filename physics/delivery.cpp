@@ -135,6 +135,7 @@ void validate_bat_swing(const BatSwing& w, const BatSpec& bat, const BallSpec& b
   check_range("swing.speed", w.bat_speed, BatSwing::kBatSpeed, "m/s");
   check_range("swing.attack_angle", w.attack_angle, BatSwing::kAttackAngle, "rad");
   check_range("swing.direction", w.direction, BatSwing::kDirection, "rad");
+  check_range("swing.vertical_bat_angle", w.vertical_bat_angle, BatSwing::kVerticalBatAngle, "rad");
   check_range("swing.impact_from_tip", w.impact_from_tip, BatSwing::kImpactFromTip, "m");
   check_range("swing.undercut", w.undercut, BatSwing::kUndercut, "m");
   // The bat narrows both: the contact must be on the barrel beyond the hands, and the
@@ -258,10 +259,12 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   // Swing frame: the bat axis (knob -> tip) points toward +z (first-base side, the batter
   // stands on the third-base side as a right-hander), the sweet spot moves along d (tilted
   // up by the attack angle), and the whole swing is turned by `direction` about vertical.
+  // The axis then turns about d, head down by the vertical bat angle: it stays across d.
   const Quat turn = axis_angle(-swing.direction, Vec3::UnitY());
   const double ca = std::cos(swing.attack_angle), sa = std::sin(swing.attack_angle);
-  const Vec3 axis = turn * Vec3::UnitZ();
   const Vec3 d = turn * Vec3(ca, sa, 0.0);
+  const Vec3 level = turn * Vec3::UnitZ();
+  const Vec3 axis = std::cos(swing.vertical_bat_angle) * level - std::sin(swing.vertical_bat_angle) * d.cross(level);
   const Vec3 up = axis.cross(d);  // ⊥ axis and d, upward for a level swing
   const double sin_b = swing.undercut / reach_r;
   const Vec3 n = (std::sqrt(1.0 - sin_b * sin_b) * d + sin_b * up).normalized();

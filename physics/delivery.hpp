@@ -51,6 +51,13 @@ struct BatSwing {
   static constexpr Range kAttackAngle{deg_to_rad(-45.0), deg_to_rad(60.0)};
   double direction = 0;        ///< rad, + toward right field: horizontal direction of the swing
   static constexpr Range kDirection{deg_to_rad(-90.0), deg_to_rad(90.0)};
+  /// rad, the bat's axis from the hands to the head against level at contact, − head below
+  /// the hands (Blast Motion's "vertical bat angle"). A swing in a tilted plane meets the ball
+  /// with the head below the hands (~30° down in the league's 32° plane); the ball then leaves
+  /// along a normal tilted toward the opposite field when the bat is under its centre and
+  /// toward the pull side when over it. 0 = a level bat.
+  double vertical_bat_angle = 0.0;
+  static constexpr Range kVerticalBatAngle{deg_to_rad(-80.0), deg_to_rad(30.0)};
   double impact_from_tip = 0.1524;  ///< m along the barrel from the tip (6 in = sweet spot)
   /// Outer bound (the longest bats, 42 in); the bat limits it to the barrel beyond 5 cm past the pivot.
   static constexpr Range kImpactFromTip{0.0, 1.0668};

@@ -27,7 +27,7 @@ xdotool key space; sleep 3.02; xdotool key space; sleep 0.1; xdotool key F12; sl
 # count and the plate appearance in the HUD.
 xdotool key a; sleep 0.3
 for i in 1 2 3 4 5; do
-  xdotool key space; sleep 2.64; xdotool key space; sleep 0.3; xdotool key F12; sleep 2.5
+  xdotool key space; sleep 2.59; xdotool key space; sleep 0.3; xdotool key F12; sleep 2.5
 done
 xdotool key F12
 xdotool key Escape; sleep 0.3; xdotool key q

@@ -235,8 +235,10 @@ class CageView final : public ModeView {
     draw_stats(c, w, h);
     if (!c.call_text().empty()) {
       ImDrawList* dl = ImGui::GetForegroundDrawList();
-      const ImVec2 pos(0.5f * static_cast<float>(w) - 160.0f, 60.0f);
-      dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + 330, pos.y + 24), IM_COL32(0, 0, 0, 170), 4.0f);
+      // The box fits the call, centred (a miss explains itself at some length).
+      const float text_w = ImGui::CalcTextSize(c.call_text().c_str()).x;
+      const ImVec2 pos(0.5f * (static_cast<float>(w) - text_w), 60.0f);
+      dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + text_w + 10, pos.y + 24), IM_COL32(0, 0, 0, 170), 4.0f);
       dl->AddText(pos, IM_COL32(255, 230, 120, 255), c.call_text().c_str());
     }
     if (options_.pitches > 0 && static_cast<int>(c.swings().size()) >= options_.pitches && c.stage() == Stage::Called)

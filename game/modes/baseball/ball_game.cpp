@@ -37,9 +37,10 @@ double run_time(double speed, double distance) { return distance / std::max(spee
 
 bool bats_left(int order) { return order == 1 || order == 3 || order == 5 || order == 8; }
 
-bool Team::to_the_bullpen(std::uint64_t seed) {
+bool Team::to_the_bullpen(int inning, std::uint64_t seed) {
   const int thrown = pitcher.pitches_thrown();
-  if (pitchers_used == 1 ? thrown < kStarterPitches : thrown == 0) return false;
+  const bool starter_done = thrown >= kStarterPitches || inning > kStarterInnings;
+  if (pitchers_used == 1 ? !starter_done : thrown == 0) return false;
   pitcher = Pitcher(pitcher.profile(), seed);
   ++pitchers_used;
   return true;
@@ -284,7 +285,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
       Team& field = teams[1 - half];
       HalfInning h{assets, env, {-1, -1, -1}, 0};
       // The fielding team's bullpen: a fresh pitcher for the inning when his turn has come.
-      if (field.to_the_bullpen(o.seed * 1000003ULL + static_cast<std::uint64_t>(2 * s.inning + half)))
+      if (field.to_the_bullpen(s.inning, o.seed * 1000003ULL + static_cast<std::uint64_t>(2 * s.inning + half)))
         box[1 - half].pitchers.emplace_back();
       // Extra innings start with a runner on second: the batter before this half's leadoff
       // man (MLB Rule 7.01(b), since 2023).

@@ -57,11 +57,13 @@ class Team {
   Pitcher pitcher;         ///< the one on the mound
   ScoutingReport report;   ///< of this team's pitchers, as the other team knows them
   int pitchers_used = 1;
-  /// Between half-innings: the starter gives way to the bullpen once he has thrown
-  /// kStarterPitches, each reliever after an inning of work (ESTIMATE of today's usage: MLB
-  /// starters averaged ~88 pitches in 2023, relievers about an inning). Returns whether he did.
-  bool to_the_bullpen(std::uint64_t seed);
+  /// Before half-inning `inning`: the starter gives way to the bullpen once he has thrown
+  /// kStarterPitches or worked kStarterInnings, each reliever after an inning of work
+  /// (ESTIMATE of today's usage: MLB starters averaged ~88 pitches and ~5⅓ innings in 2023-24,
+  /// relievers about an inning; complete games are under 1 % of starts). Returns whether he did.
+  bool to_the_bullpen(int inning, std::uint64_t seed);
   static constexpr int kStarterPitches = 95;
+  static constexpr int kStarterInnings = 6;
   Defense defense;
   Rng fielding_rng;
 };

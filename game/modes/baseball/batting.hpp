@@ -23,7 +23,7 @@ struct BatterSkill {
   double bat_speed = 32.0;    ///< m/s at the sweet spot, power swing
   double timing_sd_ms = 10.0; ///< spread of the swing's timing error, ms
   double height_sd = 0.010;   ///< m, spread of where the bat meets the ball vertically
-  double eye_sd = 0.05;       ///< m, how far off the batter reads the pitch's location (takes)
+  double eye_sd = 0.05;       ///< m, how far off his eye puts the pitch's location: he takes or swings, and aims, by it
   /// Live pitching (hitter.hpp): how often he reads a pitch's type before he must commit,
   /// and the spread of his read of the time to contact and of the height where it arrives.
   double recognition = 0.5;
@@ -34,17 +34,16 @@ struct BatterSkill {
   double discipline = 0.07;
   double attack_angle = 0.175;   ///< rad, his swing's usual attack angle (met on time)
   double swing_tilt = kLeagueSwingTilt;  ///< rad, the plane his bat's head turns in, from level
-  double sweep = 3.2;            ///< rad the bat turns from his launch position to contact
+  double sweep = 2.65;           ///< rad the bat turns from his launch position to contact
   double sprint_speed = 8.23;    ///< m/s, his top running speed (27 ft/s: Statcast's league average)
 };
 /// pro: the league's average hitter: 71.5 mph (Statcast's 2024 average bat speed), an attack
-/// angle of 12.5° when met on time in the league's 32° plane, which his timing spread turns
-/// into Statcast's league ~10° on the balls he puts in play (measured: 10.6° ± 7.2° over 40
-/// seeded games), a 7.3 ft swing (Statcast 2024 average swing length:
-/// 3.2 rad of the maple bat's 0.69 m beyond the pivot), 27 ft/s; batting-practice timing 5 ms
-/// (17° of spray at 3.4°/ms) and height 4 mm (ESTIMATES: a pro squares a batting-practice ball
-/// up). amateur: a high-school hitter, 60 mph, 10 ms, 9 mm, 6° on time (ESTIMATES). Their reads of live
-/// pitching: hitter.hpp.
+/// angle of 10° when met on time in the league's 32° plane (Statcast's league ~10°; FanGraphs'
+/// hard-hit middle fastballs ~8°), a 7.3 ft swing (Statcast 2024 average swing length: 2.65 rad
+/// of the maple bat's 0.84 m from the knob, where it turns), 27 ft/s; batting-practice timing
+/// 5 ms (13° of bat at 2.7°/ms) and height 4 mm (ESTIMATES: a pro squares a batting-practice
+/// ball up). amateur: a high-school hitter, 60 mph, 10 ms, 9 mm, 6° on time (ESTIMATES). Their
+/// reads of live pitching: hitter.hpp.
 const std::vector<BatterSkill>& batter_skills();
 const BatterSkill& batter_skill(std::string_view name);
 
@@ -69,19 +68,38 @@ struct SwingInput {
   /// cannot climb more steeply than its plane).
   double swing_tilt = kLeagueSwingTilt;
   static constexpr Range kSwingTilt{0.0, 1.2};
-  double sweep = 3.2;           ///< rad, the bat's turn from the launch position to contact
+  double sweep = 2.65;          ///< rad, the bat's turn from the launch position to contact
   double effort = 1.0;          ///< share of his bat speed he swings with (a two-strike swing is shorter)
   static constexpr Range kEffort{0.5, 1.0};
 };
 
 /// Timing turns the bat's direction at contact by its angular speed: the sweet spot's speed
-/// over its distance from the pivot (~3.4°/ms for 71.5 mph on the maple bat), so ~13 ms early
-/// or late reaches a foul line (R. K. Adair, The Physics of Baseball: "1/100 s early, the ball
-/// goes foul down the left-field line"). Timing also moves the contact 3 mm along the barrel
-/// per ms (early toward the tip, late toward the hands); a bat turned 90° from square lies
-/// along the ball's path and cannot meet it.
-inline constexpr double kBarrelPerMs = 0.003;  // m
-inline constexpr double kMissAngle = 1.5708;   // rad (90°)
+/// over its distance from the pivot. The bat turns about a point very close to its knob (A. M.
+/// Nathan, J. J. Crisco, R. M. Greenwald, D. A. Russell & L. V. Smith, "A comparative study of
+/// baseball bat performance", Sports Eng. 13 (2011) 153; bats.toml), ~2.7°/ms for 71.5 mph on
+/// the maple bat, so ~10 ms early or late sends the ball down a foul line (R. K. Adair, The
+/// Physics of Baseball: "1/100 s early, the ball goes foul down the left-field line"). Where
+/// the turned bat meets the ball: meet_ball.
+
+/// Where the bat's axis crosses the ball's path. The bat turns about its pivot in the plane
+/// of its path (spanned by the on-time path, climbing at `attack`, and the level bat axis,
+/// +z toward the tip); met `early` rad past square (− late), the axis is turned that much
+/// toward the pitcher, and the ball is met where its line crosses it: off time farther out
+/// along the bat (reach/cos φ from the pivot for a ball flying square to the bat), out front
+/// when early and deep when late, and there higher or lower against the bat by how the ball's
+/// line leaves the plane (a pitch descending as steeply as the bat climbs stays in it).
+struct BallCrossing {
+  bool crosses = false;    ///< false: the ball's line runs along the turned bat (no crossing)
+  double from_pivot = 0.0; ///< m along the bat's axis from the pivot toward the tip
+  double undercut = 0.0;   ///< m, the ball's centre above the bat's axis there (+ under the ball)
+  double ahead = 0.0;      ///< m the ball is met ahead of the on-time point (+ toward the pitcher)
+};
+/// `ball_dir`: the ball's direction of flight near the plate in the batter's frame (x toward
+/// the pitcher, y up, z away from a right-handed batter); `vertical_bat_angle`: the bat's on
+/// time (− head down); `reach`: m from the pivot to the ball's line on time along the bat;
+/// `undercut`: the ball's centre above the axis on time.
+BallCrossing meet_ball(const Vec3& ball_dir, double attack, double vertical_bat_angle, double reach, double undercut,
+                       double early);
 
 /// The attack angle where the bat meets the ball, `turned` rad round its arc from where it
 /// would on time (+ late). The sweet spot runs on a circle in a plane tilted `tilt` from
@@ -90,6 +108,10 @@ inline constexpr double kMissAngle = 1.5708;   // rad (90°)
 /// and late contact less: the pulled fly ball and the late grounder the other way. A level
 /// plane keeps a level path.
 double attack_angle_at(double attack, double tilt, double turned);
+/// The bat's vertical angle at the same point of the arc (− head below the hands): the axis
+/// runs from the circle's centre to the sweet spot, down the plane's slope by sin(tilt)·cos β;
+/// ~−30° on time for a 10° path in the league's 32° plane. A level plane keeps a level bat.
+double vertical_bat_angle_at(double attack, double tilt, double turned);
 
 struct SwingResult {
   bool contact = false;
@@ -103,6 +125,11 @@ struct SwingResult {
   /// a foul tip). ESTIMATE of the cone a catcher's mitt covers.
   bool foul_tip = false;
   BatTracking tracking;       ///< Statcast's bat tracking for the swing (misses too)
+  /// Where the bat's axis crossed the ball's line (meet_ball): the ball's centre above it (m,
+  /// + the bat passed under the ball), and whether that was past the end of the bat (or behind
+  /// the knob): why a swing missed.
+  double crossing_undercut = 0.0;
+  bool past_end = false;
 };
 
 /// The foul-tip cone around the pitch's line (see SwingResult::foul_tip).

@@ -104,11 +104,16 @@ void BattingCage::swing(const SwingInput& s, double t) {
     batted_at_ = t;
     stage_ = Stage::Batted;
   } else {
-    // Why the bat missed: above or below the ball, or through the zone early or late.
+    // Why the bat missed: early or late, the ball past the end of the bat; or above or below
+    // it where they crossed (off time the crossing moves: early over the ball, late under it).
     constexpr double kReach = 0.066;  // m, the bat's and the ball's radii together (95 %)
-    if (std::abs(offset_) > kReach)
-      std::snprintf(text, sizeof text, "Swinging strike: %s the ball by %.0f cm", offset_ > 0.0 ? "under" : "over",
-                    100.0 * (std::abs(offset_) - kReach));
+    const double under = last_.result.crossing_undercut;
+    if (last_.result.past_end)
+      std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat", s.timing_ms >= 0 ? "late" : "early",
+                    std::abs(s.timing_ms));
+    else if (std::abs(under) > kReach)
+      std::snprintf(text, sizeof text, "Swinging strike: %s the ball by %.0f cm", under > 0.0 ? "under" : "over",
+                    100.0 * (std::abs(under) - kReach));
     else
       std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms", s.timing_ms >= 0 ? "late" : "early", std::abs(s.timing_ms));
     stage_ = Stage::Called;
@@ -159,14 +164,12 @@ void BattingCage::apply(const Intent& in) {
         s.undercut = std::clamp(pitch_.plate.y() - bat_height_, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
         s.power = power_;
         s.left_handed = lefty_;
-        offset_ = pitch_.plate.y() - bat_height_;
         swing(s, t);
       }
       break;
     case IntentKind::BotSwings:
       if (stage_ == Stage::Pitching && pitch_clock(t) >= 0.0) {
         const SwingInput s = bot_.plan(pitch_, true, lefty_);
-        offset_ = s.undercut;
         swing(s, t);
       }
       break;

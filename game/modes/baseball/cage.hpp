@@ -72,7 +72,6 @@ class BattingCage {
   PitchFlight pitch_;
   double released_at_ = 0.0, batted_at_ = 0.0, swung_at_ = -1e9;
   double bat_height_ = 0.76;
-  double offset_ = 0.0;  ///< m the ball's centre passed above the bat's axis on the last swing
   bool power_ = true, lefty_ = false;
   SwingRecord last_;
   std::vector<SwingRecord> swings_;

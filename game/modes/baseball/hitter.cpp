@@ -6,10 +6,10 @@
 namespace sweetspot {
 namespace {
 
-// His aim: the ball's centre 4 mm above the bat's axis, a line drive (launch ~20° on time at
-// his 12.5° attack against the league's fastball; with his misreads the balls he puts in play
-// average ~15°, Statcast's league ~12°).
-constexpr double kAimUndercut = 0.004;  // m
+// His aim: the ball's centre 12 mm above the bat's axis, a line drive (launch ~25° on time at
+// his 10° attack against the league's fastball; with his misreads, and early contact rolling
+// over, the balls he puts in play average ~10°, Statcast's league ~12°).
+constexpr double kAimUndercut = 0.012;  // m
 // With two strikes he protects the plate: he offers at what he sees within this of the zone
 // (ESTIMATE).
 constexpr double kProtect = 0.05;  // m
@@ -19,13 +19,12 @@ constexpr double kProtect = 0.05;  // m
 const ScoutingReport::Type& ScoutingReport::of(const std::string& type) const {
   for (const Type& t : types)
     if (t.type == type) return t;
-  return typical;
+  return fastball;
 }
 
 ScoutingReport scout(const Assets& assets, const PitcherProfile& pitcher) {
   ScoutingReport r;
-  r.typical.type = "typical";
-  double total = 0.0;
+  double fastest = -1.0;
   for (const PitchType& t : pitcher.arsenal) {
     PitchCall c;
     c.type = t;
@@ -33,15 +32,10 @@ ScoutingReport scout(const Assets& assets, const PitcherProfile& pitcher) {
     c.target_height = 0.5 * (StrikeZone::kLow + StrikeZone::kHigh);
     const PitchFlight f = throw_pitch(assets, c);
     r.types.push_back({t.type, f.flight_time, f.flight_break_vertical, f.flight_break_horizontal});
-    r.typical.flight_time += t.usage * f.flight_time;
-    r.typical.vertical_break += t.usage * f.flight_break_vertical;
-    r.typical.horizontal_break += t.usage * f.flight_break_horizontal;
-    total += t.usage;
-  }
-  if (total > 0.0) {
-    r.typical.flight_time /= total;
-    r.typical.vertical_break /= total;
-    r.typical.horizontal_break /= total;
+    if (t.speed > fastest) {
+      fastest = t.speed;
+      r.fastball = r.types.back();
+    }
   }
   return r;
 }
@@ -58,8 +52,8 @@ PitchRead Hitter::read(const PitchFlight& pitch, const std::string& type, const 
   PitchRead r;
   const double spread = c.strikes == 2 ? kTwoStrikeSpread : 1.0;
   r.recognized = rng_.uniform() < skill_.recognition;
-  // He expects the type he recognises, or the pitcher's typical pitch.
-  const ScoutingReport::Type& expect = r.recognized ? report.of(type) : report.typical;
+  // He expects the type he recognises, or the fastball he sits on.
+  const ScoutingReport::Type& expect = r.recognized ? report.of(type) : report.fastball;
   // The break after the commit point: a constant push over the flight moves the ball by its
   // whole break × (t/T)² in the last t of it; he expects his type's, it does its own.
   const double T = pitch.flight_time;
@@ -67,13 +61,14 @@ PitchRead Hitter::read(const PitchFlight& pitch, const std::string& type, const 
   const double dy = (pitch.flight_break_vertical - expect.vertical_break) * unseen;
   const double dz = (pitch.flight_break_horizontal - expect.horizontal_break) * unseen;
   const double away = left_ ? -1.0 : 1.0;  // + z is away from a right-handed batter
-  r.height_error = dy + rng_.normal(spread * skill_.read_height_sd);
-  r.away_error = away * dz + rng_.normal(spread * skill_.read_reach_sd);
+  // Where his eye puts the ball is where he swings: a pitch he chased because he saw it over
+  // the plate is one his bat is aimed away from.
+  const double eye_y = rng_.normal(skill_.eye_sd), eye_z = rng_.normal(skill_.eye_sd);
+  r.height_error = dy + rng_.normal(spread * skill_.read_height_sd) + eye_y;
+  r.away_error = away * dz + rng_.normal(spread * skill_.read_reach_sd) + away * eye_z;
   // A slower pitch than he expects arrives late by the share of its flight he did not see.
   r.timing_error_ms = -1000.0 * (T - expect.flight_time) * std::min(kCommitTime, T) / T + rng_.normal(spread * skill_.read_timing_sd_ms);
   r.seen = pitch.plate - Vec3(0.0, r.height_error, away * r.away_error);
-  r.seen.y() += rng_.normal(skill_.eye_sd);
-  r.seen.z() += rng_.normal(skill_.eye_sd);
   return r;
 }
 

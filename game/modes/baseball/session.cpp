@@ -33,6 +33,7 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
   s.left_handed = left_handed;
   s.attack_angle = skill_.attack_angle;
   s.swing_tilt = skill_.swing_tilt;
+  s.sweep = skill_.sweep;
   double timing = 0.0;
   if (derby) {
     // Where to meet the ball to clear the fence by the most: how early (pulling toward the

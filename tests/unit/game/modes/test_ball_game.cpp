@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 
 #include "game/modes/baseball/ball_game.hpp"
 #include "game/report/box_score.hpp"
@@ -129,10 +131,10 @@ TEST_CASE("over 60+ innings the league's hitter strikes out, walks and hits ball
   CHECK(pro.hbp_rate <= 0.02);
   CHECK(pro.babip >= 0.267);
   CHECK(pro.babip <= 0.327);
-  // Per pitch: whiffs per swing and fouls per pitch near Statcast's league (25 %, 17 %), and
-  // the league's swing rate (~47 %).
-  CHECK(pro.whiff_per_swing >= 0.15);
-  CHECK(pro.whiff_per_swing <= 0.35);
+  // Per pitch: whiffs per swing near Statcast's league (~25 %), fouls at least near its ~17.5 %
+  // of pitches (the band of the known miss below), and the league's swing rate (~47 %).
+  CHECK(pro.whiff_per_swing >= 0.20);
+  CHECK(pro.whiff_per_swing <= 0.32);
   CHECK(pro.foul_per_pitch >= 0.12);
   CHECK(pro.swing_rate >= 0.40);
   CHECK(pro.swing_rate <= 0.55);
@@ -183,14 +185,65 @@ TEST_CASE("batted backspin by launch angle follows Statcast's average (Nathan's 
   }
 }
 
-// KNOWN MISS (issue 40): fouls. Statcast's league fouls ~17.5 % of pitches; ours ~25 %. A swing
-// 10-25 ms early or late still meets the ball (the bat turns up to 90° before it cannot), and
-// sends it foul, where a real one that far off mostly misses: whiffs per swing sit at ~16 %
-// against the league's ~25 %. The swing's geometry off time is what needs building. When it
-// passes, drop the tag.
+namespace {
+// Whiffs per swing by pitch type over the league hitter's games.
+std::map<std::string, double> whiffs_by_type() {
+  std::map<std::string, std::pair<int, int>> by_type;  // swings, whiffs
+  for (const PlateAppearance& pa : pro_games())
+    for (const PitchRecord& p : pa.pitches) {
+      if (!p.swung) continue;
+      auto& t = by_type[p.planned.call.type.type];
+      ++t.first;
+      t.second += p.result.contact ? 0 : 1;
+    }
+  std::map<std::string, double> rate;
+  for (const auto& [type, t] : by_type) {
+    REQUIRE(t.first >= 200);
+    rate[type] = static_cast<double>(t.second) / t.first;
+  }
+  return rate;
+}
+// FanGraphs' "Know Your Averages 2024" (Statcast): whiffs per swing (swinging strikes / swings).
+const std::map<std::string, double> kStatcastWhiffs{{"four-seam", 0.209}, {"sinker", 0.131}, {"cutter", 0.214},
+                                                    {"slider", 0.315},    {"curveball", 0.288}, {"changeup", 0.262}};
+}  // namespace
+
+// Whiffs come from the bat's path missing the ball's, and a hitter sits on the fastball: the
+// pitch that beats him unread is the slower one he is early on and over. Band: each type within
+// 10 points of Statcast's; the four-seamer below every breaking and off-speed type.
+TEST_CASE("over 60+ innings whiffs per swing by pitch type follow Statcast's", "[baseball][game][reference][statistics]") {
+  const std::map<std::string, double> rate = whiffs_by_type();
+  for (const char* type : {"four-seam", "cutter", "slider", "curveball", "changeup"}) {
+    INFO(type << ": " << rate.at(type) << " of swings; Statcast " << kStatcastWhiffs.at(type));
+    CHECK(rate.at(type) == Approx(kStatcastWhiffs.at(type)).margin(0.10));
+  }
+  for (const char* soft : {"slider", "curveball", "changeup"}) {
+    INFO("four-seam " << rate.at("four-seam") << " against " << soft << " " << rate.at(soft));
+    CHECK(rate.at("four-seam") < rate.at(soft));
+  }
+}
+
+// KNOWN MISS (issue 40): the sinker. Statcast's 13 % of swings; ours ~23 %, as often as the
+// four-seamer. Read as the four-seamer he sits on, it sinks and runs past where he swings; a
+// real sinker more often meets the bat's top half and goes into the ground. When it passes,
+// drop the tag.
+TEST_CASE("over 60+ innings the sinker is whiffed as seldom as Statcast's", "[baseball][game][reference][statistics][!shouldfail]") {
+  const std::map<std::string, double> rate = whiffs_by_type();
+  INFO("sinker " << rate.at("sinker") << " of swings; Statcast " << kStatcastWhiffs.at("sinker"));
+  CHECK(rate.at("sinker") == Approx(kStatcastWhiffs.at("sinker")).margin(0.10));
+  CHECK(rate.at("sinker") < rate.at("four-seam"));
+}
+
+// KNOWN MISS (issue 40): fouls. Statcast's league fouls ~17.5 % of pitches (18 % in 2023: P.
+// Berryman, "A Spotlight on Foul Balls", from Statcast; 16 % in 1998); ours ~13 %, with whiffs
+// at the league's ~25-27 % of swings. The bat meets the ball where its turned axis crosses the
+// ball's line (meet_ball), so a swing more than ~12 ms off time misses past the end of the bat,
+// and a ball glanced off its top or bottom goes foul; the contact that real hitters foul off
+// beyond that (off the bat's end cap, jammed on the hands, fought off with two strikes) is not
+// yet modelled. When it passes, drop the tag.
 TEST_CASE("over 60+ innings fouls per pitch sit near Statcast's league", "[baseball][game][reference][statistics][!shouldfail]") {
   const BattingRates& pro = pro_rates();
   INFO(rates_text(pro, "pro"));
-  CHECK(pro.foul_per_pitch <= 0.22);
-  CHECK(pro.whiff_per_swing >= 0.20);
+  CHECK(pro.foul_per_pitch >= 0.15);
+  CHECK(pro.foul_per_pitch <= 0.21);
 }

@@ -100,31 +100,60 @@ TEST_CASE("Statcast's barrel, hard-hit and sweet-spot classes", "[baseball]") {
   CHECK_FALSE(is_barrel(116.0, 51.0));
 }
 
-TEST_CASE("timing sends the ball: early pulls, late goes the other way; a late miss is a strike", "[baseball][swing]") {
+// The closed form of meet_ball for a ball flying in the vertical plane square to the bat
+// (descending at θ, the bat's path climbing at α on time), turned φ: the bat's axis crosses
+// its line reach/cos φ from the pivot, reach·tan φ·cos θ/cos(α−θ) ahead of the on-time point,
+// where the ball sits reach·tan φ·tan(α−θ) lower against the bat's axis.
+TEST_CASE("the turned bat meets the ball farther out along it, and out front lower against it", "[baseball][swing]") {
+  const double reach = 0.54, u0 = 0.01;
+  for (const double alpha : {0.0, deg_to_rad(12.5)}) {
+    for (const double theta : {0.0, deg_to_rad(5.0), deg_to_rad(12.5)}) {
+      const Vec3 dir(-std::cos(theta), -std::sin(theta), 0.0);
+      for (const double phi : {deg_to_rad(-30.0), 0.0, deg_to_rad(20.0), deg_to_rad(38.0)}) {
+        const BallCrossing c = meet_ball(dir, alpha, 0.0, reach, u0, phi);
+        INFO("alpha " << rad_to_deg(alpha) << " theta " << rad_to_deg(theta) << " phi " << rad_to_deg(phi));
+        REQUIRE(c.crosses);
+        CHECK(c.from_pivot == Approx(reach / std::cos(phi)).margin(1e-12));
+        CHECK(c.ahead == Approx(reach * std::tan(phi) * std::cos(theta) / std::cos(alpha - theta)).margin(1e-12));
+        CHECK(c.undercut == Approx(u0 - reach * std::tan(phi) * std::tan(alpha - theta)).margin(1e-12));
+      }
+    }
+  }
+  // A bat turned square to the ball's line has nothing to cross.
+  CHECK_FALSE(meet_ball(Vec3(0.0, 0.0, -1.0), 0.0, 0.0, reach, u0, 0.0).crosses);
+}
+
+TEST_CASE("timing sends the ball: early pulls, late goes the other way; far off time the bat misses", "[baseball][swing]") {
   const PitchFlight p = pitch("four-seam");
   SwingInput s;
   s.undercut = 0.010;
-  s.timing_ms = -15.0;
+  s.timing_ms = -8.0;
   const SwingResult early = swing_at(test::assets(), p, s, mph_to_mps(71.5));
-  s.timing_ms = 15.0;
+  s.timing_ms = 8.0;
   const SwingResult late = swing_at(test::assets(), p, s, mph_to_mps(71.5));
   REQUIRE(early.contact);
   REQUIRE(late.contact);
   CHECK(early.shot.launch.horizontal_angle < -deg_to_rad(10.0));  // pulled to left field (right-handed batter)
   CHECK(late.shot.launch.horizontal_angle > deg_to_rad(10.0));
-  // Out front the bat is farther round its arc and climbing: the same undercut launches higher
-  // (attack_angle_at); late, its path is flatter. The tracking reports the swing's plane.
+  // Out front the bat is farther round its arc and climbing (attack_angle_at); late its path is
+  // flatter. Its plane climbs more steeply than the fastball descends, so out front the ball
+  // sits lower against the bat (rolled over) and deep it sits higher (under it): the same aim
+  // launches the late ball higher. The tracking reports the swing's plane.
   CHECK(early.tracking.attack_angle_deg > rad_to_deg(s.attack_angle) + 10.0);
   CHECK(late.tracking.attack_angle_deg < rad_to_deg(s.attack_angle) - 10.0);
-  CHECK(early.shot.launch.vertical_angle > late.shot.launch.vertical_angle + deg_to_rad(15.0));
+  CHECK(late.shot.launch.vertical_angle > early.shot.launch.vertical_angle + deg_to_rad(15.0));
   CHECK(early.tracking.swing_path_tilt_deg == Approx(32.0).margin(0.01));
   s.left_handed = true;
-  s.timing_ms = -15.0;
+  s.timing_ms = -8.0;
   CHECK(swing_at(test::assets(), p, s, mph_to_mps(71.5)).shot.launch.horizontal_angle > deg_to_rad(10.0));
-  s.timing_ms = 60.0;
-  const SwingResult miss = swing_at(test::assets(), p, s, mph_to_mps(71.5));
-  CHECK_FALSE(miss.contact);
-  CHECK(miss.outcome == BattedOutcome::Strike);
+  // 15 ms off the bat has turned ~50° from square: its axis crosses the ball's line past the
+  // end of the bat, either way.
+  for (const double t : {-15.0, 15.0}) {
+    s.timing_ms = t;
+    const SwingResult miss = swing_at(test::assets(), p, s, mph_to_mps(71.5));
+    CHECK_FALSE(miss.contact);
+    CHECK(miss.outcome == BattedOutcome::Strike);
+  }
 }
 
 TEST_CASE("derby swings: home runs cross the fence in flight, fouls land outside the lines, same seed same swings",

@@ -108,6 +108,16 @@ TEST_CASE("the attack angle follows the bat's arc: early contact climbs, late co
   CHECK(attack_angle_at(on_time, tilt, -(kPi / 2.0 - beta0)) == Approx(tilt));
   // A level plane keeps a level path, whatever the timing.
   CHECK(attack_angle_at(0.0, 0.0, 0.7) == 0.0);
+  // The bat's axis at the same point runs down the plane's slope by sin τ · cos β: ~30° head
+  // down for a 10° path in the 32° plane; the path and the axis stay square to each other
+  // (sin²α + sin²(bat angle) = sin²τ), and a level plane keeps a level bat.
+  const double ten = deg_to_rad(10.0);
+  CHECK(rad_to_deg(vertical_bat_angle_at(ten, tilt, 0.0)) == Approx(-30.0).margin(0.5));
+  for (double turned = -0.6; turned <= 0.6; turned += 0.2) {
+    const double a = attack_angle_at(ten, tilt, turned), v = vertical_bat_angle_at(ten, tilt, turned);
+    CHECK(std::sin(a) * std::sin(a) + std::sin(v) * std::sin(v) == Approx(std::sin(tilt) * std::sin(tilt)));
+  }
+  CHECK(vertical_bat_angle_at(0.0, 0.0, 0.7) == 0.0);
   // Near the on-time point a ms of timing moves the path by sin τ · cos β per radian of turn.
   const double per_rad = (attack_angle_at(on_time, tilt, -1e-4) - attack_angle_at(on_time, tilt, 1e-4)) / 2e-4;
   CHECK(per_rad == Approx(std::sin(tilt) * std::cos(beta0) / std::cos(on_time)).epsilon(1e-6));

@@ -44,7 +44,9 @@ TEST_CASE("compliant model: above mu_grip the launch stops changing, below it it
     REQUIRE(g > 0.0);
     const LaunchMetrics stuck = launch_at(s.resolved, ImpactMaterial::kMu.max);
     const LaunchMetrics above = launch_at(s.resolved, std::min(g + 0.01, ImpactMaterial::kMu.max));
-    const LaunchMetrics below = launch_at(s.resolved, std::max(g - 0.05, 0.0));
+    // Half the threshold: just under it the contact's micro-slip moves the spin by about the
+    // tolerance itself (~0.5 rad/s on the line drive), so the probe goes well below.
+    const LaunchMetrics below = launch_at(s.resolved, 0.5 * g);
     CHECK(std::fabs(above.spin.total - stuck.spin.total) <= tol.spin + tol.spin_fraction * stuck.spin.total);
     CHECK(std::fabs(above.ball_speed - stuck.ball_speed) <= tol.ball_speed);
     const bool below_differs = std::fabs(below.spin.total - stuck.spin.total) > tol.spin + tol.spin_fraction * stuck.spin.total ||

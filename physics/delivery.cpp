@@ -131,6 +131,16 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   check_range("swing.closure_rate", w.closure_rate, GolfSwing::kClosureRate, "rad/s");
 }
 
+namespace {
+// From the bat's axis to the ball's centre at contact: the barrel's radius and the ball's;
+// past the tip, the ball's edge on the end cap's rim, tilted off the axis by the overhang.
+double radial_reach(const BatSpec& bat, const BallSpec& ball, double from_tip) {
+  if (from_tip >= 0.0) return bat.radius_at(bat.length - from_tip) + ball.radius;
+  const double over = std::min(-from_tip, ball.radius);
+  return bat.radius_at(bat.length) + std::sqrt(ball.radius * ball.radius - over * over);
+}
+}  // namespace
+
 void validate_bat_swing(const BatSwing& w, const BatSpec& bat, const BallSpec& ball) {
   check_range("swing.speed", w.bat_speed, BatSwing::kBatSpeed, "m/s");
   check_range("swing.attack_angle", w.attack_angle, BatSwing::kAttackAngle, "rad");
@@ -138,12 +148,12 @@ void validate_bat_swing(const BatSwing& w, const BatSpec& bat, const BallSpec& b
   check_range("swing.vertical_bat_angle", w.vertical_bat_angle, BatSwing::kVerticalBatAngle, "rad");
   check_range("swing.impact_from_tip", w.impact_from_tip, BatSwing::kImpactFromTip, "m");
   check_range("swing.undercut", w.undercut, BatSwing::kUndercut, "m");
-  // The bat narrows both: the contact must be on the barrel beyond the hands, and the
-  // ball centre within reach of the bat's surface there.
+  // The bat narrows both: the contact must be on the barrel beyond the hands (or the ball's
+  // edge on the end cap's rim), and the ball centre within reach of the bat's surface there.
   const double reach = bat.length - bat.pivot_from_knob - 0.05;
-  check_range("swing.impact_from_tip (bat '" + bat.name + "': the barrel beyond 5 cm past the pivot)",
-              w.impact_from_tip, Range{0.0, reach}, "m");
-  const double reach_r = bat.radius_at(bat.length - w.impact_from_tip) + ball.radius;
+  check_range("swing.impact_from_tip (bat '" + bat.name + "': the barrel beyond 5 cm past the pivot, or 95 % of the ball's radius past the tip)",
+              w.impact_from_tip, Range{-0.95 * ball.radius, reach}, "m");
+  const double reach_r = radial_reach(bat, ball, w.impact_from_tip);
   check_range("swing.undercut (95 % of bat + ball radius at this contact)", w.undercut,
               Range{-0.95 * reach_r, 0.95 * reach_r, true, true}, "m");
 }
@@ -252,9 +262,9 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
     throw InputError("pitch: velocity and spin must be finite numbers");
   check_range("pitch speed", pitch_velocity.norm(), Pitch::kSpeed, "m/s");
   check_range("pitch spin", pitch_spin.norm(), Pitch::kSpin, "rad/s");
-  const double from_knob = bat.length - swing.impact_from_tip;
-  const double r_bat = bat.radius_at(from_knob);
-  const double reach_r = r_bat + ball.radius;
+  const double past_tip = std::max(-swing.impact_from_tip, 0.0);  // the ball's centre past the end
+  const double from_knob = bat.length - std::max(swing.impact_from_tip, 0.0);
+  const double reach_r = radial_reach(bat, ball, swing.impact_from_tip);
 
   // Swing frame: the bat axis (knob -> tip) points toward +z (first-base side, the batter
   // stands on the third-base side as a right-hander), the sweet spot moves along d (tilted
@@ -267,10 +277,14 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   const Vec3 axis = std::cos(swing.vertical_bat_angle) * level - std::sin(swing.vertical_bat_angle) * d.cross(level);
   const Vec3 up = axis.cross(d);  // ⊥ axis and d, upward for a level swing
   const double sin_b = swing.undercut / reach_r;
-  const Vec3 n = (std::sqrt(1.0 - sin_b * sin_b) * d + sin_b * up).normalized();
+  const Vec3 across = (std::sqrt(1.0 - sin_b * sin_b) * d + sin_b * up).normalized();  // from the axis to the ball
+  // On the barrel the contact's normal runs straight out from the axis; on the end cap's rim
+  // it tilts out along the axis by the ball's overhang.
+  const double sin_c = past_tip / ball.radius;
+  const Vec3 n = (std::sqrt(1.0 - sin_c * sin_c) * across + sin_c * axis).normalized();
 
   const Vec3 ball_centre(0.0, kBaseballContactHeight, 0.0);
-  const Vec3 on_axis = ball_centre - reach_r * n;  // bat axis point under the contact
+  const Vec3 on_axis = ball_centre - reach_r * across - past_tip * axis;  // bat axis point under the contact
   const Vec3 knob = on_axis - from_knob * axis;
   const Vec3 contact = ball_centre - ball.radius * n;
   const Vec3 pivot = knob + bat.pivot_from_knob * axis;
@@ -304,7 +318,7 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   dl.impact_input.ball = make_impact_body(b, contact, "ball '" + ball.name + "'");
   dl.impact_input.normal = n;
   // Barrel vibrations: restitution falls away from the node (BatSpec::cor_profile).
-  const double factor = bat.cor_factor_at(swing.impact_from_tip);
+  const double factor = bat.cor_factor_at(std::max(swing.impact_from_tip, 0.0));
   if (uses_duration(ball, material)) {
     CompliantImpactInput in;
     in.impactor = batb;

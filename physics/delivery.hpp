@@ -58,9 +58,13 @@ struct BatSwing {
   /// toward the pull side when over it. 0 = a level bat.
   double vertical_bat_angle = 0.0;
   static constexpr Range kVerticalBatAngle{deg_to_rad(-80.0), deg_to_rad(30.0)};
-  double impact_from_tip = 0.1524;  ///< m along the barrel from the tip (6 in = sweet spot)
-  /// Outer bound (the longest bats, 42 in); the bat limits it to the barrel beyond 5 cm past the pivot.
-  static constexpr Range kImpactFromTip{0.0, 1.0668};
+  /// m along the barrel from the tip (6 in = sweet spot). Below 0 the ball's centre is past
+  /// the end of the bat and its edge meets the end cap's rim (down to 95 % of the ball's radius
+  /// past it): the ball caught off the end.
+  double impact_from_tip = 0.1524;
+  /// Outer bound (the longest bats, 42 in; a ball's radius past the end); the bat and ball limit
+  /// it to the barrel beyond 5 cm past the pivot and 95 % of the ball's radius past the tip.
+  static constexpr Range kImpactFromTip{-0.05, 1.0668};
   double undercut = 0;         ///< m, + ball centre above the bat axis (backspin, loft); ±20 mm typical
   /// Outer bound; the bat and ball radii limit it to 95 % of their sum at the contact.
   static constexpr Range kUndercut{-0.1, 0.1};

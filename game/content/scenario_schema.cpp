@@ -128,7 +128,7 @@ Schema build_scenario_schema() {
   k.push_back(quantity("swing.speed", Speed, &BatSwing::kBatSpeed, "mph", "31.3m/s", "bat speed at the sweet spot", B));
   k.push_back(quantity("swing.attack_angle", Angle, &BatSwing::kAttackAngle, "deg", "0.15rad", "swing plane angle, + up", B));
   k.push_back(quantity("swing.direction", Angle, &BatSwing::kDirection, "deg", "0deg", "horizontal swing direction, + toward right field", B));
-  k.push_back(quantity("swing.impact_from_tip", Length, &BatSwing::kImpactFromTip, "in", "6in", "impact point along the barrel from the tip", B));
+  k.push_back(quantity("swing.impact_from_tip", Length, &BatSwing::kImpactFromTip, "in", "6in", "impact point along the barrel from the tip (below 0: the ball's centre past the end, its edge on the end cap)", B));
   k.push_back(quantity("swing.undercut", Length, &BatSwing::kUndercut, "mm", "0mm", "ball centre above the bat axis, + gives backspin", B));
 
   k.push_back(quantity("pitch.speed", Speed, &Pitch::kSpeed, "mph", "90mph", "pitch speed at the plate (0 = off a tee)", B));

@@ -33,11 +33,11 @@ const std::vector<BatterSkill>& batter_skills() {
     BatterSkill pro{"pro", mph_to_mps(71.5), 5.0, 0.004, 0.03};
     // His reads of live pitching (ESTIMATES, set together against MLB's 2024 league rates over
     // 40 seeded games: strikeouts, walks, BABIP, power, whiffs per swing): he reads the type of
-    // 85 % of pitches before he must commit, his timing of a pitch he has read is off by 6.5 ms
+    // 85 % of pitches before he must commit, his timing of a pitch he has read is off by 7 ms
     // and his height by 22 mm (at the contact's ~1.2° of launch per mm of undercut, the spread
     // of the league's launch angles), and where his eye puts the pitch by 30 mm.
     pro.recognition = 0.85;
-    pro.read_timing_sd_ms = 6.5;
+    pro.read_timing_sd_ms = 7.0;
     pro.read_height_sd = 0.022;
     pro.read_reach_sd = 0.09;
     pro.discipline = 0.05;
@@ -168,7 +168,8 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   out.crossing_undercut = met.undercut;
   // The bat lies along the ball's line, or the ball crosses its axis past the end of the bat
   // or behind the pivot (turned more than a right angle: the bat is through the zone).
-  out.past_end = !met.crosses || s.impact_from_tip < 0.0 || met.from_pivot <= 0.0;
+  // Up to nearly the ball's radius past the end its edge still catches the end cap's rim.
+  out.past_end = !met.crosses || s.impact_from_tip < -0.95 * ball.radius || met.from_pivot <= 0.0;
   if (out.past_end) return out;
   s.impact_from_tip = std::min(s.impact_from_tip, 0.45);  // nearer the hands than this, the hands are hit
   Delivery d;

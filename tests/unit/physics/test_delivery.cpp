@@ -372,6 +372,36 @@ TEST_CASE("a bat with its head below the hands sends the ball under it the other
   CHECK(under.vertical_angle > under_level.vertical_angle - deg_to_rad(8.0));
 }
 
+// Past the end of the bat the ball's edge can still catch the end cap's rim: the contact's
+// normal tilts out along the bat. A little past the end the ball leaves weakly, out over the
+// end of the bat (toward first base for a right-handed batter: off the end, mostly foul); at the
+// far edge it is only nicked and goes on back toward the catcher: a foul tip.
+TEST_CASE("a ball caught on the end cap's rim leaves weakly, out past the end of the bat, and gains no energy",
+          "[delivery][baseball]") {
+  BatSwing s;
+  const LaunchMetrics sweet = measure_launch(bat_hit("maple", s).launch);
+  double last_speed = sweet.ball_speed, last_angle = 0.0;
+  for (const double past : {0.005, 0.015, 0.025, 0.034}) {
+    s.impact_from_tip = -past;
+    const Delivery d = bat_hit("maple", s);
+    const LaunchMetrics m = measure_launch(d.launch);
+    INFO("centre " << past * 1000 << " mm past the tip: " << mps_to_mph(m.ball_speed) << " mph, "
+                   << rad_to_deg(m.horizontal_angle) << " deg");
+    CHECK(m.horizontal_angle > last_angle);  // farther out over the end, then on back
+    if (past < 0.03) CHECK(m.ball_speed < last_speed);  // the farther off the end, the weaker
+    last_speed = m.ball_speed;
+    last_angle = m.horizontal_angle;
+    const Balance b = balance(d);
+    CHECK(b.dp_rel < 1e-12);
+    CHECK(b.dl_rel < 1e-12);
+    CHECK(b.energy_after <= b.energy_before);
+  }
+  CHECK(last_angle > deg_to_rad(150.0));  // nicked: on back toward the catcher
+  // Beyond 95 % of the ball's radius past the end it cannot touch: refused, naming the field.
+  s.impact_from_tip = -0.036;
+  CHECK_THROWS_WITH(bat_hit("maple", s), Catch::Matchers::Contains("impact_from_tip"));
+}
+
 TEST_CASE("exit speed peaks near the sweet spot and q is about 0.2 there", "[delivery][baseball]") {
   Pitch p;
   p.approach_angle = 0;

@@ -15,6 +15,7 @@
 // the bat axis to the ball centre, so undercut tilts it up (backspin, loft).
 #include "physics/delivery.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -241,6 +242,12 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
   return d;
 }
 
+Vec3 bat_axis_across(const Vec3& path, const Vec3& level, double vertical_bat_angle) {
+  const double cos_climb = std::sqrt(std::max(0.0, 1.0 - path.y() * path.y()));
+  const double turn = std::asin(std::clamp(std::sin(vertical_bat_angle) / std::max(cos_climb, 1e-9), -1.0, 1.0));
+  return std::cos(turn) * level - std::sin(turn) * path.cross(level);
+}
+
 Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwing& swing, const Pitch& pitch,
                           const ImpactMaterial& material) {
   validate_pitch(pitch);
@@ -274,7 +281,7 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   const double ca = std::cos(swing.attack_angle), sa = std::sin(swing.attack_angle);
   const Vec3 d = turn * Vec3(ca, sa, 0.0);
   const Vec3 level = turn * Vec3::UnitZ();
-  const Vec3 axis = std::cos(swing.vertical_bat_angle) * level - std::sin(swing.vertical_bat_angle) * d.cross(level);
+  const Vec3 axis = bat_axis_across(d, level, swing.vertical_bat_angle);
   const Vec3 up = axis.cross(d);  // ⊥ axis and d, upward for a level swing
   const double sin_b = swing.undercut / reach_r;
   const Vec3 across = (std::sqrt(1.0 - sin_b * sin_b) * d + sin_b * up).normalized();  // from the axis to the ball

@@ -62,8 +62,9 @@ struct BatSwing {
   /// the end of the bat and its edge meets the end cap's rim (down to 95 % of the ball's radius
   /// past it): the ball caught off the end.
   double impact_from_tip = 0.1524;
-  /// Outer bound (the longest bats, 42 in; a ball's radius past the end); the bat and ball limit
-  /// it to the barrel beyond 5 cm past the pivot and 95 % of the ball's radius past the tip.
+  /// Outer bound (the longest bats, 42 in; 5 cm past the end, more than any ball's radius); the
+  /// bat and ball limit it to the barrel beyond 5 cm past the pivot and 95 % of the ball's radius
+  /// past the tip.
   static constexpr Range kImpactFromTip{-0.05, 1.0668};
   double undercut = 0;         ///< m, + ball centre above the bat axis (backspin, loft); ±20 mm typical
   /// Outer bound; the bat and ball radii limit it to 95 % of their sum at the contact.
@@ -88,6 +89,13 @@ struct Pitch {
 void validate_golf_swing(const GolfSwing& swing, const ClubSpec& club);
 void validate_bat_swing(const BatSwing& swing, const BatSpec& bat, const BallSpec& ball);
 void validate_pitch(const Pitch& pitch);
+
+/// The bat's axis (knob to tip) across the sweet spot's path `path` (unit), turned about the
+/// path from `level` (unit, across the path and level) until the axis stands at
+/// `vertical_bat_angle` from level (− head down): the turn is asin(sin v / cos α) for a path
+/// climbing at α, which exists while |v| ≤ 90° − |α| (a tilted plane keeps
+/// sin²α + sin²v = sin²tilt ≤ 1).
+Vec3 bat_axis_across(const Vec3& path, const Vec3& level, double vertical_bat_angle);
 
 /// The impactor (club head or bat) at the instant of impact, before the impulse: its mesh
 /// frame (HEAD or BAT frame, physics/equipment.hpp) mapped to world, and the velocity of

@@ -18,8 +18,8 @@ double max_exit_speed(double bat_speed, double pitch_speed) {
 BatTracking track_swing(const SwingPath& s, const BatSpec& bat, double pitch_speed, double exit_speed) {
   BatTracking t;
   t.bat_speed_mps = s.bat_speed;
-  // The bat turns about its pivot near the hands: its head runs on a circle of the length
-  // beyond the pivot.
+  // The bat turns about its pivot at the knob: its head runs on a circle of the length beyond
+  // the pivot.
   t.swing_length_m = (bat.length - bat.pivot_from_knob) * s.sweep;
   t.attack_angle_deg = rad_to_deg(s.attack_angle);
   t.attack_direction_deg = rad_to_deg(s.direction);

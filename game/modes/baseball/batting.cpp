@@ -103,7 +103,7 @@ BallCrossing meet_ball(const Vec3& ball_dir, double attack, double vertical_bat_
                        double early) {
   const Vec3 u0(std::cos(attack), std::sin(attack), 0.0);  // the on-time path
   // The bat's axis on time, toward the tip: across the path, head down by the bat angle.
-  const Vec3 a0 = std::cos(vertical_bat_angle) * Vec3::UnitZ() - std::sin(vertical_bat_angle) * u0.cross(Vec3::UnitZ());
+  const Vec3 a0 = bat_axis_across(u0, Vec3::UnitZ(), vertical_bat_angle);
   const Vec3 n = a0.cross(u0);                             // the plane's normal, up for a level swing
   const Vec3 axis = std::cos(early) * a0 + std::sin(early) * u0;   // the bat turned toward the pitcher
   const Vec3 across = -std::sin(early) * a0 + std::cos(early) * u0;  // in the plane, across the bat
@@ -112,7 +112,10 @@ BallCrossing meet_ball(const Vec3& ball_dir, double attack, double vertical_bat_
   const double closing = d.dot(across);
   if (std::abs(closing) < 1e-6) return c;
   // From the pivot the ball's centre is at reach·a0 + undercut·n on time, and at λ along its
-  // flight from there it lies on the turned axis when it has no part across it.
+  // flight from there it lies on the turned axis when it has no part across it. (The ball first
+  // touches the bat's front a bat-and-ball radius before that, which moves the contact along
+  // the bat by ~7 cm·tan φ: ~4 cm at 30°, early out toward the end, late in toward the hands.
+  // Not modelled yet.)
   const Vec3 on_time = reach * a0 + undercut * n;
   const double lambda = -on_time.dot(across) / closing;
   const Vec3 met = on_time + lambda * d;
@@ -168,9 +171,11 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   out.crossing_undercut = met.undercut;
   // The bat lies along the ball's line, or the ball crosses its axis past the end of the bat
   // or behind the pivot (turned more than a right angle: the bat is through the zone).
-  // Up to nearly the ball's radius past the end its edge still catches the end cap's rim.
-  out.past_end = !met.crosses || s.impact_from_tip < -0.95 * ball.radius || met.from_pivot <= 0.0;
-  if (out.past_end) return out;
+  // Up to nearly the ball's radius past the end its edge still catches the end cap's rim. A
+  // bat along the ball's line, or turned past a right angle, is through the zone.
+  const bool through = !met.crosses || met.from_pivot <= 0.0;
+  out.past_end = !through && s.impact_from_tip < -0.95 * ball.radius;
+  if (through || out.past_end) return out;
   s.impact_from_tip = std::min(s.impact_from_tip, 0.45);  // nearer the hands than this, the hands are hit
   Delivery d;
   try {

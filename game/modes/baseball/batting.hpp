@@ -126,8 +126,8 @@ struct SwingResult {
   bool foul_tip = false;
   BatTracking tracking;       ///< Statcast's bat tracking for the swing (misses too)
   /// Where the bat's axis crossed the ball's line (meet_ball): the ball's centre above it (m,
-  /// + the bat passed under the ball), and whether that was past the end of the bat (or behind
-  /// the knob): why a swing missed.
+  /// + the bat passed under the ball), and whether that was past the end of the bat, farther
+  /// than the ball's edge reaches its end cap: why a swing missed.
   double crossing_undercut = 0.0;
   bool past_end = false;
 };

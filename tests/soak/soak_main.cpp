@@ -142,12 +142,9 @@ void soak_one(long i, std::uint64_t seed, const EquipmentCatalog& eq, const Worl
       s.attack_angle = pick_in(1, BatSwing::kAttackAngle);
       s.direction = pick_in(2, BatSwing::kDirection);
       const double reach = bat.length - bat.pivot_from_knob - 0.05;
-      const double past_end = -0.95 * ball.radius;  // the ball's edge on the end cap's rim
+      const double past_end = -kEndCapReach * ball.radius;  // the ball's edge on the end cap's rim
       s.impact_from_tip = pick(3, past_end, reach);
-      const double from_tip = std::min(std::max(s.impact_from_tip, past_end), reach);
-      const double radial = from_tip >= 0.0 ? bat.radius_at(bat.length - from_tip) + ball.radius
-                                            : bat.radius_at(bat.length) + std::sqrt(ball.radius * ball.radius - from_tip * from_tip);
-      const double reach_r = 0.95 * radial;
+      const double reach_r = 0.95 * bat_ball_reach(bat, ball, std::min(std::max(s.impact_from_tip, past_end), reach));
       s.undercut = r.in(-0.999 * reach_r, 0.999 * reach_r);
       Pitch p;
       p.speed = pick_in(4, Pitch::kSpeed);

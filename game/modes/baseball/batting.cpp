@@ -83,20 +83,26 @@ double fence_distance(const WorldAsset& world, double spray) {
   return std::numeric_limits<double>::infinity();
 }
 
+namespace {
+// β, round the swing's circle from its low point, where a path climbing at `attack` is met in a
+// plane whose slope is `sin_tilt`.
+double arc_on_time(double attack, double sin_tilt) {
+  return std::asin(std::clamp(std::sin(attack) / sin_tilt, -1.0, 1.0));
+}
+}  // namespace
+
 double attack_angle_at(double attack, double tilt, double turned) {
   const double st = std::sin(tilt);
   if (st <= 0.0) return attack;
-  const double on_time = std::asin(std::clamp(std::sin(attack) / st, -1.0, 1.0));  // β when met on time
-  return std::asin(std::clamp(st * std::sin(on_time - turned), -1.0, 1.0));
+  return std::asin(std::clamp(st * std::sin(arc_on_time(attack, st) - turned), -1.0, 1.0));
 }
 
 double vertical_bat_angle_at(double attack, double tilt, double turned) {
   const double st = std::sin(tilt);
   if (st <= 0.0) return 0.0;
-  const double on_time = std::asin(std::clamp(std::sin(attack) / st, -1.0, 1.0));  // β when met on time
   // The axis runs from the circle's centre out to the sweet spot: at β it points down the
   // plane's slope by cos β of it.
-  return -std::asin(std::clamp(st * std::cos(on_time - turned), -1.0, 1.0));
+  return -std::asin(std::clamp(st * std::cos(arc_on_time(attack, st) - turned), -1.0, 1.0));
 }
 
 BallCrossing meet_ball(const Vec3& ball_dir, double attack, double vertical_bat_angle, double reach, double undercut,
@@ -169,12 +175,11 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   const double pitch_speed = pitch.release_velocity.norm();  // Statcast's pitch speed is out of the hand
   out.tracking = track_swing(path, bat, pitch_speed, 0.0);
   out.crossing_undercut = met.undercut;
-  // The bat lies along the ball's line, or the ball crosses its axis past the end of the bat
-  // or behind the pivot (turned more than a right angle: the bat is through the zone).
-  // Up to nearly the ball's radius past the end its edge still catches the end cap's rim. A
-  // bat along the ball's line, or turned past a right angle, is through the zone.
+  // A bat along the ball's line, or turned past a right angle, is through the zone; past the
+  // end of the bat the ball's edge still catches the end cap's rim up to kEndCapReach of its
+  // radius.
   const bool through = !met.crosses || met.from_pivot <= 0.0;
-  out.past_end = !through && s.impact_from_tip < -0.95 * ball.radius;
+  out.past_end = !through && s.impact_from_tip < -kEndCapReach * ball.radius;
   if (through || out.past_end) return out;
   s.impact_from_tip = std::min(s.impact_from_tip, 0.45);  // nearer the hands than this, the hands are hit
   Delivery d;

@@ -17,7 +17,8 @@ ballpark -- home plate at the origin, foul lines at +-45 deg from +x (third base
   (d(phi) = 400 - 70 (phi/45deg)^2 ft), a 15 ft warning track inside it, infield dirt and
   grass, outfield grass, chalk foul lines (decoration), stands (out of bounds) beyond, and a
   backstop 60 ft behind home plate (MLB Official Baseball Rules 2.01 asks for 60 ft or
-  more), 10 ft high, from 100 to 260 deg around the plate.
+  more), 10 ft high, from 135 to 225 deg around the plate, and the stands' 4 ft front wall
+  60 ft outside each foul line from the backstop to the corner and across to the pole.
 
 links_1, links_2, links_3 -- the three holes of the Sweetspot Links course
   (assets/courses/links.toml), each played along +x from a tee box at the origin:
@@ -198,6 +199,9 @@ FENCE_HEIGHT = 10.0 * FT
 LINE_FT, CENTRE_FT = 330.0, 400.0
 TRACK = 15.0 * FT
 BACKSTOP = 60.0 * FT
+# The low wall in front of the field-level seats in foul ground (ESTIMATE: ~4 ft, as the
+# rails of MLB parks' front rows stand; the rules set none).
+STANDS_WALL = 4.0 * FT
 
 
 def fence_distance(phi_deg):
@@ -217,11 +221,16 @@ def ballpark_material(x, z):
     # (past the fence it can only have cleared it, which the rules decide before it lands).
     if r > fence_distance(phi) + 2.5:
         return "out_of_bounds"
-    # Stands along the foul lines and behind the backstop, 60 ft out (a ball into them is dead).
+    # Stands along the foul lines and behind the backstop, 60 ft out, and past the wall that
+    # closes each corner at the foul pole (a ball into them is dead); as at the fence, they
+    # start a cell past the wall's foot, so no ground in front of a wall is the stands'.
     u = (x + z) / math.sqrt(2.0)  # along the first-base line
     w = (x - z) / math.sqrt(2.0)  # along the third-base line
     outside = max(-u, -w)        # how far outside the nearer foul line
-    if outside > FOUL_GROUND or (x < 0.0 and r > BACKSTOP):
+    along = u if z > x else w    # along the nearer foul line, on its foul side
+    pole = fence_distance(45.0)
+    if (outside > FOUL_GROUND + 2.5 or (x < 0.0 and r > BACKSTOP + 2.5)
+            or (outside > 0.0 and along > pole + 2.5)):
         return "out_of_bounds"
     fair = x > 0.0 and abs(phi) <= 45.0
     if fair and r > fence_distance(phi) - TRACK or r > fence_distance(phi):
@@ -252,13 +261,35 @@ def ballpark(out_dir):
         b1, a1 = mesh.vertex(xb, FENCE_HEIGHT, zb), mesh.vertex(xa, FENCE_HEIGHT, za)
         # a0 b0 b1 a1 is counter-clockwise seen from home plate: the normal faces the field.
         mesh.quad("wall", a0, b0, b1, a1)
-    # Backstop: an arc of wall behind the plate, facing it (a pop-up that spins back stops here).
-    back = [(BACKSTOP * math.cos(math.radians(a)), BACKSTOP * math.sin(math.radians(a))) for a in range(100, 261, 5)]
+    # Backstop: an arc of wall behind the plate, facing it (a pop-up that spins back stops
+    # here), from one line of stands to the other (135 to 225 deg).
+    back = [(BACKSTOP * math.cos(math.radians(a)), BACKSTOP * math.sin(math.radians(a))) for a in range(135, 226, 5)]
     for i in range(len(back) - 1):
         (xa, za), (xb, zb) = back[i], back[i + 1]
         a0, b0 = mesh.vertex(xa, 0.0, za), mesh.vertex(xb, 0.0, zb)
         b1, a1 = mesh.vertex(xb, FENCE_HEIGHT, zb), mesh.vertex(xa, FENCE_HEIGHT, za)
         mesh.quad("wall", a0, b0, b1, a1)
+    # The stands' front wall in foul ground: 60 ft outside each foul line from the backstop to
+    # the corner, then across to the foul pole, facing the field. A rolling or low foul ball
+    # stays in play off it; only a ball over it is in the stands.
+    pole = fence_distance(45.0)
+    for side in (-1.0, 1.0):  # third-base side, first-base side
+        ux, uz = math.cos(math.radians(45.0)), side * math.sin(math.radians(45.0))  # along the line
+        ox, oz = -uz, ux                                                            # outward (foul side)
+        if side < 0:
+            ox, oz = uz, -ux
+        start = (FOUL_GROUND * ox, FOUL_GROUND * oz)
+        corner = (pole * ux + FOUL_GROUND * ox, pole * uz + FOUL_GROUND * oz)
+        post = (pole * ux, pole * uz)
+        for (xa, za), (xb, zb) in ((start, corner), (corner, post)):
+            # Wind it so the normal, (b - a) x up, points back into the field (toward the line's middle).
+            mx, mz = 0.5 * pole * ux, 0.5 * pole * uz
+            nx, nz = -(zb - za), (xb - xa)  # (b - a) x y, in the ground plane
+            if nx * (mx - xa) + nz * (mz - za) < 0.0:
+                (xa, za), (xb, zb) = (xb, zb), (xa, za)
+            a0, b0 = mesh.vertex(xa, 0.0, za), mesh.vertex(xb, 0.0, zb)
+            b1, a1 = mesh.vertex(xb, STANDS_WALL, zb), mesh.vertex(xa, STANDS_WALL, za)
+            mesh.quad("wall", a0, b0, b1, a1)
     # Chalk foul lines, 10 cm wide, just above the grass (decoration only).
     for sign in (-1.0, 1.0):
         d = fence_distance(45.0)

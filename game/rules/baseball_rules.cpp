@@ -55,8 +55,13 @@ bool BaseballShotRules::observe(const ShotState& before, const ShotState& after,
     }
   }
   if (home_run_) return ev.kind == ShotEventKind::Landing || ev.kind == ShotEventKind::Bounce;
-  if (ev.kind == ShotEventKind::Landing &&
-      model_.terrain->material(ev.contact.material).kind == SurfaceKind::OutOfBounds) {
+  const auto stands = [&](const SurfaceContact& c) {
+    return model_.terrain->material(c.material).kind == SurfaceKind::OutOfBounds;
+  };
+  const bool touched = ev.kind == ShotEventKind::Landing || ev.kind == ShotEventKind::Bounce ||
+                       ev.kind == ShotEventKind::Roll;
+  const bool rolling = after.phase == Phase::Roll || after.phase == Phase::Rest;
+  if ((touched && stands(ev.contact)) || (rolling && stands(after.support))) {
     dead_ball_ = true;
     return true;
   }

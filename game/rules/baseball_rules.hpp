@@ -3,7 +3,8 @@
 // the batted-ball distance, and the play ends where it lands. Crossing is decided on each
 // step's path before anything else happens in that step (a ball that crosses and lands
 // beyond in the same step is still a home run). A ball that first lands on a surface
-// marked out of bounds (the stands) is dead there. Leaving the world is out of bounds.
+// marked out of bounds (the stands) is dead there, and so is one that bounces or
+// rolls into them. Leaving the world is out of bounds.
 #pragma once
 
 #include <optional>

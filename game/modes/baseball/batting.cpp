@@ -26,6 +26,46 @@ void mirror_behind_plate(ShotResult& shot) {
   shot.trajectory.summary.rest_position.x() = -shot.trajectory.summary.rest_position.x();
 }
 
+// A foul behind the plate is dead where it reaches the backstop, kFoulGround from home
+// plate (Rule 2.01; the ballpark's wall arc and the stands behind it): into the wall below its
+// top or over it into the stands, the ball drops there. Trims the flight flown over open
+// field at that point.
+void stop_at_backstop(ShotResult& shot, double ball_radius) {
+  std::vector<TrajectorySample>& s = shot.trajectory.samples;
+  const auto behind = [](const Vec3& p) { return p.x() < 0.0 && std::hypot(p.x(), p.z()) >= kFoulGround; };
+  std::size_t i = 1;
+  while (i < s.size() && !behind(s[i].position)) ++i;
+  if (i >= s.size()) return;
+  // Where the step from s[i-1] to s[i] reaches the backstop's circle (linear in the step).
+  const auto r = [](const Vec3& p) { return std::hypot(p.x(), p.z()); };
+  const double r0 = r(s[i - 1].position), r1 = r(s[i].position);
+  const double u = r1 > r0 ? std::clamp((kFoulGround - r0) / (r1 - r0), 0.0, 1.0) : 1.0;
+  TrajectorySample at = s[i - 1];
+  at.t = s[i - 1].t + u * (s[i].t - s[i - 1].t);
+  at.position = s[i - 1].position + u * (s[i].position - s[i - 1].position);
+  at.velocity = s[i - 1].velocity + u * (s[i].velocity - s[i - 1].velocity);
+  s.resize(i);
+  s.push_back(at);
+  TrajectorySample dropped = at;  // at the foot of the backstop, dead
+  dropped.position.y() = std::min(at.position.y(), ball_radius);  // on the flat world's ground
+  dropped.velocity.setZero();
+  dropped.spin.setZero();
+  dropped.phase = Phase::Rest;
+  if (dropped.position.y() < at.position.y()) s.push_back(dropped);
+  FlightSummary& f = shot.trajectory.summary;
+  const Vec3 foot(at.position.x(), dropped.position.y(), at.position.z());
+  if (f.hang_time_s > at.t) {  // over the backstop before it came down: its distance ends there
+    f.hang_time_s = at.t;
+    f.landing_position = foot;
+    f.carry_m = std::hypot(foot.x(), foot.z());
+    f.lateral_m = foot.z();
+  }
+  f.rest_position = foot;
+  f.total_m = std::hypot(foot.x(), foot.z());
+  f.total_time_s = at.t;
+  shot.end = ShotEnd::OutOfBounds;
+}
+
 }  // namespace
 
 const std::vector<BatterSkill>& batter_skills() {
@@ -217,6 +257,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
     const ResolvedShot open = resolve(spec, assets);
     out.shot = run_shot(open, "swing", {true, true});
     mirror_behind_plate(out.shot);
+    stop_at_backstop(out.shot, ball.radius);
     out.outcome = BattedOutcome::Foul;
   } else {
     out.shot = run_shot(resolved, "swing", {true, true});

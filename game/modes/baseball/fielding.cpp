@@ -140,7 +140,9 @@ const char* to_string(BattedOutcome o) {
 
 bool is_fair_ball(const ShotResult& shot) {
   if (shot.end == ShotEnd::HomeRun) return true;
-  return shot.end != ShotEnd::OutOfBounds && is_fair(shot.trajectory);
+  // Into the stands: foul, unless it first came down fair beyond the bases (a bounce over
+  // the fence, a ground-rule double) — is_fair decides from where it came down.
+  return is_fair(shot.trajectory);
 }
 
 BattedBallType batted_ball_type(double la) {
@@ -229,6 +231,12 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
     return play;
   }
   play.foul = !is_fair_ball(shot);
+  if (!play.foul && shot.end == ShotEnd::OutOfBounds) {
+    // Fair, then over the fence or into the stands on a bounce: two bases (Rule 5.05(a)(6)).
+    play.outcome = BattedOutcome::Double;
+    play.description = std::string("Ground-rule double to ") + field_part(land);
+    return play;
+  }
   // In the air: the fielder with the most time to spare anywhere along its path below his
   // reach (at the wall, a leap) gets under it; a foul fly only while it is over foul ground.
   const bool near_wall = land.y() > 0.3;  // its first touch was the fence

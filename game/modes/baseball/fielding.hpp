@@ -79,8 +79,8 @@ struct FieldingPlay {
 };
 
 /// Fair or foul (MLB Rule definitions): beyond the bases, where it first lands; before them,
-/// where it passes the bases or comes to rest. Out of bounds or past the fence without a
-/// home run is foul.
+/// where it passes the bases or comes to rest; into the stands, by where it came down (a fair
+/// ball bounced into them is a ground-rule double, field_play).
 bool is_fair_ball(const ShotResult& shot);
 
 /// Seconds a runner loses rounding a base (ESTIMATE), for the batter and the runners alike.

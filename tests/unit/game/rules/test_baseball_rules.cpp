@@ -135,3 +135,32 @@ TEST_CASE("the shipped ballpark: the built-in home run clears the fence, the pop
   b.swing.undercut = 0.045;  // well under the ball: a pop-up
   CHECK(run_shot(resolve(spec, A), "pop").end == ShotEnd::Rest);
 }
+
+TEST_CASE("a ball that bounces or rolls into the stands is dead there", "[rules][baseball]") {
+  const WorldAsset w = park();
+  // A low liner past the end of the wall (|z| > 60 m): it lands on the grass and skips on
+  // into the stands at x = 100 m, where it is dead, not carried on across them.
+  const Played skip = play(w, 100.0, 4.0, -40.0);
+  CHECK(skip.end == ShotEnd::OutOfBounds);
+  CHECK(skip.trajectory.summary.landing_position.x() < 100.0);
+  CHECK(skip.trajectory.summary.rest_position.x() < 110.0);
+}
+
+TEST_CASE("the shipped ballpark: the stands' front wall keeps a ground ball in foul ground in play", "[rules][baseball]") {
+  const WorldAsset& park = *test::assets().world("ballpark");
+  // Rule 2.01: the stands begin 60 ft outside each foul line. A hard grounder pulled 30 deg
+  // foul of the first-base line rolls to that wall, rebounds and rests in foul ground.
+  for (double side : {-1.0, 1.0}) {
+    const Played g = play(park, 90.0, 3.0, side * 75.0);
+    INFO("side " << side << ": rest at " << g.trajectory.summary.rest_position.transpose());
+    CHECK(g.end == ShotEnd::Rest);
+    const Vec3 r = g.trajectory.summary.rest_position;
+    const double outside = std::max(-(r.x() + r.z()), -(r.x() - r.z())) / std::sqrt(2.0);
+    CHECK(outside > 0.0);
+    CHECK(outside < 60.0 * 0.3048);
+    double reached = 0.0;  // it got to the wall: within a ball's radius and a little of it
+    for (const TrajectorySample& p : g.trajectory.samples)
+      reached = std::max(reached, std::max(-(p.position.x() + p.position.z()), -(p.position.x() - p.position.z())) / std::sqrt(2.0));
+    CHECK(reached > 60.0 * 0.3048 - 0.3);
+  }
+}

@@ -38,6 +38,21 @@ double zone_intent(const Count& c) {
   return std::clamp(0.58 + 0.08 * lead, 0.35, 0.85);
 }
 
+double type_zone_intent(double intent, const PitchType& type, const std::vector<PitchType>& arsenal) {
+  double usage = 0.0, share = 0.0;
+  for (const PitchType& t : arsenal) {
+    usage += t.usage;
+    share += t.usage * t.zone_share;
+  }
+  if (usage <= 0.0 || intent <= 0.0 || intent >= 1.0) return intent;
+  share /= usage;
+  // The count's odds times the type's odds against his mix's: the fastball he throws for the
+  // zone, the changeup he throws to be chased; at 3-0 every type still mostly for the zone.
+  const auto odds = [](double p) { return p / (1.0 - p); };
+  const double o = odds(intent) * odds(type.zone_share) / odds(share);
+  return o / (1.0 + o);
+}
+
 bool hits_batter(const Vec3& p, bool left, double r) {
   const double inside = left ? p.z() : -p.z();  // toward the batter
   return inside + r >= kBodyFromMiddle && p.y() + r >= kBodyLow && p.y() - r <= kBodyHigh;
@@ -78,7 +93,7 @@ PlannedPitch Pitcher::next(const Count& count, bool batter_left) {
   // Sides seen from the catcher, + toward first base; "away" from a right-handed batter is +.
   const double away = batter_left ? -1.0 : 1.0;
   const double mid = 0.5 * (StrikeZone::kLow + StrikeZone::kHigh);
-  out.in_zone_intent = rng_.uniform() < zone_intent(count);
+  out.in_zone_intent = rng_.uniform() < type_zone_intent(zone_intent(count), type, profile_.arsenal);
   if (out.in_zone_intent) {
     // A spot in the zone, nearer its edges than its middle: 0.1 m inside an edge of a
     // quarter he picks, or the heart of the zone one time in five (one in two with three

@@ -71,6 +71,9 @@ class Pitcher {
 /// ESTIMATE shaped by Statcast's zone rate by count (league Zone% ~49 %, lowest at 0-2,
 /// highest at 3-0).
 double zone_intent(const Count& count);
+/// That intent for one type of his arsenal: the count's odds times the type's zone odds
+/// (PitchType::zone_share) over his mix's, usage-weighted: over his mix the intent is kept.
+double type_zone_intent(double intent, const PitchType& type, const std::vector<PitchType>& arsenal);
 
 /// Where a pitch crossing at `plate` hits a batter standing in the box on his side (`left`:
 /// a left-hander, on the first-base side): his body starts 0.55 m from the middle of the plate

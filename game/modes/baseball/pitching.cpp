@@ -18,7 +18,7 @@ std::vector<PitchType> load_pitch_types(const Assets& assets) {
   static constexpr Range kExtension{0.5, 3.0};
   for (const toml::table* t : f.tables(f.root(), "pitch", true)) {
     f.only_keys(*t, "pitch", {"type", "speed", "spin", "active_spin", "movement_direction", "release_height",
-                              "release_side", "extension", "usage"});
+                              "release_side", "extension", "usage", "zone_share"});
     PitchType p;
     p.type = f.text(f.required(*t, "type", "the pitch's name"), "type");
     p.speed = f.quantity(f.required(*t, "speed", "out-of-hand speed"), "speed", Dimension::Speed, &PitchType::kSpeed);
@@ -30,6 +30,8 @@ std::vector<PitchType> load_pitch_types(const Assets& assets) {
     p.release_side = f.quantity(f.required(*t, "release_side", "m"), "release_side", Dimension::Length, &kSide);
     p.extension = f.quantity(f.required(*t, "extension", "m"), "extension", Dimension::Length, &kExtension);
     p.usage = f.quantity(f.required(*t, "usage", "share of pitches"), "usage", Dimension::Fraction, &kFraction);
+    static constexpr Range kZoneShare{0.05, 0.95};
+    p.zone_share = f.quantity(f.required(*t, "zone_share", "share in the zone"), "zone_share", Dimension::Fraction, &kZoneShare);
     for (const PitchType& o : out)
       if (o.type == p.type) f.fail(*t->get("type"), "type", "'" + p.type + "' is defined twice");
     out.push_back(p);

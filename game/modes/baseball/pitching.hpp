@@ -29,6 +29,9 @@ struct PitchType {
   double release_side = -0.55;   ///< m, + toward first base
   double extension = 1.98;       ///< m in front of the rubber (60.5 ft from the plate)
   double usage = 0.2;            ///< share of pitches
+  /// Share of this type's pitches that cross the zone (Statcast): the pitcher means a type
+  /// for the zone as much more or less often than his others (Pitcher::next).
+  double zone_share = 0.5;
 };
 
 /// The six types; InputError naming the file:line for a bad file.

@@ -247,6 +247,35 @@ TEST_CASE("over 60+ innings whiffs per swing by pitch type follow Statcast's", "
     }
 }
 
+// The pitcher means each type for the zone as Statcast's pitchers do (PitchType::zone_share,
+// FanGraphs' "Know Your Averages 2024"), by the count's odds: the changeup he throws to be
+// chased, the sinker for the zone. Band: each type within 6 points (his command scatters some
+// pitches meant for the edge out of it and some meant off it in); changeup lowest, both
+// fastballs above every breaking and off-speed type.
+TEST_CASE("over 60+ innings each pitch type crosses the zone as often as Statcast's", "[baseball][game][reference][statistics]") {
+  std::map<std::string, std::pair<int, int>> by_type;  // pitches, in the zone
+  for (const PlateAppearance& pa : pro_games())
+    for (const PitchRecord& p : pa.pitches) {
+      auto& t = by_type[p.planned.call.type.type];
+      ++t.first;
+      t.second += StrikeZone::contains(p.flight.plate, 0.0369) ? 1 : 0;
+    }
+  const std::map<std::string, double> published{{"four-seam", 0.544}, {"sinker", 0.563}, {"cutter", 0.511},
+                                                {"slider", 0.457},    {"curveball", 0.439}, {"changeup", 0.388}};
+  std::map<std::string, double> rate;
+  for (const auto& [type, share] : published) {
+    const auto& t = by_type.at(type);
+    REQUIRE(t.first >= 300);
+    rate[type] = static_cast<double>(t.second) / t.first;
+    INFO(type << ": " << rate[type] << " of " << t.first << " pitches in the zone; Statcast " << share);
+    CHECK(rate[type] == Approx(share).margin(0.06));
+  }
+  for (const auto& [type, r] : rate)
+    if (type != "changeup") CHECK(rate.at("changeup") < r);
+  for (const char* fast : {"four-seam", "sinker"})
+    for (const char* soft : {"slider", "curveball", "changeup"}) CHECK(rate.at(fast) > rate.at(soft));
+}
+
 // KNOWN MISS (issue 40): fouls. MLB's hitters have fouled off 16.0 % (1998) to 18.3 % (2023) of
 // pitches (theScore, "The quiet scourge of the foul ball", from Statcast and Retrosheet; P.
 // Berryman, "A Spotlight on Foul Balls": 18 % in 2023): the band. Ours ~14.5-15 %, with whiffs

@@ -213,3 +213,26 @@ TEST_CASE("bad baseball input names the value and its range", "[baseball][input]
   BotBatter bot(test::assets(), batter_skill("pro"), 1);
   CHECK_THROWS_WITH(run_session(test::assets(), o, bot, 1), Catch::Contains("outs = 0") && Catch::Contains("[1, 50]"));
 }
+
+// The count's intent by type: odds scaled by the type's zone odds against the mix's.
+TEST_CASE("a pitcher means each type for the zone by its share, keeping the count's intent for his mix", "[baseball][pitcher]") {
+  std::vector<PitchType> mix(2);
+  mix[0].type = "four-seam";
+  mix[0].usage = 0.5;
+  mix[0].zone_share = 0.6;
+  mix[1].type = "changeup";
+  mix[1].usage = 0.5;
+  mix[1].zone_share = 0.4;
+  // Odds: 0.5 at the mix's share 0.5 (odds 1) becomes 0.6 and 0.4 exactly.
+  CHECK(type_zone_intent(0.5, mix[0], mix) == Approx(0.6));
+  CHECK(type_zone_intent(0.5, mix[1], mix) == Approx(0.4));
+  // A type at the mix's own share keeps the count's intent; 3-0 stays mostly in the zone.
+  PitchType even = mix[0];
+  even.zone_share = 0.5;
+  CHECK(type_zone_intent(0.3, even, mix) == Approx(0.3));
+  CHECK(type_zone_intent(0.95, mix[1], mix) > 0.9);
+  CHECK(type_zone_intent(0.95, mix[1], mix) < 0.95);
+  // Over the mix the intent is about kept (odds, not shares, are scaled).
+  const double kept = 0.5 * type_zone_intent(0.58, mix[0], mix) + 0.5 * type_zone_intent(0.58, mix[1], mix);
+  CHECK(kept == Approx(0.58).margin(0.01));
+}

@@ -127,7 +127,10 @@ void draw_stats(const BattingCage& c, int w, int h) {
   } else {
     ImGui::Text("Batting practice");
   }
-  ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
+  if (c.stage() == Stage::Ready)
+    ImGui::TextUnformatted("Pitch: P or Space calls for one");
+  else
+    ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
   ImGui::Text("Swing: %s, %s-handed", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right");
   ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height");
   ImGui::TextDisabled("C: power/contact  L: batter's side");

@@ -174,7 +174,10 @@ struct HalfInning {
       const double runner = kRead + run_time(sprint(bases[0]), kBaseLine - kLead);
       const double at_second = p.fielded_time + throw_time(f, *env.aero, env.environment, p.fielded_at, 2);
       if (at_second < runner) {
-        const FielderAbility& pivot = fielding.defense.ability[p.fielder == 4 || p.fielder == 5 ? 3 : 4];
+        // The pivot at second: the second baseman when the shortstop or third baseman fields
+        // it, the shortstop otherwise (a 6-4-3, a 5-4-3; a 4-6-3, a 3-6-3, a 1-6-3).
+        const int pivot_at = p.fielder == 4 || p.fielder == 5 ? 3 : 4;
+        const FielderAbility& pivot = fielding.defense.ability[static_cast<std::size_t>(pivot_at)];
         const double at_first = at_second + kPivotExtra + throw_time(pivot, *env.aero, env.environment, base_position(2), 1);
         const bool double_play = at_first < p.batter_to_first;
         outs += double_play ? 2 : 1;
@@ -186,7 +189,8 @@ struct HalfInning {
         } else {
           nb = {-1, bases[1], bases[2]};  // the inning is over: they are left on base
         }
-        description = double_play ? "Grounded into a double play, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) + "-2B-1B"
+        description = double_play ? "Grounded into a double play, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) +
+                                        " to " + kPositionNames[static_cast<std::size_t>(pivot_at)] + " to 1B"
                                   : "Fielder's choice, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) + " to 2B";
         bases = nb;
         return static_cast<int>(scored.size());

@@ -25,6 +25,8 @@ void BattingCage::next_pitch(double t) {
   released_at_ = t + kWindupTime / kPitchTimeScale;
   stage_ = Stage::Pitching;
   call_text_.clear();
+  outcome_text_.clear();
+  bot_armed_ = false;
 }
 
 void BattingCage::count_pitch(PitchResult r) {
@@ -67,6 +69,12 @@ void BattingCage::update(const Intents& intents, double now) {
 }
 
 void BattingCage::advance(double t) {
+  if (bot_armed_ && stage_ == Stage::Pitching) {
+    // His bat meets the pitch at his timing: at that instant of mode time, whatever the
+    // frame rate.
+    const double contact = released_at_ + std::max(0.0, pitch_.flight_time + 1e-3 * bot_plan_.timing_ms) / kPitchTimeScale;
+    if (t >= contact) swing(bot_plan_, contact);
+  }
   if (stage_ == Stage::Pitching && pitch_clock(t) > pitch_.flight_time + kTakenAfter) {
     last_ = SwingRecord{};
     last_.call = call_;
@@ -81,10 +89,14 @@ void BattingCage::advance(double t) {
                   : strike                              ? PitchResult::CalledStrike
                                                         : PitchResult::Ball);
   }
-  if (stage_ == Stage::Batted && t - batted_at_ >= duration(last_.result.shot.trajectory)) stage_ = Stage::Called;
+  if (stage_ == Stage::Batted && t - batted_at_ >= duration(last_.result.shot.trajectory)) {
+    stage_ = Stage::Called;
+    if (!outcome_text_.empty()) call_text_ = outcome_text_;
+  }
 }
 
 void BattingCage::swing(const SwingInput& s, double t) {
+  bot_armed_ = false;
   swung_at_ = t;
   last_ = SwingRecord{};
   last_.call = call_;
@@ -112,8 +124,8 @@ void BattingCage::swing(const SwingInput& s, double t) {
       std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat", s.timing_ms >= 0 ? "late" : "early",
                     std::abs(s.timing_ms));
     else if (std::abs(under) > kReach)
-      std::snprintf(text, sizeof text, "Swinging strike: %s the ball by %.0f cm", under > 0.0 ? "under" : "over",
-                    100.0 * (std::abs(under) - kReach));
+      std::snprintf(text, sizeof text, "Swinging strike: the bat passed %.0f cm %s the ball", 100.0 * (std::abs(under) - kReach),
+                    under > 0.0 ? "under" : "over");
     else
       std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms", s.timing_ms >= 0 ? "late" : "early", std::abs(s.timing_ms));
     stage_ = Stage::Called;
@@ -124,6 +136,13 @@ void BattingCage::swing(const SwingInput& s, double t) {
     count_pitch(!last_.result.contact     ? PitchResult::SwingingStrike
                 : o == BattedOutcome::Foul ? (last_.result.foul_tip ? PitchResult::FoulTip : PitchResult::Foul)
                                            : PitchResult::InPlay);
+  }
+  if (stage_ == Stage::Batted) {
+    // While the ball flies the call is its launch, as a broadcast shows it; the outcome when it lands.
+    outcome_text_ = call_text_;
+    std::snprintf(text, sizeof text, "%.0f mph off the bat, %.0f deg", mps_to_mph(last_.result.shot.launch.ball_speed),
+                  rad_to_deg(last_.result.shot.launch.vertical_angle));
+    call_text_ = text;
   }
 }
 
@@ -142,6 +161,13 @@ void BattingCage::apply(const Intent& in) {
       if (stage_ == Stage::Pitching) break;
       live_ = !live_;
       count_ = Count{};
+      // Each starts its own record: practice swings are not the at-bats' (and the other's
+      // last pitch is not this one's).
+      swings_.clear();
+      last_ = SwingRecord{};
+      at_bats_ = AtBats{};
+      stage_ = Stage::Ready;
+      bot_armed_ = false;
       call_text_ = live_ ? "Live at-bat against the league's pitcher" : "Batting practice";
       break;
     case IntentKind::Restart:
@@ -149,9 +175,11 @@ void BattingCage::apply(const Intent& in) {
       swings_.clear();
       last_ = SwingRecord{};
       call_text_.clear();
+      outcome_text_.clear();
       count_ = Count{};
       at_bats_ = AtBats{};
       stage_ = Stage::Ready;
+      bot_armed_ = false;
       break;
     case IntentKind::Pitch:
     case IntentKind::Swing:
@@ -168,10 +196,13 @@ void BattingCage::apply(const Intent& in) {
       }
       break;
     case IntentKind::BotSwings:
-      if (stage_ == Stage::Pitching && pitch_clock(t) >= 0.0) {
-        const SwingInput s = bot_.plan(pitch_, true, lefty_);
-        swing(s, t);
-      }
+      // Between pitches B calls for one; the pro swings at it when it reaches him (advance),
+      // unless it is already past him.
+      if (bot_armed_) break;
+      if (stage_ != Stage::Pitching) next_pitch(t);
+      else if (pitch_clock(t) > pitch_.flight_time) break;
+      bot_plan_ = bot_.plan(pitch_, true, lefty_);
+      bot_armed_ = true;
       break;
     default: break;
   }

@@ -2,8 +2,9 @@
 // live at-bats against the league's pitcher (his arsenal and plan by count, balls, strikes,
 // fouls, walks, strikeouts, hit-by-pitch),
 // the swing judged from the moment its key went down against the pitch's arrival, the bat's
-// height, power or contact, the batter's side, the pro bot on request, and the session's
-// record. The window's view draws it; the tests drive it with scripted intents.
+// height, power or contact, the batter's side, the pro bot on request (B: at the pitch on its
+// way, or at the next one he calls for), and the session's record. A batted ball's outcome
+// is told when it comes down; while it flies, its launch. The window's view draws it; the tests drive it with scripted intents.
 #pragma once
 
 #include <string>
@@ -76,6 +77,11 @@ class BattingCage {
   SwingRecord last_;
   std::vector<SwingRecord> swings_;
   std::string call_text_;
+  /// A batted ball's outcome, shown once its flight is over (until then its launch).
+  std::string outcome_text_;
+  /// B asked the pro to swing at this pitch: he does when it reaches his timing.
+  bool bot_armed_ = false;
+  SwingInput bot_plan_;
   bool live_ = false;
   Pitcher pitcher_;
   Count count_;

@@ -61,13 +61,24 @@ TEST_CASE("a pitch left alone is called; the pro swings on request; restart clea
   CHECK(cage.stage() == BattingCage::Stage::Called);
   CHECK((cage.call_text() == "Ball" || cage.call_text() == "Called strike"));
   CHECK(cage.swings().empty());
-  // Space: the next pitch; B during the wind-up waits for the ball, once it is on its way the pro swings.
+  // Space: the next pitch; B during the wind-up asks the pro to swing at it: he does when it
+  // reaches him (a second B changes nothing).
   cage.update({at(IntentKind::Swing, 5.0), at(IntentKind::BotSwings, 5.2)}, 5.3);
   CHECK(cage.swings().empty());
-  cage.update({at(IntentKind::BotSwings, 5.0 + kWindupTime / BattingCage::kPitchTimeScale + 0.05)}, 7.0);
+  const double arrive = 5.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
+  cage.update({at(IntentKind::BotSwings, 5.0 + kWindupTime / BattingCage::kPitchTimeScale + 0.05)}, arrive - 0.1);
+  CHECK(cage.swings().empty());
+  cage.update({}, arrive + 0.2);
   REQUIRE(cage.swings().size() == 1);
   CHECK(cage.swings().back().result.contact);
-  cage.update({at(IntentKind::Restart, 6.0)}, 6.0);
+  CHECK(std::abs(cage.swings().back().timing_ms) < 30.0);
+  // While the batted ball flies the call is its launch; its outcome when it comes down.
+  REQUIRE(cage.stage() == BattingCage::Stage::Batted);
+  CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("mph off the bat"));
+  cage.update({}, arrive + 30.0);
+  CHECK(cage.stage() == BattingCage::Stage::Called);
+  CHECK_THAT(cage.call_text(), !Catch::Matchers::Contains("mph off the bat"));
+  cage.update({at(IntentKind::Restart, 36.0)}, 36.0);
   CHECK(cage.swings().empty());
   CHECK(cage.stage() == BattingCage::Stage::Ready);
 }
@@ -102,4 +113,22 @@ TEST_CASE("a live at-bat: the league's pitcher mixes his pitches, the count deci
   CHECK(a.walks + a.strikeouts + a.hit_by_pitch == 3);
   CHECK(a.hits == 0);
   CHECK(types.size() >= 2);  // not one pitch over and over
+}
+
+TEST_CASE("B between pitches calls for one and the pro swings at it, at the same instant at any frame rate",
+          "[modes][baseball]") {
+  std::vector<double> timings;
+  for (const double dt : {0.016, 0.05}) {
+    BattingCage cage(test::assets(), 21);
+    cage.update({at(IntentKind::BotSwings, 1.0)}, 1.0);
+    REQUIRE(cage.stage() == BattingCage::Stage::Pitching);
+    double now = 1.0;
+    while (cage.swings().empty() && now < 10.0) cage.update({}, now += dt);
+    REQUIRE(cage.swings().size() == 1);
+    timings.push_back(cage.swings().back().timing_ms);
+    // His bat met the ball at his timing's instant, not at the frame that saw it.
+    const double contact = 1.0 + (kWindupTime + cage.pitch().flight_time + 1e-3 * timings.back()) / BattingCage::kPitchTimeScale;
+    CHECK(cage.swung_at() == Approx(contact).margin(1e-9));
+  }
+  CHECK(timings[0] == timings[1]);
 }

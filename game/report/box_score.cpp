@@ -20,6 +20,7 @@ nlohmann::json team_json(const TeamBox& t) {
     nlohmann::json b = batting_json(t.batting[i]);
     b["order"] = i + 1;
     b["bats"] = bats_left(static_cast<int>(i)) ? "L" : "R";
+    b["position"] = lineup_position(static_cast<int>(i));
     batting.push_back(b);
   }
   const auto pitching = [](const PitchingLine& p) {
@@ -144,7 +145,8 @@ std::string box_score_text(const GameRecord& g) {
     for (std::size_t i = 0; i < t->batting.size(); ++i) {
       const BattingLine& l = t->batting[i];
       sum += l;
-      line(out, "%zu. %-7s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d\n", i + 1, bats_left(static_cast<int>(i)) ? "(L)" : "(R)",
+      const std::string who = std::string(lineup_position(static_cast<int>(i))) + (bats_left(static_cast<int>(i)) ? " (L)" : " (R)");
+      line(out, "%zu. %-7s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d\n", i + 1, who.c_str(),
            l.ab, l.r, l.h, l.doubles, l.triples, l.hr, l.rbi, l.bb, l.so, l.hbp, l.sf);
     }
     line(out, "%-10s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d   LOB %d\n", "Totals", sum.ab, sum.r, sum.h, sum.doubles,

@@ -1,6 +1,7 @@
 #include "game/modes/baseball/ball_game.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "game/content/resolve.hpp"
@@ -36,6 +37,11 @@ double run_time(double speed, double distance) { return distance / std::max(spee
 }  // namespace
 
 bool bats_left(int order) { return order == 1 || order == 3 || order == 5 || order == 8; }
+
+const char* lineup_position(int order) {
+  static constexpr std::array<const char*, 9> kPositions{"CF", "SS", "RF", "1B", "DH", "3B", "LF", "C", "2B"};
+  return kPositions[static_cast<std::size_t>(order) % kPositions.size()];
+}
 
 bool Team::to_the_bullpen(int inning, std::uint64_t seed) {
   const int thrown = pitcher.pitches_thrown();

@@ -48,6 +48,10 @@ struct GameOptions {
 /// The batting order's sides: left-handed hitters 2nd, 4th, 6th and 9th (4 of 9: MLB's
 /// left-handed batters take ~43 % of plate appearances, 2023; ESTIMATE of a lineup).
 bool bats_left(int order);
+/// The position each spot of the order plays (DH: the pitcher does not bat, MLB since 2022):
+/// a common shape of a lineup, the table setters up the middle and the power in the middle of
+/// the order (ESTIMATE; the fielding uses the league's defence whoever bats where).
+const char* lineup_position(int order);
 
 class Team {
  public:

@@ -287,7 +287,7 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
         char pts[16] = "";
         if (s.format == GolfFormat::Stableford) std::snprintf(pts, sizeof pts, " %dpt", ps.points[h]);
         ImGui::Text("%d%.*s (%d)%s%s", ps.gross[h], std::min(ps.received[h], 4), "****", ps.putts[h], pts,
-                    c.picked_up ? " picked up" : c.conceded ? " conceded" : "");
+                    c.picked_up ? " PU" : c.conceded ? " C" : "");
       }
       if (s.match) {
         ImGui::TableNextColumn();
@@ -329,9 +329,22 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
     }
     ImGui::EndTable();
   }
-  ImGui::TextDisabled("* a stroke received (handicap); putts in brackets");
+  // The key says only what the card shows: strokes received, pick-ups, concessions.
+  bool received = false, picked_up = false, conceded = false;
+  for (std::size_t p = 0; p < n; ++p)
+    for (std::size_t h = 0; h < s.holes; ++h) {
+      received = received || s.players[p].received[h] > 0;
+      const HoleCard& c = g.round(static_cast<int>(p)).card()[h];
+      picked_up = picked_up || c.picked_up;
+      conceded = conceded || c.conceded;
+    }
+  std::string key = "putts in brackets";
+  if (received) key = "* a stroke received (handicap); " + key;
+  if (picked_up) key += "; PU picked up";
+  if (conceded) key += "; C conceded";
+  ImGui::TextDisabled("%s", key.c_str());
   if (s.match) ImGui::Text("Match: %s", s.match->result.c_str());
-  else if (final && s.holes > 0) {
+  else if (final && s.holes > 0 && n > 1) {
     std::string names;
     for (int p : s.leaders) names += (names.empty() ? "" : ", ") + g.players()[static_cast<std::size_t>(p)].name;
     ImGui::Text("%s: %s", s.leaders.size() > 1 ? "Tied" : "Winner", names.c_str());

@@ -220,6 +220,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   // radius.
   const bool through = !met.crosses || met.from_pivot <= 0.0;
   out.past_end = !through && s.impact_from_tip < -kEndCapReach * ball.radius;
+  out.through = through;
   if (through || out.past_end) return out;
   s.impact_from_tip = std::min(s.impact_from_tip, 0.45);  // nearer the hands than this, the hands are hit
   Delivery d;

@@ -130,6 +130,9 @@ struct SwingResult {
   /// than the ball's edge reaches its end cap: why a swing missed.
   double crossing_undercut = 0.0;
   bool past_end = false;
+  /// The bat was through the zone (turned past a right angle, early) or not yet round (late)
+  /// when the ball went by: no crossing on the bat at all.
+  bool through = false;
 };
 
 /// The foul-tip cone around the pitch's line (see SwingResult::foul_tip).

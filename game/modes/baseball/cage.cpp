@@ -120,7 +120,10 @@ void BattingCage::swing(const SwingInput& s, double t) {
     // it where they crossed (off time the crossing moves: early over the ball, late under it).
     constexpr double kReach = 0.066;  // m, the bat's and the ball's radii together (95 %)
     const double under = last_.result.crossing_undercut;
-    if (last_.result.past_end)
+    if (last_.result.through)
+      std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", s.timing_ms >= 0 ? "late" : "early",
+                    std::abs(s.timing_ms), s.timing_ms >= 0 ? "not yet round" : "already through the zone");
+    else if (last_.result.past_end)
       std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat", s.timing_ms >= 0 ? "late" : "early",
                     std::abs(s.timing_ms));
     else if (std::abs(under) > kReach)

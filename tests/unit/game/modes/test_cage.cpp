@@ -22,7 +22,7 @@ Intent at(IntentKind k, double t) {
 
 TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any frame rate", "[modes][baseball]") {
   for (const double dt : {0.016, 0.033, 0.066}) {
-    for (const double late_ms : {0.0, 8.0, -20.0}) {
+    for (const double late_ms : {0.0, 8.0, -20.0, -40.0}) {
       CAPTURE(dt, late_ms);
       BattingCage cage(test::assets());
       cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
@@ -46,9 +46,14 @@ TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any
       CHECK(cage.swings().back().timing_ms == Approx(late_ms).margin(1e-6));
       // 20 ms early the bat has turned ~53° past square: the ball crosses its line past the
       // end, and the call says so.
-      if (late_ms < -10.0) {
+      if (late_ms < -10.0 && late_ms > -30.0) {
         CHECK_FALSE(cage.swings().back().result.contact);
         CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 20 ms, past the end of the bat"));
+      }
+      // 40 ms early the bat has turned past a right angle: it was through the zone.
+      if (late_ms < -30.0) {
+        CHECK_FALSE(cage.swings().back().result.contact);
+        CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 40 ms, the bat already through the zone"));
       }
     }
   }

@@ -248,8 +248,11 @@ bool tuning_section(PanelContext& c) {
   }
   if (mat.model == ImpactModel::Rigid || mat.friction == FrictionModel::Textbook)
     changed |= slider(c, LabParam::Et, "e_t", "%.3f");
-  else
-    ImGui::TextDisabled("e_t %.3f (from the contact; rigid model to set it)", im.present ? im.e_t : 0.0);
+  else {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("e_t %.3f (from the contact; rigid model to set it)", im.present ? im.e_t : 0.0);
+    ImGui::PopStyleColor();
+  }
   changed |= slider(c, LabParam::Mu, "mu", "%.3f");
   if (im.present && im.mu_grip == 0.0) {
     ImGui::TextDisabled("friction does not change this launch");
@@ -350,11 +353,27 @@ void monitor_section(PanelContext& c) {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(std::string(m->label).c_str());
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(text->c_str());
       const auto got = m->number(r, u);
-      if (!got || m->expect.empty()) continue;
+      const Expectation* ref = nullptr;
+      if (got && !m->expect.empty())
+        for (const Expectation& e : s.expectations)
+          if (e.name == m->expect && !e.value.empty()) {
+            ref = &e;
+            break;
+          }
+      if (ref != nullptr) {
+        ImGui::TextUnformatted(text->c_str());
+      } else {
+        // No reference on this row: its value may run on over the empty ref and diff cells
+        // ("-0.1 deg (+ right)", "0 mm toe, 12 mm up") instead of being cut at its own.
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+        ImGui::PushClipRect(at, ImVec2(right, at.y + ImGui::GetTextLineHeightWithSpacing()), false);
+        ImGui::TextUnformatted(text->c_str());
+        ImGui::PopClipRect();
+      }
       for (const Expectation& e : s.expectations) {
-        if (e.name != m->expect || e.value.empty()) continue;
+        if (ref == nullptr || &e != ref) continue;
         const double shown = display_value(e.name, e.value[0], u);
         ImGui::TableNextColumn();
         ImGui::Text("%.1f", shown);

@@ -276,7 +276,7 @@ TEST_CASE("over 60+ innings each pitch type crosses the zone as often as Statcas
     for (const char* soft : {"slider", "curveball", "changeup"}) CHECK(rate.at(fast) > rate.at(soft));
 }
 
-// KNOWN MISS (issue 40): fouls. MLB's hitters have fouled off 16.0 % (1998) to 18.3 % (2023) of
+// KNOWN MISS (issue 40): fouls. MLB's hitters have fouled off 16.3 % (1998) to 18.3 % (2023) of
 // pitches (theScore, "The quiet scourge of the foul ball", from Statcast and Retrosheet; P.
 // Berryman, "A Spotlight on Foul Balls": 18 % in 2023): the band. Ours ~14.5-15 %, with whiffs
 // at the league's ~25 % of swings. The bat meets the ball where its turned axis crosses the
@@ -287,6 +287,6 @@ TEST_CASE("over 60+ innings each pitch type crosses the zone as often as Statcas
 TEST_CASE("over 60+ innings fouls per pitch sit near Statcast's league", "[baseball][game][reference][statistics][!shouldfail]") {
   const BattingRates& pro = pro_rates();
   INFO(rates_text(pro, "pro"));
-  CHECK(pro.foul_per_pitch >= 0.160);
+  CHECK(pro.foul_per_pitch >= 0.163);
   CHECK(pro.foul_per_pitch <= 0.185);
 }

@@ -42,9 +42,9 @@ std::optional<Vec3> BaseballShotRules::fence_crossing(const ShotState& before, c
 
 bool BaseballShotRules::observe(const ShotState& before, const ShotState& after, const ShotEvent& ev) {
   const bool airborne = before.phase == Phase::Flight || before.phase == Phase::Bounce;
+  const bool touched = ev.kind == ShotEventKind::Landing || ev.kind == ShotEventKind::Bounce ||
+                       ev.kind == ShotEventKind::Roll;
   if (!home_run_ && !before.landed && airborne) {
-    const bool touched = ev.kind == ShotEventKind::Landing || ev.kind == ShotEventKind::Bounce ||
-                         ev.kind == ShotEventKind::Roll;
     if (const auto at = fence_crossing(before, after, touched ? ev.velocity_in : after.velocity())) {
       // Above the fence top: cleared it (below it, the ball met the wall mesh instead).
       if (at->y() - model_.ball.radius >= world_->description().origin.y() + world_->fence_height) {
@@ -58,8 +58,6 @@ bool BaseballShotRules::observe(const ShotState& before, const ShotState& after,
   const auto stands = [&](const SurfaceContact& c) {
     return model_.terrain->material(c.material).kind == SurfaceKind::OutOfBounds;
   };
-  const bool touched = ev.kind == ShotEventKind::Landing || ev.kind == ShotEventKind::Bounce ||
-                       ev.kind == ShotEventKind::Roll;
   const bool rolling = after.phase == Phase::Roll || after.phase == Phase::Rest;
   if ((touched && stands(ev.contact)) || (rolling && stands(after.support))) {
     dead_ball_ = true;

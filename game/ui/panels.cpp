@@ -361,9 +361,7 @@ void monitor_section(PanelContext& c) {
             ref = &e;
             break;
           }
-      if (ref != nullptr) {
-        ImGui::TextUnformatted(text->c_str());
-      } else {
+      if (ref == nullptr) {
         // No reference on this row: its value may run on over the empty ref and diff cells
         // ("-0.1 deg (+ right)", "0 mm toe, 12 mm up") instead of being cut at its own.
         const ImVec2 at = ImGui::GetCursorScreenPos();
@@ -371,16 +369,14 @@ void monitor_section(PanelContext& c) {
         ImGui::PushClipRect(at, ImVec2(right, at.y + ImGui::GetTextLineHeightWithSpacing()), false);
         ImGui::TextUnformatted(text->c_str());
         ImGui::PopClipRect();
+        continue;
       }
-      for (const Expectation& e : s.expectations) {
-        if (ref == nullptr || &e != ref) continue;
-        const double shown = display_value(e.name, e.value[0], u);
-        ImGui::TableNextColumn();
-        ImGui::Text("%.1f", shown);
-        ImGui::TableNextColumn();
-        ImGui::Text("%+.1f", *got - shown);
-        break;
-      }
+      ImGui::TextUnformatted(text->c_str());
+      const double shown = display_value(ref->name, ref->value[0], u);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.1f", shown);
+      ImGui::TableNextColumn();
+      ImGui::Text("%+.1f", *got - shown);
     }
     ImGui::EndTable();
   }

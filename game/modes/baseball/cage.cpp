@@ -29,6 +29,17 @@ void BattingCage::next_pitch(double t) {
   bot_armed_ = false;
 }
 
+void BattingCage::start_record() {
+  swings_.clear();
+  last_ = SwingRecord{};
+  call_text_.clear();
+  outcome_text_.clear();
+  count_ = Count{};
+  at_bats_ = AtBats{};
+  stage_ = Stage::Ready;
+  bot_armed_ = false;
+}
+
 void BattingCage::count_pitch(PitchResult r) {
   const PlateEnd end = apply_pitch(count_, r);
   char text[160];
@@ -163,26 +174,14 @@ void BattingCage::apply(const Intent& in) {
       // Between pitches: batting practice, or a live at-bat from 0-0.
       if (stage_ == Stage::Pitching) break;
       live_ = !live_;
-      count_ = Count{};
       // Each starts its own record: practice swings are not the at-bats' (and the other's
       // last pitch is not this one's).
-      swings_.clear();
-      last_ = SwingRecord{};
-      at_bats_ = AtBats{};
-      stage_ = Stage::Ready;
-      bot_armed_ = false;
+      start_record();
       call_text_ = live_ ? "Live at-bat against the league's pitcher" : "Batting practice";
       break;
     case IntentKind::Restart:
       // A fresh session: the record cleared, the next pitch on call.
-      swings_.clear();
-      last_ = SwingRecord{};
-      call_text_.clear();
-      outcome_text_.clear();
-      count_ = Count{};
-      at_bats_ = AtBats{};
-      stage_ = Stage::Ready;
-      bot_armed_ = false;
+      start_record();
       break;
     case IntentKind::Pitch:
     case IntentKind::Swing:

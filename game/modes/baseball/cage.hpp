@@ -61,6 +61,8 @@ class BattingCage {
   void advance(double t);
   void swing(const SwingInput& s, double t);
   void next_pitch(double t);
+  /// A fresh record: no swings, no count, no plate appearances, the next pitch on call.
+  void start_record();
   /// Live: the pitch's result on the count, and the plate appearance's end when it comes.
   void count_pitch(PitchResult r);
 

@@ -126,7 +126,7 @@ struct HalfInning {
   bool beats_throw(const FieldingPlay& p, const FielderAbility& f, double sprint, int from, int to, double start) const {
     const double dist = (to - from) * kBaseLine - (start <= kRead ? kLead : 0.0);
     const double runner = start + run_time(sprint, dist) + (to - from - 1) * kBaseRoundingTime;
-    const double defence = p.fielded_time + throw_time(f, *env.aero, env.environment, p.fielded_at, to);
+    const double defence = p.ready_time + throw_time(f, *env.aero, env.environment, p.fielded_at, to);
     return runner + kRunnerExtraBaseMargin < defence;
   }
 
@@ -178,7 +178,7 @@ struct HalfInning {
     // runner first, then the relay to first for two when it beats the batter.
     if (outs < 2 && bases[0] >= 0) {
       const double runner = kRead + run_time(sprint(bases[0]), kBaseLine - kLead);
-      const double at_second = p.fielded_time + throw_time(f, *env.aero, env.environment, p.fielded_at, 2);
+      const double at_second = p.ready_time + throw_time(f, *env.aero, env.environment, p.fielded_at, 2);
       if (at_second < runner) {
         // The pivot at second: the second baseman when the shortstop or third baseman fields
         // it, the shortstop otherwise (a 6-4-3, a 5-4-3; a 4-6-3, a 3-6-3, a 1-6-3).

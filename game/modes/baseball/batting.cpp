@@ -28,8 +28,8 @@ void mirror_behind_plate(ShotResult& shot) {
 
 // A foul behind the plate is dead where it reaches the backstop, kFoulGround from home
 // plate (Rule 2.01; the ballpark's wall arc and the stands behind it): into the wall below its
-// top or over it into the stands, the ball drops there. Trims the flight flown over open
-// field at that point.
+// top or over it into the stands, the ball drops there. Trims the flight at that point, whether
+// it was flown mirrored over open field or drifted back over the ballpark.
 void stop_at_backstop(ShotResult& shot, double ball_radius) {
   std::vector<TrajectorySample>& s = shot.trajectory.samples;
   const auto behind = [](const Vec3& p) { return p.x() < 0.0 && std::hypot(p.x(), p.z()) >= kFoulGround; };
@@ -262,6 +262,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
     out.outcome = BattedOutcome::Foul;
   } else {
     out.shot = run_shot(resolved, "swing", {true, true});
+    stop_at_backstop(out.shot, ball.radius);  // a pop-up drifting back over the backstop
   }
   static const Defense kLeague = league_defense();
   if (!fielding.field) {

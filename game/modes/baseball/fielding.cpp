@@ -42,6 +42,11 @@ constexpr double kLeap = 3.2;         // m: at the wall he can leap (standing re
 constexpr double kTransfer = 0.6;     // s to field cleanly and release a throw (ESTIMATE)
 constexpr double kHomeToFirst = 4.47; // s, Statcast 2024 mean home-to-first
 constexpr double kMeanSprint = 27.0 * 0.3048;  // m/s, Statcast's league-average sprint speed
+// An infielder fields a ball standing within an arm and glove of it (~1 m: ESTIMATE of a
+// 0.75 m arm and the glove's 0.3 m); past that, out to his reach, he dives, and getting up to
+// throw (or throwing from his knees) costs him about a second (ESTIMATE).
+constexpr double kStandingReach = 1.0;  // m
+constexpr double kDiveRecovery = 1.0;   // s
 constexpr double kBatterExtraBaseMargin = 0.2;  // s: the batter takes an extra base only with this to spare (ESTIMATE)
 constexpr double kOutfieldGather = 0.6;  // s an outfielder loses slowing to pick up a ball on the
                                          // ground and setting his feet (a crow hop) (ESTIMATE)
@@ -206,6 +211,20 @@ double fielder_run_time(const FielderAbility& f, double distance) {
   return f.reaction + f.sprint / f.accel + (d - d_acc) / f.sprint;
 }
 
+double run_speed(const FielderAbility& f, double distance) {
+  const double d = std::max(0.0, distance - f.reach);
+  return std::min(f.sprint, std::sqrt(2.0 * f.accel * d));
+}
+
+double plant_time(const FielderAbility& f, double arrive_speed, double slack, const Vec3& run_dir, const Vec3& throw_dir) {
+  const double speed = std::max(0.0, arrive_speed - f.accel * std::max(0.0, slack));
+  // Running straight at his target he throws on the run; straight away from it he must stop
+  // dead; across it, half way (ESTIMATE: the share of his run he must check grows as the
+  // run turns from the throw, 1 - cos of the angle between them, halved).
+  const double turn = 0.5 * (1.0 - std::clamp(run_dir.dot(throw_dir), -1.0, 1.0));
+  return turn * speed / f.accel;
+}
+
 double catch_probability(double spare) {
   return 0.5 * std::erfc(-(spare - kCatchOffset) / (kCatchSpread * std::sqrt(2.0)));
 }
@@ -276,6 +295,7 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
       play.caught = true;
       play.fielded_at = best_at;
       play.fielded_time = best_t;
+      play.ready_time = best_t;
       play.outcome = BattedOutcome::Out;
       if (rng && rng->uniform() < kDropRate) {
         // Dropped: a fair ball puts the batter on by the error; a foul one is only a foul.
@@ -317,14 +337,53 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
       first_f = i;
     }
   }
-  if (first_f >= 6) first_t += kOutfieldGather;
+  const FielderAbility& f = defense.ability[first_f];
+  double ready = first_t;
+  if (first_f >= 6) {
+    first_t += kOutfieldGather;
+    ready = first_t;
+  } else {
+    // An infielder does not take every ball at the first point he can reach: where he would
+    // get there flat out, or only with a dive, he lets it come on to where he can field it
+    // under control, whichever puts his throw at first soonest (the throw's time taken as
+    // its distance over his arm for the choice).
+    const Vec3 first_base = base_position(1);
+    double best = std::numeric_limits<double>::infinity();
+    const auto consider = [&](const Vec3& p, double t) {
+      const double d = horizontal(play.start[first_f], p);
+      const double run = fielder_run_time(f, d);
+      if (run > t) return;
+      FielderAbility standing = f;
+      standing.reach = std::min(f.reach, kStandingReach);
+      double set = t;
+      if (fielder_run_time(standing, d) > t) {
+        set += kDiveRecovery;
+      } else if (d > 1e-6) {
+        const Vec3 run_dir = Vec3(p.x() - play.start[first_f].x(), 0.0, p.z() - play.start[first_f].z()) / d;
+        const double to_base = horizontal(p, first_base);
+        const Vec3 throw_dir = to_base > 1e-6 ? Vec3(first_base.x() - p.x(), 0.0, first_base.z() - p.z()) / to_base : run_dir;
+        set += plant_time(f, run_speed(f, d), t - run, run_dir, throw_dir);
+      }
+      const double at_first = set + horizontal(p, first_base) / f.arm;
+      if (at_first < best) {
+        best = at_first;
+        first_t = t;
+        first_p = p;
+        ready = set;
+      }
+    };
+    const double picked = first_t;
+    for (const TrajectorySample& s : t.samples)
+      if (s.t >= picked && s.t >= hang && s.position.y() <= kCatchable) consider(s.position, s.t);
+    consider(t.summary.rest_position, std::max(t.summary.total_time_s, picked));
+  }
   play.fielder = static_cast<int>(first_f);
   play.fielded_at = first_p;
   play.fielded_time = first_t;
+  play.ready_time = ready;
   play.goal[first_f] = first_p;
-  const FielderAbility& f = defense.ability[first_f];
   const Thrower thrower(aero, env, f.arm, kTransfer);  // once for the bases he may throw to
-  const auto defence = [&](int base) { return first_t + transfer_and_throw(thrower, first_p, base); };
+  const auto defence = [&](int base) { return ready + transfer_and_throw(thrower, first_p, base); };
   const double to_first = play.batter_to_first;
   const double base_to_base = kBaseLine / std::max(batter_sprint, 1.0) + kBaseRoundingTime;
   if (defence(1) < to_first) {

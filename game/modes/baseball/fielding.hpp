@@ -73,6 +73,9 @@ struct FieldingPlay {
   bool error = false;
   Vec3 fielded_at = Vec3::Zero();///< where the fielder has the ball
   double fielded_time = 0.0;     ///< s after contact
+  /// s after contact when he is set to throw: when he has the ball if he got there with time
+  /// to settle, later when he must first stop his run or get up from a dive (ground_pickup).
+  double ready_time = 0.0;
   double batter_to_first = 4.47; ///< s, his home-to-first time
   std::array<Vec3, 9> start{}, goal{};  ///< each fielder's spot and where he runs (drawing)
   std::string description;       ///< "Fly out to CF", "Double to RF", ...
@@ -89,6 +92,8 @@ inline constexpr double kBaseRoundingTime = 0.3;
 /// How long a fielder needs to cover `distance` m (reaction, acceleration, top speed, the
 /// glove's reach).
 double fielder_run_time(const FielderAbility& f, double distance);
+/// His speed when he has covered `distance` m from a standstill (to within his reach).
+double run_speed(const FielderAbility& f, double distance);
 /// Statcast's catch probability as a function of the time to spare (s, + ahead of the ball,
 /// against the run the fielder's reaction, acceleration and top speed allow): a normal ogive
 /// with a 0.35 s spread centred a quarter-second ahead, so a catch that takes everything he
@@ -96,6 +101,11 @@ double fielder_run_time(const FielderAbility& f, double distance);
 /// (1.6 %) and a second to spare is routine (98 %). The quarter-second: the route's
 /// inefficiency and the last steps' slowing under the ball (ESTIMATE).
 double catch_probability(double time_to_spare);
+
+/// A ball on the ground fielded on the run (`arrive_speed` m/s along `run_dir`, unit, horizontal)
+/// with `slack` s to spare: he spends the slack slowing down, then must stop the part of his
+/// run that carries him away from his throw (`throw_dir`) before he can throw. Seconds lost.
+double plant_time(const FielderAbility& f, double arrive_speed, double slack, const Vec3& run_dir, const Vec3& throw_dir);
 
 /// Fields a batted ball on the ballpark. `batter_sprint` (m/s) sets his home-to-first time
 /// (Statcast's 4.47 s league mean at 27 ft/s). With `rng`, catches and misplays are drawn;

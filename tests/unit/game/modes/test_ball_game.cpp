@@ -158,6 +158,34 @@ TEST_CASE("over 60+ innings the league's hitter hits for MLB's power", "[basebal
   CHECK(pro.slg <= 0.460);
 }
 
+// Infield hits: a grounder the infielder reaches only on the run away from first, or with a
+// dive, leaves the batter time to beat the throw. FanGraphs' league infield-hit rate (IFH%,
+// infield hits per ground ball) runs ~6-8 %, its leaders ~13 % (FanGraphs, "Rhys Hoskins'
+// Secret to Infield Hit Immortality", 2024: 13.2 % third best), and the league's BABIP on
+// ground balls ~.24 (FanGraphs' batted-ball splits). Bands: IFH% 4-11 %, ground-ball BABIP
+// .20-.28 over the ~1500 grounders here.
+TEST_CASE("over 60+ innings grounders become infield hits and singles as MLB's do", "[baseball][game][reference][statistics]") {
+  int grounders = 0, infield_hits = 0, hits = 0;
+  for (const PlateAppearance& pa : pro_games()) {
+    const PitchRecord& last = pa.pitches.back();
+    if (!last.swung || !last.result.contact) continue;
+    const SwingResult& r = last.result;
+    if (r.outcome == BattedOutcome::Foul || r.outcome == BattedOutcome::HomeRun) continue;
+    const bool hit = r.outcome == BattedOutcome::Single || r.outcome == BattedOutcome::Double || r.outcome == BattedOutcome::Triple;
+    infield_hits += hit && r.play.fielder >= 0 && r.play.fielder < 6 ? 1 : 0;  // of any kind, as FanGraphs counts them
+    if (r.play.type != BattedBallType::GroundBall) continue;
+    ++grounders;
+    hits += hit ? 1 : 0;
+  }
+  REQUIRE(grounders >= 800);
+  const double ifh = static_cast<double>(infield_hits) / grounders, babip = static_cast<double>(hits) / grounders;
+  INFO(grounders << " ground balls: " << infield_hits << " infield hits (" << ifh << "), BABIP " << babip);
+  CHECK(ifh >= 0.04);
+  CHECK(ifh <= 0.11);
+  CHECK(babip >= 0.20);
+  CHECK(babip <= 0.28);
+}
+
 // Behind the plate there is the backstop, 60 ft out (Rule 2.01): a foul back is dead there,
 // into it or over it; along the lines the stands' front wall keeps the rest in foul ground.
 TEST_CASE("over 60+ innings no foul ball comes to rest beyond the backstop", "[baseball][game]") {

@@ -124,3 +124,31 @@ TEST_CASE("fly balls that reach the wall: doubles and triples, a few caught at t
   // Above a leaping fielder's glove it cannot be caught; at the track, lower, sometimes it is.
   CHECK(caught <= 0.2 * wall);
 }
+
+// An infielder throws on the run toward his target; running away from it he must stop first,
+// across it half as much; time to spare he spends slowing down.
+TEST_CASE("plant_time: the part of his run he must check before he throws", "[baseball][fielding]") {
+  const FielderAbility f = league_defense().ability[4];  // the shortstop: 5 m/s²
+  const Vec3 toward(0.0, 0.0, 1.0), away(0.0, 0.0, -1.0), across(1.0, 0.0, 0.0);
+  CHECK(plant_time(f, 6.0, 0.0, toward, toward) == Approx(0.0).margin(1e-12));
+  CHECK(plant_time(f, 6.0, 0.0, away, toward) == Approx(6.0 / f.accel));
+  CHECK(plant_time(f, 6.0, 0.0, across, toward) == Approx(0.5 * 6.0 / f.accel));
+  CHECK(plant_time(f, 6.0, 0.4, away, toward) == Approx((6.0 - 0.4 * f.accel) / f.accel));
+  CHECK(plant_time(f, 6.0, 2.0, away, toward) == Approx(0.0).margin(1e-12));  // set before the ball came
+  // His speed when he gets there: from rest at his acceleration, capped at his sprint.
+  CHECK(run_speed(f, f.reach + 2.5) == Approx(std::sqrt(2.0 * f.accel * 2.5)));
+  CHECK(run_speed(f, 100.0) == Approx(f.sprint));
+}
+
+// A grounder the shortstop must range far to his right for: he gets there only on the run
+// away from first (or with a dive) and the long throw loses to the batter. The same ball at
+// him is a routine out.
+TEST_CASE("fielding: a grounder deep in the hole is an infield hit; the same ball at him an out", "[baseball][fielding]") {
+  std::string who;
+  CHECK(outcome(85.0, -4.0, -14.0, 1500.0, &who) == BattedOutcome::Out);
+  CHECK(who == "SS");
+  const BattedOutcome hole = outcome(85.0, -4.0, -27.0, 1500.0, &who);
+  INFO("in the hole: " << to_string(hole) << " fielded by " << who);
+  CHECK(hole == BattedOutcome::Single);
+  CHECK((who == "SS" || who == "3B"));
+}

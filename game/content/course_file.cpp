@@ -65,7 +65,10 @@ int Course::par() const {
 Course load_course(const Assets& assets, std::string_view name_or_path) {
   // A path (a '/' or a .toml name) is read as given; anything else is a built-in name.
   std::filesystem::path path(name_or_path);
-  if (name_or_path.find('/') == std::string_view::npos && path.extension() != ".toml") {
+  std::error_code dir_ec;
+  if (std::filesystem::is_directory(path, dir_ec)) {
+    path /= "course.toml";  // a course directory (course import writes one)
+  } else if (name_or_path.find('/') == std::string_view::npos && path.extension() != ".toml") {
     path = assets.root() / "courses" / (std::string(name_or_path) + ".toml");
     if (std::error_code ec; !std::filesystem::exists(path, ec)) {
       std::string names;

@@ -39,7 +39,8 @@ struct Course {
   int par() const;
 };
 
-/// A course by name ("links": <assets>/courses/links.toml) or by path. Throws InputError
+/// A course by name ("links": <assets>/courses/links.toml) or by path (its .toml, or a course
+/// directory holding course.toml, as course import writes one). Throws InputError
 /// naming file:line and the key for a missing tee, a world without a cup and no `pin`, a
 /// tee or cup off the world's ground, a par outside [3, 6], hole numbers out of order, stroke
 /// indexes that are not 1..n each once, a wind out of range.

@@ -1,0 +1,213 @@
+#include "game/courses/course_import.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+#include "game/content/course_file.hpp"
+#include "game/courses/golf_map.hpp"
+#include "game/courses/surface_plan.hpp"
+#include "game/util/atomic_file.hpp"
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+constexpr double kGreenSearch = 40.0;  // m: a hole's last node this near a green ends on it
+constexpr double kPinInset = 3.0;      // m: a cup this far inside the green's edge at least (ESTIMATE of a fair hole location)
+
+std::string metres(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "\"%.3fm\"", v);
+  return b;
+}
+
+double line_length(const std::vector<LocalPoint>& pts) {
+  double s = 0.0;
+  for (std::size_t i = 1; i < pts.size(); ++i) s += std::hypot(pts[i].x - pts[i - 1].x, pts[i].z - pts[i - 1].z);
+  return s;
+}
+
+// The material colours the built-in worlds use (scripts/gen_worlds.py).
+const char* colour_of(const std::string& m) {
+  if (m == "green") return "0.380 0.760 0.360";
+  if (m == "fairway") return "0.320 0.620 0.260";
+  if (m == "tee") return "0.360 0.660 0.300";
+  if (m == "sand") return "0.860 0.790 0.560";
+  if (m == "water") return "0.150 0.350 0.620";
+  if (m == "out_of_bounds") return "0.450 0.450 0.480";
+  return "0.200 0.420 0.150";  // rough
+}
+
+void write_world(const std::filesystem::path& dir, const std::string& name, const SurfaceMesh& mesh, const SurfacePlan& plan,
+                 const LocalPoint& origin) {
+  std::ostringstream obj;
+  obj << "# " << name << ": written by sweetspot course import\nmtllib world.mtl\n";
+  char line[96];
+  for (const Vec3& v : mesh.vertices) {
+    std::snprintf(line, sizeof line, "v %.4f %.4f %.4f\n", v.x(), v.y(), v.z());
+    obj << line;
+  }
+  std::ostringstream mtl;
+  mtl << "# " << name << ": written by sweetspot course import\n";
+  for (const SurfaceMesh::Group& g : mesh.groups) {
+    obj << "g " << g.material << "\nusemtl " << g.material << "\n";
+    for (const auto& t : g.triangles) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    mtl << "newmtl " << g.material << "\nKd " << colour_of(g.material) << "\nKa 0 0 0\nKs 0 0 0\n";
+  }
+  write_file_atomic(dir / "world.obj", obj.str());
+  write_file_atomic(dir / "world.mtl", mtl.str());
+  std::ostringstream t;
+  t << "# " << name << ": written by sweetspot course import (x east, z south, y up; m)\n"
+    << "name = \"" << name << "\"\nsport = \"golf\"\nmesh = \"world.obj\"\n"
+    << "origin = [" << metres(origin.x) << ", \"0m\", " << metres(origin.z) << "]   # hole 1's tee\n"
+    << "bounds_min = [" << metres(plan.min().x) << ", \"-20m\", " << metres(plan.min().z) << "]\n"
+    << "bounds_max = [" << metres(plan.max().x) << ", \"400m\", " << metres(plan.max().z) << "]\n";
+  write_file_atomic(dir / "world.toml", t.str());
+}
+
+std::string toml_text(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) continue;
+    out += c;
+  }
+  return out + "\"";
+}
+
+void write_course(const std::filesystem::path& dir, const ImportResult& r) {
+  std::ostringstream t;
+  t << "# " << r.name << ": written by sweetspot course import. Each hole: its par, stroke index, the tee\n"
+    << "# spot and the cup [x, z] on world.toml (m east, m south).\n"
+    << "name = " << toml_text(r.name) << "\n";
+  for (const ImportedHole& h : r.holes) {
+    t << "\n[[hole]]\nnumber = " << h.number << "\npar = " << h.par << "\n";
+    if (h.index > 0) t << "index = " << h.index << "\n";
+    char len[64];
+    std::snprintf(len, sizeof len, "   # %s, %.0f m", h.element.c_str(), h.length);
+    t << "world = \"world.toml\"" << len << "\ntee = [" << metres(h.tee.x) << ", " << metres(h.tee.z) << "]\npin = ["
+      << metres(h.pin.x) << ", " << metres(h.pin.z) << "]\n";
+  }
+  write_file_atomic(dir / "course.toml", t.str());
+}
+
+}  // namespace
+
+int par_for_length(double m) {
+  const double yd = m / 0.9144;
+  return yd <= 250.0 ? 3 : yd <= 470.0 ? 4 : 5;
+}
+
+ImportResult import_course(const Assets& assets, const ImportOptions& o) {
+  std::error_code ec;
+  if (std::filesystem::exists(o.out, ec))
+    throw InputError(o.out.string() + ": already exists (course import writes a new directory; remove it or give another -o)");
+  const std::filesystem::path parent = o.out.has_parent_path() ? o.out.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(parent, ec)) throw InputError(o.out.string() + ": its folder " + parent.string() + " does not exist");
+  if (!(o.cell >= 0.5 && o.cell <= 50.0)) throw InputError("--cell: " + std::to_string(o.cell) + " m (allowed [0.5, 50])");
+  note_input_file(o.map);
+  const GolfMap map = read_golf_map(o.map);
+  const std::string where = o.map.string() + ": ";
+  if (map.holes.empty())
+    throw InputError(where + "no golf=hole ways: nothing to play (a course's holes are mapped as golf=hole lines from tee to green)");
+  ImportResult r;
+  r.report = map.repairs;
+  r.name = !o.name.empty() ? o.name : !map.name.empty() ? map.name : o.map.stem().stem().string();
+  const LocalFrame frame = LocalFrame::around(map);
+  SurfacePlan plan(map, frame, r.report);
+  // The holes in the order of their refs, numbered 1..n.
+  std::vector<std::pair<int, const MapHole*>> order;
+  for (const MapHole& h : map.holes) {
+    char* end = nullptr;
+    const long ref = std::strtol(h.ref.c_str(), &end, 10);
+    if (h.ref.empty() || *end != '\0' || ref < 1 || ref > 36)
+      throw InputError(where + h.element + " (golf=hole): ref=" + (h.ref.empty() ? "(none)" : h.ref) +
+                       ": give each hole its number, 1-18, as ref");
+    order.emplace_back(static_cast<int>(ref), &h);
+  }
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (order.size() > 18) throw InputError(where + std::to_string(order.size()) + " golf=hole ways: a round plays at most 18");
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (order[i].first != order[i - 1].first + 1)
+      throw InputError(where + order[i].second->element + " (golf=hole ref=" + order[i].second->ref + "): holes " +
+                       std::to_string(order[i - 1].first) + " and " + std::to_string(order[i].first) +
+                       (order[i].first == order[i - 1].first ? " share a number" : ": the holes between are missing"));
+  if (order.front().first != 1)
+    r.report.push_back("holes numbered from " + std::to_string(order.front().first) + " in the map are played as 1.." +
+                       std::to_string(order.size()));
+  std::set<int> indexes;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const MapHole& m = *order[i].second;
+    ImportedHole h;
+    h.number = static_cast<int>(i) + 1;
+    h.element = m.element;
+    std::vector<LocalPoint> line;
+    for (const GeoPoint& g : m.line) line.push_back(frame.to_local(g));
+    h.tee = line.front();
+    const std::string tee_on = plan.material_at(h.tee.x, h.tee.z);
+    if (tee_on != "tee" && tee_on != "fairway" && tee_on != "rough")
+      throw InputError(where + m.element + " (hole " + m.ref + "): its first node, the tee, lies on " +
+                       (tee_on.empty() ? "no ground" : tee_on) + " (a tee needs dry ground: tee, fairway or rough)");
+    // The cup: a mapped pin on the green the hole ends at, else a fair spot on that green.
+    const LocalPoint end = line.back();
+    std::optional<LocalPoint> pin;
+    for (const MapPin& p : map.pins) {
+      const LocalPoint q = frame.to_local(p.at);
+      if (std::hypot(q.x - end.x, q.z - end.z) <= kGreenSearch && plan.material_at(q.x, q.z) == "green") pin = q;
+    }
+    if (!pin) pin = plan.green_spot(end.x, end.z, kGreenSearch, kPinInset);
+    if (!pin) {
+      char msg[96];
+      std::snprintf(msg, sizeof msg, "): no golf=green within %.0f m of its last node (a hole ends on its green)", kGreenSearch);
+      throw InputError(where + m.element + " (hole " + m.ref + msg);
+    }
+    h.pin = *pin;
+    line.back() = h.pin;
+    h.length = line_length(line);
+    if (m.par) {
+      h.par = *m.par;
+      if (h.par < 3 || h.par > 6) throw InputError(where + m.element + " (hole " + m.ref + "): par=" + std::to_string(h.par) + " (allowed 3-6)");
+    } else {
+      h.par = par_for_length(h.length);
+      char msg[200];
+      std::snprintf(msg, sizeof msg, "%s (hole %s): no par mapped; par %d from its %.0f m (%.0f yd; USGA guideline: par 3 to 250 yd, par 4 to 470)",
+                    m.element.c_str(), m.ref.c_str(), h.par, h.length, h.length / 0.9144);
+      r.report.push_back(msg);
+    }
+    if (m.handicap && *m.handicap >= 1 && *m.handicap <= static_cast<int>(order.size())) {
+      h.index = *m.handicap;
+      indexes.insert(h.index);
+    }
+    r.holes.push_back(h);
+  }
+  if (indexes.size() != r.holes.size()) {
+    if (!indexes.empty()) r.report.push_back("handicap=* is not given once for each of 1.." + std::to_string(r.holes.size()) +
+                                             ": stroke indexes by length instead");
+    for (ImportedHole& h : r.holes) h.index = 0;
+  }
+  const SurfaceMesh mesh = plan.triangulate(o.cell);
+  r.triangles = mesh.triangle_count();
+  for (const SurfaceMesh::Group& g : mesh.groups) r.areas[g.material] = plan.area(g.material);
+  r.report.push_back("no elevation given: the ground is flat");
+  // Written beside the target and renamed into place once it loads as a course.
+  std::string tmpl = (parent / (".course-import-XXXXXX")).string();
+  if (mkdtemp(tmpl.data()) == nullptr) throw InputError(parent.string() + ": cannot create a working directory there");
+  const std::filesystem::path tmp(tmpl);
+  try {
+    write_world(tmp, r.name, mesh, plan, r.holes.front().tee);
+    write_course(tmp, r);
+    (void)load_course(assets, (tmp / "course.toml").string());
+    std::filesystem::rename(tmp, o.out);
+  } catch (...) {
+    std::filesystem::remove_all(tmp, ec);
+    throw;
+  }
+  return r;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,51 @@
+// `sweetspot course import` (DESIGN §9): OpenStreetMap golf data -> a course directory that
+// `round`, `play --mode golf`, `connect --course` and `render` take like the built-in one:
+// course.toml (the holes with their par, stroke index, tee and cup) over one world
+// (world.toml, world.obj, world.mtl) whose ground follows the map's surfaces.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "game/content/assets.hpp"
+#include "game/courses/local_frame.hpp"
+
+namespace sweetspot {
+
+struct ImportOptions {
+  std::filesystem::path map;   ///< .osm or .osm.pbf
+  std::string name;            ///< the course's name ("" : the map's, else the file's stem)
+  std::filesystem::path out;   ///< the course directory to write; must not exist yet
+  double cell = 4.0;           ///< m, the ground's grid where no mapped edge cuts it
+};
+
+struct ImportedHole {
+  int number = 0, par = 0;
+  int index = 0;               ///< stroke index from handicap=*, 0 when the map gives none
+  LocalPoint tee, pin;
+  double length = 0.0;         ///< m along the mapped line, tee to cup
+  std::string element;         ///< the golf=hole way
+};
+
+struct ImportResult {
+  std::string name;
+  std::vector<ImportedHole> holes;
+  std::vector<std::string> report;   ///< what was mended or assumed, one line each
+  std::size_t triangles = 0;
+  std::map<std::string, double> areas;  ///< m² by material
+};
+
+/// Reads the map, lays the course out and writes it to `options.out` (a temporary directory
+/// renamed into place once the course loads, so nothing half-written is ever left). Throws
+/// InputError naming the file or the OSM element: not OSM data, no golf holes, a hole whose
+/// last node has no green near it, a tee in water, an output that exists.
+ImportResult import_course(const Assets& assets, const ImportOptions& options);
+
+/// par from a hole's length where the map gives none: the USGA's guideline yardages for men
+/// (Handicap System manual, §16-2 before 2020): up to 250 yd a par 3, to 470 yd a par 4, a
+/// par 5 beyond.
+int par_for_length(double metres);
+
+}  // namespace sweetspot

@@ -1,0 +1,227 @@
+#include "game/courses/golf_map.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string_view>
+
+// libosmium's builders trip GCC 12's string over-read check on an inlined strlen of an empty
+// tag (a false positive inside the library): silenced for its headers alone.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wstringop-overread"
+#include <osmium/area/assembler.hpp>
+#include <osmium/area/multipolygon_manager.hpp>
+#include <osmium/area/problem_reporter.hpp>
+#include <osmium/handler.hpp>
+#include <osmium/handler/node_locations_for_ways.hpp>
+#include <osmium/index/map/flex_mem.hpp>
+#include <osmium/io/pbf_input.hpp>
+#include <osmium/io/xml_input.hpp>
+#include <osmium/relations/relations_manager.hpp>
+#include <osmium/visitor.hpp>
+#pragma GCC diagnostic pop
+
+#include "physics/error.hpp"
+
+namespace sweetspot {
+namespace {
+
+using Index = osmium::index::map::FlexMem<osmium::unsigned_object_id_type, osmium::Location>;
+using LocationHandler = osmium::handler::NodeLocationsForWays<Index>;
+
+// The surface an object's tags map, if any.
+std::optional<MapSurface> surface_of(const osmium::TagList& tags) {
+  const char* golf = tags["golf"];
+  if (golf != nullptr) {
+    const std::string_view g(golf);
+    if (g == "green") return MapSurface::Green;
+    if (g == "tee") return MapSurface::Tee;
+    if (g == "bunker") return MapSurface::Bunker;
+    if (g == "water_hazard") return MapSurface::Water;
+    if (g == "lateral_water_hazard") return MapSurface::LateralWater;
+    if (g == "fairway") return MapSurface::Fairway;
+    if (g == "rough") return MapSurface::Rough;
+  }
+  if (tags.has_tag("leisure", "golf_course")) return MapSurface::Course;
+  if (tags.has_tag("natural", "water")) return MapSurface::Water;
+  if (tags.has_tag("natural", "sand")) return MapSurface::Bunker;
+  return std::nullopt;
+}
+
+// m between two nearby points (an equirectangular step: exact to a part in 10^6 at a few metres).
+double metres_between(const GeoPoint& a, const GeoPoint& b) {
+  constexpr double kEarth = 6371008.8;  // m, the IUGG mean radius
+  constexpr double kRad = 3.14159265358979323846 / 180.0;
+  const double x = (b.lon - a.lon) * kRad * std::cos(0.5 * (a.lat + b.lat) * kRad), y = (b.lat - a.lat) * kRad;
+  return kEarth * std::hypot(x, y);
+}
+
+std::optional<int> whole(const char* text) {
+  if (text == nullptr) return std::nullopt;
+  char* end = nullptr;
+  const long v = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || v < 0 || v > 1000) return std::nullopt;
+  return static_cast<int>(v);
+}
+
+// dist=*: metres, or with a unit "m", "yd", "yards".
+std::optional<double> distance(const char* text) {
+  if (text == nullptr) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (end == text || !(v > 0.0) || v > 2000.0) return std::nullopt;
+  std::string_view unit(end);
+  while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
+  if (unit.empty() || unit == "m") return v;
+  if (unit == "yd" || unit == "yards") return v * 0.9144;
+  return std::nullopt;
+}
+
+std::vector<GeoPoint> ring_of(const osmium::NodeRefList& nodes) {
+  std::vector<GeoPoint> ring;
+  for (const osmium::NodeRef& n : nodes)
+    if (n.location().valid()) ring.push_back({n.location().lat(), n.location().lon()});
+  return ring;
+}
+
+class Collector : public osmium::handler::Handler {
+ public:
+  explicit Collector(GolfMap& map) : map_(map) {}
+
+  void node(const osmium::Node& n) {
+    if (n.tags().has_tag("golf", "pin") && n.location().valid())
+      map_.pins.push_back({"node " + std::to_string(n.id()), {n.location().lat(), n.location().lon()}});
+  }
+
+  void way(const osmium::Way& w) {
+    const std::string element = "way " + std::to_string(w.id());
+    if (w.tags().has_tag("golf", "hole")) {
+      MapHole h;
+      h.element = element;
+      if (const char* ref = w.tags()["ref"]) h.ref = ref;
+      h.par = whole(w.tags()["par"]);
+      h.handicap = whole(w.tags()["handicap"]);
+      h.dist = distance(w.tags()["dist"]);
+      h.line = ring_of(w.nodes());
+      if (h.line.size() < 2) throw InputError(element + " (golf=hole): fewer than two located nodes: a hole runs from its tee to its green");
+      map_.holes.push_back(std::move(h));
+      return;
+    }
+    const std::optional<MapSurface> s = surface_of(w.tags());
+    if (!s) return;
+    if (*s == MapSurface::Course && map_.name.empty())
+      if (const char* name = w.tags()["name"]) map_.name = name;
+    // A way tagged as an area: closed ways (its two ends one node) are assembled with the
+    // relations; one whose ends only nearly meet is closed here.
+    if (w.nodes().size() < 3 || w.ends_have_same_id()) return;
+    std::vector<GeoPoint> ring = ring_of(w.nodes());
+    if (ring.size() < 3) return;
+    const double gap = metres_between(ring.front(), ring.back());
+    if (gap > kRingGap) {
+      char msg[160];
+      std::snprintf(msg, sizeof msg, " (%s=%s): its ring is not closed, its ends %.1f m apart (closed when within %.0f m)",
+                    w.tags()["golf"] ? "golf" : "area", w.tags()["golf"] ? w.tags()["golf"] : to_string(*s), gap, kRingGap);
+      throw InputError(element + msg);
+    }
+    ring.push_back(ring.front());
+    char msg[120];
+    std::snprintf(msg, sizeof msg, "%s (%s): ring closed across its %.2f m gap", element.c_str(), to_string(*s), gap);
+    map_.repairs.push_back(msg);
+    map_.areas.push_back({*s, element, {{std::move(ring), {}}}});
+  }
+
+  void area(const osmium::Area& a) {
+    const std::optional<MapSurface> s = surface_of(a.tags());
+    if (!s) return;
+    if (*s == MapSurface::Course && map_.name.empty())
+      if (const char* name = a.tags()["name"]) map_.name = name;
+    MapArea out;
+    out.surface = *s;
+    out.element = std::string(a.from_way() ? "way " : "relation ") + std::to_string(a.orig_id());
+    for (const osmium::OuterRing& outer : a.outer_rings()) {
+      MapPolygon p;
+      p.outer = ring_of(outer);
+      for (const osmium::InnerRing& inner : a.inner_rings(outer)) p.inners.push_back(ring_of(inner));
+      if (p.outer.size() >= 4) out.polygons.push_back(std::move(p));
+    }
+    if (!out.polygons.empty()) map_.areas.push_back(std::move(out));
+  }
+
+ private:
+  GolfMap& map_;
+};
+
+// Rings osmium could not assemble: the area is left out, and the report names it.
+class Problems : public osmium::area::ProblemReporter {
+ public:
+  explicit Problems(std::vector<std::string>& out) : out_(out) {}
+  void report_ring_not_closed(const osmium::NodeRef& nr, const osmium::Way*) override {
+    note("a ring is not closed at node " + std::to_string(nr.ref()));
+  }
+  void report_intersection(osmium::object_id_type way1, osmium::Location, osmium::Location, osmium::object_id_type way2,
+                           osmium::Location, osmium::Location, osmium::Location) override {
+    note("ways " + std::to_string(way1) + " and " + std::to_string(way2) + " cross");
+  }
+  void report_invalid_location(osmium::object_id_type way_id, osmium::object_id_type node_id) override {
+    note("way " + std::to_string(way_id) + " refers to node " + std::to_string(node_id) + ", which the file lacks");
+  }
+
+ private:
+  void note(const std::string& what) {
+    const char* kind = m_object_type == osmium::item_type::relation ? "relation " : "way ";
+    out_.push_back(kind + std::to_string(object_id()) + ": " + what + "; left out");
+  }
+  std::vector<std::string>& out_;
+};
+
+}  // namespace
+
+const char* to_string(MapSurface s) {
+  switch (s) {
+    case MapSurface::Green: return "green";
+    case MapSurface::Tee: return "tee";
+    case MapSurface::Bunker: return "bunker";
+    case MapSurface::Water: return "water_hazard";
+    case MapSurface::LateralWater: return "lateral_water_hazard";
+    case MapSurface::Fairway: return "fairway";
+    case MapSurface::Rough: return "rough";
+    case MapSurface::Course: return "golf_course";
+  }
+  return "?";
+}
+
+GolfMap read_golf_map(const std::filesystem::path& path) {
+  GolfMap map;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": no such file");
+  try {
+    const osmium::io::File file(path.string());
+    Problems problems(map.repairs);
+    osmium::area::Assembler::config_type config;
+    config.problem_reporter = &problems;
+    osmium::TagsFilter filter(false);
+    filter.add_rule(true, osmium::TagMatcher("golf"));
+    filter.add_rule(true, osmium::TagMatcher("leisure", "golf_course"));
+    filter.add_rule(true, osmium::TagMatcher("natural", "water"));
+    filter.add_rule(true, osmium::TagMatcher("natural", "sand"));
+    osmium::area::MultipolygonManager<osmium::area::Assembler> manager(config, filter);
+    osmium::relations::read_relations(file, manager);
+    Index index;
+    LocationHandler locations(index);
+    locations.ignore_errors();
+    Collector collector(map);
+    osmium::io::Reader reader(file, osmium::io::read_meta::no);
+    osmium::apply(reader, locations, collector, manager.handler([&collector](osmium::memory::Buffer&& buffer) {
+                    osmium::apply(buffer, collector);
+                  }));
+    reader.close();
+  } catch (const InputError& e) {
+    throw InputError(path.string() + ": " + e.what());
+  } catch (const std::exception& e) {
+    throw InputError(path.string() + ": not OpenStreetMap XML or PBF data (" + e.what() + ")");
+  }
+  return map;
+}
+
+}  // namespace sweetspot

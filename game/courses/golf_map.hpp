@@ -1,0 +1,68 @@
+// What a golf course's OpenStreetMap data says (DESIGN §9, course import): its mapped areas
+// (greens, tees, fairways, bunkers, water, rough, the course's boundary), its holes (the
+// tee-to-green line with ref, par and handicap) and its pins, in latitude and longitude.
+// read_golf_map() reads OSM XML or PBF through libosmium, which assembles multipolygon
+// relations (a green with a hole in it, a fairway in several parts) into areas.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sweetspot {
+
+struct GeoPoint {
+  double lat = 0.0, lon = 0.0;  ///< degrees, WGS84
+};
+
+/// The surfaces a golf map draws, highest first: where two areas overlap (a green inside a
+/// fairway, a bunker inside the rough) the one earlier here covers the ground.
+enum class MapSurface { Green, Tee, Bunker, Water, LateralWater, Fairway, Rough, Course };
+const char* to_string(MapSurface s);
+
+/// One area: outer rings with their holes, as mapped.
+struct MapPolygon {
+  std::vector<GeoPoint> outer;
+  std::vector<std::vector<GeoPoint>> inners;
+};
+struct MapArea {
+  MapSurface surface = MapSurface::Rough;
+  std::string element;  ///< "way 123", "relation 45": what the map calls it, for messages
+  std::vector<MapPolygon> polygons;
+};
+
+/// A golf=hole way: from the tee (its first node) to the green (its last).
+struct MapHole {
+  std::string element;
+  std::string ref;                 ///< the hole's number as mapped ("7")
+  std::optional<int> par, handicap;
+  std::optional<double> dist;      ///< m, the mapped length (dist=*), when given
+  std::vector<GeoPoint> line;
+};
+
+/// A golf=pin node.
+struct MapPin {
+  std::string element;
+  GeoPoint at;
+};
+
+struct GolfMap {
+  std::vector<MapArea> areas;
+  std::vector<MapHole> holes;
+  std::vector<MapPin> pins;
+  std::string name;                    ///< the leisure=golf_course name, when mapped
+  std::vector<std::string> repairs;    ///< what was mended while reading, one line each
+};
+
+/// Reads `path` (.osm XML or .osm.pbf). Throws InputError naming the file for one that is
+/// not OSM data, and naming the element for a ring that is not closed by more than
+/// kRingGap (a gap up to it is closed, and said in `repairs`). Areas whose rings do not
+/// assemble are left out and said in `repairs`.
+GolfMap read_golf_map(const std::filesystem::path& path);
+
+/// m: a way meant as an area whose ends lie this close is closed with a last segment.
+inline constexpr double kRingGap = 2.0;
+
+}  // namespace sweetspot

@@ -1,0 +1,258 @@
+// Course import (game/courses): OpenStreetMap golf data -> a course that rounds play. The
+// fixtures are hand-made maps (tests/data/osm): nine_holes.osm (scripts/gen_osm_fixture.py:
+// nine holes with their par, handicap and dist, a multipolygon green, water and a lateral
+// burn, pins on three greens, the course's boundary) and edge_cases.osm (a hole without par,
+// a green relation with a bunker cut out of it inside a fairway, a tee ring left open by
+// 0.5 m, lateral water, no boundary).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "game/content/course_file.hpp"
+#include "game/courses/course_import.hpp"
+#include "game/courses/golf_map.hpp"
+#include "game/courses/surface_plan.hpp"
+#include "game/modes/golf/bot.hpp"
+#include "game/modes/golf/round.hpp"
+#include "physics/error.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+using Catch::Matchers::Contains;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kData = fs::path(SWEETSPOT_SOURCE_DIR) / "tests" / "data" / "osm";
+
+// A fresh, empty working folder for one test.
+struct Scratch {
+  fs::path dir;
+  explicit Scratch(const std::string& name) : dir(fs::temp_directory_path() / ("sweetspot_import_" + name + "_" + std::to_string(getpid()))) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~Scratch() { fs::remove_all(dir); }
+  // Nothing but what the test put there: no working directory left behind.
+  bool no_leftovers() const {
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().filename().string().rfind(".course-import-", 0) == 0) return false;
+    return true;
+  }
+};
+
+ImportResult import(const fs::path& map, const fs::path& out) {
+  ImportOptions o;
+  o.map = map;
+  o.out = out;
+  return import_course(test::assets(), o);
+}
+
+std::vector<Vec3> obj_vertices(const fs::path& obj) {
+  std::ifstream in(obj);
+  std::vector<Vec3> v;
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("v ", 0) == 0) {
+      std::istringstream s(line.substr(2));
+      double x, y, z;
+      s >> x >> y >> z;
+      v.emplace_back(x, y, z);
+    }
+  return v;
+}
+
+bool has_report(const ImportResult& r, const std::string& a, const std::string& b = "") {
+  for (const std::string& s : r.report)
+    if (s.find(a) != std::string::npos && s.find(b) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("course import: the nine-hole map's holes, pars, lengths and stroke indexes", "[course][import]") {
+  Scratch s("nine");
+  const ImportResult r = import(kData / "nine_holes.osm", s.dir / "nine");
+  CHECK(r.name == "Fixture Nine");
+  REQUIRE(r.holes.size() == 9);
+  // As mapped (scripts/gen_osm_fixture.py): par, handicap and the dist tag, m, tee to green
+  // along the line (the cup moves 4 m past the centre on holes 1, 4 and 7, where a pin is mapped).
+  const int par[] = {4, 3, 5, 4, 4, 3, 4, 5, 4}, index[] = {5, 9, 1, 6, 3, 8, 4, 2, 7};
+  const GolfMap map = read_golf_map(kData / "nine_holes.osm");
+  for (std::size_t i = 0; i < 9; ++i) {
+    INFO("hole " << i + 1);
+    CHECK(r.holes[i].number == static_cast<int>(i) + 1);
+    CHECK(r.holes[i].par == par[i]);
+    CHECK(r.holes[i].index == index[i]);
+    const MapHole* mh = nullptr;
+    for (const MapHole& h : map.holes)
+      if (h.ref == std::to_string(i + 1)) mh = &h;
+    REQUIRE(mh != nullptr);
+    REQUIRE(mh->dist);
+    const double pin_shift = (i == 0 || i == 3 || i == 6) ? 4.0 : 0.0;
+    CHECK(r.holes[i].length == Approx(*mh->dist + pin_shift).margin(1.0));
+  }
+  // The course loads as any course does, tees and cups where the import put them.
+  const Course c = load_course(test::assets(), (s.dir / "nine").string());
+  REQUIRE(c.holes.size() == 9);
+  CHECK(c.par() == 36);
+  for (std::size_t i = 0; i < 9; ++i) {
+    CHECK(c.holes[i].tee.x() == Approx(r.holes[i].tee.x).margin(1e-3));
+    CHECK(c.holes[i].pin.z() == Approx(r.holes[i].pin.z).margin(1e-3));
+  }
+  CHECK(s.no_leftovers());
+}
+
+TEST_CASE("course import: every surface lies where the map draws it, and the mesh keeps the mapped edges", "[course][import]") {
+  Scratch s("surfaces");
+  const fs::path map_path = kData / "nine_holes.osm";
+  std::vector<std::string> report;
+  const GolfMap map = read_golf_map(map_path);
+  const LocalFrame frame = LocalFrame::around(map);
+  const SurfacePlan plan(map, frame, report);
+  // The fixture's 1st hole runs east from its tee along the row at 0 m north; a point in each
+  // surface, through the frame (x east, z south).
+  const auto at = [&](double east, double north) {
+    const LocalPoint o = frame.to_local({56.34, -2.80});
+    return plan.material_at(o.x + east, o.z - north);
+  };
+  CHECK(at(0.0, 0.0) == "tee");
+  CHECK(at(250.0, 0.0) == "fairway");
+  CHECK(at(365.0, 0.0) == "green");
+  CHECK(at(365.0 - 4.0, -18.0) == "sand");      // the greenside bunker
+  CHECK(at(100.0, 40.0) == "rough");
+  CHECK(at(-55.0, 0.0) == "out_of_bounds");     // west of the boundary (40 m west of the tee)
+  CHECK(at(200.0, 7 * 90.0 + 29.0) == "water"); // the burn along the 8th
+  // The 5th green (east, like every odd hole) is a relation with a pot bunker cut into it: sand in the hole, green around.
+  CHECK(at(395.0 - 6.0, 4 * 90.0 + 5.0) == "sand");
+  CHECK(at(395.0 + 6.0, 4 * 90.0) == "green");
+  // Areas: nine 16 x 13 m elliptical greens (24-gons) less the pot bunker and the bunkers' bites.
+  const double polygon = 0.5 * 24 * 16.0 * 13.0 * std::sin(2.0 * 3.14159265358979 / 24);  // one 24-gon's area
+  CHECK(plan.area("green") < 9 * polygon);
+  CHECK(plan.area("green") > 9 * polygon - 9 * 30.0 - 40.0);
+  // Every node of every mapped green is a vertex of the written ground: its edges are the
+  // map's, not a staircase of cells.
+  import(map_path, s.dir / "c");
+  const std::vector<Vec3> v = obj_vertices(s.dir / "c" / "world.obj");
+  int checked = 0;
+  for (const MapArea& a : map.areas) {
+    if (a.surface != MapSurface::Green) continue;
+    for (const MapPolygon& p : a.polygons)
+      for (const GeoPoint& g : p.outer) {
+        const LocalPoint q = frame.to_local(g);
+        double nearest = 1e9;
+        for (const Vec3& w : v) nearest = std::min(nearest, std::hypot(w.x() - q.x, w.z() - q.z));
+        INFO(a.element << " node at " << q.x << ", " << q.z);
+        CHECK(nearest < 1e-3);
+        ++checked;
+      }
+  }
+  CHECK(checked >= 9 * 24);
+}
+
+TEST_CASE("course import: what the map leaves out is mended and said", "[course][import]") {
+  Scratch s("edges");
+  const ImportResult r = import(kData / "edge_cases.osm", s.dir / "e");
+  REQUIRE(r.holes.size() == 2);
+  CHECK(r.holes[0].par == 4);  // 330 m: no par tag, par from its length
+  CHECK(has_report(r, "way 100", "no par mapped; par 4"));
+  CHECK(r.holes[1].par == 3);
+  CHECK(r.holes[0].length == Approx(330.0).margin(1.5));
+  CHECK(has_report(r, "way 201", "ring closed"));
+  CHECK(has_report(r, "no leisure=golf_course boundary"));
+  std::vector<std::string> report;
+  const GolfMap map = read_golf_map(kData / "edge_cases.osm");
+  const LocalFrame frame = LocalFrame::around(map);
+  const SurfacePlan plan(map, frame, report);
+  const auto at = [&](double east, double north) {
+    const LocalPoint o = frame.to_local({56.34, -2.80});
+    return plan.material_at(o.x + east, o.z - north);
+  };
+  CHECK(at(330.0, 0.0) == "green");    // the relation's green, inside the fairway
+  CHECK(at(324.0, 6.0) == "sand");     // its inner ring, a bunker
+  CHECK(at(318.0, -10.0) == "green");
+  CHECK(at(200.0, 0.0) == "fairway");
+  CHECK(at(250.0, 85.0) == "water");   // the lateral hazard
+  CHECK(at(330.0, 60.0) == "tee");     // the tee ring closed across its gap
+  CHECK(at(330.0, 120.0) == "rough");  // within 40 m of a mapped area: the assumed course
+  CHECK(at(330.0, 150.0) == "out_of_bounds");  // past it, in the 30 m ring of out of bounds
+  CHECK(at(330.0, 300.0).empty());             // off the world
+  // The cup: the green's centre, 4 m from the bunker's corner, is fair (>= 3 m in).
+  const LocalPoint c = frame.to_local({56.34, -2.7946584});
+  CHECK(r.holes[0].pin.x == Approx(c.x).margin(0.01));
+}
+
+TEST_CASE("course import: bad maps are refused naming the file or the element; nothing is written", "[course][import][input]") {
+  Scratch s("bad");
+  std::string edge;
+  {
+    std::ifstream in(kData / "edge_cases.osm");
+    edge.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto variant = [&](const std::string& name, const std::string& from, const std::string& to) {
+    std::string text = edge;
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+    const fs::path p = s.dir / name;
+    std::ofstream(p) << text;
+    return p;
+  };
+  const fs::path out = s.dir / "out";
+  {
+    const fs::path p = s.dir / "notes.osm";
+    std::ofstream(p) << "these are not the map you are looking for\n";
+    CHECK_THROWS_WITH(import(p, out), Contains("notes.osm") && Contains("not OpenStreetMap"));
+  }
+  // No holes at all: only a green.
+  {
+    const fs::path p = s.dir / "no_holes.osm";
+    std::ofstream(p) << "<?xml version='1.0'?>\n<osm version='0.6'>\n"
+                        "<node id='1' lat='56.34' lon='-2.8'/><node id='2' lat='56.3401' lon='-2.8'/>"
+                        "<node id='3' lat='56.3401' lon='-2.7998'/>\n"
+                        "<way id='9'><nd ref='1'/><nd ref='2'/><nd ref='3'/><nd ref='1'/><tag k='golf' v='green'/></way>\n</osm>\n";
+    CHECK_THROWS_WITH(import(p, out), Contains("no_holes.osm") && Contains("no golf=hole ways"));
+  }
+  // Hole 2's green is not there.
+  CHECK_THROWS_WITH(import(variant("no_green.osm", "<tag k='golf' v='green'/>\n  </way>\n  <!-- a lateral", "</way>\n  <!-- a lateral"), out),
+                    Contains("way 200") && Contains("no golf=green within 40 m"));
+  // The tee ring left open by 30 m instead of 0.5.
+  CHECK_THROWS_WITH(import(variant("open_ring.osm", "<node id='54' lat='56.34049907'", "<node id='54' lat='56.34076000'"), out),
+                    Contains("way 201") && Contains("not closed"));
+  // A tee in the water.
+  CHECK_THROWS_WITH(import(variant("wet_tee.osm", "<node id='40' lat='56.34053954' lon='-2.79465840'/>",
+                                   "<node id='40' lat='56.34076000' lon='-2.79600000'/>"),
+                           out),
+                    Contains("way 200") && Contains("lies on water"));
+  CHECK_FALSE(fs::exists(out));
+  CHECK(s.no_leftovers());
+  // An output that exists is never overwritten.
+  fs::create_directories(out);
+  CHECK_THROWS_WITH(import(kData / "edge_cases.osm", out), Contains("already exists"));
+  CHECK(fs::is_empty(out));
+}
+
+// The tour bot on the imported nine: every hole holed, a card around the map's par of 36
+// (nine holes of 155-490 m on flat, open ground: a tour player's 33-37).
+TEST_CASE("course import: a tour bot plays the imported nine to about its par", "[course][import][golf][bot]") {
+  Scratch s("round");
+  import(kData / "nine_holes.osm", s.dir / "nine");
+  const Course c = load_course(test::assets(), (s.dir / "nine").string());
+  GolfRound round(test::assets(), c, golfer_skill("tour"));
+  GolfBot bot(test::assets(), golfer_skill("tour"), 3);
+  while (!round.finished()) round.play(bot.plan(round));
+  int strokes = 0;
+  for (const HoleCard& h : round.card()) {
+    INFO("hole " << h.number << ": " << h.strokes << " on a par " << h.par);
+    CHECK(h.holed);
+    CHECK(h.strokes <= h.par + 2);
+    CHECK(h.strokes >= h.par - 2);
+    strokes += h.strokes;
+  }
+  CHECK(strokes >= c.par() - 5);
+  CHECK(strokes <= c.par() + 4);
+}

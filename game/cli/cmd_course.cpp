@@ -1,4 +1,4 @@
-// `sweetspot course import MAP [--name N] [-o DIR] [--cell M]`: an OpenStreetMap golf course
+// `sweetspot course import MAP [--dem RASTER] [--name N] [-o DIR] [--cell M]`: an OpenStreetMap golf course
 // (OSM XML or PBF) -> a course directory that `round --course DIR` plays (DESIGN §9).
 #include <cstdio>
 #include <iostream>
@@ -17,12 +17,15 @@ RunFn setup_course(CLI::App& sub) {
   auto map = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   imp->add_option("map", *map, "the map: OSM XML (.osm) or PBF (.osm.pbf) with golf=hole ways and golf areas")->required();
+  auto dem = std::make_shared<std::string>();
+  imp->add_option("--dem", *dem, "an elevation raster GDAL reads (GeoTIFF, an ASCII grid with its .prj) covering the course; without it the ground is flat");
   imp->add_option("--name", o->name, "the course's name (default: the map's leisure=golf_course name, else the file's)");
   imp->add_option("-o,--out", *out, "the course directory to write (must not exist; default: the name beside the map)");
   imp->add_option("--cell", o->cell, "m, the ground's grid where no mapped edge cuts it, 0.5-50 (default 4)");
-  return [o, map, out](const Assets& assets) -> int {
+  return [o, map, out, dem](const Assets& assets) -> int {
     ImportOptions opt = *o;
     opt.map = *map;
+    opt.dem = *dem;
     opt.out = !out->empty() ? std::filesystem::path(*out) : opt.map.parent_path() / opt.map.stem().stem();
     const ImportResult r = import_course(assets, opt);
     std::cout << r.name << ": " << r.holes.size() << " holes, par ";

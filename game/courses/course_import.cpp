@@ -4,12 +4,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <unistd.h>
 
 #include "game/content/course_file.hpp"
+#include "game/courses/elevation.hpp"
 #include "game/courses/golf_map.hpp"
+#include "game/courses/terrain_heights.hpp"
 #include "game/courses/surface_plan.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
@@ -44,7 +47,7 @@ const char* colour_of(const std::string& m) {
 }
 
 void write_world(const std::filesystem::path& dir, const std::string& name, const SurfaceMesh& mesh, const SurfacePlan& plan,
-                 const LocalPoint& origin) {
+                 const LocalPoint& origin, double ground_at_origin) {
   std::ostringstream obj;
   obj << "# " << name << ": written by sweetspot course import\nmtllib world.mtl\n";
   char line[96];
@@ -61,12 +64,17 @@ void write_world(const std::filesystem::path& dir, const std::string& name, cons
   }
   write_file_atomic(dir / "world.obj", obj.str());
   write_file_atomic(dir / "world.mtl", mtl.str());
+  double low = 0.0, high = 0.0;
+  for (const Vec3& v : mesh.vertices) {
+    low = std::min(low, v.y());
+    high = std::max(high, v.y());
+  }
   std::ostringstream t;
   t << "# " << name << ": written by sweetspot course import (x east, z south, y up; m)\n"
     << "name = \"" << name << "\"\nsport = \"golf\"\nmesh = \"world.obj\"\n"
-    << "origin = [" << metres(origin.x) << ", \"0m\", " << metres(origin.z) << "]   # hole 1's tee\n"
-    << "bounds_min = [" << metres(plan.min().x) << ", \"-20m\", " << metres(plan.min().z) << "]\n"
-    << "bounds_max = [" << metres(plan.max().x) << ", \"400m\", " << metres(plan.max().z) << "]\n";
+    << "origin = [" << metres(origin.x) << ", " << metres(ground_at_origin) << ", " << metres(origin.z) << "]   # hole 1's tee\n"
+    << "bounds_min = [" << metres(plan.min().x) << ", " << metres(low - 20.0) << ", " << metres(plan.min().z) << "]\n"
+    << "bounds_max = [" << metres(plan.max().x) << ", " << metres(high + 400.0) << ", " << metres(plan.max().z) << "]\n";
   write_file_atomic(dir / "world.toml", t.str());
 }
 
@@ -111,6 +119,11 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
   if (!std::filesystem::is_directory(parent, ec)) throw InputError(o.out.string() + ": its folder " + parent.string() + " does not exist");
   if (!(o.cell >= 0.5 && o.cell <= 50.0)) throw InputError("--cell: " + std::to_string(o.cell) + " m (allowed [0.5, 50])");
   note_input_file(o.map);
+  std::unique_ptr<ElevationModel> dem;
+  if (!o.dem.empty()) {
+    note_input_file(o.dem);
+    dem = std::make_unique<ElevationModel>(o.dem);
+  }
   const GolfMap map = read_golf_map(o.map);
   const std::string where = o.map.string() + ": ";
   if (map.holes.empty())
@@ -166,6 +179,38 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
       std::snprintf(msg, sizeof msg, "): no golf=green within %.0f m of its last node (a hole ends on its green)", kGreenSearch);
       throw InputError(where + m.element + " (hole " + m.ref + msg);
     }
+    if (dem) {
+      // On a sloping green the cup goes where the putting surface is nearly level: the spot
+      // nearest the mapped one, 1 m apart, with a slope of kMaxPinSlope at most.
+      double slope = green_slope(*dem, frame, *pin);
+      if (slope > kMaxPinSlope) {
+        std::optional<LocalPoint> level;
+        double flattest = slope;
+        LocalPoint flat = *pin;
+        for (const LocalPoint& q : plan.green_grid(pin->x, pin->z, 1.0, kPinInset, 1.0)) {
+          const double sq = green_slope(*dem, frame, q);
+          if (sq <= kMaxPinSlope) {
+            level = q;
+            slope = sq;
+            break;
+          }
+          if (sq < flattest) {
+            flattest = sq;
+            flat = q;
+          }
+        }
+        if (!level) {
+          char msg[200];
+          std::snprintf(msg, sizeof msg, "%s (hole %s): no spot on its green slopes %.0f %% or less; the cup is at its flattest, %.1f %%",
+                        m.element.c_str(), m.ref.c_str(), 100.0 * kMaxPinSlope, 100.0 * flattest);
+          r.report.push_back(msg);
+          level = flat;
+          slope = flattest;
+        }
+        pin = level;
+      }
+      h.pin_slope = slope;
+    }
     h.pin = *pin;
     line.back() = h.pin;
     h.length = line_length(line);
@@ -190,16 +235,33 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
                                              ": stroke indexes by length instead");
     for (ImportedHole& h : r.holes) h.index = 0;
   }
-  const SurfaceMesh mesh = plan.triangulate(o.cell);
+  SurfaceMesh mesh = plan.triangulate(o.cell, dem ? std::min(o.green_cell, o.cell) : o.cell);
   r.triangles = mesh.triangle_count();
   for (const SurfaceMesh::Group& g : mesh.groups) r.areas[g.material] = plan.area(g.material);
-  r.report.push_back("no elevation given: the ground is flat");
+  double tee_height = 0.0;
+  if (dem) {
+    shape_heights(mesh, plan, *dem, frame);
+    // Heights from hole 1's tee, which stands at y = 0 as every world's origin does.
+    tee_height = dem->heights(frame, {r.holes.front().tee}).front();
+    for (Vec3& v : mesh.vertices) v.y() -= tee_height;
+    double low = HUGE_VAL, high = -HUGE_VAL;
+    for (const Vec3& v : mesh.vertices) {
+      low = std::min(low, v.y());
+      high = std::max(high, v.y());
+    }
+    char msg[160];
+    std::snprintf(msg, sizeof msg, "ground from %s: %.1f m to %.1f m about hole 1's tee (%.1f m above the raster's datum)",
+                  o.dem.filename().string().c_str(), low, high, tee_height);
+    r.report.push_back(msg);
+  } else {
+    r.report.push_back("no elevation given: the ground is flat");
+  }
   // Written beside the target and renamed into place once it loads as a course.
   std::string tmpl = (parent / (".course-import-XXXXXX")).string();
   if (mkdtemp(tmpl.data()) == nullptr) throw InputError(parent.string() + ": cannot create a working directory there");
   const std::filesystem::path tmp(tmpl);
   try {
-    write_world(tmp, r.name, mesh, plan, r.holes.front().tee);
+    write_world(tmp, r.name, mesh, plan, r.holes.front().tee, 0.0);
     write_course(tmp, r);
     (void)load_course(assets, (tmp / "course.toml").string());
     std::filesystem::rename(tmp, o.out);

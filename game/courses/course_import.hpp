@@ -16,9 +16,11 @@ namespace sweetspot {
 
 struct ImportOptions {
   std::filesystem::path map;   ///< .osm or .osm.pbf
+  std::filesystem::path dem;   ///< an elevation raster GDAL reads; empty: flat ground
   std::string name;            ///< the course's name ("" : the map's, else the file's stem)
   std::filesystem::path out;   ///< the course directory to write; must not exist yet
   double cell = 4.0;           ///< m, the ground's grid where no mapped edge cuts it
+  double green_cell = 0.5;     ///< m, the greens' grid where the ground has heights
 };
 
 struct ImportedHole {
@@ -26,6 +28,7 @@ struct ImportedHole {
   int index = 0;               ///< stroke index from handicap=*, 0 when the map gives none
   LocalPoint tee, pin;
   double length = 0.0;         ///< m along the mapped line, tee to cup
+  double pin_slope = 0.0;      ///< the putting surface's slope at the cup (rise over run)
   std::string element;         ///< the golf=hole way
 };
 
@@ -36,6 +39,10 @@ struct ImportResult {
   std::size_t triangles = 0;
   std::map<std::string, double> areas;  ///< m² by material
 };
+
+/// A cup sits where the green slopes this much at most (the USGA's guidance on hole
+/// locations: ~3 % at most at green speeds of 10-11 ft).
+inline constexpr double kMaxPinSlope = 0.03;
 
 /// Reads the map, lays the course out and writes it to `options.out` (a temporary directory
 /// renamed into place once the course loads, so nothing half-written is ever left). Throws

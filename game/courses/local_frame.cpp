@@ -43,4 +43,18 @@ LocalPoint LocalFrame::to_local(const GeoPoint& p) const {
   return {east, -north};
 }
 
+GeoPoint LocalFrame::to_geo(const LocalPoint& p) const {
+  GeoPoint g{origin_.lat, origin_.lon};
+  for (int i = 0; i < 4; ++i) {
+    const double mid = 0.5 * (g.lat + origin_.lat) * kRad;
+    const double s_mid = std::sin(mid);
+    const double meridional = kA * (1.0 - kE2) / std::pow(1.0 - kE2 * s_mid * s_mid, 1.5);
+    g.lat = origin_.lat + (-p.z) / meridional / kRad;
+  }
+  const double s = std::sin(g.lat * kRad);
+  const double prime_vertical = kA / std::sqrt(1.0 - kE2 * s * s);
+  g.lon = origin_.lon + p.x / (prime_vertical * std::cos(g.lat * kRad)) / kRad;
+  return g;
+}
+
 }  // namespace sweetspot

@@ -19,6 +19,8 @@ class LocalFrame {
   /// The frame centred on the middle of everything `map` draws.
   static LocalFrame around(const GolfMap& map);
   LocalPoint to_local(const GeoPoint& p) const;
+  /// The inverse of to_local (to a micrometre: three fixed-point steps on the latitude).
+  GeoPoint to_geo(const LocalPoint& p) const;
   const GeoPoint& origin() const { return origin_; }
 
  private:

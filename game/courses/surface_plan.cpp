@@ -261,7 +261,110 @@ std::optional<LocalPoint> SurfacePlan::green_spot(double x, double z, double wit
   return out;
 }
 
-SurfaceMesh SurfacePlan::triangulate(double cell) const {
+std::vector<LocalPoint> SurfacePlan::green_grid(double x, double z, double within, double inset, double step) const {
+  GEOSContextHandle_t ctx = impl_->ctx;
+  GEOSGeometry* p = GEOSGeom_createPointFromXY_r(ctx, x, z);
+  const GEOSGeometry* best = nullptr;
+  double best_d = within;
+  for (const GEOSGeometry* g : impl_->greens) {
+    double d = 0.0;
+    if (GEOSDistance_r(ctx, g, p, &d) == 1 && d <= best_d) {
+      best_d = d;
+      best = g;
+    }
+  }
+  GEOSGeom_destroy_r(ctx, p);
+  std::vector<LocalPoint> out;
+  if (best == nullptr) return out;
+  GEOSGeometry* core = GEOSBuffer_r(ctx, best, -inset, 8);  // the green shrunk by the inset
+  if (core == nullptr) return out;
+  const GEOSPreparedGeometry* prep = GEOSPrepare_r(ctx, core);
+  double x0 = 0, z0 = 0, x1 = 0, z1 = 0;
+  GEOSGeom_getXMin_r(ctx, core, &x0);
+  GEOSGeom_getYMin_r(ctx, core, &z0);
+  GEOSGeom_getXMax_r(ctx, core, &x1);
+  GEOSGeom_getYMax_r(ctx, core, &z1);
+  if (GEOSisEmpty_r(ctx, core) != 1)
+    for (double qz = std::floor(z0 / step) * step; qz <= z1; qz += step)
+      for (double qx = std::floor(x0 / step) * step; qx <= x1; qx += step) {
+        GEOSGeometry* q = GEOSGeom_createPointFromXY_r(ctx, qx, qz);
+        if (GEOSPreparedContains_r(ctx, prep, q) == 1) out.push_back({qx, qz});
+        GEOSGeom_destroy_r(ctx, q);
+      }
+  GEOSPreparedGeom_destroy_r(ctx, prep);
+  GEOSGeom_destroy_r(ctx, core);
+  std::stable_sort(out.begin(), out.end(), [&](const LocalPoint& a, const LocalPoint& b) {
+    return std::hypot(a.x - x, a.z - z) < std::hypot(b.x - x, b.z - z);
+  });
+  return out;
+}
+
+double SurfacePlan::depth_inside(double x, double z) const {
+  GEOSContextHandle_t ctx = impl_->ctx;
+  GEOSGeometry* p = GEOSGeom_createPointFromXY_r(ctx, x, z);
+  double d = 0.0;
+  for (const Impl::Region& r : impl_->regions)
+    if (GEOSPreparedIntersects_r(ctx, r.prepared, p) == 1) {
+      GEOSGeometry* edge = GEOSBoundary_r(ctx, r.geom);
+      if (edge == nullptr || GEOSDistance_r(ctx, edge, p, &d) != 1) d = 0.0;
+      if (edge) GEOSGeom_destroy_r(ctx, edge);
+      break;
+    }
+  GEOSGeom_destroy_r(ctx, p);
+  return d;
+}
+
+namespace {
+// The polygons of a polygonal geometry.
+std::vector<const GEOSGeometry*> polygons_of(GEOSContextHandle_t ctx, const GEOSGeometry* g) {
+  std::vector<const GEOSGeometry*> out;
+  if (GEOSGeomTypeId_r(ctx, g) == GEOS_POLYGON) out.push_back(g);
+  else
+    for (int i = 0; i < GEOSGetNumGeometries_r(ctx, g); ++i) {
+      const GEOSGeometry* part = GEOSGetGeometryN_r(ctx, g, i);
+      if (GEOSGeomTypeId_r(ctx, part) == GEOS_POLYGON) out.push_back(part);
+    }
+  return out;
+}
+}  // namespace
+
+std::vector<std::vector<LocalPoint>> SurfacePlan::water_outlines() const {
+  GEOSContextHandle_t ctx = impl_->ctx;
+  std::vector<std::vector<LocalPoint>> out;
+  for (const Impl::Region& r : impl_->regions) {
+    if (r.material != "water") continue;
+    for (const GEOSGeometry* poly : polygons_of(ctx, r.geom)) {
+      const GEOSCoordSequence* seq = GEOSGeom_getCoordSeq_r(ctx, GEOSGetExteriorRing_r(ctx, poly));
+      unsigned n = 0;
+      GEOSCoordSeq_getSize_r(ctx, seq, &n);
+      std::vector<LocalPoint> ring;
+      for (unsigned i = 0; i < n; ++i) {
+        double x = 0, z = 0;
+        GEOSCoordSeq_getXY_r(ctx, seq, i, &x, &z);
+        ring.push_back({x, z});
+      }
+      out.push_back(std::move(ring));
+    }
+  }
+  return out;
+}
+
+int SurfacePlan::water_at(double x, double z) const {
+  GEOSContextHandle_t ctx = impl_->ctx;
+  GEOSGeometry* p = GEOSGeom_createPointFromXY_r(ctx, x, z);
+  int k = 0, found = -1;
+  for (const Impl::Region& r : impl_->regions) {
+    if (r.material != "water") continue;
+    for (const GEOSGeometry* poly : polygons_of(ctx, r.geom)) {
+      if (found < 0 && GEOSIntersects_r(ctx, poly, p) == 1) found = k;
+      ++k;
+    }
+  }
+  GEOSGeom_destroy_r(ctx, p);
+  return found;
+}
+
+SurfaceMesh SurfacePlan::triangulate(double cell, double green_cell) const {
   const Impl& m = *impl_;
   GEOSContextHandle_t ctx = m.ctx;
   SurfaceMesh mesh;
@@ -323,16 +426,32 @@ SurfaceMesh SurfacePlan::triangulate(double cell) const {
       for (std::size_t r = 0; r < m.regions.size(); ++r) {
         if (rows[r] == nullptr || GEOSisEmpty_r(ctx, rows[r]) == 1) continue;
         if (GEOSPreparedContains_r(ctx, m.regions[r].prepared, box) == 1) {
-          emit(m.regions[r].material, xa, za, xb, za, xb, zb);
-          emit(m.regions[r].material, xa, za, xb, zb, xa, zb);
+          const double step = m.regions[r].material == "green" && green_cell < cell ? green_cell : cell;
+          for (double sz = za; sz < zb - 1e-9; sz += step)
+            for (double sx = xa; sx < xb - 1e-9; sx += step) {
+              const double ex = std::min(xb, sx + step), ez = std::min(zb, sz + step);
+              emit(m.regions[r].material, sx, sz, ex, sz, ex, ez);
+              emit(m.regions[r].material, sx, sz, ex, ez, sx, ez);
+            }
           break;
         }
         if (GEOSPreparedIntersects_r(ctx, m.regions[r].prepared, box) != 1) continue;
         GEOSGeometry* piece = GEOSClipByRect_r(ctx, rows[r], xa, za, xb, zb);
-        if (piece != nullptr) {
+        if (piece == nullptr) continue;
+        if (m.regions[r].material == "green" && green_cell < cell) {
+          // The green's finer grid inside this cell.
+          for (double sz = za; sz < zb - 1e-9; sz += green_cell)
+            for (double sx = xa; sx < xb - 1e-9; sx += green_cell) {
+              GEOSGeometry* sub = GEOSClipByRect_r(ctx, piece, sx, sz, std::min(xb, sx + green_cell), std::min(zb, sz + green_cell));
+              if (sub != nullptr) {
+                triangulate_piece(m.regions[r].material, sub);
+                GEOSGeom_destroy_r(ctx, sub);
+              }
+            }
+        } else {
           triangulate_piece(m.regions[r].material, piece);
-          GEOSGeom_destroy_r(ctx, piece);
         }
+        GEOSGeom_destroy_r(ctx, piece);
       }
       GEOSGeom_destroy_r(ctx, box);
     }

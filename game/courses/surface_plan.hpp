@@ -51,8 +51,17 @@ class SurfacePlan {
   /// it is on the green and at least `inset` m from its edge, else the point of that green
   /// farthest inside it (its pole of inaccessibility). None when no green is that near.
   std::optional<LocalPoint> green_spot(double x, double z, double within, double inset) const;
-  /// The ground cut into cells of `cell` m along every surface edge; flat (y = 0).
-  SurfaceMesh triangulate(double cell) const;
+  /// Points `step` m apart on the green nearest (x, z) within `within` m, each at least
+  /// `inset` m inside its edge, nearest (x, z) first. Empty when no green is that near.
+  std::vector<LocalPoint> green_grid(double x, double z, double within, double inset, double step) const;
+  /// m from (x, z) to the edge of the surface it lies on (0 on an edge or off the plan).
+  double depth_inside(double x, double z) const;
+  /// The outline of each body of water (its outer ring), and which holds (x, z) (-1: none).
+  std::vector<std::vector<LocalPoint>> water_outlines() const;
+  int water_at(double x, double z) const;
+  /// The ground cut into cells of `cell` m along every surface edge, the greens into cells of
+  /// `green_cell` m (no finer than `cell`); flat (y = 0).
+  SurfaceMesh triangulate(double cell, double green_cell) const;
   LocalPoint min() const;
   LocalPoint max() const;
 

@@ -12,10 +12,16 @@
 #include <sstream>
 #include <unistd.h>
 
+#include <cpl_conv.h>
+#include <gdal.h>
+#include <ogr_srs_api.h>
+
 #include "game/content/course_file.hpp"
 #include "game/courses/course_import.hpp"
+#include "game/courses/elevation.hpp"
 #include "game/courses/golf_map.hpp"
 #include "game/courses/surface_plan.hpp"
+#include "game/courses/terrain_heights.hpp"
 #include "game/modes/golf/bot.hpp"
 #include "game/modes/golf/round.hpp"
 #include "physics/error.hpp"
@@ -255,4 +261,156 @@ TEST_CASE("course import: a tour bot plays the imported nine to about its par", 
   }
   CHECK(strokes >= c.par() - 5);
   CHECK(strokes <= c.par() + 4);
+}
+
+// ---- elevation (--dem) ---------------------------------------------------------------------
+
+namespace {
+
+// A GeoTIFF in UTM zone 30N (EPSG:32630) under the nine-hole fixture, 1 m cells, made here:
+// the ground rises 1 % to the east, and round the 3rd green an 8 % ramp climbs east of its
+// centre (a green steep on its east half, gentle on its west). `shift_east` m moves the whole
+// raster (a raster of another place).
+struct Utm {
+  OGRSpatialReferenceH wgs = nullptr, utm = nullptr;
+  OGRCoordinateTransformationH to = nullptr;
+  Utm() {
+    wgs = OSRNewSpatialReference(nullptr);
+    utm = OSRNewSpatialReference(nullptr);
+    OSRImportFromEPSG(wgs, 4326);
+    OSRImportFromEPSG(utm, 32630);
+    OSRSetAxisMappingStrategy(wgs, OAMS_TRADITIONAL_GIS_ORDER);
+    OSRSetAxisMappingStrategy(utm, OAMS_TRADITIONAL_GIS_ORDER);
+    to = OCTNewCoordinateTransformation(wgs, utm);
+  }
+  ~Utm() {
+    OCTDestroyCoordinateTransformation(to);
+    OSRDestroySpatialReference(wgs);
+    OSRDestroySpatialReference(utm);
+  }
+  // The fixture's (east, north) offsets from 56.34 N, 2.80 W (scripts/gen_osm_fixture.py's metres).
+  std::pair<double, double> of(double east, double north) const {
+    const double m_lat = 111132.954 - 559.822 * std::cos(2 * 56.34 * 3.14159265358979 / 180.0);
+    const double m_lon = 111412.84 * std::cos(56.34 * 3.14159265358979 / 180.0);
+    double x = -2.80 + east / m_lon, y = 56.34 + north / m_lat;
+    OCTTransform(to, 1, &x, &y, nullptr);
+    return {x, y};
+  }
+};
+
+double ground(const Utm& u, double e, double n) {
+  const auto [e0, n0] = u.of(0.0, 0.0);
+  const auto [e3, n3] = u.of(470.0, 180.0);  // the 3rd green's centre
+  double h = 50.0 + 0.01 * (e - e0);
+  if (std::abs(n - n3) < 40.0 && e > e3) h += 0.08 * (e - e3);
+  return h;
+}
+
+fs::path make_raster(const fs::path& path, double shift_east, bool with_crs = true) {
+  GDALAllRegister();
+  const Utm u;
+  const auto [w0, s0] = u.of(-120.0, -120.0);
+  const auto [e1, n1] = u.of(650.0, 850.0);
+  const int width = static_cast<int>(e1 - w0) + 1, height = static_cast<int>(n1 - s0) + 1;
+  GDALDriverH drv = GDALGetDriverByName("GTiff");
+  GDALDatasetH ds = GDALCreate(drv, path.string().c_str(), width, height, 1, GDT_Float32, nullptr);
+  double gt[6] = {std::floor(w0) + shift_east, 1.0, 0.0, std::ceil(n1), 0.0, -1.0};
+  GDALSetGeoTransform(ds, gt);
+  if (with_crs) {
+    char* wkt = nullptr;
+    OSRExportToWkt(u.utm, &wkt);
+    GDALSetProjection(ds, wkt);
+    CPLFree(wkt);
+  }
+  std::vector<float> row(static_cast<std::size_t>(width));
+  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+  for (int r = 0; r < height; ++r) {
+    for (int c = 0; c < width; ++c)
+      row[static_cast<std::size_t>(c)] = static_cast<float>(ground(u, gt[0] - shift_east + c + 0.5, gt[3] - r - 0.5));
+    REQUIRE(GDALRasterIO(band, GF_Write, 0, r, width, 1, row.data(), width, 1, GDT_Float32, 0, 0) == CE_None);
+  }
+  GDALClose(ds);
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("course import --dem: the ground follows the raster; greens smooth, cups level, bunkers sunk, water flat",
+          "[course][import][dem]") {
+  Scratch s("dem");
+  const fs::path tif = make_raster(s.dir / "ground.tif", 0.0);
+  ImportOptions o;
+  o.map = kData / "nine_holes.osm";
+  o.dem = tif;
+  o.out = s.dir / "hilly";
+  const ImportResult r = import_course(test::assets(), o);
+  CHECK(has_report(r, "ground from ground.tif"));
+  const Course c = load_course(test::assets(), o.out.string());
+  const Utm u;
+  // Tees stand on the raster's ground, heights from hole 1's tee (1 % a metre east).
+  const auto raw = [&](double e, double n) {
+    const auto [x, y] = u.of(e, n);
+    return ground(u, x, y);
+  };
+  CHECK(c.holes[0].tee.y() == Approx(0.0).margin(0.02));
+  CHECK(c.holes[1].tee.y() == Approx(raw(520.0, 90.0) - raw(0.0, 0.0)).margin(0.05));  // 5.2 m up
+  // Every cup on a putting surface of 3 % at most; the 3rd's moved off the ramp, west of the
+  // green's centre (470 m east), out of the ramp's 8 %.
+  for (const ImportedHole& h : r.holes) {
+    INFO("hole " << h.number << " cup slope " << h.pin_slope);
+    CHECK(h.pin_slope <= kMaxPinSlope + 1e-9);
+  }
+  const LocalPoint centre3 = LocalFrame::around(read_golf_map(o.map)).to_local({56.34 + 180.0 / 111064.2, -2.80 + 470.0 / 61688.0});
+  const ElevationModel dem(tif);
+  CHECK(green_slope(dem, LocalFrame::around(read_golf_map(o.map)), centre3) > kMaxPinSlope);  // its deepest point is too steep
+  CHECK(r.holes[2].pin.x < centre3.x - 1.0);
+  // The written ground: bunkers below the raster's ground, water one flat plane below its bank.
+  const std::vector<Vec3> v = obj_vertices(o.out / "world.obj");
+  std::vector<std::string> report;
+  const GolfMap map = read_golf_map(o.map);
+  const LocalFrame frame = LocalFrame::around(map);
+  const SurfacePlan plan(map, frame, report);
+  const double tee1 = raw(0.0, 0.0);
+  int sunk = 0, wet = 0;
+  double level = 0.0;
+  for (const Vec3& p : v) {
+    const GeoPoint g = frame.to_geo({p.x(), p.z()});
+    const auto [x, y] = [&] {
+      double gx = g.lon, gy = g.lat;
+      OCTTransform(u.to, 1, &gx, &gy, nullptr);
+      return std::make_pair(gx, gy);
+    }();
+    const double below = ground(u, x, y) - tee1 - p.y();
+    const std::string m = plan.material_at(p.x(), p.z());
+    if (m == "sand" && plan.depth_inside(p.x(), p.z()) > 1.0) {
+      CHECK(below > 0.3);
+      ++sunk;
+    }
+    if (m == "water" && plan.depth_inside(p.x(), p.z()) > 0.5 && plan.water_at(p.x(), p.z()) == 0) {
+      if (wet++ == 0) level = p.y();
+      CHECK(p.y() == Approx(level).margin(1e-9));
+      CHECK(below > 0.25);
+    }
+  }
+  CHECK(sunk > 20);
+  CHECK(wet > 5);
+  // The greens' grid is finer: more triangles than the flat import's.
+  Scratch flat("dem_flat");
+  CHECK(r.triangles > import(o.map, flat.dir / "flat").triangles + 9 * 500);
+}
+
+TEST_CASE("course import --dem: a raster of another place, or none, is refused naming the file", "[course][import][dem][input]") {
+  Scratch s("dem_bad");
+  ImportOptions o;
+  o.map = kData / "nine_holes.osm";
+  o.out = s.dir / "c";
+  o.dem = make_raster(s.dir / "elsewhere.tif", 100000.0);
+  CHECK_THROWS_WITH(import_course(test::assets(), o), Contains("elsewhere.tif") && Contains("does not cover the course"));
+  o.dem = make_raster(s.dir / "nowhere.tif", 0.0, false);
+  CHECK_THROWS_WITH(import_course(test::assets(), o), Contains("nowhere.tif") && Contains("no coordinate reference system"));
+  o.dem = s.dir / "notes.tif";
+  std::ofstream(o.dem) << "not a raster\n";
+  CHECK_THROWS_WITH(import_course(test::assets(), o), Contains("notes.tif") && Contains("not an elevation raster"));
+  CHECK_FALSE(fs::exists(o.out));
+  CHECK(s.no_leftovers());
 }

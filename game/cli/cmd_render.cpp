@@ -12,6 +12,7 @@
 #include "game/cli/command.hpp"
 #include "game/render/image.hpp"
 #include "game/cli/launch_flags.hpp"
+#include "game/content/course_file.hpp"
 #include "game/content/quantity_text.hpp"
 #include "game/content/scenario.hpp"
 #include "game/render/render_command.hpp"
@@ -20,6 +21,7 @@
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 #include "game/rules/run_shot.hpp"
+#include "physics/ground.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -35,7 +37,35 @@ struct RenderOptions {
   std::string impactor;  // "" = the shot's own (or the sport's default for launch numbers)
   int samples = 0;
   std::string shadows = "auto";
+  std::string course;  // a course (name, .toml or directory) for a hole's overview
+  int hole = 0;
 };
+
+// A hole's overview: its line from the tee to the cup drawn as the tracer, 1 m over the
+// ground, labelled with its length where it meets the cup.
+ShotTrajectory hole_line(const CourseHole& h) {
+  ShotTrajectory t;
+  const int n = 64;
+  const double len = h.length();
+  for (int i = 0; i <= n; ++i) {
+    const double u = static_cast<double>(i) / n;
+    TrajectorySample s;
+    s.t = u * 2.0;
+    Vec3 p = h.tee + u * (h.pin - h.tee);
+    SurfaceContact hit;
+    const WorldDescription& d = h.world->description();
+    if (ground_under(*h.world->world, p.x(), p.z(), d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit)) p.y() = hit.point.y();
+    s.position = p + Vec3(0.0, 1.0, 0.0);
+    s.velocity = (h.pin - h.tee) / 2.0;
+    t.samples.push_back(s);
+  }
+  t.samples.back().position = h.pin;
+  t.samples.back().phase = Phase::Rest;
+  t.summary.carry_m = t.summary.total_m = len;
+  t.summary.hang_time_s = t.summary.total_time_s = 2.0;
+  t.summary.landing_position = t.summary.rest_position = h.pin;
+  return t;
+}
 
 RunFn setup_render(CLI::App& sub) {
   auto o = std::make_shared<RenderOptions>();
@@ -54,6 +84,8 @@ RunFn setup_render(CLI::App& sub) {
       ->check(CLI::IsMember({"driver_head", "iron_head", "putter_head", "bat", "none"}));
   sub.add_option("--msaa", o->samples, "multisample count: 0 = auto (4 on a GPU, 1 on llvmpipe), 1, 2, 4, 8")
       ->capture_default_str()->check(CLI::IsMember({0, 1, 2, 4, 8}));
+  sub.add_option("--course", o->course, "a course (name, .toml or a directory from course import): draw the overview of --hole");
+  sub.add_option("--hole", o->hole, "the hole to overview with --course, 1..18")->check(CLI::Range(1, 18));
   sub.add_option("--shadows", o->shadows, "sun shadows: auto (on with a GPU, off on llvmpipe for speed), on or off")
       ->capture_default_str()->check(CLI::IsMember({"auto", "on", "off"}));
   return [o, launch_only](const Assets& assets) -> int {
@@ -68,6 +100,37 @@ RunFn setup_render(CLI::App& sub) {
       }
     }
     check_png_output(o->output, "-o");
+    if (!o->course.empty() || o->hole > 0) {
+      if (o->course.empty() || o->hole == 0) throw InputError("render: --course and --hole go together (a hole's overview)");
+      if (!o->scenario.empty() || has_launch_numbers(o->launch))
+        throw InputError("render: --course draws a hole's overview; give no SCENARIO or launch flags with it");
+      const Course c = load_course(assets, o->course);
+      if (o->hole > static_cast<int>(c.holes.size()))
+        throw InputError("--hole " + std::to_string(o->hole) + ": the course has " + std::to_string(c.holes.size()) + " holes");
+      const CourseHole& h = c.holes[static_cast<std::size_t>(o->hole - 1)];
+      RenderRequest r;
+      r.assets = &assets;
+      r.world = h.world;
+      r.flag = h.pin;
+      r.tee = true;
+      r.camera = parse_camera_kind(o->camera);
+      r.width = o->width;
+      r.height = o->height;
+      r.samples = o->samples;
+      r.shadows = o->shadows == "on" ? 1 : o->shadows == "off" ? 0 : -1;
+      try {
+        render_shot_png(hole_line(h), r, o->output);
+      } catch (const RenderUnavailable& e) {
+        std::cerr << "sweetspot render: " << e.what() << "\n";
+        return 3;
+      } catch (const RenderError& e) {
+        std::cerr << "sweetspot render: " << e.what() << "\n";
+        return 3;
+      }
+      std::cout << "sweetspot render: wrote " << o->output << " (" << c.name << ", hole " << h.number << ", par " << h.par
+                << ", camera " << to_string(r.camera) << ")\n";
+      return 0;
+    }
     Scenario scenario;
     if (!o->scenario.empty()) {
       if (has_launch_numbers(o->launch))

@@ -1,5 +1,7 @@
 #include "game/bench/shot_bench.hpp"
 
+#include "game/content/course_file.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -82,6 +84,19 @@ ShotBenchResult bench_golf_shots(const Assets& assets, double min_seconds, Sweep
   const World world(assets.world("golf_hole")->description(), method);
   const ShotModel model = golf_model(assets, &world);
   const std::vector<BenchLaunch> launches = bench_tour_launches();
+  std::size_t next = 0;
+  return time_shots(min_seconds, [&] {
+    return simulate_shot(model, launches[next++ % launches.size()].launch, false).summary.total_m;
+  });
+}
+
+ShotBenchResult bench_course_shots(const Assets& assets, double min_seconds) {
+  const Course course = load_course(assets, "national");
+  const CourseHole& first = course.holes.front();
+  const World world(first.world->description(), SweepMethod::BvhExact);
+  const ShotModel model = golf_model(assets, &world);
+  std::vector<BenchLaunch> launches = bench_tour_launches();
+  for (BenchLaunch& l : launches) l.launch.position += first.tee;  // hole 1 runs east, along +x
   std::size_t next = 0;
   return time_shots(min_seconds, [&] {
     return simulate_shot(model, launches[next++ % launches.size()].launch, false).summary.total_m;

@@ -33,6 +33,9 @@ std::vector<BenchLaunch> bench_tour_launches();
 /// `min_seconds`. The world is loaded and built once, outside the timing. `method` picks the
 /// world's sweep narrow phase (BulletConvexSweep is DESIGN §5's convexSweepTest).
 ShotBenchResult bench_golf_shots(const Assets& assets, double min_seconds, SweepMethod method = SweepMethod::BvhExact);
+/// The same launches from the 1st tee of the bundled 18-hole course (assets/courses/national,
+/// an imported map and raster: ~236 000 triangles against golf_hole's few thousand).
+ShotBenchResult bench_course_shots(const Assets& assets, double min_seconds);
 /// The same launches over the flat default fairway (no world): what the terrain costs.
 ShotBenchResult bench_golf_shots_flat(const Assets& assets, double min_seconds);
 /// The same launches on golf_hole at the reference tolerance (rel 1e-13, as

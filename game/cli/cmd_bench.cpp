@@ -50,10 +50,13 @@ RunFn setup_bench(CLI::App& sub) {
     const bench::CarryErrors carry = bench::golf_carry_errors(assets);
     const bench::ShotBenchResult flat = bench::bench_golf_shots_flat(assets, seconds);
     const bench::ShotBenchResult tight = bench::bench_golf_shots_tight(assets, seconds);
+    const bench::ShotBenchResult course = bench::bench_course_shots(assets, seconds);
     rows.push_back({"golf_shots_per_s", golf.shots_per_second, "golf shots/s (tour driver/7-iron/PW, to rest)"});
     rows.push_back({"golf_us_per_shot", golf.us_per_shot, "us per golf shot (golf_hole)"});
     rows.push_back({"golf_us_per_shot_flat", flat.us_per_shot, "us per golf shot (flat ground, no world)"});
     rows.push_back({"terrain_cost_ratio", golf.us_per_shot / flat.us_per_shot, "golf_hole / flat ground time"});
+    rows.push_back({"course_us_per_shot", course.us_per_shot, "us per golf shot (imported National)"});
+    rows.push_back({"course_cost_ratio", course.us_per_shot / golf.us_per_shot, "Sweetspot National / golf_hole time"});
     rows.push_back({"golf_us_per_shot_tight", tight.us_per_shot, "us per golf shot, reference tolerance 1e-13"});
     rows.push_back({"tolerance_speedup", tight.us_per_shot / golf.us_per_shot, "speed-up of the default tolerances"});
     rows.push_back({"golf_shots_per_s_convex_sweep", golf_gjk.shots_per_second,

@@ -69,7 +69,10 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
   if (std::filesystem::is_directory(path, dir_ec)) {
     path /= "course.toml";  // a course directory (course import writes one)
   } else if (name_or_path.find('/') == std::string_view::npos && path.extension() != ".toml") {
+    // A built-in course: courses/NAME.toml, or an imported one, courses/NAME/course.toml.
     path = assets.root() / "courses" / (std::string(name_or_path) + ".toml");
+    if (std::error_code ec; !std::filesystem::exists(path, ec))
+      path = assets.root() / "courses" / std::string(name_or_path) / "course.toml";
     if (std::error_code ec; !std::filesystem::exists(path, ec)) {
       std::string names;
       for (const auto& n : course_names(assets)) names += (names.empty() ? "" : ", ") + n;
@@ -136,8 +139,11 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
 std::vector<std::string> course_names(const Assets& assets) {
   std::vector<std::string> out;
   std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(assets.root() / "courses", ec))
+  for (const auto& e : std::filesystem::directory_iterator(assets.root() / "courses", ec)) {
+    std::error_code e2;
     if (e.path().extension() == ".toml") out.push_back(e.path().stem().string());
+    else if (std::filesystem::is_regular_file(e.path() / "course.toml", e2)) out.push_back(e.path().filename().string());
+  }
   std::sort(out.begin(), out.end());
   return out;
 }

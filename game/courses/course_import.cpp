@@ -264,6 +264,9 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
     write_world(tmp, r.name, mesh, plan, r.holes.front().tee, 0.0);
     write_course(tmp, r);
     (void)load_course(assets, (tmp / "course.toml").string());
+    std::filesystem::permissions(tmp, std::filesystem::perms::owner_all | std::filesystem::perms::group_read |
+                                          std::filesystem::perms::group_exec | std::filesystem::perms::others_read |
+                                          std::filesystem::perms::others_exec);  // as mkdir would make it (mkdtemp: owner only)
     std::filesystem::rename(tmp, o.out);
   } catch (...) {
     std::filesystem::remove_all(tmp, ec);

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# `sweetspot course import`: the bundled Sweetspot National (assets/courses/national) is what
+# importing its map and raster (assets/courses/sources) writes, byte for byte, so the shipped
+# course and an imported one take one path; it plays; its three-hole loop matches it; and bad
+# maps and rasters exit 2 naming the file, leaving nothing behind.
+set -euo pipefail
+bin="$1"
+root="${SWEETSPOT_ROOT:?}"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+src="$root/assets/courses/sources"
+"$bin" course import "$src/national.osm" --dem "$src/national.asc" -o "$tmp/national" > "$tmp/out" || fail "import: $(cat "$tmp/out")"
+grep -q "Sweetspot National: 18 holes, par 72" "$tmp/out" || fail "import summary: $(head -1 "$tmp/out")"
+for f in course.toml world.toml world.obj world.mtl; do
+  cmp -s "$tmp/national/$f" "$root/assets/courses/national/$f" ||
+    fail "assets/courses/national/$f differs from a fresh import (run: sweetspot course import assets/courses/sources/national.osm --dem assets/courses/sources/national.asc -o assets/courses/national)"
+done
+# The loop's three holes are the course's first three.
+for n in 1 2 3; do
+  want=$(awk -v n=$n '/^\[\[hole\]\]/{h++} h==n && /^(tee|pin|par) =/' "$root/assets/courses/national/course.toml")
+  got=$(awk -v n=$n '/^\[\[hole\]\]/{h++} h==n && /^(tee|pin|par) =/' "$root/assets/courses/national_3.toml")
+  [ "$want" = "$got" ] || fail "national_3 hole $n: $got, national: $want"
+done
+"$bin" round national --bot tour --seed 1 > "$tmp/card" || fail "round national"
+grep -qE '^total +72 ' "$tmp/card" || fail "no par-72 card: $(tail -2 "$tmp/card")"
+"$bin" round national_3 --bot tour --seed 1 > "$tmp/card3" || fail "round national_3"
+grep -qE '^total +12 ' "$tmp/card3" || fail "no par-12 card"
+# Bad input: exit 2 naming the file, nothing written.
+expect2() {  # expect2 WHAT NEEDLE ARGS...
+  local what="$1" needle="$2"; shift 2
+  set +e; "$bin" course import "$@" > /dev/null 2> "$tmp/err"; local rc=$?; set -e
+  [ $rc -eq 2 ] || fail "$what: exit $rc, want 2"
+  grep -q -- "$needle" "$tmp/err" || fail "$what: message does not name $needle: $(cat "$tmp/err")"
+}
+echo "not a map" > "$tmp/notes.osm"
+expect2 "not OSM" "notes.osm" "$tmp/notes.osm" -o "$tmp/a"
+sed 's/^xllcorner .*/xllcorner 10.0/' "$src/national.asc" > "$tmp/elsewhere.asc"
+cp "$src/national.prj" "$tmp/elsewhere.prj"
+expect2 "raster of another place" "elsewhere.asc" "$src/national.osm" --dem "$tmp/elsewhere.asc" -o "$tmp/b"
+expect2 "existing output" "already exists" "$src/national.osm" -o "$tmp/national"
+[ ! -e "$tmp/a" ] && [ ! -e "$tmp/b" ] || fail "a refused import left its output"
+ls -A "$tmp" | grep -q '^\.course-import-' && fail "a working directory was left behind"
+echo "course_import: ok"

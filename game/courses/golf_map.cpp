@@ -1,6 +1,9 @@
 #include "game/courses/golf_map.hpp"
 
+#include <cctype>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -22,6 +25,9 @@
 #include <osmium/visitor.hpp>
 #pragma GCC diagnostic pop
 
+#include <nlohmann/json.hpp>
+
+#include "game/util/xml_text.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -191,12 +197,86 @@ const char* to_string(MapSurface s) {
   return "?";
 }
 
+namespace {
+
+// Overpass API JSON ({"elements": [{"type": "node", "id", "lat", "lon", "tags"}, {"type":
+// "way", "nodes"}, {"type": "relation", "members": [{"type", "ref", "role"}]}]}) as OSM XML,
+// so the one reader assembles it.
+std::string overpass_to_xml(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path.string() + ": not Overpass JSON (" + e.what() + ")");
+  }
+  if (!doc.is_object() || !doc.contains("elements") || !doc["elements"].is_array())
+    throw InputError(path.string() + ": not Overpass JSON (no \"elements\" array: export with [out:json] and out geom or out body)");
+  std::ostringstream x;
+  x.precision(10);
+  x << "<?xml version='1.0'?>\n<osm version='0.6'>\n";
+  const auto tags = [&](const nlohmann::json& e) {
+    if (!e.contains("tags") || !e["tags"].is_object()) return;
+    for (const auto& [k, v] : e["tags"].items())
+      if (v.is_string()) x << "<tag k='" << xml_escape(k) << "' v='" << xml_escape(v.get<std::string>()) << "'/>";
+  };
+  const auto id_of = [&](const nlohmann::json& e, const char* what) {
+    if (!e.contains("id") || !e["id"].is_number_integer())
+      throw InputError(path.string() + ": an element without a whole-number id (" + what + ")");
+    return e["id"].get<long long>();
+  };
+  // XML wants nodes, then ways, then relations.
+  for (const char* kind : {"node", "way", "relation"})
+    for (const nlohmann::json& e : doc["elements"]) {
+      if (!e.is_object() || e.value("type", "") != kind) continue;
+      const long long id = id_of(e, kind);
+      if (std::string_view(kind) == "node") {
+        if (!e.contains("lat") || !e.contains("lon") || !e["lat"].is_number() || !e["lon"].is_number())
+          throw InputError(path.string() + ": node " + std::to_string(id) + " has no lat and lon");
+        x << "<node id='" << id << "' lat='" << e["lat"].get<double>() << "' lon='" << e["lon"].get<double>() << "'>";
+        tags(e);
+        x << "</node>\n";
+      } else if (std::string_view(kind) == "way") {
+        x << "<way id='" << id << "'>";
+        if (e.contains("nodes") && e["nodes"].is_array())
+          for (const auto& n : e["nodes"])
+            if (n.is_number_integer()) x << "<nd ref='" << n.get<long long>() << "'/>";
+        tags(e);
+        x << "</way>\n";
+      } else {
+        x << "<relation id='" << id << "'>";
+        if (e.contains("members") && e["members"].is_array())
+          for (const auto& m : e["members"])
+            if (m.is_object() && m.contains("ref") && m["ref"].is_number_integer())
+              x << "<member type='" << xml_escape(m.value("type", "way")) << "' ref='" << m["ref"].get<long long>()
+                << "' role='" << xml_escape(m.value("role", "")) << "'/>";
+        tags(e);
+        x << "</relation>\n";
+      }
+    }
+  x << "</osm>\n";
+  return x.str();
+}
+
+// An Overpass export: .json, or a file that opens with '{'.
+bool is_overpass_json(const std::filesystem::path& path) {
+  if (path.extension() == ".json") return true;
+  std::ifstream in(path, std::ios::binary);
+  char c = 0;
+  while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
+  }
+  return c == '{';
+}
+}  // namespace
+
 GolfMap read_golf_map(const std::filesystem::path& path) {
   GolfMap map;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": no such file");
+  const std::string overpass = is_overpass_json(path) ? overpass_to_xml(path) : std::string();
   try {
-    const osmium::io::File file(path.string());
+    const osmium::io::File file = overpass.empty() ? osmium::io::File(path.string())
+                                                   : osmium::io::File(overpass.data(), overpass.size(), "osm");
     Problems problems(map.repairs);
     osmium::area::Assembler::config_type config;
     config.problem_reporter = &problems;

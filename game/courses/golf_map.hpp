@@ -56,7 +56,8 @@ struct GolfMap {
   std::vector<std::string> repairs;    ///< what was mended while reading, one line each
 };
 
-/// Reads `path` (.osm XML or .osm.pbf). Throws InputError naming the file for one that is
+/// Reads `path` (.osm XML, .osm.pbf, or an Overpass API JSON export: .json or a file opening
+/// with `{`). Throws InputError naming the file for one that is
 /// not OSM data, and naming the element for a ring that is not closed by more than
 /// kRingGap (a gap up to it is closed, and said in `repairs`). Areas whose rings do not
 /// assemble are left out and said in `repairs`.

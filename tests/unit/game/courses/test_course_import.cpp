@@ -14,6 +14,13 @@
 
 #include <cpl_conv.h>
 #include <gdal.h>
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wstringop-overread"
+#include <osmium/io/pbf_output.hpp>
+#include <osmium/io/reader.hpp>
+#include <osmium/io/writer.hpp>
+#include <osmium/io/xml_input.hpp>
+#pragma GCC diagnostic pop
 #include <ogr_srs_api.h>
 
 #include "game/content/course_file.hpp"
@@ -413,4 +420,34 @@ TEST_CASE("course import --dem: a raster of another place, or none, is refused n
   CHECK_THROWS_WITH(import_course(test::assets(), o), Contains("notes.tif") && Contains("not an elevation raster"));
   CHECK_FALSE(fs::exists(o.out));
   CHECK(s.no_leftovers());
+}
+
+// The same map as an Overpass API export (edge_cases.json: its elements, ways before nodes
+// as `out body; >; out skel;` lists them) and as PBF (written here by libosmium from the
+// XML) imports to the same course.
+TEST_CASE("course import: Overpass JSON and PBF read as the XML does", "[course][import]") {
+  Scratch s("formats");
+  const ImportResult xml = import(kData / "edge_cases.osm", s.dir / "xml");
+  const ImportResult json = import(kData / "edge_cases.json", s.dir / "json");
+  {
+    osmium::io::Reader in(osmium::io::File((kData / "edge_cases.osm").string()));
+    osmium::io::Writer out(osmium::io::File((s.dir / "edge_cases.osm.pbf").string()));
+    while (osmium::memory::Buffer b = in.read()) out(std::move(b));
+    out.close();
+    in.close();
+  }
+  const ImportResult pbf = import(s.dir / "edge_cases.osm.pbf", s.dir / "pbf");
+  for (const ImportResult* r : {&json, &pbf}) {
+    REQUIRE(r->holes.size() == xml.holes.size());
+    for (std::size_t i = 0; i < xml.holes.size(); ++i) {
+      CHECK(r->holes[i].par == xml.holes[i].par);
+      CHECK(r->holes[i].pin.x == Approx(xml.holes[i].pin.x).margin(1e-6));
+      CHECK(r->holes[i].tee.z == Approx(xml.holes[i].tee.z).margin(1e-6));
+    }
+    CHECK(r->triangles == xml.triangles);
+    CHECK(r->areas.at("green") == Approx(xml.areas.at("green")).epsilon(1e-9));
+  }
+  const fs::path bad = s.dir / "bad.json";
+  std::ofstream(bad) << "{\"version\": 0.6}";
+  CHECK_THROWS_WITH(import(bad, s.dir / "bad"), Contains("bad.json") && Contains("no \"elements\" array"));
 }

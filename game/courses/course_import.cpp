@@ -6,10 +6,10 @@
 #include <cstdlib>
 #include <memory>
 #include <set>
-#include <sstream>
 #include <unistd.h>
 
 #include "game/content/course_file.hpp"
+#include "game/courses/course_writer.hpp"
 #include "game/courses/elevation.hpp"
 #include "game/courses/golf_map.hpp"
 #include "game/courses/terrain_heights.hpp"
@@ -23,85 +23,10 @@ namespace {
 constexpr double kGreenSearch = 40.0;  // m: a hole's last node this near a green ends on it
 constexpr double kPinInset = 3.0;      // m: a cup this far inside the green's edge at least (ESTIMATE of a fair hole location)
 
-std::string metres(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "\"%.3fm\"", v);
-  return b;
-}
-
 double line_length(const std::vector<LocalPoint>& pts) {
   double s = 0.0;
   for (std::size_t i = 1; i < pts.size(); ++i) s += std::hypot(pts[i].x - pts[i - 1].x, pts[i].z - pts[i - 1].z);
   return s;
-}
-
-// The material colours the built-in worlds use (scripts/gen_worlds.py).
-const char* colour_of(const std::string& m) {
-  if (m == "green") return "0.380 0.760 0.360";
-  if (m == "fairway") return "0.320 0.620 0.260";
-  if (m == "tee") return "0.360 0.660 0.300";
-  if (m == "sand") return "0.860 0.790 0.560";
-  if (m == "water") return "0.150 0.350 0.620";
-  if (m == "out_of_bounds") return "0.450 0.450 0.480";
-  return "0.200 0.420 0.150";  // rough
-}
-
-void write_world(const std::filesystem::path& dir, const std::string& name, const SurfaceMesh& mesh, const SurfacePlan& plan,
-                 const LocalPoint& origin, double ground_at_origin) {
-  std::ostringstream obj;
-  obj << "# " << name << ": written by sweetspot course import\nmtllib world.mtl\n";
-  char line[96];
-  for (const Vec3& v : mesh.vertices) {
-    std::snprintf(line, sizeof line, "v %.4f %.4f %.4f\n", v.x(), v.y(), v.z());
-    obj << line;
-  }
-  std::ostringstream mtl;
-  mtl << "# " << name << ": written by sweetspot course import\n";
-  for (const SurfaceMesh::Group& g : mesh.groups) {
-    obj << "g " << g.material << "\nusemtl " << g.material << "\n";
-    for (const auto& t : g.triangles) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
-    mtl << "newmtl " << g.material << "\nKd " << colour_of(g.material) << "\nKa 0 0 0\nKs 0 0 0\n";
-  }
-  write_file_atomic(dir / "world.obj", obj.str());
-  write_file_atomic(dir / "world.mtl", mtl.str());
-  double low = 0.0, high = 0.0;
-  for (const Vec3& v : mesh.vertices) {
-    low = std::min(low, v.y());
-    high = std::max(high, v.y());
-  }
-  std::ostringstream t;
-  t << "# " << name << ": written by sweetspot course import (x east, z south, y up; m)\n"
-    << "name = \"" << name << "\"\nsport = \"golf\"\nmesh = \"world.obj\"\n"
-    << "origin = [" << metres(origin.x) << ", " << metres(ground_at_origin) << ", " << metres(origin.z) << "]   # hole 1's tee\n"
-    << "bounds_min = [" << metres(plan.min().x) << ", " << metres(low - 20.0) << ", " << metres(plan.min().z) << "]\n"
-    << "bounds_max = [" << metres(plan.max().x) << ", " << metres(high + 400.0) << ", " << metres(plan.max().z) << "]\n";
-  write_file_atomic(dir / "world.toml", t.str());
-}
-
-std::string toml_text(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    out += c;
-  }
-  return out + "\"";
-}
-
-void write_course(const std::filesystem::path& dir, const ImportResult& r) {
-  std::ostringstream t;
-  t << "# " << r.name << ": written by sweetspot course import. Each hole: its par, stroke index, the tee\n"
-    << "# spot and the cup [x, z] on world.toml (m east, m south).\n"
-    << "name = " << toml_text(r.name) << "\n";
-  for (const ImportedHole& h : r.holes) {
-    t << "\n[[hole]]\nnumber = " << h.number << "\npar = " << h.par << "\n";
-    if (h.index > 0) t << "index = " << h.index << "\n";
-    char len[64];
-    std::snprintf(len, sizeof len, "   # %s, %.0f m", h.element.c_str(), h.length);
-    t << "world = \"world.toml\"" << len << "\ntee = [" << metres(h.tee.x) << ", " << metres(h.tee.z) << "]\npin = ["
-      << metres(h.pin.x) << ", " << metres(h.pin.z) << "]\n";
-  }
-  write_file_atomic(dir / "course.toml", t.str());
 }
 
 }  // namespace
@@ -261,7 +186,7 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
   if (mkdtemp(tmpl.data()) == nullptr) throw InputError(parent.string() + ": cannot create a working directory there");
   const std::filesystem::path tmp(tmpl);
   try {
-    write_world(tmp, r.name, mesh, plan, r.holes.front().tee, 0.0);
+    write_world(tmp, r.name, mesh, plan.min(), plan.max(), r.holes.front().tee);
     write_course(tmp, r);
     (void)load_course(assets, (tmp / "course.toml").string());
     std::filesystem::permissions(tmp, std::filesystem::perms::owner_all | std::filesystem::perms::group_read |

@@ -11,8 +11,10 @@
 
 // libosmium's builders trip GCC 12's string over-read check on an inlined strlen of an empty
 // tag (a false positive inside the library): silenced for its headers alone.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wstringop-overread"
+#endif
 #include <osmium/area/assembler.hpp>
 #include <osmium/area/multipolygon_manager.hpp>
 #include <osmium/area/problem_reporter.hpp>
@@ -23,7 +25,9 @@
 #include <osmium/io/xml_input.hpp>
 #include <osmium/relations/relations_manager.hpp>
 #include <osmium/visitor.hpp>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 #include <nlohmann/json.hpp>
 

@@ -89,6 +89,20 @@ struct SurfacePlan::Impl {
       if (in.size() >= 4) holes.push_back(ring(in, f));
     return checked(GEOSGeom_createPolygon_r(ctx, shell, holes.data(), static_cast<unsigned>(holes.size())), "a polygon");
   }
+  // The laid green nearest `p` within `within` m (nullptr: none), and how far.
+  const GEOSGeometry* nearest_green(const GEOSGeometry* p, double within, double* distance) const {
+    const GEOSGeometry* best = nullptr;
+    double best_d = within;
+    for (const GEOSGeometry* g : greens) {
+      double d = 0.0;
+      if (GEOSDistance_r(ctx, g, p, &d) == 1 && d <= best_d) {
+        best_d = d;
+        best = g;
+      }
+    }
+    if (distance) *distance = best_d;
+    return best;
+  }
   GEOSGeometry* union_of(std::vector<GEOSGeometry*> parts) const {
     if (parts.empty()) return GEOSGeom_createEmptyPolygon_r(ctx);
     GEOSGeometry* all = checked(GEOSGeom_createCollection_r(ctx, GEOS_GEOMETRYCOLLECTION, parts.data(),
@@ -232,15 +246,8 @@ double SurfacePlan::area(const std::string& material) const {
 std::optional<LocalPoint> SurfacePlan::green_spot(double x, double z, double within, double inset) const {
   GEOSContextHandle_t ctx = impl_->ctx;
   GEOSGeometry* p = GEOSGeom_createPointFromXY_r(ctx, x, z);
-  const GEOSGeometry* best = nullptr;
-  double best_d = within;
-  for (const GEOSGeometry* g : impl_->greens) {
-    double d = 0.0;
-    if (GEOSDistance_r(ctx, g, p, &d) == 1 && d <= best_d) {
-      best_d = d;
-      best = g;
-    }
-  }
+  double best_d = 0.0;
+  const GEOSGeometry* best = impl_->nearest_green(p, within, &best_d);
   std::optional<LocalPoint> out;
   if (best != nullptr) {
     // Inside by `inset`: the point itself; otherwise the green's deepest point.
@@ -264,15 +271,7 @@ std::optional<LocalPoint> SurfacePlan::green_spot(double x, double z, double wit
 std::vector<LocalPoint> SurfacePlan::green_grid(double x, double z, double within, double inset, double step) const {
   GEOSContextHandle_t ctx = impl_->ctx;
   GEOSGeometry* p = GEOSGeom_createPointFromXY_r(ctx, x, z);
-  const GEOSGeometry* best = nullptr;
-  double best_d = within;
-  for (const GEOSGeometry* g : impl_->greens) {
-    double d = 0.0;
-    if (GEOSDistance_r(ctx, g, p, &d) == 1 && d <= best_d) {
-      best_d = d;
-      best = g;
-    }
-  }
+  const GEOSGeometry* best = impl_->nearest_green(p, within, nullptr);
   GEOSGeom_destroy_r(ctx, p);
   std::vector<LocalPoint> out;
   if (best == nullptr) return out;

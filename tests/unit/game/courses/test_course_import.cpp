@@ -14,13 +14,17 @@
 
 #include <cpl_conv.h>
 #include <gdal.h>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wstringop-overread"
+#endif
 #include <osmium/io/pbf_output.hpp>
 #include <osmium/io/reader.hpp>
 #include <osmium/io/writer.hpp>
 #include <osmium/io/xml_input.hpp>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 #include <ogr_srs_api.h>
 
 #include "game/content/course_file.hpp"
@@ -450,4 +454,17 @@ TEST_CASE("course import: Overpass JSON and PBF read as the XML does", "[course]
   const fs::path bad = s.dir / "bad.json";
   std::ofstream(bad) << "{\"version\": 0.6}";
   CHECK_THROWS_WITH(import(bad, s.dir / "bad"), Contains("bad.json") && Contains("no \"elements\" array"));
+}
+
+// A course's name comes from the map (or --name) and is written into TOML and OBJ comments:
+// quotes and line breaks in it cannot break either file.
+TEST_CASE("course import: a hostile course name is written safely", "[course][import][input]") {
+  Scratch s("name");
+  ImportOptions o;
+  o.map = kData / "edge_cases.osm";
+  o.out = s.dir / "c";
+  o.name = "St Andrew's \"Old\" \\ Course\nname = \"hijacked\"";
+  import_course(test::assets(), o);
+  const Course c = load_course(test::assets(), o.out.string());
+  CHECK(c.name == "St Andrew's \"Old\" \\ Coursename = \"hijacked\"");
 }

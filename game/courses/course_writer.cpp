@@ -1,0 +1,101 @@
+#include "game/courses/course_writer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+#include <string>
+
+#include "game/util/atomic_file.hpp"
+
+namespace sweetspot {
+namespace {
+
+std::string metres(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "\"%.3fm\"", v);
+  return b;
+}
+
+// The material colours the built-in worlds use (scripts/gen_worlds.py).
+const char* colour_of(const std::string& m) {
+  if (m == "green") return "0.380 0.760 0.360";
+  if (m == "fairway") return "0.320 0.620 0.260";
+  if (m == "tee") return "0.360 0.660 0.300";
+  if (m == "sand") return "0.860 0.790 0.560";
+  if (m == "water") return "0.150 0.350 0.620";
+  if (m == "out_of_bounds") return "0.450 0.450 0.480";
+  return "0.200 0.420 0.150";  // rough
+}
+
+// A TOML basic string.
+std::string toml_text(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) continue;
+    out += c;
+  }
+  return out + "\"";
+}
+
+// `s` on one line, for a comment: control bytes dropped.
+std::string one_line(const std::string& s) {
+  std::string out;
+  for (const char c : s)
+    if (static_cast<unsigned char>(c) >= 0x20) out += c;
+  return out;
+}
+
+}  // namespace
+
+void write_world(const std::filesystem::path& dir, const std::string& name, const SurfaceMesh& mesh, const LocalPoint& min,
+                 const LocalPoint& max, const LocalPoint& origin) {
+  std::ostringstream obj;
+  obj << "# " << one_line(name) << ": written by sweetspot course import\nmtllib world.mtl\n";
+  char line[96];
+  for (const Vec3& v : mesh.vertices) {
+    std::snprintf(line, sizeof line, "v %.4f %.4f %.4f\n", v.x(), v.y(), v.z());
+    obj << line;
+  }
+  std::ostringstream mtl;
+  mtl << "# " << one_line(name) << ": written by sweetspot course import\n";
+  for (const SurfaceMesh::Group& g : mesh.groups) {
+    obj << "g " << g.material << "\nusemtl " << g.material << "\n";
+    for (const auto& t : g.triangles) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    mtl << "newmtl " << g.material << "\nKd " << colour_of(g.material) << "\nKa 0 0 0\nKs 0 0 0\n";
+  }
+  write_file_atomic(dir / "world.obj", obj.str());
+  write_file_atomic(dir / "world.mtl", mtl.str());
+  double low = 0.0, high = 0.0;
+  for (const Vec3& v : mesh.vertices) {
+    low = std::min(low, v.y());
+    high = std::max(high, v.y());
+  }
+  std::ostringstream t;
+  t << "# " << one_line(name) << ": written by sweetspot course import (x east, z south, y up; m)\n"
+    << "name = " << toml_text(name) << "\nsport = \"golf\"\nmesh = \"world.obj\"\n"
+    << "origin = [" << metres(origin.x) << ", \"0m\", " << metres(origin.z) << "]   # hole 1's tee\n"
+    << "bounds_min = [" << metres(min.x) << ", " << metres(low - 20.0) << ", " << metres(min.z) << "]\n"
+    << "bounds_max = [" << metres(max.x) << ", " << metres(high + 400.0) << ", " << metres(max.z) << "]\n";
+  write_file_atomic(dir / "world.toml", t.str());
+}
+
+
+void write_course(const std::filesystem::path& dir, const ImportResult& r) {
+  std::ostringstream t;
+  t << "# " << one_line(r.name) << ": written by sweetspot course import. Each hole: its par, stroke index, the tee\n"
+    << "# spot and the cup [x, z] on world.toml (m east, m south).\n"
+    << "name = " << toml_text(r.name) << "\n";
+  for (const ImportedHole& h : r.holes) {
+    t << "\n[[hole]]\nnumber = " << h.number << "\npar = " << h.par << "\n";
+    if (h.index > 0) t << "index = " << h.index << "\n";
+    char len[64];
+    std::snprintf(len, sizeof len, "   # %s, %.0f m", h.element.c_str(), h.length);
+    t << "world = \"world.toml\"" << len << "\ntee = [" << metres(h.tee.x) << ", " << metres(h.tee.z) << "]\npin = ["
+      << metres(h.pin.x) << ", " << metres(h.pin.z) << "]\n";
+  }
+  write_file_atomic(dir / "course.toml", t.str());
+}
+
+
+}  // namespace sweetspot

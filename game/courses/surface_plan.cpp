@@ -18,6 +18,12 @@ namespace {
 // m: the out-of-bounds ring and the course taken around the features when the map has no
 // leisure=golf_course boundary.
 constexpr double kAssumedCourse = 40.0;
+// m: the widest course we lay out (the largest 18- and 36-hole properties are ~3 km across).
+constexpr double kMaxSpan = 6000.0;
+// Cells in a mesh at most: ~2 triangles each, a few hundred bytes a triangle through the
+// overlay, the written OBJ and the collision world (2 million: ~1 GB; a square kilometre at
+// the default 4 m grid is ~70 000).
+constexpr double kMaxCells = 2.0e6;
 
 void geos_message(const char* fmt, ...) {
   // GEOS reports through its own handler; the calls' results are checked where they are used.
@@ -164,6 +170,14 @@ SurfacePlan::SurfacePlan(const GolfMap& map, const LocalFrame& frame, std::vecto
   GEOSGeom_getYMin_r(ctx, course, &cz0);
   GEOSGeom_getXMax_r(ctx, course, &cx1);
   GEOSGeom_getYMax_r(ctx, course, &cz1);
+  // A course is a few kilometres across at most: a map that spans more holds something far
+  // off (a stray node, another course), and meshing it would take hours.
+  if (!(cx1 - cx0 <= kMaxSpan && cz1 - cz0 <= kMaxSpan)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "the course spans %.1f km by %.1f km (at most %.0f km: does the map hold a far-off feature or another course?)",
+                  (cx1 - cx0) / 1000.0, (cz1 - cz0) / 1000.0, kMaxSpan / 1000.0);
+    throw InputError(msg);
+  }
   m.x0 = cx0 - margin;
   m.z0 = cz0 - margin;
   m.x1 = cx1 + margin;
@@ -365,6 +379,14 @@ int SurfacePlan::water_at(double x, double z) const {
 
 SurfaceMesh SurfacePlan::triangulate(double cell, double green_cell) const {
   const Impl& m = *impl_;
+  // The mesh's size before it is made: the grid's cells, and the greens' finer ones.
+  const double cells = (m.x1 - m.x0) * (m.z1 - m.z0) / (cell * cell) + area("green") / (green_cell * green_cell);
+  if (cells > kMaxCells) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "--cell %.2f m (greens %.2f m) would cut this course into %.1f million cells (at most %.0f million): a coarser grid",
+                  cell, green_cell, cells / 1e6, kMaxCells / 1e6);
+    throw InputError(msg);
+  }
   GEOSContextHandle_t ctx = m.ctx;
   SurfaceMesh mesh;
   std::unordered_map<std::string, std::size_t> group_of;

@@ -309,11 +309,11 @@ struct Utm {
   }
 };
 
-double ground(const Utm& u, double e, double n) {
-  const auto [e0, n0] = u.of(0.0, 0.0);
-  const auto [e3, n3] = u.of(470.0, 180.0);  // the 3rd green's centre
-  double h = 50.0 + 0.01 * (e - e0);
-  if (std::abs(n - n3) < 40.0 && e > e3) h += 0.08 * (e - e3);
+// The ground's height at UTM (e, n): `tee` the 1st tee's and `green3` the 3rd green's
+// centre in UTM (Utm::of), worked out once by the caller.
+double ground(const std::pair<double, double>& tee, const std::pair<double, double>& green3, double e, double n) {
+  double h = 50.0 + 0.01 * (e - tee.first);
+  if (std::abs(n - green3.second) < 40.0 && e > green3.first) h += 0.08 * (e - green3.first);
   return h;
 }
 
@@ -335,9 +335,10 @@ fs::path make_raster(const fs::path& path, double shift_east, bool with_crs = tr
   }
   std::vector<float> row(static_cast<std::size_t>(width));
   GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+  const auto tee = u.of(0.0, 0.0), green3 = u.of(470.0, 180.0);
   for (int r = 0; r < height; ++r) {
     for (int c = 0; c < width; ++c)
-      row[static_cast<std::size_t>(c)] = static_cast<float>(ground(u, gt[0] - shift_east + c + 0.5, gt[3] - r - 0.5));
+      row[static_cast<std::size_t>(c)] = static_cast<float>(ground(tee, green3, gt[0] - shift_east + c + 0.5, gt[3] - r - 0.5));
     REQUIRE(GDALRasterIO(band, GF_Write, 0, r, width, 1, row.data(), width, 1, GDT_Float32, 0, 0) == CE_None);
   }
   GDALClose(ds);
@@ -359,9 +360,10 @@ TEST_CASE("course import --dem: the ground follows the raster; greens smooth, cu
   const Course c = load_course(test::assets(), o.out.string());
   const Utm u;
   // Tees stand on the raster's ground, heights from hole 1's tee (1 % a metre east).
+  const auto tee_utm = u.of(0.0, 0.0), green3_utm = u.of(470.0, 180.0);
   const auto raw = [&](double e, double n) {
     const auto [x, y] = u.of(e, n);
-    return ground(u, x, y);
+    return ground(tee_utm, green3_utm, x, y);
   };
   CHECK(c.holes[0].tee.y() == Approx(0.0).margin(0.02));
   CHECK(c.holes[1].tee.y() == Approx(raw(520.0, 90.0) - raw(0.0, 0.0)).margin(0.05));  // 5.2 m up
@@ -385,14 +387,12 @@ TEST_CASE("course import --dem: the ground follows the raster; greens smooth, cu
   int sunk = 0, wet = 0;
   double level = 0.0;
   for (const Vec3& p : v) {
-    const GeoPoint g = frame.to_geo({p.x(), p.z()});
-    const auto [x, y] = [&] {
-      double gx = g.lon, gy = g.lat;
-      OCTTransform(u.to, 1, &gx, &gy, nullptr);
-      return std::make_pair(gx, gy);
-    }();
-    const double below = ground(u, x, y) - tee1 - p.y();
     const std::string m = plan.material_at(p.x(), p.z());
+    if (m != "sand" && m != "water") continue;  // the raster's look-up only where it is checked
+    const GeoPoint g = frame.to_geo({p.x(), p.z()});
+    double x = g.lon, y = g.lat;
+    OCTTransform(u.to, 1, &x, &y, nullptr);
+    const double below = ground(tee_utm, green3_utm, x, y) - tee1 - p.y();
     if (m == "sand" && plan.depth_inside(p.x(), p.z()) > 1.0) {
       CHECK(below > 0.3);
       ++sunk;
@@ -405,9 +405,10 @@ TEST_CASE("course import --dem: the ground follows the raster; greens smooth, cu
   }
   CHECK(sunk > 20);
   CHECK(wet > 5);
-  // The greens' grid is finer: more triangles than the flat import's.
-  Scratch flat("dem_flat");
-  CHECK(r.triangles > import(o.map, flat.dir / "flat").triangles + 9 * 500);
+  // The greens' grid is 0.5 m: a vertex for every quarter square metre of green.
+  int on_green = 0;
+  for (const Vec3& p : v) on_green += plan.material_at(p.x(), p.z()) == "green" ? 1 : 0;
+  CHECK(on_green > 0.9 * plan.area("green") / 0.25);
 }
 
 TEST_CASE("course import --dem: a raster of another place, or none, is refused naming the file", "[course][import][dem][input]") {
@@ -467,4 +468,54 @@ TEST_CASE("course import: a hostile course name is written safely", "[course][im
   import_course(test::assets(), o);
   const Course c = load_course(test::assets(), o.out.string());
   CHECK(c.name == "St Andrew's \"Old\" \\ Coursename = \"hijacked\"");
+}
+
+// Hostile maps: nodes off the globe, a green with no area, a stray node kilometres away, a
+// ref that is not a number, a grid too fine for the course: each refused naming what is
+// wrong, never a crash or an hours-long mesh.
+TEST_CASE("course import: hostile maps are refused, not run", "[course][import][input]") {
+  Scratch s("hostile");
+  std::string edge;
+  {
+    std::ifstream in(kData / "edge_cases.osm");
+    edge.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto variant = [&](const std::string& name, const std::string& from, const std::string& to) {
+    std::string text = edge;
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+    const fs::path p = s.dir / name;
+    std::ofstream(p) << text;
+    return p;
+  };
+  const fs::path out = s.dir / "out";
+  // Hole 1's green node off the globe: the hole keeps one located node.
+  CHECK_THROWS_WITH(import(variant("off_globe.osm", "<node id='2' lat='56.34000000'", "<node id='2' lat='96.34000000'"), out),
+                    Contains("way 100") && Contains("fewer than two located nodes"));
+  // Green 2 squashed flat (its nodes on one line): no green for hole 2 to end on.
+  {
+    std::string t = edge;
+    for (const char* id : {"62", "63"}) {
+      const auto at = t.find(std::string("<node id='") + id + "' lat='56.34064743'");
+      REQUIRE(at != std::string::npos);
+      t.replace(at, std::string("<node id='62' lat='56.34064743'").size(), std::string("<node id='") + id + "' lat='56.34043165'");
+    }
+    std::ofstream(s.dir / "flat_green.osm") << t;
+    CHECK_THROWS_WITH(import(s.dir / "flat_green.osm", out), Contains("way 200") && Contains("no golf=green"));
+  }
+  // A bunker node 40 km off.
+  CHECK_THROWS_WITH(import(variant("stray.osm", "<node id='31' lat='56.34002697' lon='-2.79470696'/>",
+                                   "<node id='31' lat='56.34002697' lon='-2.19470696'/>"),
+                           out),
+                    Contains("spans") && Contains("far-off feature"));
+  CHECK_THROWS_WITH(import(variant("ref.osm", "<tag k='ref' v='2'/>", "<tag k='ref' v='2;3'/>"), out),
+                    Contains("way 200") && Contains("ref=2;3"));
+  ImportOptions fine;
+  fine.map = kData / "nine_holes.osm";
+  fine.out = out;
+  fine.cell = 0.5;
+  CHECK_THROWS_WITH(import_course(test::assets(), fine), Contains("--cell 0.50") && Contains("million cells"));
+  CHECK_FALSE(fs::exists(out));
+  CHECK(s.no_leftovers());
 }

@@ -11,7 +11,9 @@ ground under it as an elevation raster, for `sweetspot course import` (DESIGN §
 Two nines side by side on a kilometre square of gently rolling ground (a few metres of
 relief, slopes of 1-4 %), the front nine running up the west half in rows, the back nine
 down the east half. Run from the repository root; `--dem-cell` sets the raster's cell in
-metres (default 4; 1 for the import timing of issue 43), `--out` another folder."""
+metres (default 4; 1 for the import timing of issue 43), `--out` another folder. Then:
+  sweetspot course import assets/courses/sources/national.osm --dem assets/courses/sources/national.asc \
+      --cell 8 -o assets/courses/national"""
 import argparse
 import math
 import os

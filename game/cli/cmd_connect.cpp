@@ -35,7 +35,7 @@ RunFn setup_connect(CLI::App& sub) {
   sub.add_option("--bind", o->server.bind, "address to listen on (0.0.0.0 for a launch monitor on another machine)")
       ->capture_default_str();
   sub.add_flag("--headless", o->headless, "no window: one JSON line per shot on stdout");
-  auto* course = sub.add_option("--course", o->server.table.course, "play this course's round (a name of assets/courses or a .toml)");
+  auto* course = sub.add_option("--course", o->server.table.course, "play this course's round (a name of assets/courses, a .toml, or a directory from course import)");
   auto* world = sub.add_option("--world", o->server.table.world, "a range on this world: every shot from its tee (default: the golf hole)");
   course->excludes(world);
   sub.add_option("--idle-timeout", o->idle, "drop a client silent this long, 1s..24h (some connectors never send a heartbeat)")

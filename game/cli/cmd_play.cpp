@@ -31,7 +31,7 @@ RunFn setup_play(CLI::App& sub) {
   std::vector<const CLI::Option*> window_only;
   window_only.push_back(sub.add_option("--mode", o->mode, "lab (the shot and its tuning), golf (a round on --course), range (bag gapping) or baseball (the batting cage); Tab switches")
       ->capture_default_str());
-  window_only.push_back(sub.add_option("--course", o->course, "golf: a course of assets/courses or a .toml")->capture_default_str());
+  window_only.push_back(sub.add_option("--course", o->course, "golf: a course of assets/courses, a .toml, or a directory from course import")->capture_default_str());
   window_only.push_back(sub.add_option("--skill", o->skill, "golf: tour, scratch, amateur or beginner (swing speed; the bot opponent)")
       ->capture_default_str());
   window_only.push_back(sub.add_option("--holes", o->holes, "golf: play only the first N holes")->check(CLI::Range(1, 18)));

@@ -193,7 +193,7 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
 
 RunFn setup_round(CLI::App& sub) {
   auto o = std::make_shared<RoundOptions>();
-  sub.add_option("course", o->course, "a course of assets/courses (default links) or a .toml file");
+  sub.add_option("course", o->course, "a course of assets/courses (default links; national: 18 holes), a .toml file, or a directory from course import");
   sub.add_option("--bot", o->bots, "a bot player of this skill: tour, scratch, amateur or beginner; repeat for up to 4 players (default one tour bot)")
       ->check(checked_by([](const std::string& t) { golfer_skill(t); }, "SKILL"));
   sub.add_option("--bag", o->bag, "the first player's measured bag (range --bag-out): their caddie's carries");

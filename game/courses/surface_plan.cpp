@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <map>
 #include <unordered_map>
@@ -25,10 +24,9 @@ constexpr double kMaxSpan = 6000.0;
 // the default 4 m grid is ~70 000).
 constexpr double kMaxCells = 2.0e6;
 
-void geos_message(const char* fmt, ...) {
-  // GEOS reports through its own handler; the calls' results are checked where they are used.
-  (void)fmt;
-}
+// GEOS reports its notices and errors through a handler; every call's result is checked
+// where it is used, so they are not printed.
+void geos_message(const char*, ...) {}
 
 }  // namespace
 
@@ -123,6 +121,28 @@ SurfacePlan::SurfacePlan(const GolfMap& map, const LocalFrame& frame, std::vecto
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   GEOSContextHandle_t ctx = m.ctx;
+  // A course is a few kilometres across at most: a map that spans more holds something far
+  // off (a stray node, another course), and meshing it would take hours. Checked on the
+  // map's points before any geometry is made.
+  double px0 = HUGE_VAL, pz0 = HUGE_VAL, px1 = -HUGE_VAL, pz1 = -HUGE_VAL;
+  const auto take = [&](const GeoPoint& g) {
+    const LocalPoint q = frame.to_local(g);
+    px0 = std::min(px0, q.x);
+    px1 = std::max(px1, q.x);
+    pz0 = std::min(pz0, q.z);
+    pz1 = std::max(pz1, q.z);
+  };
+  for (const MapArea& a : map.areas)
+    for (const MapPolygon& p : a.polygons)
+      for (const GeoPoint& g : p.outer) take(g);
+  for (const MapHole& h : map.holes)
+    for (const GeoPoint& g : h.line) take(g);
+  if (px1 >= px0 && !(px1 - px0 <= kMaxSpan && pz1 - pz0 <= kMaxSpan)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "the course spans %.1f km by %.1f km (at most %.0f km: does the map hold a far-off feature or another course?)",
+                  (px1 - px0) / 1000.0, (pz1 - pz0) / 1000.0, kMaxSpan / 1000.0);
+    throw InputError(msg);
+  }
   // Each surface's areas, mended where a ring crosses itself.
   constexpr int kSurfaces = static_cast<int>(MapSurface::Course) + 1;
   std::vector<std::vector<GEOSGeometry*>> by(kSurfaces);
@@ -170,14 +190,6 @@ SurfacePlan::SurfacePlan(const GolfMap& map, const LocalFrame& frame, std::vecto
   GEOSGeom_getYMin_r(ctx, course, &cz0);
   GEOSGeom_getXMax_r(ctx, course, &cx1);
   GEOSGeom_getYMax_r(ctx, course, &cz1);
-  // A course is a few kilometres across at most: a map that spans more holds something far
-  // off (a stray node, another course), and meshing it would take hours.
-  if (!(cx1 - cx0 <= kMaxSpan && cz1 - cz0 <= kMaxSpan)) {
-    char msg[200];
-    std::snprintf(msg, sizeof msg, "the course spans %.1f km by %.1f km (at most %.0f km: does the map hold a far-off feature or another course?)",
-                  (cx1 - cx0) / 1000.0, (cz1 - cz0) / 1000.0, kMaxSpan / 1000.0);
-    throw InputError(msg);
-  }
   m.x0 = cx0 - margin;
   m.z0 = cz0 - margin;
   m.x1 = cx1 + margin;
@@ -408,6 +420,7 @@ SurfaceMesh SurfacePlan::triangulate(double cell, double green_cell) const {
     if (up > 0.0) tris.push_back({a, b, c});
     else tris.push_back({a, c, b});
   };
+  std::string failure;
   const auto triangulate_piece = [&](const std::string& material, const GEOSGeometry* piece) {
     const int type = GEOSGeomTypeId_r(ctx, piece);
     std::vector<const GEOSGeometry*> polys;
@@ -421,7 +434,25 @@ SurfaceMesh SurfacePlan::triangulate(double cell, double green_cell) const {
       double a = 0.0;
       if (GEOSArea_r(ctx, poly, &a) != 1 || a < 1e-8) continue;
       GEOSGeometry* tris = GEOSConstrainedDelaunayTriangulation_r(ctx, poly);
-      if (tris == nullptr) continue;
+      if (tris == nullptr) {
+        // A clipped piece that touches itself: mended, then triangulated; a piece left out
+        // would be a hole in the ground that a ball falls through.
+        if (GEOSGeometry* fixed = GEOSMakeValid_r(ctx, poly)) {
+          tris = GEOSConstrainedDelaunayTriangulation_r(ctx, fixed);
+          GEOSGeom_destroy_r(ctx, fixed);
+        }
+        if (tris == nullptr) {
+          if (failure.empty()) {  // said once the loops below have freed what they hold
+            double px = 0.0, pz = 0.0;
+            GEOSGeom_getXMin_r(ctx, poly, &px);
+            GEOSGeom_getYMin_r(ctx, poly, &pz);
+            char msg[160];
+            std::snprintf(msg, sizeof msg, "course import: the %s at %.1f m east, %.1f m south could not be triangulated", material.c_str(), px, pz);
+            failure = msg;
+          }
+          continue;
+        }
+      }
       for (int i = 0; i < GEOSGetNumGeometries_r(ctx, tris); ++i) {
         const GEOSGeometry* t = GEOSGetGeometryN_r(ctx, tris, i);
         const GEOSGeometry* shell = GEOSGetExteriorRing_r(ctx, t);
@@ -479,6 +510,7 @@ SurfaceMesh SurfacePlan::triangulate(double cell, double green_cell) const {
     for (GEOSGeometry* g : rows)
       if (g) GEOSGeom_destroy_r(ctx, g);
   }
+  if (!failure.empty()) throw InputError(failure);
   return mesh;
 }
 

@@ -56,6 +56,16 @@ struct GolfMap {
   std::vector<std::string> repairs;    ///< what was mended while reading, one line each
 };
 
+/// Calls `f(GeoPoint)` for every point the map draws: each area's outer rings and each hole's line.
+template <class F>
+void for_each_point(const GolfMap& map, F&& f) {
+  for (const MapArea& a : map.areas)
+    for (const MapPolygon& p : a.polygons)
+      for (const GeoPoint& g : p.outer) f(g);
+  for (const MapHole& h : map.holes)
+    for (const GeoPoint& g : h.line) f(g);
+}
+
 /// Reads `path` (.osm XML, .osm.pbf, or an Overpass API JSON export: .json or a file opening
 /// with `{`). Throws InputError naming the file for one that is
 /// not OSM data, and naming the element for a ring that is not closed by more than

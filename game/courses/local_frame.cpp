@@ -21,11 +21,7 @@ LocalFrame LocalFrame::around(const GolfMap& map) {
     lon0 = std::min(lon0, p.lon);
     lon1 = std::max(lon1, p.lon);
   };
-  for (const MapArea& a : map.areas)
-    for (const MapPolygon& p : a.polygons)
-      for (const GeoPoint& g : p.outer) take(g);
-  for (const MapHole& h : map.holes)
-    for (const GeoPoint& g : h.line) take(g);
+  for_each_point(map, take);
   if (!std::isfinite(lat0)) throw InputError("the map draws nothing to place a course on");
   return LocalFrame({0.5 * (lat0 + lat1), 0.5 * (lon0 + lon1)});
 }

@@ -132,11 +132,7 @@ SurfacePlan::SurfacePlan(const GolfMap& map, const LocalFrame& frame, std::vecto
     pz0 = std::min(pz0, q.z);
     pz1 = std::max(pz1, q.z);
   };
-  for (const MapArea& a : map.areas)
-    for (const MapPolygon& p : a.polygons)
-      for (const GeoPoint& g : p.outer) take(g);
-  for (const MapHole& h : map.holes)
-    for (const GeoPoint& g : h.line) take(g);
+  for_each_point(map, take);
   if (px1 >= px0 && !(px1 - px0 <= kMaxSpan && pz1 - pz0 <= kMaxSpan)) {
     char msg[200];
     std::snprintf(msg, sizeof msg, "the course spans %.1f km by %.1f km (at most %.0f km: does the map hold a far-off feature or another course?)",

@@ -89,6 +89,18 @@ bool has_report(const ImportResult& r, const std::string& a, const std::string& 
   return false;
 }
 
+// The edge-case map with one piece of its text replaced, written to `dir/name`.
+fs::path edge_variant(const fs::path& dir, const std::string& name, const std::string& from, const std::string& to) {
+  std::ifstream in(kData / "edge_cases.osm");
+  std::string text(std::istreambuf_iterator<char>(in), {});
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, from.size(), to);
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
 }  // namespace
 
 TEST_CASE("course import: the nine-hole map's holes, pars, lengths and stroke indexes", "[course][import]") {
@@ -205,19 +217,8 @@ TEST_CASE("course import: what the map leaves out is mended and said", "[course]
 
 TEST_CASE("course import: bad maps are refused naming the file or the element; nothing is written", "[course][import][input]") {
   Scratch s("bad");
-  std::string edge;
-  {
-    std::ifstream in(kData / "edge_cases.osm");
-    edge.assign(std::istreambuf_iterator<char>(in), {});
-  }
   const auto variant = [&](const std::string& name, const std::string& from, const std::string& to) {
-    std::string text = edge;
-    const auto at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
-    const fs::path p = s.dir / name;
-    std::ofstream(p) << text;
-    return p;
+    return edge_variant(s.dir, name, from, to);
   };
   const fs::path out = s.dir / "out";
   {
@@ -475,19 +476,8 @@ TEST_CASE("course import: a hostile course name is written safely", "[course][im
 // wrong, never a crash or an hours-long mesh.
 TEST_CASE("course import: hostile maps are refused, not run", "[course][import][input]") {
   Scratch s("hostile");
-  std::string edge;
-  {
-    std::ifstream in(kData / "edge_cases.osm");
-    edge.assign(std::istreambuf_iterator<char>(in), {});
-  }
   const auto variant = [&](const std::string& name, const std::string& from, const std::string& to) {
-    std::string text = edge;
-    const auto at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
-    const fs::path p = s.dir / name;
-    std::ofstream(p) << text;
-    return p;
+    return edge_variant(s.dir, name, from, to);
   };
   const fs::path out = s.dir / "out";
   // Hole 1's green node off the globe: the hole keeps one located node.
@@ -495,7 +485,8 @@ TEST_CASE("course import: hostile maps are refused, not run", "[course][import][
                     Contains("way 100") && Contains("fewer than two located nodes"));
   // Green 2 squashed flat (its nodes on one line): no green for hole 2 to end on.
   {
-    std::string t = edge;
+    std::ifstream in(kData / "edge_cases.osm");
+    std::string t(std::istreambuf_iterator<char>(in), {});
     for (const char* id : {"62", "63"}) {
       const auto at = t.find(std::string("<node id='") + id + "' lat='56.34064743'");
       REQUIRE(at != std::string::npos);

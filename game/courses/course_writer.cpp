@@ -54,7 +54,7 @@ void write_world(const std::filesystem::path& dir, const std::string& name, cons
   obj << "# " << one_line(name) << ": written by sweetspot course import\nmtllib world.mtl\n";
   char line[96];
   for (const Vec3& v : mesh.vertices) {
-    std::snprintf(line, sizeof line, "v %.4f %.4f %.4f\n", v.x(), v.y(), v.z());
+    std::snprintf(line, sizeof line, "v %.3f %.3f %.3f\n", v.x(), v.y(), v.z());  // to the millimetre
     obj << line;
   }
   std::ostringstream mtl;

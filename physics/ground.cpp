@@ -19,7 +19,7 @@ struct KindName {
   SurfaceKind kind;
   const char* name;
 };
-constexpr std::array<KindName, 12> kKindNames{{
+constexpr std::array<KindName, 13> kKindNames{{
     {SurfaceKind::Tee, "tee"},
     {SurfaceKind::Fairway, "fairway"},
     {SurfaceKind::Rough, "rough"},
@@ -32,6 +32,7 @@ constexpr std::array<KindName, 12> kKindNames{{
     {SurfaceKind::Wall, "wall"},
     {SurfaceKind::OutOfBounds, "out_of_bounds"},
     {SurfaceKind::Decoration, "decoration"},
+    {SurfaceKind::Tree, "tree"},
 }};
 
 }  // namespace
@@ -285,12 +286,25 @@ BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal
 }
 
 bool ground_under(const Terrain& terrain, double x, double z, double from_y, double depth, SurfaceContact* hit) {
-  if (!terrain.support(Vec3(x, from_y, z), 0.0, depth, hit)) return false;
-  const Vec3& n = hit->normal;
-  if (!(n.y() > 1e-6)) return false;  // a wall: no ground on this vertical
-  const Vec3& p = hit->point;
-  hit->point = Vec3(x, p.y() - (n.x() * (x - p.x()) + n.z() * (z - p.z())) / n.y(), z);
-  return true;
+  // Through at most this many tree faces (a crown's top and bottom, a few crowns overlapping).
+  constexpr int kMaxTreeFaces = 16;
+  const double floor_y = from_y - depth;
+  double top = from_y;
+  for (int pass = 0; pass <= kMaxTreeFaces; ++pass) {
+    if (pass > 0) *hit = SurfaceContact{};  // the cached support is the tree just passed
+    if (!terrain.support(Vec3(x, top, z), 0.0, top - floor_y, hit)) return false;
+    const Vec3& n = hit->normal;
+    if (!(n.y() > 1e-6)) return false;  // a wall: no ground on this vertical
+    const Vec3& p = hit->point;
+    const double y = p.y() - (n.x() * (x - p.x()) + n.z() * (z - p.z())) / n.y();
+    if (terrain.material(hit->material).kind != SurfaceKind::Tree) {
+      hit->point = Vec3(x, y, z);
+      return true;
+    }
+    top = std::min(top, y) - 1e-4;  // on down through the crown
+    if (top <= floor_y) return false;
+  }
+  return false;
 }
 
 bool FlatGround::sweep(const Vec3& from, const Vec3& to, double radius, SurfaceContact* hit,

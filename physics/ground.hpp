@@ -22,6 +22,7 @@ namespace sweetspot {
 enum class SurfaceKind : std::uint8_t {
   Tee, Fairway, Rough, Sand, Green, Water, Dirt, Grass, WarningTrack, Wall, OutOfBounds,
   Decoration,  ///< drawn, never collided (flag, chalk lines)
+  Tree,        ///< a tree's crown or trunk: struck in flight, never the ground under it
 };
 
 const char* to_string(SurfaceKind k);
@@ -173,7 +174,8 @@ class Terrain {
 
 /// The ground straight below (x, from_y, z), searching `depth` m down: the surface's contact
 /// with its point on that vertical line (Terrain::support's point is the foot along the
-/// surface normal, which from far above lies metres aside on a slope). False when none.
+/// surface normal, which from far above lies metres aside on a slope). A tree over the spot
+/// is looked through (the ground under a crown is the rough it stands in). False when none.
 bool ground_under(const Terrain& terrain, double x, double z, double from_y, double depth, SurfaceContact* hit);
 
 /// An infinite flat plane y = height of one material: the ground when no world is loaded.

@@ -4,7 +4,8 @@ ground under it as an elevation raster, for `sweetspot course import` (DESIGN §
 
   assets/courses/sources/national.osm   golf=hole lines (ref, par, handicap, dist), tees,
                                          fairways, greens, bunkers, ponds and a lateral burn,
-                                         pins on some greens, the leisure=golf_course boundary
+                                         pins on some greens, the leisure=golf_course boundary,
+                                         tree rows between holes, corner trees and two woods
   assets/courses/sources/national.asc   an ESRI ASCII grid of heights (m), WGS84 degrees,
   assets/courses/sources/national.prj   with its reference system beside it
 
@@ -148,8 +149,13 @@ def build():
         else:
             line = [tee, (start + sgn * length, n)]
         green = line[-1]
-        m.way([(tee[0] - 12 * sgn, n - 6), (tee[0] + 10 * sgn, n - 6), (tee[0] + 10 * sgn, n + 6), (tee[0] - 12 * sgn, n + 6)],
-              {"golf": "tee"}, closed=True)
+        # Three tee sets: blue round the line's first node, white and red further on (a par 3's closer together).
+        m.way([(tee[0] - 11 * sgn, n - 6), (tee[0] + 11 * sgn, n - 6), (tee[0] + 11 * sgn, n + 6), (tee[0] - 11 * sgn, n + 6)],
+              {"golf": "tee", "tee": "blue"}, closed=True)
+        for name, ahead in (("white", 22.0 if par > 3 else 14.0), ("red", 48.0 if par > 3 else 30.0)):
+            c = tee[0] + sgn * ahead
+            m.way([(c - 5 * sgn, n - 5), (c + 5 * sgn, n - 5), (c + 5 * sgn, n + 5), (c - 5 * sgn, n + 5)],
+                  {"golf": "tee", "tee": name}, closed=True)
         if par > 3:
             from_ = 105.0 if par == 4 else 120.0
             pts = [along(line, d)[0] for d in range(int(from_), int(length - 18), 15)] + [along(line, length - 18)[0]]
@@ -178,6 +184,31 @@ def build():
           {"golf": "lateral_water_hazard"}, closed=True)
     m.way([(-10, 0), (1010, 0), (1010, 60 + 8 * ROW + 60), (-10, 60 + 8 * ROW + 60)],
           {"leisure": "golf_course", "name": "Sweetspot National"}, closed=True)
+    # Trees as a parkland course has them: rows between neighbouring holes with gaps, a few
+    # single trees guarding corners, and woods along the north and south boundaries.
+    for x0, x1 in ((20.0, 480.0), (520.0, 980.0)):
+        for row in range(8):
+            n = 60.0 + row * ROW + ROW / 2
+            e = x0 + 70.0
+            while e < x1 - 90.0:
+                length = rng.uniform(90.0, 150.0)
+                end = min(e + length, x1 - 70.0)
+                wob = rng.uniform(-6.0, 6.0)
+                m.way([(e, n + wob), ((e + end) / 2, n - wob), (end, n + wob * 0.5)],
+                      {"natural": "tree_row", "height": str(rng.choice((10, 12, 14, 16)))})
+                e = end + rng.uniform(30.0, 60.0)
+    for num, par, length, hcp in HOLES:
+        if par == 5:   # a tree inside each dogleg's bend, 45 m short of it
+            front = num <= 9
+            row = (num - 1) if front else (18 - num)
+            east = (row % 2 == 0) if front else (row % 2 == 1)
+            sgn = 1.0 if east else -1.0
+            start = (20.0 if east else 480.0) if front else (520.0 if east else 980.0)
+            n = 60.0 + row * ROW
+            m.node(start + sgn * 215.0, n + (30.0 if row % 3 else -30.0), {"natural": "tree", "height": "18"})
+    m.way([(0, 8), (1000, 8), (1000, 30), (0, 30)], {"natural": "wood"}, closed=True)
+    m.way([(0, 60 + 8 * ROW + 30), (1000, 60 + 8 * ROW + 30), (1000, 60 + 8 * ROW + 55), (0, 60 + 8 * ROW + 55)],
+          {"natural": "wood"}, closed=True)
     return m
 
 

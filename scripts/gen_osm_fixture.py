@@ -3,7 +3,7 @@
 real ones (golf=hole lines from tee to green with ref, par, handicap and dist; golf=tee,
 fairway, green, bunker, water_hazard and lateral_water_hazard areas; golf=pin nodes on some
 greens; a leisure=golf_course boundary; one green drawn as a multipolygon relation with a
-bunker cut into it). The holes run east and west in rows 90 m apart, so the test can check
+bunker cut into it; trees, a tree row and a wood in the rough). The holes run east and west in rows 90 m apart, so the test can check
 each one's length and par against the map. Run from the repository root."""
 import math
 
@@ -55,7 +55,11 @@ for num, par, length, hcp in HOLES:
     sgn = 1.0 if east else -1.0
     tee = (e0, n)
     green = (e0 + sgn * length, n)
-    way(rect(e0 - 12, n - 6, e0 + 12, n + 6), {"golf": "tee"}, closed=True)
+    if num == 1:   # two named tee sets on the 1st: white at the line's first node, red 40 m on
+        way(rect(e0 - 12, n - 6, e0 + 12, n + 6), {"golf": "tee", "tee": "white"}, closed=True)
+        way(rect(e0 + 34, n - 4, e0 + 46, n + 4), {"golf": "tee", "tee": "red"}, closed=True)
+    else:
+        way(rect(e0 - 12, n - 6, e0 + 12, n + 6), {"golf": "tee"}, closed=True)
     if par > 3:   # a fairway from 140 m out to 15 m short of the green
         f0, f1 = e0 + sgn * 140, e0 + sgn * (length - 15)
         way(rect(min(f0, f1), n - 17, max(f0, f1), n + 17), {"golf": "fairway"}, closed=True)
@@ -80,6 +84,12 @@ for num, par, length, hcp in HOLES:
 way(ellipse(40 + 520 - 155 + 40, ROW, 14, 10), {"golf": "water_hazard"}, closed=True)
 way(rect(60, 7 * ROW + 26, 420, 7 * ROW + 32), {"golf": "lateral_water_hazard"}, closed=True)
 way(rect(-40, -40, 560, 8 * ROW + 40), {"leisure": "golf_course", "name": "Fixture Nine"}, closed=True)
+# Trees, in the rough between holes: a row between the 2nd and 3rd, two single trees (one
+# with its height), and a small wood north of the 8th's burn.
+way([(60, 1.5 * ROW), (420, 1.5 * ROW)], {"natural": "tree_row"})
+node(250, 0.5 * ROW, {"natural": "tree", "height": "16"})
+node(300, 2.5 * ROW, {"natural": "tree"})
+way(rect(150, 7 * ROW + 42, 350, 7 * ROW + 68), {"natural": "wood"}, closed=True)
 
 with open("tests/data/osm/nine_holes.osm", "w") as f:
     f.write("<?xml version='1.0' encoding='UTF-8'?>\n<osm version='0.6' generator='scripts/gen_osm_fixture.py'>\n")

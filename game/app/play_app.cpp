@@ -67,7 +67,8 @@ LoopStats run_window(const Assets& assets, const PlayOptions& o, std::ostream& o
   if (o.mode == "range") {
     golfer_skill(o.skill);
   } else if (o.mode == "golf") {
-    load_course(assets, o.course);
+    Course c = load_course(assets, o.course);
+    set_up(c, o.course_setup);  // a tee set the course lacks is named before the window opens
     golfer_skill(o.skill);
   } else if (o.mode == "baseball") {
     assets.world("ballpark");

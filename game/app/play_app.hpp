@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "game/content/assets.hpp"
+#include "game/content/course_file.hpp"
 
 namespace sweetspot {
 
@@ -19,9 +20,10 @@ struct PlayOptions {
   /// "lab" (the shot and its tuning panels), "golf" (a round on `course`) or "baseball"
   /// (the batting cage); Tab cycles through them.
   std::string mode = "lab";
-  std::string course = "links";          ///< golf: a course of assets/courses or a .toml
+  std::string course = "national";       ///< golf: a course of assets/courses or a .toml
   std::string skill = "scratch";         ///< golf: the player's swing speed (and the bot opponent's skill)
   int holes = 0;                         ///< golf: play only the first N holes (0 = all)
+  CourseSetup course_setup;              ///< golf: the tee set and pin set
   std::vector<std::string> bots;         ///< golf: the bot players' skills (empty: one of `skill`, unless humans join; "none": no bot)
   std::vector<std::string> humans;       ///< golf: more people at the same keys, by name (hot seat), after you
   std::string format = "stroke";         ///< golf: stroke, match, stableford, skins

@@ -47,11 +47,24 @@ ShotTrajectory hole_line(const CourseHole& h) {
   ShotTrajectory t;
   const int n = 64;
   const double len = h.length();
+  // Through the bends: the point u of the way along the line.
+  std::vector<Vec3> line{h.tee};
+  line.insert(line.end(), h.bends.begin(), h.bends.end());
+  line.push_back(h.pin);
+  const auto at = [&](double u) {
+    double left = u * len;
+    for (std::size_t k = 1; k < line.size(); ++k) {
+      const double seg = std::hypot(line[k].x() - line[k - 1].x(), line[k].z() - line[k - 1].z());
+      if (left <= seg || k + 1 == line.size()) return Vec3(line[k - 1] + (seg > 0.0 ? std::min(left / seg, 1.0) : 1.0) * (line[k] - line[k - 1]));
+      left -= seg;
+    }
+    return h.pin;
+  };
   for (int i = 0; i <= n; ++i) {
     const double u = static_cast<double>(i) / n;
     TrajectorySample s;
     s.t = u * 2.0;
-    Vec3 p = h.tee + u * (h.pin - h.tee);
+    Vec3 p = at(u);
     SurfaceContact hit;
     const WorldDescription& d = h.world->description();
     if (ground_under(*h.world->world, p.x(), p.z(), d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit)) p.y() = hit.point.y();

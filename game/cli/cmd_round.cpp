@@ -29,7 +29,7 @@ namespace sweetspot::cli {
 namespace {
 
 struct RoundOptions {
-  std::string course = "links";
+  std::string course = "national";
   std::vector<std::string> bots;
   std::vector<int> handicaps;
   std::string format = "stroke";
@@ -43,6 +43,7 @@ struct RoundOptions {
   std::string plot;
   std::string save, resume, bag;
   int stop_after = 0;  // holes; 0: the whole round
+  CourseSetup setup;
 };
 
 // The players: the scripted one first (a swings file), then one per --bot; names say the
@@ -76,6 +77,7 @@ void give_bag(const Assets& assets, const RoundOptions& o, std::vector<GolfPlaye
 GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
   if (!o.resume.empty()) return resume_round(assets, read_round_save(o.resume));
   Course course = load_course(assets, o.course);
+  set_up(course, o.setup);
   if (o.calm)
     for (CourseHole& h : course.holes) {
       h.wind_speed = 0.0;
@@ -145,7 +147,8 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
 // Closest to the pin (the course's shortest hole) or long drive (its longest): N balls from
 // the tee, each a fresh one-hole round.
 int play_contest(const Assets& assets, const RoundOptions& o) {
-  const Course course = load_course(assets, o.course);
+  Course course = load_course(assets, o.course);
+  set_up(course, o.setup);
   const bool ctp = o.mode == "ctp";
   auto by_length = [](const CourseHole& a, const CourseHole& b) { return a.length() < b.length(); };
   const CourseHole hole = ctp ? *std::min_element(course.holes.begin(), course.holes.end(), by_length)
@@ -193,7 +196,7 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
 
 RunFn setup_round(CLI::App& sub) {
   auto o = std::make_shared<RoundOptions>();
-  sub.add_option("course", o->course, "a course of assets/courses (default links; national: 18 holes), a .toml file, or a directory from course import");
+  sub.add_option("course", o->course, "a course of assets/courses (default national: 18 holes; national_3 its first three; links a generated three), a .toml file, or a directory from course import");
   sub.add_option("--bot", o->bots, "a bot player of this skill: tour, scratch, amateur or beginner; repeat for up to 4 players (default one tour bot)")
       ->check(checked_by([](const std::string& t) { golfer_skill(t); }, "SKILL"));
   sub.add_option("--bag", o->bag, "the first player's measured bag (range --bag-out): their caddie's carries");
@@ -203,6 +206,9 @@ RunFn setup_round(CLI::App& sub) {
       ->check(checked_by([](const std::string& t) { golf_format(t); }, "FORMAT"));
   sub.add_option("--gimme", o->gimme, "putts this close (m) are conceded, 0..3 (default: 0.6 in match play, else off)")
       ->check(CLI::Range(GolfOptions::kGimme.min, GolfOptions::kGimme.max));
+  sub.add_option("--tees", o->setup.tees, "the tee set to play from, as the course names them (\"white\"; default: each hole's own tee)");
+  sub.add_option("--pins", o->setup.pin_set, "the pin set, 1..9: where the cups are today (default 1; a course from course import has up to 4)")
+      ->check(CLI::Range(1, 9));
   sub.add_flag("--calm", o->calm, "no wind on any hole (default: the course's wind, else drawn from the seed)");
   sub.add_option("--seed", o->seed, "seed of the bot's swing errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   sub.add_option("--swings", o->swings, "scripted meter inputs, one [[stroke]] per stroke (TOML)");

@@ -54,7 +54,15 @@ void assign_stroke_index(const TomlFile& f, Course& c, const std::vector<const t
 
 }  // namespace
 
-double CourseHole::length() const { return std::hypot(pin.x() - tee.x(), pin.z() - tee.z()); }
+double CourseHole::length() const {
+  double s = 0.0;
+  Vec3 from = tee;
+  for (const Vec3& b : bends) {
+    s += std::hypot(b.x() - from.x(), b.z() - from.z());
+    from = b;
+  }
+  return s + std::hypot(pin.x() - from.x(), pin.z() - from.z());
+}
 
 int Course::par() const {
   int p = 0;
@@ -87,7 +95,8 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
   int last = 0;
   std::vector<const toml::node*> index_nodes;
   for (const toml::table* t : f.tables(f.root(), "hole", true)) {
-    f.only_keys(*t, "hole", {"number", "par", "world", "tee", "pin", "index", "wind_speed", "wind_toward"});
+    f.only_keys(*t, "hole", {"number", "par", "world", "tee", "pin", "bends", "pins", "tees", "index", "wind_speed",
+                             "wind_toward"});
     CourseHole h;
     static constexpr Range kNumber{1.0, 18.0};
     h.number = f.whole_number(f.required(*t, "number", "the hole's number, 1-18"), "number", kNumber);
@@ -119,6 +128,43 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
       throw InputError(f.where(*t) + ": hole " + std::to_string(h.number) + ": missing pin (world '" + h.world_name +
                        "' has no cup: give pin = [x, z])");
     }
+    if (const toml::node* pn = t->get("pins")) {
+      const toml::array* arr = pn->as_array();
+      if (arr == nullptr || arr->size() > CourseHole::kMaxPins)
+        f.fail(*pn, "pins", "expected [[x, z], ...] with at most " + std::to_string(CourseHole::kMaxPins) + " cup positions");
+      for (const toml::node& p : *arr) {
+        const auto xz = f.quantities(p, "pins", Dimension::Length, 2);
+        h.more_pins.push_back(ground_at(*h.world, xz[0], xz[1], f.where(p), "pin", {SurfaceKind::Green}));
+      }
+    }
+    for (const toml::table* ts : f.tables(*t, "tees", false)) {
+      f.only_keys(*ts, "tees", {"name", "at"});
+      CourseHole::TeeSet set;
+      set.name = f.text(f.required(*ts, "name", "the tee set's name (\"white\")"), "name");
+      const toml::node& an = f.required(*ts, "at", "the tee spot [x, z] on the world");
+      const auto xz = f.quantities(an, "at", Dimension::Length, 2);
+      set.at = ground_at(*h.world, xz[0], xz[1], f.where(an), "tee",
+                         {SurfaceKind::Tee, SurfaceKind::Fairway, SurfaceKind::Rough, SurfaceKind::Grass});
+      for (const CourseHole::TeeSet& other : h.tee_sets)
+        if (other.name == set.name) f.fail(*ts, "name", "tee set '" + set.name + "' is given twice for this hole");
+      h.tee_sets.push_back(set);
+    }
+    if (const toml::node* bn = t->get("bends")) {
+      const toml::array* arr = bn->as_array();
+      if (arr == nullptr || arr->size() > CourseHole::kMaxBends)
+        f.fail(*bn, "bends", "expected [[x, z], ...] with at most " + std::to_string(CourseHole::kMaxBends) + " points");
+      const WorldDescription& d = h.world->description();
+      for (const toml::node& p : *arr) {
+        const auto xz = f.quantities(p, "bends", Dimension::Length, 2);
+        if (xz[0] < d.bounds_min.x() || xz[0] > d.bounds_max.x() || xz[1] < d.bounds_min.z() || xz[1] > d.bounds_max.z())
+          f.fail(p, "bends", "point [" + std::to_string(xz[0]) + " m, " + std::to_string(xz[1]) + " m] is off the world (" +
+                                 ground_extent_text(d) + ")");
+        SurfaceContact hit;  // over water or sand too: the line is an aim, not a lie
+        const double y = ground_under(*h.world->world, xz[0], xz[1], d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit)
+                             ? hit.point.y() : 0.0;
+        h.bends.emplace_back(xz[0], y, xz[1]);
+      }
+    }
     if (const toml::node* in = t->get("index")) {
       static constexpr Range kIndex{1.0, 18.0};
       h.stroke_index = f.whole_number(*in, "index", kIndex);
@@ -134,6 +180,34 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
   }
   assign_stroke_index(f, c, index_nodes);
   return c;
+}
+
+std::vector<std::string> tee_set_names(const Course& course) {
+  std::vector<std::string> out;
+  for (const CourseHole& h : course.holes)
+    for (const CourseHole::TeeSet& t : h.tee_sets)
+      if (std::find(out.begin(), out.end(), t.name) == out.end()) out.push_back(t.name);
+  return out;
+}
+
+void set_up(Course& course, const CourseSetup& setup) {
+  check_range("pin set", setup.pin_set, CourseSetup::kPinSet, "");
+  if (!setup.tees.empty()) {
+    const std::vector<std::string> names = tee_set_names(course);
+    if (std::find(names.begin(), names.end(), setup.tees) == names.end()) {
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      throw InputError("tees: course '" + course.name + "' has no tee set '" + setup.tees + "' (allowed: " +
+                       (list.empty() ? std::string("none: its holes have one tee each") : list) + ")");
+    }
+  }
+  for (CourseHole& h : course.holes) {
+    for (const CourseHole::TeeSet& t : h.tee_sets)
+      if (t.name == setup.tees) h.tee = t.at;
+    const std::size_t k = static_cast<std::size_t>(setup.pin_set - 1) % (h.more_pins.size() + 1);
+    if (k > 0) h.pin = h.more_pins[k - 1];
+  }
+  course.setup = setup;
 }
 
 std::vector<std::string> course_names(const Assets& assets) {

@@ -17,6 +17,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "game/content/gzip_file.hpp"
 #include "game/content/obj_scan.hpp"
 #include "game/content/toml_file.hpp"
 #include "game/util/atomic_file.hpp"
@@ -66,7 +67,14 @@ class BoundedFileSystem final : public Assimp::IOSystem {
  public:
   BoundedFileSystem(std::uintmax_t max_bytes, const std::filesystem::path& mesh)
       : max_bytes_(max_bytes), mesh_(mesh), folder_(folder_of(mesh)) {}
+  /// Serves `bytes` as the file `name` (the inflated text of a gzip mesh, under its name
+  /// without ".gz", so that the importer picks its reader by that name).
+  void serve(std::filesystem::path name, std::string bytes) {
+    served_name_ = std::move(name);
+    served_ = std::move(bytes);
+  }
   bool Exists(const char* file) const override {
+    if (!served_name_.empty() && std::filesystem::path(file) == served_name_) return true;
     std::error_code ec;
     return std::filesystem::is_regular_file(file, ec);
   }
@@ -78,6 +86,10 @@ class BoundedFileSystem final : public Assimp::IOSystem {
     }
     try {
       const std::filesystem::path p(file);
+      if (!served_name_.empty() && p == served_name_) {
+        files_.push_back(mesh_.string());
+        return new BufferStream(served_);
+      }
       std::error_code ec;
       const bool is_mesh = std::filesystem::equivalent(p, mesh_, ec) && !ec;
       if (!is_mesh) {
@@ -108,6 +120,8 @@ class BoundedFileSystem final : public Assimp::IOSystem {
   }
   std::uintmax_t max_bytes_;
   std::filesystem::path mesh_, folder_;
+  std::filesystem::path served_name_;
+  std::string served_;
   std::string refusal_;
   std::vector<std::string> files_;
 };
@@ -242,15 +256,23 @@ void add_node(const aiScene* scene, const aiNode* node, const aiMatrix4x4& paren
 /// The import itself, run in the child.
 std::string import_in_child(const std::filesystem::path& path, const char* what, std::uintmax_t max_bytes,
                             unsigned flags) {
-  check_obj_text(path, what);
   Assimp::Importer importer;
   auto* io = new BoundedFileSystem(max_bytes, path);  // owned by the importer
   importer.SetIOHandler(io);
+  std::filesystem::path read_as = path;
+  if (is_gzip_path(path)) {
+    std::string text = read_gzip_file(path, what, max_bytes);
+    check_obj_text(text, path, what);
+    read_as = without_gzip_suffix(path);
+    io->serve(read_as, std::move(text));
+  } else {
+    check_obj_text(path, what);
+  }
   if (flags == 0) flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
   // Read first without post-processing and check every vertex as the file gives it:
   // triangulating a polygon with a NaN corner drops the corner and its triangles silently
   // (a hole in the ground: the ball falls through it).
-  const aiScene* scene = importer.ReadFile(path.string(), 0);
+  const aiScene* scene = importer.ReadFile(read_as.string(), 0);
   if (!io->refusal().empty()) throw InputError(io->refusal() + " (named by " + path.string() + ")");
   if (scene != nullptr) {
     std::uint64_t triangles = 0;

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "game/content/gzip_file.hpp"
 #include "game/content/mesh_file.hpp"
 #include "physics/error.hpp"
 
@@ -81,40 +82,64 @@ struct ObjScan {
 
 }  // namespace
 
-void check_obj_text(const std::filesystem::path& path, const char* what) {
-  std::ifstream in(path, std::ios::binary);
-  ObjScan scan{path, what, path.extension() == ".obj"};
-  std::string text;  // the statement being read: only lines that begin with 'o', 'v' or 'f' are kept
-  bool keep = true, line_start = true;
-  std::vector<char> block(1 << 16);  // a block at a time: a world's mesh is read at every start
-  while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
-    const std::size_t n = static_cast<std::size_t>(in.gcount());
+namespace {
+
+// The statements of an OBJ's text fed a block at a time: only lines that begin with 'o', 'v'
+// or 'f' are kept.
+class ObjTextScan {
+ public:
+  ObjTextScan(const std::filesystem::path& path, const char* what, bool obj_syntax) : scan_{path, what, obj_syntax} {}
+  void feed(const char* block, std::size_t n) {
     for (std::size_t i = 0; i < n; ++i) {
       const char c = block[i];
-      if (line_start) {
-        keep = c == 'o' || c == 'v' || c == 'f';
-        line_start = false;
+      if (line_start_) {
+        keep_ = c == 'o' || c == 'v' || c == 'f';
+        line_start_ = false;
       }
       if (c == '\n') {
         // A backslash before the newline continues the statement on the next line (which
         // then names it).
-        const std::size_t end = text.find_last_not_of(" \t\r");
-        if (keep && end != std::string::npos && text[end] == '\\') {
-          text.resize(end);
-          text += ' ';
-          ++scan.line;
+        const std::size_t end = text_.find_last_not_of(" \t\r");
+        if (keep_ && end != std::string::npos && text_[end] == '\\') {
+          text_.resize(end);
+          text_ += ' ';
+          ++scan_.line;
           continue;
         }
-        if (keep) scan.statement(text);
-        text.clear();
-        ++scan.line;
-        line_start = true;
-      } else if (keep) {
-        text += c;
+        if (keep_) scan_.statement(text_);
+        text_.clear();
+        ++scan_.line;
+        line_start_ = true;
+      } else if (keep_) {
+        text_ += c;
       }
     }
   }
-  if (keep && !text.empty()) scan.statement(text);
+  void finish() {
+    if (keep_ && !text_.empty()) scan_.statement(text_);
+  }
+
+ private:
+  ObjScan scan_;
+  std::string text_;  // the statement being read
+  bool keep_ = true, line_start_ = true;
+};
+
+}  // namespace
+
+void check_obj_text(const std::filesystem::path& path, const char* what) {
+  std::ifstream in(path, std::ios::binary);
+  ObjTextScan scan(path, what, path.extension() == ".obj");
+  std::vector<char> block(1 << 16);  // a block at a time: a world's mesh is read at every start
+  while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0)
+    scan.feed(block.data(), static_cast<std::size_t>(in.gcount()));
+  scan.finish();
+}
+
+void check_obj_text(std::string_view text, const std::filesystem::path& path, const char* what) {
+  ObjTextScan scan(path, what, without_gzip_suffix(path).extension() == ".obj");
+  scan.feed(text.data(), text.size());
+  scan.finish();
 }
 
 }  // namespace sweetspot

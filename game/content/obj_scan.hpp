@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string_view>
 
 namespace sweetspot {
 
@@ -14,5 +15,8 @@ namespace sweetspot {
 /// object count applies to a file not named *.obj (assimp also recognises an OBJ by its
 /// contents). `what` names the file's role ("world mesh").
 void check_obj_text(const std::filesystem::path& path, const char* what);
+/// The same checks of a file's text already in memory (an inflated "world.obj.gz"): `path`
+/// names it in messages, and its name without ".gz" decides whether it is an OBJ.
+void check_obj_text(std::string_view text, const std::filesystem::path& path, const char* what);
 
 }  // namespace sweetspot

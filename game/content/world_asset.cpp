@@ -7,6 +7,7 @@
 #include <limits>
 #include <system_error>
 
+#include "game/content/gzip_file.hpp"
 #include "game/content/mesh_file.hpp"
 #include "game/core/sport.hpp"
 #include "game/content/toml_file.hpp"
@@ -176,7 +177,7 @@ std::string ground_extent_text(const WorldDescription& d, const Vec3& relative_t
 
 bool is_world_path(const std::string& name_or_path) {
   return name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".toml") ||
-         name_or_path.ends_with(".obj");
+         name_or_path.ends_with(".obj") || name_or_path.ends_with(".obj.gz");
 }
 
 // ---- 3. the world .toml ----------------------------------------------------------------
@@ -188,8 +189,8 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
   std::string pin_where;  // file:line of the pin key
   WorldDescription d;
   d.materials = materials;
-  if (path.extension() == ".obj") {
-    d.name = path.stem().string();
+  if (without_gzip_suffix(path).extension() == ".obj") {
+    d.name = without_gzip_suffix(path).stem().string();
     load_mesh(path, &d);
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (const auto& m : d.meshes)

@@ -14,6 +14,7 @@
 #include "game/courses/golf_map.hpp"
 #include "game/courses/terrain_heights.hpp"
 #include "game/courses/surface_plan.hpp"
+#include "game/courses/tree_planting.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
 
@@ -27,6 +28,24 @@ double line_length(const std::vector<LocalPoint>& pts) {
   double s = 0.0;
   for (std::size_t i = 1; i < pts.size(); ++i) s += std::hypot(pts[i].x - pts[i - 1].x, pts[i].z - pts[i - 1].z);
   return s;
+}
+
+// The line's nodes between its ends, the gentlest turns dropped until CourseHole::kMaxBends
+// remain (a hole drawn with many nodes along a curve keeps the corners that shape it).
+std::vector<LocalPoint> main_bends(const std::vector<LocalPoint>& line) {
+  std::vector<LocalPoint> pts = line;
+  const auto turn = [&](std::size_t i) {
+    const double a = std::atan2(pts[i].z - pts[i - 1].z, pts[i].x - pts[i - 1].x);
+    const double b = std::atan2(pts[i + 1].z - pts[i].z, pts[i + 1].x - pts[i].x);
+    return std::abs(std::remainder(b - a, 2.0 * M_PI));
+  };
+  while (pts.size() > CourseHole::kMaxBends + 2) {
+    std::size_t gentlest = 1;
+    for (std::size_t i = 2; i + 1 < pts.size(); ++i)
+      if (turn(i) < turn(gentlest)) gentlest = i;
+    pts.erase(pts.begin() + static_cast<std::ptrdiff_t>(gentlest));
+  }
+  return std::vector<LocalPoint>(pts.begin() + 1, pts.end() - 1);
 }
 
 }  // namespace
@@ -137,7 +156,31 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
       h.pin_slope = slope;
     }
     h.pin = *pin;
+    // More cup positions for other days: spread over the green, each where it is level
+    // enough, the farthest from those chosen first.
+    {
+      std::vector<LocalPoint> grid;
+      for (const LocalPoint& q : plan.green_grid(pin->x, pin->z, 1.0, kPinInset, 2.0))
+        if (!dem || green_slope(*dem, frame, q) <= kMaxPinSlope) grid.push_back(q);
+      std::vector<LocalPoint> chosen{*pin};
+      while (static_cast<int>(chosen.size()) < kPinSets) {
+        double best = kPinSpread;
+        const LocalPoint* far = nullptr;
+        for (const LocalPoint& q : grid) {
+          double near = HUGE_VAL;
+          for (const LocalPoint& c : chosen) near = std::min(near, std::hypot(q.x - c.x, q.z - c.z));
+          if (near >= best) {
+            best = near;
+            far = &q;
+          }
+        }
+        if (far == nullptr) break;
+        chosen.push_back(*far);
+      }
+      h.more_pins.assign(chosen.begin() + 1, chosen.end());
+    }
     line.back() = h.pin;
+    h.bends = main_bends(line);
     h.length = line_length(line);
     if (m.par) {
       h.par = *m.par;
@@ -154,6 +197,38 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
       indexes.insert(h.index);
     }
     r.holes.push_back(h);
+  }
+  // Named tee boxes (tee=*, name=*) to the hole whose tee is nearest.
+  for (const MapArea& a : map.areas) {
+    if (a.surface != MapSurface::Tee || a.tee_sets.empty() || a.polygons.empty()) continue;
+    double sx = 0.0, sz = 0.0;
+    const std::vector<GeoPoint>& ring = a.polygons.front().outer;
+    for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
+      const LocalPoint q = frame.to_local(ring[i]);
+      sx += q.x;
+      sz += q.z;
+    }
+    const double n = static_cast<double>(std::max<std::size_t>(ring.size() - 1, 1));
+    const LocalPoint at{sx / n, sz / n};
+    if (plan.material_at(at.x, at.z) != "tee") {
+      r.report.push_back(a.element + " (golf=tee " + a.tee_sets.front() + "): its middle is not on the tee; left out of the tee sets");
+      continue;
+    }
+    ImportedHole* nearest = nullptr;
+    double best = kTeeSearch;
+    for (ImportedHole& h : r.holes) {
+      const double d = std::hypot(h.tee.x - at.x, h.tee.z - at.z);
+      if (d < best) {
+        best = d;
+        nearest = &h;
+      }
+    }
+    if (nearest == nullptr) continue;
+    for (const std::string& name : a.tee_sets) {
+      bool dup = false;
+      for (const auto& [have, p] : nearest->tee_sets) dup = dup || have == name;
+      if (!dup) nearest->tee_sets.emplace_back(name, at);
+    }
   }
   if (indexes.size() != r.holes.size()) {
     if (!indexes.empty()) r.report.push_back("handicap=* is not given once for each of 1.." + std::to_string(r.holes.size()) +
@@ -181,6 +256,27 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
   } else {
     r.report.push_back("no elevation given: the ground is flat");
   }
+  // Trees after the ground is shaped: they stand on it, their own shapes untouched.
+  const TreePlanting planting = plant_trees(map, frame, plan);
+  if (!planting.trees.empty() || planting.left_out > 0) {
+    std::vector<LocalPoint> at;
+    for (const PlantedTree& t : planting.trees) at.push_back(t.at);
+    std::vector<double> base = dem ? dem->heights(frame, at) : std::vector<double>(at.size(), 0.0);
+    if (dem)
+      for (double& y : base) y -= tee_height;
+    add_tree_meshes(mesh, planting.trees, base);
+    r.trees = planting.trees.size();
+    char msg[240];
+    std::snprintf(msg, sizeof msg, "trees planted: %zu (%zu mapped, %zu along tree rows, %zu in woods); %zu left out (not on rough)",
+                  planting.trees.size(), planting.mapped, planting.in_rows, planting.in_woods, planting.left_out);
+    r.report.push_back(msg);
+    if (planting.wood_spacing > kTreeSpacing) {
+      std::snprintf(msg, sizeof msg, "woods planted %.0f m apart instead of %.0f m (at most %zu trees on a course)",
+                    planting.wood_spacing, kTreeSpacing, kMaxTrees);
+      r.report.push_back(msg);
+    }
+  }
+  r.triangles = mesh.triangle_count();
   // Written beside the target and renamed into place once it loads as a course.
   std::string tmpl = (parent / (".course-import-XXXXXX")).string();
   if (mkdtemp(tmpl.data()) == nullptr) throw InputError(parent.string() + ": cannot create a working directory there");

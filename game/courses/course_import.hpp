@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "game/content/assets.hpp"
@@ -27,6 +28,9 @@ struct ImportedHole {
   int number = 0, par = 0;
   int index = 0;               ///< stroke index from handicap=*, 0 when the map gives none
   LocalPoint tee, pin;
+  std::vector<LocalPoint> bends;  ///< the mapped line's nodes between tee and green
+  std::vector<LocalPoint> more_pins;  ///< pin sets 2.. (kPinSets in all where the green holds them)
+  std::vector<std::pair<std::string, LocalPoint>> tee_sets;  ///< named tee boxes of this hole
   double length = 0.0;         ///< m along the mapped line, tee to cup
   double pin_slope = 0.0;      ///< the putting surface's slope at the cup (rise over run)
   std::string element;         ///< the golf=hole way
@@ -37,8 +41,17 @@ struct ImportResult {
   std::vector<ImportedHole> holes;
   std::vector<std::string> report;   ///< what was mended or assumed, one line each
   std::size_t triangles = 0;
+  std::size_t trees = 0;              ///< planted (tree_planting.hpp)
   std::map<std::string, double> areas;  ///< m² by material
 };
+
+/// Cup positions per green, the mapped (or central) one first, each at least kPinSpread m
+/// from the others: front, middle and back pins as a green staff rotates them (ESTIMATE of
+/// a week's rotation on a ~30 m green).
+inline constexpr int kPinSets = 4;
+inline constexpr double kPinSpread = 7.0;  // m
+/// A named tee box belongs to the hole whose tee (its line's first node) is nearest, within this.
+inline constexpr double kTeeSearch = 150.0;  // m
 
 /// A cup sits where the green slopes this much at most (the USGA's guidance on hole
 /// locations: ~3 % at most at green speeds of 10-11 ft).

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "game/content/gzip_file.hpp"
 #include "game/util/atomic_file.hpp"
 
 namespace sweetspot {
@@ -24,6 +25,8 @@ const char* colour_of(const std::string& m) {
   if (m == "sand") return "0.860 0.790 0.560";
   if (m == "water") return "0.150 0.350 0.620";
   if (m == "out_of_bounds") return "0.450 0.450 0.480";
+  if (m == "tree") return "0.120 0.280 0.110";
+  if (m == "trunk") return "0.330 0.240 0.150";
   return "0.200 0.420 0.150";  // rough
 }
 
@@ -64,7 +67,9 @@ void write_world(const std::filesystem::path& dir, const std::string& name, cons
     for (const auto& t : g.triangles) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     mtl << "newmtl " << g.material << "\nKd " << colour_of(g.material) << "\nKa 0 0 0\nKs 0 0 0\n";
   }
-  write_file_atomic(dir / "world.obj", obj.str());
+  // Compressed: an 18-hole ground is ~4 MB of text and ~1 MB gzipped (the world loader
+  // inflates it; `gunzip -k` gives the OBJ for a modelling tool).
+  write_file_atomic(dir / "world.obj.gz", gzip_bytes(obj.str()));
   write_file_atomic(dir / "world.mtl", mtl.str());
   double low = 0.0, high = 0.0;
   for (const Vec3& v : mesh.vertices) {
@@ -73,7 +78,7 @@ void write_world(const std::filesystem::path& dir, const std::string& name, cons
   }
   std::ostringstream t;
   t << "# " << one_line(name) << ": written by sweetspot course import (x east, z south, y up; m)\n"
-    << "name = " << toml_text(name) << "\nsport = \"golf\"\nmesh = \"world.obj\"\n"
+    << "name = " << toml_text(name) << "\nsport = \"golf\"\nmesh = \"world.obj.gz\"\n"
     << "origin = [" << metres(origin.x) << ", \"0m\", " << metres(origin.z) << "]   # hole 1's tee\n"
     << "bounds_min = [" << metres(min.x) << ", " << metres(low - 20.0) << ", " << metres(min.z) << "]\n"
     << "bounds_max = [" << metres(max.x) << ", " << metres(high + 400.0) << ", " << metres(max.z) << "]\n";
@@ -93,6 +98,25 @@ void write_course(const std::filesystem::path& dir, const ImportResult& r) {
     std::snprintf(len, sizeof len, "   # %s, %.0f m", h.element.c_str(), h.length);
     t << "world = \"world.toml\"" << len << "\ntee = [" << metres(h.tee.x) << ", " << metres(h.tee.z) << "]\npin = ["
       << metres(h.pin.x) << ", " << metres(h.pin.z) << "]\n";
+    if (!h.bends.empty()) {
+      t << "bends = [";
+      for (std::size_t i = 0; i < h.bends.size(); ++i)
+        t << (i ? ", " : "") << "[" << metres(h.bends[i].x) << ", " << metres(h.bends[i].z) << "]";
+      t << "]   # where the hole's line turns\n";
+    }
+    if (!h.more_pins.empty()) {
+      t << "pins = [";
+      for (std::size_t i = 0; i < h.more_pins.size(); ++i)
+        t << (i ? ", " : "") << "[" << metres(h.more_pins[i].x) << ", " << metres(h.more_pins[i].z) << "]";
+      t << "]   # pin sets 2..\n";
+    }
+    if (!h.tee_sets.empty()) {
+      t << "tees = [";
+      for (std::size_t i = 0; i < h.tee_sets.size(); ++i)
+        t << (i ? ", " : "") << "{name = " << toml_text(h.tee_sets[i].first) << ", at = [" << metres(h.tee_sets[i].second.x)
+          << ", " << metres(h.tee_sets[i].second.z) << "]}";
+      t << "]\n";
+    }
   }
   write_file_atomic(dir / "course.toml", t.str());
 }

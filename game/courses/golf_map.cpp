@@ -75,6 +75,17 @@ std::optional<int> whole(const char* text) {
   return static_cast<int>(v);
 }
 
+// height=*: metres ("12", "12 m"), a tree's from 1 to 100 m; else none.
+std::optional<double> height(const char* text) {
+  if (text == nullptr) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  std::string_view unit(end);
+  while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
+  if (end == text || !(v >= 1.0 && v <= 100.0) || !(unit.empty() || unit == "m")) return std::nullopt;
+  return v;
+}
+
 // dist=*: metres, or with a unit "m", "yd", "yards".
 std::optional<double> distance(const char* text) {
   if (text == nullptr) return std::nullopt;
@@ -86,6 +97,25 @@ std::optional<double> distance(const char* text) {
   if (unit.empty() || unit == "m") return v;
   if (unit == "yd" || unit == "yards") return v * 0.9144;
   return std::nullopt;
+}
+
+// A golf=tee box's sets: tee=* ("red;white" is two), else name=*.
+std::vector<std::string> tee_sets_of(const osmium::TagList& tags) {
+  std::vector<std::string> out;
+  if (!tags.has_tag("golf", "tee")) return out;
+  const char* v = tags["tee"] != nullptr ? tags["tee"] : tags["name"];
+  if (v == nullptr) return out;
+  std::string_view rest(v);
+  while (!rest.empty()) {
+    const std::size_t cut = rest.find(';');
+    std::string_view one = rest.substr(0, cut);
+    while (!one.empty() && one.front() == ' ') one.remove_prefix(1);
+    while (!one.empty() && one.back() == ' ') one.remove_suffix(1);
+    if (!one.empty() && one.size() <= 40) out.emplace_back(one);
+    if (cut == std::string_view::npos) break;
+    rest.remove_prefix(cut + 1);
+  }
+  return out;
 }
 
 std::vector<GeoPoint> ring_of(const osmium::NodeRefList& nodes) {
@@ -100,8 +130,11 @@ class Collector : public osmium::handler::Handler {
   explicit Collector(GolfMap& map) : map_(map) {}
 
   void node(const osmium::Node& n) {
-    if (n.tags().has_tag("golf", "pin") && n.location().valid())
-      map_.pins.push_back({"node " + std::to_string(n.id()), {n.location().lat(), n.location().lon()}});
+    if (!n.location().valid()) return;
+    const GeoPoint at{n.location().lat(), n.location().lon()};
+    if (n.tags().has_tag("golf", "pin")) map_.pins.push_back({"node " + std::to_string(n.id()), at});
+    if (n.tags().has_tag("natural", "tree"))
+      map_.trees.push_back({"node " + std::to_string(n.id()), {at}, height(n.tags()["height"])});
   }
 
   void way(const osmium::Way& w) {
@@ -116,6 +149,11 @@ class Collector : public osmium::handler::Handler {
       h.line = ring_of(w.nodes());
       if (h.line.size() < 2) throw InputError(element + " (golf=hole): fewer than two located nodes: a hole runs from its tee to its green");
       map_.holes.push_back(std::move(h));
+      return;
+    }
+    if (w.tags().has_tag("natural", "tree_row")) {
+      std::vector<GeoPoint> line = ring_of(w.nodes());
+      if (line.size() >= 2) map_.trees.push_back({element, std::move(line), height(w.tags()["height"])});
       return;
     }
     const std::optional<MapSurface> s = surface_of(w.tags());
@@ -138,24 +176,26 @@ class Collector : public osmium::handler::Handler {
     char msg[120];
     std::snprintf(msg, sizeof msg, "%s (%s): ring closed across its %.2f m gap", element.c_str(), to_string(*s), gap);
     map_.repairs.push_back(msg);
-    map_.areas.push_back({*s, element, {{std::move(ring), {}}}});
+    map_.areas.push_back({*s, element, {{std::move(ring), {}}}, tee_sets_of(w.tags())});
   }
 
   void area(const osmium::Area& a) {
-    const std::optional<MapSurface> s = surface_of(a.tags());
+    const bool wood = a.tags().has_tag("natural", "wood") || a.tags().has_tag("landuse", "forest");
+    const std::optional<MapSurface> s = wood ? std::optional<MapSurface>(MapSurface::Rough) : surface_of(a.tags());
     if (!s) return;
     if (*s == MapSurface::Course && map_.name.empty())
       if (const char* name = a.tags()["name"]) map_.name = name;
     MapArea out;
     out.surface = *s;
     out.element = std::string(a.from_way() ? "way " : "relation ") + std::to_string(a.orig_id());
+    out.tee_sets = tee_sets_of(a.tags());
     for (const osmium::OuterRing& outer : a.outer_rings()) {
       MapPolygon p;
       p.outer = ring_of(outer);
       for (const osmium::InnerRing& inner : a.inner_rings(outer)) p.inners.push_back(ring_of(inner));
       if (p.outer.size() >= 4) out.polygons.push_back(std::move(p));
     }
-    if (!out.polygons.empty()) map_.areas.push_back(std::move(out));
+    if (!out.polygons.empty()) (wood ? map_.woods : map_.areas).push_back(std::move(out));
   }
 
  private:
@@ -289,6 +329,8 @@ GolfMap read_golf_map(const std::filesystem::path& path) {
     filter.add_rule(true, osmium::TagMatcher("leisure", "golf_course"));
     filter.add_rule(true, osmium::TagMatcher("natural", "water"));
     filter.add_rule(true, osmium::TagMatcher("natural", "sand"));
+    filter.add_rule(true, osmium::TagMatcher("natural", "wood"));
+    filter.add_rule(true, osmium::TagMatcher("landuse", "forest"));
     osmium::area::MultipolygonManager<osmium::area::Assembler> manager(config, filter);
     osmium::relations::read_relations(file, manager);
     Index index;

@@ -1,6 +1,7 @@
 // What a golf course's OpenStreetMap data says (DESIGN §9, course import): its mapped areas
 // (greens, tees, fairways, bunkers, water, rough, the course's boundary), its holes (the
-// tee-to-green line with ref, par and handicap) and its pins, in latitude and longitude.
+// tee-to-green line with ref, par and handicap), its pins and its trees and woods, in
+// latitude and longitude.
 // read_golf_map() reads OSM XML or PBF through libosmium, which assembles multipolygon
 // relations (a green with a hole in it, a fairway in several parts) into areas.
 #pragma once
@@ -31,6 +32,9 @@ struct MapArea {
   MapSurface surface = MapSurface::Rough;
   std::string element;  ///< "way 123", "relation 45": what the map calls it, for messages
   std::vector<MapPolygon> polygons;
+  /// A tee box's sets (tee=* split at ';', "blue", "white", ...; else its name=*): empty for
+  /// other surfaces and for an unnamed box.
+  std::vector<std::string> tee_sets;
 };
 
 /// A golf=hole way: from the tee (its first node) to the green (its last).
@@ -48,15 +52,26 @@ struct MapPin {
   GeoPoint at;
 };
 
+/// A tree (natural=tree, a node) or a row of them (natural=tree_row, a way: trees along it).
+struct MapTrees {
+  std::string element;
+  std::vector<GeoPoint> line;      ///< one point for a tree, the row's line for a row
+  std::optional<double> height;    ///< m, height=* when mapped
+};
+
 struct GolfMap {
   std::vector<MapArea> areas;
   std::vector<MapHole> holes;
   std::vector<MapPin> pins;
+  std::vector<MapTrees> trees;     ///< single trees and tree rows
+  std::vector<MapArea> woods;      ///< natural=wood and landuse=forest (the ground under them plays as rough)
   std::string name;                    ///< the leisure=golf_course name, when mapped
   std::vector<std::string> repairs;    ///< what was mended while reading, one line each
 };
 
-/// Calls `f(GeoPoint)` for every point the map draws: each area's outer rings and each hole's line.
+/// Calls `f(GeoPoint)` for every point of the course the map draws: each area's outer rings
+/// and each hole's line (trees and woods stand where they stand: a forest reaching far off
+/// does not widen the course).
 template <class F>
 void for_each_point(const GolfMap& map, F&& f) {
   for (const MapArea& a : map.areas)

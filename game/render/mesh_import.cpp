@@ -23,9 +23,9 @@ struct Named {
 
 // Colours chosen to read at a glance from far away: fairway a mid green with stripes, rough
 // darker and bluer, green the lightest and stripy, sand pale, dirt and warning track warm
-// browns, the outfield wall a dark green as in most ballparks.
-const std::array<Named, 20>& palette() {
-  static const std::array<Named, 20> p{{
+// browns, the outfield wall a dark green as in most ballparks, tree crowns darker than rough.
+const std::array<Named, 22>& palette() {
+  static const std::array<Named, 22> p{{
       {"tee", {{0.40f, 0.66f, 0.27f}, surface_look::kMown}},
       {"fairway", {{0.36f, 0.64f, 0.23f}, surface_look::kMown}},
       {"rough", {{0.18f, 0.40f, 0.15f}, surface_look::kLongGrass}},
@@ -46,6 +46,8 @@ const std::array<Named, 20>& palette() {
       {"bat", {{0.82f, 0.63f, 0.38f}, surface_look::kPlain}},
       {"out_of_bounds", {{0.16f, 0.30f, 0.13f}, surface_look::kLongGrass}},
       {"foul_pole", {{0.95f, 0.85f, 0.10f}, surface_look::kPlain}},
+      {"tree", {{0.11f, 0.27f, 0.10f}, surface_look::kLongGrass}},  // a crown: darker than the rough under it
+      {"trunk", {{0.33f, 0.24f, 0.15f}, surface_look::kPlain}},
   }};
   return p;
 }

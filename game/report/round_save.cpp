@@ -88,7 +88,8 @@ nlohmann::json round_save_json(const GolfGroup& g, const std::string& course) {
   return {{"sweetspot_round", kVersion},     {"course", course}, {"holes", g.course().holes.size()},
           {"players", players},              {"format", to_string(g.options().format)},
           {"gimme_m", g.options().gimme_m},  {"auto_putt", g.options().auto_putt},
-          {"seed", g.options().seed},        {"events", events}};
+          {"seed", g.options().seed},        {"tees", g.course().setup.tees},
+          {"pin_set", g.course().setup.pin_set}, {"events", events}};
 }
 
 SavedRound parse_round_save(const std::string& text, const std::string& source) {
@@ -100,7 +101,8 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
   }
   const Reader r{source};
   if (!j.is_object() || !j.contains("sweetspot_round")) r.fail("sweetspot_round", "missing: not a saved round");
-  r.only_keys(j, {"sweetspot_round", "course", "holes", "players", "format", "gimme_m", "auto_putt", "seed", "events"}, "");
+  r.only_keys(j, {"sweetspot_round", "course", "holes", "players", "format", "gimme_m", "auto_putt", "seed", "tees",
+                  "pin_set", "events"}, "");
   if (j["sweetspot_round"] != kVersion) r.fail("sweetspot_round", "version " + j["sweetspot_round"].dump() + " (allowed: 1)");
   SavedRound s;
   s.source = source;
@@ -153,6 +155,14 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
   s.options.gimme_m = r.number(j, "gimme_m", GolfOptions::kGimme);
   s.options.auto_putt = r.flag(j, "auto_putt");
   s.options.seed = r.whole(j, "seed");
+  // The course's set-up (saves written before tee and pin sets play its own tees, pin set 1).
+  if (j.contains("tees") && !j["tees"].is_string()) r.fail("tees", "a tee set's name (\"\" for the holes' own)");
+  if (j.contains("tees")) s.setup.tees = j["tees"].get<std::string>();
+  if (j.contains("pin_set")) {
+    const double k = r.number(j, "pin_set", CourseSetup::kPinSet);
+    if (k != static_cast<int>(k)) r.fail("pin_set", "must be a whole number");
+    s.setup.pin_set = static_cast<int>(k);
+  }
   const auto& events = r.at(j, "events", "");
   if (!events.is_array()) r.fail("events", "must be a list");
   const Range kPlayer{0.0, static_cast<double>(s.players.size() - 1)};
@@ -195,6 +205,11 @@ Course saved_course(const Assets& assets, const SavedRound& saved) {
     throw InputError(saved.source + ": holes: " + std::to_string(saved.holes) + " but course '" + saved.course + "' has " +
                      std::to_string(c.holes.size()));
   c.holes.resize(static_cast<std::size_t>(saved.holes));
+  try {
+    set_up(c, saved.setup);
+  } catch (const InputError& e) {
+    throw InputError(saved.source + ": " + e.what());
+  }
   return c;
 }
 

@@ -16,6 +16,7 @@ namespace sweetspot {
 struct SavedRound {
   std::string course;               ///< as load_course() takes it (a name or a path)
   int holes = 0;                    ///< the round's holes: the course's first N (play --holes N)
+  CourseSetup setup;                ///< its tees and pin set
   std::vector<GolfPlayer> players;
   GolfOptions options;
   std::vector<GolfEvent> events;

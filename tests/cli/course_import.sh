@@ -12,7 +12,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 src="$root/assets/courses/sources"
 "$bin" course import "$src/national.osm" --dem "$src/national.asc" --cell 8 -o "$tmp/national" > "$tmp/out" || fail "import: $(cat "$tmp/out")"
 grep -q "Sweetspot National: 18 holes, par 72" "$tmp/out" || fail "import summary: $(head -1 "$tmp/out")"
-for f in course.toml world.toml world.obj world.mtl; do
+for f in course.toml world.toml world.obj.gz world.mtl; do
   cmp -s "$tmp/national/$f" "$root/assets/courses/national/$f" ||
     fail "assets/courses/national/$f differs from a fresh import (run: sweetspot course import assets/courses/sources/national.osm --dem assets/courses/sources/national.asc --cell 8 -o assets/courses/national)"
 done

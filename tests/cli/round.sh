@@ -8,8 +8,8 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-json=$("$bin" round --bot tour --seed 3 --json)
-[ "$json" = "$("$bin" round --bot tour --seed 3 --json)" ] || fail "same seed, different output"
+json=$("$bin" round links --bot tour --seed 3 --json)
+[ "$json" = "$("$bin" round links --bot tour --seed 3 --json)" ] || fail "same seed, different output"
 python3 - "$json" <<'PY' || fail "json"
 import json, sys
 j = json.loads(sys.argv[1])
@@ -35,7 +35,7 @@ PY
 avg() {
   local sum=0
   for seed in 1 2 3 4; do
-    sum=$((sum + $("$bin" round --bot "$1" --seed $seed --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["total_strokes"])')))
+    sum=$((sum + $("$bin" round links --bot "$1" --seed $seed --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["total_strokes"])')))
   done
   echo "$sum"
 }
@@ -51,7 +51,7 @@ cat > "$tmp/swings.toml" <<'T'
 club = "7-iron"
 power = "72%"
 T
-out=$("$bin" round --calm --swings "$tmp/swings.toml" --bot tour --json)
+out=$("$bin" round links --calm --swings "$tmp/swings.toml" --bot tour --json)
 python3 - "$out" <<'PY' || fail "scripted water"
 import json, sys
 j = json.loads(sys.argv[1])
@@ -62,7 +62,7 @@ PY
 # A script that runs out mid-round with no bot to play on is an error naming the file, not
 # a card with unfinished holes and exit 0.
 set +e
-msg=$("$bin" round --calm --swings "$tmp/swings.toml" --json 2>&1 >"$tmp/ran_out.json"); rc=$?
+msg=$("$bin" round links --calm --swings "$tmp/swings.toml" --json 2>&1 >"$tmp/ran_out.json"); rc=$?
 set -e
 [ $rc -eq 2 ] || fail "script ran out: exit $rc"
 grep -q "swings.toml: the script ran out" <<<"$msg" || fail "script ran out: message '$msg'"
@@ -71,7 +71,7 @@ grep -q "swings.toml: the script ran out" <<<"$msg" || fail "script ran out: mes
 # Bad input: exit 2, file:line, the allowed range.
 printf '[[stroke]]\npower = "140%%"\n' > "$tmp/bad.toml"
 set +e
-msg=$("$bin" round --swings "$tmp/bad.toml" 2>&1); rc=$?
+msg=$("$bin" round links --swings "$tmp/bad.toml" 2>&1); rc=$?
 set -e
 [ $rc -eq 2 ] || fail "power 140%: exit $rc"
 grep -q "bad.toml:2" <<<"$msg" && grep -q "110" <<<"$msg" || fail "power 140%: message '$msg'"
@@ -80,7 +80,7 @@ msg=$("$bin" round nowhere 2>&1); rc=$?
 set -e
 [ $rc -eq 2 ] || fail "missing course: exit $rc"
 set +e
-msg=$("$bin" round --bot legend 2>&1); rc=$?
+msg=$("$bin" round links --bot legend 2>&1); rc=$?
 set -e
 [ $rc -eq 2 ] && grep -q "tour, scratch, amateur, beginner" <<<"$msg" || fail "unknown skill: $rc '$msg'"
 
@@ -90,9 +90,9 @@ for fmt in match stableford skins; do
   if [ $fmt = match ]; then bots="--bot tour --bot amateur --handicap 0 --handicap 12"
   else bots="--bot tour --bot amateur --bot beginner --handicap 0 --handicap 12 --handicap 26"; fi
   # shellcheck disable=SC2086
-  out=$("$bin" round $bots --format $fmt --seed 7 --json)
+  out=$("$bin" round links $bots --format $fmt --seed 7 --json)
   # shellcheck disable=SC2086
-  [ "$out" = "$("$bin" round $bots --format $fmt --seed 7 --json)" ] || fail "$fmt: same seed, different output"
+  [ "$out" = "$("$bin" round links $bots --format $fmt --seed 7 --json)" ] || fail "$fmt: same seed, different output"
   python3 - "$out" "$fmt" <<'PY' || fail "$fmt json"
 import json, sys
 j = json.loads(sys.argv[1]); fmt = sys.argv[2]
@@ -145,19 +145,19 @@ else:
 PY
 done
 # The table a player reads adds its putts too (the total row once put the score to par there).
-"$bin" round --bot tour --seed 3 | awk '/^total/ {t=$4} /^[0-9]/ {s+=$4} END {exit !(t==s)}' || fail "putts column does not add up"
+"$bin" round links --bot tour --seed 3 | awk '/^total/ {t=$4} /^[0-9]/ {s+=$4} END {exit !(t==s)}' || fail "putts column does not add up"
 
 # A round saved after a hole and resumed finishes exactly as the round played through.
-"$bin" round --bot tour --bot beginner --format match --seed 9 --json > "$tmp/whole.json"
-"$bin" round --bot tour --bot beginner --format match --seed 9 --stop-after 1 --save "$tmp/r.save" > /dev/null
+"$bin" round links --bot tour --bot beginner --format match --seed 9 --json > "$tmp/whole.json"
+"$bin" round links --bot tour --bot beginner --format match --seed 9 --stop-after 1 --save "$tmp/r.save" > /dev/null
 "$bin" round --resume "$tmp/r.save" --json > "$tmp/resumed.json"
 cmp -s "$tmp/whole.json" "$tmp/resumed.json" || fail "resumed round differs from the whole round"
 set +e; msg=$("$bin" round --resume "$tmp/r.save" --bot tour 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q -- "--resume" <<<"$msg" || fail "resume with --bot: $rc $msg"
-set +e; msg=$("$bin" round --bot tour --format match 2>&1); rc=$?; set -e
+set +e; msg=$("$bin" round links --bot tour --format match 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q "two players" <<<"$msg" && grep -q -- "--format match" <<<"$msg" && ! grep -q -- "--human" <<<"$msg" \
   || fail "match of one (names round's own flags, not play's --human): $rc $msg"
-set +e; msg=$("$bin" round --bot tour --bot amateur --handicap 60 --handicap 1 2>&1); rc=$?; set -e
+set +e; msg=$("$bin" round links --bot tour --bot amateur --handicap 60 --handicap 1 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q "54" <<<"$msg" || fail "handicap 60: $rc $msg"
 
 # Bag gapping: the range writes the player's bag; with it the caddie picks other clubs
@@ -170,22 +170,22 @@ j = json.load(sys.stdin)
 c = [x["carry_m"] for x in j["clubs"]]
 assert len(c) == 13 and c == sorted(c, reverse=True), c' || fail "range json"
 clubs() { python3 -c 'import json,sys; print(" ".join(s["club"] for h in json.load(sys.stdin)["holes"] for s in h["shots"] if s["lie"] != "green"))'; }
-plain=$("$bin" round --bot tour --calm --seed 4 --json | clubs)
-bagged=$("$bin" round --bot tour --calm --seed 4 --bag "$tmp/bag.toml" --json | clubs)
+plain=$("$bin" round links --bot tour --calm --seed 4 --json | clubs)
+bagged=$("$bin" round links --bot tour --calm --seed 4 --bag "$tmp/bag.toml" --json | clubs)
 echo "clubs: stock [$plain], with the beginner's bag [$bagged]"
 [ "$plain" != "$bagged" ] || fail "the bag did not change the caddie's clubs"
 
 # The contests.
-"$bin" round --mode ctp --balls 3 --json | python3 -c '
+"$bin" round links --mode ctp --balls 3 --json | python3 -c '
 import json, sys
 j = json.load(sys.stdin); assert j["mode"] == "ctp" and len(j["balls"]) == 3 and "best_to_pin_m" in j, j' || fail "ctp"
-"$bin" round --mode long-drive --balls 3 --json | python3 -c '
+"$bin" round links --mode long-drive --balls 3 --json | python3 -c '
 import json, sys
 j = json.load(sys.stdin); assert j["mode"] == "long-drive" and j["best_distance_m"] > 200, j' || fail "long drive"
 # --plot: the session's dispersion as a 900 x 800 PNG, with the scorecard as usual.
 plot_dir=$(mktemp -d)
-"$bin" round --bot amateur --seed 2 --plot "$plot_dir/d.png" | grep -q "^total" || fail "--plot lost the scorecard"
-"$bin" round --mode long-drive --balls 4 --plot "$plot_dir/ld.png" >/dev/null || fail "long-drive --plot"
+"$bin" round links --bot amateur --seed 2 --plot "$plot_dir/d.png" | grep -q "^total" || fail "--plot lost the scorecard"
+"$bin" round links --mode long-drive --balls 4 --plot "$plot_dir/ld.png" >/dev/null || fail "long-drive --plot"
 python3 - "$plot_dir/d.png" "$plot_dir/ld.png" <<'PY' || fail "--plot PNG"
 import struct, sys
 for f in sys.argv[1:]:

@@ -118,7 +118,7 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
 
 StrokeInput GolfBot::intend(const GolfRound& round) const {
   if (round.lie() == "green") return putt(round);
-  const double d = round.to_pin();
+  double d = round.to_pin();
   const bool teed = round.teed();
   auto allowed = [&](const Stock& s) { return !(s.club == "driver" && !teed); };
   // The partial-swing club: the shortest-carrying club allowed from here.
@@ -129,8 +129,17 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   double reach = 0.0;
   for (const Stock& s : stock_)
     if (allowed(s)) reach = std::max(reach, s.total);
-  const bool going_for_pin = d <= reach;
-  const double line = round.line_to_pin();
+  bool going_for_pin = d <= reach;
+  double line = round.line_to_pin();
+  // Out of reach on a bending hole: play to the next bend of its line (a dogleg's corner), as
+  // far as the shortest club that gets there carries it.
+  if (const std::optional<Vec3> bend = round.next_bend(); bend && !going_for_pin) {
+    const Vec3& b = round.ball();
+    d = std::hypot(bend->x() - b.x(), bend->z() - b.z());
+    line = std::atan2(bend->z() - b.z(), bend->x() - b.x());
+  }
+  // Aims are taken from the line to the cup: the bend's line starts this far off it.
+  const double toward = std::remainder(line - round.line_to_pin(), 2.0 * kPi);
   // Tries a club on the course and corrects the aim (wind, slopes, curve) and a partial
   // swing's power; returns the stroke, how far along the line to the cup it stops in these
   // conditions, and whether it ends in a penalty.
@@ -161,7 +170,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   };
   if (d < shortest.carry) {
     // A partial wedge: carry grows a little faster than swing speed; start at that guess.
-    return tune(shortest.club, std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0), 0.0, 3).in;
+    return tune(shortest.club, std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0), toward, 3).in;
   }
   // The club that plays like the distance today: the still-air club, tried on the course
   // (the wind, the lie, the ground); a shorter one when it runs past the cup by more than the
@@ -170,7 +179,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   const std::string base = suggest(d, teed);
   std::size_t at = 0;
   while (stock_[at].club != base) ++at;
-  Tried best = tune(base, 1.0, 0.0, 3);
+  Tried best = tune(base, 1.0, toward, 3);
   const double aim = best.in.aim;
   auto good = [&](const Tried& t) { return !t.lost && t.reach >= d; };
   if (good(best)) {

@@ -97,9 +97,17 @@ double GolfPlay::flyover_progress(double now) const {
 void GolfPlay::choose_club() {
   const GolfRound& r = round();
   if (r.finished()) return;
-  // The caddie's club plays like the distance today: the wind, the lie, the ground.
-  club_ = bag_index(r.lie() == "green" ? std::string("putter") : caddie().intend(r).club);
+  // The caddie's club plays like the distance today: the wind, the lie, the ground; off the
+  // green he points the aim where he would play (a dogleg's corner when the cup is out of
+  // reach), on it at the cup: the player reads the putt.
   aim_ = 0.0;
+  if (r.lie() == "green") {
+    club_ = bag_index("putter");
+  } else {
+    const StrokeInput plan = caddie().intend(r);
+    club_ = bag_index(plan.club);
+    if (r.next_bend()) aim_ = plan.aim;
+  }
 }
 
 void GolfPlay::begin_turn(double t) {

@@ -41,6 +41,15 @@ std::string GolfRound::lie() const { return surface_at(ball_); }
 
 double GolfRound::to_pin() const { return std::hypot(hole().pin.x() - ball_.x(), hole().pin.z() - ball_.z()); }
 
+std::optional<Vec3> GolfRound::next_bend() const {
+  const Vec3& pin = hole().pin;
+  const auto flat = [](const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); };
+  const double ball_to_pin = flat(ball_, pin);
+  for (const Vec3& b : hole().bends)
+    if (flat(b, pin) < ball_to_pin && flat(ball_, b) > kBendReached) return b;
+  return std::nullopt;
+}
+
 double GolfRound::line_to_pin() const { return std::atan2(hole().pin.z() - ball_.z(), hole().pin.x() - ball_.x()); }
 
 int GolfRound::total_strokes() const {

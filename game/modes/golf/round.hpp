@@ -5,6 +5,7 @@
 // stroke is a ShotSpec run through the same resolve()/run_shot() as every other shot.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,11 @@ class GolfRound {
   double to_pin() const;
   /// World direction from the ball to the cup, rad right of +x.
   double line_to_pin() const;
+  /// The next bend of the hole's line still ahead of the ball (CourseHole::bends): nearer the
+  /// cup than the ball is and more than kBendReached from it. None on a straight hole or
+  /// once the ball is past the last bend.
+  std::optional<Vec3> next_bend() const;
+  static constexpr double kBendReached = 25.0;  ///< m: a ball this near a bend has turned it
   const std::vector<HoleCard>& card() const { return card_; }
   int total_strokes() const;
   int total_par() const { return course_.par(); }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "game/content/gzip_file.hpp"
 #include "game/content/mesh_file.hpp"
 #include "game/content/world_asset.hpp"
 #include "game/core/sport.hpp"
@@ -279,4 +280,28 @@ TEST_CASE("hostile world TOML: coordinates beyond the world limit and an unknown
                     Catch::Contains("tennis.toml:1") && Catch::Contains("unknown sport 'tennis'"));
   CHECK_NOTHROW(load_world_asset(fs::temp_directory_path(), dir.write("golf.toml", "sport = \"golf\"\nmesh = \"g.obj\"\n"),
                                  test::assets().materials(), &sports));
+}
+
+TEST_CASE("gzipped world meshes: read as the OBJ they hold; corrupt, truncated or bomb data refused naming the file",
+          "[assets][input][hostile]") {
+  const TempDir dir;
+  const std::string obj = "mtllib w.mtl\nusemtl fairway\nv -50 0 -50\nv 50 0 -50\nv 50 0 50\nv -50 0 50\nf 1 3 2\nf 1 4 3\n";
+  const std::string packed = gzip_bytes(obj);
+  const WorldAsset plain = load(dir.write("plain.obj", obj));
+  const WorldAsset zipped = load(dir.write("zipped.obj.gz", packed));
+  REQUIRE(zipped.description().meshes.size() == plain.description().meshes.size());
+  CHECK(zipped.description().meshes[0].vertices == plain.description().meshes[0].vertices);
+  CHECK(zipped.description().name == "zipped");
+  // A line error is named by the .gz file and the line of the text inside it.
+  CHECK_THROWS_WITH(load(dir.write("short.obj.gz", gzip_bytes("v 0 0 0\nv 1 0\n"))),
+                    Catch::Contains("short.obj.gz:2") && Catch::Contains("needs x, y and z"));
+  CHECK_THROWS_WITH(load(dir.write("garbage.obj.gz", obj)), Catch::Contains("garbage.obj.gz") && Catch::Contains("not gzip"));
+  CHECK_THROWS_WITH(load(dir.write("cut.obj.gz", packed.substr(0, packed.size() / 2))),
+                    Catch::Contains("cut.obj.gz") && Catch::Contains("truncated"));
+  // Zeros compress ~1000:1: a small file that inflates past the limit is refused as it passes
+  // it (the world loader's limit is kMaxWorldMeshBytes; a smaller one here keeps the test fast).
+  const std::string bomb = gzip_bytes(std::string(std::size_t{4} << 20, '\0'));
+  CHECK(bomb.size() < (std::size_t{64} << 10));
+  CHECK_THROWS_WITH(read_gzip_file(dir.write("bomb.obj.gz", bomb), "world mesh", std::uintmax_t{1} << 20),
+                    Catch::Contains("bomb.obj.gz") && Catch::Contains("inflates to more than 1048576"));
 }

@@ -28,6 +28,7 @@
 #include <ogr_srs_api.h>
 
 #include "game/content/course_file.hpp"
+#include "game/content/gzip_file.hpp"
 #include "game/courses/course_import.hpp"
 #include "game/courses/elevation.hpp"
 #include "game/courses/golf_map.hpp"
@@ -35,6 +36,8 @@
 #include "game/courses/terrain_heights.hpp"
 #include "game/modes/golf/bot.hpp"
 #include "game/modes/golf/round.hpp"
+#include "game/rules/run_shot.hpp"
+#include "physics/ground.hpp"
 #include "physics/error.hpp"
 #include "support/test_assets.hpp"
 
@@ -69,8 +72,8 @@ ImportResult import(const fs::path& map, const fs::path& out) {
   return import_course(test::assets(), o);
 }
 
-std::vector<Vec3> obj_vertices(const fs::path& obj) {
-  std::ifstream in(obj);
+std::vector<Vec3> obj_vertices(const fs::path& obj_gz) {
+  std::istringstream in(read_gzip_file(obj_gz, "test mesh", std::uintmax_t{1} << 28));
   std::vector<Vec3> v;
   std::string line;
   while (std::getline(in, line))
@@ -166,7 +169,7 @@ TEST_CASE("course import: every surface lies where the map draws it, and the mes
   // Every node of every mapped green is a vertex of the written ground: its edges are the
   // map's, not a staircase of cells.
   import(map_path, s.dir / "c");
-  const std::vector<Vec3> v = obj_vertices(s.dir / "c" / "world.obj");
+  const std::vector<Vec3> v = obj_vertices(s.dir / "c" / "world.obj.gz");
   int checked = 0;
   for (const MapArea& a : map.areas) {
     if (a.surface != MapSurface::Green) continue;
@@ -379,7 +382,7 @@ TEST_CASE("course import --dem: the ground follows the raster; greens smooth, cu
   CHECK(green_slope(dem, LocalFrame::around(read_golf_map(o.map)), centre3) > kMaxPinSlope);  // its deepest point is too steep
   CHECK(r.holes[2].pin.x < centre3.x - 1.0);
   // The written ground: bunkers below the raster's ground, water one flat plane below its bank.
-  const std::vector<Vec3> v = obj_vertices(o.out / "world.obj");
+  const std::vector<Vec3> v = obj_vertices(o.out / "world.obj.gz");
   std::vector<std::string> report;
   const GolfMap map = read_golf_map(o.map);
   const LocalFrame frame = LocalFrame::around(map);
@@ -509,4 +512,82 @@ TEST_CASE("course import: hostile maps are refused, not run", "[course][import][
   CHECK_THROWS_WITH(import_course(test::assets(), fine), Contains("--cell 0.50") && Contains("million cells"));
   CHECK_FALSE(fs::exists(out));
   CHECK(s.no_leftovers());
+}
+
+TEST_CASE("course import: a mapped tree stands in the rough, blocks a shot flown into its crown, and the ground under it is rough",
+          "[course][import][tree]") {
+  Scratch s("tree");
+  // A 15 m tree 40 m out on hole 1's line, in the rough short of the fairway; and one on the
+  // fairway, which is left out (a fairway is kept clear).
+  const std::string before = "  <!-- fairway 120..330 m east";
+  const fs::path treed = edge_variant(s.dir, "treed.osm", before,
+                                      "  <node id='900' lat='56.34000000' lon='-2.79935253'><tag k='natural' v='tree'/>"
+                                      "<tag k='height' v='15 m'/></node>\n"
+                                      "  <node id='901' lat='56.34000000' lon='-2.79627000'><tag k='natural' v='tree'/></node>\n" + before);
+  const ImportResult with = import(treed, s.dir / "with");
+  const ImportResult without = import(kData / "edge_cases.osm", s.dir / "without");
+  CHECK(with.trees == 1);
+  CHECK(without.trees == 0);
+  CHECK(has_report(with, "trees planted: 1 (1 mapped", "1 left out"));
+  // The same pitch (80 mph, 16°, 4000 rpm: ~10 m up as it passes 40 m) down the line from hole
+  // 1's tee: over open rough it carries far past the tree; into the crown it drops out near it.
+  ShotSpec spec = test::launch_spec("golf", 80.0, 16.0, 4000.0);
+  spec.world = (s.dir / "without" / "world.toml").string();
+  const ShotResult open = run_shot(resolve(spec, test::assets()), "test");
+  spec.world = (s.dir / "with" / "world.toml").string();
+  const ShotResult blocked = run_shot(resolve(spec, test::assets()), "test");
+  CHECK(open.trajectory.summary.carry_m > 70.0);
+  // The world's origin is hole 1's tee; the tree stands 40 m east of it.
+  const Vec3 tree = test::assets().world((s.dir / "with" / "world.toml").string())->description().origin + Vec3(40.0, 0.0, 0.0);
+  const Vec3& rest = blocked.trajectory.summary.rest_position;
+  INFO("rest " << rest.transpose() << ", tree " << tree.transpose() << ", open carry " << open.trajectory.summary.carry_m);
+  CHECK(std::hypot(rest.x() - tree.x(), rest.z() - tree.z()) < 15.0);
+  CHECK(blocked.trajectory.summary.total_m < 0.7 * open.trajectory.summary.carry_m);
+  CHECK(blocked.end == ShotEnd::Rest);
+  CHECK(rest.y() < 0.5);  // on the ground, not in the tree
+  // The ground under the crown is the rough the tree stands in.
+  const WorldAsset* world = test::assets().world((s.dir / "with" / "world.toml").string());
+  REQUIRE(world != nullptr);
+  SurfaceContact under;
+  REQUIRE(ground_under(*world->world, tree.x(), tree.z() + 0.5, 100.0, 200.0, &under));
+  CHECK(world->world->material(under.material).name == "rough");
+  CHECK(under.point.y() == Approx(0.0).margin(1e-6));
+}
+
+TEST_CASE("course import: named tee boxes become tee sets and each green gets spread pin sets a round can choose",
+          "[course][import]") {
+  Scratch s("sets");
+  const ImportResult r = import(kData / "nine_holes.osm", s.dir / "nine");
+  // The 1st has a white box round its line's first node and a red one 40 m on (scripts/gen_osm_fixture.py).
+  REQUIRE(r.holes[0].tee_sets.size() == 2);
+  CHECK(r.holes[0].tee_sets[0].first == "white");
+  CHECK(r.holes[0].tee_sets[1].first == "red");
+  CHECK(std::hypot(r.holes[0].tee_sets[0].second.x - r.holes[0].tee.x, r.holes[0].tee_sets[0].second.z - r.holes[0].tee.z) < 0.5);
+  for (std::size_t i = 1; i < r.holes.size(); ++i) CHECK(r.holes[i].tee_sets.empty());
+  // Pin sets: up to kPinSets cups a green, each on it, kPinSpread apart.
+  for (const ImportedHole& h : r.holes) {
+    INFO("hole " << h.number);
+    CHECK(h.more_pins.size() == static_cast<std::size_t>(kPinSets - 1));  // the fixture's greens are 32 x 26 m
+    std::vector<LocalPoint> all{h.pin};
+    all.insert(all.end(), h.more_pins.begin(), h.more_pins.end());
+    for (std::size_t a = 0; a < all.size(); ++a)
+      for (std::size_t b = a + 1; b < all.size(); ++b) CHECK(std::hypot(all[a].x - all[b].x, all[a].z - all[b].z) >= kPinSpread);
+  }
+  Course c = load_course(test::assets(), (s.dir / "nine").string());
+  CHECK(tee_set_names(c) == std::vector<std::string>{"white", "red"});
+  const Course plain = c;
+  set_up(c, {"red", 3});
+  CHECK(c.holes[0].tee.x() == Approx(plain.holes[0].tee.x() + 40.0).margin(0.5));
+  CHECK(c.holes[1].tee.x() == Approx(plain.holes[1].tee.x()).margin(1e-9));  // no red tee there: its own
+  for (std::size_t i = 0; i < c.holes.size(); ++i) {
+    CHECK(c.holes[i].pin.x() == Approx(r.holes[i].more_pins[1].x).margin(1e-3));
+    CHECK(c.holes[i].pin.z() == Approx(r.holes[i].more_pins[1].z).margin(1e-3));
+  }
+  CHECK(c.setup.tees == "red");
+  // Pin set 5 of 4 cycles back to the first.
+  Course cycled = plain;
+  set_up(cycled, {"", 5});
+  CHECK(cycled.holes[2].pin.x() == Approx(plain.holes[2].pin.x()).margin(1e-9));
+  Course wrong = plain;
+  CHECK_THROWS_WITH(set_up(wrong, {"blue", 1}), Contains("no tee set 'blue'") && Contains("allowed: white, red"));
 }

@@ -172,6 +172,10 @@ BallCrossing meet_ball(const Vec3& ball_dir, double attack, double vertical_bat_
   return c;
 }
 
+double contact_lead_for(double inside) {
+  return std::clamp(kLeadPerInside * inside, SwingInput::kContactLead.min, SwingInput::kContactLead.max);
+}
+
 bool is_barrel(double ev, double la) { return la <= 50.0 && ev >= 98.0 && 1.5 * ev - la >= 117.0 && ev + la >= 124.0; }
 
 SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const SwingInput& in, double bat_speed,
@@ -195,7 +199,10 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   check_range("swing.effort", in.effort, SwingInput::kEffort, "");
   s.bat_speed = bat_speed * (in.power ? 1.0 : 0.92) * in.effort;
   const double sweet_arm = bat.length - bat.sweet_spot_from_tip - bat.pivot_from_knob;
-  const double turned = s.bat_speed / sweet_arm * 1e-3 * in.timing_ms;  // rad
+  check_range("swing.contact_lead", in.contact_lead, SwingInput::kContactLead, "rad");
+  // Turned past where he meant to meet it (+ late), from square: the bat met a pitch he meant
+  // to meet out front that much sooner round its arc.
+  const double turned = s.bat_speed / sweet_arm * 1e-3 * in.timing_ms - in.contact_lead;  // rad
   s.direction = std::clamp(turned, BatSwing::kDirection.min, BatSwing::kDirection.max);
   s.attack_angle = std::clamp(attack_angle_at(in.attack_angle, in.swing_tilt, turned), BatSwing::kAttackAngle.min,
                               BatSwing::kAttackAngle.max);
@@ -205,7 +212,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   const Vec3 v(pitch.plate_velocity.x(), pitch.plate_velocity.y(), m * pitch.plate_velocity.z());
   const Vec3 w(m * pitch.plate_spin.x(), m * pitch.plate_spin.y(), pitch.plate_spin.z());
   const BallCrossing met = meet_ball(v, in.attack_angle, vertical_bat_angle_at(in.attack_angle, in.swing_tilt, 0.0),
-                                     sweet_arm + in.reach_error, in.undercut, -turned);
+                                     sweet_arm * std::cos(in.contact_lead) + in.reach_error, in.undercut, -turned);
   s.impact_from_tip = bat.length - bat.pivot_from_knob - met.from_pivot;
   s.undercut = met.undercut;
   s.vertical_bat_angle = std::clamp(vertical_bat_angle_at(in.attack_angle, in.swing_tilt, turned),

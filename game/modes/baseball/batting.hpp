@@ -71,7 +71,23 @@ struct SwingInput {
   double sweep = 2.65;          ///< rad, the bat's turn from the launch position to contact
   double effort = 1.0;          ///< share of his bat speed he swings with (a two-strike swing is shorter)
   static constexpr Range kEffort{0.5, 1.0};
+  /// rad past square where he means to meet the ball on the sweet spot (+ out front: pulled;
+  /// − deep: the other way): contact_lead_for the pitch's location. `timing_ms` is his error
+  /// against that moment.
+  double contact_lead = 0.0;
+  static constexpr Range kContactLead{-0.6, 0.6};
 };
+
+/// Hitting it where it is pitched: the hands can come in toward the body or reach out only so
+/// far, so a batter meets an inside pitch out front, with the bat already turned toward the
+/// pull side, and lets an outside one travel deeper (R. K. Adair, The Physics of Baseball,
+/// ch. 3; HITf/x: the mean spray angle runs from pulled on the inside edge to the other way on
+/// the outside edge, ~20° across the plate's 0.43 m: D. Allen, "How strong is the tendency to
+/// pull the ball?", Baseball Analysts, 2009). kLeadPerInside: rad of lead per m the pitch is
+/// nearer him than the plate's middle (ESTIMATE from that spread).
+inline constexpr double kLeadPerInside = 0.9;  // rad/m
+/// `inside`: m the pitch crosses nearer the batter than the middle of the plate (− away).
+double contact_lead_for(double inside);
 
 /// Timing turns the bat's direction at contact by its angular speed: the sweet spot's speed
 /// over its distance from the pivot. The bat turns about a point very close to its knob (A. M.

@@ -194,6 +194,9 @@ void BattingCage::apply(const Intent& in) {
         s.undercut = std::clamp(pitch_.plate.y() - bat_height_, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
         s.power = power_;
         s.left_handed = lefty_;
+        // His body meets the pitch where it is pitched (contact_lead_for); the key's timing is
+        // against that moment.
+        s.contact_lead = contact_lead_for((lefty_ ? 1.0 : -1.0) * pitch_.plate.z());
         swing(s, t);
       }
       break;

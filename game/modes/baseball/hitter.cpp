@@ -91,6 +91,8 @@ SwingInput Hitter::swing(const PitchRead& r, const Count& c) {
   s.timing_ms = std::clamp(r.timing_error_ms, SwingInput::kTiming.min, SwingInput::kTiming.max);
   s.undercut = std::clamp(kAimUndercut + r.height_error, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
   s.reach_error = std::clamp(r.away_error, SwingInput::kReach.min, SwingInput::kReach.max);
+  // He meets it where he sees it: an inside pitch out front.
+  s.contact_lead = contact_lead_for((left_ ? 1.0 : -1.0) * r.seen.z());
   return s;
 }
 

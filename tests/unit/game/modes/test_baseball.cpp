@@ -156,6 +156,31 @@ TEST_CASE("timing sends the ball: early pulls, late goes the other way; far off 
   }
 }
 
+TEST_CASE("hit it where it's pitched: an inside pitch met out front is pulled off the sweet spot, an outside one goes the other way",
+          "[baseball][swing]") {
+  // 20 cm inside and outside the middle (a corner's edge), met on time by the batter's body.
+  CHECK(contact_lead_for(0.2) == Approx(kLeadPerInside * 0.2));
+  CHECK(contact_lead_for(-0.2) == Approx(-kLeadPerInside * 0.2));
+  CHECK(contact_lead_for(5.0) == Approx(SwingInput::kContactLead.max));
+  const PitchFlight p = pitch("four-seam");
+  SwingInput s;
+  s.undercut = 0.010;
+  const SwingResult middle = swing_at(test::assets(), p, s, mph_to_mps(71.5));
+  s.contact_lead = contact_lead_for(0.2);
+  const SwingResult inside = swing_at(test::assets(), p, s, mph_to_mps(71.5));
+  s.contact_lead = contact_lead_for(-0.2);
+  const SwingResult outside = swing_at(test::assets(), p, s, mph_to_mps(71.5));
+  REQUIRE(middle.contact);
+  REQUIRE(inside.contact);
+  REQUIRE(outside.contact);
+  // Pulled (toward third base for a right-handed batter) and the other way, by about the lead.
+  CHECK(inside.shot.launch.horizontal_angle < middle.shot.launch.horizontal_angle - 0.5 * contact_lead_for(0.2));
+  CHECK(outside.shot.launch.horizontal_angle > middle.shot.launch.horizontal_angle + 0.5 * contact_lead_for(0.2));
+  // Met on the sweet spot as the square hit is (not the handle, not the tip).
+  CHECK(inside.shot.bat.impact_from_tip == Approx(middle.shot.bat.impact_from_tip).margin(0.01));
+  CHECK(outside.shot.bat.impact_from_tip == Approx(middle.shot.bat.impact_from_tip).margin(0.01));
+}
+
 TEST_CASE("derby swings: home runs cross the fence in flight, fouls land outside the lines, same seed same swings",
           "[baseball][derby]") {
   SessionOptions o;

@@ -19,7 +19,7 @@ struct KindName {
   SurfaceKind kind;
   const char* name;
 };
-constexpr std::array<KindName, 13> kKindNames{{
+constexpr std::array<KindName, 14> kKindNames{{
     {SurfaceKind::Tee, "tee"},
     {SurfaceKind::Fairway, "fairway"},
     {SurfaceKind::Rough, "rough"},
@@ -33,6 +33,7 @@ constexpr std::array<KindName, 13> kKindNames{{
     {SurfaceKind::OutOfBounds, "out_of_bounds"},
     {SurfaceKind::Decoration, "decoration"},
     {SurfaceKind::Tree, "tree"},
+    {SurfaceKind::Path, "path"},
 }};
 
 }  // namespace

@@ -23,6 +23,7 @@ enum class SurfaceKind : std::uint8_t {
   Tee, Fairway, Rough, Sand, Green, Water, Dirt, Grass, WarningTrack, Wall, OutOfBounds,
   Decoration,  ///< drawn, never collided (flag, chalk lines)
   Tree,        ///< a tree's crown or trunk: struck in flight, never the ground under it
+  Path,        ///< a paved path (a golf course's cart path)
 };
 
 const char* to_string(SurfaceKind k);

@@ -5,7 +5,8 @@ ground under it as an elevation raster, for `sweetspot course import` (DESIGN §
   assets/courses/sources/national.osm   golf=hole lines (ref, par, handicap, dist), tees,
                                          fairways, greens, bunkers, ponds and a lateral burn,
                                          pins on some greens, the leisure=golf_course boundary,
-                                         tree rows between holes, corner trees and two woods
+                                         tree rows between holes, corner trees, two woods
+                                         and a cart path along each hole
   assets/courses/sources/national.asc   an ESRI ASCII grid of heights (m), WGS84 degrees,
   assets/courses/sources/national.prj   with its reference system beside it
 
@@ -170,6 +171,9 @@ def build():
                 m.way(blob(green[0] - sgn * 3, green[1] + side * 17.5, 6.5, 3.2, rng.uniform(-0.3, 0.3), rng), {"golf": "bunker", "natural": "sand"}, closed=True)
         if num % 3 == 1:   # a pin mapped on every third green
             m.node(green[0] + sgn * rng.uniform(-4, 4), green[1] + rng.uniform(-3, 3), {"golf": "pin", "ref": str(num)})
+        # A cart path from the tee to the green along the side the line does not bend to, in the rough.
+        side = -1.0 if (par == 5 and row % 3) or num == 14 else 1.0   # the 14th: its burn lies on the other side
+        m.way([(tee[0] + sgn * 15, n + side * 30), (green[0] - sgn * 25, n + side * 30)], {"golf": "cart_path", "surface": "asphalt"})
         dist = round(sum(math.dist(a, b) for a, b in zip(line, line[1:])))
         ids = [m.node(*p) for p in line]
         hid = m.id()

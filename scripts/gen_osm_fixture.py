@@ -3,7 +3,7 @@
 real ones (golf=hole lines from tee to green with ref, par, handicap and dist; golf=tee,
 fairway, green, bunker, water_hazard and lateral_water_hazard areas; golf=pin nodes on some
 greens; a leisure=golf_course boundary; one green drawn as a multipolygon relation with a
-bunker cut into it; trees, a tree row and a wood in the rough). The holes run east and west in rows 90 m apart, so the test can check
+bunker cut into it; trees, a tree row and a wood in the rough; a cart path). The holes run east and west in rows 90 m apart, so the test can check
 each one's length and par against the map. Run from the repository root."""
 import math
 
@@ -90,6 +90,8 @@ way([(60, 1.5 * ROW), (420, 1.5 * ROW)], {"natural": "tree_row"})
 node(250, 0.5 * ROW, {"natural": "tree", "height": "16"})
 node(300, 2.5 * ROW, {"natural": "tree"})
 way(rect(150, 7 * ROW + 42, 350, 7 * ROW + 68), {"natural": "wood"}, closed=True)
+# A cart path up the north side of the 1st, 3 m wide.
+way([(-20, 28), (200, 30), (480, 30)], {"golf": "cart_path", "width": "3"})
 
 with open("tests/data/osm/nine_holes.osm", "w") as f:
     f.write("<?xml version='1.0' encoding='UTF-8'?>\n<osm version='0.6' generator='scripts/gen_osm_fixture.py'>\n")

@@ -26,6 +26,7 @@ const char* colour_of(const std::string& m) {
   if (m == "water") return "0.150 0.350 0.620";
   if (m == "out_of_bounds") return "0.450 0.450 0.480";
   if (m == "tree") return "0.120 0.280 0.110";
+  if (m == "cart_path") return "0.550 0.540 0.520";
   if (m == "trunk") return "0.330 0.240 0.150";
   return "0.200 0.420 0.150";  // rough
 }

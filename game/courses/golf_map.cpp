@@ -75,7 +75,7 @@ std::optional<int> whole(const char* text) {
   return static_cast<int>(v);
 }
 
-// height=*: metres ("12", "12 m"), a tree's from 1 to 100 m; else none.
+// height=* (or a path's width=*): metres ("12", "12 m"), from 1 to 100 m; else none.
 std::optional<double> height(const char* text) {
   if (text == nullptr) return std::nullopt;
   char* end = nullptr;
@@ -149,6 +149,14 @@ class Collector : public osmium::handler::Handler {
       h.line = ring_of(w.nodes());
       if (h.line.size() < 2) throw InputError(element + " (golf=hole): fewer than two located nodes: a hole runs from its tee to its green");
       map_.holes.push_back(std::move(h));
+      return;
+    }
+    if (w.tags().has_tag("golf", "cart_path") || w.tags().has_tag("golf", "path")) {
+      std::vector<GeoPoint> line = ring_of(w.nodes());
+      if (line.size() >= 2) {
+        const std::optional<double> width = height(w.tags()["width"]);  // metres, 1..100 as a tree's height
+        map_.paths.push_back({element, std::move(line), width && *width <= 10.0 ? *width : kCartPathWidth});
+      }
       return;
     }
     if (w.tags().has_tag("natural", "tree_row")) {
@@ -234,6 +242,7 @@ const char* to_string(MapSurface s) {
     case MapSurface::Bunker: return "bunker";
     case MapSurface::Water: return "water_hazard";
     case MapSurface::LateralWater: return "lateral_water_hazard";
+    case MapSurface::CartPath: return "cart_path";
     case MapSurface::Fairway: return "fairway";
     case MapSurface::Rough: return "rough";
     case MapSurface::Course: return "golf_course";

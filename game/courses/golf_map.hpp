@@ -20,7 +20,7 @@ struct GeoPoint {
 
 /// The surfaces a golf map draws, highest first: where two areas overlap (a green inside a
 /// fairway, a bunker inside the rough) the one earlier here covers the ground.
-enum class MapSurface { Green, Tee, Bunker, Water, LateralWater, Fairway, Rough, Course };
+enum class MapSurface { Green, Tee, Bunker, Water, LateralWater, CartPath, Fairway, Rough, Course };
 const char* to_string(MapSurface s);
 
 /// One area: outer rings with their holes, as mapped.
@@ -59,18 +59,29 @@ struct MapTrees {
   std::optional<double> height;    ///< m, height=* when mapped
 };
 
+/// A golf=cart_path way: a paved strip along its line.
+struct MapPath {
+  std::string element;
+  std::vector<GeoPoint> line;
+  double width = 0.0;  ///< m, width=* when mapped, else kCartPathWidth
+};
+/// A cart path's width when the map gives none: 8 ft, room for one cart (ESTIMATE of the
+/// usual poured path; club guidance runs 6-10 ft).
+inline constexpr double kCartPathWidth = 2.4;  // m
+
 struct GolfMap {
   std::vector<MapArea> areas;
   std::vector<MapHole> holes;
   std::vector<MapPin> pins;
   std::vector<MapTrees> trees;     ///< single trees and tree rows
   std::vector<MapArea> woods;      ///< natural=wood and landuse=forest (the ground under them plays as rough)
+  std::vector<MapPath> paths;      ///< golf=cart_path lines
   std::string name;                    ///< the leisure=golf_course name, when mapped
   std::vector<std::string> repairs;    ///< what was mended while reading, one line each
 };
 
 /// Calls `f(GeoPoint)` for every point of the course the map draws: each area's outer rings
-/// and each hole's line (trees and woods stand where they stand: a forest reaching far off
+/// each hole's line and each cart path (trees and woods stand where they stand: a forest reaching far off
 /// does not widen the course).
 template <class F>
 void for_each_point(const GolfMap& map, F&& f) {
@@ -79,6 +90,8 @@ void for_each_point(const GolfMap& map, F&& f) {
       for (const GeoPoint& g : p.outer) f(g);
   for (const MapHole& h : map.holes)
     for (const GeoPoint& g : h.line) f(g);
+  for (const MapPath& p : map.paths)
+    for (const GeoPoint& g : p.line) f(g);
 }
 
 /// Reads `path` (.osm XML, .osm.pbf, or an Overpass API JSON export: .json or a file opening

@@ -37,6 +37,7 @@ const char* material_of(MapSurface s) {
     case MapSurface::Bunker: return "sand";
     case MapSurface::Water:
     case MapSurface::LateralWater: return "water";
+    case MapSurface::CartPath: return "cart_path";
     case MapSurface::Fairway: return "fairway";
     case MapSurface::Rough:
     case MapSurface::Course: return "rough";
@@ -155,6 +156,18 @@ SurfacePlan::SurfacePlan(const GolfMap& map, const LocalFrame& frame, std::vecto
       if (a.surface == MapSurface::Green) green_parts.emplace_back(GEOSGeom_clone_r(ctx, g), a.element);
       by[static_cast<int>(a.surface)].push_back(g);
     }
+  }
+  // Cart paths: each line widened to its width, flat-ended (a path meets what it joins).
+  for (const MapPath& p : map.paths) {
+    GEOSCoordSequence* seq = GEOSCoordSeq_create_r(ctx, static_cast<unsigned>(p.line.size()), 2);
+    for (std::size_t i = 0; i < p.line.size(); ++i) {
+      const LocalPoint q = frame.to_local(p.line[i]);
+      GEOSCoordSeq_setXY_r(ctx, seq, static_cast<unsigned>(i), q.x, q.z);
+    }
+    GEOSGeometry* line = m.checked(GEOSGeom_createLineString_r(ctx, seq), "a cart path");
+    GEOSGeometry* strip = GEOSBufferWithStyle_r(ctx, line, 0.5 * p.width, 4, GEOSBUF_CAP_FLAT, GEOSBUF_JOIN_ROUND, 5.0);
+    GEOSGeom_destroy_r(ctx, line);
+    by[static_cast<int>(MapSurface::CartPath)].push_back(m.checked(strip, "a cart path's strip"));
   }
   GEOSGeometry* course = nullptr;
   if (by[static_cast<int>(MapSurface::Course)].empty()) {

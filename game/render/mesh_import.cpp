@@ -24,8 +24,8 @@ struct Named {
 // Colours chosen to read at a glance from far away: fairway a mid green with stripes, rough
 // darker and bluer, green the lightest and stripy, sand pale, dirt and warning track warm
 // browns, the outfield wall a dark green as in most ballparks, tree crowns darker than rough.
-const std::array<Named, 22>& palette() {
-  static const std::array<Named, 22> p{{
+const std::array<Named, 23>& palette() {
+  static const std::array<Named, 23> p{{
       {"tee", {{0.40f, 0.66f, 0.27f}, surface_look::kMown}},
       {"fairway", {{0.36f, 0.64f, 0.23f}, surface_look::kMown}},
       {"rough", {{0.18f, 0.40f, 0.15f}, surface_look::kLongGrass}},
@@ -48,6 +48,7 @@ const std::array<Named, 22>& palette() {
       {"foul_pole", {{0.95f, 0.85f, 0.10f}, surface_look::kPlain}},
       {"tree", {{0.11f, 0.27f, 0.10f}, surface_look::kLongGrass}},  // a crown: darker than the rough under it
       {"trunk", {{0.33f, 0.24f, 0.15f}, surface_look::kPlain}},
+      {"cart_path", {{0.55f, 0.54f, 0.52f}, surface_look::kDirt}},
   }};
   return p;
 }

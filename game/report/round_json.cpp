@@ -32,6 +32,7 @@ nlohmann::json holes_json(const GolfRound& round) {
                    {"end", to_string(s.end)},
                    {"to_pin_m", s.to_pin_m}};
       if (s.conceded) shot["conceded"] = true;
+      if (s.relief) shot["relief"] = "cart_path";
       shots.push_back(shot);
     }
     json hole = {{"number", h.number}, {"par", h.par},       {"strokes", h.strokes},

@@ -44,6 +44,7 @@ const char* lie_words(const std::string& lie) {
   if (lie == "green") return "Green";
   if (lie == "water") return "Water";
   if (lie == "out_of_bounds") return "Out of bounds";
+  if (lie == "path") return "Cart path";
   return "?";
 }
 

@@ -219,7 +219,8 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   message_.clear();
   char msg[200];
   const char* result = end_words(rec.end);
-  const std::string rest = rec.end == StrokeEnd::Rest ? std::string() : std::string(": ") + result;
+  const std::string rest = rec.relief ? std::string(": on the cart path, free relief (Rule 16.1)")
+                          : rec.end == StrokeEnd::Rest ? std::string() : std::string(": ") + result;
   if (last_meter_ && s.club == "putter") {
     std::snprintf(msg, sizeof msg, "%s, stroke %d: putt at %.0f %% power%s", who.name.c_str(), stroke_no,
                   100.0 * last_meter_->power, rest.c_str());

@@ -155,6 +155,37 @@ Vec3 GolfRound::drop_back_on_line(const Vec3& in_water, const Vec3& from) const 
   return from;
 }
 
+Vec3 GolfRound::path_relief(const Vec3& on_path) const {
+  // Rule 16.1b: free relief from an immovable obstruction in the general area, at the
+  // nearest point where the path no longer interferes, no nearer the hole; here the nearest
+  // such spot of playable ground (not the path, water, out of bounds or a green), searched on
+  // rings 0.25 m apart (a place within the club-length relief area the Rule allows).
+  const WorldDescription& d = hole().world->description();
+  const Vec3& pin = hole().pin;
+  const double from_pin = std::hypot(pin.x() - on_path.x(), pin.z() - on_path.z());
+  constexpr int kDirections = 32;
+  for (double r = 0.25; r <= kMaxRelief; r += 0.25) {
+    double best_pin = HUGE_VAL;
+    std::optional<Vec3> best;
+    for (int k = 0; k < kDirections; ++k) {
+      const double a = 2.0 * kPi * k / kDirections;
+      const double x = on_path.x() + r * std::cos(a), z = on_path.z() + r * std::sin(a);
+      const double to_pin = std::hypot(pin.x() - x, pin.z() - z);
+      if (to_pin < from_pin) continue;
+      SurfaceContact hit;
+      if (!ground_under(*hole().world->world, x, z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit)) continue;
+      const std::string s = to_string(hole().world->world->material(hit.material).kind);
+      if (s == "path" || s == "water" || s == "out_of_bounds" || s == "green") continue;
+      if (to_pin < best_pin) {  // of the ring's spots, the one the Rule's line from the hole favours least: any is as near
+        best_pin = to_pin;
+        best = Vec3(x, hit.point.y(), z);
+      }
+    }
+    if (best) return *best;
+  }
+  return on_path;  // a path with no playable ground beside it: played as it lies
+}
+
 void GolfRound::finish_hole() {
   ++hole_;
   if (finished()) return;
@@ -212,6 +243,10 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
       rec.end = StrokeEnd::Rest;
       ball_ = Vec3(rec.rest.x(), rec.rest.y() - resolved.ball.radius, rec.rest.z());
       teed_ = false;
+      if (surface_at(ball_) == "path") {
+        ball_ = path_relief(ball_);
+        rec.relief = true;
+      }
       break;
   }
   h.penalties += rec.penalty;

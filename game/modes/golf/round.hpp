@@ -35,6 +35,8 @@ struct StrokeRecord {
   /// The stroke was conceded, not played (a gimme; in match play Rule 3.2b(1)): the ball is
   /// holed with it, and it counts as a putt.
   bool conceded = false;
+  /// It came to rest on a cart path and was moved off it without penalty (Rule 16.1b).
+  bool relief = false;
 };
 
 struct HoleCard {
@@ -105,6 +107,11 @@ class GolfRound {
   const std::vector<HoleWind>& winds() const { return winds_; }
   /// The shot without playing it (bots plan with it). Deterministic.
   ShotResult simulate(const StrokeInput& in, bool record_samples = false) const;
+  /// Where a ball at rest on a cart path on this hole is moved to, free (Rule 16.1b): the
+  /// nearest spot of playable ground off the path (not water, out of bounds or a green), no
+  /// nearer the hole; `on_path` itself when none lies within kMaxRelief.
+  Vec3 path_relief(const Vec3& on_path) const;
+  static constexpr double kMaxRelief = 15.0;  ///< m searched for ground off the path
 
  private:
   const StrokeRecord& play_spec(const ShotSpec& spec, const std::string& club, double power, ShotResult* shot);

@@ -591,3 +591,32 @@ TEST_CASE("course import: named tee boxes become tee sets and each green gets sp
   Course wrong = plain;
   CHECK_THROWS_WITH(set_up(wrong, {"blue", 1}), Contains("no tee set 'blue'") && Contains("allowed: white, red"));
 }
+
+TEST_CASE("course import: a cart path is a paved strip of its width; a ball at rest on it is moved off it free, no nearer the hole",
+          "[course][import]") {
+  Scratch s("path");
+  const ImportResult r = import(kData / "nine_holes.osm", s.dir / "nine");
+  // scripts/gen_osm_fixture.py: 500 m of path, 3 m wide, clear of every other surface.
+  REQUIRE(r.areas.count("cart_path") == 1);
+  CHECK(r.areas.at("cart_path") == Approx(500.0 * 3.0).epsilon(0.02));
+  const GolfMap map = read_golf_map(kData / "nine_holes.osm");
+  REQUIRE(map.paths.size() == 1);
+  CHECK(map.paths[0].width == 3.0);
+  const LocalPoint on = LocalFrame::around(map).to_local(map.paths[0].line[1]);  // its middle node, on the path
+  const Course c = load_course(test::assets(), (s.dir / "nine").string());
+  const GolfRound round(test::assets(), c, golfer_skill("tour"));
+  const WorldAsset& w = *c.holes[0].world;
+  SurfaceContact hit;
+  REQUIRE(ground_under(*w.world, on.x, on.z, 100.0, 200.0, &hit));
+  CHECK(w.world->material(hit.material).name == "cart_path");
+  const Vec3 spot(on.x, hit.point.y(), on.z);
+  const Vec3 relief = round.path_relief(spot);
+  // The nearest ground off the 3 m strip: 1.5 m to its edge, within the search's 0.25 m rings.
+  const double moved = std::hypot(relief.x() - spot.x(), relief.z() - spot.z());
+  CHECK(moved > 1.5);
+  CHECK(moved <= 2.0);
+  const Vec3& pin = c.holes[0].pin;
+  CHECK(std::hypot(pin.x() - relief.x(), pin.z() - relief.z()) >= std::hypot(pin.x() - spot.x(), pin.z() - spot.z()));
+  REQUIRE(ground_under(*w.world, relief.x(), relief.z(), 100.0, 200.0, &hit));
+  CHECK(w.world->material(hit.material).name == "rough");
+}

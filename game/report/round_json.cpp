@@ -195,6 +195,8 @@ nlohmann::json group_json(const GolfGroup& g) {
     winds.push_back(w);
   }
   json j = {{"course", g.course().name},
+            {"tees", g.course().setup.tees},
+            {"pin_set", g.course().setup.pin_set},
             {"seed", g.options().seed},
             {"format", to_string(s.format)},
             {"gimme_m", g.options().gimme_m},

@@ -71,7 +71,12 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
   const std::string& shooter = g.players()[static_cast<std::size_t>(play.shooter())].name;
   if (!g.finished()) {
     const CourseHole& hole = g.course().holes[g.hole_index()];
-    ImGui::Text("%s   %s play", g.course().name.c_str(), to_string(g.options().format));
+    const CourseSetup& setup = g.course().setup;
+    if (!setup.tees.empty() || setup.pin_set > 1)
+      ImGui::Text("%s   %s play   %s tees   pin set %d", g.course().name.c_str(), to_string(g.options().format),
+                  setup.tees.empty() ? "own" : setup.tees.c_str(), setup.pin_set);
+    else
+      ImGui::Text("%s   %s play", g.course().name.c_str(), to_string(g.options().format));
     ImGui::Text("Hole %d   Par %d   %s   Index %d", hole.number, hole.par, units.distance(hole.length()).c_str(),
                 hole.stroke_index);
   }

@@ -348,7 +348,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
 
   if (m.golf) {
     // One reference for every distance: the ball's start. Lines across the shot's aim every
-    // 50 yd from there, out past the shot and to the end of the world.
+    // 50 yd from there, out past the shot and the flag (or to the end of a world without one).
     Vec3 aim = aim_.value_or(Vec3::UnitX());
     if (!aim_ && have_shot) {
       Vec3 d = samples.back().position - launch;
@@ -360,7 +360,10 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     const Vec3 across(-aim.z(), 0.0, aim.x());  // right of the aim line
     double reach = 60.0;
     for (const auto& q : samples) reach = std::max(reach, (q.position - launch).dot(aim) + 20.0);
-    if (m.world) {
+    if (m.world && m.flag_position) {
+      // On a hole: to 50 yd past the flag (a course's world runs on over the other holes).
+      reach = std::max(reach, (*m.flag_position - launch).dot(aim) + 50 * kYard);
+    } else if (m.world) {
       for (double x : {m.world_min.x(), m.world_max.x()})
         for (double z : {m.world_min.z(), m.world_max.z()}) reach = std::max(reach, (Vec3(x, 0, z) - launch).dot(aim));
     }

@@ -138,6 +138,8 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
       }
     }
     for (const toml::table* ts : f.tables(*t, "tees", false)) {
+      if (h.tee_sets.size() >= CourseHole::kMaxTeeSets)
+        f.fail(*ts, "tees", "more than " + std::to_string(CourseHole::kMaxTeeSets) + " tee sets on one hole");
       f.only_keys(*ts, "tees", {"name", "at"});
       CourseHole::TeeSet set;
       set.name = f.text(f.required(*ts, "name", "the tee set's name (\"white\")"), "name");

@@ -36,6 +36,7 @@ struct CourseHole {
     Vec3 at = Vec3::Zero();
   };
   std::vector<TeeSet> tee_sets;
+  static constexpr std::size_t kMaxTeeSets = 8;
   /// Stroke index: 1 the hole where a handicap's first stroke is given (the hardest), a
   /// permutation of 1..n over the course. Default: by length, the longest hole 1.
   int stroke_index = 1;

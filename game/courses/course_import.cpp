@@ -33,7 +33,13 @@ double line_length(const std::vector<LocalPoint>& pts) {
 // The line's nodes between its ends, the gentlest turns dropped until CourseHole::kMaxBends
 // remain (a hole drawn with many nodes along a curve keeps the corners that shape it).
 std::vector<LocalPoint> main_bends(const std::vector<LocalPoint>& line) {
-  std::vector<LocalPoint> pts = line;
+  // A line of thousands of nodes (a hand-drawn curve) is first thinned to every k-th node,
+  // its ends kept: the gentlest-turn search below is quadratic in the nodes.
+  constexpr std::size_t kMaxNodes = 256;
+  std::vector<LocalPoint> pts;
+  const std::size_t step = line.size() > kMaxNodes ? (line.size() + kMaxNodes - 1) / kMaxNodes : 1;
+  for (std::size_t i = 0; i + 1 < line.size(); i += step) pts.push_back(line[i]);
+  pts.push_back(line.back());
   const auto turn = [&](std::size_t i) {
     const double a = std::atan2(pts[i].z - pts[i - 1].z, pts[i].x - pts[i - 1].x);
     const double b = std::atan2(pts[i + 1].z - pts[i].z, pts[i + 1].x - pts[i].x);
@@ -227,7 +233,13 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
     for (const std::string& name : a.tee_sets) {
       bool dup = false;
       for (const auto& [have, p] : nearest->tee_sets) dup = dup || have == name;
-      if (!dup) nearest->tee_sets.emplace_back(name, at);
+      if (dup) continue;
+      if (nearest->tee_sets.size() >= CourseHole::kMaxTeeSets) {
+        r.report.push_back(a.element + " (golf=tee " + name + "): hole " + std::to_string(nearest->number) + " has " +
+                           std::to_string(CourseHole::kMaxTeeSets) + " tee sets already; left out");
+        continue;
+      }
+      nearest->tee_sets.emplace_back(name, at);
     }
   }
   if (indexes.size() != r.holes.size()) {
@@ -259,17 +271,23 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
   // Trees after the ground is shaped: they stand on it, their own shapes untouched.
   const TreePlanting planting = plant_trees(map, frame, plan);
   if (!planting.trees.empty() || planting.left_out > 0) {
-    std::vector<LocalPoint> at;
-    for (const PlantedTree& t : planting.trees) at.push_back(t.at);
-    std::vector<double> base = dem ? dem->heights(frame, at) : std::vector<double>(at.size(), 0.0);
-    if (dem)
-      for (double& y : base) y -= tee_height;
-    add_tree_meshes(mesh, planting.trees, base);
+    if (!planting.trees.empty()) {
+      std::vector<LocalPoint> at;
+      for (const PlantedTree& t : planting.trees) at.push_back(t.at);
+      std::vector<double> base = dem ? dem->heights(frame, at) : std::vector<double>(at.size(), 0.0);
+      if (dem)
+        for (double& y : base) y -= tee_height;
+      add_tree_meshes(mesh, planting.trees, base);
+    }
     r.trees = planting.trees.size();
     char msg[240];
     std::snprintf(msg, sizeof msg, "trees planted: %zu (%zu mapped, %zu along tree rows, %zu in woods); %zu left out (not on rough)",
                   planting.trees.size(), planting.mapped, planting.in_rows, planting.in_woods, planting.left_out);
     r.report.push_back(msg);
+    if (planting.over_limit > 0) {
+      std::snprintf(msg, sizeof msg, "%zu more trees past the limit of %zu were not planted", planting.over_limit, kMaxTrees);
+      r.report.push_back(msg);
+    }
     if (planting.wood_spacing > kTreeSpacing) {
       std::snprintf(msg, sizeof msg, "woods planted %.0f m apart instead of %.0f m (at most %zu trees on a course)",
                     planting.wood_spacing, kTreeSpacing, kMaxTrees);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <algorithm>
 #include <string_view>
 
 // libosmium's builders trip GCC 12's string over-read check on an inlined strlen of an empty
@@ -99,6 +100,21 @@ std::optional<double> distance(const char* text) {
   return std::nullopt;
 }
 
+// Text a name may carry into course.toml: valid UTF-8 with no control bytes (a tag value is
+// any bytes the map holds).
+bool printable_utf8(std::string_view s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c == 0x7f) return false;
+    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    if (n == 0 || i + n > s.size()) return false;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) >> 6) != 0x2) return false;
+    i += n;
+  }
+  return true;
+}
+
 // A golf=tee box's sets: tee=* ("red;white" is two), else name=*.
 std::vector<std::string> tee_sets_of(const osmium::TagList& tags) {
   std::vector<std::string> out;
@@ -111,7 +127,9 @@ std::vector<std::string> tee_sets_of(const osmium::TagList& tags) {
     std::string_view one = rest.substr(0, cut);
     while (!one.empty() && one.front() == ' ') one.remove_prefix(1);
     while (!one.empty() && one.back() == ' ') one.remove_suffix(1);
-    if (!one.empty() && one.size() <= 40) out.emplace_back(one);
+    if (!one.empty() && one.size() <= 40 && printable_utf8(one) &&
+        std::find(out.begin(), out.end(), one) == out.end())
+      out.emplace_back(one);
     if (cut == std::string_view::npos) break;
     rest.remove_prefix(cut + 1);
   }

@@ -44,6 +44,15 @@ bool ring_holds(const std::vector<LocalPoint>& ring, double x, double z) {
 struct LocalPolygon {
   std::vector<LocalPoint> outer;
   std::vector<std::vector<LocalPoint>> inners;
+  double x0 = HUGE_VAL, x1 = -HUGE_VAL, z0 = HUGE_VAL, z1 = -HUGE_VAL;  ///< the outer ring's box
+  void take_box() {
+    for (const LocalPoint& q : outer) {
+      x0 = std::min(x0, q.x);
+      x1 = std::max(x1, q.x);
+      z0 = std::min(z0, q.z);
+      z1 = std::max(z1, q.z);
+    }
+  }
   bool holds(double x, double z) const {
     if (outer.size() < 3 || !ring_holds(outer, x, z)) return false;
     for (const auto& h : inners)
@@ -67,8 +76,16 @@ bool plantable(const SurfacePlan& plan, double x, double z) {
 
 TreePlanting plant_trees(const GolfMap& map, const LocalFrame& frame, const SurfacePlan& plan) {
   TreePlanting out;
+  // Only the plan's rectangle can hold a tree: rows and woods are walked inside it alone (a
+  // row or a forest drawn across the country costs no more than the course).
+  const LocalPoint lo = plan.min(), hi = plan.max();
+  const auto inside = [&](const LocalPoint& p) { return p.x >= lo.x && p.x <= hi.x && p.z >= lo.z && p.z <= hi.z; };
   const auto plant = [&](const LocalPoint& p, double height, std::size_t* tally) {
-    if (!plantable(plan, p.x, p.z)) {
+    if (out.trees.size() >= kMaxTrees) {
+      ++out.over_limit;
+      return;
+    }
+    if (!inside(p) || !plantable(plan, p.x, p.z)) {
       ++out.left_out;
       return;
     }
@@ -88,10 +105,27 @@ TreePlanting plant_trees(const GolfMap& map, const LocalFrame& frame, const Surf
     for (std::size_t i = 1; i < t.line.size(); ++i) {
       const LocalPoint next = frame.to_local(t.line[i]);
       const double len = std::hypot(next.x - prev.x, next.z - prev.z);
-      double s = kTreeSpacing - carry;
-      for (; s <= len; s += kTreeSpacing)
-        plant({prev.x + (next.x - prev.x) * s / len, prev.z + (next.z - prev.z) * s / len}, h, &out.in_rows);
-      carry = len - (s - kTreeSpacing);
+      // The part of the segment inside the plan's rectangle (Liang-Barsky): its trees keep
+      // their places along the whole row.
+      double u0 = 0.0, u1 = 1.0;
+      const double d[2] = {next.x - prev.x, next.z - prev.z}, p0[2] = {prev.x, prev.z};
+      const double lo_[2] = {lo.x, lo.z}, hi_[2] = {hi.x, hi.z};
+      for (int a = 0; a < 2 && u0 <= u1; ++a) {
+        if (std::abs(d[a]) < 1e-12) {
+          if (p0[a] < lo_[a] || p0[a] > hi_[a]) u1 = -1.0;
+          continue;
+        }
+        const double t0 = (lo_[a] - p0[a]) / d[a], t1 = (hi_[a] - p0[a]) / d[a];
+        u0 = std::max(u0, std::min(t0, t1));
+        u1 = std::min(u1, std::max(t0, t1));
+      }
+      if (len > 0.0 && u0 <= u1) {
+        double s = kTreeSpacing - carry;  // m along the segment of its next tree
+        if (s < u0 * len) s += std::ceil((u0 * len - s) / kTreeSpacing) * kTreeSpacing;
+        for (; s <= u1 * len; s += kTreeSpacing)
+          plant({prev.x + (next.x - prev.x) * s / len, prev.z + (next.z - prev.z) * s / len}, h, &out.in_rows);
+      }
+      carry = std::fmod(carry + len, kTreeSpacing);
       prev = next;
     }
   }
@@ -106,27 +140,32 @@ TreePlanting plant_trees(const GolfMap& map, const LocalFrame& frame, const Surf
         lp.inners.emplace_back();
         for (const GeoPoint& g : inner) lp.inners.back().push_back(frame.to_local(g));
       }
-      wood_area += polygon_area(lp.outer);
+      // Its area within the plan's rectangle, holes out (clearings are common: a course cut
+      // through a forest), taken as its box's share inside the rectangle.
+      lp.take_box();
+      const double box = (lp.x1 - lp.x0) * (lp.z1 - lp.z0);
+      const double kept = std::max(0.0, std::min(lp.x1, hi.x) - std::max(lp.x0, lo.x)) *
+                          std::max(0.0, std::min(lp.z1, hi.z) - std::max(lp.z0, lo.z));
+      if (!(kept > 0.0)) continue;  // wholly off the course's ground
+      double area = polygon_area(lp.outer);
+      for (const auto& h : lp.inners) area -= polygon_area(h);
+      wood_area += std::max(0.0, area) * kept / box;
       woods.emplace_back(&a, std::move(lp));
     }
   const std::size_t room = kMaxTrees > out.trees.size() ? kMaxTrees - out.trees.size() : 0;
   if (wood_area > 0.0 && room > 0) {
     out.wood_spacing = std::max(kTreeSpacing, std::sqrt(wood_area / static_cast<double>(room)));
     const double g = out.wood_spacing;
+    std::size_t cells = 0;  // grid cells tried, all woods together
     for (const auto& [area, poly] : woods) {
-      double x0 = HUGE_VAL, x1 = -HUGE_VAL, z0 = HUGE_VAL, z1 = -HUGE_VAL;
-      for (const LocalPoint& p : poly.outer) {
-        x0 = std::min(x0, p.x);
-        x1 = std::max(x1, p.x);
-        z0 = std::min(z0, p.z);
-        z1 = std::max(z1, p.z);
-      }
+      const double x0 = std::max(poly.x0, lo.x), x1 = std::min(poly.x1, hi.x);
+      const double z0 = std::max(poly.z0, lo.z), z1 = std::min(poly.z1, hi.z);
       const std::uint64_t seed = hash_text(area->element);
       // Grid cells on a world-fixed lattice, each tree jittered within its cell by up to a
       // third of the spacing either way: a wood, not an orchard.
-      for (long long i = static_cast<long long>(std::floor(x0 / g)); i * g <= x1; ++i)
+      for (long long i = static_cast<long long>(std::floor(x0 / g)); i * g <= x1 && out.trees.size() < kMaxTrees; ++i)
         for (long long j = static_cast<long long>(std::floor(z0 / g)); j * g <= z1; ++j) {
-          if (out.trees.size() >= kMaxTrees) break;
+          if (out.trees.size() >= kMaxTrees || ++cells > kMaxWoodCells) break;
           const double x = (static_cast<double>(i) + 0.5 + (unit(seed, i, j, 0) - 0.5) * 0.67) * g;
           const double z = (static_cast<double>(j) + 0.5 + (unit(seed, i, j, 1) - 0.5) * 0.67) * g;
           if (!poly.holds(x, z)) continue;

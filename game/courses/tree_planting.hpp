@@ -26,6 +26,10 @@ inline constexpr std::size_t kMaxTrees = 4000;
 /// The crown's shape as shares of the tree's height: it starts at kCrownBase and is
 /// kCrownRadius wide at its middle (ESTIMATE of a broadleaf's ovoid crown, ~2/3 of its height).
 inline constexpr double kCrownBase = 0.35, kCrownRadius = 0.3;
+/// Grid cells tried through woods at most (each a point-in-polygon test): a few times what
+/// kMaxTrees needs where woods fill their boxes; a sliver drawn across the course's box
+/// stops here instead of walking its empty cells.
+inline constexpr std::size_t kMaxWoodCells = 200'000;
 inline constexpr double kTrunkRadius = 0.2;  // m, a 40 cm trunk (ESTIMATE)
 
 struct PlantedTree {
@@ -37,12 +41,14 @@ struct TreePlanting {
   std::vector<PlantedTree> trees;
   std::size_t mapped = 0, in_rows = 0, in_woods = 0;  ///< planted, by where the map put them
   std::size_t left_out = 0;     ///< on fairway, green, tee, bunker, water or off the ground
+  std::size_t over_limit = 0;   ///< past kMaxTrees
   double wood_spacing = kTreeSpacing;  ///< m, wider than kTreeSpacing when kMaxTrees binds
 };
 
 /// Where the map's trees stand on `plan`: every mapped tree, one each kTreeSpacing along each
 /// row, and through each wood a jittered grid (seeded by the wood's element id, so a re-import
-/// plants the same trees); those not on rough or out-of-bounds ground are left out.
+/// plants the same trees); those not on rough or out-of-bounds ground are left out, and none
+/// past kMaxTrees is planted. Rows and woods are walked within the plan's rectangle only.
 TreePlanting plant_trees(const GolfMap& map, const LocalFrame& frame, const SurfacePlan& plan);
 
 /// Adds each tree to `mesh` standing on the ground at `base[i]` (m, y of the ground there):

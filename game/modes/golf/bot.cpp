@@ -135,8 +135,11 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   // far as the shortest club that gets there carries it.
   if (const std::optional<Vec3> bend = round.next_bend(); bend && !going_for_pin) {
     const Vec3& b = round.ball();
-    d = std::hypot(bend->x() - b.x(), bend->z() - b.z());
-    line = std::atan2(bend->z() - b.z(), bend->x() - b.x());
+    const double to_bend = std::hypot(bend->x() - b.x(), bend->z() - b.z());
+    if (to_bend >= shortest.carry) {  // a corner nearer than a full wedge is played past, toward the cup
+      d = to_bend;
+      line = std::atan2(bend->z() - b.z(), bend->x() - b.x());
+    }
   }
   // Aims are taken from the line to the cup: the bend's line starts this far off it.
   const double toward = std::remainder(line - round.line_to_pin(), 2.0 * kPi);
@@ -161,7 +164,11 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       const AlongAcross at = relative(round.ball(), line, rest);
       t.reach = at.along;
       if (i + 1 == iterations) break;
-      if (at.along > 1.0) aim = std::clamp(aim - std::atan2(at.across, at.along), -0.4, 0.4);
+      // Corrections stay within 0.4 rad of the line played (a dogleg's corner may lie further
+      // off the line to the cup than that).
+      if (at.along > 1.0)
+        aim = std::clamp(std::clamp(aim - std::atan2(at.across, at.along), toward - 0.4, toward + 0.4), StrokeInput::kAim.min,
+                         StrokeInput::kAim.max);
       if (power < 1.0 && going_for_pin && at.along > 1.0) power = std::clamp(power * std::pow(d / at.along, 0.8), 0.05, 1.0);
     }
     t.in.aim = aim;

@@ -244,8 +244,9 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
       ball_ = Vec3(rec.rest.x(), rec.rest.y() - resolved.ball.radius, rec.rest.z());
       teed_ = false;
       if (surface_at(ball_) == "path") {
-        ball_ = path_relief(ball_);
-        rec.relief = true;
+        const Vec3 moved = path_relief(ball_);
+        rec.relief = (moved - ball_).norm() > 0.0;  // none where no ground lies beside the path
+        ball_ = moved;
       }
       break;
   }

@@ -34,6 +34,7 @@
 #include "game/courses/golf_map.hpp"
 #include "game/courses/surface_plan.hpp"
 #include "game/courses/terrain_heights.hpp"
+#include "game/courses/tree_planting.hpp"
 #include "game/modes/golf/bot.hpp"
 #include "game/modes/golf/round.hpp"
 #include "game/rules/run_shot.hpp"
@@ -619,4 +620,26 @@ TEST_CASE("course import: a cart path is a paved strip of its width; a ball at r
   CHECK(std::hypot(pin.x() - relief.x(), pin.z() - relief.z()) >= std::hypot(pin.x() - spot.x(), pin.z() - spot.z()));
   REQUIRE(ground_under(*w.world, relief.x(), relief.z(), 100.0, 200.0, &hit));
   CHECK(w.world->material(hit.material).name == "rough");
+}
+
+TEST_CASE("course import: a tree row or wood drawn across the country costs no more than the course", "[course][import][hostile]") {
+  Scratch s("far_trees");
+  // A row 300 km long through the course, and a wood that is a thin sliver as long, beside it.
+  const fs::path map = edge_variant(s.dir, "far.osm", "</osm>",
+                                    "  <node id='910' lat='56.34030000' lon='-5.00000000'/>\n"
+                                    "  <node id='911' lat='56.34030000' lon='0.50000000'/>\n"
+                                    "  <way id='920'><nd ref='910'/><nd ref='911'/><tag k='natural' v='tree_row'/></way>\n"
+                                    "  <node id='912' lat='56.34035000' lon='-5.00000000'/>\n"
+                                    "  <node id='913' lat='56.34035000' lon='0.50000000'/>\n"
+                                    "  <node id='914' lat='56.34036000' lon='0.50000000'/>\n"
+                                    "  <node id='915' lat='56.34036000' lon='-5.00000000'/>\n"
+                                    "  <way id='921'><nd ref='912'/><nd ref='913'/><nd ref='914'/><nd ref='915'/><nd ref='912'/>"
+                                    "<tag k='natural' v='wood'/></way>\n</osm>");
+  const ImportResult r = import(map, s.dir / "c");
+  CHECK(r.trees > 0);
+  CHECK(r.trees <= kMaxTrees);
+  // Only the stretch over the course's ground is walked: a row of ~60 trees, not ~40 000.
+  CHECK(has_report(r, "trees planted:"));
+  INFO(r.trees << " trees");
+  CHECK(r.trees < 400);
 }

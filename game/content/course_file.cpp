@@ -30,6 +30,14 @@ Vec3 ground_at(const WorldAsset& w, double x, double z, const std::string& where
   return Vec3(x, hit.point.y(), z);
 }
 
+// `key`'s array of [x, z] points, at most `max` of them.
+const toml::array& point_list(const TomlFile& f, const toml::node& n, const std::string& key, std::size_t max) {
+  const toml::array* arr = n.as_array();
+  if (arr == nullptr || arr->size() > max)
+    f.fail(n, key, "expected [[x, z], ...] with at most " + std::to_string(max) + " points");
+  return *arr;
+}
+
 // Every hole's stroke index given, each of 1..n once; or none given, and then by length (the
 // longest hole index 1), the usual proxy for difficulty when a club has not rated its holes.
 void assign_stroke_index(const TomlFile& f, Course& c, const std::vector<const toml::node*>& given) {
@@ -129,10 +137,7 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
                        "' has no cup: give pin = [x, z])");
     }
     if (const toml::node* pn = t->get("pins")) {
-      const toml::array* arr = pn->as_array();
-      if (arr == nullptr || arr->size() > CourseHole::kMaxPins)
-        f.fail(*pn, "pins", "expected [[x, z], ...] with at most " + std::to_string(CourseHole::kMaxPins) + " cup positions");
-      for (const toml::node& p : *arr) {
+      for (const toml::node& p : point_list(f, *pn, "pins", CourseHole::kMaxPins)) {
         const auto xz = f.quantities(p, "pins", Dimension::Length, 2);
         h.more_pins.push_back(ground_at(*h.world, xz[0], xz[1], f.where(p), "pin", {SurfaceKind::Green}));
       }
@@ -152,11 +157,8 @@ Course load_course(const Assets& assets, std::string_view name_or_path) {
       h.tee_sets.push_back(set);
     }
     if (const toml::node* bn = t->get("bends")) {
-      const toml::array* arr = bn->as_array();
-      if (arr == nullptr || arr->size() > CourseHole::kMaxBends)
-        f.fail(*bn, "bends", "expected [[x, z], ...] with at most " + std::to_string(CourseHole::kMaxBends) + " points");
       const WorldDescription& d = h.world->description();
-      for (const toml::node& p : *arr) {
+      for (const toml::node& p : point_list(f, *bn, "bends", CourseHole::kMaxBends)) {
         const auto xz = f.quantities(p, "bends", Dimension::Length, 2);
         if (xz[0] < d.bounds_min.x() || xz[0] > d.bounds_max.x() || xz[1] < d.bounds_min.z() || xz[1] > d.bounds_max.z())
           f.fail(p, "bends", "point [" + std::to_string(xz[0]) + " m, " + std::to_string(xz[1]) + " m] is off the world (" +

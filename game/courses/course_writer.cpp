@@ -42,6 +42,14 @@ std::string toml_text(const std::string& s) {
   return out + "\"";
 }
 
+// [[x, z], ...] in metres.
+std::string points_text(const std::vector<LocalPoint>& pts) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    out += (i ? ", [" : "[") + metres(pts[i].x) + ", " + metres(pts[i].z) + "]";
+  return out + "]";
+}
+
 // `s` on one line, for a comment: control bytes dropped.
 std::string one_line(const std::string& s) {
   std::string out;
@@ -99,18 +107,8 @@ void write_course(const std::filesystem::path& dir, const ImportResult& r) {
     std::snprintf(len, sizeof len, "   # %s, %.0f m", h.element.c_str(), h.length);
     t << "world = \"world.toml\"" << len << "\ntee = [" << metres(h.tee.x) << ", " << metres(h.tee.z) << "]\npin = ["
       << metres(h.pin.x) << ", " << metres(h.pin.z) << "]\n";
-    if (!h.bends.empty()) {
-      t << "bends = [";
-      for (std::size_t i = 0; i < h.bends.size(); ++i)
-        t << (i ? ", " : "") << "[" << metres(h.bends[i].x) << ", " << metres(h.bends[i].z) << "]";
-      t << "]   # where the hole's line turns\n";
-    }
-    if (!h.more_pins.empty()) {
-      t << "pins = [";
-      for (std::size_t i = 0; i < h.more_pins.size(); ++i)
-        t << (i ? ", " : "") << "[" << metres(h.more_pins[i].x) << ", " << metres(h.more_pins[i].z) << "]";
-      t << "]   # pin sets 2..\n";
-    }
+    if (!h.bends.empty()) t << "bends = " << points_text(h.bends) << "   # where the hole's line turns\n";
+    if (!h.more_pins.empty()) t << "pins = " << points_text(h.more_pins) << "   # pin sets 2..\n";
     if (!h.tee_sets.empty()) {
       t << "tees = [";
       for (std::size_t i = 0; i < h.tee_sets.size(); ++i)

@@ -76,16 +76,18 @@ std::optional<int> whole(const char* text) {
   return static_cast<int>(v);
 }
 
-// height=* (or a path's width=*): metres ("12", "12 m"), from 1 to 100 m; else none.
-std::optional<double> height(const char* text) {
+// A length tag (a tree's height=*, a path's width=*): metres ("12", "12 m") within [lo, hi];
+// else none.
+std::optional<double> metres_tag(const char* text, double lo, double hi) {
   if (text == nullptr) return std::nullopt;
   char* end = nullptr;
   const double v = std::strtod(text, &end);
   std::string_view unit(end);
   while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
-  if (end == text || !(v >= 1.0 && v <= 100.0) || !(unit.empty() || unit == "m")) return std::nullopt;
+  if (end == text || !(v >= lo && v <= hi) || !(unit.empty() || unit == "m")) return std::nullopt;
   return v;
 }
+std::optional<double> height(const char* text) { return metres_tag(text, 1.0, 100.0); }
 
 // dist=*: metres, or with a unit "m", "yd", "yards".
 std::optional<double> distance(const char* text) {
@@ -172,8 +174,7 @@ class Collector : public osmium::handler::Handler {
     if (w.tags().has_tag("golf", "cart_path") || w.tags().has_tag("golf", "path")) {
       std::vector<GeoPoint> line = ring_of(w.nodes());
       if (line.size() >= 2) {
-        const std::optional<double> width = height(w.tags()["width"]);  // metres, 1..100 as a tree's height
-        map_.paths.push_back({element, std::move(line), width && *width <= 10.0 ? *width : kCartPathWidth});
+        map_.paths.push_back({element, std::move(line), metres_tag(w.tags()["width"], 1.0, 10.0).value_or(kCartPathWidth)});
       }
       return;
     }

@@ -88,6 +88,9 @@ struct SwingInput {
 inline constexpr double kLeadPerInside = 0.9;  // rad/m
 /// `inside`: m the pitch crosses nearer the batter than the middle of the plate (− away).
 double contact_lead_for(double inside);
+/// m `plate` (where a pitch crosses) lies nearer a batter of that side than the plate's
+/// middle: + z is away from a right-handed batter.
+inline double inside_by(const Vec3& plate, bool left_handed) { return (left_handed ? 1.0 : -1.0) * plate.z(); }
 
 /// Timing turns the bat's direction at contact by its angular speed: the sweet spot's speed
 /// over its distance from the pivot. The bat turns about a point very close to its knob (A. M.

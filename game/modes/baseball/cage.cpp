@@ -196,7 +196,7 @@ void BattingCage::apply(const Intent& in) {
         s.left_handed = lefty_;
         // His body meets the pitch where it is pitched (contact_lead_for); the key's timing is
         // against that moment.
-        s.contact_lead = contact_lead_for((lefty_ ? 1.0 : -1.0) * pitch_.plate.z());
+        s.contact_lead = contact_lead_for(inside_by(pitch_.plate, lefty_));
         swing(s, t);
       }
       break;

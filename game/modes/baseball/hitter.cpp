@@ -92,7 +92,7 @@ SwingInput Hitter::swing(const PitchRead& r, const Count& c) {
   s.undercut = std::clamp(kAimUndercut + r.height_error, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
   s.reach_error = std::clamp(r.away_error, SwingInput::kReach.min, SwingInput::kReach.max);
   // He meets it where he sees it: an inside pitch out front.
-  s.contact_lead = contact_lead_for((left_ ? 1.0 : -1.0) * r.seen.z());
+  s.contact_lead = contact_lead_for(inside_by(r.seen, left_));
   return s;
 }
 

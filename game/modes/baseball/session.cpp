@@ -34,7 +34,7 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
   s.attack_angle = skill_.attack_angle;
   s.swing_tilt = skill_.swing_tilt;
   s.sweep = skill_.sweep;
-  s.contact_lead = contact_lead_for((left_handed ? 1.0 : -1.0) * pitch.plate.z());
+  s.contact_lead = contact_lead_for(inside_by(pitch.plate, left_handed));
   double timing = 0.0;
   if (derby) {
     // Where to meet the ball to clear the fence by the most: how early (pulling toward the

@@ -28,13 +28,17 @@ GolfRound::GolfRound(const Assets& assets, Course course, const GolferSkill& gol
   card_.push_back(new_card());
 }
 
-std::string GolfRound::surface_at(const Vec3& p) const {
+std::optional<SurfaceContact> GolfRound::ground_at(double x, double z) const {
   const WorldAsset& w = *hole().world;
   const WorldDescription& d = w.description();
   SurfaceContact hit;
-  if (!ground_under(*w.world, p.x(), p.z(), d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit))
-    return "out_of_bounds";
-  return to_string(w.world->material(hit.material).kind);
+  if (!ground_under(*w.world, x, z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit)) return std::nullopt;
+  return hit;
+}
+
+std::string GolfRound::surface_at(const Vec3& p) const {
+  const std::optional<SurfaceContact> hit = ground_at(p.x(), p.z());
+  return hit ? to_string(hole().world->world->material(hit->material).kind) : "out_of_bounds";
 }
 
 std::string GolfRound::lie() const { return surface_at(ball_); }
@@ -160,7 +164,6 @@ Vec3 GolfRound::path_relief(const Vec3& on_path) const {
   // nearest point where the path no longer interferes, no nearer the hole; here the nearest
   // such spot of playable ground (not the path, water, out of bounds or a green), searched on
   // rings 0.25 m apart (a place within the club-length relief area the Rule allows).
-  const WorldDescription& d = hole().world->description();
   const Vec3& pin = hole().pin;
   const double from_pin = std::hypot(pin.x() - on_path.x(), pin.z() - on_path.z());
   constexpr int kDirections = 32;
@@ -172,13 +175,13 @@ Vec3 GolfRound::path_relief(const Vec3& on_path) const {
       const double x = on_path.x() + r * std::cos(a), z = on_path.z() + r * std::sin(a);
       const double to_pin = std::hypot(pin.x() - x, pin.z() - z);
       if (to_pin < from_pin) continue;
-      SurfaceContact hit;
-      if (!ground_under(*hole().world->world, x, z, d.bounds_max.y(), d.bounds_max.y() - d.bounds_min.y(), &hit)) continue;
-      const std::string s = to_string(hole().world->world->material(hit.material).kind);
+      const std::optional<SurfaceContact> hit = ground_at(x, z);
+      if (!hit) continue;
+      const std::string s = to_string(hole().world->world->material(hit->material).kind);
       if (s == "path" || s == "water" || s == "out_of_bounds" || s == "green") continue;
       if (to_pin < best_pin) {  // of the ring's spots, the one the Rule's line from the hole favours least: any is as near
         best_pin = to_pin;
-        best = Vec3(x, hit.point.y(), z);
+        best = Vec3(x, hit->point.y(), z);
       }
     }
     if (best) return *best;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "game/app/audio_out.hpp"
 #include "game/render/image.hpp"
 #include "game/render/renderer.hpp"
 
@@ -46,6 +47,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
                         const LoopOptions& o, std::ostream& out) {
   LoopStats stats;
   std::vector<Slot> slots(modes.size());
+  AudioOut audio(!o.mute);
   std::size_t active = first;
   const auto activate = [&](std::size_t i, double wall) {
     Slot& s = slots[i];
@@ -121,6 +123,9 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
       vi.zoom = fin.zoom;
     }
     view.frame(vi, renderer);
+    for (const ImpactSoundInput& s : view.take_sounds())
+      if (audio.active()) audio.play(synthesize_impact(s), kImpactSampleRate);
+    audio.collect();
     if (paused && choice == MenuChoice::None) choice = draw_pause_menu(view, vi.width, vi.height);
     win.render_ui();
 

@@ -31,6 +31,7 @@ struct LoopOptions {
   int frames = 0;           ///< stop after this many frames (automation); 0 = until closed
   std::string screenshot;   ///< PNG of the last frame
   std::string shots_dir = ".";  ///< F12 writes sweetspot_shot_N.png here
+  bool mute = false;        ///< no sound (no audio device is opened)
 };
 
 struct LoopStats {

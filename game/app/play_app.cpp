@@ -85,6 +85,7 @@ LoopStats run_window(const Assets& assets, const PlayOptions& o, std::ostream& o
   lo.frames = o.frames;
   lo.screenshot = o.screenshot;
   lo.shots_dir = o.shots_dir;
+  lo.mute = o.mute;
   return run_main_loop(win, renderer, modes, first, lo, out);
 }
 

@@ -39,6 +39,7 @@ struct PlayOptions {
   std::string shots_dir = ".";           ///< F12 screenshots go here
   bool exit_when_done = false;           ///< golf / baseball: close the window once the round or the pitches are done
   int pitches = 0;                       ///< baseball: pitches in the session (0 = until closed)
+  bool mute = false;                     ///< window: no impact sound (no audio device is opened)
 };
 
 /// Opens the window and runs until closed (or `frames`). Returns the exit code. Prints the

@@ -49,6 +49,7 @@ RunFn setup_play(CLI::App& sub) {
   window_only.push_back(sub.add_option("--resume", o->resume, "golf: go on with a round saved with S"));
   window_only.push_back(sub.add_option("--save", o->save, "golf: where S saves the round (default sweetspot_round.json)"));
   window_only.push_back(sub.add_flag("--metric", o->metric, "golf: metres (default yards and feet; U switches in play)"));
+  window_only.push_back(sub.add_flag("--mute", o->mute, "no impact sound (without an audio device the game is silent anyway)"));
   window_only.push_back(sub.add_option("--shots-dir", o->shots_dir, "where F12 writes its screenshots (default: here)"));
   window_only.push_back(sub.add_flag("--exit-when-done", o->exit_when_done, "golf, baseball: close once the round or the pitches are done (automation)"));
   window_only.push_back(sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(CLI::Range(1, 1000)));

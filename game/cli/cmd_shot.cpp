@@ -8,6 +8,7 @@
 
 #include "game/cli/command.hpp"
 #include "game/modes/lab/grip.hpp"
+#include "game/report/impact_sound.hpp"
 #include "game/report/report.hpp"
 #include "game/content/scenario.hpp"
 #include "game/net/session_file.hpp"
@@ -26,6 +27,7 @@ struct ShotOptions {
   std::string units = "imperial";
   int shot_number = 0;       // 0: 1, or the session's next
   std::string session;       // a JSON-lines file the message is appended to
+  std::string sound;         // a WAV file for the strike's sound
 };
 
 constexpr int kMaxShotNumber = 1000000000;
@@ -65,6 +67,7 @@ RunFn setup_shot(CLI::App& sub) {
                                  "last shot (replay it with `sweetspot send`)");
   number->needs(gspro);
   session->needs(gspro);
+  sub.add_option("--sound", o->sound, "also write the strike's sound (synthesised from the impact) to this WAV file, 48 kHz mono");
   sub.add_option("--units", o->units, "display units of the table and CSV: imperial or metric")
       ->capture_default_str();
   return [o](const Assets& assets) -> int {
@@ -75,7 +78,15 @@ RunFn setup_shot(CLI::App& sub) {
     if (!o->e.empty()) apply_set(doc, "impact.e=" + o->e, "--e " + o->e);
     if (!o->mu.empty()) apply_set(doc, "impact.mu=" + o->mu, "--mu " + o->mu);
     const Scenario scenario = scenario_from_doc(assets, doc, o->scenario);
+    if (!o->sound.empty()) check_output_path(o->sound, "--sound");
     ShotResult r = run_scenario(scenario, RunOptions{true, false});
+    if (!o->sound.empty()) {
+      const ShotSound sound = impact_sound_of(r);
+      if (!sound.ok)
+        throw InputError("--sound " + o->sound + ": this shot has no strike with a contact time to sound (a launch-only "
+                         "shot, or impact.model = \"rigid\")");
+      write_file_atomic(o->sound, wav_bytes(synthesize_impact(sound.input), kImpactSampleRate));
+    }
     if (r.impact.present) r.impact.mu_grip = mu_grip(scenario.resolved);
     const SportProfile& sport = *scenario.resolved.sport;
     if (o->json) {

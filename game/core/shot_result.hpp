@@ -37,6 +37,7 @@ struct ImpactSummary {
   double normal_impulse = 0.0;      ///< N·s, a driver ~3.4 N·s
   double tangential_impulse = 0.0;  ///< N·s
   double energy_loss = 0.0;         ///< J lost in the impact (negative = created, textbook model)
+  double contact_time = 0.0;        ///< s the ball was on the face or bat (impact with duration; 0 for the instantaneous impulse)
   /// The face µ above which the launch stops changing (game/modes/lab/grip.hpp); a tour driver
   /// ~0.2. Negative when not computed (it costs ~16 launches: `shot`, the Tuning panel and
   /// `sweep` ask for it, the game loop does not).

@@ -94,6 +94,7 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
     i.normal_impulse = d.impact.normal_impulse;
     i.tangential_impulse = d.impact.tangential_impulse;
     i.energy_loss = d.impact.energy_loss;
+    i.contact_time = d.contact_time;
   }
   // Launch numbers are measured relative to the aim line; then the shot turns onto it.
   r.launch = measure_launch(r.launch_state);

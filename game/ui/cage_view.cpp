@@ -220,7 +220,14 @@ class CageView final : public ModeView {
     cage_->update(cage_intents(in.keys), in.now);
     // The scene holds the pitch while it flies and the batted ball after contact.
     if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) scene_->set_shot(c.pitch().trajectory, std::nullopt);
-    if (c.swings().size() != before && c.last().result.contact) scene_->set_shot(c.last().result.shot.trajectory, std::nullopt);
+    if (c.swings().size() != before && c.last().result.contact) {
+      scene_->set_shot(c.last().result.shot.trajectory, std::nullopt);
+      ImpactSoundInput crack;
+      crack.contact_time = c.last().result.contact_time;
+      crack.normal_impulse = c.last().result.normal_impulse;
+      crack.ring = ring_for("maple", "baseball");  // the cage's bat (cage.cpp)
+      sound_strike(crack);
+    }
     const int w = in.width, h = in.height;
     if (w > 0 && h > 0) {
       if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);

@@ -341,6 +341,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     scene_->set_aim(std::nullopt);  // the shot's own line from where it was hit
     if (!flight_shown_) {
       scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
+      sound_strike(play_->last_shot());
       flight_shown_ = true;
       flight_struck_ = play_->struck_at();
     }

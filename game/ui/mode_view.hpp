@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "game/modes/intent.hpp"
+#include "game/report/impact_sound.hpp"
 
 namespace sweetspot {
 
@@ -62,6 +63,22 @@ class ModeView {
   virtual bool done() const { return false; }
   /// What the mode prints when the window closes (the swings of a batting session).
   virtual void report(std::ostream& /*out*/) const {}
+  /// The strikes to sound since the last call (the app plays them), oldest first.
+  std::vector<ImpactSoundInput> take_sounds() { return std::exchange(sounds_, {}); }
+
+ protected:
+  /// A new strike was shown: its sound is due (a shot without one, a launch-only shot, adds
+  /// nothing).
+  void sound_strike(const ShotResult& shot) {
+    const ShotSound s = impact_sound_of(shot);
+    if (s.ok) sounds_.push_back(s.input);
+  }
+  void sound_strike(const ImpactSoundInput& in) {
+    if (in.contact_time > 0.0 && in.normal_impulse > 0.0) sounds_.push_back(in);
+  }
+
+ private:
+  std::vector<ImpactSoundInput> sounds_;
 };
 
 }  // namespace sweetspot

@@ -131,6 +131,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
   const bool hit = play_->struck_at() > 0.0 || !play_->session().shots().empty();
   if (hit && shown_struck_ != play_->struck_at()) {
     scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
+    if (play_->struck_at() > 0.0) sound_strike(play_->last_shot());
     shown_struck_ = play_->struck_at();
   }
   const double end = hit ? duration(play_->last_shot().trajectory) : 0.0;

@@ -85,4 +85,23 @@ printf 'sport = "golf"\nmesh = "p.obj"\norigin = ["100m", "0m", "0m"]\n' > "$wdi
 x0=$("$bin" shot golf/driver --set world.name="$wdir/at0.toml" --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["flight"]["rest_position_m"][0])')
 x100=$("$bin" shot golf/driver --set world.name="$wdir/at100.toml" --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["flight"]["rest_position_m"][0])')
 python3 -c "assert abs(($x100) - ($x0) - 100.0) < 1e-6, ($x0, $x100)" || fail "the world's origin does not move the ball ($x0 -> $x100)"
+
+# --sound: the strike's sound as a WAV, the same bytes for the same shot; refused, naming the
+# flag, where there is no strike to sound or no file can be written.
+tmp="$wdir/sound"; mkdir "$tmp"
+"$bin" shot baseball/line-drive --sound "$tmp/crack.wav" > /dev/null || fail "--sound"
+"$bin" shot baseball/line-drive --sound "$tmp/again.wav" > /dev/null
+cmp -s "$tmp/crack.wav" "$tmp/again.wav" || fail "--sound: not deterministic"
+python3 - "$tmp/crack.wav" <<'PY' || fail "--sound: not a 48 kHz 16-bit mono WAV of 0.6 s"
+import sys, wave
+w = wave.open(sys.argv[1])
+assert (w.getnchannels(), w.getsampwidth(), w.getframerate(), w.getnframes()) == (1, 2, 48000, 28800)
+PY
+set +e
+msg=$("$bin" shot baseball/line-drive --sound "$tmp" 2>&1); rc=$?
+[ $rc -eq 2 ] && echo "$msg" | grep -q -- "--sound" || fail "--sound to a folder: rc $rc: $msg"
+msg=$("$bin" shot golf/driver --set impact.model=rigid --sound "$tmp/rigid.wav" 2>&1); rc=$?
+[ $rc -eq 2 ] && echo "$msg" | grep -q -- "--sound" || fail "--sound without a contact time: rc $rc: $msg"
+set -e
+[ ! -e "$tmp/rigid.wav" ] || fail "--sound wrote a file it refused"
 echo "shot: ok"

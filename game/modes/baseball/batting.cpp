@@ -238,6 +238,8 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   }
   LaunchMetrics L = measure_launch(d.launch);
   out.contact = true;
+  out.contact_time = d.contact_time;
+  out.normal_impulse = d.impact.normal_impulse;
   out.tracking = track_swing(path, bat, pitch_speed, L.ball_speed);
   // Back toward the catcher: a foul behind the plate, or a foul tip into the mitt.
   const Vec3 out_dir = d.launch.velocity.normalized();

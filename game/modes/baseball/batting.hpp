@@ -144,6 +144,9 @@ struct SwingResult {
   /// a foul tip). ESTIMATE of the cone a catcher's mitt covers.
   bool foul_tip = false;
   BatTracking tracking;       ///< Statcast's bat tracking for the swing (misses too)
+  /// The contact (with contact): how long the ball was on the bat (s) and the impulse it took
+  /// along the normal (N·s), what its sound is made from.
+  double contact_time = 0.0, normal_impulse = 0.0;
   /// Where the bat's axis crossed the ball's line (meet_ball): the ball's centre above it (m,
   /// + the bat passed under the ball), and whether that was past the end of the bat, farther
   /// than the ball's edge reaches its end cap: why a swing missed.

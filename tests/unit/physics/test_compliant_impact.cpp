@@ -9,6 +9,7 @@
 #include "physics/compliant_impact.hpp"
 #include "physics/impact.hpp"
 #include "physics/units.hpp"
+#include "support/body_balance.hpp"
 
 using namespace sweetspot;
 
@@ -39,15 +40,10 @@ CompliantImpactInput plate_case(double speed, double angle, double e, double mu,
   return in;
 }
 
-Mat3 world_inertia(const RigidBody& b) {
-  const Mat3 r = b.orientation.toRotationMatrix();
-  return r * b.inertia_body * r.transpose();
-}
-Vec3 momentum(const RigidBody& b) { return b.mass * b.velocity; }
-Vec3 angular_momentum(const RigidBody& b) { return b.position.cross(momentum(b)) + world_inertia(b) * b.angular_velocity; }
-double kinetic(const RigidBody& b) {
-  return 0.5 * b.mass * b.velocity.squaredNorm() + 0.5 * b.angular_velocity.dot(world_inertia(b) * b.angular_velocity);
-}
+using test::angular_momentum;
+using test::kinetic;
+using test::momentum;
+using test::world_inertia;
 
 struct Lcg {
   std::uint64_t s = 12345;

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "game/content/equipment_file.hpp"
+#include "support/body_balance.hpp"
 #include "support/test_assets.hpp"
 #include "physics/compliant_impact.hpp"
 #include "physics/delivery.hpp"
@@ -36,17 +37,10 @@ Delivery bat_hit(const char* bat, BatSwing s = {}, Pitch p = {}) {
 struct Balance {
   double dp_rel, dl_rel, energy_before, energy_after;
 };
-Vec3 momentum(const RigidBody& a) { return a.mass * a.velocity; }
-Mat3 world_inertia(const RigidBody& a) {
-  const Mat3 r = a.orientation.toRotationMatrix();
-  return r * a.inertia_body * r.transpose();
-}
-Vec3 angular_momentum(const RigidBody& a) {  // about the world origin
-  return a.position.cross(momentum(a)) + world_inertia(a) * a.angular_velocity;
-}
-double kinetic(const RigidBody& a) {
-  return 0.5 * a.mass * a.velocity.squaredNorm() + 0.5 * a.angular_velocity.dot(world_inertia(a) * a.angular_velocity);
-}
+using test::angular_momentum;
+using test::kinetic;
+using test::momentum;
+using test::world_inertia;
 Balance balance(const Delivery& d) {
   const Vec3 p0 = momentum(d.impactor_before) + momentum(d.ball_before);
   const Vec3 p1 = momentum(d.impactor_separated) + momentum(d.ball_separated);

@@ -16,6 +16,7 @@
 #include "game/content/quantity_text.hpp"
 #include "game/content/scenario.hpp"
 #include "game/render/render_command.hpp"
+#include "game/render/video_clip.hpp"
 #include "game/render/render_error.hpp"
 #include "game/render/shot_view.hpp"
 #include "game/util/atomic_file.hpp"
@@ -38,6 +39,9 @@ struct RenderOptions {
   int samples = 0;
   std::string shadows = "auto";
   std::string course;  // a course (name, .toml or directory) for a hole's overview
+  std::string video;   // an MP4 of the whole shot
+  int fps = 30;
+  double slow = 1.0;   // slow-motion factor over the strike
   int hole = 0;
 };
 
@@ -83,7 +87,11 @@ ShotTrajectory hole_line(const CourseHole& h) {
 RunFn setup_render(CLI::App& sub) {
   auto o = std::make_shared<RenderOptions>();
   sub.add_option("scenario", o->scenario, "built-in scenario name or .toml path (without it: the launch flags below)");
-  sub.add_option("-o,--output", o->output, "PNG file to write (written atomically)")->required();
+  sub.add_option("-o,--output", o->output, "PNG file to write (written atomically)");
+  sub.add_option("--video", o->video, "MP4 (H.264) of the whole shot from the downswing, written atomically");
+  sub.add_option("--fps", o->fps, "--video: frames per second, 1..240")->capture_default_str();
+  sub.add_option("--slow-motion", o->slow, "--video: play the strike (10 ms before to 40 ms after contact) this many times slower, 1..1000")
+      ->capture_default_str();
   sub.add_option("--width", o->width, "image width in pixels (16..8192)")->check(CLI::Range(16, 8192))->capture_default_str();
   sub.add_option("--height", o->height, "image height in pixels (16..8192)")->check(CLI::Range(16, 8192))->capture_default_str();
   sub.add_option("--camera", o->camera, "behind, side, top or follow")->capture_default_str();
@@ -112,7 +120,14 @@ RunFn setup_render(CLI::App& sub) {
         throw InputError(std::string("--at ") + o->at + ": " + e.what());
       }
     }
-    check_png_output(o->output, "-o");
+    if (o->output.empty() && o->video.empty()) throw InputError("render: no output named: give -o F.png (--output), --video F.mp4, or both");
+    if (!o->output.empty()) check_png_output(o->output, "-o");
+    if (!o->video.empty()) {
+      check_output_path(o->video, "--video");
+      if (at) throw InputError("--at picks one frame for -o; --video renders the whole shot (leave --at out)");
+      if (!o->course.empty()) throw InputError("--video: a hole's overview (--course) is a still image; use -o");
+      clip_frame_times(ClipTiming{0.0, 0.0, o->fps, o->slow});  // --fps and --slow-motion in range
+    }
     if (!o->course.empty() || o->hole > 0) {
       if (o->course.empty() || o->hole == 0) throw InputError("render: --course and --hole go together (a hole's overview)");
       if (!o->scenario.empty() || has_launch_numbers(o->launch))
@@ -153,6 +168,7 @@ RunFn setup_render(CLI::App& sub) {
           throw InputError(opt->get_name() + ": a launch flag; the scenario " + o->scenario +
                            " sets its own (change it with --set, e.g. --set world.name=...)");
       refuse_output_over_input(o->output, resolve_scenario(assets, o->scenario), "-o");
+      refuse_output_over_input(o->video, resolve_scenario(assets, o->scenario), "--video");
       scenario = load_scenario(assets, o->scenario, o->launch.sets);
     } else {
       scenario = launch_scenario(assets, o->launch, "render");
@@ -177,7 +193,12 @@ RunFn setup_render(CLI::App& sub) {
     if (!o->impactor.empty()) r.impactor_mesh = o->impactor == "none" ? "" : o->impactor;
     if (r.impactor_mesh.empty()) r.impactor.reset();
     try {
-      render_shot_png(result.trajectory, r, o->output);
+      if (!o->output.empty()) render_shot_png(result.trajectory, r, o->output);
+      if (!o->video.empty()) {
+        const int frames = render_shot_video(result.trajectory, r, VideoRequest{o->fps, o->slow}, o->video);
+        std::cout << "sweetspot render: wrote " << o->video << " (" << r.width << "x" << r.height << ", " << frames
+                  << " frames at " << o->fps << " fps, camera " << to_string(r.camera) << ")\n";
+      }
     } catch (const RenderUnavailable& e) {
       std::cerr << "sweetspot render: " << e.what() << "\n"
                 << "sweetspot render: rendering needs EGL with Mesa (libegl-mesa0, libgl1-mesa-dri) or a GPU driver\n";
@@ -186,8 +207,9 @@ RunFn setup_render(CLI::App& sub) {
       std::cerr << "sweetspot render: " << e.what() << "\n";
       return 3;
     }
-    std::cout << "sweetspot render: wrote " << o->output << " (" << r.width << "x" << r.height << ", camera "
-              << to_string(r.camera) << ")\n";
+    if (!o->output.empty())
+      std::cout << "sweetspot render: wrote " << o->output << " (" << r.width << "x" << r.height << ", camera "
+                << to_string(r.camera) << ")\n";
     return 0;
   };
 }

@@ -10,9 +10,57 @@
 #include "game/render/render_paths.hpp"
 #include "game/render/swing_pose.hpp"
 #include "game/render/synthetic_shot.hpp"
+#include "game/render/video_clip.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
+
+namespace {
+
+void check_size(const RenderRequest& request) {
+  if (request.width < 16 || request.width > 8192 || request.height < 16 || request.height > 8192) {
+    throw InputError("image size " + std::to_string(request.width) + "x" + std::to_string(request.height) +
+                     " is outside 16..8192 pixels per side");
+  }
+}
+
+// The shot's scene and a renderer of the request's size, on an off-screen context.
+struct ShotFrames {
+  OffscreenContext context;
+  ShotScene scene;
+  Renderer renderer;
+  const RenderRequest& request;
+
+  ShotFrames(const ShotTrajectory& trajectory, const RenderRequest& r)
+      : context(r.platform), scene(scene_input(r)), renderer(r.width, r.height, renderer_options(r)), request(r) {
+    scene.set_shot(trajectory, r.impactor);
+  }
+  static ShotSceneInput scene_input(const RenderRequest& r) {
+    ShotSceneInput input;
+    input.assets = r.assets;
+    input.world = r.world;
+    input.distance_unit = r.distance_unit;
+    input.tee = r.tee;
+    input.ball_radius = r.ball_radius;
+    input.impactor = r.impactor;
+    input.impactor_mesh = r.impactor_mesh;
+    input.flag = r.flag;
+    return input;
+  }
+  static RendererOptions renderer_options(const RenderRequest& r) {
+    RendererOptions options;
+    options.samples = r.samples;
+    options.shadows = r.shadows;
+    return options;
+  }
+  std::vector<std::uint8_t> at(double t) {
+    const Camera camera = scene.camera(request.camera, t, request.width, request.height);
+    renderer.draw(scene.build(camera, t, request.width, request.height), camera);
+    return renderer.read_pixels();
+  }
+};
+
+}  // namespace
 
 std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, const RenderRequest& request) {
   if (trajectory.samples.empty()) throw InputError("render: the shot has no trajectory samples");
@@ -24,29 +72,26 @@ std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, con
     throw InputError("--at " + std::to_string(t) + " s is outside the shot (" + std::to_string(start) + ".." +
                      std::to_string(end) + " s)");
   }
-  if (request.width < 16 || request.width > 8192 || request.height < 16 || request.height > 8192) {
-    throw InputError("image size " + std::to_string(request.width) + "x" + std::to_string(request.height) +
-                     " is outside 16..8192 pixels per side");
-  }
-  OffscreenContext context(request.platform);
-  ShotSceneInput input;
-  input.assets = request.assets;
-  input.world = request.world;
-  input.distance_unit = request.distance_unit;
-  input.tee = request.tee;
-  input.ball_radius = request.ball_radius;
-  input.impactor = request.impactor;
-  input.impactor_mesh = request.impactor_mesh;
-  input.flag = request.flag;
-  ShotScene scene(input);
-  scene.set_shot(trajectory, request.impactor);
-  RendererOptions options;
-  options.samples = request.samples;
-  options.shadows = request.shadows;
-  Renderer renderer(request.width, request.height, options);
-  const Camera camera = scene.camera(request.camera, t, request.width, request.height);
-  renderer.draw(scene.build(camera, t, request.width, request.height), camera);
-  return renderer.read_pixels();
+  check_size(request);
+  ShotFrames frames(trajectory, request);
+  return frames.at(t);
+}
+
+int render_shot_video(const ShotTrajectory& trajectory, const RenderRequest& request, const VideoRequest& video,
+                      const std::filesystem::path& out) {
+  if (trajectory.samples.empty()) throw InputError("render: the shot has no trajectory samples");
+  check_size(request);
+  ClipTiming timing;
+  timing.start = -swing_pre_roll(request.impactor, request.impactor_mesh);
+  timing.end = trajectory.samples.back().t;
+  timing.fps = video.fps;
+  timing.slow = video.slow;
+  const std::vector<double> times = clip_frame_times(timing);
+  Mp4Writer writer(request.width, request.height, video.fps);
+  ShotFrames frames(trajectory, request);
+  for (double t : times) writer.add_frame(frames.at(t));
+  writer.finish(out);
+  return writer.frames();
 }
 
 void render_shot_png(const ShotTrajectory& trajectory, const RenderRequest& request, const std::filesystem::path& out) {

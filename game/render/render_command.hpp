@@ -36,6 +36,17 @@ struct RenderRequest {
 /// RenderUnavailable when no GL context can be made, RenderError for shader/mesh failures.
 std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, const RenderRequest& request);
 
+/// A clip of the shot (render --video): from the downswing to the shot's end at `fps`, the
+/// strike slowed `slow` times (game/render/video_clip.hpp). `request.at_seconds` is ignored.
+struct VideoRequest {
+  int fps = 30;
+  double slow = 1.0;
+};
+/// Renders every frame off-screen and writes them as an H.264 MP4 to `out`, atomically.
+/// Returns the number of frames. Throws as render_shot_rgba.
+int render_shot_video(const ShotTrajectory& trajectory, const RenderRequest& request, const VideoRequest& video,
+                      const std::filesystem::path& out);
+
 /// render_shot_rgba, then write_png_atomic(out, ...).
 void render_shot_png(const ShotTrajectory& trajectory, const RenderRequest& request, const std::filesystem::path& out);
 

@@ -71,4 +71,31 @@ set -e
 [ "$rc" -eq 3 ] || fail "no EGL: exit $rc (wanted 3): $msg"
 echo "$msg" | grep -q "cannot create an off-screen OpenGL context" || fail "no EGL message: $msg"
 [ -e "$tmp/noegl.png" ] && fail "no EGL: file written"
+
+# --video: an H.264 MP4 of the whole shot that ffprobe reads with the frame count and the
+# duration the clip's timing gives; the strike slowed 20 times lengthens it by 19 x 50 ms.
+command -v ffprobe >/dev/null || fail "ffprobe is needed (scripts/dev installs ffmpeg)"
+probe() { ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=codec_name,width,height,nb_read_frames:format=duration -of default=nw=1 "$1"; }
+out=$("$bin" render golf/driver --video "$tmp/real.mp4" --width 160 --height 96 --fps 10)
+real_frames=$(echo "$out" | sed -n 's/.* \([0-9]*\) frames at 10 fps.*/\1/p')
+[ -n "$real_frames" ] || fail "--video: no frame count in: $out"
+p=$(probe "$tmp/real.mp4")
+echo "$p" | grep -qx "codec_name=h264" || fail "--video: not H.264: $p"
+echo "$p" | grep -qx "width=160" && echo "$p" | grep -qx "height=96" || fail "--video: size: $p"
+echo "$p" | grep -qx "nb_read_frames=$real_frames" || fail "--video: ffprobe counts other than $real_frames frames: $p"
+python3 - "$p" "$real_frames" <<'PY' || fail "--video: duration is not frames / fps: $p"
+import sys
+d = float([l for l in sys.argv[1].splitlines() if l.startswith("duration=")][0].split("=")[1])
+assert abs(d - int(sys.argv[2]) / 10.0) < 0.002, d
+PY
+out=$("$bin" render golf/driver --video "$tmp/slow.mp4" --width 160 --height 96 --fps 10 --slow-motion 20)
+slow_frames=$(echo "$out" | sed -n 's/.* \([0-9]*\) frames at 10 fps.*/\1/p')
+[ $((slow_frames - real_frames)) -ge 9 ] && [ $((slow_frames - real_frames)) -le 10 ] \
+  || fail "--slow-motion 20 added $((slow_frames - real_frames)) frames (19 x 50 ms at 10 fps: 9.5)"
+expect_exit 2 "--at" golf/driver --video "$tmp/x.mp4" --at 1s
+expect_exit 2 "even" golf/driver --video "$tmp/x.mp4" --width 161
+expect_exit 2 "--fps" golf/driver --video "$tmp/x.mp4" --fps 0
+expect_exit 2 "--slow-motion" golf/driver --video "$tmp/x.mp4" --slow-motion 0.5
+expect_exit 2 "--video F.mp4" golf/driver
+[ -e "$tmp/x.mp4" ] && fail "a refused --video left a file"
 echo "render CLI ok"

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "game/app/audio_out.hpp"
+#include "game/app/clip_recorder.hpp"
 #include "game/render/image.hpp"
 #include "game/render/renderer.hpp"
 
@@ -48,6 +49,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
   LoopStats stats;
   std::vector<Slot> slots(modes.size());
   AudioOut audio(!o.mute);
+  ClipRecorder clips(o.shots_dir);
   std::size_t active = first;
   const auto activate = [&](std::size_t i, double wall) {
     Slot& s = slots[i];
@@ -82,6 +84,12 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
       const KeyPress& k = keys[i];
       if (k.key == GLFW_KEY_F12) {  // a screenshot, in any mode, paused or not
         snapshot = true;
+        continue;
+      }
+      if (k.key == GLFW_KEY_F10) {  // a clip of the shot on screen, in any mode
+        const ShotScene* scene = view.clip_scene();
+        const std::string path = scene ? clips.start(*scene) : std::string();
+        out << (path.empty() ? std::string("clip: no shot on screen yet") : "clip: making " + path) << "\n";
         continue;
       }
       if (paused) {
@@ -186,11 +194,14 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
       write_png_atomic(o.screenshot, sw, sh, rgba);
       out << "screenshot: " << o.screenshot << " (" << sw << "x" << sh << ")\n";
     }
+    for (const std::string& line : clips.finished()) out << line << "\n";
     win.present();
     if (last) break;
   }
   for (const Slot& s : slots)
     if (s.view) s.view->report(out);
+  clips.wait();
+  for (const std::string& line : clips.finished()) out << line << "\n";
   return stats;
 }
 

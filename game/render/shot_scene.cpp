@@ -76,6 +76,8 @@ struct ShotScene::Impl {
   double plane_y = 0;  // the surrounding grass plane, m
 };
 
+const ShotSceneInput& ShotScene::input() const { return impl_->input; }
+
 ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.input = input;

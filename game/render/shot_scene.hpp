@@ -75,6 +75,10 @@ class ShotScene {
   /// player's aim while the ball waits to be hit.
   void set_aim(const std::optional<Vec3>& aim) { aim_ = aim; }
   const ShotTrajectory& trajectory() const { return trajectory_; }
+  /// What the scene was made of; with trajectory() and impactor(), enough to make it again
+  /// elsewhere (a clip rendered off-screen on another thread).
+  const ShotSceneInput& input() const;
+  const std::optional<ImpactorPlacement>& impactor() const { return impactor_; }
 
   /// The camera of `kind` at time t (s) for a width x height image, its eye kept above
   /// the ground (keep_above_ground).

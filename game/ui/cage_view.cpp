@@ -198,6 +198,7 @@ void draw_stats(const BattingCage& c, int w, int h) {
 
 class CageView final : public ModeView {
  public:
+  const ShotScene* clip_scene() const override { return scene_.get(); }
   CageView(const Assets& assets, std::unique_ptr<BattingCage> m, const CageViewOptions& o) : cage_(std::move(m)), options_(o) {
     ShotSceneInput in;
     in.assets = &assets;

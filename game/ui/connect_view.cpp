@@ -121,6 +121,7 @@ void draw_panel(const ConnectServer& server, const ConnectView& v, const std::st
 
 class ConnectModeView final : public ModeView {
  public:
+  const ShotScene* clip_scene() const override { return v_.scene.get(); }
   ConnectModeView(const Assets& assets, ConnectServer& server, std::string bind, std::string range_world)
       : server_(server), bind_(std::move(bind)), range_world_(std::move(range_world)), v_{assets, nullptr, {}, std::nullopt, {}, false} {
     server_.on_shot([this](const ShotTable::Played& p) {

@@ -62,6 +62,7 @@ constexpr double kSettle = 1.2;
 
 class GolfView final : public ModeView {
  public:
+  const ShotScene* clip_scene() const override { return scene_.get(); }
   GolfView(const Assets& a, std::unique_ptr<GolfPlay> m, const GolfViewOptions& o, std::ostream& out)
       : assets_(a), play_(std::move(m)), options_(o), out_(out) {
     units_.imperial = o.imperial;

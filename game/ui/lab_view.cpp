@@ -46,6 +46,7 @@ void clear_window(int w, int h) {
 
 class LabView final : public ModeView {
  public:
+  const ShotScene* clip_scene() const override { return scene_.get(); }
   LabView(const Assets& assets, std::unique_ptr<LabModel> lab) : assets_(assets), lab_(std::move(lab)) { new_shot(); }
   const char* title() const override { return "Lab"; }
   const char* restart_label() const override { return "Run the shot again"; }

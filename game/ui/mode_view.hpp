@@ -15,6 +15,7 @@
 namespace sweetspot {
 
 class Renderer;
+class ShotScene;
 
 /// A key that went down: its GLFW key code and when (s, on the clock the view is given).
 struct KeyPress {
@@ -63,6 +64,8 @@ class ModeView {
   virtual bool done() const { return false; }
   /// What the mode prints when the window closes (the swings of a batting session).
   virtual void report(std::ostream& /*out*/) const {}
+  /// The scene of the shot on screen, for a clip of it (F10); nullptr when there is none.
+  virtual const ShotScene* clip_scene() const { return nullptr; }
   /// The strikes to sound since the last call (the app plays them), oldest first.
   std::vector<ImpactSoundInput> take_sounds() { return std::exchange(sounds_, {}); }
 

@@ -29,6 +29,7 @@ namespace {
 
 class RangeView final : public ModeView {
  public:
+  const ShotScene* clip_scene() const override { return scene_.get(); }
   RangeView(const Assets& a, std::unique_ptr<RangePlay> m, const RangeViewOptions& o) : assets_(a), play_(std::move(m)), options_(o) {
     units_.imperial = o.imperial;
   }

@@ -42,4 +42,26 @@ grep -q "^image: none" "$work/headless.txt"
 [ -z "$(ls -A "$work/quiet")" ] || { echo "headless play wrote files: $(ls -A "$work/quiet")"; exit 1; }
 (cd "$work" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" play golf/7-iron --screenshot shot.png > headless2.txt)
 if grep -q "^image: shot.png" "$work/headless2.txt"; then "$check" "$work/shot.png" 1280 800 50; fi
+# F10: a clip of the shot on screen, made off-screen beside the game and waited for at the
+# end; ffprobe reads it as H.264 at 30 fps.
+mkdir "$work/clips"
+cat > "$work/clip.sh" <<'D'
+#!/usr/bin/env bash
+set -u
+"$1" play golf/7-iron --frames 150 --mute --shots-dir "$2/clips" > "$2/clip_log.txt" 2>&1 &
+pid=$!
+wid=""
+for _ in $(seq 1 150); do wid=$(xdotool search --name Sweetspot 2>/dev/null | head -1 || true); [ -n "$wid" ] && break; sleep 0.2; done
+[ -n "$wid" ] || { echo "no window"; kill $pid; exit 1; }
+sleep 1; xdotool windowfocus --sync "$wid" 2>/dev/null || true
+xdotool key F10
+wait $pid
+D
+chmod +x "$work/clip.sh"
+xvfb-run -a -s "-screen 0 1280x800x24" "$work/clip.sh" "$bin" "$work" || { cat "$work/clip_log.txt"; exit 1; }
+cat "$work/clip_log.txt"
+grep -q "^clip: .*sweetspot_clip_1.mp4 ([0-9]* frames at 30 fps)" "$work/clip_log.txt" || { echo "no clip line"; exit 1; }
+frames=$(sed -n 's/^clip: .* (\([0-9]*\) frames at 30 fps)/\1/p' "$work/clip_log.txt")
+probe=$(ffprobe -v error -count_frames -show_entries stream=codec_name,nb_read_frames -of default=nw=1 "$work/clips/sweetspot_clip_1.mp4")
+echo "$probe" | grep -qx "codec_name=h264" && echo "$probe" | grep -qx "nb_read_frames=$frames" || { echo "clip: $probe"; exit 1; }
 echo "play window test passed"

@@ -1,0 +1,66 @@
+#include "game/app/clip_recorder.hpp"
+
+#include <chrono>
+#include <exception>
+
+#include "game/render/render_command.hpp"
+#include "game/render/shot_scene.hpp"
+
+namespace sweetspot {
+namespace {
+// 960x540 at 30 fps with the strike 40 times slower: shareable, and made in tens of seconds
+// on llvmpipe beside the game.
+constexpr int kClipWidth = 960, kClipHeight = 540, kClipFps = 30;
+constexpr double kClipSlow = 40.0;
+}  // namespace
+
+ClipRecorder::~ClipRecorder() { wait(); }
+
+void ClipRecorder::wait() {
+  for (auto& j : jobs_)
+    if (j.valid()) j.wait();
+}
+
+std::string ClipRecorder::start(const ShotScene& scene) {
+  if (scene.trajectory().samples.size() < 2) return "";
+  const ShotSceneInput& in = scene.input();
+  RenderRequest r;
+  r.assets = in.assets;
+  r.world = in.world;
+  r.distance_unit = in.distance_unit;
+  r.tee = in.tee;
+  r.ball_radius = in.ball_radius;
+  r.impactor = scene.impactor();
+  r.impactor_mesh = in.impactor_mesh;
+  r.flag = in.flag;
+  r.width = kClipWidth;
+  r.height = kClipHeight;
+  if (!r.impactor) r.impactor_mesh.clear();
+  // The next number not taken: a clip never replaces an earlier one.
+  std::filesystem::path path;
+  std::error_code ec;
+  do {
+    path = dir_ / ("sweetspot_clip_" + std::to_string(++count_) + ".mp4");
+  } while (std::filesystem::exists(path, ec) && count_ < 100000);
+  jobs_.push_back(std::async(std::launch::async, [r, t = scene.trajectory(), path]() -> std::string {
+    try {
+      const int frames = render_shot_video(t, r, VideoRequest{kClipFps, kClipSlow}, path);
+      return "clip: " + path.string() + " (" + std::to_string(frames) + " frames at " + std::to_string(kClipFps) + " fps)";
+    } catch (const std::exception& e) {
+      return "clip not written: " + std::string(e.what());
+    }
+  }));
+  return path.string();
+}
+
+std::vector<std::string> ClipRecorder::finished() {
+  std::vector<std::string> out;
+  std::erase_if(jobs_, [&](std::future<std::string>& j) {
+    if (j.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
+    out.push_back(j.get());
+    return true;
+  });
+  return out;
+}
+
+}  // namespace sweetspot

@@ -80,13 +80,7 @@ RunFn setup_shot(CLI::App& sub) {
     const Scenario scenario = scenario_from_doc(assets, doc, o->scenario);
     if (!o->sound.empty()) check_output_path(o->sound, "--sound");
     ShotResult r = run_scenario(scenario, RunOptions{true, false});
-    if (!o->sound.empty()) {
-      const ShotSound sound = impact_sound_of(r);
-      if (!sound.ok)
-        throw InputError("--sound " + o->sound + ": this shot has no strike with a contact time to sound (a launch-only "
-                         "shot, or impact.model = \"rigid\")");
-      write_file_atomic(o->sound, wav_bytes(synthesize_impact(sound.input), kImpactSampleRate));
-    }
+    if (!o->sound.empty()) write_impact_wav(r, o->sound, "--sound");
     if (r.impact.present) r.impact.mu_grip = mu_grip(scenario.resolved);
     const SportProfile& sport = *scenario.resolved.sport;
     if (o->json) {

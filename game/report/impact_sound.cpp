@@ -5,6 +5,8 @@
 #include <cstdint>
 
 #include "game/core/shot_result.hpp"
+#include "game/util/atomic_file.hpp"
+#include "physics/error.hpp"
 #include "physics/math.hpp"
 
 namespace sweetspot {
@@ -174,6 +176,15 @@ std::string wav_bytes(const std::vector<float>& samples, int rate) {
     u16(static_cast<std::uint16_t>(static_cast<std::int16_t>(std::lround(c * 32767.0))));
   }
   return b;
+}
+
+void write_impact_wav(const ShotResult& shot, const std::filesystem::path& path, const char* flag) {
+  const ShotSound sound = impact_sound_of(shot);
+  if (!sound.ok)
+    throw InputError(std::string(flag) + " " + path.string() +
+                     ": this shot has no strike with a contact time to sound (a launch-only shot, or impact.model = "
+                     "\"rigid\")");
+  write_file_atomic(path, wav_bytes(synthesize_impact(sound.input), kImpactSampleRate));
 }
 
 }  // namespace sweetspot

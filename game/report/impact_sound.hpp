@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -62,5 +63,9 @@ ShotSound impact_sound_of(const ShotResult& shot);
 
 /// 16-bit PCM mono WAV bytes of `samples` at `sample_rate` Hz.
 std::string wav_bytes(const std::vector<float>& samples, int sample_rate);
+
+/// `shot --sound`: the shot's strike as a WAV at kImpactSampleRate, written atomically.
+/// Throws InputError naming `flag` when the shot has no strike with a contact time.
+void write_impact_wav(const ShotResult& shot, const std::filesystem::path& path, const char* flag);
 
 }  // namespace sweetspot

@@ -2,7 +2,12 @@
 // duration, the pulse's spectrum, each body's ring, loudness, and the WAV it writes.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -139,6 +144,34 @@ TEST_CASE("no strike, no sound", "[impact_sound]") {
   // Unknown equipment rings as the sport's commonest body.
   CHECK(ring_for("my-custom-6-iron", "golf").kind == "solid steel iron");
   CHECK(ring_for("ash", "baseball").kind == "solid wood bat");
+}
+
+TEST_CASE("a fairway wood rings between the driver and the irons", "[impact_sound]") {
+  const ShotSound wood = sound_of("golf/3-wood"), driver = sound_of("golf/driver");
+  CHECK(wood.input.ring.kind == "hollow steel fairway wood");
+  // Its smaller head stays on the ball about as long as the driver's...
+  CHECK(wood.input.contact_time == Approx(driver.input.contact_time).epsilon(0.15));
+  // ...and rings higher: its 6.1 kHz mode is there, the driver's 3.2-5 kHz ones are not.
+  const auto w = synthesize_impact(wood.input), d = synthesize_impact(driver.input);
+  CHECK(level_at(w, 6100.0) > 10.0 * level_at(d, 6100.0));
+  CHECK(level_at(d, 4000.0) > 10.0 * level_at(w, 4000.0));
+}
+
+TEST_CASE("shot --sound's file holds the strike's synthesised samples", "[impact_sound]") {
+  const ShotResult shot = strike("baseball/line-drive", kAlloy);
+  const auto path = std::filesystem::temp_directory_path() / ("sweetspot_test_sound_" + std::to_string(::getpid()) + ".wav");
+  write_impact_wav(shot, path, "--sound");
+  std::ifstream f(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(path);
+  const std::vector<float> x = synthesize_impact(impact_sound_of(shot).input);
+  REQUIRE(bytes.size() == 44 + 2 * x.size());
+  CHECK(bytes == wav_bytes(x, kImpactSampleRate));
+  // A shot without a strike is refused, naming the flag, and nothing is written.
+  ShotResult launch_only = shot;
+  launch_only.impact.present = false;
+  CHECK_THROWS_WITH(write_impact_wav(launch_only, path, "--sound"), Catch::Contains("--sound"));
+  CHECK_FALSE(std::filesystem::exists(path));
 }
 
 TEST_CASE("the WAV holds the synthesised samples as 16-bit PCM", "[impact_sound]") {

@@ -9,6 +9,7 @@
 
 #include "game/app/audio_out.hpp"
 #include "game/app/clip_recorder.hpp"
+#include "game/app/resolution_scaler.hpp"
 #include "game/render/image.hpp"
 #include "game/render/renderer.hpp"
 
@@ -50,6 +51,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
   std::vector<Slot> slots(modes.size());
   AudioOut audio(!o.mute);
   ClipRecorder clips(o.shots_dir);
+  ResolutionScaler resolution;
   std::size_t active = first;
   const auto activate = [&](std::size_t i, double wall) {
     Slot& s = slots[i];
@@ -123,6 +125,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
     vi.now = (paused ? paused_at : wall) - slot.offset;
     vi.dt = std::max(0.0, vi.now - slot.last_now);
     slot.last_now = vi.now;
+    vi.render_scale = o.dynamic_resolution ? resolution.scale() : 1.0;
     vi.width = win.framebuffer_width();
     vi.height = win.framebuffer_height();
     if (!paused) {
@@ -165,11 +168,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
       activate(active, wall);
     }
 
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    ++stats.frames;
-    stats.ms_total += ms;
-    stats.frame_ms.push_back(ms);
-    const bool last = quit || win.should_close() || (o.frames > 0 && stats.frames >= o.frames) || slots[active].view->done();
+    const bool last = quit || win.should_close() || (o.frames > 0 && stats.frames + 1 >= o.frames) || slots[active].view->done();
     if (snapshot) {
       int sw = 0, sh = 0;
       std::vector<unsigned char> rgba;
@@ -196,6 +195,12 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
     }
     for (const std::string& line : clips.finished()) out << line << "\n";
     win.present();
+    // The whole frame, the swap included: a software rasteriser finishes its work there.
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    resolution.frame(ms);
+    ++stats.frames;
+    stats.ms_total += ms;
+    stats.frame_ms.push_back(ms);
     if (last) break;
   }
   for (const Slot& s : slots)

@@ -32,6 +32,8 @@ struct LoopOptions {
   std::string screenshot;   ///< PNG of the last frame
   std::string shots_dir = ".";  ///< F12 writes sweetspot_shot_N.png here
   bool mute = false;        ///< no sound (no audio device is opened)
+  /// Lower the 3D view's resolution while frames run over budget (ResolutionScaler).
+  bool dynamic_resolution = true;
 };
 
 struct LoopStats {

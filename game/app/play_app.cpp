@@ -79,9 +79,14 @@ LoopStats run_window(const Assets& assets, const PlayOptions& o, std::ostream& o
   wo.width = o.width;
   wo.height = o.height;
   wo.vsync = o.frames == 0;
+  if (o.quality != "auto" && o.quality != "low" && o.quality != "high")
+    throw InputError("--quality " + o.quality + ": allowed auto, low, high");
   GameWindow win(wo);
-  Renderer renderer(win.framebuffer_width(), win.framebuffer_height());
+  RendererOptions ro;
+  ro.shadows = o.quality == "high" ? 1 : o.quality == "low" ? 0 : -1;
+  Renderer renderer(win.framebuffer_width(), win.framebuffer_height(), ro);
   LoopOptions lo;
+  lo.dynamic_resolution = o.quality != "high";
   lo.frames = o.frames;
   lo.screenshot = o.screenshot;
   lo.shots_dir = o.shots_dir;
@@ -97,10 +102,11 @@ int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& ou
   return 0;
 }
 
-double measure_window_frame_ms(const Assets& assets, int width, int height, int frames) {
+double measure_window_frame_ms(const Assets& assets, const std::string& mode, int width, int height, int frames) {
   constexpr int kWarmUp = 10;
   PlayOptions o;
-  o.mode = "lab";
+  o.mode = mode;
+  o.mute = true;
   o.width = width;
   o.height = height;
   o.frames = kWarmUp + std::max(frames, 1);

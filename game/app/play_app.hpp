@@ -40,6 +40,10 @@ struct PlayOptions {
   bool exit_when_done = false;           ///< golf / baseball: close the window once the round or the pitches are done
   int pitches = 0;                       ///< baseball: pitches in the session (0 = until closed)
   bool mute = false;                     ///< window: no impact sound (no audio device is opened)
+  /// window: "auto" (the 3D view's resolution drops while frames run over budget; sun
+  /// shadows on a GPU), "low" (as auto, never shadows), "high" (full resolution and shadows,
+  /// whatever it costs).
+  std::string quality = "auto";
 };
 
 /// Opens the window and runs until closed (or `frames`). Returns the exit code. Prints the
@@ -47,11 +51,12 @@ struct PlayOptions {
 /// no window can be opened.
 int run_play_window(const Assets& assets, const PlayOptions& options, std::ostream& out);
 
-/// The lab window's frame time (ms): golf/driver with its panels at width x height, vsync
-/// off, the median of `frames` frames after 10 warm-up frames (shader compiles, the first
-/// shot). What `bench` reports as frame_ms_window_WxH. Throws std::runtime_error when no
-/// window can be opened (no display).
-double measure_window_frame_ms(const Assets& assets, int width, int height, int frames);
+/// A window mode's frame time (ms): `mode` (lab: golf/driver with its panels; golf: the first
+/// hole of Sweetspot National as it opens; range; baseball: the cage) at width x height,
+/// vsync off, muted, the median of `frames` frames after 10 warm-up frames (shader compiles,
+/// the first shot). What `bench` reports as frame_ms_window_*. Throws std::runtime_error when
+/// no window can be opened (no display).
+double measure_window_frame_ms(const Assets& assets, const std::string& mode, int width, int height, int frames);
 
 /// Runs the shot without a window: prints the launch-monitor table and, when `screenshot`
 /// names a file, writes a PNG of the shot there through EGL (nothing is written otherwise:

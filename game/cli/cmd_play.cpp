@@ -49,6 +49,7 @@ RunFn setup_play(CLI::App& sub) {
   window_only.push_back(sub.add_option("--resume", o->resume, "golf: go on with a round saved with S"));
   window_only.push_back(sub.add_option("--save", o->save, "golf: where S saves the round (default sweetspot_round.json)"));
   window_only.push_back(sub.add_flag("--metric", o->metric, "golf: metres (default yards and feet; U switches in play)"));
+  window_only.push_back(sub.add_option("--quality", o->quality, "auto (the 3D view's resolution drops to keep frames under 20 ms; sun shadows on a GPU), low (never shadows) or high (full resolution and shadows)")->capture_default_str());
   window_only.push_back(sub.add_flag("--mute", o->mute, "no impact sound (without an audio device the game is silent anyway)"));
   window_only.push_back(sub.add_option("--shots-dir", o->shots_dir, "where F12 writes its screenshots (default: here)"));
   window_only.push_back(sub.add_flag("--exit-when-done", o->exit_when_done, "golf, baseball: close once the round or the pitches are done (automation)"));

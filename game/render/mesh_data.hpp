@@ -31,4 +31,17 @@ struct MeshData {
   void append(const MeshData& other);
 };
 
+/// `mesh` cut into square tiles of `tile` m in the ground plane (x, z), each triangle in the
+/// tile of its centroid, each tile with only the vertices its triangles use: a course's one
+/// mesh as pieces the renderer can leave out when they are out of view. Empty tiles are not
+/// returned; together the tiles hold every triangle once, in order within a tile.
+std::vector<MeshData> split_into_tiles(const MeshData& mesh, float tile);
+
+/// A coarser `mesh` for far away (vertex clustering: J. Rossignac & P. Borrel, "Multi-
+/// resolution 3D approximations for rendering complex scenes", 1993): the vertices of one
+/// `cell` m cube and one colour become their mean, and triangles left with two corners in
+/// one cluster go. Colours never merge, so a green keeps its edge against the rough, to
+/// within a cell.
+MeshData cluster_vertices(const MeshData& mesh, float cell);
+
 }  // namespace sweetspot

@@ -1,5 +1,7 @@
 #include "game/render/renderer.hpp"
 
+#include <array>
+
 #include <algorithm>
 #include <string>
 
@@ -143,6 +145,29 @@ void Renderer::resize(int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+namespace {
+
+// True when `box` (in the mesh's frame) lies wholly outside one side of the clip volume of
+// `clip` (view-projection times model): none of its corners is inside that plane.
+bool outside_view(const Eigen::Matrix4f& clip, const Eigen::AlignedBox3f& box) {
+  std::array<int, 6> out{};  // corners beyond -x, +x, -y, +y, -z, +z
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3f p = box.corner(static_cast<Eigen::AlignedBox3f::CornerType>(c));
+    const Eigen::Vector4f q = clip * Eigen::Vector4f(p.x(), p.y(), p.z(), 1.0f);
+    for (int a = 0; a < 3; ++a) {
+      out[static_cast<std::size_t>(2 * a)] += q[a] < -q.w();
+      out[static_cast<std::size_t>(2 * a + 1)] += q[a] > q.w();
+    }
+  }
+  return std::any_of(out.begin(), out.end(), [](int n) { return n == 8; });
+}
+
+bool culled(const MeshInstance& inst, const Eigen::Matrix4f& view_proj) {
+  return inst.bounds && outside_view(view_proj * inst.model, *inst.bounds);
+}
+
+}  // namespace
+
 void Renderer::draw(const Scene& scene, const Camera& camera) {
   Impl& m = *impl_;
   const double aspect = double(width_) / height_;
@@ -184,6 +209,7 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
     m.depth.set("u_light_view_proj", light_view_proj);
     for (const auto& inst : scene.meshes) {
       if (inst.mesh == nullptr || inst.decal > 0) continue;  // flat paint casts nothing
+      if (culled(inst, light_view_proj)) continue;
       m.depth.set("u_model", inst.model);
       inst.mesh->draw();
     }
@@ -224,7 +250,7 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
   std::stable_sort(order.begin(), order.end(), [&](const MeshInstance* a, const MeshInstance* b) { return rank(a) < rank(b); });
   for (const MeshInstance* instance : order) {
     const MeshInstance& inst = *instance;
-    if (inst.mesh == nullptr) continue;
+    if (inst.mesh == nullptr || culled(inst, view_proj)) continue;
     // Terrain is pushed back a little in depth so markers lying on it win the depth test.
     if (inst.terrain) {
       glEnable(GL_POLYGON_OFFSET_FILL);

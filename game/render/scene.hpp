@@ -2,9 +2,11 @@
 // game). The renderer reads it; it owns no physics state (DESIGN §7).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "game/render/gpu_mesh.hpp"
 #include "game/render/mesh_data.hpp"
@@ -12,12 +14,19 @@
 namespace sweetspot {
 
 struct MeshInstance {
+  MeshInstance() = default;
+  MeshInstance(const GpuMesh* m, const Eigen::Matrix4f& to_world, bool is_terrain = false, int decal_layer = 0,
+               std::optional<Eigen::AlignedBox3f> box = std::nullopt)
+      : mesh(m), model(to_world), terrain(is_terrain), decal(decal_layer), bounds(box) {}
   const GpuMesh* mesh = nullptr;                      ///< not owned
   Eigen::Matrix4f model = Eigen::Matrix4f::Identity();  ///< mesh frame -> world, m
   bool terrain = false;  ///< drawn with a depth offset so ground markers sit on it
   /// 1, 2, ...: flat paint lying on the terrain (a ballpark's skin, bases), each layer drawn
   /// over the terrain and the layers below it by a depth offset; 0 = an ordinary mesh.
   int decal = 0;
+  /// The mesh's extent in its own frame, when known: a pass leaves the mesh out where the
+  /// box is wholly outside its view (a course's tiles behind the camera).
+  std::optional<Eigen::AlignedBox3f> bounds;
 };
 
 struct Scene {

@@ -1,6 +1,7 @@
 #include "game/render/shot_scene.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -18,6 +19,17 @@
 
 namespace sweetspot {
 namespace {
+
+// A course's tiles: 100 m squares, a few dozen over 18 holes' ~1 km, each a handful of draws
+// of its own; small enough that a view down one hole leaves most of them out.
+constexpr float kWorldTile = 100.0f;  // m
+// Far tiles draw coarser (cluster_vertices): a cell of c m at d m spans c/d rad, ~3 px of an
+// 800 px, 45° view at these pairs (1 m from 250 m, 3 m from 750 m). A green, meshed finely for
+// the putts on it, is a few hundred triangles from the next tee instead of thousands.
+struct FarLevel {
+  float from, cell;  // m
+};
+constexpr std::array<FarLevel, 3> kFarLevels{{{200.0f, 1.5f}, {450.0f, 12.0f}, {900.0f, 24.0f}}};
 
 constexpr double kYard = 0.9144;  // m
 constexpr double kFoot = 0.3048;  // m
@@ -66,7 +78,15 @@ struct ShotScene::Impl {
   ShotSceneInput input;
   SceneStyle style;
   bool golf = true;
-  std::unique_ptr<GpuMesh> world, surroundings, ball, tee, flag, impactor, poles;
+  // The world in ground tiles, each with its box, so that a view draws only the tiles it
+  // sees (a course is one mesh of every hole: ~160k triangles for 18).
+  struct Tile {
+    std::unique_ptr<GpuMesh> mesh;
+    std::array<std::unique_ptr<GpuMesh>, kFarLevels.size()> far;  ///< coarser for farther (kFarLevels)
+    Eigen::AlignedBox3f box;
+  };
+  std::vector<Tile> world;
+  std::unique_ptr<GpuMesh> surroundings, ball, tee, flag, impactor, poles;
   std::vector<std::unique_ptr<GpuMesh>> dressing;  // a ballpark's diamond, lowest layer first
   double impactor_size = 0.0;  // m, the impactor mesh's longest box side
   bool impactor_is_bat = false;
@@ -95,7 +115,15 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
   double ground_min_y = 0.0;
   if (input.world != nullptr) {
     const WorldDescription& d = input.world->description();
-    m.world = std::make_unique<GpuMesh>(world_mesh_data(d));
+    for (MeshData& tile : split_into_tiles(world_mesh_data(d), kWorldTile)) {
+      Eigen::AlignedBox3f box;
+      for (const Vertex& v : tile.vertices) box.extend(v.position);
+      Impl::Tile w;
+      w.mesh = std::make_unique<GpuMesh>(tile);
+      w.box = box;
+      for (std::size_t l = 0; l < kFarLevels.size(); ++l) w.far[l] = std::make_unique<GpuMesh>(cluster_vertices(tile, kFarLevels[l].cell));
+      m.world.push_back(std::move(w));
+    }
     ground_min_y = 1e300;
     m.world_min = Vec3::Constant(1e300);
     m.world_max = Vec3::Constant(-1e300);
@@ -127,9 +155,9 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
     m.flag_position = input.flag;
   }
   // Beyond the world mesh: a grass plane just below its lowest point, out to the horizon.
-  m.plane_y = m.world ? ground_min_y - 0.3 : 0.0;
+  m.plane_y = !m.world.empty() ? ground_min_y - 0.3 : 0.0;
   // Without a world the plane is the flat default ground of the flight model: a mown fairway.
-  m.surroundings = std::make_unique<GpuMesh>(grass_plane(m.plane_y, 4000.0, m.world ? "out_of_bounds" : "fairway"));
+  m.surroundings = std::make_unique<GpuMesh>(grass_plane(m.plane_y, 4000.0, !m.world.empty() ? "out_of_bounds" : "fairway"));
   m.ball = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, "golf_ball")));
   if (input.tee) m.tee = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, "tee")));
   if (m.flag_position) m.flag = std::make_unique<GpuMesh>(import_mesh(mesh_path(root, "flag")));
@@ -205,7 +233,16 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     scene.shadow_centre = (close ? focus : b.centre()).cast<float>();
     scene.shadow_radius = static_cast<float>(close ? std::max(8.0, reach) : std::min(span, 300.0));
   }
-  if (m.world) scene.meshes.push_back({m.world.get(), Eigen::Matrix4f::Identity(), true});
+  for (const Impl::Tile& tile : m.world) {
+    // The level of detail by the tile's distance: its nearest point to the eye.
+    const Eigen::Vector3f eye = camera.eye.cast<float>();
+    const float d = (eye - eye.cwiseMax(tile.box.min()).cwiseMin(tile.box.max())).norm();
+    const GpuMesh* mesh = tile.mesh.get();
+    for (std::size_t l = 0; l < kFarLevels.size(); ++l)
+      if (d > kFarLevels[l].from) mesh = tile.far[l].get();
+    MeshInstance inst{mesh, Eigen::Matrix4f::Identity(), true, 0, tile.box};
+    scene.meshes.push_back(inst);
+  }
   for (std::size_t i = 0; i < m.dressing.size(); ++i)
     scene.meshes.push_back({m.dressing[i].get(), Eigen::Matrix4f::Identity(), false, static_cast<int>(i) + 1});
   if (m.poles) scene.meshes.push_back({m.poles.get(), Eigen::Matrix4f::Identity(), false});
@@ -362,17 +399,17 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     const Vec3 across(-aim.z(), 0.0, aim.x());  // right of the aim line
     double reach = 60.0;
     for (const auto& q : samples) reach = std::max(reach, (q.position - launch).dot(aim) + 20.0);
-    if (m.world && m.flag_position) {
+    if (!m.world.empty() && m.flag_position) {
       // On a hole: to 50 yd past the flag (a course's world runs on over the other holes).
       reach = std::max(reach, (*m.flag_position - launch).dot(aim) + 50 * kYard);
-    } else if (m.world) {
+    } else if (!m.world.empty()) {
       for (double x : {m.world_min.x(), m.world_max.x()})
         for (double z : {m.world_min.z(), m.world_max.z()}) reach = std::max(reach, (Vec3(x, 0, z) - launch).dot(aim));
     }
     const double half = 22.0;
     for (int k = 1; k * 50 * kYard <= reach && k <= 20; ++k) {
       const Vec3 mid = launch + k * 50 * kYard * aim;
-      if (m.world && !ground_height(mid.x(), mid.z())) continue;  // off the world
+      if (!m.world.empty() && !ground_height(mid.x(), mid.z())) continue;  // off the world
       constexpr int n = 22;
       auto at = [&](double off) {
         const Vec3 q = mid + off * across;

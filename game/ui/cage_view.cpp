@@ -231,7 +231,7 @@ class CageView final : public ModeView {
     }
     const int w = in.width, h = in.height;
     if (w > 0 && h > 0) {
-      if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);
+      fit_renderer(renderer, w, h, in.render_scale);
       const bool batted = c.stage() == Stage::Batted || (c.stage() == Stage::Called && c.last().result.contact);
       const double flight_end = duration(c.last().result.shot.trajectory);
       const double t = c.stage() == Stage::Pitching ? std::min(c.pitch_clock(in.now), c.pitch().flight_time)

@@ -169,7 +169,7 @@ class ConnectModeView final : public ModeView {
     if (v_.last) v_.replay.advance(in.dt, duration(v_.scene->trajectory()));
     const int w = in.width, h = in.height;
     if (w > 0 && h > 0) {
-      if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);
+      fit_renderer(renderer, w, h, in.render_scale);
       const Camera cam = v_.scene->camera(v_.last ? CameraKind::Follow : CameraKind::Behind, v_.replay.time, w, h);
       renderer.draw(v_.scene->build(cam, v_.replay.time, w, h), cam);
       renderer.blit_to(0, w, h);

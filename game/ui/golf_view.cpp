@@ -351,7 +351,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   const double t = flying ? std::clamp(in.now - play_->struck_at(), 0.0, end) : (over || settling) ? end : 0.0;
   Camera cam;
   if (w > 0 && h > 0 && scene_) {
-    if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);
+    fit_renderer(renderer, w, h, in.render_scale);
     if (flyover) {
       cam = flyover_camera(play_->flyover_progress(in.now));
     } else if (flying || settling) {

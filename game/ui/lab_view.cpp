@@ -128,7 +128,7 @@ void LabView::frame(const ViewInput& in, Renderer& renderer) {
   // panel, and a software rasteriser shades no pixel a panel covers.
   const int vw = static_cast<int>(layout.view.w), vh = static_cast<int>(layout.view.h);
   if (w > 0 && h > 0 && vw >= 16 && vh >= 16) {
-    if (vw != renderer.width() || vh != renderer.height()) renderer.resize(vw, vh);
+    fit_renderer(renderer, vw, vh, in.render_scale);
     Camera cam = scene_->keep_above_ground(orbit_.apply(scene_->camera(camera_, replay_.time, vw, vh)));
     if (glide_from_ && since_switch_ < kCameraGlide) {
       cam = scene_->keep_above_ground(blend_cameras(*glide_from_, cam, ease_in_out(since_switch_ / kCameraGlide)));

@@ -46,7 +46,16 @@ struct ViewInput {
   std::vector<KeyPress> keys;    ///< on the mode's clock, in order (Tab and Esc are the app's)
   double orbit_dx = 0.0, orbit_dy = 0.0;  ///< px dragged with the left button
   double zoom = 0.0;             ///< scroll wheel clicks, + = in
+  /// The share of the window's pixels per side the 3D view is rendered at, then scaled up
+  /// (dynamic resolution: the loop lowers it when frames run over budget). HUD and panels
+  /// stay at full resolution.
+  double render_scale = 1.0;
 };
+
+/// Sizes `renderer` for a w x h view at `scale` (each side rounded, at least 16 px); the
+/// view then builds its scene for w x h (so pixel-sized marks keep their size on screen)
+/// and blits the image up to w x h.
+void fit_renderer(Renderer& renderer, int w, int h, double scale);
 
 class ModeView {
  public:

@@ -138,7 +138,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
   const double end = hit ? duration(play_->last_shot().trajectory) : 0.0;
   const double t = flying ? std::clamp(in.now - play_->struck_at(), 0.0, end) : end;
   if (w > 0 && h > 0) {
-    if (w != renderer.width() || h != renderer.height()) renderer.resize(w, h);
+    fit_renderer(renderer, w, h, in.render_scale);
     Camera cam;
     if (flying) {
       cam = scene_->camera(CameraKind::Follow, t, w, h);

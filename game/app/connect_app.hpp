@@ -22,4 +22,10 @@ struct ConnectWindowOptions {
 /// go to `out` as headless; server events to `log`. Returns 0.
 int run_connect_window(const Assets& assets, const ConnectWindowOptions& o, std::ostream& out, std::ostream& log);
 
+/// The connect window's frame time (ms) at width x height, serving on a free local port with
+/// no monitor attached: the median of `frames` frames after 10 warm-up frames, vsync off.
+/// What `bench` reports as frame_ms_window_connect_1280x800. Throws std::runtime_error when
+/// no window can be opened.
+double measure_connect_frame_ms(const Assets& assets, int width, int height, int frames);
+
 }  // namespace sweetspot

@@ -14,6 +14,7 @@
 #include "game/bench/sweep_bench.hpp"
 #include "game/render/render_command.hpp"
 #include "game/render/render_error.hpp"
+#include "game/app/connect_app.hpp"
 #include "game/app/play_app.hpp"
 #include "game/cli/command.hpp"
 #include "game/report/report.hpp"
@@ -110,6 +111,8 @@ RunFn setup_bench(CLI::App& sub) {
                       "ms per 1280x800 range window frame (median)"});
       rows.push_back({"frame_ms_window_cage_1280x800", measure_window_frame_ms(assets, "baseball", 1280, 800, n),
                       "ms per 1280x800 batting-cage window frame (median)"});
+      rows.push_back({"frame_ms_window_connect_1280x800", measure_connect_frame_ms(assets, 1280, 800, n),
+                      "ms per 1280x800 launch-monitor window frame (median)"});
     } catch (const std::exception& e) {
       window_note = e.what();
     }
@@ -121,7 +124,7 @@ RunFn setup_bench(CLI::App& sub) {
       if (!frame_note.empty()) j["frame_ms_1280x720"] = j["frame_ms_1280x720_shadows"] = nullptr, j["frame_note"] = frame_note;
       if (!window_note.empty()) {
         for (const char* k : {"frame_ms_window_1280x800", "frame_ms_window_golf_1280x800", "frame_ms_window_range_1280x800",
-                              "frame_ms_window_cage_1280x800"})
+                              "frame_ms_window_cage_1280x800", "frame_ms_window_connect_1280x800"})
           if (!j.contains(k)) j[k] = nullptr;
         j["window_note"] = window_note;
       }

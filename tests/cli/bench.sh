@@ -38,16 +38,19 @@ PY
 python3 - "$out" <<'PY' || fail "window frame key"
 import json, sys
 j = json.loads(sys.argv[1])
-assert "frame_ms_window_1280x800" in j
-assert j["frame_ms_window_1280x800"] is not None or j.get("window_note"), j.get("window_note")
+keys = ["frame_ms_window_1280x800"] + ["frame_ms_window_%s_1280x800" % m for m in ("golf", "range", "cage", "connect")]
+for k in keys:
+    assert k in j, k
+    assert j[k] is not None or j.get("window_note"), j.get("window_note")
 PY
 if command -v xvfb-run >/dev/null; then
   win=$(xvfb-run -a -s "-screen 0 1280x800x24" "$bin" bench --quick --json)
   python3 - "$win" <<'PY' || fail "window frame under Xvfb"
 import json, sys
 j = json.loads(sys.argv[1])
-v = j["frame_ms_window_1280x800"]
-assert isinstance(v, (int, float)) and 0 < v < 1000, v
+for m in ("", "golf_", "range_", "cage_", "connect_"):
+    v = j["frame_ms_window_%s1280x800" % m]
+    assert isinstance(v, (int, float)) and 0 < v < 1000, (m, v)
 PY
 fi
 set +e

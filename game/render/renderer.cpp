@@ -17,7 +17,7 @@ namespace sweetspot {
 
 struct Renderer::Impl {
   ShaderProgram lit, flat, sky, depth;
-  GpuMesh ground_overlay, top_overlay;
+  GpuMesh ground_overlay, top_overlay, figures;
   GLuint empty_vao = 0;
   GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
   GLuint resolve_fbo = 0, resolve_color = 0;
@@ -178,6 +178,7 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
   // The sun's shadow map: an orthographic view along the sunlight over the scene's shadow
   // square, depth only, every mesh a caster (the ground too: hills shade). A slope-scaled
   // depth offset keeps lit surfaces from shadowing themselves (acne).
+  if (!scene.figures.indices.empty()) m.figures.upload(scene.figures);
   const bool shadows = shadows_ && scene.shadow_radius > 0.0f;
   Eigen::Matrix4f light_view_proj = Eigen::Matrix4f::Identity();
   if (shadows) {
@@ -212,6 +213,10 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
       if (culled(inst, light_view_proj)) continue;
       m.depth.set("u_model", inst.model);
       inst.mesh->draw();
+    }
+    if (!scene.figures.indices.empty()) {
+      m.depth.set("u_model", Eigen::Matrix4f(Eigen::Matrix4f::Identity()));
+      m.figures.draw();
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
@@ -266,6 +271,13 @@ void Renderer::draw(const Scene& scene, const Camera& camera) {
     m.lit.set("u_normal_matrix", normal_matrix(inst.model));
     inst.mesh->draw();
     if (inst.terrain || inst.decal > 0) glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+
+  if (!scene.figures.indices.empty()) {
+    m.lit.set("u_specular", 0.0f);
+    m.lit.set("u_model", Eigen::Matrix4f(Eigen::Matrix4f::Identity()));
+    m.lit.set("u_normal_matrix", Eigen::Matrix3f(Eigen::Matrix3f::Identity()));
+    m.figures.draw();
   }
 
   // Sky after the opaque meshes, at the far plane with LEQUAL: only pixels nothing covered

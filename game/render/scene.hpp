@@ -40,6 +40,7 @@ struct Scene {
   Eigen::Vector3f shadow_centre = Eigen::Vector3f::Zero();
   float shadow_radius = 0.0f;
   std::vector<MeshInstance> meshes;  ///< lit
+  MeshData figures;         ///< lit, world frame, rebuilt each frame: the people
   MeshData ground_overlay;  ///< unlit, depth-tested: rings and stripes lying on the ground
   MeshData top_overlay;     ///< unlit, drawn over everything: trail, pins, labels
 };

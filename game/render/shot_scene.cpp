@@ -13,6 +13,7 @@
 #include "game/render/mesh_import.hpp"
 #include "game/render/overlay_geometry.hpp"
 #include "game/render/render_paths.hpp"
+#include "game/render/golfer_figure.hpp"
 #include "game/render/swing_pose.hpp"
 #include "game/render/trail_geometry.hpp"
 #include "physics/error.hpp"
@@ -23,6 +24,24 @@ namespace {
 // A course's tiles: 100 m squares, a few dozen over 18 holes' ~1 km, each a handful of draws
 // of its own; small enough that a view down one hole leaves most of them out.
 constexpr float kWorldTile = 100.0f;  // m
+
+// Where the golfer holds a club, in its HEAD FRAME: up the shaft from the hosel
+// (scripts/gen_meshes.py: the driver's at (-12, 18, -50) mm with a 58° lie, the iron's at
+// (-8, 14.4, -36) mm and 62°, the putter's at (-4, 15, -37.5) mm and 70°) by the club's
+// length: a driver 45 in, a 7-iron 37 in, a putter 34 in (the common men's lengths; the Rules
+// cap a club at 48 in, putters excepted). The head's mesh carries only a stub of its shaft.
+struct ClubGrip {
+  Vec3 hosel, axis;
+  double length;
+};
+ClubGrip club_grip(const std::string& mesh) {
+  const auto axis = [](double back, double lie_deg) {
+    return Vec3(back, std::sin(deg_to_rad(lie_deg)), -std::cos(deg_to_rad(lie_deg))).normalized();
+  };
+  if (mesh == "driver_head") return {Vec3(-0.012, 0.018, -0.050), axis(-0.05, 58.0), 45.0 * 0.0254};
+  if (mesh == "putter_head") return {Vec3(-0.004, 0.015, -0.0375), axis(-0.02, 70.0), 34.0 * 0.0254};
+  return {Vec3(-0.008, 0.0144, -0.036), axis(-0.05, 62.0), 37.0 * 0.0254};
+}
 // Far tiles draw coarser (cluster_vertices): a cell of c m at d m spans c/d rad, ~3 px of an
 // 800 px, 45° view at these pairs (1 m from 250 m, 3 m from 750 m). A green, meshed finely for
 // the putts on it, is a few hundred triangles from the next tee instead of thousands.
@@ -281,6 +300,21 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     model.block<3, 3>(0, 0) = static_cast<float>(strike_scale) * pose.orientation.normalized().toRotationMatrix().cast<float>();
     model.block<3, 1>(0, 3) = (launch + strike_scale * (pose.position - launch)).cast<float>();
     scene.meshes.push_back({m.impactor.get(), model, false});
+    // The golfer holding it, where his hands must be: the grip rides with the club through
+    // its downswing. Only at true size: a club drawn larger for a far camera has no hands on it.
+    if (!m.impactor_is_bat && delivered && strike_scale <= 1.0 + 1e-9) {
+      const ClubGrip c = club_grip(m.input.impactor_mesh);
+      const Vec3 grip_head = c.hosel + c.length * c.axis;  // the hands, in the head's frame
+      const Vec3 grip0 = impactor_->position + impactor_->orientation * grip_head;
+      const Vec3 grip = pose.position + pose.orientation * grip_head;
+      const Vec3 v = impactor_->velocity.normalized();
+      Vec3 target = trajectory_.summary.rest_position - launch;
+      target.y() = 0.0;
+      if (target.norm() < 0.5) target = Vec3(v.x(), 0.0, v.z());
+      if (target.norm() < 1e-6) target = Vec3::UnitX();
+      append_golfer(scene.figures, golfer_body(grip, grip0, target.normalized(), ground_at(launch.x(), launch.z())));
+      append_club_shaft(scene.figures, grip, pose.orientation * c.axis, c.length);
+    }
   }
   // The ball: true size close up, never smaller than ball_min_radius_px on screen.
   const Vec3 ball = have_shot ? at.position : launch;

@@ -1,6 +1,7 @@
 #include "game/render/ballpark_dressing.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -62,6 +63,8 @@ void quad(MeshData& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   for (const Vec3* q : {&a, &b, &c, &d}) vertex(m, *q, p, normal);
   m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
 }
+
+Vec3 lift(const Vec3& p, double dy) { return Vec3(p.x(), p.y() + dy, p.z()); }
 
 void disc(MeshData& m, const Vec3& centre, double r, const Paint& c) {
   std::vector<Vec3> ring;
@@ -204,6 +207,77 @@ BallparkDressing ballpark_dressing(const Vec3& home, const std::vector<Vec3>& fe
       const Vec3 n = (e - a).cross(Vec3::UnitY()).normalized();
       quad(out.poles, a, e, e + Vec3(0, top, 0), a + Vec3(0, top, 0), pole, n);
     }
+  }
+  // The stands: raked rows of seats beyond the outfield wall (but for the batter's eye) and
+  // behind the foul ground along each line, rising 0.9 m every 1.6 m row (a ~30° rake, as
+  // major-league upper decks are built at most 35°: ESTIMATE of a typical lower bowl), their
+  // front rows just above the wall. Decoration only: the physics' stands are the flat ground
+  // out of bounds beyond the wall.
+  {
+    const Paint seat_a{Eigen::Vector3f(0.16f, 0.22f, 0.42f), 0.0f}, seat_b{Eigen::Vector3f(0.36f, 0.38f, 0.44f), 0.0f};
+    constexpr int kRows = 12;
+    constexpr double kRow = 1.6, kRise = 0.9;
+    const double eye_half = std::atan2(10.0, fence_distance(home, fence_line, 0.0));
+    for (int k = -45; k < 45; ++k) {
+      const double a = deg_to_rad(k), b = deg_to_rad(k + 1);
+      if (std::max(std::abs(a), std::abs(b)) < eye_half + deg_to_rad(1.0)) continue;
+      const double ra = fence_distance(home, fence_line, a) + 2.0, rb = fence_distance(home, fence_line, b) + 2.0;
+      for (int row = 0; row < kRows; ++row) {
+        const double y0 = fence_height + 0.3 + kRise * row, y1 = y0 + kRise;
+        const double d0 = kRow * row, d1 = d0 + kRow;
+        const Paint& c = row % 2 == 0 ? seat_a : seat_b;
+        const Vec3 inward(-std::cos(0.5 * (a + b)), 0.0, -std::sin(0.5 * (a + b)));
+        const Vec3 a0 = lift(ray(a, ra + d0), y0), b0 = lift(ray(b, rb + d0), y0);
+        const Vec3 a1 = lift(ray(a, ra + d0), y1), b1 = lift(ray(b, rb + d0), y1);
+        const Vec3 a2 = lift(ray(a, ra + d1), y1), b2 = lift(ray(b, rb + d1), y1);
+        quad(out.stands, a0, b0, b1, a1, c, inward);
+        quad(out.stands, a1, b1, b2, a2, c);
+      }
+    }
+    // Along each foul line, from 20 m out to the pole: 60 ft of foul ground (Rule 2.01), then
+    // the rows, rising from a 4 ft front wall.
+    constexpr double kFoul = 60.0 * kFoot, kFrontWall = 4.0 * kFoot;
+    for (const Vec3& pole_foot : {fence_line.front(), fence_line.back()}) {
+      Vec3 along(pole_foot.x() - home.x(), 0.0, pole_foot.z() - home.z());
+      const double reach = along.norm();
+      if (reach < 25.0) continue;
+      along /= reach;
+      Vec3 out_dir(-along.z(), 0.0, along.x());  // away from fair territory
+      if (out_dir.dot(Vec3(0.0, 0.0, pole_foot.z() - home.z())) < 0.0) out_dir = -out_dir;
+      for (double s0 = 20.0; s0 < reach - 1.0; s0 += 6.0) {
+        const double s1 = std::min(s0 + 6.0, reach);
+        for (int row = 0; row < kRows; ++row) {
+          const double y0 = home.y() + kFrontWall + kRise * row, y1 = y0 + kRise;
+          const double o0 = kFoul + kRow * row, o1 = o0 + kRow;
+          const Paint& c = row % 2 == 0 ? seat_a : seat_b;
+          const auto at = [&](double s, double o, double y) {
+            return Vec3(home.x() + s * along.x() + o * out_dir.x(), y, home.z() + s * along.z() + o * out_dir.z());
+          };
+          const Vec3 facing(-out_dir.x(), 0.0, -out_dir.z());
+          const Vec3 p0 = at(s0, o0, y0), p1 = at(s1, o0, y0), p2 = at(s1, o0, y1), p3 = at(s0, o0, y1);
+          const Vec3 p4 = at(s1, o1, y1), p5 = at(s0, o1, y1);
+          quad(out.stands, p0, p1, p2, p3, c, facing);
+          quad(out.stands, p3, p2, p4, p5, c);
+        }
+      }
+    }
+  }
+  // The batter's eye: a dark, plain backdrop beyond the centre-field wall against which a
+  // batter picks up the pitch out of the pitcher's hand (every major-league park has one).
+  // ESTIMATES of a typical one: 18 m (~60 ft) wide, 12 m (~40 ft) tall, 3 m behind the wall.
+  {
+    const Paint eye{Eigen::Vector3f(0.05f, 0.17f, 0.08f), 0.0f};
+    const double d = fence_distance(home, fence_line, 0.0) + 3.0, half = 9.0, high = 12.0, deep = 1.5;
+    const double x0 = home.x() + d, x1 = x0 + deep, y0 = home.y();
+    const std::array<Vec3, 4> foot{Vec3(x0, y0, home.z() - half), Vec3(x0, y0, home.z() + half), Vec3(x1, y0, home.z() + half),
+                                   Vec3(x1, y0, home.z() - half)};
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Vec3& a = foot[i];
+      const Vec3& e = foot[(i + 1) % 4];
+      const Vec3 n = (e - a).cross(Vec3::UnitY()).normalized();
+      quad(out.stands, a, e, lift(e, high), lift(a, high), eye, n);
+    }
+    quad(out.stands, lift(foot[0], high), lift(foot[1], high), lift(foot[2], high), lift(foot[3], high), eye, Vec3::UnitY());
   }
   return out;
 }

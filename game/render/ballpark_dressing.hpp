@@ -21,6 +21,9 @@ struct BallparkDressing {
   std::vector<MeshData> layers;
   /// The foul poles (lit boxes standing at the fence's ends).
   MeshData poles;
+  /// The stands beyond the outfield wall and along the foul lines, and the batter's eye
+  /// beyond centre field (lit; decoration: the physics' stands are the ground out of bounds).
+  MeshData stands;
 };
 
 /// Distance (m) from `origin` along the horizontal direction `dir` (xz used) to where it

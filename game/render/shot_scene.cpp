@@ -42,6 +42,20 @@ ClubGrip club_grip(const std::string& mesh) {
   if (mesh == "putter_head") return {Vec3(-0.004, 0.015, -0.0375), axis(-0.02, 70.0), 34.0 * 0.0254};
   return {Vec3(-0.008, 0.0144, -0.036), axis(-0.05, 62.0), 37.0 * 0.0254};
 }
+
+// The golfer holding the club at `pose` (its impact pose `impact`: where he stands), facing
+// along `target`, with the shaft and grip the head's mesh lacks.
+void add_golfer(Scene& scene, const std::string& mesh, const ImpactorPlacement& pose, const ImpactorPlacement& impact,
+                Vec3 target, double ground_y) {
+  const ClubGrip c = club_grip(mesh);
+  const Vec3 grip_head = c.hosel + c.length * c.axis;  // the hands, in the head's frame
+  const Vec3 grip0 = impact.position + impact.orientation * grip_head;
+  const Vec3 grip = pose.position + pose.orientation * grip_head;
+  target.y() = 0.0;
+  if (target.norm() < 1e-6) target = Vec3::UnitX();
+  append_golfer(scene.figures, golfer_body(grip, grip0, target.normalized(), ground_y));
+  append_club_shaft(scene.figures, grip, pose.orientation * c.axis, c.length);
+}
 // Far tiles draw coarser (cluster_vertices): a cell of c m at d m spans c/d rad, ~3 px of an
 // 800 px, 45° view at these pairs (1 m from 250 m, 3 m from 750 m). A green, meshed finely for
 // the putts on it, is a few hundred triangles from the next tee instead of thousands.
@@ -105,7 +119,7 @@ struct ShotScene::Impl {
     Eigen::AlignedBox3f box;
   };
   std::vector<Tile> world;
-  std::unique_ptr<GpuMesh> surroundings, ball, tee, flag, impactor, poles;
+  std::unique_ptr<GpuMesh> surroundings, ball, tee, flag, impactor, poles, stands;
   std::vector<std::unique_ptr<GpuMesh>> dressing;  // a ballpark's diamond, lowest layer first
   double impactor_size = 0.0;  // m, the impactor mesh's longest box side
   bool impactor_is_bat = false;
@@ -168,6 +182,7 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
         const BallparkDressing dress = ballpark_dressing(home, input.world->fence_line, input.world->fence_height);
         for (const MeshData& layer : dress.layers) m.dressing.push_back(std::make_unique<GpuMesh>(layer));
         m.poles = std::make_unique<GpuMesh>(dress.poles);
+        if (!dress.stands.indices.empty()) m.stands = std::make_unique<GpuMesh>(dress.stands);
       }
     }
   } else {
@@ -265,6 +280,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   for (std::size_t i = 0; i < m.dressing.size(); ++i)
     scene.meshes.push_back({m.dressing[i].get(), Eigen::Matrix4f::Identity(), false, static_cast<int>(i) + 1});
   if (m.poles) scene.meshes.push_back({m.poles.get(), Eigen::Matrix4f::Identity(), false});
+  if (m.stands) scene.meshes.push_back({m.stands.get(), Eigen::Matrix4f::Identity(), false});
   scene.meshes.push_back({m.surroundings.get(), Eigen::Matrix4f::Identity(), true});
 
   const auto& samples = trajectory_.samples;
@@ -276,7 +292,22 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     // The tee's cup holds the ball's bottom; its peg reaches down into the turf.
     scene.meshes.push_back({m.tee.get(), translate_scale(launch - Vec3(0, m.input.ball_radius, 0), 1.0), false});
   }
-  if (m.flag) scene.meshes.push_back({m.flag.get(), translate_scale(*m.flag_position, 1.0), false});
+  if (m.flag) {
+    // The cloth (+x in its mesh) streams downwind and flutters, the more the stronger the
+    // wind (a flag stands out from ~3 m/s; ESTIMATE of the flutter: ±0.25 rad at 2 Hz in a
+    // breeze, less in a gale that holds it straight); in a calm it hangs as modelled.
+    Eigen::Matrix4f model = translate_scale(*m.flag_position, 1.0);
+    const double speed = std::hypot(wind_.x(), wind_.z());
+    if (speed > 0.3) {
+      const double flutter = 0.25 / (1.0 + 0.1 * speed) * std::sin(2.0 * kPi * 2.0 * std::max(t, 0.0));
+      const double yaw = std::atan2(wind_.z(), wind_.x()) + flutter;  // rad right of +x
+      model.block<3, 3>(0, 0) = Eigen::AngleAxisf(static_cast<float>(-yaw), Eigen::Vector3f::UnitY()).toRotationMatrix();
+    }
+    scene.meshes.push_back({m.flag.get(), model, false});
+  }
+  // The tee box's markers: two blocks of the tee set's colour either side of the tee spot.
+  for (const auto& [at, colour] : m.input.tee_markers)
+    append_limb(scene.figures, at, at + Vec3(0.0, 0.18, 0.0), 0.14, colour);
   // The club or bat at impact, at least impactor_min_px on screen: scaled about the ball's
   // centre at launch (the ball is drawn as big at that moment), so face and ball still touch.
   double strike_scale = 1.0;
@@ -303,18 +334,22 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     // The golfer holding it, where his hands must be: the grip rides with the club through
     // its downswing. Only at true size: a club drawn larger for a far camera has no hands on it.
     if (!m.impactor_is_bat && delivered && strike_scale <= 1.0 + 1e-9) {
-      const ClubGrip c = club_grip(m.input.impactor_mesh);
-      const Vec3 grip_head = c.hosel + c.length * c.axis;  // the hands, in the head's frame
-      const Vec3 grip0 = impactor_->position + impactor_->orientation * grip_head;
-      const Vec3 grip = pose.position + pose.orientation * grip_head;
       const Vec3 v = impactor_->velocity.normalized();
       Vec3 target = trajectory_.summary.rest_position - launch;
       target.y() = 0.0;
       if (target.norm() < 0.5) target = Vec3(v.x(), 0.0, v.z());
-      if (target.norm() < 1e-6) target = Vec3::UnitX();
-      append_golfer(scene.figures, golfer_body(grip, grip0, target.normalized(), ground_at(launch.x(), launch.z())));
-      append_club_shaft(scene.figures, grip, pose.orientation * c.axis, c.length);
+      add_golfer(scene, m.input.impactor_mesh, pose, *impactor_, target, ground_at(launch.x(), launch.z()));
     }
+  }
+  // A ball waiting to be hit: the club behind it at address, in the golfer's hands.
+  if (m.impactor && !impactor_ && address_ && !m.impactor_is_bat) {
+    const ImpactorPlacement& club = *address_;
+    Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
+    model.block<3, 3>(0, 0) = club.orientation.normalized().toRotationMatrix().cast<float>();
+    model.block<3, 1>(0, 3) = club.position.cast<float>();
+    scene.meshes.push_back({m.impactor.get(), model, false});
+    add_golfer(scene, m.input.impactor_mesh, club, club, aim_ ? *aim_ : Vec3(club.orientation * Vec3::UnitX()),
+               ground_at(launch.x(), launch.z()));
   }
   // The ball: true size close up, never smaller than ball_min_radius_px on screen.
   const Vec3 ball = have_shot ? at.position : launch;

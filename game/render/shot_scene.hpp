@@ -39,6 +39,8 @@ struct ShotSceneInput {
   std::string impactor_mesh;
   /// Flag position (m); nothing = the world's pin, if it has one.
   std::optional<Vec3> flag;
+  /// The tee box's markers (m, on the ground) and their colour: the tee set's.
+  std::vector<std::pair<Vec3, Eigen::Vector3f>> tee_markers;
 };
 
 /// Sizes of the screen-constant decorations, in pixels of the output image.
@@ -74,6 +76,11 @@ class ShotScene {
   /// (the world's target line) for a ball that did not move. The golf game sets the
   /// player's aim while the ball waits to be hit.
   void set_aim(const std::optional<Vec3>& aim) { aim_ = aim; }
+  /// The club at address behind a ball that waits to be hit (nothing: none): drawn with the
+  /// golfer holding it, square to the shot. A shot with its own club (set_shot) shows that.
+  void set_address(const std::optional<ImpactorPlacement>& club) { address_ = club; }
+  /// The wind (m/s, world; horizontal): the flag streams downwind and flutters with it.
+  void set_wind(const Vec3& wind) { wind_ = wind; }
   const ShotTrajectory& trajectory() const { return trajectory_; }
   /// What the scene was made of; with trajectory() and impactor(), enough to make it again
   /// elsewhere (a clip rendered off-screen on another thread).
@@ -101,6 +108,8 @@ class ShotScene {
   ShotTrajectory trajectory_;
   std::optional<ImpactorPlacement> impactor_;
   std::optional<Vec3> aim_;
+  std::optional<ImpactorPlacement> address_;
+  Vec3 wind_ = Vec3::Zero();
 };
 
 }  // namespace sweetspot

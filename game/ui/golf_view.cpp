@@ -200,6 +200,28 @@ void GolfView::save_round() {
   }
 }
 
+namespace {
+
+// The tee box's markers: 3 m either side of the tee spot across the line to the hole's first
+// bend or cup, half a metre ahead of it, in the tee set's colour (white for a hole's own tee).
+std::vector<std::pair<Vec3, Eigen::Vector3f>> tee_markers(const CourseHole& h, const std::string& set) {
+  Vec3 ahead = (h.bends.empty() ? h.pin : h.bends.front()) - h.tee;
+  ahead.y() = 0.0;
+  if (ahead.norm() < 1e-6) return {};
+  ahead.normalize();
+  const Vec3 across(-ahead.z(), 0.0, ahead.x());
+  Eigen::Vector3f colour(0.95f, 0.95f, 0.95f);
+  if (set == "blue") colour = {0.15f, 0.30f, 0.85f};
+  else if (set == "red") colour = {0.85f, 0.15f, 0.12f};
+  else if (set == "gold" || set == "yellow") colour = {0.95f, 0.78f, 0.15f};
+  else if (set == "black") colour = {0.08f, 0.08f, 0.08f};
+  else if (set == "green") colour = {0.15f, 0.60f, 0.20f};
+  const Vec3 base = h.tee + 0.5 * ahead;
+  return {{base + 3.0 * across, colour}, {base - 3.0 * across, colour}};
+}
+
+}  // namespace
+
 void GolfView::ensure_scene() {
   const GolfRound& r = play_->round();
   if (r.finished()) return;
@@ -216,6 +238,7 @@ void GolfView::ensure_scene() {
   in.tee = tee;
   in.impactor_mesh = mesh;
   in.flag = r.hole().pin;
+  if (tee) in.tee_markers = tee_markers(r.hole(), play_->group().course().setup.tees);
   scene_ = std::make_unique<ShotScene>(in);
   scene_hole_ = r.hole_index();
   scene_world_ = r.hole().world;
@@ -327,6 +350,17 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     if (scene_) {
       scene_->set_shot(resting(play_->ball_centre()), std::nullopt);
       scene_->set_aim(addressing ? std::optional<Vec3>(play_->aim_direction()) : std::nullopt);
+      // The player at address: his club square behind the ball along his aim.
+      std::optional<ImpactorPlacement> club;
+      if (addressing) {
+        LaunchState along;
+        along.position = play_->ball_centre();
+        along.velocity = play_->aim_direction();
+        club = nominal_impactor(false, along, assets_.equipment().ball("tour").radius, 0.0);
+      }
+      scene_->set_address(club);
+      const HoleWind wind = play_->round().wind();
+      scene_->set_wind(wind.speed * Vec3(std::cos(wind.toward), 0.0, std::sin(wind.toward)));
     }
     flight_shown_ = false;
     const GolfRound& r = play_->round();

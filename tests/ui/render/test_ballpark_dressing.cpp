@@ -66,6 +66,15 @@ TEST_CASE("the ballpark's diamond has the rule book's dimensions", "[render][uni
   }
   CHECK(lo_x == Approx(f.front().x() - 0.2).margin(1e-3));
   CHECK(top > 3.048 + 5.0);
+  // The stands rise from just above the wall behind the outfield, and the batter's eye stands
+  // dark beyond centre field, clear of the field of play.
+  double near_cf = 1e9;
+  for (const Vertex& v : d.stands.vertices) {
+    CHECK(std::hypot(v.position.x(), v.position.z()) >= 60.0 * kFt - 1e-3);  // beyond the foul ground at least
+    if (std::abs(v.position.z()) < 1.0) near_cf = std::min<double>(near_cf, v.position.x());
+  }
+  CHECK(!d.stands.indices.empty());
+  CHECK(near_cf > 400.0 * kFt + 2.0);  // the test fence is 400 ft to centre
   // Everything but the poles lies flat on the field.
   for (const MeshData& layer : d.layers)
     for (const Vertex& v : layer.vertices) CHECK(v.position.y() == 0.0f);

@@ -23,16 +23,8 @@ void ClipRecorder::wait() {
 
 std::string ClipRecorder::start(const ShotScene& scene) {
   if (scene.trajectory().samples.size() < 2) return "";
-  const ShotSceneInput& in = scene.input();
-  RenderRequest r;
-  r.assets = in.assets;
-  r.world = in.world;
-  r.distance_unit = in.distance_unit;
-  r.tee = in.tee;
-  r.ball_radius = in.ball_radius;
-  r.impactor = scene.impactor();
-  r.impactor_mesh = in.impactor_mesh;
-  r.flag = in.flag;
+  RenderRequest r = render_request_of(scene.input());
+  r.impactor = scene.impactor();  // the shot's own club or bat, not the scene's first
   r.width = kClipWidth;
   r.height = kClipHeight;
   if (!r.impactor) r.impactor_mesh.clear();

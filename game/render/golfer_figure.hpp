@@ -30,7 +30,7 @@ GolferBody golfer_body(const Vec3& grip, const Vec3& grip_at_impact, const Vec3&
 void append_golfer(MeshData& out, const GolferBody& body);
 
 /// The club's shaft and grip in his hands: `length` m down `shaft` (unit, from the head
-/// toward the grip) from `grip`; the head's mesh carries only a stub of shaft.
+/// toward the grip) from `grip`; the head's mesh carries only the shaft's first 0.65-0.75 m.
 void append_club_shaft(MeshData& out, const Vec3& grip, const Vec3& shaft, double length);
 
 /// A box of square section `width` m from `a` to `b`, its faces lit flat.

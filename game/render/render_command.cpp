@@ -32,20 +32,8 @@ struct ShotFrames {
   const RenderRequest& request;
 
   ShotFrames(const ShotTrajectory& trajectory, const RenderRequest& r)
-      : context(r.platform), scene(scene_input(r)), renderer(r.width, r.height, renderer_options(r)), request(r) {
+      : context(r.platform), scene(scene_input_of(r)), renderer(r.width, r.height, renderer_options(r)), request(r) {
     scene.set_shot(trajectory, r.impactor);
-  }
-  static ShotSceneInput scene_input(const RenderRequest& r) {
-    ShotSceneInput input;
-    input.assets = r.assets;
-    input.world = r.world;
-    input.distance_unit = r.distance_unit;
-    input.tee = r.tee;
-    input.ball_radius = r.ball_radius;
-    input.impactor = r.impactor;
-    input.impactor_mesh = r.impactor_mesh;
-    input.flag = r.flag;
-    return input;
   }
   static RendererOptions renderer_options(const RenderRequest& r) {
     RendererOptions options;
@@ -61,6 +49,32 @@ struct ShotFrames {
 };
 
 }  // namespace
+
+ShotSceneInput scene_input_of(const RenderRequest& r) {
+  ShotSceneInput input;
+  input.assets = r.assets;
+  input.world = r.world;
+  input.distance_unit = r.distance_unit;
+  input.tee = r.tee;
+  input.ball_radius = r.ball_radius;
+  input.impactor = r.impactor;
+  input.impactor_mesh = r.impactor_mesh;
+  input.flag = r.flag;
+  return input;
+}
+
+RenderRequest render_request_of(const ShotSceneInput& in) {
+  RenderRequest r;
+  r.assets = in.assets;
+  r.world = in.world;
+  r.distance_unit = in.distance_unit;
+  r.tee = in.tee;
+  r.ball_radius = in.ball_radius;
+  r.impactor = in.impactor;
+  r.impactor_mesh = in.impactor_mesh;
+  r.flag = in.flag;
+  return r;
+}
 
 std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, const RenderRequest& request) {
   if (trajectory.samples.empty()) throw InputError("render: the shot has no trajectory samples");

@@ -31,6 +31,11 @@ struct RenderRequest {
   EglPlatform platform = EglPlatform::Auto;
 };
 
+/// The scene a request draws (what it names of the shot, its world and its impactor), and
+/// back: the request that draws a scene's input again (size and camera left at their defaults).
+ShotSceneInput scene_input_of(const RenderRequest& request);
+RenderRequest render_request_of(const ShotSceneInput& input);
+
 /// Renders the shot off-screen and returns RGBA8 pixels, top row first. Throws InputError
 /// for bad request values (size, time outside 0..end, unknown world/mesh/sport),
 /// RenderUnavailable when no GL context can be made, RenderError for shader/mesh failures.

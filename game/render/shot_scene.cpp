@@ -24,12 +24,22 @@ namespace {
 // A course's tiles: 100 m squares, a few dozen over 18 holes' ~1 km, each a handful of draws
 // of its own; small enough that a view down one hole leaves most of them out.
 constexpr float kWorldTile = 100.0f;  // m
+// Far tiles draw coarser (cluster_vertices). A cell of c m at d m spans c/d rad of an 800 px,
+// 45° view (~1000 px a radian): 1.5 m from 200 m is ~8 px, so a green, meshed every 0.5 m for its putts, is a few
+// hundred triangles from the next tee instead of thousands. Beyond 450 m the cells pass the
+// terrain's own 8 m grid (12 m, then 24 m from 900 m): edges between surfaces step by tens of
+// pixels there, under the haze, which is the price of the golf window's 20 ms frame on
+// llvmpipe (docs/performance.md).
+struct FarLevel {
+  float from, cell;  // m
+};
+constexpr std::array<FarLevel, 3> kFarLevels{{{200.0f, 1.5f}, {450.0f, 12.0f}, {900.0f, 24.0f}}};
 
 // Where the golfer holds a club, in its HEAD FRAME: up the shaft from the hosel
 // (scripts/gen_meshes.py: the driver's at (-12, 18, -50) mm with a 58° lie, the iron's at
 // (-8, 14.4, -36) mm and 62°, the putter's at (-4, 15, -37.5) mm and 70°) by the club's
 // length: a driver 45 in, a 7-iron 37 in, a putter 34 in (the common men's lengths; the Rules
-// cap a club at 48 in, putters excepted). The head's mesh carries only a stub of its shaft.
+// cap a club at 48 in, putters excepted). The head's mesh carries only the shaft's lower part.
 struct ClubGrip {
   Vec3 hosel, axis;
   double length;
@@ -56,13 +66,6 @@ void add_golfer(Scene& scene, const std::string& mesh, const ImpactorPlacement& 
   append_golfer(scene.figures, golfer_body(grip, grip0, target.normalized(), ground_y));
   append_club_shaft(scene.figures, grip, pose.orientation * c.axis, c.length);
 }
-// Far tiles draw coarser (cluster_vertices): a cell of c m at d m spans c/d rad, ~3 px of an
-// 800 px, 45° view at these pairs (1 m from 250 m, 3 m from 750 m). A green, meshed finely for
-// the putts on it, is a few hundred triangles from the next tee instead of thousands.
-struct FarLevel {
-  float from, cell;  // m
-};
-constexpr std::array<FarLevel, 3> kFarLevels{{{200.0f, 1.5f}, {450.0f, 12.0f}, {900.0f, 24.0f}}};
 
 constexpr double kYard = 0.9144;  // m
 constexpr double kFoot = 0.3048;  // m
@@ -267,9 +270,9 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     scene.shadow_centre = (close ? focus : b.centre()).cast<float>();
     scene.shadow_radius = static_cast<float>(close ? std::max(8.0, reach) : std::min(span, 300.0));
   }
+  const Eigen::Vector3f eye = camera.eye.cast<float>();
   for (const Impl::Tile& tile : m.world) {
     // The level of detail by the tile's distance: its nearest point to the eye.
-    const Eigen::Vector3f eye = camera.eye.cast<float>();
     const float d = (eye - eye.cwiseMax(tile.box.min()).cwiseMin(tile.box.max())).norm();
     const GpuMesh* mesh = tile.mesh.get();
     for (std::size_t l = 0; l < kFarLevels.size(); ++l)

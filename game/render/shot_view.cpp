@@ -47,16 +47,7 @@ ShotSceneInput scene_input_for(const Assets& assets, const ResolvedShot& s, cons
 }
 
 RenderRequest render_request_for(const Assets& assets, const ResolvedShot& s, const ShotResult& r) {
-  const ShotSceneInput in = scene_input_for(assets, s, r);
-  RenderRequest req;
-  req.assets = in.assets;
-  req.world = in.world;
-  req.distance_unit = in.distance_unit;
-  req.tee = in.tee;
-  req.ball_radius = in.ball_radius;
-  req.impactor = in.impactor;
-  req.impactor_mesh = in.impactor_mesh;
-  return req;
+  return render_request_of(scene_input_for(assets, s, r));
 }
 
 }  // namespace sweetspot

@@ -26,11 +26,12 @@ D
   chmod +x "$out/drive.sh"
   xvfb-run -a -s "-screen 0 1280x800x24" "$out/drive.sh"
 }
-# 1-2 the flyover, 3 the map, 4 in the air, 5 at rest (the result told).
+# 1-2 the flyover, 3 the map, 4 the golfer at address, 5 his follow-through as the ball
+# leaves, 6 in the air, 7 at rest (the result told).
 drive "--mode golf --holes 1" '
 xdotool key F12; sleep 2.0; xdotool key F12; sleep 4.5
-xdotool key m; sleep 0.5; xdotool key F12; xdotool key m; sleep 0.3
-xdotool key space; sleep 0.85; xdotool key space; sleep 0.55; xdotool key space; sleep 1.2
+xdotool key m; sleep 0.5; xdotool key F12; xdotool key m; sleep 0.3; xdotool key F12
+xdotool key space; sleep 0.85; xdotool key space; sleep 0.55; xdotool key space; sleep 0.15; xdotool key F12; sleep 1.05
 xdotool key F12; xdotool key Return; sleep 0.6; xdotool key F12'
 # 6.. alone: the caddie plays to the green; each turn a shot, then the putt preview mid-stroke.
 drive "--mode golf --holes 1 --no-flyover --bot none" '

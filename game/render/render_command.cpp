@@ -60,6 +60,9 @@ ShotSceneInput scene_input_of(const RenderRequest& r) {
   input.impactor = r.impactor;
   input.impactor_mesh = r.impactor_mesh;
   input.flag = r.flag;
+  input.tee_markers = r.tee_markers;
+  input.wind = r.wind;
+  input.people = r.people;
   return input;
 }
 
@@ -73,6 +76,9 @@ RenderRequest render_request_of(const ShotSceneInput& in) {
   r.impactor = in.impactor;
   r.impactor_mesh = in.impactor_mesh;
   r.flag = in.flag;
+  r.tee_markers = in.tee_markers;
+  r.wind = in.wind;
+  r.people = in.people;
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "game/render/camera.hpp"
@@ -23,6 +24,9 @@ struct RenderRequest {
   std::optional<ImpactorPlacement> impactor;  ///< club/bat mesh frame -> world at impact
   std::string impactor_mesh;        ///< "driver_head", "iron_head", "putter_head", "bat", a path, or ""
   std::optional<Vec3> flag;         ///< m; see ShotSceneInput::flag
+  std::vector<std::pair<Vec3, Eigen::Vector3f>> tee_markers;  ///< see ShotSceneInput::tee_markers
+  Vec3 wind = Vec3::Zero();         ///< m/s; see ShotSceneInput::wind
+  PeopleFn people;                  ///< see ShotSceneInput::people
   int width = 1280, height = 720;   ///< px, 16..8192
   CameraKind camera = CameraKind::Behind;
   std::optional<double> at_seconds; ///< s since launch, 0..end; nothing = the shot's end

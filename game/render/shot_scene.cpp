@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "game/render/ballpark_dressing.hpp"
@@ -66,6 +67,11 @@ void add_golfer(Scene& scene, const std::string& mesh, const ImpactorPlacement& 
   append_golfer(scene.figures, golfer_body(grip, grip0, target.normalized(), ground_y));
   append_club_shaft(scene.figures, grip, pose.orientation * c.axis, c.length);
 }
+
+// A golfer ~1.8 m tall reads as a person, swing and all, from ~150 px (ESTIMATE): closer
+// than that the club is drawn at true size in his hands, farther a magnified club shows the
+// strike instead.
+constexpr double kGolferHeight = 1.8, kGolferReadsPx = 150.0;
 
 constexpr double kYard = 0.9144;  // m
 constexpr double kFoot = 0.3048;  // m
@@ -133,6 +139,8 @@ struct ShotScene::Impl {
 };
 
 const ShotSceneInput& ShotScene::input() const { return impl_->input; }
+void ShotScene::set_wind(const Vec3& wind) { impl_->input.wind = wind; }
+void ShotScene::set_people(PeopleFn people) { impl_->input.people = std::move(people); }
 
 ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
@@ -300,10 +308,11 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     // wind (a flag stands out from ~3 m/s; ESTIMATE of the flutter: ±0.25 rad at 2 Hz in a
     // breeze, less in a gale that holds it straight); in a calm it hangs as modelled.
     Eigen::Matrix4f model = translate_scale(*m.flag_position, 1.0);
-    const double speed = std::hypot(wind_.x(), wind_.z());
+    const Vec3& wind = m.input.wind;
+    const double speed = std::hypot(wind.x(), wind.z());
     if (speed > 0.3) {
       const double flutter = 0.25 / (1.0 + 0.1 * speed) * std::sin(2.0 * kPi * 2.0 * std::max(t, 0.0));
-      const double yaw = std::atan2(wind_.z(), wind_.x()) + flutter;  // rad right of +x
+      const double yaw = std::atan2(wind.z(), wind.x()) + flutter;  // rad right of +x
       model.block<3, 3>(0, 0) = Eigen::AngleAxisf(static_cast<float>(-yaw), Eigen::Vector3f::UnitY()).toRotationMatrix();
     }
     scene.meshes.push_back({m.flag.get(), model, false});
@@ -311,19 +320,25 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   // The tee box's markers: two blocks of the tee set's colour either side of the tee spot.
   for (const auto& [at, colour] : m.input.tee_markers)
     append_limb(scene.figures, at, at + Vec3(0.0, 0.18, 0.0), 0.14, colour);
+  if (m.input.people) m.input.people(PeopleFrame{t, &camera, height}, scene.figures);
   // The club or bat at impact, at least impactor_min_px on screen: scaled about the ball's
   // centre at launch (the ball is drawn as big at that moment), so face and ball still touch.
   double strike_scale = 1.0;
   // The delivery is known (a solved impact, not launch numbers drawn in a nominal pose):
   // exactly when there is a downswing to show.
   const bool delivered = pre_roll() > 0.0;
+  // A golfer who stands kGolferReadsPx tall or more is drawn, with his club at true size: the
+  // view is close enough to watch the swing, not only the strike.
+  const bool golfer_reads = delivered && !m.impactor_is_bat && kGolferHeight > px(launch, kGolferReadsPx);
   if (m.impactor && impactor_) {
-    if (m.impactor_size > 0.0)
+    if (m.impactor_size > 0.0 && !golfer_reads)
       strike_scale = std::max({1.0, px(launch, m.style.impactor_min_px) / m.impactor_size,
                                px(launch, m.style.ball_min_radius_px) / m.input.ball_radius});
-    // Before launch (the replay's pre-roll, t < 0) it is on its downswing (swing_pose.hpp).
+    // Before launch (the replay's pre-roll, t < 0) it is on its downswing, after it on its
+    // follow-through (swing_pose.hpp). A club drawn larger for a far camera stays at impact:
+    // there it shows the strike, and a magnified club sweeping round would hide the view.
     ImpactorPlacement pose = *impactor_;
-    if (t < 0.0 && delivered) {
+    if (delivered && (t < 0.0 || strike_scale <= 1.0 + 1e-9)) {
       const Vec3 v = impactor_->velocity.normalized();
       const Vec3 contact = launch - m.input.ball_radius * v;
       const Vec3 shaft = m.impactor_is_bat ? Vec3(-(impactor_->orientation * Vec3::UnitX()))
@@ -335,7 +350,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     model.block<3, 1>(0, 3) = (launch + strike_scale * (pose.position - launch)).cast<float>();
     scene.meshes.push_back({m.impactor.get(), model, false});
     // The golfer holding it, where his hands must be: the grip rides with the club through
-    // its downswing. Only at true size: a club drawn larger for a far camera has no hands on it.
+    // its downswing and follow-through. Only at true size: a club drawn larger for a far camera has no hands on it.
     if (!m.impactor_is_bat && delivered && strike_scale <= 1.0 + 1e-9) {
       const Vec3 v = impactor_->velocity.normalized();
       Vec3 target = trajectory_.summary.rest_position - launch;

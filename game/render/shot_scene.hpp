@@ -4,6 +4,7 @@
 // at impact. Owns the GPU meshes it loads, so it needs a current GL context.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,6 +28,18 @@ struct ImpactorPlacement {
   Vec3 velocity = Vec3::Zero();
 };
 
+/// The moment and the view a scene's people are drawn for: the scene's clock (s; what
+/// build() was given) and its camera, so a figure far away can keep a few pixels of width.
+struct PeopleFrame {
+  double t = 0.0;
+  const Camera* camera = nullptr;
+  int height = 0;  ///< px of the image
+};
+/// Appends the people on the field at a moment, as lit boxes (golfer_figure.hpp's
+/// append_limb), to `out`. Copied with the scene's input onto a clip's own thread: it must
+/// hold what it draws by value.
+using PeopleFn = std::function<void(const PeopleFrame& frame, MeshData& out)>;
+
 struct ShotSceneInput {
   const Assets* assets = nullptr;       ///< required: where the meshes are
   const WorldAsset* world = nullptr;    ///< the world drawn and asked for heights; nullptr = a grass plane
@@ -41,6 +54,11 @@ struct ShotSceneInput {
   std::optional<Vec3> flag;
   /// The tee box's markers (m, on the ground) and their colour: the tee set's.
   std::vector<std::pair<Vec3, Eigen::Vector3f>> tee_markers;
+  /// m/s, world, horizontal: the flag streams downwind and flutters with it.
+  Vec3 wind = Vec3::Zero();
+  /// The players the mode puts on the field (a batting cage's pitcher, batter and
+  /// fielders); empty = none. The golfer comes with his club (set_shot, set_address).
+  PeopleFn people;
 };
 
 /// Sizes of the screen-constant decorations, in pixels of the output image.
@@ -79,8 +97,9 @@ class ShotScene {
   /// The club at address behind a ball that waits to be hit (nothing: none): drawn with the
   /// golfer holding it, square to the shot. A shot with its own club (set_shot) shows that.
   void set_address(const std::optional<ImpactorPlacement>& club) { address_ = club; }
-  /// The wind (m/s, world; horizontal): the flag streams downwind and flutters with it.
-  void set_wind(const Vec3& wind) { wind_ = wind; }
+  /// ShotSceneInput::wind and ::people, as play goes on.
+  void set_wind(const Vec3& wind);
+  void set_people(PeopleFn people);
   const ShotTrajectory& trajectory() const { return trajectory_; }
   /// What the scene was made of; with trajectory() and impactor(), enough to make it again
   /// elsewhere (a clip rendered off-screen on another thread).
@@ -109,7 +128,6 @@ class ShotScene {
   std::optional<ImpactorPlacement> impactor_;
   std::optional<Vec3> aim_;
   std::optional<ImpactorPlacement> address_;
-  Vec3 wind_ = Vec3::Zero();
 };
 
 }  // namespace sweetspot

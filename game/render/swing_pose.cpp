@@ -18,7 +18,7 @@ Vec3 head_frame_shaft_axis() {
 ImpactorPlacement swing_pose(const ImpactorPlacement& impact, const Vec3& contact, const Vec3& shaft, double t,
                              const SwingShape& shape) {
   const double speed = impact.velocity.norm();
-  if (speed < 1e-6 || t >= 0.0 || shape.radius <= 0.0 || shape.downswing <= 0.0) return impact;
+  if (speed < 1e-6 || t == 0.0 || shape.radius <= 0.0 || shape.downswing <= 0.0) return impact;
   const Vec3 v = impact.velocity / speed;
   // The swing plane holds the velocity and the shaft. The pivot lies in it at `radius` from
   // the contact, square to the velocity (the shaft's part across it), so the arc's tangent
@@ -30,10 +30,19 @@ ImpactorPlacement swing_pose(const ImpactorPlacement& impact, const Vec3& contac
   const Vec3 k = v.cross(s_perp);
   const Vec3 pivot = contact + shape.radius * s_perp;
   const double omega = speed / shape.radius;
-  // Angular speed growing linearly from 0 at -T to omega at 0:
-  // theta(t) = omega ((t + T)^2 / (2T) - T / 2), theta(0) = 0, theta'(0) = omega.
-  const double T = shape.downswing, u = std::max(t, -T) + T;
-  const double theta = omega * (u * u / (2.0 * T) - T / 2.0);
+  double theta = 0.0;
+  if (t < 0.0) {
+    // Angular speed growing linearly from 0 at -T to omega at 0:
+    // theta(t) = omega ((t + T)^2 / (2T) - T / 2), theta(0) = 0, theta'(0) = omega.
+    const double T = shape.downswing, u = std::max(t, -T) + T;
+    theta = omega * (u * u / (2.0 * T) - T / 2.0);
+  } else {
+    // Slowing evenly from omega to rest at the finish F, reached at t_f = 2F / omega:
+    // theta(t) = omega t - omega^2 t^2 / (4F), theta'(0) = omega, theta(t_f) = F.
+    const double F = std::max(shape.finish, 0.0);
+    const double tf = 2.0 * F / omega, u = std::min(t, tf);
+    theta = F > 0.0 ? omega * u - omega * omega * u * u / (4.0 * F) : 0.0;
+  }
   const Quat turn(Eigen::AngleAxisd(theta, k));
   ImpactorPlacement out = impact;
   out.position = pivot + turn * (impact.position - pivot);

@@ -17,18 +17,23 @@ namespace sweetspot {
 /// lead arm plus its 45 in shaft is ~1.7 m, an iron's less; a bat's sweet spot is ~0.7 m
 /// from the knob plus the arms) and the downswing's duration (tour golfers ~0.25 s, the
 /// "3:1" tempo of a 0.75 s backswing; a major-league swing ~0.15 s from launch to contact).
+/// After impact the impactor turns on round the same arc, slowing evenly to rest at the
+/// finish: `finish` rad past impact (ESTIMATE: ~170°, a golfer's club ends over his lead
+/// shoulder and a batter's bat wraps round behind him).
 struct SwingShape {
   double radius = 1.5;     ///< m, contact to pivot
   double downswing = 0.25; ///< s, from rest at the top to impact
+  double finish = 3.0;     ///< rad turned after impact, to rest
 };
-inline constexpr SwingShape kClubSwing{1.5, 0.25};
-inline constexpr SwingShape kBatSwing{1.2, 0.15};
+inline constexpr SwingShape kClubSwing{1.5, 0.25, 3.0};
+inline constexpr SwingShape kBatSwing{1.2, 0.15, 3.0};
 
-/// The impactor at time t (s, t <= 0; impact at 0) given its pose and velocity at impact.
+/// The impactor at time t (s; impact at 0) given its pose and velocity at impact.
 /// `contact` is the point of the impactor touching the ball (m); `shaft` the unit direction
-/// from the contact toward the grip or knob. At t = 0 it is `impact`; just before, it moves
-/// at impact.velocity; before -shape.downswing it rests at the top of the swing. An impact
-/// without a velocity is returned unchanged.
+/// from the contact toward the grip or knob. At t = 0 it is `impact`; around it, it moves
+/// at impact.velocity; before -shape.downswing it rests at the top of the swing, and after
+/// 2 finish / ω (ω = speed / radius) at the finish. An impact without a velocity is
+/// returned unchanged.
 ImpactorPlacement swing_pose(const ImpactorPlacement& impact, const Vec3& contact, const Vec3& shaft, double t,
                              const SwingShape& shape);
 

@@ -8,10 +8,10 @@
 #include <cmath>
 #include <optional>
 
-#include "game/modes/baseball/figures.hpp"
 #include "game/modes/replay.hpp"
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
+#include "game/ui/cage_people.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -31,9 +31,12 @@ namespace {
 
 using Stage = BattingCage::Stage;
 
-Camera batter_view() {
+// From behind the plate a little to the side away from the batter, so he stands at the
+// left (right for a left-hander) of the view and the pitcher's release is clear of him.
+Camera batter_view(bool batter_left) {
+  const double away = batter_left ? -1.0 : 1.0;  // +z is away from a right-handed batter
   Camera c;
-  c.eye = Vec3(-3.2, 1.6, -0.45);  // behind a right-handed batter, over his shoulder
+  c.eye = Vec3(-3.2, 1.6, 0.25 * away);
   c.target = Vec3(10.0, 1.0, 0.0);
   c.fov_y = deg_to_rad(36.0);
   return c;
@@ -52,67 +55,6 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
   // The bat's height: where the swing will meet the ball.
   const auto l = pt(c.bat_height(), -half - 0.25), r = pt(c.bat_height(), half + 0.25);
   if (l && r) dl->AddLine(*l, *r, c.power() ? IM_COL32(255, 170, 40, 230) : IM_COL32(80, 200, 255, 230), 3.0f);
-}
-
-// A stick figure projected through the camera: bones as lines, the head a disc.
-void draw_figure(const Figure& f, const Camera& cam, int w, int h, ImU32 colour, ImU32 bat_colour) {
-  ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  std::array<std::optional<ImVec2>, kJointCount> at;
-  for (int j = 0; j < kJointCount; ++j) {
-    if (!f.has_bat && (j == kBatKnob || j == kBatTip)) continue;
-    if (const auto p = cam.project(f.joint[static_cast<std::size_t>(j)], w, h))
-      at[static_cast<std::size_t>(j)] = ImVec2(static_cast<float>((*p)(0)), static_cast<float>((*p)(1)));
-  }
-  const auto head = at[kHead];
-  const auto crown = cam.project(f.joint[kHead] + Vec3(0.0, 0.12, 0.0), w, h);
-  if (!head || !crown) return;  // behind the camera
-  const float size = std::abs(static_cast<float>((*crown)(1)) - head->y);  // ~12 cm on screen
-  const float thick = std::clamp(size * 0.55f, 1.5f, 7.0f);
-  for (const auto& [a, b] : figure_bones()) {
-    const auto& pa = at[static_cast<std::size_t>(a)];
-    const auto& pb = at[static_cast<std::size_t>(b)];
-    if (!pa || !pb) continue;
-    const bool bat = a == kBatKnob;
-    dl->AddLine(*pa, *pb, bat ? bat_colour : colour, bat ? thick * 0.8f : thick);
-  }
-  dl->AddCircleFilled(*head, std::clamp(size, 2.0f, 18.0f), colour);
-}
-
-// The pitcher, the batter and the nine fielders: the pitcher's delivery on the pitch clock,
-// the batter's stride and swing, the fielders' runs after contact.
-void draw_players(const BattingCage& c, const Camera& cam, int w, int h, double now, bool batted) {
-  const ImU32 fielding = IM_COL32(40, 70, 200, 255), batting = IM_COL32(235, 235, 235, 255);
-  const ImU32 faint_batting = IM_COL32(235, 235, 235, 90);
-  const ImU32 wood = IM_COL32(190, 140, 80, 255), faint_wood = IM_COL32(190, 140, 80, 120);
-  const bool pitching = c.stage() == Stage::Pitching;
-  const bool any_pitch = c.stage() != Stage::Ready || !c.swings().empty();
-  // The pitcher: set before a pitch, his delivery during it, the follow-through after.
-  const PitchType& type = c.call().type;
-  const Vec3 release = any_pitch ? c.pitch().release
-                                 : Vec3(kRubberToPlate - type.extension, type.release_height, type.release_side);
-  const double pt = c.stage() == Stage::Ready ? -kWindupTime : pitching ? c.pitch_clock(now) : std::min(c.pitch_clock(now), 0.6);
-  draw_figure(pitcher_figure(release, pt, c.call().left_handed), cam, w, h, fielding, wood);
-  // The other eight where they stand, or running to the ball once it is hit.
-  const FieldingPlay& play = c.last().result.play;
-  const bool in_play = batted && c.last().result.contact;
-  const double since = now - c.batted_at();
-  static const Defense league = league_defense();
-  const std::array<Vec3, 9> spots = fielder_spots(c.left_handed());
-  for (std::size_t i = 1; i < 9; ++i) {
-    const bool catcher = i == 1;
-    if (catcher && !batted) continue;  // from the batter's eye he is crouched below the view
-    const Vec3 start = in_play ? play.start[i] : spots[i];
-    const Vec3 goal = in_play ? play.goal[i] : spots[i];
-    draw_figure(fielder_figure(start, goal, league.ability[i], in_play ? since : 0.0, catcher), cam, w, h, fielding, wood);
-  }
-  // The batter: his stride as the pitch comes, the swing at his key press, the follow-through.
-  double phase = 0.0;
-  if (pitching) phase = 0.6 * std::clamp(c.pitch_clock(now) / std::max(c.pitch().flight_time, 1e-6), 0.0, 1.0);
-  // He holds his follow-through until the next pitch.
-  if (c.stage() != Stage::Ready && c.swung_at() <= now && c.pitch_clock(c.swung_at()) >= 0.0)
-    phase = 1.0 + 0.6 * std::clamp((now - c.swung_at()) * BattingCage::kPitchTimeScale / 0.25, 0.0, 1.0);
-  draw_figure(batter_figure(phase, c.bat_height(), c.left_handed()), cam, w, h, batted ? batting : faint_batting,
-              batted ? wood : faint_wood);
 }
 
 void draw_stats(const BattingCage& c, int w, int h) {
@@ -226,7 +168,7 @@ class CageView final : public ModeView {
       ImpactSoundInput crack;
       crack.contact_time = c.last().result.contact_time;
       crack.normal_impulse = c.last().result.normal_impulse;
-      crack.ring = ring_for("maple", "baseball");  // the cage's bat (cage.cpp)
+      crack.ring = ring_for(BattingCage::kBat, "baseball");
       sound_strike(crack);
     }
     const int w = in.width, h = in.height;
@@ -234,13 +176,16 @@ class CageView final : public ModeView {
       fit_renderer(renderer, w, h, in.render_scale);
       const bool batted = c.stage() == Stage::Batted || (c.stage() == Stage::Called && c.last().result.contact);
       const double flight_end = duration(c.last().result.shot.trajectory);
+      // The ball holds at the plate, or where the batted ball stopped, while the people go on
+      // (their clock: cage_people).
       const double t = c.stage() == Stage::Pitching ? std::min(c.pitch_clock(in.now), c.pitch().flight_time)
                        : batted ? (c.stage() == Stage::Batted ? std::clamp(in.now - c.batted_at(), 0.0, flight_end) : flight_end)
                                 : c.pitch().flight_time;
-      const Camera cam = batted ? scene_->camera(CameraKind::Behind, t, w, h) : batter_view();
-      renderer.draw(scene_->build(cam, t, w, h), cam);
+      const Camera cam = batted ? scene_->camera(CameraKind::Behind, t, w, h) : batter_view(c.left_handed());
+      scene_->set_people(cage_people(c, in.now));
+      const bool moving = c.stage() == Stage::Pitching || batted;
+      renderer.draw(scene_->build(cam, moving ? cage_scene_time(c, in.now) : t, w, h), cam);
       renderer.blit_to(0, w, h);
-      draw_players(c, cam, w, h, in.now, batted);
       if (!batted) draw_zone(c, cam, w, h);
     }
     draw_stats(c, w, h);

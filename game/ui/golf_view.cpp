@@ -99,6 +99,10 @@ class GolfView final : public ModeView {
   std::ostream& out_;
   GolfUnits units_;
   int camera_ = 1;                 // 1 player, 2 high, 3 map (M), 4 green
+  std::optional<Camera> address_view_;  // the last view at address, held as a stroke starts
+  // s the player's camera holds after the strike (the follow-through, the ball leaving), then
+  // s it takes to reach the ball's follow camera.
+  static constexpr double kHoldAddress = 0.6, kLeaveAddress = 0.6;
   int camera_before_map_ = 1;
   std::unique_ptr<ShotScene> scene_;
   std::size_t scene_hole_ = 99;
@@ -275,13 +279,21 @@ Camera GolfView::address_camera() const {
   const Vec3 b = play_->ball_centre();
   const bool putt = r.lie() == "green";
   const Vec3 d = play_->aim_direction();
-  // Behind the ball looking down the aim line: low and close for a putt, higher and
-  // farther back for a full shot so the target area sits in the upper half of the view.
-  const double reach = std::min(r.to_pin(), 220.0);
-  c.eye = b - (putt ? 2.6 : 14.0) * d + Vec3(0.0, putt ? 1.5 : 5.0, 0.0);
-  c.target = b + (putt ? std::min(r.to_pin(), 12.0) + 0.5 : 0.8 * reach) * d;
-  c.target.y() = b.y() + (putt ? -0.3 : -2.0);
-  c.fov_y = deg_to_rad(putt ? 50.0 : 26.0);
+  // Behind the ball looking down the aim line: low and close for a putt; for a full shot
+  // behind the golfer, 9 m back and 2.6 m up, looking 5° down: his feet are in the view's
+  // lower edge (16° down of its 20°) and the target area, a degree or two below the
+  // horizon, in its upper half.
+  if (putt) {
+    c.eye = b - 2.6 * d + Vec3(0.0, 1.5, 0.0);
+    c.target = b + (std::min(r.to_pin(), 12.0) + 0.5) * d;
+    c.target.y() = b.y() - 0.3;
+    c.fov_y = deg_to_rad(50.0);
+    return c;
+  }
+  const double down = deg_to_rad(5.0);
+  c.eye = b - 9.0 * d + Vec3(0.0, 2.6, 0.0);
+  c.target = c.eye + 50.0 * (std::cos(down) * d - std::sin(down) * Vec3::UnitY());
+  c.fov_y = deg_to_rad(30.0);
   return c;
 }
 
@@ -394,8 +406,13 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
             : camera_ == 2 ? scene_->camera(CameraKind::Behind, t, w, h)
             : camera_ == 4 ? green_camera(false)
                            : scene_->camera(CameraKind::Follow, t, w, h);
+      // The player's camera stays behind the golfer while he swings through and the ball
+      // leaves, then goes after the ball.
+      if (camera_ == 1 && flying && address_view_)
+        cam = blend_cameras(*address_view_, cam, ease_in_out(std::clamp((t - kHoldAddress) / kLeaveAddress, 0.0, 1.0)));
     } else if (addressing) {
       cam = camera_ == 2 ? high_camera() : camera_ == 3 ? map_camera() : camera_ == 4 ? green_camera(true) : address_camera();
+      address_view_ = cam;
     } else {
       cam = green_camera(false);
     }

@@ -114,7 +114,7 @@ void BattingCage::swing(const SwingInput& s, double t) {
   last_.pitch = pitch_;
   last_.timing_ms = s.timing_ms;
   last_.undercut = s.undercut;
-  last_.result = swing_at(assets_, pitch_, s, batter_skill("pro").bat_speed);
+  last_.result = swing_at(assets_, pitch_, s, batter_skill("pro").bat_speed, kBat);
   last_.call_text = to_string(last_.result.outcome);
   swings_.push_back(last_);
   char text[160];

@@ -1,7 +1,10 @@
-// The pre-roll's downswing (game/render/swing_pose.hpp): it ends exactly at the impact pose,
+// The replay's swing (game/render/swing_pose.hpp): the downswing ends exactly at the impact pose,
 // arrives with the delivered velocity (path, attack angle, speed), is still at the top, and
-// turns rigidly (the face keeps its relation to the path).
+// turns rigidly (the face keeps its relation to the path); after impact it follows through to rest.
 #include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
 
 #include "game/render/swing_pose.hpp"
 
@@ -47,4 +50,32 @@ TEST_CASE("the downswing arrives at the impact pose with the delivered velocity"
   ImpactorPlacement still = impact;
   still.velocity = Vec3::Zero();
   CHECK((swing_pose(still, contact, shaft, -0.1, kClubSwing).position - still.position).norm() == 0.0);
+}
+
+TEST_CASE("after impact the club follows through on the same arc and comes to rest at the finish", "[render][unit]") {
+  const ImpactorPlacement impact = driver_impact();
+  const Vec3 contact = Vec3(0, 0.0214, 0) - 0.0214 * impact.velocity.normalized();
+  const Vec3 shaft = impact.orientation * head_frame_shaft_axis();
+  const Vec3 vhat = impact.velocity.normalized();
+  const Vec3 pivot = contact + kClubSwing.radius * (shaft - shaft.dot(vhat) * vhat).normalized();
+  // Just after impact it still moves at the delivered velocity (the same point, differenced).
+  const double dt = 1e-4;
+  const ImpactorPlacement after = swing_pose(impact, contact, shaft, dt, kClubSwing);
+  const Vec3 contact_after = after.position + after.orientation * (impact.orientation.conjugate() * (contact - impact.position));
+  CHECK(((contact_after - contact) / dt - impact.velocity).norm() < 0.01 * impact.velocity.norm());
+  // It stops at the finish, 2F/omega after impact, turned F about the pivot, and stays there.
+  const double omega = impact.velocity.norm() / kClubSwing.radius;
+  const double tf = 2.0 * kClubSwing.finish / omega;
+  const ImpactorPlacement finish = swing_pose(impact, contact, shaft, tf, kClubSwing);
+  const ImpactorPlacement later = swing_pose(impact, contact, shaft, tf + 2.0, kClubSwing);
+  CHECK((finish.position - later.position).norm() < 1e-12);
+  CHECK((finish.position - pivot).norm() == Approx((impact.position - pivot).norm()).epsilon(1e-9));
+  const Vec3 a = (impact.position - pivot).normalized(), b = (finish.position - pivot).normalized();
+  CHECK(std::acos(std::clamp(a.dot(b), -1.0, 1.0)) == Approx(kClubSwing.finish).margin(1e-6));
+  // A finish is high: the head ends up above the ball, toward the target side of the pivot.
+  CHECK(finish.position.y() > impact.position.y() + 1.0);
+  // Halfway through the follow-through it has gone more than half the way (it slows down).
+  const ImpactorPlacement mid = swing_pose(impact, contact, shaft, 0.5 * tf, kClubSwing);
+  const Vec3 m = (mid.position - pivot).normalized();
+  CHECK(std::acos(std::clamp(a.dot(m), -1.0, 1.0)) > 0.7 * kClubSwing.finish);
 }

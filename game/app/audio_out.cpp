@@ -54,11 +54,8 @@ AudioOut::AudioOut(bool enabled) {
 
 AudioOut::~AudioOut() {
   if (!context_) return;
-  for (const Voice& v : voices_) {
-    alSourceStop(v.source);
-    alDeleteSources(1, &v.source);
-    alDeleteBuffers(1, &v.buffer);
-  }
+  for (const Voice& v : voices_) free_voice(v);
+  if (ambience_.source != 0) free_voice(ambience_);
   alcMakeContextCurrent(nullptr);
   alcDestroyContext(static_cast<ALCcontext*>(context_));
   alcCloseDevice(static_cast<ALCdevice*>(device_));
@@ -76,32 +73,53 @@ void AudioOut::collect() {
   });
 }
 
-void AudioOut::play(const std::vector<float>& samples, int rate) {
-  if (!context_ || samples.empty() || rate <= 0) return;
-  collect();
-  if (voices_.size() >= kMaxVoices) {
-    alSourceStop(voices_.front().source);
-    alDeleteSources(1, &voices_.front().source);
-    alDeleteBuffers(1, &voices_.front().buffer);
-    voices_.erase(voices_.begin());
-  }
+void AudioOut::free_voice(const Voice& v) {
+  alSourceStop(v.source);
+  alDeleteSources(1, &v.source);
+  alDeleteBuffers(1, &v.buffer);
+}
+
+bool AudioOut::make_voice(const std::vector<float>& samples, int rate, Voice& v) {
   std::vector<std::int16_t> pcm(samples.size());
   std::transform(samples.begin(), samples.end(), pcm.begin(), [](float x) {
     return static_cast<std::int16_t>(std::lround(std::clamp(static_cast<double>(x), -1.0, 1.0) * 32767.0));
   });
-  Voice v;
   alGetError();
   alGenBuffers(1, &v.buffer);
   alBufferData(v.buffer, AL_FORMAT_MONO16, pcm.data(), static_cast<ALsizei>(pcm.size() * sizeof(std::int16_t)), rate);
   alGenSources(1, &v.source);
   alSourcei(v.source, AL_BUFFER, static_cast<ALint>(v.buffer));
-  if (alGetError() != AL_NO_ERROR) {  // out of sources or memory: this strike stays silent
+  if (alGetError() != AL_NO_ERROR) {  // out of sources or memory: this sound stays silent
     alDeleteSources(1, &v.source);
     alDeleteBuffers(1, &v.buffer);
-    return;
+    return false;
   }
+  return true;
+}
+
+void AudioOut::play(const std::vector<float>& samples, int rate) {
+  if (!context_ || samples.empty() || rate <= 0) return;
+  collect();
+  if (voices_.size() >= kMaxVoices) {
+    free_voice(voices_.front());
+    voices_.erase(voices_.begin());
+  }
+  Voice v;
+  if (!make_voice(samples, rate, v)) return;
   alSourcePlay(v.source);
   voices_.push_back(v);
+}
+
+void AudioOut::loop(const std::vector<float>& samples, int rate) {
+  if (!context_) return;
+  if (ambience_.source != 0) free_voice(ambience_);
+  ambience_ = Voice{};
+  if (samples.empty() || rate <= 0) return;
+  Voice v;
+  if (!make_voice(samples, rate, v)) return;
+  alSourcei(v.source, AL_LOOPING, AL_TRUE);
+  alSourcePlay(v.source);
+  ambience_ = v;
 }
 
 }  // namespace sweetspot

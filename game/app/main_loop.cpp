@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -50,6 +51,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
   LoopStats stats;
   std::vector<Slot> slots(modes.size());
   AudioOut audio(!o.mute);
+  std::optional<ModeView::AmbienceSpec> ambience;  // what the ambience loop plays
   ClipRecorder clips(o.shots_dir);
   ResolutionScaler resolution;
   std::size_t active = first;
@@ -136,6 +138,17 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
     view.frame(vi, renderer);
     for (const ImpactSoundInput& s : view.take_sounds())
       if (audio.active()) audio.play(synthesize_impact(s), kImpactSampleRate);
+    for (const std::vector<float>& c : view.take_clips())
+      if (audio.active()) audio.play(c, kImpactSampleRate);
+    if (audio.active()) {
+      // The mode's ambience, made anew when it changes (the wind to the nearest m/s).
+      ModeView::AmbienceSpec a = view.ambience();
+      a.wind_speed = std::round(a.wind_speed);
+      if (!ambience || !(*ambience == a)) {
+        audio.loop(synthesize_ambience(a.kind, a.wind_speed), kImpactSampleRate);
+        ambience = a;
+      }
+    }
     audio.collect();
     if (paused && choice == MenuChoice::None) choice = draw_pause_menu(view, vi.width, vi.height);
     win.render_ui();

@@ -150,6 +150,7 @@ class CageView final : public ModeView {
     scene_ = std::make_unique<ShotScene>(in);
   }
   const char* title() const override { return "Batting cage"; }
+  AmbienceSpec ambience() const override { return {Ambience::Ballpark, 0.0}; }
   const char* restart_label() const override { return "Restart session"; }
   void send(const Intent& in) override { cage_->update({in}, in.time); }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 30; }

@@ -69,6 +69,7 @@ class GolfView final : public ModeView {
   }
 
   const char* title() const override { return "Golf"; }
+  AmbienceSpec ambience() const override { return {Ambience::Course, play_->round().wind().speed}; }
   const char* restart_label() const override { return "Restart hole"; }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 10; }
   void send(const Intent& in) override { play_->update({in}, in.time); }
@@ -111,6 +112,7 @@ class GolfView final : public ModeView {
   bool scene_tee_ = false;
   bool scene_imperial_ = true;
   bool flight_shown_ = false;      // the scene holds the last stroke's flight
+  bool rattle_due_ = false;        // the stroke shown was holed: its rattle plays as it drops
   double flight_struck_ = -1.0;    // which flight
   std::size_t slopes_for_ = 99;
   Vec3 slopes_ball_ = Vec3::Zero();
@@ -389,12 +391,18 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     if (!flight_shown_) {
       scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
       sound_strike(play_->last_shot());
+      rattle_due_ = play_->last_shot().end == ShotEnd::Holed;
       flight_shown_ = true;
       flight_struck_ = play_->struck_at();
     }
   }
   const double end = duration(play_->last_shot().trajectory);
   const double t = flying ? std::clamp(in.now - play_->struck_at(), 0.0, end) : (over || settling) ? end : 0.0;
+  // The holed ball drops into the cup as its flight ends: the rattle, at the speed it came in.
+  if (rattle_due_ && (!flying || t >= end)) {
+    sound_clip(synthesize_cup_drop(cup_entry_speed(play_->last_shot().trajectory)));
+    rattle_due_ = false;
+  }
   Camera cam;
   if (w > 0 && h > 0 && scene_) {
     fit_renderer(renderer, w, h, in.render_scale);

@@ -11,6 +11,7 @@
 
 #include "game/modes/intent.hpp"
 #include "game/report/impact_sound.hpp"
+#include "game/report/world_sounds.hpp"
 
 namespace sweetspot {
 
@@ -77,6 +78,15 @@ class ModeView {
   virtual const ShotScene* clip_scene() const { return nullptr; }
   /// The strikes to sound since the last call (the app plays them), oldest first.
   std::vector<ImpactSoundInput> take_sounds() { return std::exchange(sounds_, {}); }
+  /// Other sounds due since the last call (a holed ball's rattle), made at kImpactSampleRate.
+  std::vector<std::vector<float>> take_clips() { return std::exchange(clips_, {}); }
+  /// The ambience under the mode while it is shown (the app loops it).
+  struct AmbienceSpec {
+    Ambience kind = Ambience::None;
+    double wind_speed = 0.0;  ///< m/s, a course's
+    bool operator==(const AmbienceSpec&) const = default;
+  };
+  virtual AmbienceSpec ambience() const { return {}; }
 
  protected:
   /// A new strike was shown: its sound is due (a shot without one, a launch-only shot, adds
@@ -88,9 +98,13 @@ class ModeView {
   void sound_strike(const ImpactSoundInput& in) {
     if (in.contact_time > 0.0 && in.normal_impulse > 0.0) sounds_.push_back(in);
   }
+  void sound_clip(std::vector<float> samples) {
+    if (!samples.empty()) clips_.push_back(std::move(samples));
+  }
 
  private:
   std::vector<ImpactSoundInput> sounds_;
+  std::vector<std::vector<float>> clips_;
 };
 
 }  // namespace sweetspot

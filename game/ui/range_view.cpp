@@ -34,6 +34,7 @@ class RangeView final : public ModeView {
     units_.imperial = o.imperial;
   }
   const char* title() const override { return "Range"; }
+  AmbienceSpec ambience() const override { return {Ambience::Course, 0.0}; }
   const char* restart_label() const override { return "New session"; }
   bool done() const override { return false; }
   void send(const Intent& in) override { play_->update({in}, in.time); }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -144,7 +145,7 @@ TEST_CASE("--at shows the trail only up to that time", "[render]") {
   CHECK_THROWS_AS(render_shot_rgba(shot, r), InputError);
 }
 
-// Golden image. Rasterisers differ slightly between Mesa versions and GPUs: an edge may move
+// Golden images. Rasterisers differ slightly between Mesa versions and GPUs: an edge may move
 // by a pixel, MSAA coverage and shading may round differently by a few counts. The metric
 // absorbs exactly that and nothing more:
 //  - a pixel "differs" when any channel is off by more than 32 (of 255); at most 2 % of the
@@ -152,14 +153,9 @@ TEST_CASE("--at shows the trail only up to that time", "[render]") {
 //  - the mean colour of every 16x16 block must agree within 10 per channel, so a change in a
 //    region (a missing trail or marker, wrong terrain colour, a moved camera) fails even if
 //    it touches few pixels overall.
-// SWEETSPOT_UPDATE_GOLDEN=1 rewrites the golden image instead (look at it before committing).
-TEST_CASE("the side view matches the golden image within the rasteriser tolerance", "[render]") {
-  const int w = 480, h = 272;
-  RenderRequest r = range_request(w, h, CameraKind::Side);
-  r.impactor_mesh = "driver_head";
-  r.impactor = ImpactorPlacement{Vec3(-0.0214, 0.0214, 0.0), Quat::Identity()};
-  const auto img = render_shot_rgba(synthetic_shot(), r);
-  const auto golden_path = kSource / "tests/render/golden_side.png";
+// SWEETSPOT_UPDATE_GOLDEN=1 rewrites the golden images instead (look at them before committing).
+void check_golden(const std::vector<std::uint8_t>& img, int w, int h, const std::string& name) {
+  const auto golden_path = kSource / "tests/render" / (name + ".png");
   const char* update = std::getenv("SWEETSPOT_UPDATE_GOLDEN");
   if (update != nullptr && std::string(update) == "1") {
     write_png_atomic(golden_path, w, h, img);
@@ -196,12 +192,48 @@ TEST_CASE("the side view matches the golden image within the rasteriser toleranc
   }
   INFO("worst 16x16 block mean difference: " << worst_block);
   if (fraction > 0.02 || worst_block > 10.0) {
-    const auto actual = std::filesystem::temp_directory_path() / "sweetspot_golden_side_actual.png";
+    const auto actual = std::filesystem::temp_directory_path() / ("sweetspot_" + name + "_actual.png");
     write_png_atomic(actual, w, h, img);
     WARN("actual image written to " << actual.string());
   }
   CHECK(fraction <= 0.02);
   CHECK(worst_block <= 10.0);
+}
+
+TEST_CASE("the side view matches the golden image within the rasteriser tolerance", "[render]") {
+  const int w = 480, h = 272;
+  RenderRequest r = range_request(w, h, CameraKind::Side);
+  r.impactor_mesh = "driver_head";
+  r.impactor = ImpactorPlacement{Vec3(-0.0214, 0.0214, 0.0), Quat::Identity()};
+  check_golden(render_shot_rgba(synthetic_shot(), r), w, h, "golden_side");
+}
+
+// The people: a golfer 5 m off, 0.06 s into his follow-through with a delivered driver,
+// shadows off (the image must not depend on the shadow map's filtering). The figure, the
+// club in his hands and the ball leaving are all in it.
+TEST_CASE("the golfer's follow-through matches its golden image within the rasteriser tolerance", "[render]") {
+  const int w = 480, h = 272;
+  OffscreenContext context;
+  ShotSceneInput in;
+  in.assets = &test::assets();
+  in.world = &test_world("test_range.obj");
+  in.tee = true;
+  in.impactor_mesh = "driver_head";
+  ShotScene scene(in);
+  ImpactorPlacement club;
+  club.position = Vec3(-0.0214, 0.0214, 0.0);
+  club.orientation = Quat(Eigen::AngleAxisd(deg_to_rad(10.4), Vec3::UnitZ()));
+  club.velocity = 50.5 * Vec3(std::cos(deg_to_rad(-1.3)), std::sin(deg_to_rad(-1.3)), 0.0);
+  scene.set_shot(synthetic_shot(), club);
+  Camera cam;
+  cam.eye = Vec3(-1.5, 1.6, 4.5);
+  cam.target = Vec3(0.3, 1.0, 0.0);
+  cam.fov_y = deg_to_rad(50.0);
+  RendererOptions options;
+  options.shadows = 0;
+  Renderer renderer(w, h, options);
+  renderer.draw(scene.build(cam, 0.06, w, h), cam);
+  check_golden(renderer.read_pixels(), w, h, "golden_golfer");
 }
 
 TEST_CASE("every camera frames the shot: the launch and rest points are in the image", "[render]") {

@@ -42,6 +42,11 @@ for i in 1 2 3 4 5; do
 done
 for i in 1 2 3 4 5 6; do xdotool key b; sleep 0.3; xdotool key Return; sleep 1.0; done
 xdotool key F12'
+# alone: the caddie's tee shot, then its replay (R): the strike slowed from behind the
+# golfer, alongside the flight; R again ends it, back at address.
+drive "--mode golf --holes 1 --no-flyover --bot none" '
+xdotool key b; sleep 0.3; xdotool key Return; sleep 2.5
+xdotool key r; sleep 0.6; xdotool key F12; sleep 2.5; xdotool key F12; xdotool key r; sleep 0.5; xdotool key F12'
 # the range: a few swings per club, the table.
 drive "--mode range --bag $out/bag.toml" '
 for i in 1 2 3 4 5 6 7; do xdotool key b; sleep 0.3; xdotool key Return; sleep 0.3; done

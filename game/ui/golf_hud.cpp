@@ -111,7 +111,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
       ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
       ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save  L latency", camera_words(camera_mode));
-      ImGui::TextDisabled("Esc: cancel the swing, pause  Tab: next mode");
+      ImGui::TextDisabled("R: replay  Esc: cancel the swing, pause  Tab: next mode");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole");
     } else {
       ImGui::TextDisabled("Enter: let them play now");

@@ -15,6 +15,7 @@
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
 #include "game/render/shot_view.hpp"
+#include "game/render/video_clip.hpp"
 #include "game/report/report.hpp"
 #include "game/report/round_json.hpp"
 #include "game/report/round_save.hpp"
@@ -72,7 +73,10 @@ class GolfView final : public ModeView {
   AmbienceSpec ambience() const override { return {Ambience::Course, play_->round().wind().speed}; }
   const char* restart_label() const override { return "Restart hole"; }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 10; }
-  void send(const Intent& in) override { play_->update({in}, in.time); }
+  void send(const Intent& in) override {
+    replay_.reset();  // Esc (and the pause menu) ends a replay
+    play_->update({in}, in.time);
+  }
   void frame(const ViewInput& in, Renderer& renderer) override;
   void report(std::ostream& out) const override {
     const GolfRound& r = play_->group().round(0);
@@ -84,6 +88,10 @@ class GolfView final : public ModeView {
  private:
   void view_keys(const std::vector<KeyPress>& keys);
   void ensure_scene();
+  bool can_replay() const;
+  void start_replay(double now);
+  /// Draws the replay at mode time `now`; false once it has run its course.
+  bool draw_replay(const ViewInput& in, Renderer& renderer);
   Camera address_camera() const;
   Camera high_camera() const;
   Camera map_camera() const;
@@ -101,6 +109,20 @@ class GolfView final : public ModeView {
   GolfUnits units_;
   int camera_ = 1;                 // 1 player, 2 high, 3 map (M), 4 green
   std::optional<Camera> address_view_;  // the last view at address, held as a stroke starts
+  // The last stroke as it was struck: its scene (club, tee, markers) and the view from
+  // behind its golfer, for R's replay.
+  std::optional<ShotSceneInput> stroke_input_;
+  std::optional<Camera> stroke_view_;
+  // R at rest: the stroke again, its strike slowed, from behind the golfer, alongside the
+  // flight and after the ball to where it stopped.
+  struct Replay {
+    std::unique_ptr<ShotScene> scene;
+    std::vector<double> times;  // the shot's time at each 1/60 s of the replay
+    double from = 0.0;          // mode time it started
+    bool struck = false;        // its strike has sounded
+  };
+  std::optional<Replay> replay_;
+  static constexpr double kReplayFps = 60.0, kReplaySlow = 8.0;
   // s the player's camera holds after the strike (the follow-through, the ball leaving), then
   // s it takes to reach the ball's follow camera.
   static constexpr double kHoldAddress = 0.6, kLeaveAddress = 0.6;
@@ -139,6 +161,10 @@ void GolfView::view_keys(const std::vector<KeyPress>& keys) {
       case GLFW_KEY_4: camera_ = 4; break;
       case GLFW_KEY_U: units_.imperial = !units_.imperial; break;
       case GLFW_KEY_S: save_round(); break;
+      case GLFW_KEY_R:
+        if (replay_) replay_.reset();
+        else if (can_replay()) start_replay(k.time);
+        break;
       default: break;
     }
   }
@@ -345,9 +371,75 @@ Camera GolfView::flyover_camera(double progress) const {
   return c;
 }
 
+bool GolfView::can_replay() const {
+  const GolfPlay::Stage stage = play_->stage();
+  const bool at_rest = stage == GolfPlay::Stage::Aiming || stage == GolfPlay::Stage::HoleOver ||
+                       stage == GolfPlay::Stage::RoundOver;
+  return at_rest && stroke_input_ && play_->last_shot().trajectory.samples.size() >= 2;
+}
+
+void GolfView::start_replay(double now) {
+  Replay r;
+  try {
+    r.scene = std::make_unique<ShotScene>(*stroke_input_);
+  } catch (const std::exception&) {
+    return;  // the stroke's world or club mesh cannot be loaded again: no replay
+  }
+  const ShotResult& shot = play_->last_shot();
+  r.scene->set_shot(shot.trajectory, impactor_placement(shot));
+  ClipTiming timing;
+  timing.start = -r.scene->pre_roll();
+  timing.end = duration(shot.trajectory);
+  timing.fps = static_cast<int>(kReplayFps);
+  timing.slow = kReplaySlow;
+  r.times = clip_frame_times(timing);
+  r.from = now;
+  replay_ = std::move(r);
+}
+
+bool GolfView::draw_replay(const ViewInput& in, Renderer& renderer) {
+  Replay& r = *replay_;
+  const auto frame = static_cast<std::size_t>(std::max(0.0, in.now - r.from) * kReplayFps);
+  if (r.times.empty() || frame >= r.times.size() + static_cast<std::size_t>(kReplayFps)) return false;  // 1 s at rest, then done
+  const double t = r.times[std::min(frame, r.times.size() - 1)];
+  const double end = r.times.back();
+  if (!r.struck && t >= 0.0) {
+    sound_strike(play_->last_shot());
+    r.struck = true;
+  }
+  const int w = in.width, h = in.height;
+  if (w <= 0 || h <= 0) return true;
+  fit_renderer(renderer, w, h, in.render_scale);
+  // Behind the golfer through the strike, then alongside the whole flight, then after the
+  // ball for its last second.
+  const Camera behind = stroke_view_ ? *stroke_view_ : r.scene->camera(CameraKind::Behind, t, w, h);
+  Camera cam = blend_cameras(behind, r.scene->camera(CameraKind::Side, t, w, h),
+                             ease_in_out(std::clamp((t - kHoldAddress) / kLeaveAddress, 0.0, 1.0)));
+  const double follow_from = std::max(kHoldAddress + kLeaveAddress, end - 1.5);
+  cam = blend_cameras(cam, r.scene->camera(CameraKind::Follow, t, w, h),
+                      ease_in_out(std::clamp((t - follow_from) / 0.5, 0.0, 1.0)));
+  renderer.draw(r.scene->build(cam, t, w, h), cam);
+  renderer.blit_to(0, w, h);
+  const char* label = "Replay   R: stop";
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  const float text_w = ImGui::CalcTextSize(label).x;
+  const ImVec2 pos(0.5f * (static_cast<float>(w) - text_w), 20.0f);
+  dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + text_w + 10, pos.y + 22), IM_COL32(0, 0, 0, 170), 4.0f);
+  dl->AddText(pos, IM_COL32(255, 230, 120, 255), label);
+  draw_launch_panel(*play_, units_, w, std::max(t, 0.0));
+  return true;
+}
+
 void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   const std::vector<KeyPress> keys = calibration_keys(in.keys, in.now);
   view_keys(keys);
+  if (replay_ && !can_replay()) replay_.reset();
+  if (replay_) {
+    // The game waits while the stroke is shown again; its keys (but R) wait too.
+    play_->update({}, in.now);
+    if (draw_replay(in, renderer)) return;
+    replay_.reset();
+  }
   play_->update(golf_intents(keys), in.now);
   const GolfPlay::Stage stage = play_->stage();
   const int w = in.width, h = in.height;
@@ -392,6 +484,8 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
       sound_strike(play_->last_shot());
       rattle_due_ = play_->last_shot().end == ShotEnd::Holed;
+      stroke_input_ = scene_->input();
+      stroke_view_ = address_view_;
       flight_shown_ = true;
       flight_struck_ = play_->struck_at();
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "game/render/golfer_figure.hpp"
 
@@ -32,6 +33,9 @@ struct Cast {
   bool pitcher_left = false, batter_left = false, in_play = false, batted = false;
   double bat_height = 0.76, flight_time = 0.4;
   std::array<Vec3, 9> start{}, goal{};
+  int fielder = -1;                 // who fields the ball in play
+  Vec3 fielded_at = Vec3::Zero();   // the ball where he has it
+  double fielded_time = 0.0;        // s after contact
 
   double mode_time(double t) const {
     switch (clock) {
@@ -56,7 +60,12 @@ struct Cast {
     for (std::size_t i = 1; i < 9; ++i) {
       const bool catcher = i == 1;
       if (catcher && !batted) continue;  // crouched between the batter's eye and the plate
-      append_figure(out, fielder_figure(start[i], goal[i], league.ability[i], in_play ? since : 0.0, catcher), frame,
+      // The one who fields it reaches for the ball as it comes to him (ESTIMATE: from 0.3 s
+      // before he has it until 0.4 s after).
+      std::optional<Vec3> glove;
+      if (in_play && static_cast<int>(i) == fielder && since > fielded_time - 0.3 && since < fielded_time + 0.4)
+        glove = fielded_at;
+      append_figure(out, fielder_figure(start[i], goal[i], league.ability[i], in_play ? since : 0.0, catcher, glove), frame,
                     kFielding, kWood);
     }
     // The batter: his stride as the pitch comes, the swing, the follow-through he holds
@@ -123,6 +132,9 @@ PeopleFn cage_people(const BattingCage& c, double now) {
     cast.start[i] = cast.in_play ? play.start[i] : spots[i];
     cast.goal[i] = cast.in_play ? play.goal[i] : spots[i];
   }
+  cast.fielder = play.fielder;
+  cast.fielded_at = play.fielded_at;
+  cast.fielded_time = play.fielded_time;
   return [cast](const PeopleFrame& frame, MeshData& out) { cast.draw(frame, out); };
 }
 

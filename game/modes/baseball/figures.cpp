@@ -153,7 +153,8 @@ Vec3 fielder_position(const Vec3& start, const Vec3& goal, const FielderAbility&
   return start + std::min(covered, dist) / dist * d;
 }
 
-Figure fielder_figure(const Vec3& start, const Vec3& goal, const FielderAbility& a, double t, bool catcher) {
+Figure fielder_figure(const Vec3& start, const Vec3& goal, const FielderAbility& a, double t, bool catcher,
+                      const std::optional<Vec3>& glove) {
   const Vec3 at = fielder_position(start, goal, a, t);
   const Vec3 d = goal - start;
   const bool moving = t > a.reaction && (goal - at).norm() > 0.05;
@@ -161,12 +162,21 @@ Figure fielder_figure(const Vec3& start, const Vec3& goal, const FielderAbility&
   const double yaw = moving ? std::atan2(d.z(), d.x()) : std::atan2(-start.z(), -start.x());
   const Frame fr{Vec3(at.x(), 0.0, at.z()), yaw};
   Figure f;
-  const double crouch = catcher && !moving ? 0.45 : moving ? 0.05 : 0.15;
+  double crouch = catcher && !moving ? 0.45 : moving ? 0.05 : 0.15;
+  // A ball below his waist he bends for, down to a crouch (ESTIMATE: the glove at ~0.7 m
+  // standing).
+  if (glove) crouch = std::max(crouch, std::clamp(0.7 - glove->y(), 0.0, 0.5));
   // Running: the legs and arms swing at ~2.2 strides a second (ESTIMATE of a sprinter's cadence).
   const double swing = moving ? std::sin(2.0 * kPi * 2.2 * t) : 0.0;
   const Vec3 lf = fr(0.35 * swing, moving ? 0.15 * std::max(0.0, -swing) : 0.0, -0.18);
   const Vec3 rf = fr(-0.35 * swing, moving ? 0.15 * std::max(0.0, swing) : 0.0, 0.18);
-  const Vec3 lh = fr(-0.3 * swing + (moving ? 0.0 : 0.3), 1.0 - crouch, -0.3);
+  Vec3 lh = fr(-0.3 * swing + (moving ? 0.0 : 0.3), 1.0 - crouch, -0.3);
+  if (glove) {
+    const Vec3 shoulder = fr(0.0, kShoulderHeight - crouch, -kShoulderHalf);
+    const Vec3 to = *glove - shoulder;
+    const double arm = kUpperArm + kForearm;
+    lh = shoulder + (to.norm() > arm ? Vec3(to.normalized() * arm) : to);
+  }
   const Vec3 rh = fr(0.3 * swing + (moving ? 0.0 : 0.3), 1.0 - crouch, 0.3);
   fill_limbs(f, fr, lf, rf, lh, rh, crouch, 0.0);
   return f;

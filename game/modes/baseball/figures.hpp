@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -45,6 +46,9 @@ Figure batter_figure(double phase, double bat_height, bool left_handed);
 /// (standing still before his reaction, accelerating, then at top speed; stopped at the goal),
 /// facing home before he moves and his run after.
 Vec3 fielder_position(const Vec3& start, const Vec3& goal, const FielderAbility& ability, double t);
-Figure fielder_figure(const Vec3& start, const Vec3& goal, const FielderAbility& ability, double t, bool catcher);
+/// `glove`: where the ball is as he fields it (m, world): his glove hand (the left, a
+/// right-hander's) reaches for it as far as his arm goes, and he bends for a low one.
+Figure fielder_figure(const Vec3& start, const Vec3& goal, const FielderAbility& ability, double t, bool catcher,
+                      const std::optional<Vec3>& glove = std::nullopt);
 
 }  // namespace sweetspot

@@ -45,4 +45,15 @@ TEST_CASE("a fielder waits for his reaction, runs at most his sprint and stops a
   const Figure f = fielder_figure(start, goal, a, 2.0, false);
   CHECK(f.joint[kHead].y() > 1.5);
   CHECK_FALSE(f.has_bat);
+  // Fielding: his glove hand goes to the ball within his arm's reach, above his head for a
+  // high one; for a grounder he bends and the glove goes down toward it.
+  const Vec3 high = goal + Vec3(0.1, 1.9, 0.1);
+  const Figure c = fielder_figure(start, goal, a, 6.0, false, high);
+  CHECK(c.joint[kLeftHand].y() > c.joint[kHead].y());
+  CHECK((c.joint[kLeftHand] - c.joint[kLeftShoulder]).norm() <= 0.62 + 1e-9);
+  CHECK((c.joint[kLeftHand] - high).norm() < 0.15);
+  const Vec3 low = goal + Vec3(0.4, 0.05, -0.3);
+  const Figure g = fielder_figure(start, goal, a, 6.0, false, low);
+  CHECK(g.joint[kPelvis].y() < f.joint[kPelvis].y() - 0.3);
+  CHECK(g.joint[kLeftHand].y() < 0.6);
 }

@@ -50,35 +50,33 @@ struct ShotFrames {
 
 }  // namespace
 
+namespace {
+// What a request and a scene's input both say of the scene, in one list for both directions.
+template <class From, class To>
+void copy_scene_fields(const From& f, To& t) {
+  t.assets = f.assets;
+  t.world = f.world;
+  t.distance_unit = f.distance_unit;
+  t.tee = f.tee;
+  t.ball_radius = f.ball_radius;
+  t.impactor = f.impactor;
+  t.impactor_mesh = f.impactor_mesh;
+  t.flag = f.flag;
+  t.tee_markers = f.tee_markers;
+  t.wind = f.wind;
+  t.people = f.people;
+}
+}  // namespace
+
 ShotSceneInput scene_input_of(const RenderRequest& r) {
   ShotSceneInput input;
-  input.assets = r.assets;
-  input.world = r.world;
-  input.distance_unit = r.distance_unit;
-  input.tee = r.tee;
-  input.ball_radius = r.ball_radius;
-  input.impactor = r.impactor;
-  input.impactor_mesh = r.impactor_mesh;
-  input.flag = r.flag;
-  input.tee_markers = r.tee_markers;
-  input.wind = r.wind;
-  input.people = r.people;
+  copy_scene_fields(r, input);
   return input;
 }
 
 RenderRequest render_request_of(const ShotSceneInput& in) {
   RenderRequest r;
-  r.assets = in.assets;
-  r.world = in.world;
-  r.distance_unit = in.distance_unit;
-  r.tee = in.tee;
-  r.ball_radius = in.ball_radius;
-  r.impactor = in.impactor;
-  r.impactor_mesh = in.impactor_mesh;
-  r.flag = in.flag;
-  r.tee_markers = in.tee_markers;
-  r.wind = in.wind;
-  r.people = in.people;
+  copy_scene_fields(in, r);
   return r;
 }
 

@@ -338,7 +338,8 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     // follow-through (swing_pose.hpp). A club drawn larger for a far camera stays at impact:
     // there it shows the strike, and a magnified club sweeping round would hide the view.
     ImpactorPlacement pose = *impactor_;
-    if (delivered && (t < 0.0 || strike_scale <= 1.0 + 1e-9)) {
+    const bool true_size = strike_scale <= 1.0 + 1e-9;
+    if (delivered && (t < 0.0 || true_size)) {
       const Vec3 v = impactor_->velocity.normalized();
       const Vec3 contact = launch - m.input.ball_radius * v;
       const Vec3 shaft = m.impactor_is_bat ? Vec3(-(impactor_->orientation * Vec3::UnitX()))
@@ -350,8 +351,9 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     model.block<3, 1>(0, 3) = (launch + strike_scale * (pose.position - launch)).cast<float>();
     scene.meshes.push_back({m.impactor.get(), model, false});
     // The golfer holding it, where his hands must be: the grip rides with the club through
-    // its downswing and follow-through. Only at true size: a club drawn larger for a far camera has no hands on it.
-    if (!m.impactor_is_bat && delivered && strike_scale <= 1.0 + 1e-9) {
+    // its downswing and follow-through. Only at true size: a club drawn larger for a far
+    // camera has no hands on it.
+    if (!m.impactor_is_bat && delivered && true_size) {
       const Vec3 v = impactor_->velocity.normalized();
       Vec3 target = trajectory_.summary.rest_position - launch;
       target.y() = 0.0;

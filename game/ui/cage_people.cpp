@@ -104,8 +104,7 @@ void append_figure(MeshData& out, const Figure& f, const PeopleFrame& frame, con
 }
 
 double cage_scene_time(const BattingCage& c, double now) {
-  const bool batted = c.stage() == Stage::Batted || (c.stage() == Stage::Called && c.last().result.contact);
-  if (batted) return now - c.batted_at();
+  if (c.batted()) return now - c.batted_at();
   return c.pitch_clock(now);
 }
 
@@ -116,7 +115,7 @@ PeopleFn cage_people(const BattingCage& c, double now) {
   cast.released_at = now - c.pitch_clock(now) / BattingCage::kPitchTimeScale;
   cast.batted_at = c.batted_at();
   cast.swung_at = c.swung_at();
-  cast.batted = c.stage() == Stage::Batted || (c.stage() == Stage::Called && c.last().result.contact);
+  cast.batted = c.batted();
   cast.clock = cast.batted ? Cast::Clock::Batted : c.stage() == Stage::Pitching ? Cast::Clock::Pitch : Cast::Clock::Held;
   const bool any_pitch = c.stage() != Stage::Ready || !c.swings().empty();
   const PitchType& type = c.call().type;

@@ -175,7 +175,7 @@ class CageView final : public ModeView {
     const int w = in.width, h = in.height;
     if (w > 0 && h > 0) {
       fit_renderer(renderer, w, h, in.render_scale);
-      const bool batted = c.stage() == Stage::Batted || (c.stage() == Stage::Called && c.last().result.contact);
+      const bool batted = c.batted();
       const double flight_end = duration(c.last().result.shot.trajectory);
       // The ball holds at the plate, or where the batted ball stopped, while the people go on
       // (their clock: cage_people).
@@ -190,14 +190,8 @@ class CageView final : public ModeView {
       if (!batted) draw_zone(c, cam, w, h);
     }
     draw_stats(c, w, h);
-    if (!c.call_text().empty()) {
-      ImDrawList* dl = ImGui::GetForegroundDrawList();
-      // The box fits the call, centred (a miss explains itself at some length).
-      const float text_w = ImGui::CalcTextSize(c.call_text().c_str()).x;
-      const ImVec2 pos(0.5f * (static_cast<float>(w) - text_w), 60.0f);
-      dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + text_w + 10, pos.y + 24), IM_COL32(0, 0, 0, 170), 4.0f);
-      dl->AddText(pos, IM_COL32(255, 230, 120, 255), c.call_text().c_str());
-    }
+    // The box fits the call (a miss explains itself at some length).
+    if (!c.call_text().empty()) draw_banner(c.call_text().c_str(), w, 60.0f);
     if (options_.pitches > 0 && static_cast<int>(c.swings().size()) >= options_.pitches && c.stage() == Stage::Called)
       ++done_frames_;
   }

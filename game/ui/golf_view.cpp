@@ -420,12 +420,7 @@ bool GolfView::draw_replay(const ViewInput& in, Renderer& renderer) {
                       ease_in_out(std::clamp((t - follow_from) / 0.5, 0.0, 1.0)));
   renderer.draw(r.scene->build(cam, t, w, h), cam);
   renderer.blit_to(0, w, h);
-  const char* label = "Replay   R: stop";
-  ImDrawList* dl = ImGui::GetForegroundDrawList();
-  const float text_w = ImGui::CalcTextSize(label).x;
-  const ImVec2 pos(0.5f * (static_cast<float>(w) - text_w), 20.0f);
-  dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + text_w + 10, pos.y + 22), IM_COL32(0, 0, 0, 170), 4.0f);
-  dl->AddText(pos, IM_COL32(255, 230, 120, 255), label);
+  draw_banner("Replay   R: stop", w, 20.0f);
   draw_launch_panel(*play_, units_, w, std::max(t, 0.0));
   return true;
 }

@@ -57,6 +57,9 @@ struct ViewInput {
 /// view then builds its scene for w x h (so pixel-sized marks keep their size on screen)
 /// and blits the image up to w x h.
 void fit_renderer(Renderer& renderer, int w, int h, double scale);
+/// A line of text centred across a `width` px window at `y` px, in a dark box over the view
+/// (the cage's call, the golf replay's label).
+void draw_banner(const char* text, int width, float y);
 
 class ModeView {
  public:

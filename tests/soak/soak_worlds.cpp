@@ -105,8 +105,8 @@ int main(int argc, char** argv) {
           why = text;
         }
         // Measured, not asserted: a rolling ball can overlap a rising facet at a steep concave
-        // corner for a step or two before it strikes it or the crease takes it (README
-        // Robustness, known limitation); the worst overlap is reported.
+        // corner for a step or two before it strikes it or the crease takes it (docs/robustness.md,
+        // known limitations); the worst overlap is reported.
         if (field.height(p.position.x(), p.position.z(), &ground)) {
           const double dip = ground - p.position.y();
           if (dip > 0.0) {

@@ -42,6 +42,8 @@ class BattingCage {
   double pitch_clock(double t) const { return (t - released_at_) * kPitchTimeScale; }
   /// The batted ball's flight runs from this mode time.
   double batted_at() const { return batted_at_; }
+  /// The last swing met the ball and its flight is on show (in the air, or called after it).
+  bool batted() const { return stage_ == Stage::Batted || (stage_ == Stage::Called && last_.result.contact); }
   /// Mode time of the last swing's contact (or miss), for the batter's animation.
   double swung_at() const { return swung_at_; }
   double bat_height() const { return bat_height_; }  ///< m above the ground where the bat meets the ball's path

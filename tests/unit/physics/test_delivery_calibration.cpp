@@ -84,8 +84,8 @@ TEST_CASE("tour deliveries carry and land like the TrackMan PGA averages", "[del
   // The calibration bands on flat ground, standard air: carry within 4 % and landing angle
   // within 3° of the row, the whole shot predicted from the club's delivery. The driver's
   // carry is the closest to its edge (−3.87 %, 264.4 yd: 0.4 yd inside): its ball leaves
-  // 2.9 % slow, at this head's free-body smash ceiling for the USGA COR limit (README's
-  // physics notes).
+  // 2.9 % slow, at this head's free-body smash ceiling for the USGA COR limit (docs/physics.md,
+  // the delivery row).
   const EquipmentCatalog& eq = test::assets().equipment();
   const ShotModel model = test::golf_model();
   for (const TrackManRow& row : kRows) {

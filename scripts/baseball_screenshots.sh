@@ -35,5 +35,5 @@ for _ in \$(seq 1 50); do kill -0 \$pid 2>/dev/null || break; sleep 0.2; done
 wait \$pid
 D
 chmod +x "$out/drive.sh"
-xvfb-run -a -s "-screen 0 1280x800x24" "$out/drive.sh"
+xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$out/drive.sh"
 echo "screenshots in $out:"; ls "$out"/*.png

@@ -24,7 +24,7 @@ for _ in \$(seq 1 50); do kill -0 \$pid 2>/dev/null || break; sleep 0.2; done
 wait \$pid
 D
   chmod +x "$out/drive.sh"
-  xvfb-run -a -s "-screen 0 1280x800x24" "$out/drive.sh"
+  xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$out/drive.sh"
 }
 # 1-2 the flyover, 3 the map, 4 the golfer at address, 5 his follow-through as the ball
 # leaves, 6 in the air, 7 at rest (the result told).

@@ -45,8 +45,10 @@ for k in keys:
 PY
 if command -v xvfb-run >/dev/null; then
   # A display number of its own: ctest -j starts other Xvfb tests at the same moment, and
-  # xvfb-run -a's search for a free number races with theirs.
-  win=$(xvfb-run -a -n $((300 + $$ % 600)) -s "-screen 0 1280x800x24" "$bin" bench --quick --json)
+  # xvfb-run -a's search for a free number races with theirs. -noreset: the bench opens its
+  # windows one after another, and a server that resets when the last one closes refuses the
+  # next while it does.
+  win=$(xvfb-run -a -n $((300 + $$ % 600)) -s "-screen 0 1280x800x24 -noreset" "$bin" bench --quick --json)
   python3 - "$win" <<'PY' || fail "window frame under Xvfb"
 import json, sys
 j = json.loads(sys.argv[1])

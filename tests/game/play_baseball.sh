@@ -27,7 +27,7 @@ kill $pid 2>/dev/null && { echo "the window did not close after the pitch"; exit
 wait $pid
 D
 chmod +x "$work/drive.sh"
-xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$bin" "$work" || { cat "$work/log.txt"; exit 1; }
+xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$work/drive.sh" "$bin" "$work" || { cat "$work/log.txt"; exit 1; }
 cat "$work/log.txt"
 grep -Eq "^swing: (strike|foul|out|single|double|triple|home_run)" "$work/log.txt" || { echo "no call for the swing"; exit 1; }
 "$check" "$work/cage.png" 1280 800

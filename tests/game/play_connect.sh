@@ -26,7 +26,7 @@ done
 wait $pid
 D
 chmod +x "$work/drive.sh"
-xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$bin" "$work" || { cat "$work/log.txt"; exit 1; }
+xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$work/drive.sh" "$bin" "$work" || { cat "$work/log.txt"; exit 1; }
 cat "$work/log.txt" "$work/replies.txt"
 grep -q '"Code":200' "$work/replies.txt" || { echo "no 200 reply"; exit 1; }
 grep -q '"mode":"round"' "$work/out.txt" || { echo "no round line on stdout"; exit 1; }

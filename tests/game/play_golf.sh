@@ -32,7 +32,7 @@ kill $pid 2>/dev/null && { echo "the window did not close after the round"; exit
 wait $pid
 D
 chmod +x "$work/drive.sh"
-xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$bin" "$work" || { cat "$work/log.txt"; exit 1; }
+xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$work/drive.sh" "$bin" "$work" || { cat "$work/log.txt"; exit 1; }
 cat "$work/log.txt"
 grep -q "Sweetspot Links" "$work/log.txt"
 grep -Eq "^ +1 +3 +[0-9]+ +[0-9]+\*? \([0-9]+\)" "$work/log.txt" || { echo "no scorecard line for hole 1"; exit 1; }

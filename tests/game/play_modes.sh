@@ -39,7 +39,7 @@ wait $pid
 D
 chmod +x "$work/drive.sh"
 set +e
-xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$bin" "$work"
+xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$work/drive.sh" "$bin" "$work"
 rc=$?
 set -e
 cat "$work/log.txt"

@@ -10,7 +10,7 @@ if ! command -v xvfb-run >/dev/null; then
 fi
 for scenario in golf/driver baseball/home-run; do
   out="$work/${scenario//\//-}.png"
-  xvfb-run -a -s "-screen 0 1280x800x24" "$bin" play "$scenario" --frames 40 --screenshot "$out" \
+  xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$bin" play "$scenario" --frames 40 --screenshot "$out" \
     > "$work/log.txt" 2>&1 || { cat "$work/log.txt"; exit 1; }
   cat "$work/log.txt"
   grep -q "ms per frame" "$work/log.txt"
@@ -22,13 +22,13 @@ for scenario in golf/driver baseball/home-run; do
 done
 # A small window: one sidebar beside the 3D view, which keeps half the window.
 small="$work/small.png"
-xvfb-run -a -s "-screen 0 1280x800x24" "$bin" play golf/pw --frames 30 --width 800 --height 600 --screenshot "$small" \
+xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$bin" play golf/pw --frames 30 --width 800 --height 600 --screenshot "$small" \
   > "$work/log.txt" 2>&1 || { cat "$work/log.txt"; exit 1; }
 "$check" "$small" 800 600
 [ -n "${SWEETSPOT_GAME_ARTIFACTS:-}" ] && cp "$small" "$SWEETSPOT_GAME_ARTIFACTS/" || true
 # A bad scenario fails before any window opens, exit 2.
 set +e
-xvfb-run -a "$bin" play golf/no-such-scenario --frames 2 > "$work/bad.txt" 2>&1
+xvfb-run -a -s "-noreset" "$bin" play golf/no-such-scenario --frames 2 > "$work/bad.txt" 2>&1
 rc=$?
 set -e
 [ "$rc" -eq 2 ] || { echo "expected exit 2 for an unknown scenario, got $rc"; cat "$work/bad.txt"; exit 1; }
@@ -61,7 +61,7 @@ xdotool key F10
 wait $pid
 D
 chmod +x "$work/clip.sh"
-xvfb-run -a -s "-screen 0 1280x800x24" "$work/clip.sh" "$bin" "$work" || { cat "$work/clip_log.txt"; exit 1; }
+xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$work/clip.sh" "$bin" "$work" || { cat "$work/clip_log.txt"; exit 1; }
 cat "$work/clip_log.txt"
 grep -q "^clip: .*sweetspot_clip_1.mp4 ([0-9]* frames at 30 fps)" "$work/clip_log.txt" || { echo "no clip line"; exit 1; }
 frames=$(sed -n 's/^clip: .* (\([0-9]*\) frames at 30 fps)/\1/p' "$work/clip_log.txt")

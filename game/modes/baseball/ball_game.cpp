@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "game/modes/baseball/aim.hpp"
 #include "game/content/resolve.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
@@ -58,7 +59,8 @@ Team::Team(const Assets& assets, std::string team_name, const BatterSkill& skill
       report(scout(assets, pitcher.profile())),
       fielding_rng(seed ^ 0xF1E1D1C1B1A19181ULL) {
   Rng r(seed);
-  for (int i = 0; i < 9; ++i) lineup.emplace_back(skill, bats_left(i), r.next());
+  const double aim = aim_inside(assets, skill, kGameBat);
+  for (int i = 0; i < 9; ++i) lineup.emplace_back(skill, bats_left(i), r.next(), aim);
   defense = draw_defense(r);
 }
 
@@ -78,7 +80,7 @@ PlateAppearance plate_appearance(const Assets& assets, Hitter& batter, Team& fie
     } else {
       rec.swing = batter.swing(rec.read, count);
       FieldingSetup setup{&field.defense, batter.skill().sprint_speed, &field.fielding_rng};
-      rec.result = swing_at(assets, rec.flight, rec.swing, batter.skill().bat_speed, "maple", setup);
+      rec.result = swing_at(assets, rec.flight, rec.swing, batter.skill().bat_speed, kGameBat, setup);
       const BattedOutcome o = rec.result.outcome;
       if (!rec.result.contact) rec.call = PitchResult::SwingingStrike;
       else if (o == BattedOutcome::Foul) rec.call = rec.result.foul_tip ? PitchResult::FoulTip : PitchResult::Foul;

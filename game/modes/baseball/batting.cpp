@@ -72,12 +72,15 @@ const std::vector<BatterSkill>& batter_skills() {
   static const std::vector<BatterSkill> s = [] {
     BatterSkill pro{"pro", mph_to_mps(71.5), 5.0, 0.004, 0.03};
     // His reads of live pitching (ESTIMATES, set together against MLB's 2024 league rates over
-    // 40 seeded games: strikeouts, walks, BABIP, power, whiffs per swing): he reads the type of
-    // 85 % of pitches before he must commit, his timing of a pitch he has read is off by 7 ms
-    // and his height by 22 mm (at the contact's ~1.2° of launch per mm of undercut, the spread
-    // of the league's launch angles), and where his eye puts the pitch by 30 mm.
+    // 200 seeded games: strikeouts, walks, BABIP, power, whiffs per swing, fouls per pitch,
+    // with his aim inside the sweet spot that follows from them, aim.hpp): he reads the type of
+    // 85 % of pitches before he must commit, his timing of a pitch he has read is off by 8.5 ms
+    // (Brenner et al. measured ~7 ms hitting a falling ball, Front. Hum. Neurosci. 8 (2014)
+    // 342; a pitch is faster and breaks), his reach along the barrel by 90 mm and his height by
+    // 22 mm (at the contact's ~1.2° of launch per mm of undercut, the spread of the league's
+    // launch angles), and where his eye puts the pitch by 30 mm.
     pro.recognition = 0.85;
-    pro.read_timing_sd_ms = 7.0;
+    pro.read_timing_sd_ms = 8.5;
     pro.read_height_sd = 0.022;
     pro.read_reach_sd = 0.09;
     pro.discipline = 0.05;
@@ -200,6 +203,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   s.bat_speed = bat_speed * (in.power ? 1.0 : 0.92) * in.effort;
   const double sweet_arm = bat.length - bat.sweet_spot_from_tip - bat.pivot_from_knob;
   check_range("swing.contact_lead", in.contact_lead, SwingInput::kContactLead, "rad");
+  check_range("swing.aim_inside", in.aim_inside, SwingInput::kAimInside, "m");
   // Turned past where he meant to meet it (+ late), from square: the bat met a pitch he meant
   // to meet out front that much sooner round its arc.
   const double turned = s.bat_speed / sweet_arm * 1e-3 * in.timing_ms - in.contact_lead;  // rad
@@ -212,7 +216,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   const Vec3 v(pitch.plate_velocity.x(), pitch.plate_velocity.y(), m * pitch.plate_velocity.z());
   const Vec3 w(m * pitch.plate_spin.x(), m * pitch.plate_spin.y(), pitch.plate_spin.z());
   const BallCrossing met = meet_ball(v, in.attack_angle, vertical_bat_angle_at(in.attack_angle, in.swing_tilt, 0.0),
-                                     sweet_arm * std::cos(in.contact_lead) + in.reach_error, in.undercut, -turned);
+                                     sweet_arm * std::cos(in.contact_lead) - in.aim_inside + in.reach_error, in.undercut, -turned);
   s.impact_from_tip = bat.length - bat.pivot_from_knob - met.from_pivot;
   s.undercut = met.undercut;
   s.vertical_bat_angle = std::clamp(vertical_bat_angle_at(in.attack_angle, in.swing_tilt, turned),
@@ -229,7 +233,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   out.past_end = !through && s.impact_from_tip < -kEndCapReach * ball.radius;
   out.through = through;
   if (through || out.past_end) return out;
-  s.impact_from_tip = std::min(s.impact_from_tip, 0.45);  // nearer the hands than this, the hands are hit
+  s.impact_from_tip = std::min(s.impact_from_tip, kHandsFromTip);
   Delivery d;
   try {
     d = deliver_baseball(ball, bat, s, v, w, bat.material);

@@ -76,7 +76,19 @@ struct SwingInput {
   /// against that moment.
   double contact_lead = 0.0;
   static constexpr Range kContactLead{-0.6, 0.6};
+  /// m toward the hands from the sweet spot where he means to meet the ball (aim.hpp: a bot
+  /// aims inside by what his scatter makes worth it); `reach_error` is the ball's line
+  /// against that aim. 0 = the sweet spot.
+  double aim_inside = 0.0;
+  static constexpr Range kAimInside{0.0, 0.3};
 };
+
+/// The bat the game's hitters swing, bots and player alike (bats.toml: 33 in maple).
+inline constexpr const char* kGameBat = "maple";
+
+/// Nearer the hands than this (m from the tip) the ball meets the hands, not the bat: the
+/// contact is taken there.
+inline constexpr double kHandsFromTip = 0.45;
 
 /// Hitting it where it is pitched: the hands can come in toward the body or reach out only so
 /// far, so a batter meets an inside pitch out front, with the bat already turned toward the

@@ -23,7 +23,7 @@ class BattingCage {
   /// The pitch plays at this fraction of real time: 0.4 s is a hitter's lifetime, not a game's.
   static constexpr double kPitchTimeScale = 0.5;
   /// The cage's bat (bats.toml): what it swings, and what its crack rings like.
-  static constexpr const char* kBat = "maple";
+  static constexpr const char* kBat = kGameBat;
   /// The strike zone's bottom and top (ft 1.6 and 3.5, as in_zone) and the plate's half width, m.
   static constexpr double kZoneLow = StrikeZone::kLow, kZoneHigh = StrikeZone::kHigh, kPlateHalf = StrikeZone::kHalfWidth;
   /// After the pitch crosses the plate it is taken (called) once this much pitch time more has passed.

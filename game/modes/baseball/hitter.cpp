@@ -45,8 +45,8 @@ double zone_swing_share(const Count& c) {
   return c.strikes == 0 ? 0.6 : c.strikes == 1 ? 0.72 : 0.9;
 }
 
-Hitter::Hitter(const BatterSkill& skill, bool left_handed, std::uint64_t seed)
-    : skill_(skill), left_(left_handed), rng_(seed) {}
+Hitter::Hitter(const BatterSkill& skill, bool left_handed, std::uint64_t seed, double aim_inside)
+    : skill_(skill), left_(left_handed), aim_inside_(aim_inside), rng_(seed) {}
 
 PitchRead Hitter::read(const PitchFlight& pitch, const std::string& type, const ScoutingReport& report, const Count& c) {
   PitchRead r;
@@ -90,6 +90,7 @@ SwingInput Hitter::swing(const PitchRead& r, const Count& c) {
   s.sweep = skill_.sweep * (two ? kTwoStrikeSweep : 1.0);
   s.timing_ms = std::clamp(r.timing_error_ms, SwingInput::kTiming.min, SwingInput::kTiming.max);
   s.undercut = std::clamp(kAimUndercut + r.height_error, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
+  s.aim_inside = aim_inside_;
   s.reach_error = std::clamp(r.away_error, SwingInput::kReach.min, SwingInput::kReach.max);
   // He meets it where he sees it: an inside pitch out front.
   s.contact_lead = contact_lead_for(inside_by(r.seen, left_));

@@ -61,7 +61,8 @@ double zone_swing_share(const Count& count);
 
 class Hitter {
  public:
-  Hitter(const BatterSkill& skill, bool left_handed, std::uint64_t seed);
+  /// `aim_inside`: where along his bat he aims (aim_inside() of his skill and bat).
+  Hitter(const BatterSkill& skill, bool left_handed, std::uint64_t seed, double aim_inside);
   /// His read of `pitch` of type `type` (its name) from `pitcher` as he sees it at the commit point.
   PitchRead read(const PitchFlight& pitch, const std::string& type, const ScoutingReport& pitcher, const Count& count);
   /// Whether he offers at the pitch as he read it.
@@ -74,6 +75,7 @@ class Hitter {
  private:
   BatterSkill skill_;
   bool left_;
+  double aim_inside_;
   Rng rng_;
 };
 

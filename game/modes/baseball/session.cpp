@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "game/modes/baseball/ball_game.hpp"
+#include "game/modes/baseball/aim.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -52,7 +53,7 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
         trial.undercut = u;
         FieldingSetup flight_only;
         flight_only.field = false;
-        const SwingResult r = swing_at(assets_, pitch, trial, skill_.bat_speed, "maple", flight_only);
+        const SwingResult r = swing_at(assets_, pitch, trial, skill_.bat_speed, kGameBat, flight_only);
         if (!r.contact || r.outcome == BattedOutcome::Foul) return -200.0;
         const Vec3& land = r.shot.trajectory.summary.landing_position;
         return (r.outcome == BattedOutcome::HomeRun ? 30.0 : 0.0) + std::hypot(land.x(), land.z()) -
@@ -114,7 +115,7 @@ std::vector<SwingRecord> run_session(const Assets& assets, const SessionOptions&
   }
   // An at-bat: the league's pitcher against the bot's skill, pitch by pitch (ball_game.hpp).
   Team pitching(assets, "pitching", bot.skill(), seed);
-  Hitter hitter(bot.skill(), o.left_handed, seed ^ 0xB47B47B47ULL);
+  Hitter hitter(bot.skill(), o.left_handed, seed ^ 0xB47B47B47ULL, aim_inside(assets, bot.skill(), kGameBat));
   const PlateAppearance pa = plate_appearance(assets, hitter, pitching);
   for (const PitchRecord& p : pa.pitches) {
     SwingRecord rec;

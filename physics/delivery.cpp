@@ -138,6 +138,10 @@ double bat_ball_reach(const BatSpec& bat, const BallSpec& ball, double from_tip)
   return bat.radius_at(bat.length) + std::sqrt(ball.radius * ball.radius - over * over);
 }
 
+Range bat_contact_range(const BatSpec& bat, const BallSpec& ball) {
+  return Range{-kEndCapReach * ball.radius, bat.length - bat.pivot_from_knob - 0.05};
+}
+
 void validate_bat_swing(const BatSwing& w, const BatSpec& bat, const BallSpec& ball) {
   check_range("swing.speed", w.bat_speed, BatSwing::kBatSpeed, "m/s");
   check_range("swing.attack_angle", w.attack_angle, BatSwing::kAttackAngle, "rad");
@@ -147,9 +151,8 @@ void validate_bat_swing(const BatSwing& w, const BatSpec& bat, const BallSpec& b
   check_range("swing.undercut", w.undercut, BatSwing::kUndercut, "m");
   // The bat narrows both: the contact must be on the barrel beyond the hands (or the ball's
   // edge on the end cap's rim), and the ball centre within reach of the bat's surface there.
-  const double reach = bat.length - bat.pivot_from_knob - 0.05;
   check_range("swing.impact_from_tip (bat '" + bat.name + "': the barrel beyond 5 cm past the pivot, or 95 % of the ball's radius past the tip)",
-              w.impact_from_tip, Range{-kEndCapReach * ball.radius, reach}, "m");
+              w.impact_from_tip, bat_contact_range(bat, ball), "m");
   const double reach_r = bat_ball_reach(bat, ball, w.impact_from_tip);
   check_range("swing.undercut (95 % of bat + ball radius at this contact)", w.undercut,
               Range{-0.95 * reach_r, 0.95 * reach_r, true, true}, "m");
@@ -291,7 +294,7 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   const Vec3 knob = on_axis - from_knob * axis;
   const Vec3 contact = ball_centre - ball.radius * n;
   const Vec3 pivot = knob + bat.pivot_from_knob * axis;
-  const double sweet_arm = bat.length - bat.sweet_spot_from_tip - bat.pivot_from_knob;
+  const double sweet_arm = bat.sweet_arm();
   const Vec3 omega = (swing.bat_speed / sweet_arm) * up;  // ω × (arm·axis) = bat_speed·d
 
   // Bat frame -> world: x along the axis, y = up, z = -d (right-handed).

@@ -94,6 +94,9 @@ void validate_pitch(const Pitch& pitch);
 /// within this share of its radius beyond the tip (BatSwing::impact_from_tip); the share keeps
 /// the tilted normal off the axis.
 inline constexpr double kEndCapReach = 0.95;
+/// Where along `bat` (m from the tip) a ball can meet it: from its edge on the end cap's rim,
+/// kEndCapReach of its radius past the tip, in to 5 cm outside the swing's pivot.
+Range bat_contact_range(const BatSpec& bat, const BallSpec& ball);
 /// From the bat's axis to the ball's centre at contact `from_tip` m from the tip: the barrel's
 /// radius and the ball's; past the tip, the ball's edge on the end cap's rim.
 double bat_ball_reach(const BatSpec& bat, const BallSpec& ball, double from_tip);

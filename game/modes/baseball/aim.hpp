@@ -25,6 +25,9 @@ class Assets;
 /// highest over his reach error (read_reach_sd and eye_sd) and his timing error
 /// (read_timing_sd_ms, turning the bat at its sweet spot's speed over its arm); a ball past the
 /// end of the bat counts as no exit speed.
+/// It allows for his read's scatter only: not for the bias of a type he misreads (early on a
+/// changeup he took for the fastball), nor for his shorter two-strike swing; and it never aims
+/// out toward the tip (≥ 0).
 double aim_inside(const Assets& assets, const BatterSkill& skill, const std::string& bat_name);
 
 }  // namespace sweetspot

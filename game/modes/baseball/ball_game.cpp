@@ -4,8 +4,8 @@
 #include <array>
 #include <cmath>
 
-#include "game/modes/baseball/aim.hpp"
 #include "game/content/resolve.hpp"
+#include "game/modes/baseball/aim.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 

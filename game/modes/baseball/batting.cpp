@@ -201,12 +201,11 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   BatSwing s;
   check_range("swing.effort", in.effort, SwingInput::kEffort, "");
   s.bat_speed = bat_speed * (in.power ? 1.0 : 0.92) * in.effort;
-  const double sweet_arm = bat.length - bat.sweet_spot_from_tip - bat.pivot_from_knob;
   check_range("swing.contact_lead", in.contact_lead, SwingInput::kContactLead, "rad");
   check_range("swing.aim_inside", in.aim_inside, SwingInput::kAimInside, "m");
   // Turned past where he meant to meet it (+ late), from square: the bat met a pitch he meant
   // to meet out front that much sooner round its arc.
-  const double turned = s.bat_speed / sweet_arm * 1e-3 * in.timing_ms - in.contact_lead;  // rad
+  const double turned = bat_turn(s.bat_speed, bat, in.timing_ms) - in.contact_lead;  // rad
   s.direction = std::clamp(turned, BatSwing::kDirection.min, BatSwing::kDirection.max);
   s.attack_angle = std::clamp(attack_angle_at(in.attack_angle, in.swing_tilt, turned), BatSwing::kAttackAngle.min,
                               BatSwing::kAttackAngle.max);
@@ -215,8 +214,11 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   const double m = in.left_handed ? -1.0 : 1.0;
   const Vec3 v(pitch.plate_velocity.x(), pitch.plate_velocity.y(), m * pitch.plate_velocity.z());
   const Vec3 w(m * pitch.plate_spin.x(), m * pitch.plate_spin.y(), pitch.plate_spin.z());
+  // On time the bat is turned by his lead and meets the ball 1/cos(lead) out along its axis
+  // from where the ball's line passes: he aims the pitch's line that much nearer.
   const BallCrossing met = meet_ball(v, in.attack_angle, vertical_bat_angle_at(in.attack_angle, in.swing_tilt, 0.0),
-                                     sweet_arm * std::cos(in.contact_lead) - in.aim_inside + in.reach_error, in.undercut, -turned);
+                                     (bat.sweet_arm() - in.aim_inside) * std::cos(in.contact_lead) + in.reach_error,
+                                     in.undercut, -turned);
   s.impact_from_tip = bat.length - bat.pivot_from_knob - met.from_pivot;
   s.undercut = met.undercut;
   s.vertical_bat_angle = std::clamp(vertical_bat_angle_at(in.attack_angle, in.swing_tilt, turned),
@@ -233,7 +235,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   out.past_end = !through && s.impact_from_tip < -kEndCapReach * ball.radius;
   out.through = through;
   if (through || out.past_end) return out;
-  s.impact_from_tip = std::min(s.impact_from_tip, kHandsFromTip);
+  s.impact_from_tip = std::min({s.impact_from_tip, kHandsFromTip, bat_contact_range(bat, ball).max});
   Delivery d;
   try {
     d = deliver_baseball(ball, bat, s, v, w, bat.material);
@@ -242,6 +244,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   }
   LaunchMetrics L = measure_launch(d.launch);
   out.contact = true;
+  out.impact_from_tip = s.impact_from_tip;
   out.contact_time = d.contact_time;
   out.normal_impulse = d.impact.normal_impulse;
   out.tracking = track_swing(path, bat, pitch_speed, L.ball_speed);

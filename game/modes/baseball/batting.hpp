@@ -3,6 +3,7 @@
 // foul lines decide home runs and fouls; a fielding model decides the rest.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "game/modes/baseball/bat_tracking.hpp"
 #include "game/modes/baseball/fielding.hpp"
 #include "game/modes/baseball/pitching.hpp"
+#include "physics/equipment.hpp"
 
 namespace sweetspot {
 
@@ -104,13 +106,18 @@ double contact_lead_for(double inside);
 /// middle: + z is away from a right-handed batter.
 inline double inside_by(const Vec3& plate, bool left_handed) { return (left_handed ? 1.0 : -1.0) * plate.z(); }
 
+/// m: the spread of where a hitter's bat passes the ball along the barrel, his read of its
+/// reach and his eye's error together (Hitter::read draws both).
+inline double reach_scatter(const BatterSkill& skill) { return std::hypot(skill.read_reach_sd, skill.eye_sd); }
+
 /// Timing turns the bat's direction at contact by its angular speed: the sweet spot's speed
 /// over its distance from the pivot. The bat turns about a point very close to its knob (A. M.
 /// Nathan, J. J. Crisco, R. M. Greenwald, D. A. Russell & L. V. Smith, "A comparative study of
 /// baseball bat performance", Sports Eng. 13 (2011) 153; bats.toml), ~2.7°/ms for 71.5 mph on
 /// the maple bat, so ~10 ms early or late sends the ball down a foul line (R. K. Adair, The
 /// Physics of Baseball: "1/100 s early, the ball goes foul down the left-field line"). Where
-/// the turned bat meets the ball: meet_ball.
+/// the turned bat meets the ball: meet_ball. Returns rad for `ms` milliseconds off time.
+inline double bat_turn(double bat_speed, const BatSpec& bat, double ms) { return bat_speed / bat.sweet_arm() * 1e-3 * ms; }
 
 /// Where the bat's axis crosses the ball's path. The bat turns about its pivot in the plane
 /// of its path (spanned by the on-time path, climbing at `attack`, and the level bat axis,
@@ -159,6 +166,8 @@ struct SwingResult {
   /// The contact (with contact): how long the ball was on the bat (s) and the impulse it took
   /// along the normal (N·s), what its sound is made from.
   double contact_time = 0.0, normal_impulse = 0.0;
+  /// With contact: m from the tip where the ball met the bat (the end cap past 0).
+  double impact_from_tip = 0.0;
   /// Where the bat's axis crossed the ball's line (meet_ball): the ball's centre above it (m,
   /// + the bat passed under the ball), and whether that was past the end of the bat, farther
   /// than the ball's edge reaches its end cap: why a swing missed.
@@ -185,10 +194,10 @@ struct FieldingSetup {
   bool field = true;  ///< false: the flight alone (home run, foul or in play), nobody fields it
 };
 
-/// Swings at `pitch` with `bat` ("maple", bats.toml) for a batter whose power swing is
+/// Swings at `pitch` with `bat` (bats.toml) for a batter whose power swing is
 /// `bat_speed` m/s. Deterministic for a given `fielding.rng` state.
 SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const SwingInput& in, double bat_speed,
-                     const std::string& bat = "maple", const FieldingSetup& fielding = {});
+                     const std::string& bat = kGameBat, const FieldingSetup& fielding = {});
 
 /// Home plate to the foot of the fence (m) at spray angle `spray` (rad, + toward first
 /// base) on a world with a fence line; infinity outside its ends.

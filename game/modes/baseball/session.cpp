@@ -5,8 +5,8 @@
 #include <map>
 #include <utility>
 
-#include "game/modes/baseball/ball_game.hpp"
 #include "game/modes/baseball/aim.hpp"
+#include "game/modes/baseball/ball_game.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot {
@@ -36,6 +36,8 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
   s.swing_tilt = skill_.swing_tilt;
   s.sweep = skill_.sweep;
   s.contact_lead = contact_lead_for(inside_by(pitch.plate, left_handed));
+  // A batting-practice lob comes where he expects it along the bat (no reach error here), so
+  // he aims at the sweet spot itself (aim.hpp is for the live hitter's scatter).
   double timing = 0.0;
   if (derby) {
     // Where to meet the ball to clear the fence by the most: how early (pulling toward the

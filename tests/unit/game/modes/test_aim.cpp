@@ -2,7 +2,6 @@
 // makes worth it, checked against the game's own swings.
 #include <catch2/catch.hpp>
 
-#include <cmath>
 #include <vector>
 
 #include "game/modes/baseball/aim.hpp"
@@ -24,6 +23,15 @@ const PitchFlight& fastball() {
   return f;
 }
 
+SwingInput swing_of(const BatterSkill& skill) {
+  SwingInput s;
+  s.attack_angle = skill.attack_angle;
+  s.swing_tilt = skill.swing_tilt;
+  s.sweep = skill.sweep;
+  s.undercut = 0.005;
+  return s;
+}
+
 // His mean exit speed (m/s; a miss counts 0) over `n` swings at the league's fastball through
 // swing_at, aiming `aim` m inside the sweet spot, with his reach and timing reads' scatter.
 // The same draws for every aim, so aims are compared on the same swings.
@@ -31,40 +39,42 @@ double mean_exit_speed(const BatterSkill& skill, double aim, int n) {
   Rng rng(20261129);
   FieldingSetup flight_only;
   flight_only.field = false;
-  const double reach_sd = std::hypot(skill.read_reach_sd, skill.eye_sd);
   double sum = 0.0;
   for (int i = 0; i < n; ++i) {
-    SwingInput s;
-    s.attack_angle = skill.attack_angle;
-    s.swing_tilt = skill.swing_tilt;
-    s.sweep = skill.sweep;
-    s.undercut = 0.005;
+    SwingInput s = swing_of(skill);
     s.aim_inside = aim;
     s.timing_ms = rng.normal(skill.read_timing_sd_ms);
-    s.reach_error = rng.normal(reach_sd);
+    s.reach_error = rng.normal(reach_scatter(skill));
     const SwingResult r = swing_at(test::assets(), fastball(), s, skill.bat_speed, kGameBat, flight_only);
     if (r.contact) sum += r.shot.launch.ball_speed;
   }
   return sum / n;
 }
 
+double aim_of(const BatterSkill& skill) { return aim_inside(test::assets(), skill, kGameBat); }
+
 }  // namespace
 
 TEST_CASE("a hitter aims inside the sweet spot, the farther the more he scatters", "[baseball][aim]") {
-  const double pro = aim_inside(test::assets(), batter_skill("pro"), kGameBat);
-  const double amateur = aim_inside(test::assets(), batter_skill("amateur"), kGameBat);
-  INFO("pro " << pro << " m, amateur " << amateur << " m inside the sweet spot");
-  // On the barrel: inside the sweet spot, short of the 30 cm where the barrel narrows to the
-  // handle and the exit speed falls away (bats.toml's cor_profile).
-  CHECK(pro > 0.02);
-  CHECK(pro < 0.15);
-  CHECK(amateur > pro);
-  // Without scatter there is nothing to allow for: he aims where the ball leaves fastest, at
-  // the sweet spot (within the 6 in definition's neighbourhood where the exit speed peaks).
-  BatterSkill perfect = batter_skill("pro");
-  perfect.read_reach_sd = perfect.eye_sd = 0.0;
-  perfect.read_timing_sd_ms = 0.0;
-  CHECK(aim_inside(test::assets(), perfect, kGameBat) < 0.02);
+  const BatterSkill& pro = batter_skill("pro");
+  const double aim = aim_of(pro);
+  INFO("the pro aims " << aim << " m inside the sweet spot");
+  // On the barrel: inside the sweet spot, short of where it narrows to the handle and the exit
+  // speed falls away (bats.toml's cor_profile, 30 cm from the tip).
+  CHECK(aim > 0.02);
+  CHECK(aim < 0.15);
+  // Each scatter alone moves it: more timing spread carries his contacts farther out along
+  // the turned bat, more reach spread sends more of them past the end.
+  BatterSkill later = pro, wider = pro, steady = pro;
+  later.read_timing_sd_ms *= 1.5;
+  wider.read_reach_sd *= 1.5;
+  steady.read_timing_sd_ms = 0.0;
+  steady.read_reach_sd = steady.eye_sd = 0.0;
+  CHECK(aim_of(later) > aim);
+  CHECK(aim_of(wider) > aim);
+  // Without scatter there is nothing to allow for: he aims where the ball leaves fastest, the
+  // barrel's node about the 6 in sweet spot (its exit speed is flat within 2 cm of it).
+  CHECK(aim_of(steady) < 0.02);
 }
 
 // The aim is found on a flat model of the swing (the ball's line square to the bat's arc); the
@@ -72,7 +82,8 @@ TEST_CASE("a hitter aims inside the sweet spot, the farther the more he scatters
 // still be highest at that aim: 5 cm either way costs more than the draws' noise.
 TEST_CASE("the aim gives the game's own swings their best mean exit speed", "[baseball][aim][statistics]") {
   const BatterSkill& pro = batter_skill("pro");
-  const double aim = aim_inside(test::assets(), pro, kGameBat);
+  const double aim = aim_of(pro);
+  REQUIRE(aim >= 0.05);
   const int n = 600;
   const double at = mean_exit_speed(pro, aim, n);
   const double outer = mean_exit_speed(pro, aim - 0.05, n), inner = mean_exit_speed(pro, aim + 0.05, n);
@@ -82,6 +93,32 @@ TEST_CASE("the aim gives the game's own swings their best mean exit speed", "[ba
   CHECK(at > outer);
   CHECK(at > inner);
   CHECK(at > sweet);
+}
+
+// Met on time the ball lands `aim` inside where it lands aiming at the sweet spot, out front
+// (a lead toward the pull side for an inside pitch) as square: the lead turns the bat, not the
+// aim. (Aiming the pitch's line `aim` nearer on a turned bat would put it aim/cos(lead) in.)
+TEST_CASE("on time the ball meets the bat where he aimed, however far out front", "[baseball][aim]") {
+  const BatterSkill& pro = batter_skill("pro");
+  const BatSpec& bat = test::assets().equipment().bat(kGameBat);
+  const auto met = [&](double lead, double aim) {
+    SwingInput s = swing_of(pro);
+    s.contact_lead = lead;
+    s.aim_inside = aim;
+    FieldingSetup flight_only;
+    flight_only.field = false;
+    const SwingResult r = swing_at(test::assets(), fastball(), s, pro.bat_speed, kGameBat, flight_only);
+    REQUIRE(r.contact);
+    return r.impact_from_tip;
+  };
+  for (const double lead : {0.0, 0.5, -0.5}) {
+    const double at_sweet = met(lead, 0.0), inside = met(lead, 0.06);
+    INFO("lead " << lead << " rad: met " << at_sweet << " m from the tip aiming at the sweet spot, " << inside
+                 << " aiming 6 cm inside");
+    // The pitch's descent through the tilted plane moves the crossing a few mm along the bat.
+    CHECK(at_sweet == Approx(bat.sweet_spot_from_tip).margin(0.015));
+    CHECK(inside - at_sweet == Approx(0.06).margin(0.0015));
+  }
 }
 
 TEST_CASE("the game's hitter swings with his aim", "[baseball][aim]") {

@@ -181,6 +181,12 @@ struct SwingResult {
 /// The foul-tip cone around the pitch's line (see SwingResult::foul_tip).
 inline constexpr double kFoulTipCone = 0.349;  // rad, 20°
 
+/// Where on `bat` a ball met `from_tip` m from the tip was struck, in a hitter's words: "on
+/// the barrel" over the plateau where the bat's restitution is whole (bats.toml's cor_profile:
+/// the vibrations a rigid bat lacks cost nothing there), else "off the end of the bat" out
+/// toward the tip or "in on the hands" toward the handle.
+const char* contact_spot(const BatSpec& bat, double from_tip);
+
 /// Statcast: hard-hit EV ≥ 95 mph; sweet spot LA 8–32°; barrel LA ≤ 50, EV ≥ 98,
 /// 1.5·EV − LA ≥ 117, EV + LA ≥ 124 (EV mph, LA deg).
 bool is_barrel(double ev_mph, double la_deg);

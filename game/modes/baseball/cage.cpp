@@ -10,6 +10,28 @@
 
 namespace sweetspot {
 
+std::string miss_call(const SwingResult& r, double timing_ms) {
+  // Why the bat missed: early or late, the ball past the end of the bat; or above or below it
+  // where they crossed (off time the crossing moves: early over the ball, late under it).
+  constexpr double kReach = 0.066;  // m, the bat's and the ball's radii together (95 %)
+  const char* when = timing_ms >= 0 ? "late" : "early";
+  char text[160];
+  const double under = r.crossing_undercut, miss = std::abs(under) - kReach;
+  if (r.through)
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", when, std::abs(timing_ms),
+                  timing_ms >= 0 ? "not yet round" : "already through the zone");
+  else if (r.past_end)
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat", when, std::abs(timing_ms));
+  else if (miss > 0.0 && miss < 0.0095)  // under a centimetre it reads in millimetres, never "0 cm"
+    std::snprintf(text, sizeof text, "Swinging strike: the bat passed %.0f mm %s the ball", std::max(1.0, std::round(1000.0 * miss)),
+                  under > 0.0 ? "under" : "over");
+  else if (miss > 0.0)
+    std::snprintf(text, sizeof text, "Swinging strike: the bat passed %.0f cm %s the ball", 100.0 * miss, under > 0.0 ? "under" : "over");
+  else
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms", when, std::abs(timing_ms));
+  return text;
+}
+
 BattingCage::BattingCage(const Assets& assets, std::uint64_t seed)
     : assets_(assets),
       types_(load_pitch_types(assets)),
@@ -124,27 +146,13 @@ void BattingCage::swing(const SwingInput& s, double t) {
     std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %.0f ft", words.c_str(),
                   mps_to_mph(last_.result.shot.launch.ball_speed), rad_to_deg(last_.result.shot.launch.vertical_angle),
                   m_to_ft(last_.result.shot.trajectory.summary.carry_m));
+    call_text_ = text;
     batted_at_ = t;
     stage_ = Stage::Batted;
   } else {
-    // Why the bat missed: early or late, the ball past the end of the bat; or above or below
-    // it where they crossed (off time the crossing moves: early over the ball, late under it).
-    constexpr double kReach = 0.066;  // m, the bat's and the ball's radii together (95 %)
-    const double under = last_.result.crossing_undercut;
-    if (last_.result.through)
-      std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", s.timing_ms >= 0 ? "late" : "early",
-                    std::abs(s.timing_ms), s.timing_ms >= 0 ? "not yet round" : "already through the zone");
-    else if (last_.result.past_end)
-      std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat", s.timing_ms >= 0 ? "late" : "early",
-                    std::abs(s.timing_ms));
-    else if (std::abs(under) > kReach)
-      std::snprintf(text, sizeof text, "Swinging strike: the bat passed %.0f cm %s the ball", 100.0 * (std::abs(under) - kReach),
-                    under > 0.0 ? "under" : "over");
-    else
-      std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms", s.timing_ms >= 0 ? "late" : "early", std::abs(s.timing_ms));
+    call_text_ = miss_call(last_.result, s.timing_ms);
     stage_ = Stage::Called;
   }
-  call_text_ = text;
   if (live_) {
     const BattedOutcome o = last_.result.outcome;
     count_pitch(!last_.result.contact     ? PitchResult::SwingingStrike
@@ -154,8 +162,9 @@ void BattingCage::swing(const SwingInput& s, double t) {
   if (stage_ == Stage::Batted) {
     // While the ball flies the call is its launch, as a broadcast shows it; the outcome when it lands.
     outcome_text_ = call_text_;
-    std::snprintf(text, sizeof text, "%.0f mph off the bat, %.0f deg", mps_to_mph(last_.result.shot.launch.ball_speed),
-                  rad_to_deg(last_.result.shot.launch.vertical_angle));
+    std::snprintf(text, sizeof text, "%.0f mph off the bat, %.0f deg, %s", mps_to_mph(last_.result.shot.launch.ball_speed),
+                  rad_to_deg(last_.result.shot.launch.vertical_angle),
+                  contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip));
     call_text_ = text;
   }
 }

@@ -16,6 +16,10 @@
 
 namespace sweetspot {
 
+/// The call for a swing that missed, in a hitter's words: early or late by how much and why
+/// (through the zone, past the end of the bat), or how far over or under the ball the bat went.
+std::string miss_call(const SwingResult& result, double timing_ms);
+
 class BattingCage {
  public:
   enum class Stage { Ready, Pitching, Batted, Called };

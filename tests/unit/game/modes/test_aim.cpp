@@ -2,6 +2,7 @@
 // makes worth it, checked against the game's own swings.
 #include <catch2/catch.hpp>
 
+#include <string>
 #include <vector>
 
 #include "game/modes/baseball/aim.hpp"
@@ -126,4 +127,15 @@ TEST_CASE("the game's hitter swings with his aim", "[baseball][aim]") {
   PitchRead r;
   r.seen = fastball().plate;
   CHECK(h.swing(r, Count{}).aim_inside == 0.0625);
+}
+
+// A hitter's words for where he met it, from the bat's own restitution plateau (bats.toml:
+// whole from 4 to 9 in from the maple's tip).
+TEST_CASE("where on the bat: off the end, on the barrel, in on the hands", "[baseball][aim]") {
+  const BatSpec& maple = test::assets().equipment().bat(kGameBat);
+  CHECK(std::string(contact_spot(maple, -0.02)) == "off the end of the bat");
+  CHECK(std::string(contact_spot(maple, 0.05)) == "off the end of the bat");
+  CHECK(std::string(contact_spot(maple, maple.sweet_spot_from_tip)) == "on the barrel");
+  CHECK(std::string(contact_spot(maple, 0.22)) == "on the barrel");
+  CHECK(std::string(contact_spot(maple, 0.35)) == "in on the hands");
 }

@@ -80,6 +80,9 @@ TEST_CASE("a pitch left alone is called; the pro swings on request; restart clea
   // While the batted ball flies the call is its launch; its outcome when it comes down.
   REQUIRE(cage.stage() == BattingCage::Stage::Batted);
   CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("mph off the bat"));
+  // ... and where on the bat he met it.
+  CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("on the barrel") || Catch::Matchers::Contains("off the end of the bat") ||
+                                   Catch::Matchers::Contains("in on the hands"));
   cage.update({}, arrive + 30.0);
   CHECK(cage.stage() == BattingCage::Stage::Called);
   CHECK_THAT(cage.call_text(), !Catch::Matchers::Contains("mph off the bat"));
@@ -136,4 +139,20 @@ TEST_CASE("B between pitches calls for one and the pro swings at it, at the same
     CHECK(cage.swung_at() == Approx(contact).margin(1e-9));
   }
   CHECK(timings[0] == timings[1]);
+}
+
+TEST_CASE("a miss is called in a hitter's words, never '0 cm'", "[modes][baseball]") {
+  SwingResult r;
+  r.crossing_undercut = 0.066 + 0.004;  // the bat 4 mm under the ball's edge
+  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 4 mm under the ball");
+  r.crossing_undercut = -(0.066 + 0.0002);
+  CHECK(miss_call(r, -3.0) == "Swinging strike: the bat passed 1 mm over the ball");
+  r.crossing_undercut = 0.066 + 0.031;
+  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 3 cm under the ball");
+  r.crossing_undercut = 0.0;
+  r.past_end = true;
+  CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, past the end of the bat");
+  r.past_end = false;
+  r.through = true;
+  CHECK(miss_call(r, 48.0) == "Swinging strike: late by 48 ms, the bat not yet round");
 }

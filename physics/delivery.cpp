@@ -139,7 +139,7 @@ double bat_ball_reach(const BatSpec& bat, const BallSpec& ball, double from_tip)
 }
 
 Range bat_contact_range(const BatSpec& bat, const BallSpec& ball) {
-  return Range{-kEndCapReach * ball.radius, bat.length - bat.pivot_from_knob - 0.05};
+  return Range{-kEndCapReach * ball.radius, bat.pivot_to_tip() - 0.05};
 }
 
 void validate_bat_swing(const BatSwing& w, const BatSpec& bat, const BallSpec& ball) {

@@ -119,8 +119,10 @@ struct BatSpec {
   /// Empty = 1 everywhere.
   std::vector<std::pair<double, double>> cor_profile;
 
+  /// m from the swing's pivot out to the tip: a point `from_pivot` out lies this less it from the tip.
+  double pivot_to_tip() const { return length - pivot_from_knob; }
   /// m from the swing's pivot out to the sweet spot: the arm the bat turns the sweet spot on.
-  double sweet_arm() const { return length - sweet_spot_from_tip - pivot_from_knob; }
+  double sweet_arm() const { return pivot_to_tip() - sweet_spot_from_tip; }
   /// Barrel radius (m) at `from_knob` (m), linear between profile points, 0 outside.
   double radius_at(double from_knob) const;
   /// Restitution factor at `from_tip` (m), linear between cor_profile points, held at ends.

@@ -57,35 +57,40 @@ ExitSpeedProfile exit_speed_profile(const BallSpec& ball, const BatSpec& bat, do
   return p;
 }
 
-std::vector<double> normal_nodes(int n) {
-  std::vector<double> z(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) z[static_cast<std::size_t>(i)] = -kSpan + 2.0 * kSpan * i / (n - 1);
-  return z;
-}
+// The grid's standard-normal values and their (unnormalised) weights.
+struct NormalNodes {
+  std::vector<double> z, w;
+  explicit NormalNodes(int n) {
+    for (int i = 0; i < n; ++i) {
+      z.push_back(-kSpan + 2.0 * kSpan * i / (n - 1));
+      w.push_back(std::exp(-0.5 * z.back() * z.back()));
+    }
+  }
+};
 
 double best_aim_inside(const BallSpec& ball, const BatSpec& bat, const BatterSkill& skill) {
   const ExitSpeedProfile profile = exit_speed_profile(ball, bat, skill.bat_speed);
   const double reach_sd = reach_scatter(skill);
   const double turn_sd = bat_turn(skill.bat_speed, bat, skill.read_timing_sd_ms);
-  const std::vector<double> zt = normal_nodes(kTurnNodes), zr = normal_nodes(kReachNodes);
+  const NormalNodes turn(kTurnNodes), reach(kReachNodes);
   double weight = 0.0;  // the same for every aim: each node's, misses included
-  for (const double a : zt)
-    for (const double b : zr) weight += std::exp(-0.5 * (a * a + b * b));
+  for (const double a : turn.w)
+    for (const double b : reach.w) weight += a * b;
   double chosen = 0.0, best = -1.0;
   const int aims = static_cast<int>(std::lround(kAimMax / kAimStep));
   for (int k = 0; k <= aims; ++k) {
     const double aim = k * kAimStep;
     double sum = 0.0;
-    for (const double a : zt) {
-      const double turned = turn_sd * a;
+    for (std::size_t i = 0; i < turn.z.size(); ++i) {
+      const double turned = turn_sd * turn.z[i];
       // Turned past a right angle the bat is through the zone: no crossing, a miss.
       if (std::abs(turned) >= 0.5 * kPi) continue;
       const double cos_turned = std::cos(turned);
-      for (const double b : zr) {
-        const double from_pivot = (bat.sweet_arm() - aim + reach_sd * b) / cos_turned;
-        const double from_tip = bat.length - bat.pivot_from_knob - from_pivot;
+      for (std::size_t j = 0; j < reach.z.size(); ++j) {
+        const double from_pivot = (bat.sweet_arm() - aim + reach_sd * reach.z[j]) / cos_turned;
+        const double from_tip = bat.pivot_to_tip() - from_pivot;
         if (from_tip < profile.first_from_tip) continue;  // past the end of the bat: a miss
-        sum += std::exp(-0.5 * (a * a + b * b)) * profile.at(std::min(from_tip, profile.last_from_tip));
+        sum += turn.w[i] * reach.w[j] * profile.at(std::min(from_tip, profile.last_from_tip));
       }
     }
     if (sum / weight > best) {

@@ -20,7 +20,7 @@ BatTracking track_swing(const SwingPath& s, const BatSpec& bat, double pitch_spe
   t.bat_speed_mps = s.bat_speed;
   // The bat turns about its pivot at the knob: its head runs on a circle of the length beyond
   // the pivot.
-  t.swing_length_m = (bat.length - bat.pivot_from_knob) * s.sweep;
+  t.swing_length_m = bat.pivot_to_tip() * s.sweep;
   t.attack_angle_deg = rad_to_deg(s.attack_angle);
   t.attack_direction_deg = rad_to_deg(s.direction);
   t.swing_path_tilt_deg = rad_to_deg(s.tilt);

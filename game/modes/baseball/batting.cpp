@@ -224,7 +224,7 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   const BallCrossing met = meet_ball(v, in.attack_angle, vertical_bat_angle_at(in.attack_angle, in.swing_tilt, 0.0),
                                      (bat.sweet_arm() - in.aim_inside) * std::cos(in.contact_lead) + in.reach_error,
                                      in.undercut, -turned);
-  s.impact_from_tip = bat.length - bat.pivot_from_knob - met.from_pivot;
+  s.impact_from_tip = bat.pivot_to_tip() - met.from_pivot;
   s.undercut = met.undercut;
   s.vertical_bat_angle = std::clamp(vertical_bat_angle_at(in.attack_angle, in.swing_tilt, turned),
                                     BatSwing::kVerticalBatAngle.min, BatSwing::kVerticalBatAngle.max);
@@ -237,10 +237,11 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   // end of the bat the ball's edge still catches the end cap's rim up to kEndCapReach of its
   // radius.
   const bool through = !met.crosses || met.from_pivot <= 0.0;
-  out.past_end = !through && s.impact_from_tip < -kEndCapReach * ball.radius;
+  const Range on_bat = bat_contact_range(bat, ball);
+  out.past_end = !through && s.impact_from_tip < on_bat.min;
   out.through = through;
   if (through || out.past_end) return out;
-  s.impact_from_tip = std::min({s.impact_from_tip, kHandsFromTip, bat_contact_range(bat, ball).max});
+  s.impact_from_tip = std::min({s.impact_from_tip, kHandsFromTip, on_bat.max});
   Delivery d;
   try {
     d = deliver_baseball(ball, bat, s, v, w, bat.material);

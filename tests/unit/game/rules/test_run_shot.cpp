@@ -93,10 +93,10 @@ TEST_CASE("aim turns the shot on the world, not its launch numbers", "[run_shot]
 }
 
 TEST_CASE("the lie acts on the strike: a flyer from the rough, a slowed club in the sand", "[run_shot][lie]") {
-  // Grass between face and ball (materials.toml lie_friction): B. Pate (TrackMan, 2020) saw a
-  // light-rough 8-iron at ~2470 rpm against ~8000 clean, launch +2°, ball speed -9 mph;
-  // Coach Micque (FlightScope, 2016) a rough gap wedge at -66 % spin. Research bounds: spin
-  // -40…-75 %, ball speed -3…-8 %, a higher launch.
+  // Grass and water between face and ball (materials.toml lie_friction) lower the face's
+  // grip: less spin and a higher launch together. A wedge study's wet faces (Peterfield Golf,
+  // 2020) lost ~35 % of the spin on average, 10 % for the best wedges and 60 % for the worst,
+  // and launched higher; ball speed falls a few per cent with the club slowed in the grass.
   const Assets& A = test::assets();
   ShotSpec spec;
   auto& c = std::get<ClubStrike>(spec.strike);
@@ -114,11 +114,41 @@ TEST_CASE("the lie acts on the strike: a flyer from the rough, a slowed club in 
   const double speed = rough.launch.ball_speed / clean.launch.ball_speed - 1.0;
   INFO("rough: spin " << 100 * spin << " %, ball speed " << 100 * speed << " %, launch "
                       << rad_to_deg(rough.launch.vertical_angle - clean.launch.vertical_angle) << " deg");
-  CHECK(spin < -0.40);
-  CHECK(spin > -0.75);
+  CHECK(spin < -0.10);
+  CHECK(spin > -0.60);
   CHECK(speed < -0.02);
   CHECK(speed > -0.08);
   CHECK(rough.launch.vertical_angle > clean.launch.vertical_angle);
+}
+
+TEST_CASE("from a wet grassy lie the contact gives TrackMan's launch, spin and ball speed together", "[run_shot][lie]") {
+  // Drive Golf Performance Blog (2014), TrackMan III, 10 shots each from wet grassy lies at
+  // ~10 C: PW 80.1 mph club -> 93.4 mph, 28.6 deg, 5218 rpm; 7-iron 87.3 mph -> 114.1 mph,
+  // 17.7 deg, 5686 rpm. Launch and spin are tied by the face's grip (less grip: higher launch
+  // and less spin), so one lie_friction has to give both; the project's launch bands (ball
+  // speed 3 %, launch 1.5 deg, spin 15 %), the tour delivery's attack (the blog gives none).
+  struct Row {
+    const char* club;
+    double club_mph, attack_deg, ball_mph, launch_deg, spin_rpm;
+  };
+  const Row rows[] = {{"pw", 80.1, -5.0, 93.4, 28.6, 5218}, {"7-iron", 87.3, -4.3, 114.1, 17.7, 5686}};
+  const Assets& A = test::assets();
+  for (const Row& row : rows) {
+    ShotSpec spec;
+    auto& c = std::get<ClubStrike>(spec.strike);
+    c.club = row.club;
+    c.swing.club_speed = mph_to_mps(row.club_mph);
+    c.swing.attack_angle = deg_to_rad(row.attack_deg);
+    spec.placement.x = 150.0;
+    spec.placement.z = 30.0;
+    const ShotResult r = run_shot(resolve(spec, A), "wet", {true, false});
+    REQUIRE(r.lie == "rough");
+    INFO(row.club << ": " << mps_to_mph(r.launch.ball_speed) << " mph, " << rad_to_deg(r.launch.vertical_angle)
+                  << " deg, " << radps_to_rpm(r.launch.spin.total) << " rpm");
+    CHECK(mps_to_mph(r.launch.ball_speed) == Approx(row.ball_mph).epsilon(0.03));
+    CHECK(rad_to_deg(r.launch.vertical_angle) == Approx(row.launch_deg).margin(1.5));
+    CHECK(radps_to_rpm(r.launch.spin.total) == Approx(row.spin_rpm).epsilon(0.15));
+  }
 }
 
 TEST_CASE("values outside what laboratories measure run, with a warning naming the range and source",

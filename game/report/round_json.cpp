@@ -222,7 +222,8 @@ std::string group_table(const GolfGroup& g) {
     if (t.size() < w) t.insert(0, w - t.size(), ' ');
     return t;
   };
-  // Each player's column: gross strokes, a '*' per stroke received, the putts in brackets.
+  // Each player's column: gross strokes, a '*' per stroke received, the putts in brackets, the
+  // penalty strokes (out of bounds, water, unplayable) as "Np", so a 6 with one putt reads.
   std::string head = "hole par  SI";
   for (const GolfPlayer& p : g.players()) head += "  " + pad(p.name.substr(0, 14), 14);
   if (s.format == GolfFormat::Match) head += "  match";
@@ -239,6 +240,7 @@ std::string group_table(const GolfGroup& g) {
       std::snprintf(v, sizeof v, "%s%d%.*s (%d)", c.picked_up ? "PU " : c.conceded ? "conc " : "", ps.gross[h],
                     std::min(ps.received[h], 6), "******", ps.putts[h]);
       std::string cellv = v;
+      if (c.penalties > 0) cellv.append(" ").append(std::to_string(c.penalties)).append("p");
       if (s.format == GolfFormat::Stableford) cellv.append(" ").append(std::to_string(ps.points[h])).append("pt");
       line += "  " + pad(cellv, 14);
     }
@@ -270,7 +272,7 @@ std::string group_table(const GolfGroup& g) {
   if (s.format == GolfFormat::Skins && s.skins->unwon > 0) out += std::to_string(s.skins->unwon) + " skins carried, unwon\n";
   if (s.format == GolfFormat::Match) out += "result: " + s.match->result + "\n";
   else if (s.holes > 0) out += leaders_text(g, s) + "\n";
-  out += "(* a stroke received; putts in brackets; PU picked up)\n";
+  out += "(* a stroke received; putts in brackets; 1p a penalty stroke; PU picked up)\n";
   return out;
 }
 

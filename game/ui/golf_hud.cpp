@@ -130,13 +130,22 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     }
     if (s.match) ImGui::Text("Match: %s", s.match->holes.back().status.c_str());
   }
+  const auto at_rest = [&](const StrokeRecord& last, const std::string& lie) {
+    if (last.club.empty() || last.end != StrokeEnd::Rest) return;
+    const std::string away = last.to_pin_m < 20.0 ? units.putt(last.to_pin_m) : units.distance(last.to_pin_m);
+    ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(lie));
+  };
   if (!play.message().empty() && !in_air) {
     ImGui::Separator();
     ImGui::TextWrapped("%s", play.message().c_str());
-    const StrokeRecord& last = play.last_record();
-    if (!last.club.empty() && last.end == StrokeEnd::Rest) {
-      const std::string away = last.to_pin_m < 20.0 ? units.putt(last.to_pin_m) : units.distance(last.to_pin_m);
-      ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(play.last_rest_lie()));
+    at_rest(play.last_record(), play.last_rest_lie());
+  }
+  // On your turn, your own last stroke on this hole, when somebody else has played since.
+  if (!in_air && play.human_turn() && play.shooter() != play.player()) {
+    if (const GolfPlay::OwnLast* mine = play.own_last(play.player())) {
+      ImGui::Separator();
+      ImGui::TextWrapped("Your last: %s", mine->message.c_str());
+      at_rest(mine->record, mine->rest_lie);
     }
   }
   ImGui::End();
@@ -290,9 +299,10 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
         ImGui::TableNextColumn();
         const HoleCard& c = g.round(static_cast<int>(p)).card()[h];
         const PlayerStanding& ps = s.players[p];
-        char pts[16] = "";
+        char pts[16] = "", pen[16] = "";
         if (s.format == GolfFormat::Stableford) std::snprintf(pts, sizeof pts, " %dpt", ps.points[h]);
-        ImGui::Text("%d%.*s (%d)%s%s", ps.gross[h], std::min(ps.received[h], 4), "****", ps.putts[h], pts,
+        if (c.penalties > 0) std::snprintf(pen, sizeof pen, " %dp", c.penalties);
+        ImGui::Text("%d%.*s (%d)%s%s%s", ps.gross[h], std::min(ps.received[h], 4), "****", ps.putts[h], pen, pts,
                     c.picked_up ? " PU" : c.conceded ? " C" : "");
       }
       if (s.match) {
@@ -335,17 +345,19 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
     }
     ImGui::EndTable();
   }
-  // The key says only what the card shows: strokes received, pick-ups, concessions.
-  bool received = false, picked_up = false, conceded = false;
+  // The key says only what the card shows: strokes received, penalties, pick-ups, concessions.
+  bool received = false, picked_up = false, conceded = false, penalty = false;
   for (std::size_t p = 0; p < n; ++p)
     for (std::size_t h = 0; h < s.holes; ++h) {
       received = received || s.players[p].received[h] > 0;
       const HoleCard& c = g.round(static_cast<int>(p)).card()[h];
       picked_up = picked_up || c.picked_up;
       conceded = conceded || c.conceded;
+      penalty = penalty || c.penalties > 0;
     }
   std::string key = "putts in brackets";
   if (received) key = "* a stroke received (handicap); " + key;
+  if (penalty) key += "; 1p a penalty stroke";
   if (picked_up) key += "; PU picked up";
   if (conceded) key += "; C conceded";
   ImGui::TextDisabled("%s", key.c_str());

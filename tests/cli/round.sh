@@ -58,6 +58,26 @@ j = json.loads(sys.argv[1])
 h = j["holes"][0]
 assert h["shots"][0]["end"] == "water" and h["penalties"] == 1 and h["strokes"] >= 3, h
 PY
+# A group's text card marks each hole's penalty strokes ("6 (1) 1p": a 6 with one putt
+# reads), the same ones the JSON counts, and its key says what "1p" means.
+"$bin" round --bot beginner --bot amateur --seed 3 >"$tmp/card.txt"
+"$bin" round --bot beginner --bot amateur --seed 3 --json >"$tmp/card.json"
+python3 - "$tmp/card.txt" "$tmp/card.json" <<'PY' || fail "penalties on the group card"
+import json, re, sys
+rows = [l for l in open(sys.argv[1]) if re.match(r"^ +\d+ +\d+ +\d+ ", l)]
+j = json.load(open(sys.argv[2]))
+total = 0
+for i, row in enumerate(rows):
+    cells = re.findall(r"(\d+)\*{0,6} \((\d+)\)(?: (\d+)p)?", row)
+    assert len(cells) == 2, row
+    for p, (gross, putts, pen) in enumerate(cells):
+        h = j["players"][p]["holes"][i]
+        assert int(gross) == h["strokes"] and int(putts) == h["putts"], (row, h)
+        assert int(pen or 0) == h["penalties"], (row, h["penalties"])
+        total += h["penalties"]
+assert total > 0, "no penalty in the beginner's round: the check saw nothing"
+assert "1p a penalty stroke" in open(sys.argv[1]).read()
+PY
 
 # A script that runs out mid-round with no bot to play on is an error naming the file, not
 # a card with unfinished holes and exit 0.

@@ -89,6 +89,12 @@ Vec3 GolfPlay::aim_direction() const {
   return Vec3(std::cos(a), 0.0, std::sin(a));
 }
 
+const GolfPlay::OwnLast* GolfPlay::own_last(int player) const {
+  const auto i = static_cast<std::size_t>(player);
+  if (i >= own_last_.size() || !own_last_[i] || own_last_[i]->hole != group_.hole_index()) return nullptr;
+  return &*own_last_[i];
+}
+
 double GolfPlay::flyover_progress(double now) const {
   if (stage_ != Stage::Flyover) return 1.0;
   return std::clamp((now - flyover_at_) / kFlyover, 0.0, 1.0);
@@ -193,6 +199,12 @@ void GolfPlay::land(double t) {
   landed_at_ = t;
   message_ = pending_message_;
   if (!group_.note().empty()) message_ += (message_.empty() ? "" : ". ") + group_.note();
+  // The player's own copy without their name: "stroke 2: 7-iron, ..." reads as theirs.
+  std::string own = pending_message_;
+  const std::string who = group_.players()[static_cast<std::size_t>(shooter_)].name + ", ";
+  if (own.starts_with(who)) own.erase(0, who.size());
+  own_last_.resize(group_.players().size());
+  own_last_[static_cast<std::size_t>(shooter_)] = OwnLast{own, last_record_, last_rest_lie_, round_hole_};
   if (group_.finished()) {
     stage_ = Stage::RoundOver;
   } else if (group_.hole_index() != round_hole_) {
@@ -342,6 +354,7 @@ void GolfPlay::apply(const Intent& in) {
 void GolfPlay::new_round(double t) {
   group_ = GolfGroup(assets_, course_, setup_.players, setup_.options);
   last_record_ = StrokeRecord{};
+  own_last_.clear();
   pending_message_.clear();
   meter_.reset();
   last_meter_.reset();
@@ -369,6 +382,7 @@ void GolfPlay::restart_hole(double t) {
   group_.replay(before);
   meter_.reset();
   last_record_ = StrokeRecord{};
+  own_last_.clear();
   pending_message_.clear();
   landed_at_ = t;
   stage_ = Stage::Aiming;

@@ -79,6 +79,16 @@ class GolfPlay {
   /// The last stroke's record (where it started and stopped) and the lie it stopped on.
   const StrokeRecord& last_record() const { return last_record_; }
   const std::string& last_rest_lie() const { return last_rest_lie_; }
+  /// A player's own last stroke on the hole being played: what it did and where it stopped.
+  /// The HUD shows it on their turn, when somebody else has played since.
+  struct OwnLast {
+    std::string message;   ///< as message() told it
+    StrokeRecord record;
+    std::string rest_lie;  ///< the lie it stopped on ("holed" when it went in)
+    std::size_t hole = 0;  ///< the group's hole it was played on
+  };
+  /// `player`'s last stroke on the current hole; null before their first on it.
+  const OwnLast* own_last(int player) const;
   /// Strokes cancelled with Esc this round (none of them counted).
   int cancelled() const { return cancelled_; }
   /// The flyover's progress, 0 at the tee... 1 done (the view flies the camera with it).
@@ -133,6 +143,7 @@ class GolfPlay {
   StrokeRecord last_record_;
   std::string last_rest_lie_;
   std::string pending_message_;  ///< the stroke's result, told when the ball stops
+  std::vector<std::optional<OwnLast>> own_last_;  ///< per player, set when their ball stops
   double struck_at_ = 0.0, landed_at_ = 0.0, turn_at_ = 0.0, flyover_at_ = 0.0;
   std::string message_;
   int cancelled_ = 0;

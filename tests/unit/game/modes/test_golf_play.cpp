@@ -197,6 +197,41 @@ TEST_CASE("a bot takes its own turn, and a stroke's result is told once the ball
   CHECK(play.group().events().back().drawn);
 }
 
+TEST_CASE("on your turn your own last stroke is kept for you after the bot has played", "[modes][golf]") {
+  // The HUD tells the latest stroke, which is the bot's by the time you play again; your own
+  // last one on the hole stays, without your name, until the hole ends.
+  GolfSetup setup = default_golf_setup(golfer_skill("scratch"), 7);
+  setup.flyover = false;
+  GolfPlay play(test::assets(), first_hole(), setup);
+  REQUIRE(play.human_turn());
+  CHECK(play.own_last(0) == nullptr);
+  play.update({at(IntentKind::CaddiePlays, 1.0)}, 1.1);
+  const StrokeRecord mine = play.last_record();
+  double t = 1.0 + duration(play.last_shot().trajectory) + 0.01;
+  play.update({}, t);
+  // The bot plays until it is your turn again (the farther ball plays first).
+  int bot_strokes = 0;
+  while (!play.human_turn() && play.stage() != GolfPlay::Stage::HoleOver && bot_strokes < 10) {
+    t += GolfPlay::kBotAddress + 0.01;
+    play.update({}, t);
+    REQUIRE(play.stage() == GolfPlay::Stage::Flying);
+    ++bot_strokes;
+    t += duration(play.last_shot().trajectory) + 0.01;
+    play.update({}, t);
+  }
+  REQUIRE(bot_strokes > 0);
+  REQUIRE(play.human_turn());
+  CHECK(play.shooter() == 1);
+  CHECK(play.message().rfind(play.group().players()[1].name + ", stroke", 0) == 0);  // the bot's stroke
+  const GolfPlay::OwnLast* own = play.own_last(0);
+  REQUIRE(own != nullptr);
+  CHECK(own->message.rfind("stroke 1: ", 0) == 0);
+  CHECK(own->record.club == mine.club);
+  CHECK(own->record.to_pin_m == mine.to_pin_m);
+  REQUIRE(play.own_last(1) != nullptr);
+  CHECK(play.own_last(1)->message.rfind("stroke " + std::to_string(bot_strokes) + ": ", 0) == 0);
+}
+
 TEST_CASE("a stray Space is abandoned at the top of the meter: no stroke, no penalty", "[modes][golf]") {
   GolfPlay play(test::assets(), first_hole(), solo("scratch"));
   play.update({at(IntentKind::Swing, 1.0)}, 1.1);

@@ -79,19 +79,23 @@ void draw_stats(const BattingCage& c, int w, int h) {
   ImGui::TextDisabled("B: the pro swings  A: live at-bat / batting practice");
   ImGui::TextDisabled("Esc: pause  Tab: next mode");
   ImGui::Separator();
-  int n = 0, contact = 0, hard = 0, hr = 0;
+  // Contact counts fouls (a foul is contact); the batted-ball figures are Statcast's batted-ball
+  // events, fair balls only, so a long foul is not the session's longest hit.
+  int n = 0, contact = 0, fair = 0, hard = 0, hr = 0;
   double ev = 0.0, la = 0.0, longest = 0.0;
   for (const SwingRecord& s : c.swings()) {
     ++n;
     if (!s.result.contact) continue;
     ++contact;
+    if (s.result.outcome == BattedOutcome::Foul) continue;
+    ++fair;
     ev += mps_to_mph(s.result.shot.launch.ball_speed);
     la += rad_to_deg(s.result.shot.launch.vertical_angle);
     hard += s.result.hard_hit;
     hr += s.result.outcome == BattedOutcome::HomeRun;
     longest = std::max(longest, s.result.shot.trajectory.summary.carry_m);
   }
-  ImGui::Text("Swings %d, contact %d, home runs %d", n, contact, hr);
+  ImGui::Text("Swings %d, contact %d, fair %d, home runs %d", n, contact, fair, hr);
   if (n > 0) {
     // Statcast's bat tracking: the last swing, and the session's squared-up and blast counts.
     const BatTracking& t = c.swings().back().result.tracking;
@@ -100,14 +104,24 @@ void draw_stats(const BattingCage& c, int w, int h) {
       squared += s.result.tracking.is_squared_up;
       blasts += s.result.tracking.blast;
     }
-    ImGui::Text("Bat %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", mps_to_mph(t.bat_speed_mps),
-                t.attack_angle_deg, t.attack_direction_deg >= 0.0 ? "oppo" : "pull", std::abs(t.attack_direction_deg),
-                m_to_ft(t.swing_length_m));
-    ImGui::Text("Squared up %.0f %% (%d of %d), blasts %d", 100.0 * t.squared_up, squared, n, blasts);
+    // The attack angle and direction are the bat's where it meets the ball; a miss meets it
+    // nowhere (an early bat has turned past 90 deg of pull by the time the ball arrives), so a
+    // miss shows what every swing has: its speed and length.
+    if (c.swings().back().result.contact)
+      ImGui::Text("Bat %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", mps_to_mph(t.bat_speed_mps),
+                  t.attack_angle_deg, t.attack_direction_deg >= 0.0 ? "oppo" : "pull", std::abs(t.attack_direction_deg),
+                  m_to_ft(t.swing_length_m));
+    else
+      ImGui::Text("Bat %.1f mph, %.1f ft swing (a miss)", mps_to_mph(t.bat_speed_mps), m_to_ft(t.swing_length_m));
+    // Squared up is Statcast's 80 % line: the last swing's share, rounded down so that 79.7 %
+    // does not read as 80 % beside a count that (rightly) leaves it out.
+    if (c.swings().back().result.contact)
+      ImGui::Text("Last swing: %.0f %% of its best exit speed", std::floor(100.0 * t.squared_up));
+    ImGui::Text("Squared up (80 %%+) %d of %d swings, blasts %d", squared, n, blasts);
   }
-  if (contact > 0) {
-    ImGui::Text("Avg exit velocity %.1f mph, launch %.1f deg", ev / contact, la / contact);
-    ImGui::Text("Hard-hit %.0f %%, longest %.0f ft", 100.0 * hard / contact, m_to_ft(longest));
+  if (fair > 0) {
+    ImGui::Text("Fair balls: exit velocity %.1f mph, launch %.1f deg", ev / fair, la / fair);
+    ImGui::Text("Hard-hit %.0f %%, longest %.0f ft", 100.0 * hard / fair, m_to_ft(longest));
   }
   ImGui::End();
 

@@ -5,9 +5,10 @@
 
 Runs `SWEETSPOT validate --json` (the shipped library) and reads the case ids written in
 backticks between the README's `<!-- validate-failures -->` and `<!-- /validate-failures -->`
-markers (other backticked words there, a scenario or a model name, are not case ids). Exit 1, naming the ids, when a failing case is missing from the list (a new failure
-nobody explained) or the list names a case that passes (a fix the README has not caught up
-with); exit 0 when they agree.
+markers (other backticked words there, a scenario or a model name, are not case ids). Exit 1,
+naming the ids, when a failing case is missing from the list (a new failure nobody explained)
+or the list names a case that passes (a fix the README has not caught up with); exit 0 when
+they agree.
 """
 import json
 import re

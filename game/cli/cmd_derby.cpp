@@ -103,7 +103,11 @@ RunFn setup_derby(CLI::App& sub) {
       return 0;
     }
     for (const SwingRecord& s : swings) {
-      std::printf("%-10s %5.1f mph  timing %+5.1f ms  ", s.call.type.type.c_str(), mps_to_mph(s.call.type.speed), s.timing_ms);
+      // A take has no swing to time: its column says so instead of a timing of 0.
+      if (s.swung)
+        std::printf("%-10s %5.1f mph  timing %+5.1f ms  ", s.call.type.type.c_str(), mps_to_mph(s.call.type.speed), s.timing_ms);
+      else
+        std::printf("%-10s %5.1f mph  %-15s  ", s.call.type.type.c_str(), mps_to_mph(s.call.type.speed), "taken");
       if (s.result.contact)
         std::printf("EV %5.1f mph LA %+5.1f deg  %5.0f ft  %s%s\n", mps_to_mph(s.result.shot.launch.ball_speed),
                     rad_to_deg(s.result.shot.launch.vertical_angle), m_to_ft(s.result.shot.trajectory.summary.carry_m),

@@ -36,8 +36,9 @@ int run_range(const Assets& assets, const RangeOptions& o) {
     std::cout << json_text({{"player", bag.player}, {"skill", bag.skill}, {"seed", o.seed}, {"clubs", clubs}}) << "\n";
     return 0;
   }
-  std::printf("bag gapping: %s, %d shots a club (yards; the spread is one standard deviation)\n", bag.player.c_str(), o.shots);
-  std::printf("%-8s %7s %7s %8s %8s %6s\n", "club", "carry", "total", "carry±", "side±", "gap");
+  std::printf("bag gapping: %s, %d shots a club (yards; carry± one standard deviation about the mean, side the root mean\n"
+              "square distance from the target line)\n", bag.player.c_str(), o.shots);
+  std::printf("%-8s %7s %7s %8s %8s %6s\n", "club", "carry", "total", "carry±", "side", "gap");
   for (std::size_t k = 0; k < bag.clubs.size(); ++k) {
     const BagClub& c = bag.clubs[k];
     char gap[16] = "";

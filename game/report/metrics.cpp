@@ -249,8 +249,10 @@ std::vector<Metric> build() {
   }));
   // ---- flight ------------------------------------------------------------------------
   m.push_back(distance("carry", "Carry", "carry", [](const ShotResult& r) { return r.trajectory.summary.carry_m; }, "carry"));
+  // Shown to the same tenth as Total: a home run that lands out of the park has the two equal,
+  // and "427 ft" above "426.7 ft" read as two different balls.
   m.push_back(distance("distance", "Distance", "distance", [](const ShotResult& r) { return r.trajectory.summary.carry_m; },
-                       "carry", 0));
+                       "carry"));
   m.push_back(distance("total", "Total", "total", [](const ShotResult& r) { return r.trajectory.summary.total_m; }, "total"));
   m.push_back(distance("max_height", "Max height", "apex", [](const ShotResult& r) { return r.trajectory.summary.apex_m; },
                        "apex"));

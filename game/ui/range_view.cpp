@@ -80,7 +80,9 @@ void RangeView::draw_panel(int w) {
   ImGui::Text("Club: %s   shot %d of %d", play_->club().c_str(), std::min(play_->shots_with_club() + 1, play_->shots_per_club()),
               play_->shots_per_club());
   if (ImGui::BeginTable("bag", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-    for (const char* c : {"club", "shots", "carry", "spread", "side", "gap"}) ImGui::TableSetupColumn(c);
+    // "spread": the carries' standard deviation about their mean; "side rms": how far from the
+    // target line the balls land, the root mean square (a one-sided miss is part of it).
+    for (const char* c : {"club", "shots", "carry", "spread", "side rms", "gap"}) ImGui::TableSetupColumn(c);
     ImGui::TableHeadersRow();
     for (std::size_t k = 0; k < bag.clubs.size(); ++k) {
       const BagClub& c = bag.clubs[k];

@@ -6,7 +6,9 @@
 #include <fstream>
 
 #include "game/content/bag_file.hpp"
+#include "game/modes/golf/range_play.hpp"
 #include "game/modes/golf/range_session.hpp"
+#include "game/modes/replay.hpp"
 #include "physics/error.hpp"
 #include "support/test_assets.hpp"
 
@@ -68,4 +70,28 @@ TEST_CASE("the bag file reads back the same and the caddie chooses by it", "[mod
   CHECK_THROWS_WITH(load_bag(test::assets(), dir / "bad3.toml", golfer_skill_names()),
                     Catch::Contains("bad3.toml:2") && Catch::Contains("'god'") && Catch::Contains("tour, scratch"));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("at the range the club keys work while the last ball flies and once it has stopped", "[modes][golf][range]") {
+  // Choosing the next club ends the last shot's view (as Enter and Space do) instead of being
+  // ignored until the view is dismissed.
+  const auto intent = [](IntentKind k, double t) {
+    Intent in;
+    in.kind = k;
+    in.time = t;
+    return in;
+  };
+  RangePlay play(test::assets(), golfer_skill("amateur"));
+  REQUIRE(play.club() == "driver");
+  play.update({intent(IntentKind::CaddiePlays, 1.0)}, 1.1);
+  REQUIRE(play.stage() == RangePlay::Stage::Flying);
+  play.update({intent(IntentKind::ClubDown, 1.5)}, 1.6);  // the ball still in the air
+  CHECK(play.stage() == RangePlay::Stage::Aiming);
+  CHECK(play.club() == "3-wood");
+  play.update({intent(IntentKind::CaddiePlays, 2.0)}, 2.1);
+  REQUIRE(play.stage() == RangePlay::Stage::Flying);
+  const double rest = 2.0 + duration(play.last_shot().trajectory) + 0.5;
+  play.update({intent(IntentKind::ClubUp, rest)}, rest + 0.1);  // the ball at rest
+  CHECK(play.stage() == RangePlay::Stage::Aiming);
+  CHECK(play.club() == "driver");
 }

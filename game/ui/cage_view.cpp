@@ -107,7 +107,8 @@ void draw_stats(const BattingCage& c, int w, int h) {
     // The attack angle and direction are the bat's where it meets the ball; a miss meets it
     // nowhere (an early bat has turned past 90 deg of pull by the time the ball arrives), so a
     // miss shows what every swing has: its speed and length.
-    if (c.swings().back().result.contact)
+    const bool met = c.swings().back().result.contact;
+    if (met)
       ImGui::Text("Bat %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", mps_to_mph(t.bat_speed_mps),
                   t.attack_angle_deg, t.attack_direction_deg >= 0.0 ? "oppo" : "pull", std::abs(t.attack_direction_deg),
                   m_to_ft(t.swing_length_m));
@@ -115,7 +116,7 @@ void draw_stats(const BattingCage& c, int w, int h) {
       ImGui::Text("Bat %.1f mph, %.1f ft swing (a miss)", mps_to_mph(t.bat_speed_mps), m_to_ft(t.swing_length_m));
     // Squared up is Statcast's 80 % line: the last swing's share, rounded down so that 79.7 %
     // does not read as 80 % beside a count that (rightly) leaves it out.
-    if (c.swings().back().result.contact)
+    if (met)
       ImGui::Text("Last swing: %.0f %% of its best exit speed", std::floor(100.0 * t.squared_up));
     ImGui::Text("Squared up (80 %%+) %d of %d swings, blasts %d", squared, n, blasts);
   }

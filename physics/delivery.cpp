@@ -117,8 +117,11 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   check_range("swing.speed", w.club_speed, GolfSwing::kClubSpeed, "m/s");
   check_range("swing.attack_angle", w.attack_angle, GolfSwing::kAttackAngle, "rad");
   check_range("swing.path", w.club_path, GolfSwing::kClubPath, "rad");
-  check_range("swing.dynamic_loft", std::isnan(w.dynamic_loft) ? club.dynamic_loft : w.dynamic_loft,
-              GolfSwing::kDynamicLoft, "rad");
+  if (!std::isnan(w.dynamic_loft) && !std::isnan(w.strike_loft))
+    throw InputError("swing.strike_loft: give the loft at the face centre (swing.dynamic_loft) or where the face "
+                     "meets the ball (swing.strike_loft), not both");
+  if (!std::isnan(w.strike_loft)) check_range("swing.strike_loft", w.strike_loft, GolfSwing::kDynamicLoft, "rad");
+  check_range("swing.dynamic_loft", face_centre_loft(w, club), GolfSwing::kDynamicLoft, "rad");
   check_range("swing.face_angle", w.face_angle, GolfSwing::kFaceAngle, "rad");
   check_range("swing.impact_offset[0] (toe)", w.impact_toe, GolfSwing::kImpactToe, "m");
   check_range("swing.impact_offset[1] (up)", std::isnan(w.impact_up) ? club.strike_height : w.impact_up,
@@ -130,6 +133,15 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   check_range("swing.impact_offset[1] (up) on the " + club.name + "'s face",
               std::isnan(w.impact_up) ? club.strike_height : w.impact_up, up_on_face, "m");
   check_range("swing.closure_rate", w.closure_rate, GolfSwing::kClosureRate, "rad/s");
+}
+
+double strike_tilt(const ClubSpec& club, double up) { return std::atan(up / club.roll_radius); }
+
+double face_centre_loft(const GolfSwing& swing, const ClubSpec& club) {
+  if (!std::isnan(swing.dynamic_loft)) return swing.dynamic_loft;
+  if (std::isnan(swing.strike_loft)) return club.dynamic_loft;
+  const double up = std::isnan(swing.impact_up) ? club.strike_height : swing.impact_up;
+  return swing.strike_loft - strike_tilt(club, up);
 }
 
 double bat_ball_reach(const BatSpec& bat, const BallSpec& ball, double from_tip) {
@@ -171,7 +183,7 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
   validate_club(club);
   validate_material(material, "impact");
   validate_golf_swing(swing, club);
-  const double loft = std::isnan(swing.dynamic_loft) ? club.dynamic_loft : swing.dynamic_loft;
+  const double loft = face_centre_loft(swing, club);
 
   // Head pose: loft about the head's toe axis (z), then the face angle about vertical
   // (+ open turns the face toward +z, i.e. right).

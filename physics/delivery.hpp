@@ -29,6 +29,11 @@ struct GolfSwing {
   double dynamic_loft = std::numeric_limits<double>::quiet_NaN();  ///< rad; NaN -> club.dynamic_loft
   /// A de-lofted putter (0°) to a lob wedge laid wide open.
   static constexpr Range kDynamicLoft{0.0, deg_to_rad(80.0)};
+  /// rad, the loft where the face meets the ball: what TrackMan reports as "dynamic loft"
+  /// (the face's vertical angle at the centre-point of contact), which on a rolled driver
+  /// face exceeds the face-centre loft by the roll's tilt at the strike (strike_tilt()).
+  /// NaN -> from dynamic_loft; setting both is an error. Same range as kDynamicLoft.
+  double strike_loft = std::numeric_limits<double>::quiet_NaN();
   double face_angle = 0;       ///< rad, + open (face pointing right of target)
   static constexpr Range kFaceAngle{deg_to_rad(-30.0), deg_to_rad(30.0)};
   double impact_toe = 0;       ///< m from the face centre, + toward the toe; ±20 mm is a big miss
@@ -87,6 +92,13 @@ struct Pitch {
 
 /// Each throws InputError naming the field (as a scenario key) and its allowed range.
 void validate_golf_swing(const GolfSwing& swing, const ClubSpec& club);
+/// rad, how much the face's roll (sole-to-crown curvature) tilts the face normal up at a
+/// strike `up` metres above the centre: atan(up / roll_radius). 2.2° at 11.5 mm on a 305 mm
+/// roll; ~0 on an iron's flat face.
+double strike_tilt(const ClubSpec& club, double up);
+/// rad, the face-centre loft the swing delivers: dynamic_loft, else strike_loft less the
+/// tilt at the swing's strike, else the club's default.
+double face_centre_loft(const GolfSwing& swing, const ClubSpec& club);
 void validate_bat_swing(const BatSwing& swing, const BatSpec& bat, const BallSpec& ball);
 void validate_pitch(const Pitch& pitch);
 

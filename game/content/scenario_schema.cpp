@@ -119,7 +119,9 @@ Schema build_scenario_schema() {
   k.push_back(quantity("swing.speed", Speed, &GolfSwing::kClubSpeed, "mph", "113mph", "club head speed at the face centre", C));
   k.push_back(quantity("swing.attack_angle", Angle, &GolfSwing::kAttackAngle, "deg", "0deg", "attack angle, + up", C));
   k.push_back(quantity("swing.path", Angle, &GolfSwing::kClubPath, "deg", "0deg", "club path, + in-to-out (right)", C));
-  k.push_back(quantity("swing.dynamic_loft", Angle, &GolfSwing::kDynamicLoft, "deg", "", "delivered loft (default: the club's)", C));
+  k.push_back(quantity("swing.dynamic_loft", Angle, &GolfSwing::kDynamicLoft, "deg", "", "delivered loft at the face centre (default: the club's)", C));
+  k.push_back(quantity("swing.strike_loft", Angle, &GolfSwing::kDynamicLoft, "deg", "",
+                       "delivered loft where the face meets the ball, TrackMan's dynamic loft (instead of swing.dynamic_loft)", C));
   k.push_back(quantity("swing.face_angle", Angle, &GolfSwing::kFaceAngle, "deg", "0deg", "face angle to target, + open (right)", C));
   k.push_back(list("swing.impact_offset", Length, 2, {&GolfSwing::kImpactToe, &GolfSwing::kImpactUp, nullptr}, "mm",
                    "", "impact point [toe +, up +] from the face centre (default: the club's usual strike)", C));

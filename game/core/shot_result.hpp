@@ -52,7 +52,10 @@ struct ClubNumbers {
   double attack_angle = 0.0;        ///< rad, + up
   double path = 0.0;                ///< rad, + in-to-out (right)
   double face_to_target = 0.0;      ///< rad, + open (right)
-  double dynamic_loft = 0.0;        ///< rad
+  double dynamic_loft = 0.0;        ///< rad, at the face centre
+  /// rad, the face's loft where it meets the ball (the face-centre loft tilted by the roll at
+  /// the strike): what TrackMan and the launch-monitor table call "dynamic loft".
+  double strike_loft = 0.0;
   double lie = 0.0;                 ///< rad, the club's lie angle
   double impact_toe = 0.0;          ///< m from the face centre, + toward the toe
   double impact_up = 0.0;           ///< m from the face centre, + up

@@ -64,7 +64,8 @@ std::optional<ShotResult> predict_from_club_data(const Assets& assets, const std
   g.club_path = c.path_deg.value_or(0.0) / kDegPerRad;
   g.face_angle = c.face_to_target_deg.value_or(0.0) / kDegPerRad;
   // A loft of 0 is how connectors say "not measured"; the club's typical loft stands in.
-  if (c.loft_deg && *c.loft_deg > 0.0) g.dynamic_loft = *c.loft_deg / kDegPerRad;
+  // A device measures dynamic loft where the face meets the ball (TrackMan's definition).
+  if (c.loft_deg && *c.loft_deg > 0.0) g.strike_loft = *c.loft_deg / kDegPerRad;
   if (c.horizontal_impact_mm) g.impact_toe = *c.horizontal_impact_mm / 1000.0;
   if (c.vertical_impact_mm && *c.vertical_impact_mm != 0.0) g.impact_up = *c.vertical_impact_mm / 1000.0;
   if (c.closure_rate_dps) g.closure_rate = *c.closure_rate_dps / kDegPerRad;
@@ -84,7 +85,9 @@ std::string club_for_delivery(const Assets& assets, const OcClubData& c, double 
   if (c.loft_deg && *c.loft_deg > 0.0) {
     // The device measured dynamic loft: the club whose typical loft is nearest.
     for (const std::string& club : golf_bag()) {
-      const double d = std::abs(eq.club(club).dynamic_loft * kDegPerRad - *c.loft_deg);
+      const ClubSpec& spec = eq.club(club);
+      const double typical = spec.dynamic_loft + strike_tilt(spec, spec.strike_height);
+      const double d = std::abs(typical * kDegPerRad - *c.loft_deg);
       if (d < gap) gap = d, best = club;
     }
     return best;

@@ -53,10 +53,11 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
       k.attack_angle = w.attack_angle;
       k.path = w.club_path;
       k.face_to_target = w.face_angle;
-      k.dynamic_loft = std::isnan(w.dynamic_loft) ? s.club->dynamic_loft : w.dynamic_loft;
+      k.dynamic_loft = face_centre_loft(w, *s.club);
       k.lie = s.club->lie;
       k.impact_toe = w.impact_toe;
       k.impact_up = std::isnan(w.impact_up) ? s.club->strike_height : w.impact_up;
+      k.strike_loft = k.dynamic_loft + strike_tilt(*s.club, k.impact_up);
       k.closure_rate = w.closure_rate;
       r.impactor_mesh = s.club_info->mesh;
     } else {

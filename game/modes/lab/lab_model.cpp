@@ -156,8 +156,8 @@ double LabModel::value(LabParam p) const {
     case LabParam::Et: return resolved_.material.e_t;
     case LabParam::Mu: return resolved_.material.mu;
     case LabParam::DynamicLoft: {
-      const double v = std::get<ClubStrike>(s.strike).swing.dynamic_loft;
-      return std::isnan(v) && resolved_.club ? resolved_.club->dynamic_loft : v;
+      const GolfSwing& w = std::get<ClubStrike>(s.strike).swing;
+      return resolved_.club ? face_centre_loft(w, *resolved_.club) : w.dynamic_loft;
     }
     case LabParam::ImpactUp: {
       const double v = std::get<ClubStrike>(s.strike).swing.impact_up;
@@ -180,6 +180,12 @@ void LabModel::apply(const Intent& in) {
       const auto p = static_cast<LabParam>(in.param);
       if (in.param < 0 || in.param > static_cast<int>(LabParam::WindDirection)) break;
       ShotSpec spec = resolved_.spec;
+      // A loft given where the face meets the ball becomes the face's own loft first, so an
+      // edit of the strike height moves the contact over the face instead of turning the face.
+      if (auto* club = std::get_if<ClubStrike>(&spec.strike); club && resolved_.club && !std::isnan(club->swing.strike_loft)) {
+        club->swing.dynamic_loft = face_centre_loft(club->swing, *resolved_.club);
+        club->swing.strike_loft = std::nan("");
+      }
       if (p == LabParam::E) spec.impact.e = in.value;
       else if (p == LabParam::Et) spec.impact.e_t = in.value;
       else if (p == LabParam::Mu) spec.impact.mu = in.value;
@@ -216,6 +222,7 @@ void LabModel::apply(const Intent& in) {
         club->club = in.text;
         // The new club's own delivered loft and strike, as the scenario gave them.
         club->swing.dynamic_loft = base->swing.dynamic_loft;
+        club->swing.strike_loft = base->swing.strike_loft;
         club->swing.impact_toe = base->swing.impact_toe;
         club->swing.impact_up = base->swing.impact_up;
         std::erase_if(edited_, [](LabParam p) {
@@ -266,10 +273,21 @@ std::vector<std::string> LabModel::edit_overrides() const {
   std::vector<std::string> out;
   for (const auto& [c, text] : chosen_) out.push_back(std::string(kChoiceKeys[static_cast<int>(c)]) + "=" + text);
   bool offset_done = false;
+  // A scenario that gives the loft where the face meets the ball keeps it that way: the face
+  // an edit froze (apply) is saved as the strike loft at the strike it now has.
+  const auto* base = std::get_if<ClubStrike>(&scenario_.spec.strike);
+  const auto* now = std::get_if<ClubStrike>(&resolved_.spec.strike);
+  const bool keep_strike_loft = base && now && resolved_.club && !std::isnan(base->swing.strike_loft);
+  if (keep_strike_loft && std::isnan(now->swing.strike_loft)) {
+    const KeySpec* k = scenario_schema().find("swing.strike_loft", kClubKeys);
+    const double up = value(LabParam::ImpactUp);
+    if (k != nullptr)
+      out.push_back("swing.strike_loft=" + save_text(value(LabParam::DynamicLoft) + strike_tilt(*resolved_.club, up), *k));
+  }
   for (const LabParam p : edited_) {
     const LabParamInfo& info = lab_param_info(p);
     const KeySpec* k = scenario_schema().find(info.key, info.strikes);
-    if (k == nullptr) continue;
+    if (k == nullptr || (keep_strike_loft && p == LabParam::DynamicLoft)) continue;
     if (p == LabParam::ImpactToe || p == LabParam::ImpactUp) {
       if (offset_done) continue;
       offset_done = true;
@@ -283,8 +301,15 @@ std::vector<std::string> LabModel::edit_overrides() const {
 }
 
 std::string LabModel::scenario_text() const {
-  std::vector<std::string> overrides = start_overrides_;
-  for (std::string& o : edit_overrides()) overrides.push_back(std::move(o));
+  // An edit replaces the value the Lab was started with (`--set`) for its key: a key may be
+  // given once.
+  const std::vector<std::string> edits = edit_overrides();
+  const auto key_of = [](const std::string& o) { return o.substr(0, o.find('=')); };
+  std::vector<std::string> overrides;
+  for (const std::string& o : start_overrides_)
+    if (std::none_of(edits.begin(), edits.end(), [&](const std::string& e) { return key_of(e) == key_of(o); }))
+      overrides.push_back(o);
+  overrides.insert(overrides.end(), edits.begin(), edits.end());
   return scenario_toml(load_scenario(assets_, scenario_.name, overrides));
 }
 

@@ -44,6 +44,15 @@ TEST_CASE("load_scenario builds a ShotSpec from the file and overrides, resolved
                     Contains("pitch.spin") && Contains("4000 rpm"));
 }
 
+TEST_CASE("the loft is given at the face centre or where the face meets the ball, never both", "[scenario-run]") {
+  const Scenario s = load_scenario(test::assets(), "golf/driver", {"swing.strike_loft=15.1deg"});
+  const auto& club = std::get<ClubStrike>(s.spec.strike);
+  CHECK(rad_to_deg(club.swing.strike_loft) == Approx(15.1));
+  CHECK(std::isnan(club.swing.dynamic_loft));
+  CHECK_THROWS_WITH(load_scenario(test::assets(), "golf/driver", {"swing.strike_loft=15.1deg", "swing.dynamic_loft=12deg"}),
+                    Catch::Contains("swing.strike_loft") && Catch::Contains("not both"));
+}
+
 TEST_CASE("run_scenario is deterministic and follows DESIGN §2 signs", "[scenario-run]") {
   const Assets& A = test::assets();
   const Scenario s = load_scenario(A, "golf/driver", {"world.name=none"});

@@ -315,6 +315,26 @@ TEST_CASE("club data is compared with our impact model's launch", "[net][table]"
   CHECK(p.line["club_data"]["speed_mps"].get<double>() == Approx(mph_to_mps(90.0)));
 }
 
+TEST_CASE("a device's measured loft is the loft where the face met the ball", "[net][table]") {
+  // TrackMan Combine, the average golfer's driver (94 mph, -1.8 deg, dynamic loft 15.1 deg,
+  // which TrackMan measures at the contact point): the prediction is the strike with that
+  // loft at the driver's usual height.
+  OcClubData c;
+  c.speed_mph = 94.0;
+  c.angle_of_attack_deg = -1.8;
+  c.loft_deg = 15.1;
+  const auto r = predict_from_club_data(test::assets(), "driver", c);
+  REQUIRE(r.has_value());
+  CHECK(rad_to_deg(r->club.strike_loft) == Approx(15.1).margin(1e-9));
+  CHECK(rad_to_deg(r->club.dynamic_loft) == Approx(15.1 - 2.159).margin(0.005));
+  CHECK(rad_to_deg(r->launch.vertical_angle) == Approx(12.6).margin(1.5));
+  CHECK(radps_to_rpm(r->launch.spin.total) == Approx(3275.0).epsilon(0.15));
+  // A tour driver's loft at its high strike names the driver, not the 3-wood (12.0° at
+  // its centre, where fairway woods are struck).
+  c.loft_deg = 12.5;
+  CHECK(club_for_delivery(test::assets(), c, 11.0) == "driver");
+}
+
 TEST_CASE("a round plays the device's shots from where the ball lies", "[net][table][golf]") {
   ShotTable table(test::assets(), {"links", ""});
   REQUIRE(table.round() != nullptr);

@@ -43,6 +43,7 @@ ShotResult golf_shot() {
   r.club.speed_at_impact = mph_to_mps(112);
   r.club.attack_angle = -1.3 * kDeg;
   r.club.dynamic_loft = 13.0 * kDeg;
+  r.club.strike_loft = 13.0 * kDeg;  // a centre strike: the face-centre loft
   r.club.lie = 58 * kDeg;
   r.club.impact_toe = 0.010;
   r.club.closure_rate = 2000 * kDeg;

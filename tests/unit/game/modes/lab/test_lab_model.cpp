@@ -108,6 +108,36 @@ TEST_CASE("Save writes the edited shot as a scenario that loads back to the same
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("a loft given where the face meets the ball stays so through edits and Save", "[lab]") {
+  // Started with TrackMan's dynamic loft and a speed; the strike then moves to the face
+  // centre. The face keeps its loft (the contact moves over it), the edit replaces the
+  // started speed, and the saved file still gives the loft at the strike.
+  LabModel lab(test::assets(), "golf/driver", {"swing.strike_loft=15.1deg", "swing.speed=94mph"});
+  REQUIRE(lab.status().empty());
+  const double face = lab.value(LabParam::DynamicLoft);
+  CHECK(rad_to_deg(face) == Approx(15.1 - 2.159).margin(0.005));
+  lab.update({edit(LabParam::ImpactUp, 0.0), edit(LabParam::ClubSpeed, mph_to_mps(95.0))}, 0.0);
+  REQUIRE(lab.status().empty());
+  CHECK(lab.value(LabParam::DynamicLoft) == Approx(face).epsilon(1e-12));
+  const std::string text = lab.scenario_text();
+  INFO(text);
+  CHECK(text.find("strike_loft") != std::string::npos);
+  CHECK(text.find("dynamic_loft") == std::string::npos);
+  CHECK(text.find("speed = \"95mph\"") != std::string::npos);
+  const auto dir = std::filesystem::temp_directory_path() / ("sweetspot-lab-loft-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "loft.toml").string();
+  Intent save;
+  save.kind = IntentKind::Save;
+  save.text = path;
+  lab.update({save}, 0.0);
+  CHECK(lab.status() == "saved " + path);
+  const ShotResult back = run_scenario(load_scenario(test::assets(), path, {}));
+  CHECK(back.launch.spin.total == Approx(lab.result().launch.spin.total).epsilon(1e-9));
+  CHECK(back.launch.vertical_angle == Approx(lab.result().launch.vertical_angle).epsilon(1e-9));
+  std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("choosing another scenario or sport drops the edits", "[lab]") {
   LabModel lab(test::assets(), "golf/driver");
   lab.update({edit(LabParam::ClubSpeed, mph_to_mps(93.7))}, 0.0);

@@ -39,7 +39,7 @@ GolfBot::GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t s
     s.world = kFlatWorld;
     ClubStrike c;
     c.club = club;
-    c.swing = meter_swing(MeterInput{}, eq.club(club), eq.club_info_of(club), full_swing_speed(skill, eq.club_info_of(club)));
+    c.swing = golfer_swing(skill, MeterInput{}, eq, club);
     s.strike = c;
     const ShotResult r = run_shot(resolve(s, assets), club, {true, false});
     stock_.push_back({club, r.trajectory.summary.carry_m, r.trajectory.summary.total_m, 0.0, 0.0});

@@ -1,5 +1,8 @@
 #include "game/modes/golf/golfer.hpp"
 
+#include <cmath>
+
+#include "game/modes/golf/swing_meter.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 
@@ -8,9 +11,9 @@ namespace sweetspot {
 const std::vector<GolferSkill>& golfer_skills() {
   static const std::vector<GolferSkill> skills = {
       {"tour", mph_to_mps(113.0), 12.0, 0.015, 0.06, 0.014},
-      {"scratch", mph_to_mps(105.0), 20.0, 0.025, 0.08, 0.019},
-      {"amateur", mph_to_mps(93.0), 30.0, 0.05, 0.12, 0.028},
-      {"beginner", mph_to_mps(80.0), 55.0, 0.09, 0.18, 0.040},
+      {"scratch", mph_to_mps(105.0), 20.0, 0.025, 0.08, 0.019, deg_to_rad(-0.9), deg_to_rad(13.0)},
+      {"amateur", mph_to_mps(93.0), 30.0, 0.05, 0.12, 0.028, deg_to_rad(-1.8), deg_to_rad(15.1)},
+      {"beginner", mph_to_mps(80.0), 55.0, 0.09, 0.18, 0.040, deg_to_rad(-2.3), deg_to_rad(16.5)},
   };
   return skills;
 }
@@ -28,6 +31,22 @@ const GolferSkill& golfer_skill(std::string_view name) {
     names += (names.empty() ? "" : ", ") + g.name;
   }
   throw InputError("unknown golfer skill '" + std::string(name) + "' (allowed: " + names + ")");
+}
+
+double added_loft(const GolferSkill& g, const EquipmentCatalog& eq) {
+  if (std::isnan(g.driver_strike_loft)) return 0.0;
+  const ClubSpec& driver = eq.club("driver");
+  return g.driver_strike_loft - (driver.dynamic_loft + strike_tilt(driver, driver.strike_height));
+}
+
+GolfSwing golfer_swing(const GolferSkill& g, const MeterInput& m, const EquipmentCatalog& eq, const std::string& club) {
+  const ClubSpec& spec = eq.club(club);
+  const ClubInfo& info = eq.club_info_of(club);
+  GolfSwing s = meter_swing(m, spec, info, full_swing_speed(g, info));
+  if (info.kind == "putter") return s;
+  s.dynamic_loft = spec.dynamic_loft + added_loft(g, eq);
+  if (club == "driver" && !std::isnan(g.driver_attack)) s.attack_angle = g.driver_attack;
+  return s;
 }
 
 double full_swing_speed(const GolferSkill& g, const ClubInfo& club) {

@@ -3,11 +3,14 @@
 // these; a human's errors are their own.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "game/content/equipment_file.hpp"
+#include "game/core/stroke_input.hpp"
+#include "physics/delivery.hpp"
 #include "physics/range.hpp"
 
 namespace sweetspot {
@@ -22,9 +25,20 @@ struct GolferSkill {
   double power_sd = 0.02;
   double putt_speed_sd = 0.05;
   double putt_aim_sd = 0.012;
+  /// The driver as this golfer delivers it: attack angle and the loft where the face meets
+  /// the ball (rad; TrackMan's "dynamic loft"). NaN: the club's own (tour) delivery. Slower
+  /// golfers deliver more loft: a tour driver's loft at their speed spins too little and
+  /// lands too flat, so their drives would roll like a tour player's.
+  double driver_attack = std::numeric_limits<double>::quiet_NaN();
+  double driver_strike_loft = std::numeric_limits<double>::quiet_NaN();
 };
 
-/// The four skills. Driver speeds: tour 113 mph (TrackMan PGA average), scratch 105, a
+/// The four skills. Driver deliveries (attack, dynamic loft), TrackMan Combine averages for
+/// the driver by handicap (trackman.com, "What is dynamic loft" / "Attack angle", Combine
+/// blocks, 2024): scratch or better −0.9° / 13.0°, the average golfer (14.5 handicap, 94 mph)
+/// −1.8° / 15.1°; the beginner takes the Combine's column at his speed (79 mph, the women's
+/// 15 handicap) −2.3° / 16.5°. The tour skill keeps the club's delivery (fitted to TrackMan's
+/// PGA row: 12.5° at its strike, TrackMan's 2023 PGA average 12.8°). Driver speeds: tour 113 mph (TrackMan PGA average), scratch 105, a
 /// 15-handicap amateur 93, a beginner 80 (TrackMan's published handicap averages put the
 /// scratch and 15-handicap male golfer near 105 and 93 mph). Errors: ESTIMATES chosen so a
 /// tour bot's drives scatter ~±20 yd sideways (PGA TOUR fairways hit ~60 %) and each level
@@ -37,6 +51,18 @@ const std::vector<GolferSkill>& golfer_skills();
 const GolferSkill& golfer_skill(std::string_view name);
 /// The skills' names, in golfer_skills() order.
 std::vector<std::string> golfer_skill_names();
+
+/// The swing a golfer's meter result delivers with `club` of `eq`: meter_swing at the
+/// golfer's full-swing speed; with the driver the golfer's own attack and loft at the club's
+/// usual strike (an over-swing still thins the strike without turning the face). Every other
+/// full-swing club takes the tour's loft plus the same extra loft the golfer adds to the
+/// driver: the extra is the golfer's shaft lean at impact (hands less far ahead), which
+/// tilts every face alike. TrackMan's measured lofts agree: the LPGA adds 2.7° to the PGA's
+/// driver and 3.4° to its 6-iron (2023 averages: 15.5 / 12.8°, 23.6 / 20.2°).
+GolfSwing golfer_swing(const GolferSkill& g, const MeterInput& m, const EquipmentCatalog& eq, const std::string& club);
+/// rad, the loft a golfer adds to the tour's delivery of every full-swing club (0 for the
+/// tour skill): their driver's loft at the strike less the driver's own.
+double added_loft(const GolferSkill& g, const EquipmentCatalog& eq);
 
 /// A golfer's full-swing club speed (m/s) with `club`: the club's tour speed scaled by the
 /// golfer's driver speed over the tour's. The putter's is the same for everyone.

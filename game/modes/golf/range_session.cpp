@@ -24,7 +24,7 @@ const RangeShot& RangeSession::hit(const std::string& club, const MeterInput& me
   s.environment = air_;
   ClubStrike c;
   c.club = club;
-  c.swing = meter_swing(meter, eq.club(club), eq.club_info_of(club), full_swing_speed(skill_, eq.club_info_of(club)));
+  c.swing = golfer_swing(skill_, meter, eq, club);
   s.strike = c;
   ShotResult r = run_shot(resolve(s, *assets_), "range " + club, {true, shot_out != nullptr});
   RangeShot shot;

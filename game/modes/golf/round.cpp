@@ -75,7 +75,7 @@ ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
   s.world = hole().world_name;
   ClubStrike c;
   c.club = in.club;
-  c.swing = meter_swing(in.meter, eq.club(in.club), eq.club_info_of(in.club), full_swing_speed(golfer_, eq.club_info_of(in.club)));
+  c.swing = golfer_swing(golfer_, in.meter, eq, in.club);
   s.strike = c;
   // The ball is kept in world coordinates; a placement is measured from the world's origin.
   const Vec3& origin = hole().world->description().origin;

@@ -56,6 +56,9 @@ struct ClubNumbers {
   /// rad, the face's loft where it meets the ball (the face-centre loft tilted by the roll at
   /// the strike): what TrackMan and the launch-monitor table call "dynamic loft".
   double strike_loft = 0.0;
+  /// rad, the angle between the head's direction and the face's normal at the strike (3D:
+  /// strike loft less attack for a face square to the path, more when it is open or shut).
+  double spin_loft = 0.0;
   double lie = 0.0;                 ///< rad, the club's lie angle
   double impact_toe = 0.0;          ///< m from the face centre, + toward the toe
   double impact_up = 0.0;           ///< m from the face centre, + up

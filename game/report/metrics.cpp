@@ -217,11 +217,11 @@ std::vector<Metric> build() {
                     "(+ in-to-out)"));
   m.push_back(angle("face_angle", "Face angle", "face_angle", club,
                     [](const ShotResult& r) { return r.club.face_to_target; }, "(+ open)"));
-  // As a launch monitor reports them: the loft where the face meets the ball, and that
-  // loft less the attack angle (a high strike on a driver's rolled face adds ~2°).
+  // As a launch monitor reports them: the loft where the face meets the ball (a high strike
+  // on a driver's rolled face adds ~2°), and the 3D angle between the head's direction and
+  // that face.
   m.push_back(angle("dynamic_loft", "Dynamic loft", "dynamic_loft", club, [](const ShotResult& r) { return r.club.strike_loft; }));
-  m.push_back(angle("spin_loft", "Spin loft", "spin_loft", club,
-                    [](const ShotResult& r) { return r.club.strike_loft - r.club.attack_angle; }));
+  m.push_back(angle("spin_loft", "Spin loft", "spin_loft", club, [](const ShotResult& r) { return r.club.spin_loft; }));
   m.push_back(text("impact_point", "Impact point", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!club(r)) return std::nullopt;
     return fixed(r.club.impact_toe * 1000.0, 0) + " mm toe, " + fixed(r.club.impact_up * 1000.0, 0) + " mm up";

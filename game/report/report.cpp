@@ -65,6 +65,7 @@ nlohmann::json shot_json(const ShotResult& r) {
           {"face_angle_deg", r.club.face_to_target * kDegPerRad},
           {"dynamic_loft_deg", r.club.dynamic_loft * kDegPerRad},
           {"strike_loft_deg", r.club.strike_loft * kDegPerRad},
+          {"spin_loft_deg", r.club.spin_loft * kDegPerRad},
           {"impact_offset_m", {r.club.impact_toe, r.club.impact_up}},
       };
       if (!r.lie.empty()) j["club"]["lie"] = r.lie;

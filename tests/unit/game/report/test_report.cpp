@@ -44,6 +44,7 @@ ShotResult golf_shot() {
   r.club.attack_angle = -1.3 * kDeg;
   r.club.dynamic_loft = 13.0 * kDeg;
   r.club.strike_loft = 13.0 * kDeg;  // a centre strike: the face-centre loft
+  r.club.spin_loft = 14.3 * kDeg;    // square to the path: strike loft less attack
   r.club.lie = 58 * kDeg;
   r.club.impact_toe = 0.010;
   r.club.closure_rate = 2000 * kDeg;

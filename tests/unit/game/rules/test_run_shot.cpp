@@ -196,3 +196,19 @@ TEST_CASE("a ball that leaves the ballpark in the air reports where it comes dow
   CHECK(std::fabs(park.trajectory.summary.hang_time_s - open.trajectory.summary.hang_time_s) < 1e-3);
   CHECK(park.trajectory.summary.total_m == park.trajectory.summary.carry_m);
 }
+
+TEST_CASE("a shot reports its lofts as a launch monitor does: at the strike, and the spin loft in 3D", "[run_shot]") {
+  // The tour driver: 10.37° at the face centre, struck 11.5 mm up its 305 mm roll (+2.16°),
+  // attack -1.3°. Square to the path the spin loft is the strike loft less the attack; a
+  // face 4° open to the path adds to it as the hypotenuse does (TrackMan: spin loft is the
+  // angle between the head's direction and the face).
+  const ShotResult square = run_scenario(load_scenario(test::assets(), "golf/driver", {"world.name=none"}));
+  CHECK(rad_to_deg(square.club.dynamic_loft) == Approx(10.37).margin(1e-9));
+  CHECK(rad_to_deg(square.club.strike_loft) == Approx(10.37 + 2.159).margin(0.005));
+  CHECK(rad_to_deg(square.club.spin_loft) == Approx(10.37 + 2.159 + 1.3).margin(0.05));
+  const ShotResult open =
+      run_scenario(load_scenario(test::assets(), "golf/driver", {"world.name=none", "swing.face_angle=4deg"}));
+  const double sl = rad_to_deg(square.club.spin_loft);
+  CHECK(rad_to_deg(open.club.spin_loft) == Approx(std::hypot(sl, 4.0)).margin(0.15));
+  CHECK(open.club.strike_loft == square.club.strike_loft);
+}

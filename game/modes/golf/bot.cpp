@@ -22,10 +22,9 @@ AlongAcross relative(const Vec3& from, double line, const Vec3& p) {
 
 /// The putt's aim point: this far past the cup (Pelz's 17 in, 0.43 m, holes the most).
 constexpr double kPuttPast = 0.43;
-/// Extra power spread of a partial swing per unit of power it leaves out (ESTIMATE: a
-/// half-swing wedge strays ~3 % more in distance than a full one; tour players leave
-/// 20-yd pitches ~2.5 m away, Broadie 2014).
-constexpr double kPartialFeel = 0.06;
+/// How near the cup's centre (m across the line) a planned putt must cross: a quarter of
+/// the cup's 54 mm radius, so the player's own start-line error, not the plan, decides it.
+constexpr double kPuttCentred = 0.0135;
 
 }  // namespace
 
@@ -101,7 +100,21 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
         break;
       }
     }
-    if (r.end == ShotEnd::Holed && (!crossed || (v > 0.5 * v_target && v < 1.5 * v_target))) break;
+    // Holed is not enough: a putt that dies into the front lip, or a line that only catches
+    // the side of the cup, drops for the plan and misses with the smallest error. Done when
+    // it reaches the cup at about the aimed speed and crosses within a centimetre of the
+    // centre; a ball that drops before the centre line is judged by its speed as it fell.
+    if (r.end == ShotEnd::Holed && !crossed && usable > 0) {
+      const AlongAcross fell = relative(start, line, sm[usable - 1].position);
+      if (sm[usable - 1].velocity.norm() < 0.5 * v_target) {  // died into the lip: firmer
+        power = std::clamp(power * std::sqrt((d + kPuttPast) / std::max(fell.along, 0.05)), 0.02, 1.1);
+        continue;
+      }
+      if (std::abs(fell.across) < kPuttCentred) break;
+      aim = std::clamp(aim - std::atan2(fell.across, d), -0.5, 0.5);  // in off the side: to the centre
+      continue;
+    }
+    if (r.end == ShotEnd::Holed && std::abs(across) < kPuttCentred && v > 0.5 * v_target && v < 1.5 * v_target) break;
     if (!crossed) {  // short: more speed, the line from where it stopped
       const AlongAcross at = relative(start, line, r.trajectory.summary.rest_position);
       power = std::clamp(power * std::sqrt((d + kPuttPast) / std::max(std::max(reach, at.along), 0.05)), 0.02, 1.1);
@@ -232,7 +245,7 @@ StrokeInput GolfBot::plan(const GolfRound& round) {
     return in;
   }
   // A partial swing is judged by feel: its power strays more the shorter it is.
-  const double power_sd = skill_.power_sd + kPartialFeel * (1.0 - std::min(in.meter.power, 1.0));
+  const double power_sd = skill_.power_sd + skill_.partial_feel_sd * (1.0 - std::min(in.meter.power, 1.0));
   in.meter.power = std::clamp(in.meter.power * (1.0 + rng_.normal(power_sd)), 0.02, 1.1);
   in.meter.accuracy_ms = std::clamp(rng_.normal(skill_.accuracy_sd_ms), MeterInput::kAccuracy.min, MeterInput::kAccuracy.max);
   return in;

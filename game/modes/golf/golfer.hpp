@@ -31,6 +31,12 @@ struct GolferSkill {
   /// lands too flat, so their drives would roll like a tour player's.
   double driver_attack = std::numeric_limits<double>::quiet_NaN();
   double driver_strike_loft = std::numeric_limits<double>::quiet_NaN();
+  /// Extra power spread of a partial swing per unit of power it leaves out: a chip or a
+  /// pitch is judged by feel (and struck fat or thin), and strays more the shorter the swing.
+  /// tour 0.08, scratch 0.18, amateur 0.26, beginner 0.35: the scratch bot's pitches from
+  /// 25-50 yd finish ~20 ft away as Arccos's scratch golfers' do, and the rounds' putts and
+  /// scores follow (test_bot_putting.cpp). A tour bot leaves a 20-yd chip ~6 ft away.
+  double partial_feel_sd = 0.08;
 };
 
 /// The four skills. Driver deliveries (attack, dynamic loft), TrackMan Combine averages for
@@ -42,10 +48,14 @@ struct GolferSkill {
 /// 15-handicap amateur 93, a beginner 80 (TrackMan's published handicap averages put the
 /// scratch and 15-handicap male golfer near 105 and 93 mph). Errors: ESTIMATES chosen so a
 /// tour bot's drives scatter ~±20 yd sideways (PGA TOUR fairways hit ~60 %) and each level
-/// below roughly doubles the spread; putts miss by a speed (6 %) and start-line (0.8°) spread
-/// that holes ~half of 2.5 m putts for a tour player (Broadie 2014, Every Shot Counts: tour
-/// players hole ~50 % from 8 ft) and fewer as the skill falls. The bot reads greens
-/// perfectly; its start-line spread stands for misreads too.
+/// below roughly doubles the spread. The tour bot's putts miss by a speed (6 %) and a
+/// start-line (1.15°) spread that hole as many as PGA Tour players do from every distance
+/// (Broadie 2014, Every Shot Counts: 3 ft 96 %, 5 ft 77 %, 8 ft 50 %, 10 ft 40 %, 20 ft 15 %;
+/// the bot on the national course's greens: 95, 77, 51, 40, 15 %). The others hole what Shot
+/// Scope's players of their handicap hole (MyGolfSpy, "How putting miss patterns change from
+/// scratch to 25 handicap": 0-3 ft / 6-9 ft, scratch 98 / 49 %, 15 handicap 93 / 36 %, 25
+/// handicap 88 / 30 %): scratch 1.1° and 8 %, amateur 1.6° and 8 %, beginner 2.1° and 11 %.
+/// The bot reads greens perfectly; its start-line spread stands for misreads too.
 const std::vector<GolferSkill>& golfer_skills();
 /// The skill by name; InputError listing the names.
 const GolferSkill& golfer_skill(std::string_view name);

@@ -7,18 +7,12 @@
 
 #include "game/modes/baseball/cage.hpp"
 #include "game/modes/baseball/figures.hpp"
+#include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
+using test::at;
 
-namespace {
-Intent at(IntentKind k, double t) {
-  Intent in;
-  in.kind = k;
-  in.time = t;
-  return in;
-}
-}  // namespace
 
 TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any frame rate", "[modes][baseball]") {
   for (const double dt : {0.016, 0.033, 0.066}) {

@@ -9,9 +9,11 @@
 #include "game/modes/golf/golf_play.hpp"
 #include "game/modes/golf/latency_calibration.hpp"
 #include "game/modes/replay.hpp"
+#include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
+using test::at;
 
 namespace {
 
@@ -26,13 +28,6 @@ Course first_hole(int holes = 1) {
   Course c = load_course(test::assets(), "links");
   c.holes.resize(static_cast<std::size_t>(holes));
   return c;
-}
-
-Intent at(IntentKind k, double t) {
-  Intent in;
-  in.kind = k;
-  in.time = t;
-  return in;
 }
 
 // Frames every `dt` s, as the window runs them: each frame hands the model the intents whose

@@ -1,0 +1,189 @@
+// The bots' putting: a plan that holes the putt through the middle of the cup at the aimed
+// pace, and a tour bot who then makes as many as PGA Tour players do from each distance.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cmath>
+
+#include "game/content/course_file.hpp"
+#include "game/modes/golf/bot.hpp"
+#include "game/modes/golf/round.hpp"
+#include "physics/units.hpp"
+#include "physics/world.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+
+namespace {
+
+const Course& national() {
+  static const Course c = load_course(test::assets(), "national");
+  return c;
+}
+
+/// A one-hole round of the national course's hole `n` (0-based) with the ball on its green
+/// `dist` metres from the cup in direction `angle`; nullopt when that spot is not green.
+std::optional<GolfRound> on_green(std::size_t n, double dist, double angle, const GolferSkill& g) {
+  Course c = national();
+  c.holes = {national().holes[n]};
+  c.holes[0].number = 1;
+  const Vec3 pin = c.holes[0].pin;
+  SurfaceContact hit;
+  if (!ground_under(*c.holes[0].world->world, pin.x() + dist * std::cos(angle), pin.z() + dist * std::sin(angle), 400.0,
+                    420.0, &hit))
+    return std::nullopt;
+  c.holes[0].tee = hit.point;
+  GolfRound r(test::assets(), c, g);
+  if (r.lie() != "green") return std::nullopt;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("a bot's putt plan goes through the middle of the cup at pace, so a small miss still drops", "[golf][bot][putting]") {
+  // From 2 ft and 4 ft all round the cup on every green: the plan holes, and so does the
+  // plan struck 5 % softer or harder or started 0.5° either side. A plan that only caught the
+  // lip (the first line that dropped) missed a quarter of these.
+  const GolferSkill& tour = golfer_skill("tour");
+  int spots = 0, holed = 0, tolerant = 0;
+  for (std::size_t n = 0; n < national().holes.size(); ++n) {
+    for (double dist : {0.61, 1.22}) {
+      for (int k = 0; k < 4; ++k) {
+        auto r = on_green(n, dist, kPi / 2.0 * k + 0.3, tour);
+        if (!r) continue;
+        const StrokeInput plan = GolfBot(test::assets(), tour, 1).intend(*r);
+        ++spots;
+        holed += r->simulate(plan).end == ShotEnd::Holed;
+        bool all = true;
+        for (const auto& [power, aim] : {std::pair{0.95, 0.0}, {1.05, 0.0}, {1.0, -0.5}, {1.0, 0.5}}) {
+          StrokeInput p = plan;
+          p.meter.power *= power;
+          p.aim += deg_to_rad(aim);
+          all = all && r->simulate(p).end == ShotEnd::Holed;
+        }
+        tolerant += all;
+      }
+    }
+  }
+  INFO(holed << " of " << spots << " plans hole, " << tolerant << " hold with a small miss");
+  REQUIRE(spots > 100);
+  CHECK(holed == spots);
+  CHECK(tolerant >= 0.95 * spots);
+}
+
+TEST_CASE("a tour bot holes putts as often as PGA Tour players from 3 to 20 ft", "[golf][bot][putting][reference][statistics]") {
+  // M. Broadie, Every Shot Counts (2014), PGA Tour one-putt rates: 3 ft 96 %, 5 ft 77 %,
+  // 8 ft 50 %, 10 ft 40 %, 20 ft 15 % (PGA Tour ShotLink as Golf.com reports it: 3 ft 99.4 %,
+  // 5 ft 80.7 %, 8 ft 52.9 %, 10 ft 41.3 %). Greens of the national course, four spots around
+  // each cup, ten putts each with the tour's speed and start-line errors; bands hold both
+  // sources and ~2 standard errors of 720 putts.
+  struct Row {
+    double ft, lo, hi;
+  };
+  const GolferSkill& tour = golfer_skill("tour");
+  for (const Row& row : {Row{3, 0.93, 1.0}, Row{5, 0.72, 0.86}, Row{8, 0.45, 0.58}, Row{10, 0.35, 0.47}, Row{20, 0.10, 0.20}}) {
+    int putts = 0, made = 0;
+    for (std::size_t n = 0; n < national().holes.size(); ++n) {
+      for (int k = 0; k < 4; ++k) {
+        auto r = on_green(n, ft_to_m(row.ft), kPi / 2.0 * k + 0.3, tour);
+        if (!r) continue;
+        GolfBot bot(test::assets(), tour, 100 + 4 * n + static_cast<unsigned>(k));
+        for (int t = 0; t < 10; ++t) {
+          ++putts;
+          made += r->simulate(bot.plan(*r)).end == ShotEnd::Holed;
+        }
+      }
+    }
+    const double rate = static_cast<double>(made) / putts;
+    INFO(row.ft << " ft: " << made << " of " << putts);
+    REQUIRE(putts > 500);
+    CHECK(rate >= row.lo);
+    CHECK(rate <= row.hi);
+  }
+}
+
+TEST_CASE("each bot holes short and mid-range putts as Shot Scope's golfers of its handicap do",
+          "[golf][bot][putting][reference][statistics]") {
+  // Shot Scope by handicap (MyGolfSpy, "How putting miss patterns change from scratch to 25
+  // handicap"), make % from 0-3 ft: scratch 98, 15 handicap 93, 25 handicap 88; from 6-9 ft
+  // 49, 36, 30. The game's scratch, amateur (a 15 handicap) and beginner, each bin sampled at
+  // 1, 2, 3 ft and 6, 7.5, 9 ft; 6.5 points either side (~2 standard errors of 2160 putts
+  // and the spread of how a bin's putts lie within it).
+  struct Row {
+    const char* skill;
+    double short_range, mid;
+  };
+  for (const Row& row : {Row{"scratch", 0.98, 0.49}, Row{"amateur", 0.93, 0.36}, Row{"beginner", 0.88, 0.30}}) {
+    const GolferSkill& g = golfer_skill(row.skill);
+    for (const auto& [bin, want] : {std::pair{std::array{1.0, 2.0, 3.0}, row.short_range}, {std::array{6.0, 7.5, 9.0}, row.mid}}) {
+      int putts = 0, made = 0;
+      for (const double ft : bin) {
+        for (std::size_t n = 0; n < national().holes.size(); ++n) {
+          for (int k = 0; k < 4; ++k) {
+            auto r = on_green(n, ft_to_m(ft), kPi / 2.0 * k + 0.3, g);
+            if (!r) continue;
+            GolfBot bot(test::assets(), g, 200 + 4 * n + static_cast<unsigned>(k));
+            for (int t = 0; t < 10; ++t) {
+              ++putts;
+              made += r->simulate(bot.plan(*r)).end == ShotEnd::Holed;
+            }
+          }
+        }
+      }
+      INFO(row.skill << " from " << bin[0] << "-" << bin[2] << " ft: " << made << " of " << putts);
+      REQUIRE(putts > 1500);
+      CHECK(static_cast<double>(made) / putts == Approx(want).margin(0.065));
+    }
+  }
+}
+
+TEST_CASE("over eight calm rounds each bot scores, putts and pitches as golfers of its level do",
+          "[golf][bot][reference][statistics]") {
+  // Putts per round: Shot Scope by handicap (MyGolfSpy, as above) scratch 29.9, 15 handicap
+  // 32.1, 25 handicap 34.3; Arccos's scratch golfers 5.2 one-putts, 11.5 two-putts and 1.7
+  // three-putts a round (33.3 putts; same article as below); 11-20 handicaps 34-35 (Manston
+  // Golf Centre, "Putting and wedge stats"); the PGA Tour ~29. Pitches from 25-50 yd:
+  // Arccos's scratch golfers finish 20 ft away on average (Arccos, "The stats behind a
+  // scratch golfer", 2022). Scores: a golfer's handicap is his better days, about 3 strokes
+  // under what he averages (USGA), so on this par 72 a scratch player averages ~75 and a 15
+  // handicap ~90; the tour bot 66-72 like a PGA Tour field; the beginner (slower than a 25
+  // handicap) at least 96. Calm air: the command line's rounds draw wind and play ~1 higher.
+  struct Row {
+    const char* skill;
+    double score_lo, score_hi, putts_lo, putts_hi;
+  };
+  const Course national = load_course(test::assets(), "national");
+  double scratch_pitch = 0.0;
+  int scratch_pitches = 0;
+  for (const Row& row : {Row{"tour", 66, 72, 27, 32}, Row{"scratch", 72, 78, 29, 34}, Row{"amateur", 85, 93, 31, 36},
+                         Row{"beginner", 96, 112, 34, 42}}) {
+    const GolferSkill& g = golfer_skill(row.skill);
+    double strokes = 0.0, putts = 0.0;
+    constexpr int kRounds = 8;
+    for (int seed = 1; seed <= kRounds; ++seed) {
+      GolfRound round(test::assets(), national, g);
+      GolfBot bot(test::assets(), g, static_cast<std::uint64_t>(seed));
+      while (!round.finished()) {
+        const double before = round.to_pin();
+        const StrokeInput in = bot.plan(round);
+        const StrokeRecord& r = round.play(in);
+        if (std::string(row.skill) == "scratch" && in.club != "putter" && before >= yd_to_m(25) && before < yd_to_m(50)) {
+          scratch_pitch += r.to_pin_m;
+          ++scratch_pitches;
+        }
+      }
+      for (const HoleCard& h : round.card()) {
+        strokes += h.strokes;
+        putts += h.putts;
+      }
+    }
+    INFO(row.skill << ": " << strokes / kRounds << " strokes, " << putts / kRounds << " putts a round");
+    CHECK(strokes / kRounds >= row.score_lo);
+    CHECK(strokes / kRounds <= row.score_hi);
+    CHECK(putts / kRounds >= row.putts_lo);
+    CHECK(putts / kRounds <= row.putts_hi);
+  }
+  INFO(scratch_pitches << " scratch pitches from 25-50 yd finish " << m_to_ft(scratch_pitch / scratch_pitches) << " ft away");
+  REQUIRE(scratch_pitches >= 10);
+  CHECK(m_to_ft(scratch_pitch / scratch_pitches) == Approx(20.0).margin(7.0));
+}

@@ -223,11 +223,14 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   dl->AddText(ImVec2(x0, y0 - 26), IM_COL32(255, 255, 255, 255), label);
 }
 
-void draw_launch_panel(const GolfPlay& play, const GolfUnits& units, int w, double flight_t) {
-  const ShotResult& r = play.last_shot();
+void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t) {
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(w) - 250, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(240, 0), ImGuiCond_Always);
   ImGui::Begin("Launch monitor", nullptr, kFixed);
+  if (r.club.speed > 0.0 && r.trajectory.summary.apex_m >= 0.05) {  // a full or part swing: the club's numbers too
+    ImGui::Text("Club speed  %s", units.speed(r.club.speed).c_str());
+    ImGui::Text("Smash       %.2f", r.smash_factor);
+  }
   ImGui::Text("Ball speed  %s", units.speed(r.launch.ball_speed).c_str());
   ImGui::Text("Launch      %.1f deg", rad_to_deg(r.launch.vertical_angle));
   ImGui::Text("Direction   %.1f deg %s", std::abs(rad_to_deg(r.launch.horizontal_angle)), r.launch.horizontal_angle >= 0 ? "R" : "L");

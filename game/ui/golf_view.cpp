@@ -421,7 +421,7 @@ bool GolfView::draw_replay(const ViewInput& in, Renderer& renderer) {
   renderer.draw(r.scene->build(cam, t, w, h), cam);
   renderer.blit_to(0, w, h);
   draw_banner("Replay   R: stop", w, 20.0f);
-  draw_launch_panel(*play_, units_, w, std::max(t, 0.0));
+  draw_launch_panel(play_->last_shot(), units_, w, std::max(t, 0.0));
   return true;
 }
 
@@ -527,7 +527,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     ImGui::TextUnformatted(saved_note_.c_str());
     ImGui::End();
   }
-  if (flying || settling) draw_launch_panel(*play_, units_, w, flying ? t : end);
+  if (flying || settling) draw_launch_panel(play_->last_shot(), units_, w, flying ? t : end);
   else draw_wind(*play_, units_, w);
   if (!settling) draw_golf_meter(*play_, units_, w, h, in.now);
   if (calibration_) draw_calibration(w, h, in.now);

@@ -156,6 +156,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
     for (const double d : RangePlay::targets()) draw_cup_and_flag(cam, Vec3(d, 0.0, 0.0), w, h);
   }
   draw_panel(w);
+  if (hit) draw_launch_panel(play_->last_shot(), units_, w, t);  // the last ball's numbers, its carry once it lands
   if (play_->stage() != RangePlay::Stage::Flying) {
     draw_meter_bar(play_->meter(), play_->last_click(), false, perfect_window_ms(MeterDifficulty::Standard), w, h, in.now);
     char label[96];

@@ -97,8 +97,10 @@ void RangePlay::apply(const Intent& in) {
     }
   } else if (stage_ == Stage::Flying && in.kind == IntentKind::Swing) {
     stage_ = Stage::Aiming;
-  } else if (stage_ == Stage::Flying && (in.kind == IntentKind::ClubUp || in.kind == IntentKind::ClubDown)) {
-    // Choosing the next club ends the last shot's view, as Enter and Space do.
+  } else if (stage_ == Stage::Flying &&
+             (in.kind == IntentKind::ClubUp || in.kind == IntentKind::ClubDown || in.kind == IntentKind::CaddiePlays)) {
+    // Choosing the next club, or asking for the next swing with your errors (B), ends the
+    // last shot's view, as Enter and Space do, and goes on.
     stage_ = Stage::Aiming;
     apply(in);
   }

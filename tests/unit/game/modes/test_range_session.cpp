@@ -72,9 +72,9 @@ TEST_CASE("the bag file reads back the same and the caddie chooses by it", "[mod
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("at the range the club keys work while the last ball flies and once it has stopped", "[modes][golf][range]") {
-  // Choosing the next club ends the last shot's view (as Enter and Space do) instead of being
-  // ignored until the view is dismissed.
+TEST_CASE("at the range the club keys and B work while the last ball flies and once it has stopped", "[modes][golf][range]") {
+  // Choosing the next club, or B for the next swing, ends the last shot's view (as Enter and
+  // Space do) instead of being ignored until the view is dismissed.
   const auto intent = [](IntentKind k, double t) {
     Intent in;
     in.kind = k;
@@ -94,6 +94,10 @@ TEST_CASE("at the range the club keys work while the last ball flies and once it
   play.update({intent(IntentKind::ClubUp, rest)}, rest + 0.1);  // the ball at rest
   CHECK(play.stage() == RangePlay::Stage::Aiming);
   CHECK(play.club() == "driver");
+  // B while a ball flies hits the next one: every press is a shot.
+  for (int k = 0; k < 3; ++k) play.update({intent(IntentKind::CaddiePlays, rest + 1.0 + 0.2 * k)}, rest + 1.1 + 0.2 * k);
+  CHECK(play.stage() == RangePlay::Stage::Flying);
+  CHECK(play.session().shots().size() == 5);
 }
 
 TEST_CASE("each golfer swings the driver as TrackMan measured golfers of that level: a slower drive spins more and rolls "

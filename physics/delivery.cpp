@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -117,22 +118,31 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   check_range("swing.speed", w.club_speed, GolfSwing::kClubSpeed, "m/s");
   check_range("swing.attack_angle", w.attack_angle, GolfSwing::kAttackAngle, "rad");
   check_range("swing.path", w.club_path, GolfSwing::kClubPath, "rad");
-  if (!std::isnan(w.dynamic_loft) && !std::isnan(w.strike_loft))
-    throw InputError("swing.strike_loft: give the loft at the face centre (swing.dynamic_loft) or where the face "
-                     "meets the ball (swing.strike_loft), not both");
-  if (!std::isnan(w.strike_loft)) check_range("swing.strike_loft", w.strike_loft, GolfSwing::kDynamicLoft, "rad");
-  check_range("swing.dynamic_loft", face_centre_loft(w, club), GolfSwing::kDynamicLoft, "rad");
   check_range("swing.face_angle", w.face_angle, GolfSwing::kFaceAngle, "rad");
+  const double up = std::isnan(w.impact_up) ? club.strike_height : w.impact_up;
   check_range("swing.impact_offset[0] (toe)", w.impact_toe, GolfSwing::kImpactToe, "m");
-  check_range("swing.impact_offset[1] (up)", std::isnan(w.impact_up) ? club.strike_height : w.impact_up,
-              GolfSwing::kImpactUp, "m");
+  check_range("swing.impact_offset[1] (up)", up, GolfSwing::kImpactUp, "m");
   // And on this club's face: a putter's is 24 mm tall, an iron's 76 x 46 mm (face_size).
   const Range toe_on_face{-club.face_half_width, club.face_half_width};
   const Range up_on_face{-club.face_half_height, club.face_half_height};
   check_range("swing.impact_offset[0] (toe) on the " + club.name + "'s face", w.impact_toe, toe_on_face, "m");
-  check_range("swing.impact_offset[1] (up) on the " + club.name + "'s face",
-              std::isnan(w.impact_up) ? club.strike_height : w.impact_up, up_on_face, "m");
+  check_range("swing.impact_offset[1] (up) on the " + club.name + "'s face", up, up_on_face, "m");
   check_range("swing.closure_rate", w.closure_rate, GolfSwing::kClosureRate, "rad/s");
+  // The loft last: a loft given at the strike is checked where the strike (checked above)
+  // puts the face centre, and named as given.
+  if (!std::isnan(w.dynamic_loft) && !std::isnan(w.strike_loft))
+    throw InputError("swing.strike_loft: give the loft at the face centre (swing.dynamic_loft) or where the face "
+                     "meets the ball (swing.strike_loft), not both");
+  if (std::isnan(w.strike_loft)) {
+    check_range("swing.dynamic_loft", face_centre_loft(w, club), GolfSwing::kDynamicLoft, "rad");
+  } else {
+    const double tilt = strike_tilt(club, up);
+    const Range at_strike{GolfSwing::kDynamicLoft.min + tilt, GolfSwing::kDynamicLoft.max + tilt};
+    char why[96];
+    std::snprintf(why, sizeof why, "swing.strike_loft (the %s's face tilts %.1f deg at this strike)", club.name.c_str(),
+                  rad_to_deg(tilt));
+    check_range(why, w.strike_loft, at_strike, "rad");
+  }
 }
 
 double strike_tilt(const ClubSpec& club, double up) { return std::atan(up / club.roll_radius); }

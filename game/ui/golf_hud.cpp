@@ -228,7 +228,7 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
   ImGui::SetNextWindowSize(ImVec2(240, 0), ImGuiCond_Always);
   ImGui::Begin("Launch monitor", nullptr, kFixed);
   if (r.club.speed > 0.0 && r.trajectory.summary.apex_m >= 0.05) {  // a full or part swing: the club's numbers too
-    ImGui::Text("Club speed  %s", units.speed(r.club.speed).c_str());
+    ImGui::Text("Club speed  %s", units.speed(r.club.speed_at_impact).c_str());  // after a lie's loss, as smash divides by
     ImGui::Text("Smash       %.2f", r.smash_factor);
   }
   ImGui::Text("Ball speed  %s", units.speed(r.launch.ball_speed).c_str());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "physics/error.hpp"
 #include "game/rules/run_shot.hpp"
@@ -79,6 +80,12 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
   const double full = full_swing_speed(skill_, assets_->equipment().club_info_of("putter"));
   double power = std::clamp(std::sqrt(2.0 * kDecel * (d + kPuttPast)) / 1.6 / full, 0.02, 1.1);
   double aim = 0.0;
+  // The tried plan that holed nearest the centre: what the bot plays when the tries run out
+  // before one is centred (the last correction is untried and may miss).
+  std::optional<std::pair<double, StrokeInput>> best_holed;
+  const auto remember = [&](double off_centre) {
+    if (!best_holed || std::abs(off_centre) < best_holed->first) best_holed = {std::abs(off_centre), in};
+  };
   for (int i = 0; i < 6; ++i) {
     in.aim = aim;
     in.meter.power = power;
@@ -102,7 +109,7 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
     }
     // Holed is not enough: a putt that dies into the front lip, or a line that only catches
     // the side of the cup, drops for the plan and misses with the smallest error. Done when
-    // it reaches the cup at about the aimed speed and crosses within a centimetre of the
+    // it reaches the cup at about the aimed speed and crosses within kPuttCentred of the
     // centre; a ball that drops before the centre line is judged by its speed as it fell.
     if (r.end == ShotEnd::Holed && !crossed && usable > 0) {
       const AlongAcross fell = relative(start, line, sm[usable - 1].position);
@@ -110,11 +117,15 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
         power = std::clamp(power * std::sqrt((d + kPuttPast) / std::max(fell.along, 0.05)), 0.02, 1.1);
         continue;
       }
-      if (std::abs(fell.across) < kPuttCentred) break;
+      if (std::abs(fell.across) < kPuttCentred) return in;
+      remember(fell.across);
       aim = std::clamp(aim - std::atan2(fell.across, d), -0.5, 0.5);  // in off the side: to the centre
       continue;
     }
-    if (r.end == ShotEnd::Holed && std::abs(across) < kPuttCentred && v > 0.5 * v_target && v < 1.5 * v_target) break;
+    if (r.end == ShotEnd::Holed) {
+      if (std::abs(across) < kPuttCentred && v > 0.5 * v_target && v < 1.5 * v_target) return in;
+      remember(across);
+    }
     if (!crossed) {  // short: more speed, the line from where it stopped
       const AlongAcross at = relative(start, line, r.trajectory.summary.rest_position);
       power = std::clamp(power * std::sqrt((d + kPuttPast) / std::max(std::max(reach, at.along), 0.05)), 0.02, 1.1);
@@ -124,6 +135,7 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
     power = std::clamp(power * std::sqrt((2.0 * kDecel * d + v_target * v_target) / (2.0 * kDecel * d + v * v)), 0.02, 1.1);
     aim = std::clamp(aim - std::atan2(across, d), -0.5, 0.5);
   }
+  if (best_holed) return best_holed->second;
   in.aim = aim;
   in.meter.power = power;
   return in;

@@ -33,9 +33,9 @@ struct GolferSkill {
   double driver_strike_loft = std::numeric_limits<double>::quiet_NaN();
   /// Extra power spread of a partial swing per unit of power it leaves out: a chip or a
   /// pitch is judged by feel (and struck fat or thin), and strays more the shorter the swing.
-  /// tour 0.08, scratch 0.18, amateur 0.26, beginner 0.35: the scratch bot's pitches from
-  /// 25-50 yd finish ~20 ft away as Arccos's scratch golfers' do, and the rounds' putts and
-  /// scores follow (test_bot_putting.cpp). A tour bot leaves a 20-yd chip ~6 ft away.
+  /// scratch 0.18: its pitches from 25-50 yd finish ~20 ft away as Arccos's scratch golfers'
+  /// do (test_bot_putting.cpp). tour 0.08, amateur 0.26, beginner 0.35: ESTIMATES spaced
+  /// like the full-swing errors, checked only through the rounds' scores and putts there.
   double partial_feel_sd = 0.08;
 };
 
@@ -51,7 +51,7 @@ struct GolferSkill {
 /// below roughly doubles the spread. The tour bot's putts miss by a speed (6 %) and a
 /// start-line (1.15°) spread that hole as many as PGA Tour players do from every distance
 /// (Broadie 2014, Every Shot Counts: 3 ft 96 %, 5 ft 77 %, 8 ft 50 %, 10 ft 40 %, 20 ft 15 %;
-/// the bot on the national course's greens: 95, 77, 51, 40, 15 %). The others hole what Shot
+/// the bot on the national course's greens: 95, 79, 51, 41, 13 %). The others hole what Shot
 /// Scope's players of their handicap hole (MyGolfSpy, "How putting miss patterns change from
 /// scratch to 25 handicap": 0-3 ft / 6-9 ft, scratch 98 / 49 %, 15 handicap 93 / 36 %, 25
 /// handicap 88 / 30 %): scratch 1.1° and 8 %, amateur 1.6° and 8 %, beginner 2.1° and 11 %.

@@ -6,6 +6,7 @@
 #include <iterator>
 #include <variant>
 
+#include "game/content/scenario_doc.hpp"
 #include "game/content/scenario_schema.hpp"
 #include "game/content/scenario_toml.hpp"
 #include "game/modes/lab/grip.hpp"
@@ -304,7 +305,7 @@ std::string LabModel::scenario_text() const {
   // An edit replaces the value the Lab was started with (`--set`) for its key: a key may be
   // given once.
   const std::vector<std::string> edits = edit_overrides();
-  const auto key_of = [](const std::string& o) { return o.substr(0, o.find('=')); };
+  const auto key_of = [](const std::string& o) { return set_key(o); };
   std::vector<std::string> overrides;
   for (const std::string& o : start_overrides_)
     if (std::none_of(edits.begin(), edits.end(), [&](const std::string& e) { return key_of(e) == key_of(o); }))

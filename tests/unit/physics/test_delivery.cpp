@@ -298,6 +298,12 @@ TEST_CASE("a launch monitor's dynamic loft is the face's loft where it meets the
   GolfSwing both = at_strike;
   both.dynamic_loft = deg_to_rad(12.0);
   CHECK_THROWS_WITH(golf("driver", both), Contains("swing.strike_loft") && Contains("not both"));
+  // A strike loft below the roll's tilt would turn the face centre past 0°: refused under the
+  // name given, with the range at this strike.
+  GolfSwing thin;
+  thin.strike_loft = deg_to_rad(1.0);
+  CHECK_THROWS_WITH(golf("driver", thin), Contains("swing.strike_loft") && Contains("tilts 2.2 deg") &&
+                                              !Contains("swing.dynamic_loft"));
 }
 
 TEST_CASE("TrackMan's average golfer's driver delivery launches as TrackMan measured it", "[delivery][golf]") {

@@ -43,8 +43,8 @@ ShotResult golf_shot() {
   r.club.speed_at_impact = mph_to_mps(112);
   r.club.attack_angle = -1.3 * kDeg;
   r.club.dynamic_loft = 13.0 * kDeg;
-  r.club.strike_loft = 13.0 * kDeg;  // a centre strike: the face-centre loft
-  r.club.spin_loft = 14.3 * kDeg;    // square to the path: strike loft less attack
+  r.club.strike_loft = 15.2 * kDeg;  // a launch monitor's dynamic loft: at the strike, not the face centre
+  r.club.spin_loft = 17.0 * kDeg;    // its spin loft: 3D, more than strike loft less attack
   r.club.lie = 58 * kDeg;
   r.club.impact_toe = 0.010;
   r.club.closure_rate = 2000 * kDeg;
@@ -170,9 +170,10 @@ TEST_CASE("every metric a sport's profile names exists, and a table row can be a
   }
   // A sport-specific row is a profile edit: the table follows the list.
   SportProfile golf = test::assets().sport("golf");
-  golf.report = {"ball_speed", "spin_loft"};
+  golf.report = {"ball_speed", "spin_loft", "dynamic_loft"};
   const std::string t = launch_table(golf_shot(), golf, UnitSystem::Imperial);
-  CHECK_THAT(t, Contains("Ball speed") && Contains("Spin loft") && Contains("14.3 deg"));
+  CHECK_THAT(t, Contains("Ball speed") && Contains("Spin loft") && Contains("17.0 deg") && Contains("15.2 deg"));
+  CHECK_THAT(t, !Contains("13.0 deg") && !Contains("14.3 deg"));  // the face-centre loft, and it less attack
   CHECK_THAT(t, !Contains("Carry"));
   golf.report = {"no_such_metric"};
   CHECK_THROWS_WITH(launch_table(golf_shot(), golf, UnitSystem::Imperial), Contains("no_such_metric"));

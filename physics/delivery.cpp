@@ -131,8 +131,7 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   // The loft last: a loft given at the strike is checked where the strike (checked above)
   // puts the face centre, and named as given.
   if (!std::isnan(w.dynamic_loft) && !std::isnan(w.strike_loft))
-    throw InputError("swing.strike_loft: give the loft at the face centre (swing.dynamic_loft) or where the face "
-                     "meets the ball (swing.strike_loft), not both");
+    throw InputError(std::string("swing.strike_loft: ") + kLoftGivenTwice);
   if (std::isnan(w.strike_loft)) {
     check_range("swing.dynamic_loft", face_centre_loft(w, club), GolfSwing::kDynamicLoft, "rad");
   } else {
@@ -146,6 +145,11 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
 }
 
 double strike_tilt(const ClubSpec& club, double up) { return std::atan(up / club.roll_radius); }
+
+Vec3 head_direction(const GolfSwing& swing) {
+  const double ca = std::cos(swing.attack_angle);
+  return Vec3(ca * std::cos(swing.club_path), std::sin(swing.attack_angle), ca * std::sin(swing.club_path));
+}
 
 double face_centre_loft(const GolfSwing& swing, const ClubSpec& club) {
   if (!std::isnan(swing.dynamic_loft)) return swing.dynamic_loft;
@@ -214,9 +218,7 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
   // Head motion: the face centre moves at club_speed along attack angle and path; the
   // closure rate turns the head about the shaft axis (rising from the heel toward the
   // golfer at the lie angle; + about it closes the face for a right-hander).
-  const double ca = std::cos(swing.attack_angle);
-  const Vec3 v_face = swing.club_speed * Vec3(ca * std::cos(swing.club_path), std::sin(swing.attack_angle),
-                                              ca * std::sin(swing.club_path));
+  const Vec3 v_face = swing.club_speed * head_direction(swing);
   const Vec3 shaft_axis(0.0, std::sin(club.lie), -std::cos(club.lie));
   const Vec3 omega = swing.closure_rate * shaft_axis;
 

@@ -99,6 +99,11 @@ double strike_tilt(const ClubSpec& club, double up);
 /// rad, the face-centre loft the swing delivers: dynamic_loft, else strike_loft less the
 /// tilt at the swing's strike, else the club's default.
 double face_centre_loft(const GolfSwing& swing, const ClubSpec& club);
+/// Unit vector of the face centre's motion: up by the attack angle, right by the path.
+Vec3 head_direction(const GolfSwing& swing);
+/// Why a swing that sets both swing.dynamic_loft and swing.strike_loft is refused.
+inline constexpr const char* kLoftGivenTwice =
+    "give the loft at the face centre (swing.dynamic_loft) or where the face meets the ball (swing.strike_loft), not both";
 void validate_bat_swing(const BatSwing& swing, const BatSpec& bat, const BallSpec& ball);
 void validate_pitch(const Pitch& pitch);
 

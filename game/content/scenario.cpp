@@ -85,9 +85,7 @@ ShotSpec spec_from(const CheckedDoc& doc) {
       w.dynamic_loft = doc.quantity_if_set("swing.dynamic_loft").value_or(std::nan(""));
       w.strike_loft = doc.quantity_if_set("swing.strike_loft").value_or(std::nan(""));
       if (!std::isnan(w.dynamic_loft) && !std::isnan(w.strike_loft))
-        throw InputError(doc.origin("swing.strike_loft") +
-                         ": swing.strike_loft: give the loft at the face centre (swing.dynamic_loft) or where the face "
-                         "meets the ball (swing.strike_loft), not both");
+        throw InputError(doc.origin("swing.strike_loft") + ": swing.strike_loft: " + kLoftGivenTwice);
       w.face_angle = doc.quantity("swing.face_angle");
       if (doc.has("swing.impact_offset")) {
         const auto offset = doc.list("swing.impact_offset");

@@ -61,9 +61,7 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
       k.strike_loft = k.dynamic_loft + strike_tilt(*s.club, k.impact_up);
       // TrackMan's spin loft: the angle between the head's direction (attack and path) and
       // the face's normal where it meets the ball; a face open or shut to the path adds to it.
-      const double ca = std::cos(w.attack_angle);
-      const Vec3 head_dir(ca * std::cos(w.club_path), std::sin(w.attack_angle), ca * std::sin(w.club_path));
-      k.spin_loft = std::acos(std::clamp(d.impact_input.normal.normalized().dot(head_dir), -1.0, 1.0));
+      k.spin_loft = std::acos(std::clamp(d.impact_input.normal.normalized().dot(head_direction(w)), -1.0, 1.0));
       k.closure_rate = w.closure_rate;
       r.impactor_mesh = s.club_info->mesh;
     } else {

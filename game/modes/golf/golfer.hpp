@@ -44,9 +44,10 @@ struct GolferSkill {
 /// blocks, 2024): scratch or better −0.9° / 13.0°, the average golfer (14.5 handicap, 94 mph)
 /// −1.8° / 15.1°; the beginner takes the Combine's column at his speed (79 mph, the women's
 /// 15 handicap) −2.3° / 16.5°. The tour skill keeps the club's delivery (fitted to TrackMan's
-/// PGA row: 12.5° at its strike, TrackMan's 2023 PGA average 12.8°). Driver speeds: tour 113 mph (TrackMan PGA average), scratch 105, a
-/// 15-handicap amateur 93, a beginner 80 (TrackMan's published handicap averages put the
-/// scratch and 15-handicap male golfer near 105 and 93 mph). Errors: ESTIMATES chosen so a
+/// PGA row: 12.5° at its strike, TrackMan's 2023 PGA average 12.8°). Driver speeds: tour
+/// 113 mph (TrackMan PGA average), scratch 105, a 15-handicap amateur 93, a beginner 80
+/// (TrackMan's published handicap averages put the scratch and 15-handicap male golfer near
+/// 105 and 93 mph). Errors: ESTIMATES chosen so a
 /// tour bot's drives scatter ~±20 yd sideways (PGA TOUR fairways hit ~60 %) and each level
 /// below roughly doubles the spread. The tour bot's putts miss by a speed (6 %) and a
 /// start-line (1.15°) spread that hole as many as PGA Tour players do from every distance

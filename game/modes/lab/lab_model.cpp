@@ -305,10 +305,9 @@ std::string LabModel::scenario_text() const {
   // An edit replaces the value the Lab was started with (`--set`) for its key: a key may be
   // given once.
   const std::vector<std::string> edits = edit_overrides();
-  const auto key_of = [](const std::string& o) { return set_key(o); };
   std::vector<std::string> overrides;
   for (const std::string& o : start_overrides_)
-    if (std::none_of(edits.begin(), edits.end(), [&](const std::string& e) { return key_of(e) == key_of(o); }))
+    if (std::none_of(edits.begin(), edits.end(), [&](const std::string& e) { return set_key(e) == set_key(o); }))
       overrides.push_back(o);
   overrides.insert(overrides.end(), edits.begin(), edits.end());
   return scenario_toml(load_scenario(assets_, scenario_.name, overrides));

@@ -150,7 +150,23 @@ bool find_contact(const ShotModel& m, ShotState& st, const Segment& s, const Sta
         // grazed the triangle's edge instead of its face: keep the swept time then.
         if (t_lo > t_from || (t_chord - tr) * (pb - from).norm() / (tb - t_from) < 0.01) th = tr;
       }
-      if (th > t_chord) sweep_past_touch(m, st, s, t_chord, &th, &c);
+      if (th > t_chord) {
+        // The arc meets the touched face's plane past where the chord met the face: near an
+        // edge the ball is over the neighbouring face of the surface by then, and where that
+        // face falls away (a slope steepening down) the ball has not reached it yet. It
+        // touches that face where the arc meets its plane (read on the first face's plane,
+        // a hop onto a bunker's steepening face landed 2 ms early and rested 1 cm off).
+        SurfaceContact next = c;
+        terrain.refine_contact(position_at(s, th), &next);
+        if (next.mesh != c.mesh || next.triangle != c.triangle) {
+          const PlaneGap next_plane(s, next.normal, next.point, radius);
+          if (next_plane.gap(th) > 0.0 && next_plane.gap(tb) <= 0.0) {
+            th = find_root_newton(next_plane, th, tb, th);
+            c = next;
+          }
+        }
+        sweep_past_touch(m, st, s, t_chord, &th, &c);
+      }
       hit->t = th;
       hit->contact = c;
       return true;

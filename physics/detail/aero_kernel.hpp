@@ -79,16 +79,14 @@ struct AeroKernel {
       *accel = Vec3::Zero();
       return;
     }
-    const Vec3 lift_dir = omega.cross(v_rel);  // |ω × v_r| = ω⊥ |v_r|
-    const double cross2 = lift_dir.squaredNorm();
-    const double cross_norm = std::sqrt(cross2);
-    const double inv_speed2 = 1.0 / speed2;
-    const double inv_cross = cross2 > 0.0 ? 1.0 / cross_norm : 0.0;
-    const double s = radius * cross_norm * inv_speed2;  // R ω⊥ / |v_r|
-    const double spin = m.d_krpm != 0.0 ? omega.norm() : 0.0;  // only the Nathan drag term reads it
+    const Vec3 lift_dir = omega.cross(v_rel);  // |ω × v_r| = |ω| |v_r| sin(ω, v_r)
+    const double spin = omega.norm();
+    const double inv_speed = 1.0 / speed;
+    const double inv_spin = spin > 0.0 ? 1.0 / spin : 0.0;
+    const double s = radius * spin * inv_speed;  // R |ω| / |v_r|
     const AeroCoefficients c = aero_coefficients(m, s, spin, speed * re_per_speed, inv_width, inv_onset);
-    // Drag -½ρA·Cd·|v_r|·v_r; lift ½ρA·Cl·|v_r|² along (ω × v_r)/|ω × v_r|; per unit mass.
-    *accel = (-accel_per_cd * c.cd * speed) * v_rel + (accel_per_cd * c.cl * speed2 * inv_cross) * lift_dir;
+    // Drag -½ρA·Cd·|v_r|·v_r; lift ½ρA·Cl·|v_r|²·(ω × v_r)/(|ω||v_r|); per unit mass.
+    *accel = (-accel_per_cd * c.cd * speed) * v_rel + (accel_per_cd * c.cl * speed * inv_spin) * lift_dir;
   }
 };
 

@@ -96,11 +96,11 @@ struct Dynamics {
     return still_air ? v : Vec3(v - wind_at(model->environment, y[1] - ground_height, profile));
   }
 
-  /// The spin parameter S = R|ω × v_r|/|v_r|² of state y (as the aero kernel takes it).
+  /// The spin parameter S = R|ω|/|v_r| of state y (as the aero kernel takes it).
   double spin_parameter(const State9& y) const {
     const Vec3 v_rel = air_velocity(y);
     const double speed2 = v_rel.squaredNorm();
-    return speed2 > 0.0 ? model->ball.radius * y.segment<3>(6).cross(v_rel).norm() / speed2 : 0.0;
+    return speed2 > 0.0 ? model->ball.radius * y.segment<3>(6).norm() / std::sqrt(speed2) : 0.0;
   }
 
   State9 operator()(double /*t*/, const State9& y) const {

@@ -55,6 +55,30 @@ TEST_CASE("aero forces: drag opposes motion, backspin lifts, rifle spin does not
   CHECK(slice.force.z() > 0.0);
 }
 
+TEST_CASE("lift reads the whole spin and acts with its share across the flow", "[aero]") {
+  // A pitch whose spin is partly gyro (along the flight): the lift coefficient is read at the
+  // whole spin's S = R|ω|/|v| and scaled by sin(ω, v), the share across the flow.
+  const AeroModel& m = test::assets().aero("nathan");
+  const double rho = 1.2, r = 0.0369, area = kPi * r * r;
+  const Vec3 v(-38.0, 0.0, 0.0);              // toward the plate
+  const Vec3 transverse(0.0, 0.0, -90.0);     // backspin for -x travel: lifts
+  const Vec3 gyro(-200.0, 0.0, 0.0);          // along the flight
+  const Vec3 w = transverse + gyro;
+  const AeroEffect e = aero_effect(m, rho, r, v, w);
+  const double s = r * w.norm() / v.norm();
+  const double share = transverse.norm() / w.norm();
+  CHECK(e.force.y() == Approx(0.5 * rho * area * m.coefficients(s, w.norm()).cl * v.squaredNorm() * share).epsilon(1e-12));
+  CHECK(e.force.z() == Approx(0.0).margin(1e-12));
+  // Spin all across the flow: the same law as reading the transverse spin alone.
+  const AeroEffect across = aero_effect(m, rho, r, v, transverse);
+  const double s_across = r * transverse.norm() / v.norm();
+  CHECK(across.force.y() ==
+        Approx(0.5 * rho * area * m.coefficients(s_across, transverse.norm()).cl * v.squaredNorm()).epsilon(1e-12));
+  // Where Cl(S) bends over, the gyro share lowers what the same transverse spin lifts.
+  CHECK(e.force.y() < across.force.y());
+  CHECK(e.force.y() > 0.0);
+}
+
 TEST_CASE("unknown aero model lists the allowed names; the shipped models validate", "[aero][input]") {
   try {
     test::assets().aero("magic");

@@ -137,14 +137,13 @@ TEST_CASE("each bot holes short and mid-range putts as Shot Scope's golfers of i
   }
 }
 
-TEST_CASE("over eight calm rounds each bot scores, putts and pitches as golfers of its level do",
+TEST_CASE("over eight calm rounds each bot scores and putts as golfers of its level do",
           "[golf][bot][reference][statistics]") {
   // Putts per round: Shot Scope by handicap (MyGolfSpy, as above) scratch 29.9, 15 handicap
   // 32.1, 25 handicap 34.3; Arccos's scratch golfers 5.2 one-putts, 11.5 two-putts and 1.7
-  // three-putts a round (33.3 putts; same article as below); 11-20 handicaps 34-35 (Manston
-  // Golf Centre, "Putting and wedge stats"); the PGA Tour ~29. Pitches from 25-50 yd:
-  // Arccos's scratch golfers finish 20 ft away on average (Arccos, "The stats behind a
-  // scratch golfer", 2022). Scores: a golfer's handicap is his better days, about 3 strokes
+  // three-putts a round (33.3 putts; Arccos, "The stats behind a scratch golfer", 2022);
+  // 11-20 handicaps 34-35 (Manston Golf Centre, "Putting and wedge stats"); the PGA Tour ~29.
+  // Scores: a golfer's handicap is his better days, about 3 strokes
   // under what he averages (USGA), so on this par 72 a scratch player averages ~75 and a 15
   // handicap ~90; the tour bot 66-72 like a PGA Tour field; the beginner (slower than a 25
   // handicap) at least 96. Calm air: the command line's rounds draw wind and play ~1 higher.
@@ -153,8 +152,6 @@ TEST_CASE("over eight calm rounds each bot scores, putts and pitches as golfers 
     double score_lo, score_hi, putts_lo, putts_hi;
   };
   const Course national = load_course(test::assets(), "national");
-  double scratch_pitch = 0.0;
-  int scratch_pitches = 0;
   for (const Row& row : {Row{"tour", 66, 72, 27, 32}, Row{"scratch", 72, 78, 29, 34}, Row{"amateur", 85, 93, 31, 36},
                          Row{"beginner", 96, 112, 34, 42}}) {
     const GolferSkill& g = golfer_skill(row.skill);
@@ -163,15 +160,7 @@ TEST_CASE("over eight calm rounds each bot scores, putts and pitches as golfers 
     for (int seed = 1; seed <= kRounds; ++seed) {
       GolfRound round(test::assets(), national, g);
       GolfBot bot(test::assets(), g, static_cast<std::uint64_t>(seed));
-      while (!round.finished()) {
-        const double before = round.to_pin();
-        const StrokeInput in = bot.plan(round);
-        const StrokeRecord& r = round.play(in);
-        if (std::string(row.skill) == "scratch" && in.club != "putter" && before >= yd_to_m(25) && before < yd_to_m(50)) {
-          scratch_pitch += r.to_pin_m;
-          ++scratch_pitches;
-        }
-      }
+      while (!round.finished()) round.play(bot.plan(round));
       for (const HoleCard& h : round.card()) {
         strokes += h.strokes;
         putts += h.putts;
@@ -183,7 +172,31 @@ TEST_CASE("over eight calm rounds each bot scores, putts and pitches as golfers 
     CHECK(putts / kRounds >= row.putts_lo);
     CHECK(putts / kRounds <= row.putts_hi);
   }
-  INFO(scratch_pitches << " scratch pitches from 25-50 yd finish " << m_to_ft(scratch_pitch / scratch_pitches) << " ft away");
-  REQUIRE(scratch_pitches >= 10);
-  CHECK(m_to_ft(scratch_pitch / scratch_pitches) == Approx(20.0).margin(7.0));
+}
+
+TEST_CASE("a scratch bot's pitches from 25-50 yd finish about 20 ft away", "[golf][bot][reference][statistics]") {
+  // Arccos's scratch golfers finish pitches from 25-50 yd 20 ft from the hole on average
+  // (Arccos, "The stats behind a scratch golfer", 2022). A round has one or two such
+  // pitches and their misses are skewed (a thin one runs 60 ft past), so the average is
+  // taken over 40 calm national rounds (~70 pitches; eight rounds' 13 moved it by 7 ft).
+  const Course national = load_course(test::assets(), "national");
+  const GolferSkill& g = golfer_skill("scratch");
+  double to_pin = 0.0;
+  int pitches = 0;
+  for (int seed = 1; seed <= 40; ++seed) {
+    GolfRound round(test::assets(), national, g);
+    GolfBot bot(test::assets(), g, static_cast<std::uint64_t>(seed));
+    while (!round.finished()) {
+      const double before = round.to_pin();
+      const StrokeInput in = bot.plan(round);
+      const StrokeRecord& r = round.play(in);
+      if (in.club != "putter" && before >= yd_to_m(25) && before < yd_to_m(50)) {
+        to_pin += r.to_pin_m;
+        ++pitches;
+      }
+    }
+  }
+  INFO(pitches << " scratch pitches from 25-50 yd finish " << m_to_ft(to_pin / pitches) << " ft away");
+  REQUIRE(pitches >= 40);
+  CHECK(m_to_ft(to_pin / pitches) == Approx(20.0).margin(7.0));
 }

@@ -9,7 +9,7 @@ mkdir -p "$out"; out=$(cd "$out" && pwd); bin=$(cd "$(dirname "$bin")" && pwd)/$
 cat > "$out/drive.sh" <<D
 #!/usr/bin/env bash
 set -u
-"$bin" play --mode baseball --shots-dir "$out" >> "$out/log.txt" 2>&1 &
+"$bin" play --mode baseball --seed 11 --shots-dir "$out" >> "$out/log.txt" 2>&1 &
 pid=\$!
 wid=""
 for _ in \$(seq 1 150); do wid=\$(xdotool search --name Sweetspot 2>/dev/null | head -1 || true); [ -n "\$wid" ] && break; sleep 0.2; done

@@ -51,6 +51,7 @@ std::unique_ptr<GolfPlay> golf_model(const Assets& assets, const PlayOptions& o)
   setup.options.format = golf_format(o.format);
   setup.options.gimme_m = o.gimme >= 0.0 ? o.gimme : setup.options.format == GolfFormat::Match ? kMatchGimme : 0.0;
   setup.options.auto_putt = o.auto_putt;
+  setup.options.seed = o.seed;
   return std::make_unique<GolfPlay>(assets, play_course(assets, o), setup);
 }
 
@@ -65,10 +66,10 @@ ModeRegistry play_modes(const Assets& assets, const PlayOptions& o, std::ostream
          return make_golf_view(*a, golf_model(*a, o), {o.exit_when_done, o.save, !o.metric}, *log);
        }},
       {"range", [a, o] {
-         return make_range_view(*a, std::make_unique<RangePlay>(*a, golfer_skill(o.skill), 5, meter_difficulty(o.difficulty)),
+         return make_range_view(*a, std::make_unique<RangePlay>(*a, golfer_skill(o.skill), 5, meter_difficulty(o.difficulty), o.seed),
                                 {o.bag.empty() ? std::string("sweetspot_bag.toml") : o.bag, !o.metric});
        }},
-      {"baseball", [a, o] { return make_cage_view(*a, std::make_unique<BattingCage>(*a), {o.exit_when_done, o.pitches}); }},
+      {"baseball", [a, o] { return make_cage_view(*a, std::make_unique<BattingCage>(*a, o.seed), {o.exit_when_done, o.pitches}); }},
   };
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -57,7 +59,21 @@ int run_play_headless(const Assets& assets, const PlayOptions& o, std::ostream& 
 
 namespace {
 
-LoopStats run_window(const Assets& assets, const PlayOptions& o, std::ostream& out) {
+// A session's own draw of winds, swings and pitches: two 32-bit words from the system's
+// entropy source, never 0 (0 asks for a draw).
+std::uint64_t session_seed() {
+  std::random_device rd;
+  const std::uint64_t seed = (static_cast<std::uint64_t>(rd()) << 32) ^ static_cast<std::uint64_t>(rd());
+  return seed == 0 ? 1 : seed;
+}
+
+LoopStats run_window(const Assets& assets, const PlayOptions& given, std::ostream& out) {
+  // Each session draws its own winds, bot swings and pitches (a fixed one would deal the
+  // same round and the same pitches every time); the seed is printed, and --seed plays that
+  // session again.
+  PlayOptions o = given;
+  if (o.seed == 0) o.seed = session_seed();
+  out << "seed " << o.seed << " (play --seed " << o.seed << " draws this session again)\n";
   // Bad input fails here, before a window opens.
   const ModeRegistry modes = play_modes(assets, o, out);
   std::size_t first = modes.size();

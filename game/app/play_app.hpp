@@ -40,6 +40,9 @@ struct PlayOptions {
   bool exit_when_done = false;           ///< golf / baseball: close the window once the round or the pitches are done
   int pitches = 0;                       ///< baseball: pitches in the session (0 = until closed)
   bool mute = false;                     ///< window: no impact sound (no audio device is opened)
+  /// window: the golf round's winds and bots' swings, the range caddie's swings and the
+  /// cage's pitches. 0: a fresh draw for the session (printed, so it can be played again).
+  std::uint64_t seed = 0;
   /// window: "auto" (the 3D view's resolution drops while frames run over budget; sun
   /// shadows on a GPU), "low" (as auto, never shadows), "high" (full resolution and shadows,
   /// whatever it costs).

@@ -1,6 +1,8 @@
 // `sweetspot play [SCENARIO]`: the game window, or the shot headless when there is no display.
 #include <filesystem>
+#include <cstdint>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -54,6 +56,8 @@ RunFn setup_play(CLI::App& sub) {
   window_only.push_back(sub.add_option("--shots-dir", o->shots_dir, "where F12 writes its screenshots (default: here)"));
   window_only.push_back(sub.add_flag("--exit-when-done", o->exit_when_done, "golf, baseball: close once the round or the pitches are done (automation)"));
   window_only.push_back(sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(CLI::Range(1, 1000)));
+  window_only.push_back(sub.add_option("--seed", o->seed, "the session's winds, bot and caddie swings and pitches, 1..2^64-1 (default: a fresh draw, printed)")
+      ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max())));
   return [o, window_only](const Assets& assets) -> int {
     if (!o->screenshot.empty()) check_png_output(o->screenshot, "--screenshot");  // before the frames run
     // The golf options are checked now, not when Tab first opens the golf mode.

@@ -12,7 +12,7 @@ cat > "$work/drive.sh" <<'D'
 #!/usr/bin/env bash
 set -u
 bin="$1"; work="$2"
-"$bin" play --mode baseball --pitches 1 --exit-when-done --screenshot "$work/cage.png" > "$work/log.txt" 2>&1 &
+"$bin" play --mode baseball --seed 11 --pitches 1 --exit-when-done --screenshot "$work/cage.png" > "$work/log.txt" 2>&1 &
 pid=$!
 wid=""
 for _ in $(seq 1 150); do wid=$(xdotool search --name Sweetspot 2>/dev/null | head -1 || true); [ -n "$wid" ] && break; sleep 0.2; done

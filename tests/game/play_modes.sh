@@ -16,7 +16,7 @@ cat > "$work/drive.sh" <<'D'
 #!/usr/bin/env bash
 set -u
 bin="$1"; work="$2"
-"$bin" play --mode golf --course links --holes 1 --no-flyover --screenshot "$work/modes.png" > "$work/log.txt" 2>&1 &
+"$bin" play --mode golf --seed 1 --course links --holes 1 --no-flyover --screenshot "$work/modes.png" > "$work/log.txt" 2>&1 &
 pid=$!
 wid=""
 for _ in $(seq 1 150); do wid=$(xdotool search --name Sweetspot 2>/dev/null | head -1 || true); [ -n "$wid" ] && break; sleep 0.2; done

@@ -8,9 +8,10 @@
 
 namespace sweetspot {
 
-RangePlay::RangePlay(const Assets& assets, const GolferSkill& skill, int shots_per_club, MeterDifficulty difficulty)
+RangePlay::RangePlay(const Assets& assets, const GolferSkill& skill, int shots_per_club, MeterDifficulty difficulty,
+                     std::uint64_t seed)
     : assets_(assets), skill_(skill), per_club_(shots_per_club), difficulty_(difficulty), session_(assets, skill),
-      bot_(assets, skill, 1) {}
+      bot_(assets, skill, seed) {}
 
 const std::string& RangePlay::club() const { return golf_bag()[club_]; }
 

@@ -4,6 +4,8 @@
 // measured bag is what the caddie and the map's rings then use (written by the view).
 #pragma once
 
+#include <cstdint>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,8 +20,9 @@ class RangePlay {
  public:
   enum class Stage { Aiming, Swinging, Flying };
 
+  /// `seed`: the caddie's swings (B) draw their errors from it.
   RangePlay(const Assets& assets, const GolferSkill& skill, int shots_per_club = 5,
-            MeterDifficulty difficulty = MeterDifficulty::Standard);
+            MeterDifficulty difficulty = MeterDifficulty::Standard, std::uint64_t seed = 1);
 
   /// Intents: Swing (the meter's clicks), Cancel, ClubUp/ClubDown, CaddiePlays (a swing with
   /// the skill's own errors), Continue (skip the flight), Restart (a new session).

@@ -134,3 +134,22 @@ TEST_CASE("each golfer swings the driver as TrackMan measured golfers of that le
   CHECK(added_loft(golfer_skill("tour"), test::assets().equipment()) == 0.0);
   CHECK(rad_to_deg(added_loft(golfer_skill("amateur"), test::assets().equipment())) == Approx(15.1 - 12.53).margin(0.05));
 }
+
+TEST_CASE("the range caddie's swings come from the session's seed", "[modes][golf][range]") {
+  // A session's seed deals its caddie swings (B): the same seed the same swings, another
+  // seed others, so the range does not repeat one sequence every time it opens.
+  const auto caddie_carries = [](std::uint64_t seed) {
+    RangePlay play(test::assets(), golfer_skill("amateur"), 5, MeterDifficulty::Standard, seed);
+    std::vector<double> carries;
+    for (int k = 0; k < 4; ++k) {
+      Intent in;
+      in.kind = IntentKind::CaddiePlays;
+      in.time = 1.0 + k;
+      play.update({in}, in.time + 0.1);
+      carries.push_back(play.last_shot().trajectory.summary.carry_m);
+    }
+    return carries;
+  };
+  CHECK(caddie_carries(3) == caddie_carries(3));
+  CHECK(caddie_carries(3) != caddie_carries(4));
+}

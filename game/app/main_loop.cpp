@@ -113,11 +113,14 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
         break;
       }
       if (k.key == GLFW_KEY_ESCAPE) {
-        // Esc cancels what is in progress (a meter: no stroke counted), then pauses.
+        // Esc takes back a swing under way (no stroke counted) and play goes on; with none,
+        // it pauses. (Both at one press opened the menu over a cancelled swing.)
+        const bool busy = view.busy();
         Intent cancel;
         cancel.kind = IntentKind::Cancel;
         cancel.time = k.time - slot.offset;
         view.send(cancel);
+        if (busy) continue;
         paused = true;
         paused_at = k.time;
         continue;

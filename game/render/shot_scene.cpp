@@ -93,9 +93,12 @@ Eigen::Matrix4f translate_scale(const Vec3& p, double s) {
   return m;
 }
 
-std::string format_distance(double metres, bool yards) {
+// The scene's distance unit: metres per unit and its symbol ("yd" and "m" golf, "ft" baseball).
+double unit_length(const std::string& unit) { return unit == "yd" ? kYard : unit == "ft" ? kFoot : 1.0; }
+
+std::string format_distance(double metres, const std::string& unit) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.0f %s", yards ? metres / kYard : metres / kFoot, yards ? "yd" : "ft");
+  std::snprintf(buf, sizeof buf, "%.0f %s", metres / unit_length(unit), unit.c_str());
   return buf;
 }
 
@@ -147,13 +150,13 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
   m.input = input;
   m.style = style;
   if (input.assets == nullptr) throw InputError("render: no assets given");
-  if (input.distance_unit != "yd" && input.distance_unit != "ft") {
-    throw InputError("distance unit '" + input.distance_unit + "' is not one of: yd, ft");
+  if (input.distance_unit != "yd" && input.distance_unit != "m" && input.distance_unit != "ft") {
+    throw InputError("distance unit '" + input.distance_unit + "' is not one of: yd, m, ft");
   }
   if (!(input.ball_radius > 0.005 && input.ball_radius < 0.1)) {
     throw InputError("ball radius " + std::to_string(input.ball_radius) + " m is outside 0.005..0.1 m");
   }
-  m.golf = input.distance_unit == "yd";
+  m.golf = input.distance_unit != "ft";
   const auto& root = input.assets->root();
 
   double ground_min_y = 0.0;
@@ -463,20 +466,21 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const Vec3 g(lp.x(), ground_at(lp.x(), lp.z()) + 0.05, lp.z());
       const double r = px(g, m.style.marker_radius_px);
       append_ring(scene.ground_overlay, g, 0.65 * r, r, kLandingColor);
-      label(format_distance(s.carry_m, m.golf), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), kLandingColor);
+      label(format_distance(s.carry_m, m.input.distance_unit), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), kLandingColor);
     }
     if (t >= end_t - 1e-9 && (s.rest_position - s.landing_position).norm() > 0.5) {
       const Vec3 rp = s.rest_position;
       const Vec3 g(rp.x(), ground_at(rp.x(), rp.z()), rp.z());
       const double h = px(g, 30.0);
       append_pin(scene.top_overlay, g, h, px(g, 2.5), cam_right, kRestColor);
-      label(format_distance(s.total_m, m.golf), g + Vec3(0, h, 0) + cam_up * px(g, 6.0), kRestColor);
+      label(format_distance(s.total_m, m.input.distance_unit), g + Vec3(0, h, 0) + cam_up * px(g, 6.0), kRestColor);
     }
   }
 
   if (m.golf) {
     // One reference for every distance: the ball's start. Lines across the shot's aim every
-    // 50 yd from there, out past the shot and the flag (or to the end of a world without one).
+    // 50 yd (50 m in metres) from there, out past the shot and the flag (or to the end of a
+    // world without one).
     Vec3 aim = aim_.value_or(Vec3::UnitX());
     if (!aim_ && have_shot) {
       Vec3 d = samples.back().position - launch;
@@ -486,18 +490,19 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     aim.y() = 0;
     aim = aim.norm() > 1e-9 ? aim.normalized() : Vec3::UnitX();
     const Vec3 across(-aim.z(), 0.0, aim.x());  // right of the aim line
+    const double stripe = 50.0 * unit_length(m.input.distance_unit);  // m between the lines
     double reach = 60.0;
     for (const auto& q : samples) reach = std::max(reach, (q.position - launch).dot(aim) + 20.0);
     if (!m.world.empty() && m.flag_position) {
       // On a hole: to 50 yd past the flag (a course's world runs on over the other holes).
-      reach = std::max(reach, (*m.flag_position - launch).dot(aim) + 50 * kYard);
+      reach = std::max(reach, (*m.flag_position - launch).dot(aim) + stripe);
     } else if (!m.world.empty()) {
       for (double x : {m.world_min.x(), m.world_max.x()})
         for (double z : {m.world_min.z(), m.world_max.z()}) reach = std::max(reach, (Vec3(x, 0, z) - launch).dot(aim));
     }
     const double half = 22.0;
-    for (int k = 1; k * 50 * kYard <= reach && k <= 20; ++k) {
-      const Vec3 mid = launch + k * 50 * kYard * aim;
+    for (int k = 1; k * stripe <= reach && k <= 20; ++k) {
+      const Vec3 mid = launch + k * stripe * aim;
       if (!m.world.empty() && !ground_height(mid.x(), mid.z())) continue;  // off the world
       constexpr int n = 22;
       auto at = [&](double off) {
@@ -509,7 +514,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     }
   } else {
     for (const auto& [dist, at_wall] : m.fence_marks) {
-      label(format_distance(dist, false), at_wall + Vec3(0, 4.0, 0), kFenceLabelColor);
+      label(format_distance(dist, "ft"), at_wall + Vec3(0, 4.0, 0), kFenceLabelColor);
     }
   }
 

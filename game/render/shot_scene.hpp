@@ -43,7 +43,8 @@ using PeopleFn = std::function<void(const PeopleFrame& frame, MeshData& out)>;
 struct ShotSceneInput {
   const Assets* assets = nullptr;       ///< required: where the meshes are
   const WorldAsset* world = nullptr;    ///< the world drawn and asked for heights; nullptr = a grass plane
-  /// "yd": stripes across the hole every 50 yd (golf); "ft": the fence distances (baseball).
+  /// "yd" or "m": stripes across the hole every 50 of them (golf); "ft": the fence distances
+  /// (baseball). Labels read in the same unit.
   std::string distance_unit = "yd";
   double ball_radius = 0.021335;  ///< m (golf 0.021335, baseball 0.0369)
   bool tee = false;               ///< draw a tee under the launch point (the ball was teed up)

@@ -21,7 +21,11 @@ std::string GolfUnits::distance(double m) const {
 
 std::string GolfUnits::putt(double m) const {
   char b[32];
-  if (imperial) std::snprintf(b, sizeof b, "%.0f ft", m_to_ft(m));
+  // Inside a foot (a tap-in) in inches, and in centimetres inside a metre: "0 ft" from the pin
+  // read as holed when it was not.
+  if (imperial && m_to_ft(m) < 0.95) std::snprintf(b, sizeof b, "%.0f in", std::max(1.0, std::round(m / 0.0254)));
+  else if (imperial) std::snprintf(b, sizeof b, "%.0f ft", m_to_ft(m));
+  else if (m < 0.95) std::snprintf(b, sizeof b, "%.0f cm", std::max(1.0, std::round(100.0 * m)));
   else std::snprintf(b, sizeof b, "%.1f m", m);
   return b;
 }
@@ -111,7 +115,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
       ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
       ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save  L latency", camera_words(camera_mode));
-      ImGui::TextDisabled("R: replay  Esc: cancel the swing, pause  Tab: next mode");
+      ImGui::TextDisabled("R: replay  Esc: cancel the swing or pause  Tab: next mode");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole");
     } else {
       ImGui::TextDisabled("Enter: let them play now");

@@ -72,6 +72,7 @@ class GolfView final : public ModeView {
   const char* title() const override { return "Golf"; }
   AmbienceSpec ambience() const override { return {Ambience::Course, play_->round().wind().speed}; }
   const char* restart_label() const override { return "Restart hole"; }
+  bool busy() const override { return play_->stage() == GolfPlay::Stage::Swinging; }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 10; }
   void send(const Intent& in) override {
     replay_.reset();  // Esc (and the pause menu) ends a replay

@@ -71,6 +71,8 @@ class ModeView {
   virtual void frame(const ViewInput& in, Renderer& renderer) = 0;
   /// An intent from the app (Esc's Cancel, the pause menu's Restart), applied at once.
   virtual void send(const Intent& intent) = 0;
+  /// Something Esc takes back without pausing is under way (a swing on the meter).
+  virtual bool busy() const { return false; }
   /// What the pause menu's restart does here ("Restart hole").
   virtual const char* restart_label() const { return "Restart"; }
   /// True once an automated run (--exit-when-done) has seen what it came for.

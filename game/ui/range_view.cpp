@@ -38,6 +38,7 @@ class RangeView final : public ModeView {
   const char* restart_label() const override { return "New session"; }
   bool done() const override { return false; }
   void send(const Intent& in) override { play_->update({in}, in.time); }
+  bool busy() const override { return play_->stage() == RangePlay::Stage::Swinging; }
   void frame(const ViewInput& in, Renderer& renderer) override;
   void report(std::ostream& out) const override {
     out << "range: " << play_->session().shots().size() << " shots, " << play_->session().bag("you").clubs.size() << " clubs\n";
@@ -51,6 +52,7 @@ class RangeView final : public ModeView {
   std::unique_ptr<RangePlay> play_;
   RangeViewOptions options_;
   GolfUnits units_;
+  bool scene_imperial_ = true;  ///< the units the scene's labels were drawn in
   std::unique_ptr<ShotScene> scene_;
   std::string scene_mesh_;
   double shown_struck_ = -1.0;
@@ -119,17 +121,24 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
   const int w = in.width, h = in.height;
   const EquipmentCatalog& eq = assets_.equipment();
   const std::string mesh = eq.club_info_of(play_->club()).mesh;
-  if (!scene_ || scene_mesh_ != mesh) {
+  if (!scene_ || scene_mesh_ != mesh || scene_imperial_ != units_.imperial) {
+    // The same club in other units (U): the new scene shows the shot on view again, silently.
+    const bool relabel = scene_ && scene_mesh_ == mesh;
     ShotSceneInput si;
     si.assets = &assets_;
     si.world = nullptr;  // the flat range
-    si.distance_unit = "yd";
+    si.distance_unit = units_.imperial ? "yd" : "m";
     si.ball_radius = eq.ball("tour").radius;
     si.tee = true;
     si.impactor_mesh = mesh;
     scene_ = std::make_unique<ShotScene>(si);
     scene_mesh_ = mesh;
-    shown_struck_ = -1.0;
+    scene_imperial_ = units_.imperial;
+    if (relabel && shown_struck_ >= 0.0) {
+      scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
+    } else {
+      shown_struck_ = -1.0;
+    }
   }
   const bool flying = play_->stage() == RangePlay::Stage::Flying;
   const bool hit = play_->struck_at() > 0.0 || !play_->session().shots().empty();

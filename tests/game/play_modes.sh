@@ -27,8 +27,9 @@ xdotool windowfocus --sync "$wid" 2>/dev/null || true
 # only passed through on the way round (its clock runs only while it is shown).
 xdotool key space; sleep 0.15
 for _ in $(seq 1 12); do xdotool key Tab; sleep 0.1; done  # golf -> range -> baseball -> lab -> golf, three times
-xdotool key Escape; sleep 0.5                     # cancels the swing, pauses
+xdotool key Escape; sleep 0.5                     # cancels the swing (play goes on)
 kill -0 $pid 2>/dev/null || { echo "the window closed while cycling modes"; exit 1; }
+xdotool key Escape; sleep 0.3                     # pauses
 xdotool key Escape; sleep 0.3                     # resumes
 xdotool key b; sleep 1.0                          # the caddie plays the tee shot
 for _ in $(seq 1 4); do xdotool key Tab; sleep 0.5; done   # once more around

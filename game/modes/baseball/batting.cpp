@@ -236,7 +236,9 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   // A bat along the ball's line, or turned past a right angle, is through the zone; past the
   // end of the bat the ball's edge still catches the end cap's rim up to kEndCapReach of its
   // radius.
-  const bool through = !met.crosses || met.from_pivot <= 0.0;
+  // The crossing's geometry repeats every turn of the bat: a swing 150 ms early (the bat ~6.8
+  // rad round) would otherwise meet the ball as one ~20° early and pull it foul at 90°.
+  const bool through = !met.crosses || met.from_pivot <= 0.0 || std::abs(turned) >= 0.5 * kPi;
   const Range on_bat = bat_contact_range(bat, ball);
   out.past_end = !through && s.impact_from_tip < on_bat.min;
   out.through = through;

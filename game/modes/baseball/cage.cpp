@@ -106,7 +106,7 @@ void BattingCage::advance(double t) {
     // His bat meets the pitch at his timing: at that instant of mode time, whatever the
     // frame rate.
     const double contact = released_at_ + std::max(0.0, pitch_.flight_time + 1e-3 * bot_plan_.timing_ms) / kPitchTimeScale;
-    if (t >= contact) swing(bot_plan_, contact);
+    if (t >= contact) swing(bot_plan_, contact, bot_plan_.timing_ms);
   }
   if (stage_ == Stage::Pitching && pitch_clock(t) > pitch_.flight_time + kTakenAfter) {
     last_ = SwingRecord{};
@@ -128,7 +128,7 @@ void BattingCage::advance(double t) {
   }
 }
 
-void BattingCage::swing(const SwingInput& s, double t) {
+void BattingCage::swing(const SwingInput& s, double t, double pressed_ms) {
   bot_armed_ = false;
   swung_at_ = t;
   last_ = SwingRecord{};
@@ -150,7 +150,7 @@ void BattingCage::swing(const SwingInput& s, double t) {
     batted_at_ = t;
     stage_ = Stage::Batted;
   } else {
-    call_text_ = miss_call(last_.result, s.timing_ms);
+    call_text_ = miss_call(last_.result, pressed_ms);
     stage_ = Stage::Called;
   }
   if (live_) {
@@ -199,14 +199,17 @@ void BattingCage::apply(const Intent& in) {
         next_pitch(t);
       } else if (in.kind == IntentKind::Swing && pitch_clock(t) >= 0.0) {  // he holds until the ball is on its way
         SwingInput s;
-        s.timing_ms = std::clamp(1000.0 * (pitch_clock(t) - pitch_.flight_time), SwingInput::kTiming.min, SwingInput::kTiming.max);
+        // The swing's timing as pressed; the physics takes it within its range (past ±150 ms
+        // the bat is round or not yet started either way), the call says it as it was.
+        const double timing_ms = 1000.0 * (pitch_clock(t) - pitch_.flight_time);
+        s.timing_ms = std::clamp(timing_ms, SwingInput::kTiming.min, SwingInput::kTiming.max);
         s.undercut = std::clamp(pitch_.plate.y() - bat_height_, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
         s.power = power_;
         s.left_handed = lefty_;
         // His body meets the pitch where it is pitched (contact_lead_for); the key's timing is
         // against that moment.
         s.contact_lead = contact_lead_for(inside_by(pitch_.plate, lefty_));
-        swing(s, t);
+        swing(s, t, timing_ms);
       }
       break;
     case IntentKind::BotSwings:

@@ -67,7 +67,9 @@ class BattingCage {
  private:
   void apply(const Intent& in);
   void advance(double t);
-  void swing(const SwingInput& s, double t);
+  /// `pressed_ms`: the swing's timing as the key gave it, which the call reports (s holds it
+  /// within the physics' range).
+  void swing(const SwingInput& s, double t, double pressed_ms);
   void next_pitch(double t);
   /// A fresh record: no swings, no count, no plate appearances, the next pitch on call.
   void start_record();

@@ -40,20 +40,30 @@ void RangePlay::advance(double t) {
       message_ = "Swing abandoned, nothing hit";
     } else if (const auto m = meter_->result()) {
       last_click_ = *meter_;
-      strike(*m, t);
+      strike(*m, t, false);
     }
   }
   if (stage_ == Stage::Flying && t - struck_at_ >= duration(last_.trajectory)) stage_ = Stage::Aiming;
 }
 
-void RangePlay::strike(const MeterInput& m, double t) {
+void RangePlay::strike(const MeterInput& m, double t, bool caddie) {
   const std::string club = this->club();
   session_.hit(club, m, &last_);
   struck_at_ = t;
   meter_.reset();
   stage_ = Stage::Flying;
-  char msg[160];
-  std::snprintf(msg, sizeof msg, "%s shot %d of %d", club.c_str(), shots_with_club(), per_club_);
+  // The ball just hit, and how it was swung: the meter's own click error (as the golf
+  // round's message gives it), or the skill's drawn one for B.
+  const double late = caddie || !last_click_ ? m.accuracy_ms : last_click_->click_error_ms();
+  char timing[40];
+  if (std::abs(late) < 0.5) {
+    std::snprintf(timing, sizeof timing, "on time");
+  } else {
+    std::snprintf(timing, sizeof timing, "%s %.0f ms", late > 0.0 ? "late" : "early", std::abs(late));
+  }
+  char msg[200];
+  std::snprintf(msg, sizeof msg, "Last ball: %s, shot %d of %d, power %.0f %%, %s%s", club.c_str(), shots_with_club(), per_club_,
+                100.0 * m.power, timing, caddie ? " (your skill's swing)" : "");
   message_ = msg;
   // A club's shots done: the next club down the bag comes up.
   if (shots_with_club() >= per_club_ && club_ + 2 < golf_bag().size()) ++club_;
@@ -84,7 +94,7 @@ void RangePlay::apply(const Intent& in) {
   if (stage_ == Stage::Aiming) {
     if (in.kind == IntentKind::ClubUp && club_ > 0) --club_;
     if (in.kind == IntentKind::ClubDown && club_ + 2 < golf_bag().size()) ++club_;  // the putter stays in the bag
-    if (in.kind == IntentKind::CaddiePlays) strike(bot_.full_swing(), t);
+    if (in.kind == IntentKind::CaddiePlays) strike(bot_.full_swing(), t, true);
     if (in.kind == IntentKind::Swing) {
       meter_.emplace(MeterClock::tempo_for(assets_.equipment().club(club()).length, false), false, perfect_window_ms(difficulty_));
       meter_->click(t);
@@ -94,7 +104,7 @@ void RangePlay::apply(const Intent& in) {
     meter_->click(t);
     if (const auto m = meter_->result()) {
       last_click_ = *meter_;
-      strike(*m, t);
+      strike(*m, t, false);
     }
   } else if (stage_ == Stage::Flying && in.kind == IntentKind::Swing) {
     stage_ = Stage::Aiming;

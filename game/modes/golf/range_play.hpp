@@ -46,7 +46,8 @@ class RangePlay {
  private:
   void apply(const Intent& in);
   void advance(double t);
-  void strike(const MeterInput& m, double t);
+  /// Hits the ball with `m`; `caddie`: a swing drawn with the skill's errors (B), not the meter.
+  void strike(const MeterInput& m, double t, bool caddie);
 
   const Assets& assets_;
   GolferSkill skill_;

@@ -173,6 +173,20 @@ TEST_CASE("timing sends the ball: early pulls, late goes the other way; far off 
     CHECK_FALSE(miss.contact);
     CHECK(miss.outcome == BattedOutcome::Strike);
   }
+  // Farther off the bat is round (early) or not yet started (late): a miss at every timing to
+  // the input's ±150 ms, whatever the pitch, where the turned bat's geometry repeats every
+  // 140 ms at this speed (a swing 150 ms early had met the ball as one 10 ms early).
+  for (const PitchType& t : types()) {
+    for (double ms = -150.0; ms <= 150.0; ms += 2.5) {
+      if (std::abs(ms) < 40.0) continue;
+      s.timing_ms = ms;
+      s.left_handed = false;
+      const SwingResult miss = swing_at(test::assets(), pitch(t.type.c_str()), s, mph_to_mps(71.5));
+      INFO(t.type << " at " << ms << " ms");
+      CHECK_FALSE(miss.contact);
+      CHECK(miss.through);
+    }
+  }
 }
 
 TEST_CASE("hit it where it's pitched: an inside pitch met out front is pulled off the sweet spot, an outside one goes the other way",

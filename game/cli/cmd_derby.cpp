@@ -49,10 +49,19 @@ int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
       return 0;
     }
     if (o.games == 1) {
-      for (const PlateAppearance& pa : game.plate_appearances)
+      int half_shown = -1;  // inning * 2 + bottom of the last line printed
+      for (const PlateAppearance& pa : game.plate_appearances) {
+        const int half = 2 * pa.inning + (pa.bottom ? 1 : 0);
+        // An extra inning's half opens with its runner on second (MLB Rule 7.01(b)): say so,
+        // or a run he scores comes from nowhere in the play-by-play.
+        if (half != half_shown && pa.inning > o.innings && pa.bases_before[1] >= 0)
+          std::printf("%s %-2d %-6s #%d  %-32s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
+                      pa.bases_before[1] + 1, "starts on 2nd (extra innings)");
+        half_shown = half;
         std::printf("%s %-2d %-6s #%d  %-32s %s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
                     pa.batter + 1, pa.description.c_str(),
                     pa.runs == 1 ? "1 run scores" : pa.runs > 1 ? (std::to_string(pa.runs) + " runs score").c_str() : "");
+      }
       std::printf("\n%s", box_score_text(game).c_str());
     } else {
       std::printf("game %d (seed %llu): away %d, home %d in %d innings\n", i + 1, static_cast<unsigned long long>(g.seed),

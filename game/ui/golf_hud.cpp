@@ -215,9 +215,18 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
     const double cup_p = play.power_for_roll(to_cup);
     dl->AddTriangleFilled(ImVec2(at(cup_p) - 6, y0 - 10), ImVec2(at(cup_p) + 6, y0 - 10), ImVec2(at(cup_p), y0),
                           IM_COL32(255, 255, 255, 255));
-    const double p = meter ? shown : play.last_click() && play.last_click()->putting() ? play.last_click()->power() : cup_p;
-    std::snprintf(label, sizeof label, "putt: %.0f %% rolls %s on flat (cup %s)%s", 100.0 * p, units.putt(play.flat_roll(p)).c_str(),
-                  units.putt(to_cup).c_str(), meter ? "   Esc: cancel" : "   Space: putt");
+    if (meter) {
+      std::snprintf(label, sizeof label, "putt: %.0f %% rolls %s on flat (cup %s)   Esc: cancel", 100.0 * shown,
+                    units.putt(play.flat_roll(shown)).c_str(), units.putt(to_cup).c_str());
+    } else {
+      // Before the stroke the caption is always the cup's: the power that rolls that far on
+      // flat (the triangle); the last putt's power beside it, not in its place.
+      char last[40] = "";
+      if (play.last_click() && play.last_click()->putting())
+        std::snprintf(last, sizeof last, " (last putt %.0f %%)", 100.0 * play.last_click()->power());
+      std::snprintf(label, sizeof label, "putt: cup %s, %.0f %% rolls that far on flat%s   Space: putt", units.putt(to_cup).c_str(),
+                    100.0 * cup_p, last);
+    }
   } else if (meter) {
     std::snprintf(label, sizeof label, "power %.0f %%   Esc: cancel", 100.0 * meter->position(now));
   } else {

@@ -100,7 +100,7 @@ struct Dynamics {
   double spin_parameter(const State9& y) const {
     const Vec3 v_rel = air_velocity(y);
     const double speed2 = v_rel.squaredNorm();
-    return speed2 > 0.0 ? model->ball.radius * y.segment<3>(6).norm() / std::sqrt(speed2) : 0.0;
+    return speed2 > 0.0 ? model->ball.radius * std::sqrt(y.segment<3>(6).squaredNorm() / speed2) : 0.0;
   }
 
   State9 operator()(double /*t*/, const State9& y) const {

@@ -109,7 +109,8 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     for (const GolfBot::Stock& s : play.caddie().stock())
       if (s.club == club) carry = s.carry;
     if (club == "putter") ImGui::Text("Club: putter");
-    else ImGui::Text("Club: %s (carry %s)", club.c_str(), units.distance(carry).c_str());
+    else ImGui::Text("Club: %s (carry %s, here %s)", club.c_str(), units.distance(carry).c_str(),
+                     units.distance(play.carry_here(club)).c_str());
     ImGui::Text("Aim: %.1f deg %s of the pin", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left");
     if (play.human_turn()) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");

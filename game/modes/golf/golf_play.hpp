@@ -103,6 +103,10 @@ class GolfPlay {
   double flat_roll(double power) const;
   /// The power that rolls `distance` m on that flat green (the preview's marks).
   double power_for_roll(double distance) const;
+  /// A full, square swing of `club` at the pin from where the ball lies, in this hole's wind
+  /// and off this lie: its carry (m), from the same physics as the stroke. The caddie picks
+  /// by it; the bag's carries are calm air on flat fairway.
+  double carry_here(const std::string& club) const;
 
   /// Aim steps: a degree for a full shot, a quarter of one for a putt.
   static constexpr double kAimStep = 0.017453292519943295;   // rad (1°)
@@ -148,6 +152,13 @@ class GolfPlay {
   std::string message_;
   int cancelled_ = 0;
   std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green
+  struct CarryHere {
+    std::string club;
+    Vec3 ball = Vec3::Zero();
+    std::size_t hole = 0;
+    double carry = 0.0;
+  };
+  mutable std::optional<CarryHere> carry_here_;  ///< carry_here()'s last answer
 };
 
 const char* to_string(GolfPlay::Stage s);

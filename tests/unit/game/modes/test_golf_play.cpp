@@ -321,3 +321,24 @@ TEST_CASE("restart during the round's last flight restarts the last hole, not pa
   CHECK(play.round().card().back().strokes == 0);
   CHECK(play.ball_centre().allFinite());
 }
+
+TEST_CASE("the club's carry from here is the stroke's own physics: the hole's wind and the lie", "[modes][golf]") {
+  // The HUD shows each club's bag carry (calm, flat fairway) beside its carry from where the
+  // ball lies in this hole's wind: the caddie's club is picked by the second.
+  GolfSetup calm = solo("amateur"), windy = solo("amateur");
+  calm.options.seed = windy.options.seed = 5;
+  Course still = first_hole(), blowing = first_hole();
+  still.holes[0].wind_speed = 0.0;
+  blowing.holes[0].wind_speed = 6.0;  // m/s, into the player: pin to tee
+  const Vec3 into = blowing.holes[0].tee - blowing.holes[0].pin;
+  blowing.holes[0].wind_toward = std::atan2(into.z(), into.x());
+  GolfPlay a(test::assets(), still, calm), b(test::assets(), blowing, windy);
+  StrokeInput in;
+  in.club = "5-iron";
+  const double calm_carry = a.carry_here("5-iron");
+  CHECK(calm_carry == a.round().simulate(in).trajectory.summary.carry_m);
+  CHECK(calm_carry > 100.0);
+  CHECK(b.carry_here("5-iron") < calm_carry - 5.0);  // held up by the wind
+  CHECK(b.carry_here("5-iron") == b.round().simulate(in).trajectory.summary.carry_m);
+  CHECK(a.carry_here("putter") == 0.0);
+}

@@ -313,10 +313,14 @@ Camera GolfView::address_camera() const {
   // lower edge (16° down of its 20°) and the target area, a degree or two below the
   // horizon, in its upper half.
   if (putt) {
-    c.eye = b - 2.6 * d + Vec3(0.0, 1.5, 0.0);
+    // 4 m back and 0.4 m right of the line, 1.9 m up: the golfer addressing from the line's
+    // left stands aside of the line to the cup instead of filling the view's left half, and
+    // the flag of a putt up to ~40 ft stays in the frame.
+    const Vec3 right(-d.z(), 0.0, d.x());
+    c.eye = b - 4.0 * d + 0.4 * right + Vec3(0.0, 1.9, 0.0);
     c.target = b + (std::min(r.to_pin(), 12.0) + 0.5) * d;
-    c.target.y() = b.y() - 0.3;
-    c.fov_y = deg_to_rad(50.0);
+    c.target.y() = b.y() - 0.2;
+    c.fov_y = deg_to_rad(45.0);
     return c;
   }
   const double down = deg_to_rad(5.0);

@@ -129,14 +129,19 @@ Figure batter_figure(double phase, double bat_height, bool left_handed) {
   const Vec3 back_foot = Vec3(-0.45, 0.0, -0.8 + 0.1 * smooth(phase - 0.6));
   // The bat turns about the hands as the hips and shoulders open: its angle about the
   // vertical from pointing back over his shoulder (stance) through square (contact) around
-  // to his front (follow-through).
-  const double turn = phase < 1.0 ? -0.5 * kPi * (1.0 - smooth(phase)) : 0.8 * kPi * smooth((phase - 1.0) / 0.6);
-  const double hands_y = phase < 1.0 ? 1.45 - (1.45 - bat_height) * smooth((phase - 0.3) / 0.7) : bat_height + 0.9 * smooth((phase - 1.0) / 0.6);
-  const Vec3 hands(0.05 + 0.35 * smooth(phase), hands_y, -0.45);
+  // to his front (follow-through). Through the stride (phase to 0.6) it stays loaded: a
+  // batter who takes the pitch strides and holds, and the swing is the last 0.4 (turned
+  // over the whole 0 to 1, the bat was level and two-thirds round as a taken pitch arrived,
+  // a swing to a player's eye).
+  const double swing = phase < 0.6 ? 0.0 : smooth((phase - 0.6) / 0.4);  // 0 loaded .. 1 contact
+  const double turn = phase < 1.0 ? -0.5 * kPi * (1.0 - swing) : 0.8 * kPi * smooth((phase - 1.0) / 0.6);
+  const double hands_y = phase < 1.0 ? 1.45 - (1.45 - bat_height) * swing : bat_height + 0.9 * smooth((phase - 1.0) / 0.6);
+  const Vec3 hands(0.05 + 0.35 * (phase < 1.0 ? swing : 1.0), hands_y, -0.45);
   // The bat's direction: up and back in the stance, level and square (along +z) at contact.
-  const double tilt = phase < 1.0 ? (1.0 - smooth(phase)) * 1.1 : 0.0;
-  Vec3 dir(std::sin(turn) * std::cos(tilt), std::sin(tilt) * 1.0, std::cos(turn) * std::cos(tilt));
-  if (phase < 0.3) dir = Vec3(-0.35, 0.9, 0.2).normalized();
+  const double tilt = phase < 1.0 ? (1.0 - swing) * 1.1 : 0.0;
+  const Vec3 stance = Vec3(-0.35, 0.9, 0.2).normalized();
+  const Vec3 swung(std::sin(turn) * std::cos(tilt), std::sin(tilt) * 1.0, std::cos(turn) * std::cos(tilt));
+  const Vec3 dir = phase < 1.0 ? Vec3((1.0 - swing) * stance + swing * swung.normalized()) : swung;
   f.joint[kBatKnob] = hands;
   f.joint[kBatTip] = hands + kBatLength * dir.normalized();
   fill_limbs(f, fr, front_foot, back_foot, hands + Vec3(0.04, 0.0, 0.0), hands - Vec3(0.04, 0.0, 0.0), 0.1, 0.0);

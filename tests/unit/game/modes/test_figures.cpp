@@ -25,6 +25,16 @@ TEST_CASE("the pitcher releases where the pitch starts; the batter meets it leve
   CHECK(b.joint[kBatTip].z() > b.joint[kBatKnob].z() + 0.8);  // square to the pitch, across the plate
   CHECK(b.joint[kBatKnob].z() < 0.0);                         // a right-hander on the third-base side
   CHECK(batter_figure(1.0, 0.7, true).joint[kBatKnob].z() > 0.0);
+  // Through his stride (to phase 0.6, the pitch arriving) the bat stays loaded, up over his
+  // back shoulder: a taken pitch shows no swing. The swing is the last 0.4, to level.
+  const auto bat = [](double phase) {
+    const Figure f = batter_figure(phase, 0.7, false);
+    return Vec3(f.joint[kBatTip] - f.joint[kBatKnob]).normalized();
+  };
+  CHECK((bat(0.6) - bat(0.0)).norm() < 1e-9);
+  CHECK(bat(0.6).y() > 0.8);
+  CHECK(bat(0.8).y() < bat(0.6).y() - 0.1);
+  CHECK(std::abs(bat(1.0).y()) < 1e-9);
 }
 
 TEST_CASE("a fielder waits for his reaction, runs at most his sprint and stops at his goal", "[baseball][figures]") {

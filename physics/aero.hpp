@@ -8,12 +8,10 @@
 // makes none. The coefficients read the whole spin, S = R|ω|/|v_r|: the lift of a ball
 // saturates with how fast its whole surface turns, not with its transverse spin alone. For
 // a golf ball or a batted ball, whose spin lies across the flow, the two readings agree; for
-// a pitch with a large gyro share they part where Cl(S) bends over. Measured: at Savant's
-// 2024 active spin (Hawk-Eye's spin axis), sliders, cutters and curveballs move Savant's
-// inches with this law (slider 6.6 in glove side for 5.6, cutter 8.4 in up for 7.7, curve
-// 10.3 in for 9.0), and 1.3-1.9 times as far with Cl read at the transverse spin alone;
-// fastballs, sinkers and changeups, 87-93 % active, move within 4-7 % of what that reading
-// gives (docs/validation.md). The Nathan drag term uses the total spin rate as well.
+// a pitch with a large gyro share they part where Cl(S) bends over: at Savant's measured
+// active spin, sliders, cutters and curveballs move Savant's inches with this law and 1.3-1.9
+// times as far with Cl read at the transverse spin alone (docs/validation.md, pitch
+// movement). The Nathan drag term uses the total spin rate as well.
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 // `sweetspot play [SCENARIO]`: the game window, or the shot headless when there is no display.
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>

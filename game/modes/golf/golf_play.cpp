@@ -119,12 +119,13 @@ void GolfPlay::choose_club() {
 double GolfPlay::carry_here(const std::string& club) const {
   const GolfRound& r = round();
   if (r.finished() || club == "putter") return 0.0;
-  if (carry_here_ && carry_here_->club == club && carry_here_->ball == r.ball() && carry_here_->hole == group_.hole_index())
+  if (carry_here_ && carry_here_->player == player_ && carry_here_->club == club && carry_here_->ball == r.ball() &&
+      carry_here_->hole == group_.hole_index())
     return carry_here_->carry;
   StrokeInput in;
   in.club = club;
   const double carry = r.simulate(in).trajectory.summary.carry_m;
-  carry_here_ = CarryHere{club, r.ball(), group_.hole_index(), carry};
+  carry_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), carry};
   return carry;
 }
 

@@ -152,7 +152,8 @@ class GolfPlay {
   std::string message_;
   int cancelled_ = 0;
   std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green
-  struct CarryHere {
+  struct CarryHere {  // players tee off from one spot with their own swings: keyed by player too
+    int player = 0;
     std::string club;
     Vec3 ball = Vec3::Zero();
     std::size_t hole = 0;

@@ -10,6 +10,7 @@
 #include "game/modes/golf/range_session.hpp"
 #include "game/modes/replay.hpp"
 #include "physics/error.hpp"
+#include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
@@ -75,27 +76,21 @@ TEST_CASE("the bag file reads back the same and the caddie chooses by it", "[mod
 TEST_CASE("at the range the club keys and B work while the last ball flies and once it has stopped", "[modes][golf][range]") {
   // Choosing the next club, or B for the next swing, ends the last shot's view (as Enter and
   // Space do) instead of being ignored until the view is dismissed.
-  const auto intent = [](IntentKind k, double t) {
-    Intent in;
-    in.kind = k;
-    in.time = t;
-    return in;
-  };
   RangePlay play(test::assets(), golfer_skill("amateur"));
   REQUIRE(play.club() == "driver");
-  play.update({intent(IntentKind::CaddiePlays, 1.0)}, 1.1);
+  play.update({test::at(IntentKind::CaddiePlays, 1.0)}, 1.1);
   REQUIRE(play.stage() == RangePlay::Stage::Flying);
-  play.update({intent(IntentKind::ClubDown, 1.5)}, 1.6);  // the ball still in the air
+  play.update({test::at(IntentKind::ClubDown, 1.5)}, 1.6);  // the ball still in the air
   CHECK(play.stage() == RangePlay::Stage::Aiming);
   CHECK(play.club() == "3-wood");
-  play.update({intent(IntentKind::CaddiePlays, 2.0)}, 2.1);
+  play.update({test::at(IntentKind::CaddiePlays, 2.0)}, 2.1);
   REQUIRE(play.stage() == RangePlay::Stage::Flying);
   const double rest = 2.0 + duration(play.last_shot().trajectory) + 0.5;
-  play.update({intent(IntentKind::ClubUp, rest)}, rest + 0.1);  // the ball at rest
+  play.update({test::at(IntentKind::ClubUp, rest)}, rest + 0.1);  // the ball at rest
   CHECK(play.stage() == RangePlay::Stage::Aiming);
   CHECK(play.club() == "driver");
   // B while a ball flies hits the next one: every press is a shot.
-  for (int k = 0; k < 3; ++k) play.update({intent(IntentKind::CaddiePlays, rest + 1.0 + 0.2 * k)}, rest + 1.1 + 0.2 * k);
+  for (int k = 0; k < 3; ++k) play.update({test::at(IntentKind::CaddiePlays, rest + 1.0 + 0.2 * k)}, rest + 1.1 + 0.2 * k);
   CHECK(play.stage() == RangePlay::Stage::Flying);
   CHECK(play.session().shots().size() == 5);
 }
@@ -142,10 +137,7 @@ TEST_CASE("the range caddie's swings come from the session's seed", "[modes][gol
     RangePlay play(test::assets(), golfer_skill("amateur"), 5, MeterDifficulty::Standard, seed);
     std::vector<double> carries;
     for (int k = 0; k < 4; ++k) {
-      Intent in;
-      in.kind = IntentKind::CaddiePlays;
-      in.time = 1.0 + k;
-      play.update({in}, in.time + 0.1);
+      play.update({test::at(IntentKind::CaddiePlays, 1.0 + k)}, 1.1 + k);
       carries.push_back(play.last_shot().trajectory.summary.carry_m);
     }
     return carries;

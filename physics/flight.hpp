@@ -108,6 +108,10 @@ struct ShotState {
   /// or crossings back and forth over one edge (rolling); the face the ball was last on.
   int chatter = 0;
   Vec3 last_touch_normal = Vec3::Zero();
+  /// The velocity of the last such crossing while rolling: a ball rocks in a valley when it
+  /// crosses back (against its last crossing's direction), not when it rolls on across a
+  /// run of facets whose slopes alternate (a terrain mesh's two triangles a grid cell).
+  Vec3 last_cross_velocity = Vec3::Zero();
   /// Consecutive steps that did not advance the clock (a ball the faces hold, passed from a
   /// touch to a roll and back at one instant): see step().
   int stalled = 0;

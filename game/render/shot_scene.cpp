@@ -68,10 +68,12 @@ void add_golfer(Scene& scene, const std::string& mesh, const ImpactorPlacement& 
   append_club_shaft(scene.figures, grip, pose.orientation * c.axis, c.length);
 }
 
-// A golfer ~1.8 m tall reads as a person, swing and all, from ~150 px (ESTIMATE): closer
-// than that the club is drawn at true size in his hands, farther a magnified club shows the
-// strike instead.
-constexpr double kGolferHeight = 1.8, kGolferReadsPx = 150.0;
+// A golfer ~1.8 m tall reads as a person swinging from ~40 px (ESTIMATE: a figure a
+// twentieth of an 800 px view, as a TV wide shot shows a player down the fairway): that
+// close he is drawn with the club at true size in his hands; farther a magnified club shows
+// the strike instead (a figure of a few pixels would be a smudge, a club with no one
+// holding it floats).
+constexpr double kGolferHeight = 1.8, kGolferReadsPx = 40.0;
 
 constexpr double kYard = 0.9144;  // m
 constexpr double kFoot = 0.3048;  // m
@@ -99,6 +101,17 @@ double unit_length(const std::string& unit) { return unit == "yd" ? kYard : unit
 std::string format_distance(double metres, const std::string& unit) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.0f %s", metres / unit_length(unit), unit.c_str());
+  return buf;
+}
+
+// A golf ball's carry or run as a player reads it: yards (or metres) for a shot, feet (or
+// metres to the decimetre) under 20 m, as the HUD's putts and tap-ins read.
+std::string format_golf_distance(double metres, const std::string& unit) {
+  constexpr double kShort = 20.0;  // m
+  if (metres >= kShort) return format_distance(metres, unit);
+  char buf[32];
+  if (unit == "m") std::snprintf(buf, sizeof buf, "%.1f m", metres);
+  else std::snprintf(buf, sizeof buf, "%.0f ft", metres / kFoot);
   return buf;
 }
 
@@ -347,7 +360,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const Vec3 contact = launch - m.input.ball_radius * v;
       const Vec3 shaft = m.impactor_is_bat ? Vec3(-(impactor_->orientation * Vec3::UnitX()))
                                            : Vec3(impactor_->orientation * head_frame_shaft_axis());
-      pose = swing_pose(*impactor_, contact, shaft, t, m.impactor_is_bat ? kBatSwing : kClubSwing);
+      pose = swing_pose(*impactor_, contact, shaft, t, swing_shape(m.input.impactor_mesh));
     }
     Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
     model.block<3, 3>(0, 0) = static_cast<float>(strike_scale) * pose.orientation.normalized().toRotationMatrix().cast<float>();
@@ -461,19 +474,24 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   if (have_shot) {
     const auto& s = trajectory_.summary;
     const double end_t = samples.back().t;
-    if (s.hang_time_s > 0 && t >= s.hang_time_s - 1e-9) {
+    // A putt never leaves the ground (its skid's first instants are no flight): no carry.
+    const bool rolled_only = s.apex_m < 0.05;
+    const auto shown = [&](double metres) {
+      return m.golf ? format_golf_distance(metres, m.input.distance_unit) : format_distance(metres, m.input.distance_unit);
+    };
+    if (s.hang_time_s > 0 && !rolled_only && t >= s.hang_time_s - 1e-9) {
       const Vec3 lp = s.landing_position;
       const Vec3 g(lp.x(), ground_at(lp.x(), lp.z()) + 0.05, lp.z());
       const double r = px(g, m.style.marker_radius_px);
       append_ring(scene.ground_overlay, g, 0.65 * r, r, kLandingColor);
-      label(format_distance(s.carry_m, m.input.distance_unit), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), kLandingColor);
+      label(shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), kLandingColor);
     }
     if (t >= end_t - 1e-9 && (s.rest_position - s.landing_position).norm() > 0.5) {
       const Vec3 rp = s.rest_position;
       const Vec3 g(rp.x(), ground_at(rp.x(), rp.z()), rp.z());
       const double h = px(g, 30.0);
       append_pin(scene.top_overlay, g, h, px(g, 2.5), cam_right, kRestColor);
-      label(format_distance(s.total_m, m.input.distance_unit), g + Vec3(0, h, 0) + cam_up * px(g, 6.0), kRestColor);
+      label(shown(s.total_m), g + Vec3(0, h, 0) + cam_up * px(g, 6.0), kRestColor);
     }
   }
 

@@ -7,7 +7,13 @@ namespace sweetspot {
 
 double swing_pre_roll(const std::optional<ImpactorPlacement>& impactor, const std::string& impactor_mesh) {
   if (!impactor || impactor_mesh.empty() || impactor->velocity.norm() <= 1.0) return 0.0;
-  return (impactor_mesh == "bat" ? kBatSwing : kClubSwing).downswing;
+  return swing_shape(impactor_mesh).downswing;
+}
+
+const SwingShape& swing_shape(const std::string& impactor_mesh) {
+  if (impactor_mesh == "bat") return kBatSwing;
+  if (impactor_mesh == "putter_head") return kPutterSwing;
+  return kClubSwing;
 }
 
 Vec3 head_frame_shaft_axis() {

@@ -27,6 +27,14 @@ struct SwingShape {
 };
 inline constexpr SwingShape kClubSwing{1.5, 0.25, 3.0};
 inline constexpr SwingShape kBatSwing{1.2, 0.15, 3.0};
+/// A putting stroke: a pendulum from the shoulders (arms and a 34 in putter, ~1.1 m), its
+/// forward stroke ~0.3 s (tour putting tempo: a ~0.6 s backstroke, ~2:1), and a
+/// follow-through about as long as a mid-length putt's backstroke (~0.35 rad, ~40 cm of
+/// head travel; ESTIMATE), not a full swing's finish over the shoulder.
+inline constexpr SwingShape kPutterSwing{1.1, 0.3, 0.35};
+
+/// The swing of an impactor mesh: "bat", "putter_head", or any other club's.
+const SwingShape& swing_shape(const std::string& impactor_mesh);
 
 /// The impactor at time t (s; impact at 0) given its pose and velocity at impact.
 /// `contact` is the point of the impactor touching the ball (m); `shaft` the unit direction

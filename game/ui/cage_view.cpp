@@ -57,7 +57,8 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
   if (l && r) dl->AddLine(*l, *r, c.power() ? IM_COL32(255, 170, 40, 230) : IM_COL32(80, 200, 255, 230), 3.0f);
 }
 
-void draw_stats(const BattingCage& c, int w, int h) {
+// The HUD panel at the top left; returns its bottom edge (px), where the call goes below it.
+float draw_stats(const BattingCage& c, int w, int h) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Always);
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
@@ -124,6 +125,7 @@ void draw_stats(const BattingCage& c, int w, int h) {
     ImGui::Text("Fair balls: exit velocity %.1f mph, launch %.1f deg", ev / fair, la / fair);
     ImGui::Text("Hard-hit %.0f %%, longest %.0f ft", 100.0 * hard / fair, m_to_ft(longest));
   }
+  const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
   ImGui::End();
 
   // The spray chart, bottom right: home plate at the bottom, 450 ft to the top.
@@ -133,6 +135,8 @@ void draw_stats(const BattingCage& c, int w, int h) {
   const float scale = size / 140.0f;  // m
   const ImVec2 home(x0 + size / 2, y0 + size - 8.0f);
   const auto px = [&](const Vec3& p) { return ImVec2(home.x + static_cast<float>(p.z()) * scale, home.y - static_cast<float>(p.x()) * scale); };
+  // Everything inside the panel: the foul lines run out past its sides, a long ball past its top.
+  dl->PushClipRect(ImVec2(x0, y0), ImVec2(x0 + size, y0 + size), true);
   dl->AddLine(home, px(Vec3(130, 0, 130)), IM_COL32(240, 240, 240, 255));
   dl->AddLine(home, px(Vec3(130, 0, -130)), IM_COL32(240, 240, 240, 255));
   for (const SwingRecord& s : c.swings()) {
@@ -150,7 +154,9 @@ void draw_stats(const BattingCage& c, int w, int h) {
     }
     dl->AddCircleFilled(px(p), 4.0f, col);
   }
+  dl->PopClipRect();
   dl->AddText(ImVec2(x0 + 6, y0 + 4), IM_COL32(255, 255, 255, 255), "spray chart");
+  return bottom;
 }
 
 class CageView final : public ModeView {
@@ -180,7 +186,7 @@ class CageView final : public ModeView {
     // The scene holds the pitch while it flies and the batted ball after contact.
     if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) scene_->set_shot(c.pitch().trajectory, std::nullopt);
     if (c.swings().size() != before && c.last().result.contact) {
-      scene_->set_shot(c.last().result.shot.trajectory, std::nullopt);
+      scene_->set_shot(c.played(), std::nullopt);
       ImpactSoundInput crack;
       crack.contact_time = c.last().result.contact_time;
       crack.normal_impulse = c.last().result.normal_impulse;
@@ -191,7 +197,7 @@ class CageView final : public ModeView {
     if (w > 0 && h > 0) {
       fit_renderer(renderer, w, h, in.render_scale);
       const bool batted = c.batted();
-      const double flight_end = duration(c.last().result.shot.trajectory);
+      const double flight_end = duration(c.played());
       // The ball holds at the plate, or where the batted ball stopped, while the people go on
       // (their clock: cage_people).
       const double t = c.stage() == Stage::Pitching ? std::min(c.pitch_clock(in.now), c.pitch().flight_time)
@@ -204,9 +210,10 @@ class CageView final : public ModeView {
       renderer.blit_to(0, w, h);
       if (!batted) draw_zone(c, cam, w, h);
     }
-    draw_stats(c, w, h);
-    // The box fits the call (a miss explains itself at some length).
-    if (!c.call_text().empty()) draw_banner(c.call_text().c_str(), w, 60.0f);
+    const float panel_bottom = draw_stats(c, w, h);
+    // The box fits the call (a miss explains itself at some length), below the HUD panel so
+    // a long call does not run under its lines.
+    if (!c.call_text().empty()) draw_banner(c.call_text().c_str(), w, std::max(60.0f, panel_bottom + 14.0f));
     if (options_.pitches > 0 && static_cast<int>(c.swings().size()) >= options_.pitches && c.stage() == Stage::Called)
       ++done_frames_;
   }

@@ -103,7 +103,9 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     ImGui::Text("%s to play%s", play.player_info().name.c_str(), play.human_turn() ? "" : play.player_info().human ? " (auto-putt)" : " (bot)");
     const HoleCard& card = r.card().back();
     ImGui::Text("Stroke %d   Lie: %s", card.strokes + 1, lie_words(r.lie()));
-    ImGui::Text("To the pin: %s", r.lie() == "green" ? units.putt(r.to_pin()).c_str() : units.distance(r.to_pin()).c_str());
+    // Short of 20 m in the putt's units whatever the lie, as "At rest ... from the pin" reads.
+    const bool near = r.lie() == "green" || r.to_pin() < 20.0;
+    ImGui::Text("To the pin: %s", near ? units.putt(r.to_pin()).c_str() : units.distance(r.to_pin()).c_str());
     const std::string& club = play.club();
     double carry = 0.0;
     for (const GolfBot::Stock& s : play.caddie().stock())
@@ -143,7 +145,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
   if (!play.message().empty() && !in_air) {
     ImGui::Separator();
     ImGui::TextWrapped("%s", play.message().c_str());
-    at_rest(play.last_record(), play.last_rest_lie());
+    if (play.message_is_result()) at_rest(play.last_record(), play.last_rest_lie());
   }
   // On your turn, your own last stroke on this hole, when somebody else has played since.
   if (!in_air && play.human_turn() && play.shooter() != play.player()) {
@@ -182,8 +184,9 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optio
       dl->AddLine(ImVec2(at(meter->power()), y0 - 6), ImVec2(at(meter->power()), y0 + bh + 6), IM_COL32(255, 255, 255, 255), 3.0f);
       dl->AddLine(ImVec2(at(p), y0 - 6), ImVec2(at(p), y0 + bh + 6), IM_COL32(255, 80, 60, 255), 3.0f);
     }
-  } else if (last) {
-    // Where the last swing's clicks landed: power (white) and accuracy (red).
+  } else if (last && last->putting() == putting) {
+    // Where the last swing's clicks landed: power (white) and accuracy (red). Only a stroke
+    // of the same kind: a wedge's power mark on the putt's scale would read as a length.
     dl->AddLine(ImVec2(at(last->power()), y0 - 6), ImVec2(at(last->power()), y0 + bh + 6), IM_COL32(255, 255, 255, 150), 2.0f);
     if (!last->putting())
       dl->AddLine(ImVec2(at(last->accuracy_position()), y0 - 6), ImVec2(at(last->accuracy_position()), y0 + bh + 6),
@@ -202,7 +205,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   const auto at = [&](double f) { return bar.at(f); };
   const double shown = bar.shown;
   ImDrawList* dl = ImGui::GetForegroundDrawList();
-  char label[160];
+  char label[256];
   if (putting) {
     // The putt preview: how far each power rolls on a flat green of this speed.
     const double step = units.imperial ? 5.0 * 0.3048 : 2.0;
@@ -213,19 +216,27 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       if (n % 2 == 0) dl->AddText(ImVec2(at(p) - 8, y0 + bh + 7), IM_COL32(200, 200, 200, 220), units.putt(d).c_str());
     }
     const double to_cup = play.round().to_pin();
-    const double cup_p = play.power_for_roll(to_cup);
+    // Off the green the mark is for the putt as it plays: the slower grass first.
+    const double plays = play.putt_plays_as();
+    const double cup_p = play.power_for_roll(plays);
+    char cup[96];
+    if (play.putt_crosses().empty())
+      std::snprintf(cup, sizeof cup, "cup %s", units.putt(to_cup).c_str());
+    else
+      std::snprintf(cup, sizeof cup, "cup %s, plays as %s of green (%s first)", units.putt(to_cup).c_str(),
+                    units.putt(plays).c_str(), play.putt_crosses().c_str());
     dl->AddTriangleFilled(ImVec2(at(cup_p) - 6, y0 - 10), ImVec2(at(cup_p) + 6, y0 - 10), ImVec2(at(cup_p), y0),
                           IM_COL32(255, 255, 255, 255));
     if (meter) {
-      std::snprintf(label, sizeof label, "putt: %.0f %% rolls %s on flat (cup %s)   Esc: cancel", 100.0 * shown,
-                    units.putt(play.flat_roll(shown)).c_str(), units.putt(to_cup).c_str());
+      std::snprintf(label, sizeof label, "putt: %.0f %% rolls %s on flat green (%s)   Esc: cancel", 100.0 * shown,
+                    units.putt(play.flat_roll(shown)).c_str(), cup);
     } else {
       // Before the stroke the caption is always the cup's: the power that rolls that far on
       // flat (the triangle); the last putt's power beside it, not in its place.
       char last[40] = "";
       if (play.last_click() && play.last_click()->putting())
         std::snprintf(last, sizeof last, " (last putt %.0f %%)", 100.0 * play.last_click()->power());
-      std::snprintf(label, sizeof label, "putt: cup %s, %.0f %% rolls that far on flat%s   Space: putt", units.putt(to_cup).c_str(),
+      std::snprintf(label, sizeof label, "putt: %s, %.0f %% rolls that far on flat green%s   Space: putt", cup,
                     100.0 * cup_p, last);
     }
   } else if (meter) {
@@ -249,7 +260,8 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
   ImGui::Text("Launch      %.1f deg", rad_to_deg(r.launch.vertical_angle));
   ImGui::Text("Direction   %.1f deg %s", std::abs(rad_to_deg(r.launch.horizontal_angle)), r.launch.horizontal_angle >= 0 ? "R" : "L");
   ImGui::Text("Spin        %.0f rpm", radps_to_rpm(r.launch.spin.total));
-  ImGui::Text("Spin axis   %.1f deg", rad_to_deg(r.launch.spin.axis_rad));
+  const double axis = rad_to_deg(r.launch.spin.axis_rad);
+  ImGui::Text("Spin axis   %.1f deg", std::abs(axis) < 0.05 ? 0.0 : axis);  // no "-0.0" for a putt
   const bool putt = r.trajectory.summary.apex_m < 0.05;  // a putt never leaves the ground
   if (putt && flight_t >= duration(r.trajectory)) {
     ImGui::Separator();

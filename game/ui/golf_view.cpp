@@ -71,7 +71,10 @@ class GolfView final : public ModeView {
 
   const char* title() const override { return "Golf"; }
   AmbienceSpec ambience() const override { return {Ambience::Course, play_->round().wind().speed}; }
-  const char* restart_label() const override { return "Restart hole"; }
+  // After the last hole the pause menu's restart starts a new round (GolfPlay::apply).
+  const char* restart_label() const override {
+    return play_->stage() == GolfPlay::Stage::RoundOver ? "New round" : "Restart hole";
+  }
   bool busy() const override { return play_->stage() == GolfPlay::Stage::Swinging; }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 10; }
   void send(const Intent& in) override {
@@ -141,6 +144,8 @@ class GolfView final : public ModeView {
   Vec3 slopes_ball_ = Vec3::Zero();
   std::vector<SlopeArrow> slopes_;
   std::string saved_note_;
+  double saved_note_at_ = -1.0;  // mode time it was first shown; -1 until then
+  static constexpr double kNoteShown = 8.0;  // s a note (round saved, latency) stays on screen
   std::optional<LatencyCalibration> calibration_;
   int done_frames_ = 0;
 };
@@ -199,8 +204,10 @@ std::vector<KeyPress> GolfView::calibration_keys(const std::vector<KeyPress>& ke
       } catch (const std::exception& e) {
         std::snprintf(buf, sizeof buf, "Input latency %.0f ms for this session (not saved: %s)", 1000.0 * *latency, e.what());
       }
+      saved_note_at_ = -1.0;
       saved_note_ = buf;
     } else {
+      saved_note_at_ = -1.0;
       saved_note_ = "Calibration: too few taps in time with the beat; nothing changed (L to try again)";
     }
     calibration_.reset();
@@ -227,8 +234,10 @@ void GolfView::save_round() {
     write_file_atomic(options_.save_path,
                       json_text(round_save_json(g, std::filesystem::absolute(g.course().source).string())) + "\n",
                       OverInput::Allow);
+    saved_note_at_ = -1.0;
     saved_note_ = "Round saved to " + options_.save_path + " (play --mode golf --resume FILE)";
   } catch (const std::exception& e) {
+    saved_note_at_ = -1.0;
     saved_note_ = std::string("Not saved: ") + e.what();
   }
 }
@@ -526,6 +535,8 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     if (addressing && camera_ == 3) draw_map_marks(*play_, units_, cam, w, h);
   }
   draw_golf_hud(*play_, units_, camera_, settling, t);
+  if (!saved_note_.empty() && saved_note_at_ < 0.0) saved_note_at_ = in.now;
+  if (!saved_note_.empty() && in.now - saved_note_at_ > kNoteShown) saved_note_.clear();
   if (!saved_note_.empty() && addressing) {
     ImGui::SetNextWindowPos(ImVec2(10, static_cast<float>(h) - 40), ImGuiCond_Always);
     ImGui::Begin("saved", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);

@@ -67,7 +67,7 @@ void RangeView::save_bag() {
       return;
     }
     write_file_atomic(options_.bag_path, bag_toml(bag));
-    note_ = "Bag saved to " + options_.bag_path + " (play --bag FILE, round --bag FILE)";
+    note_ = "Bag saved to " + options_.bag_path + "\nplay it: play --bag FILE, round --bag FILE";
   } catch (const std::exception& e) {
     note_ = std::string("Not saved: ") + e.what();
   }
@@ -106,7 +106,7 @@ void RangeView::draw_panel(int w) {
   }
   ImGui::TextDisabled("Space: swing (3 clicks)  B: a swing with your skill's errors");
   ImGui::TextDisabled("Up/Down club  Enter: skip the flight  S: save the bag  U: units");
-  if (!play_->message().empty()) ImGui::TextUnformatted(play_->message().c_str());
+  if (!play_->message().empty()) ImGui::TextWrapped("%s", play_->message().c_str());
   if (!note_.empty()) ImGui::TextWrapped("%s", note_.c_str());
   ImGui::End();
   (void)w;

@@ -122,7 +122,7 @@ void BattingCage::advance(double t) {
                   : strike                              ? PitchResult::CalledStrike
                                                         : PitchResult::Ball);
   }
-  if (stage_ == Stage::Batted && t - batted_at_ >= duration(last_.result.shot.trajectory)) {
+  if (stage_ == Stage::Batted && t - batted_at_ >= duration(played_)) {
     stage_ = Stage::Called;
     if (!outcome_text_.empty()) call_text_ = outcome_text_;
   }
@@ -137,6 +137,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms) {
   last_.timing_ms = s.timing_ms;
   last_.undercut = s.undercut;
   last_.result = swing_at(assets_, pitch_, s, batter_skill("pro").bat_speed, kBat);
+  played_ = as_played(last_.result.shot.trajectory, last_.result.play);
   last_.call_text = to_string(last_.result.outcome);
   swings_.push_back(last_);
   char text[160];

@@ -54,6 +54,8 @@ class BattingCage {
   bool power() const { return power_; }
   bool left_handed() const { return lefty_; }
   const SwingRecord& last() const { return last_; }
+  /// The last batted ball's path as the play went (as_played): a catch ends it in the glove.
+  const ShotTrajectory& played() const { return played_; }
   const std::vector<SwingRecord>& swings() const { return swings_; }
   const std::string& call_text() const { return call_text_; }
   /// Live at-bats: the count, and the plate appearances so far.
@@ -87,6 +89,7 @@ class BattingCage {
   double bat_height_ = 0.76;
   bool power_ = true, lefty_ = false;
   SwingRecord last_;
+  ShotTrajectory played_;
   std::vector<SwingRecord> swings_;
   std::string call_text_;
   /// A batted ball's outcome, shown once its flight is over (until then its launch).

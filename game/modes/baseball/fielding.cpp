@@ -400,6 +400,26 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   return play;
 }
 
+ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
+  if (!play.caught || t.samples.empty()) return t;
+  ShotTrajectory out = t;
+  out.samples.clear();
+  for (const TrajectorySample& s : t.samples) {
+    if (s.t >= play.fielded_time) break;
+    out.samples.push_back(s);
+  }
+  // In the glove: the ball stays where he caught it.
+  TrajectorySample held;
+  held.t = play.fielded_time;
+  held.position = play.fielded_at;
+  held.phase = Phase::Rest;
+  out.samples.push_back(held);
+  if (out.samples.size() < 2) out.samples.insert(out.samples.begin(), t.samples.front());
+  out.summary.rest_position = play.fielded_at;
+  out.summary.total_time_s = play.fielded_time;
+  return out;
+}
+
 BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const Environment& env, std::string* who) {
   const FieldingPlay p = field_play(shot, aero, env, league_defense(), false, kMeanSprint, nullptr);
   if (who) *who = p.fielder >= 0 ? kPositionNames[static_cast<std::size_t>(p.fielder)] : "";

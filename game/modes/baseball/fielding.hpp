@@ -118,6 +118,11 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
 BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const Environment& env,
                          std::string* fielder = nullptr);
 
+/// The batted ball's path as the play went: a ball caught in the air ends in the fielder's
+/// glove at the catch (the physics' path past it, into the wall or the seats, was never
+/// flown); any other ball's path is the physics' whole.
+ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play);
+
 /// The time a throw by `f` from `from` to base `base` takes, with the fielder's transfer.
 double throw_time(const FielderAbility& f, const AeroModel& aero, const Environment& env, const Vec3& from, int base);
 

@@ -27,6 +27,29 @@ constexpr double kPuttPast = 0.43;
 /// the cup's 54 mm radius, so the player's own start-line error, not the plan, decides it.
 constexpr double kPuttCentred = 0.0135;
 
+/// A putt's line runs through grass a putter cannot roll through (rough, sand, water): a
+/// ball on the green's edge with the cup beyond a strip of rough is chipped, not putted.
+/// A collar of fairway is putted through, up to kPuttableCollar of it.
+bool putt_line_clear(const GolfRound& round) {
+  constexpr double kStep = 0.25;          // m along the line
+  constexpr double kPuttableCollar = 3.0; // m of fairway or tee grass a tour player still putts across
+  const Vec3 from = round.ball(), to = round.hole().pin;
+  const double length = round.to_pin();
+  const int n = std::max(1, static_cast<int>(std::ceil(length / kStep)));
+  double collar = 0.0;
+  const Terrain& world = *round.hole().world->world;
+  for (int i = 0; i < n; ++i) {
+    const double f = (i + 0.5) / n;
+    const std::optional<SurfaceContact> under = round.ground_at(from.x() + f * (to.x() - from.x()), from.z() + f * (to.z() - from.z()));
+    if (!under) return false;
+    const SurfaceKind k = world.material(under->material).kind;
+    if (k == SurfaceKind::Green) continue;
+    if (k != SurfaceKind::Fairway && k != SurfaceKind::Tee) return false;
+    collar += length / n;
+  }
+  return collar <= kPuttableCollar;
+}
+
 }  // namespace
 
 GolfBot::GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed, std::vector<Stock> bag)
@@ -142,7 +165,7 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
 }
 
 StrokeInput GolfBot::intend(const GolfRound& round) const {
-  if (round.lie() == "green") return putt(round);
+  if (round.lie() == "green" && putt_line_clear(round)) return putt(round);
   double d = round.to_pin();
   const bool teed = round.teed();
   auto allowed = [&](const Stock& s) { return !(s.club == "driver" && !teed); };

@@ -139,8 +139,10 @@ void GolfPlay::begin_turn(double t) {
 
 void GolfPlay::build_roll_table() {
   roll_table_.clear();
+  putt_plays_as_ = 0.0;
+  putt_crosses_.clear();
   const GolfRound& r = round();
-  if (r.finished() || r.lie() != "green") return;
+  if (r.finished() || r.to_pin() > kPuttGuideReach) return;
   // The green's own surface, from under the cup.
   const WorldAsset& w = *r.hole().world;
   SurfaceContact hit;
@@ -154,6 +156,45 @@ void GolfPlay::build_roll_table() {
     in.meter.power = p;
     roll_table_.emplace_back(p, flat_roll_distance(resolve(r.spec_for(in), assets_), green));
   }
+  putt_plays_as_ = r.to_pin();
+  if (r.lie() == "green") return;
+  // Off the green the line crosses slower grass first. A rolling ball loses speed at a
+  // steady rate on each surface (its rolling resistance), so v² falls by 2·c·g per metre: a
+  // metre of a surface c times the green's takes as much out of the putt as c metres of
+  // green. The ratio is read from the same physics as the putt: how far one stroke rolls on
+  // the flat green against on the flat surface.
+  in.meter.power = 0.5;
+  const ResolvedShot putt = resolve(r.spec_for(in), assets_);
+  const double on_green = flat_roll_distance(putt, green);
+  std::vector<std::pair<int, double>> ratio;  // (material, green metres per metre)
+  const auto ratio_of = [&](int material) {
+    for (const auto& [m, k] : ratio)
+      if (m == material) return k;
+    const SurfaceMaterial& mat = w.world->material(material);
+    // Water or a surface that stops the ball dead counts as a wall of rough (a putt is no
+    // way across it); a green counts as itself.
+    constexpr double kStops = 50.0;
+    double k = 1.0;
+    if (mat.kind != SurfaceKind::Green) {
+      const double here = mat.kind == SurfaceKind::Water ? 0.0 : flat_roll_distance(putt, mat);
+      k = here > 1e-3 ? std::clamp(on_green / here, 1.0, kStops) : kStops;
+    }
+    ratio.emplace_back(material, k);
+    return k;
+  };
+  constexpr double kStep = 0.25;  // m along the line
+  const Vec3 from = r.ball(), to = r.hole().pin;
+  const double length = r.to_pin();
+  const int n = std::max(1, static_cast<int>(std::ceil(length / kStep)));
+  double plays = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double f = (i + 0.5) / n;
+    const std::optional<SurfaceContact> under = r.ground_at(from.x() + f * (to.x() - from.x()), from.z() + f * (to.z() - from.z()));
+    const double k = under ? ratio_of(under->material) : 1.0;
+    if (under && putt_crosses_.empty() && k > 1.0) putt_crosses_ = to_string(w.world->material(under->material).kind);
+    plays += k * length / n;
+  }
+  putt_plays_as_ = plays;
 }
 
 namespace {
@@ -195,6 +236,7 @@ void GolfPlay::advance(double t) {
       stage_ = Stage::Aiming;
       ++cancelled_;
       message_ = "Swing abandoned, no stroke counted (Space: start, Space: power, Space: accuracy)";
+      message_is_result_ = false;
     } else if (const auto m = meter_->result()) {
       last_meter_ = *m;
       last_click_ = *meter_;
@@ -211,6 +253,7 @@ void GolfPlay::advance(double t) {
 void GolfPlay::land(double t) {
   landed_at_ = t;
   message_ = pending_message_;
+  message_is_result_ = true;
   if (!group_.note().empty()) message_ += (message_.empty() ? "" : ". ") + group_.note();
   // The player's own copy without their name: "stroke 2: 7-iron, ..." reads as theirs.
   std::string own = pending_message_;
@@ -242,6 +285,7 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   stage_ = Stage::Flying;
   club_ = bag_index(s.club);
   message_.clear();
+  message_is_result_ = false;
   char msg[200];
   const char* result = end_words(rec.end);
   const std::string rest = rec.relief ? std::string(": on the cart path, free relief (Rule 16.1)")
@@ -304,6 +348,7 @@ void GolfPlay::apply(const Intent& in) {
           meter_->click(t);
           stage_ = Stage::Swinging;
           message_.clear();
+          message_is_result_ = false;
           break;
         }
         case IntentKind::Concede:
@@ -312,6 +357,7 @@ void GolfPlay::apply(const Intent& in) {
             group_.concede_hole();
             landed_at_ = t;
             message_ = group_.note();
+            message_is_result_ = false;
             if (group_.finished()) stage_ = Stage::RoundOver;
             else if (group_.hole_index() != hole) stage_ = Stage::HoleOver;
             else begin_turn(t);
@@ -341,6 +387,7 @@ void GolfPlay::apply(const Intent& in) {
         stage_ = Stage::Aiming;
         ++cancelled_;
         message_ = "Swing cancelled, no stroke counted";
+        message_is_result_ = false;
       }
       break;
     case Stage::Flying:
@@ -352,6 +399,7 @@ void GolfPlay::apply(const Intent& in) {
     case Stage::HoleOver:
       if ((in.kind == IntentKind::Continue || in.kind == IntentKind::Swing) && t - landed_at_ >= kCardGrace) {
         message_.clear();
+        message_is_result_ = false;
         begin_turn(t);
         stage_ = setup_.flyover ? Stage::Flyover : Stage::Aiming;
         flyover_at_ = t;
@@ -373,6 +421,7 @@ void GolfPlay::new_round(double t) {
   last_meter_.reset();
   last_click_.reset();
   message_.clear();
+  message_is_result_ = false;
   begin_turn(t);
   stage_ = setup_.flyover ? Stage::Flyover : Stage::Aiming;
   flyover_at_ = t;
@@ -401,6 +450,7 @@ void GolfPlay::restart_hole(double t) {
   stage_ = Stage::Aiming;
   begin_turn(t);
   message_ = "Hole " + std::to_string(course_.holes[group_.hole_index()].number) + " restarted";
+  message_is_result_ = false;
 }
 
 }  // namespace sweetspot

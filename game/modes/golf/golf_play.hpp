@@ -76,6 +76,9 @@ class GolfPlay {
   const std::optional<MeterClock>& last_click() const { return last_click_; }
   /// What the last stroke did, in player words; set when the ball stops, not before.
   const std::string& message() const { return message_; }
+  /// The message is the last stroke's result (last_record() is that stroke), not a note of
+  /// the game's own (a cancelled swing, a restarted hole, a match decided).
+  bool message_is_result() const { return message_is_result_; }
   /// The last stroke's record (where it started and stopped) and the lie it stopped on.
   const StrokeRecord& last_record() const { return last_record_; }
   const std::string& last_rest_lie() const { return last_rest_lie_; }
@@ -98,11 +101,19 @@ class GolfPlay {
   Vec3 ball_centre() const;
   /// World direction of the aim, horizontal unit.
   Vec3 aim_direction() const;
-  /// On the green: how far a putt of `power` rolls on a flat green of this hole's speed (m),
-  /// from the same physics as the putt. 0 off the green.
+  /// Within kPuttGuideReach of the cup: how far a putt of `power` rolls on a flat green of
+  /// this hole's speed (m), from the same physics as the putt. 0 farther out.
   double flat_roll(double power) const;
   /// The power that rolls `distance` m on that flat green (the preview's marks).
   double power_for_roll(double distance) const;
+  /// The putt to the cup as the preview reads it (m of green): the distance, with each stretch
+  /// of the line off the green (fringe, fairway, rough) counted as the length of green that
+  /// takes as much out of a roll. On the green, the distance. 0 beyond kPuttGuideReach.
+  double putt_plays_as() const { return putt_plays_as_; }
+  /// The surface a putt from off the green meets first ("fairway"); empty on the green.
+  const std::string& putt_crosses() const { return putt_crosses_; }
+  /// The preview is offered this near the cup (m): past it nobody putts.
+  static constexpr double kPuttGuideReach = 40.0;
   /// A full, square swing of `club` at the pin from where the ball lies, in this hole's wind
   /// and off this lie: its carry (m), from the same physics as the stroke. The caddie picks
   /// by it; the bag's carries are calm air on flat fairway.
@@ -150,8 +161,11 @@ class GolfPlay {
   std::vector<std::optional<OwnLast>> own_last_;  ///< per player, set when their ball stops
   double struck_at_ = 0.0, landed_at_ = 0.0, turn_at_ = 0.0, flyover_at_ = 0.0;
   std::string message_;
+  bool message_is_result_ = false;
   int cancelled_ = 0;
   std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green
+  double putt_plays_as_ = 0.0;
+  std::string putt_crosses_;
   struct CarryHere {  // players tee off from one spot with their own swings: keyed by player too
     int player = 0;
     std::string club;

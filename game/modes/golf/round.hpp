@@ -112,12 +112,12 @@ class GolfRound {
   /// nearer the hole; `on_path` itself when none lies within kMaxRelief.
   Vec3 path_relief(const Vec3& on_path) const;
   static constexpr double kMaxRelief = 15.0;  ///< m searched for ground off the path
+  /// The ground straight below (x, z) on this hole's world; none off its ground.
+  std::optional<SurfaceContact> ground_at(double x, double z) const;
 
  private:
   const StrokeRecord& play_spec(const ShotSpec& spec, const std::string& club, double power, ShotResult* shot);
   Vec3 drop_back_on_line(const Vec3& in_water, const Vec3& from) const;
-  /// The ground straight below (x, z) on this hole's world; none off its ground.
-  std::optional<SurfaceContact> ground_at(double x, double z) const;
   std::string surface_at(const Vec3& p) const;
   void finish_hole();
   HoleCard new_card() const;

@@ -200,3 +200,34 @@ TEST_CASE("a scratch bot's pitches from 25-50 yd finish about 20 ft away", "[gol
   REQUIRE(pitches >= 40);
   CHECK(m_to_ft(to_pin / pitches) == Approx(20.0).margin(7.0));
 }
+
+TEST_CASE("a putt rolls farther the harder it is struck, across an imported green's facets", "[golf][putting][crease]") {
+  // The national course's first green from 9.4 m (where a tour bot's putt once stopped
+  // 4 m out): its DEM facets meet at bends of a fraction of a degree whose normals repeat
+  // from cell to cell. Crossing the same two normals again and again while rolling on was
+  // taken for rocking in a valley: the ball was put in the bend's "crease" and stopped dead
+  // (rolled 2.0, 2.7, 2.0, 2.7 m at powers 0.4-0.55).
+  const GolferSkill& tour = golfer_skill("tour");
+  Course c = national();
+  c.holes = {national().holes[0]};
+  c.holes[0].number = 1;
+  SurfaceContact hit;
+  REQUIRE(ground_under(*c.holes[0].world->world, -112.754, 413.200, 400.0, 420.0, &hit));
+  c.holes[0].tee = hit.point;
+  const GolfRound r(test::assets(), c, tour);
+  REQUIRE(r.lie() == "green");
+  StrokeInput putt = GolfBot(test::assets(), tour, 1).intend(r);
+  double last = 0.0;
+  for (double p = 0.2; p <= 0.8; p += 0.05) {
+    putt.meter.power = p;
+    const ShotResult s = r.simulate(putt);
+    const Vec3& e = s.trajectory.summary.rest_position;
+    const double rolled = std::hypot(e.x() - r.ball().x(), e.z() - r.ball().z());
+    INFO("power " << p << ": rolled " << rolled << " m");
+    if (s.end == ShotEnd::Holed) break;
+    CHECK(rolled > last + 0.2);
+    last = rolled;
+  }
+  // The bot's plan holes it.
+  CHECK(r.simulate(GolfBot(test::assets(), tour, 1).intend(r)).end == ShotEnd::Holed);
+}

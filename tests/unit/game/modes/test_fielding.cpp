@@ -152,3 +152,30 @@ TEST_CASE("fielding: a grounder deep in the hole is an infield hit; the same bal
   CHECK(hole == BattedOutcome::Single);
   CHECK((who == "SS" || who == "3B"));
 }
+
+// The cage draws the batted ball as the play went: a catch ends its path in the glove, so a
+// fly caught at the track does not go on to bounce off the wall behind the fielder.
+TEST_CASE("as_played: a caught fly ends in the glove; a hit keeps its whole path", "[baseball][fielding]") {
+  int caught = 0, hits = 0;
+  for (double ev = 90.0; ev <= 104.0; ev += 2.0)
+    for (double spray = -30.0; spray <= 30.0; spray += 15.0) {
+      const ResolvedShot r = resolve(test::launch_spec("baseball", ev, 30.0, 2500.0, spray), test::assets());
+      const ShotResult shot = run_shot(r, "test", {true, true});
+      const FieldingPlay p = field_play(shot, *r.aero, r.spec.environment, league_defense(), false, 8.23, nullptr);
+      const ShotTrajectory t = as_played(shot.trajectory, p);
+      if (p.caught) {
+        ++caught;
+        CHECK(t.samples.back().t == Approx(p.fielded_time));
+        CHECK((t.samples.back().position - p.fielded_at).norm() < 1e-12);
+        CHECK(t.samples.back().t < shot.trajectory.samples.back().t);
+        for (const TrajectorySample& s : t.samples) CHECK(s.t <= p.fielded_time);
+        // The ball was in the air until he had it: no bounce before the catch.
+        for (std::size_t i = 0; i + 1 < t.samples.size(); ++i) CHECK(t.samples[i].phase == Phase::Flight);
+      } else {
+        ++hits;
+        CHECK(t.samples.size() == shot.trajectory.samples.size());
+      }
+    }
+  CHECK(caught > 0);
+  CHECK(hits > 0);
+}

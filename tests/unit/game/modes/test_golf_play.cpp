@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
 
 #include "game/content/course_file.hpp"
 #include "game/modes/golf/golf_play.hpp"
@@ -254,6 +255,55 @@ TEST_CASE("putting preview: the flat-green roll grows with power and inverts", "
   }
   // A full putter stroke on this stimp-10.5 green rolls a long lag (10-30 m), not 12-15 m.
   CHECK(play.flat_roll(1.0) > 10.0);
+}
+
+TEST_CASE("putting preview from off the green: the slower grass first makes the putt play longer", "[modes][golf]") {
+  // An approach that stops just off the green (found by playing the first stroke's clubs and
+  // powers without recording them), then the putt from there.
+  const Course course = first_hole();
+  GolfPlay probe(test::assets(), course, solo("tour"));
+  const GolfRound& r0 = probe.round();
+  std::optional<StrokeInput> off;
+  for (const char* club : {"5-iron", "4-iron", "6-iron", "3-iron", "7-iron"}) {
+    for (double p = 0.6; p <= 1.1 && !off; p += 0.02) {
+      StrokeInput in;
+      in.club = club;
+      in.meter.power = p;
+      const Vec3 rest = r0.simulate(in).trajectory.summary.rest_position;
+      const std::optional<SurfaceContact> under = r0.ground_at(rest.x(), rest.z());
+      const double to_pin = std::hypot(rest.x() - course.holes[0].pin.x(), rest.z() - course.holes[0].pin.z());
+      if (under && to_pin > 4.0 && to_pin < 20.0 &&
+          course.holes[0].world->world->material(under->material).kind == SurfaceKind::Fairway)
+        off = in;
+    }
+    if (off) break;
+  }
+  REQUIRE(off);
+  GolfSetup setup = solo("tour");
+  GolfEvent e;
+  e.stroke = *off;
+  setup.resume = {e};
+  GolfPlay play(test::assets(), course, setup);
+  REQUIRE(play.round().lie() == "fairway");
+  const double to_cup = play.round().to_pin();
+  // The preview is offered off the green too, and the putt plays longer than its distance:
+  // fairway grass slows a roll more than the green.
+  CHECK(play.flat_roll(1.0) > 10.0);
+  CHECK(play.putt_crosses() == "fairway");
+  CHECK(play.putt_plays_as() > to_cup * 1.05);
+  // At the power the preview marks, the putt reaches the cup's distance on a line that
+  // starts on the fairway (the real hole's slopes aside, it must not stop short by half).
+  StrokeInput putt;
+  putt.club = "putter";
+  putt.meter.power = play.power_for_roll(play.putt_plays_as());
+  const Vec3 rest = play.round().simulate(putt).trajectory.summary.rest_position;
+  const double rolled = std::hypot(rest.x() - play.round().ball().x(), rest.z() - play.round().ball().z());
+  CHECK(rolled > 0.7 * to_cup);
+  CHECK(rolled < 1.5 * to_cup);
+  // With the fairway counted as green the same putt comes up shorter.
+  putt.meter.power = play.power_for_roll(to_cup);
+  const Vec3 short_rest = play.round().simulate(putt).trajectory.summary.rest_position;
+  CHECK(std::hypot(short_rest.x() - play.round().ball().x(), short_rest.z() - play.round().ball().z()) < rolled);
 }
 
 TEST_CASE("latency calibration: the median tap offset, and the meter judges aimed clicks that much earlier", "[modes][golf]") {

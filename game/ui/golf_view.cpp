@@ -494,6 +494,13 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       sound_strike(play_->last_shot());
       rattle_due_ = play_->last_shot().end == ShotEnd::Holed;
       stroke_input_ = scene_->input();
+      // A stroke struck before its player's address was ever drawn (Enter lets a bot play at
+      // once) would hold the last view at address, the previous player's, for the swing:
+      // a chip watched from the tee 150 m away. Then the view from behind this ball instead.
+      const Vec3 launch = play_->last_shot().launch_state.position;
+      constexpr double kAddressReach = 15.0;  // m: the full-shot view stands ~9.4 m from the ball
+      if (w > 0 && h > 0 && (!address_view_ || (address_view_->eye - launch).norm() > kAddressReach))
+        address_view_ = scene_->camera(CameraKind::Behind, 0.0, w, h);
       stroke_view_ = address_view_;
       flight_shown_ = true;
       flight_struck_ = play_->struck_at();

@@ -326,6 +326,13 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
           const bool error = pa.result == "error";
           const bool double_play = outs_made == 2;
           pa.sacrifice_fly = pa.result == "out" && pa.pitches.back().result.play.caught && !scored.empty();
+          // The scorer's words for it: a run scored on the catch is a sacrifice fly.
+          if (pa.sacrifice_fly)
+            for (const char* caught : {"Fly out to ", "Line out to ", "Pop out to "})
+              if (pa.description.rfind(caught, 0) == 0) {
+                pa.description = "Sacrifice fly to " + pa.description.substr(std::string(caught).size());
+                break;
+              }
           pa.rbi = error || double_play ? 0 : static_cast<int>(scored.size());
           if (error) ++box[1 - half].errors;
         }

@@ -48,6 +48,9 @@ constexpr double kMeanSprint = 27.0 * 0.3048;  // m/s, Statcast's league-average
 constexpr double kStandingReach = 1.0;  // m
 constexpr double kDiveRecovery = 1.0;   // s
 constexpr double kBatterExtraBaseMargin = 0.2;  // s: the batter takes an extra base only with this to spare (ESTIMATE)
+// A running outfielder brakes harder than he starts (ESTIMATE: twice his 4 m/s² start, as
+// field-sport sprinters' peak deceleration runs ~1.5-2.5x their acceleration).
+constexpr double kOutfieldBraking = 8.0;  // m/s²
 constexpr double kOutfieldGather = 0.6;  // s an outfielder loses slowing to pick up a ball on the
                                          // ground and setting his feet (a crow hop) (ESTIMATE)
 constexpr double kCatchSpread = 0.4; // s, catch_probability's spread
@@ -114,8 +117,10 @@ std::string describe(const FieldingPlay& f, const Vec3& toward) {
     case BattedOutcome::Out:
       if (f.caught) {
         if (f.foul) return "Foul out to " + who;
+        // A fly an infielder (or the pitcher or catcher) catches is popped up, whatever its angle.
+        if (!outfield && (f.type == BattedBallType::FlyBall || f.type == BattedBallType::PopUp)) return "Pop out to " + who;
         switch (f.type) {
-          case BattedBallType::PopUp: return "Pop out to " + who;
+          case BattedBallType::PopUp: return (outfield ? "Fly out to " : "Pop out to ") + who;
           case BattedBallType::LineDrive: return "Line out to " + who;
           case BattedBallType::GroundBall: return "Line out to " + who;
           case BattedBallType::FlyBall: return "Fly out to " + who;
@@ -340,8 +345,23 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   const FielderAbility& f = defense.ability[first_f];
   double ready = first_t;
   if (first_f >= 6) {
+    // He picks it up, and, where his run carried him away from the infield (a ball over his
+    // head, one into the gap rolling to the wall), stops that part of his run before he can
+    // throw, as an infielder does (plant_time): the ball past him gives the batter time.
     first_t += kOutfieldGather;
     ready = first_t;
+    const double d = horizontal(play.start[first_f], first_p);
+    if (d > 1e-6) {
+      const Vec3 run_dir = Vec3(first_p.x() - play.start[first_f].x(), 0.0, first_p.z() - play.start[first_f].z()) / d;
+      const Vec3 second = base_position(2);
+      const double to_second = horizontal(first_p, second);
+      const Vec3 throw_dir =
+          to_second > 1e-6 ? Vec3(Vec3(second.x() - first_p.x(), 0.0, second.z() - first_p.z()) / to_second) : run_dir;
+      const double run = fielder_run_time(f, d / kRouteEfficiency);
+      FielderAbility braking = f;
+      braking.accel = kOutfieldBraking;
+      ready += plant_time(braking, run_speed(f, d), std::max(0.0, first_t - kOutfieldGather - run), run_dir, throw_dir);
+    }
   } else {
     // An infielder does not take every ball at the first point he can reach: where he would
     // get there flat out, or only with a dive, he lets it come on to where he can field it

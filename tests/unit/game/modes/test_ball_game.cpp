@@ -86,6 +86,26 @@ TEST_CASE("a nine-inning game: the box score adds up, 27 outs a side unless the 
   }
 }
 
+TEST_CASE("the play-by-play reads as a scorer's: sacrifice flies named, infield flies popped up", "[baseball][game]") {
+  int innings = 0, sac = 0, pops = 0;
+  for (const PlateAppearance& pa : games("pro", 12, 40, &innings)) {
+    INFO(pa.description);
+    const bool named = pa.description.rfind("Sacrifice fly to ", 0) == 0;
+    CHECK(named == pa.sacrifice_fly);
+    sac += pa.sacrifice_fly;
+    if (pa.result != "out" || pa.pitches.empty() || !pa.pitches.back().result.play.caught) continue;
+    const FieldingPlay& f = pa.pitches.back().result.play;
+    if (f.foul || named) continue;
+    // An infielder's catch of a fly is a pop out; an outfielder's never is.
+    const bool popped = pa.description.rfind("Pop out to ", 0) == 0;
+    if (f.fielder < 6 && (f.type == BattedBallType::FlyBall || f.type == BattedBallType::PopUp)) CHECK(popped);
+    if (f.fielder >= 6) CHECK_FALSE(popped);
+    pops += popped;
+  }
+  CHECK(sac > 0);
+  CHECK(pops > 0);
+}
+
 TEST_CASE("the same seed plays the same game; bad options are refused", "[baseball][game]") {
   GameOptions o;
   o.innings = 3;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "game/ui/golf_draw.hpp"
 #include "physics/units.hpp"
@@ -143,6 +144,21 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
     const Vec3 p = ball + along * aim + across * side;
     return Vec3(p.x(), ground_y(world, p.x(), p.z(), ball.y()) + 0.3, p.z());
   };
+  // Labels already drawn (their boxes, px), so a later one steps aside instead of over them.
+  std::vector<std::pair<ImVec2, ImVec2>> taken;
+  const auto place = [&](ImVec2 at, const std::string& text, ImVec2 dot) {
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    const auto overlaps = [&](ImVec2 a) {
+      for (const auto& [lo, hi] : taken)
+        if (a.x < hi.x && a.x + size.x > lo.x && a.y < hi.y && a.y + size.y > lo.y) return true;
+      return false;
+    };
+    // Right of its mark, else left of it, else below it.
+    if (overlaps(at)) at = ImVec2(dot.x - size.x - 6.0f, at.y);
+    if (overlaps(at)) at = ImVec2(dot.x - 0.5f * size.x, dot.y + 8.0f);
+    taken.emplace_back(at, ImVec2(at.x + size.x, at.y + size.y));
+    return at;
+  };
   // The carry ring: a circle of the carry around the ball.
   if (carry > 1.0) {
     std::vector<Vec3> ring;
@@ -151,9 +167,10 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
       ring.push_back(on_ground(carry * std::cos(a), carry * std::sin(a)));
     }
     ground_polyline(dl, cam, ring, w, h, IM_COL32(255, 230, 90, 220), 2.0f);
-    if (const auto lp = cam.project(on_ground(carry, 0.0), w, h))
-      dl->AddText(ImVec2(px(*lp).x + 6, px(*lp).y - 18), IM_COL32(255, 230, 90, 255),
-                  (club + " " + units.distance(carry)).c_str());
+    if (const auto lp = cam.project(on_ground(carry, 0.0), w, h)) {
+      const std::string text = club + " " + units.distance(carry);
+      dl->AddText(place(ImVec2(px(*lp).x + 6, px(*lp).y - 18), text, px(*lp)), IM_COL32(255, 230, 90, 255), text.c_str());
+    }
   }
   // The dispersion: an ellipse of two standard deviations (about 86 % of shots) at the carry.
   if (carry > 1.0 && spread > 0.0 && club != "putter") {
@@ -165,7 +182,7 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
     ground_polyline(dl, cam, ellipse, w, h, IM_COL32(120, 200, 255, 230), 2.0f);
     if (const auto lp = cam.project(on_ground(carry - 2.0 * spread, 0.0), w, h)) {
       const std::string text = "your spread (" + std::string(source) + ")";
-      dl->AddText(ImVec2(px(*lp).x + 6, px(*lp).y + 4), IM_COL32(120, 200, 255, 255), text.c_str());
+      dl->AddText(place(ImVec2(px(*lp).x + 6, px(*lp).y + 4), text, px(*lp)), IM_COL32(120, 200, 255, 255), text.c_str());
     }
   }
   // The ball, big enough to find.
@@ -181,7 +198,8 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
     if (o.finished() || o.hole_index() != r.hole_index() || o.card().back().shots.empty()) continue;
     if (const auto op = cam.project(o.ball() + Vec3(0, 0.3, 0), w, h)) {
       dl->AddCircleFilled(px(*op), 4.0f, IM_COL32(200, 200, 200, 230));
-      dl->AddText(ImVec2(px(*op).x + 6, px(*op).y - 6), IM_COL32(220, 220, 220, 255), g.players()[p].name.c_str());
+      const std::string& name = g.players()[p].name;
+      dl->AddText(place(ImVec2(px(*op).x + 6, px(*op).y - 6), name, px(*op)), IM_COL32(220, 220, 220, 255), name.c_str());
     }
   }
 }

@@ -360,12 +360,18 @@ Camera GolfView::map_camera() const {
   const double len = std::max(std::hypot(pin.x() - ball.x(), pin.z() - ball.z()), 30.0);
   Camera c;
   c.fov_y = deg_to_rad(40.0);
-  const double height = 0.5 * 1.35 * len / std::tan(0.5 * c.fov_y);
-  // Centred a little toward the ball, so the ball sits above the meter at the bottom.
-  const Vec3 mid = 0.5 * (ball + pin) - 0.12 * len * d;
+  // The ball 80 % of the way down the picture (above the meter), the cup 15 % from its top,
+  // so the green behind the flag (a fifth of the hole's length beyond it) is on the map.
+  constexpr double kBallAt = 0.80, kCupAt = 0.15;
+  const double span = len / (kBallAt - kCupAt);  // m from the picture's top to its bottom
+  const double height = 0.5 * span / std::tan(0.5 * c.fov_y);
+  const Vec3 mid = ball + (kBallAt - 0.5) * span * d;
   c.target = mid;
   c.eye = mid + Vec3(0.0, height, 0.0) - 0.02 * height * d;
   c.up = d;
+  // A chart seen from a kilometre up: the depth range hugs the ground (no seams from a
+  // near plane 0.5 m away), and the view lifts its haze (frame()).
+  c.near_m = 0.5 * height;
   c.far_m = height + 2000.0;
   return c;
 }
@@ -534,7 +540,11 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     } else {
       cam = green_camera(false);
     }
-    renderer.draw(scene_->build(cam, t, w, h), cam);
+    Scene view = scene_->build(cam, t, w, h);
+    // From above, the map reads as a chart: the distance haze of a view along the ground
+    // (2.5 km) would wash a long hole seen from a kilometre up half out.
+    if (camera_ == 3 && !flyover) view.haze_range = std::max(view.haze_range, static_cast<float>(20.0 * (cam.eye - cam.target).norm()));
+    renderer.draw(view, cam);
     renderer.blit_to(0, w, h);
     const GolfRound& r = play_->round();
     if (!r.finished() && !over) draw_cup_and_flag(cam, r.hole().pin, w, h);

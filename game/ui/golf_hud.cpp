@@ -73,8 +73,9 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
   const GolfPlay::Stage stage = play.stage();
   const bool in_air = stage == GolfPlay::Stage::Flying;
   const std::string& shooter = g.players()[static_cast<std::size_t>(play.shooter())].name;
-  if (!g.finished()) {
-    const CourseHole& hole = g.course().holes[g.hole_index()];
+  if (play.hole_shown() < g.course().holes.size()) {
+    // The hole on screen: the card of one just finished names it, not the next.
+    const CourseHole& hole = g.course().holes[play.hole_shown()];
     const CourseSetup& setup = g.course().setup;
     if (!setup.tees.empty() || setup.pin_set > 1)
       ImGui::Text("%s   %s play   %s tees   pin set %d", g.course().name.c_str(), to_string(g.options().format),
@@ -113,6 +114,10 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     if (club == "putter") ImGui::Text("Club: putter");
     else ImGui::Text("Club: %s (carry %s, here %s)", club.c_str(), units.distance(carry).c_str(),
                      units.distance(play.carry_here(club)).c_str());
+    // A part swing's feel: the power the caddie would give the club he chose (a pitch of
+    // 29 yd with a 78 yd wedge is not a full swing).
+    if (const auto& plan = play.caddie_plan(); plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn())
+      ImGui::Text("Caddie: a part swing, %.0f %% power", 100.0 * plan->meter.power);
     ImGui::Text("Aim: %.1f deg %s of the pin", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left");
     if (play.human_turn()) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");

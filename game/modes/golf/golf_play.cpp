@@ -102,17 +102,20 @@ double GolfPlay::flyover_progress(double now) const {
 
 void GolfPlay::choose_club() {
   const GolfRound& r = round();
+  caddie_plan_.reset();
   if (r.finished()) return;
   // The caddie's club plays like the distance today: the wind, the lie, the ground; off the
   // green he points the aim where he would play (a dogleg's corner when the cup is out of
   // reach), on it at the cup: the player reads the putt.
   aim_ = 0.0;
+  caddie_plan_.reset();
   if (r.lie() == "green") {
     club_ = bag_index("putter");
   } else {
     const StrokeInput plan = caddie().intend(r);
     club_ = bag_index(plan.club);
     if (r.next_bend()) aim_ = plan.aim;
+    caddie_plan_ = plan;
   }
 }
 
@@ -430,8 +433,7 @@ void GolfPlay::new_round(double t) {
 void GolfPlay::restart_hole(double t) {
   // The hole being played: during a flight, or on the card after it, the hole of the last
   // stroke (the group may already be on the next, or done).
-  const bool after_stroke = stage_ == Stage::Flying || stage_ == Stage::HoleOver || stage_ == Stage::RoundOver;
-  const std::size_t hole = after_stroke ? round_hole_ : group_.hole_index();
+  const std::size_t hole = hole_shown();
   if (hole >= course_.holes.size()) {
     new_round(t);
     return;

@@ -59,6 +59,9 @@ class GolfPlay {
   bool human_turn() const;
   const GolferSkill& skill() const { return golfer_skill(player_info().skill); }
   const GolfBot& caddie() const { return group_.caddie(player_); }
+  /// The caddie's stroke from here as he chose the club at the turn's start (C chooses
+  /// again): its club and, for a part swing, its power. None on the green or once over.
+  const std::optional<StrokeInput>& caddie_plan() const { return caddie_plan_; }
   const std::string& club() const;
   double aim() const { return aim_; }              ///< rad right of the line to the pin
   const std::optional<MeterClock>& meter() const { return meter_; }
@@ -97,6 +100,12 @@ class GolfPlay {
   /// The flyover's progress, 0 at the tee... 1 done (the view flies the camera with it).
   double flyover_progress(double now) const;
 
+  /// The hole on screen (the group's index): during a flight and on the card after it, the
+  /// hole of the last stroke, though the group may already be on the next.
+  std::size_t hole_shown() const {
+    const bool after_stroke = stage_ == Stage::Flying || stage_ == Stage::HoleOver || stage_ == Stage::RoundOver;
+    return after_stroke ? round_hole_ : group_.hole_index();
+  }
   /// The ball's centre where it lies (teed up on a tee).
   Vec3 ball_centre() const;
   /// World direction of the aim, horizontal unit.
@@ -164,6 +173,7 @@ class GolfPlay {
   bool message_is_result_ = false;
   int cancelled_ = 0;
   std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green
+  std::optional<StrokeInput> caddie_plan_;
   double putt_plays_as_ = 0.0;
   std::string putt_crosses_;
   struct CarryHere {  // players tee off from one spot with their own swings: keyed by player too

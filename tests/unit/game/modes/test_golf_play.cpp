@@ -306,6 +306,42 @@ TEST_CASE("putting preview from off the green: the slower grass first makes the 
   CHECK(std::hypot(short_rest.x() - play.round().ball().x(), short_rest.z() - play.round().ball().z()) < rolled);
 }
 
+TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power for a pitch", "[modes][golf]") {
+  const Course course = first_hole();
+  GolfPlay tee(test::assets(), course, solo("scratch"));
+  REQUIRE(tee.caddie_plan());
+  CHECK(tee.caddie_plan()->club == tee.club());
+  CHECK(tee.caddie_plan()->meter.power >= 0.97);
+  // A tee shot that stops 15-45 m from the cup (short of the pond or over the green): the
+  // pitch from there is a part swing.
+  const GolfRound& r0 = tee.round();
+  std::optional<StrokeInput> short_one;
+  for (const char* club : {"hybrid", "4-iron", "5-iron", "9-iron", "pw"}) {
+    for (double p = 0.5; p <= 1.1 && !short_one; p += 0.05) {
+      StrokeInput in;
+      in.club = club;
+      in.meter.power = p;
+      const Vec3 rest = r0.simulate(in).trajectory.summary.rest_position;
+      const double to_pin = std::hypot(rest.x() - course.holes[0].pin.x(), rest.z() - course.holes[0].pin.z());
+      const std::optional<SurfaceContact> under = r0.ground_at(rest.x(), rest.z());
+      const SurfaceKind kind = under ? course.holes[0].world->world->material(under->material).kind : SurfaceKind::Water;
+      if (to_pin > 15.0 && to_pin < 45.0 && (kind == SurfaceKind::Fairway || kind == SurfaceKind::Rough)) short_one = in;
+    }
+    if (short_one) break;
+  }
+  REQUIRE(short_one);
+  GolfSetup setup = solo("scratch");
+  GolfEvent e;
+  e.stroke = *short_one;
+  setup.resume = {e};
+  const GolfPlay pitch(test::assets(), course, setup);
+  REQUIRE(pitch.caddie_plan());
+  INFO(pitch.caddie_plan()->club << " at " << pitch.caddie_plan()->meter.power << " from " << pitch.round().to_pin() << " m");
+  CHECK(pitch.caddie_plan()->club == pitch.club());
+  CHECK(pitch.caddie_plan()->meter.power < 0.9);
+  CHECK(pitch.caddie_plan()->meter.power > 0.1);
+}
+
 TEST_CASE("latency calibration: the median tap offset, and the meter judges aimed clicks that much earlier", "[modes][golf]") {
   LatencyCalibration cal(10.0);
   // Taps 45 ms after each beat with a few ms of scatter; the lead-in beats are not counted;

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 
 #include "game/content/course_file.hpp"
@@ -29,6 +30,29 @@ Course first_hole(int holes = 1) {
   Course c = load_course(test::assets(), "links");
   c.holes.resize(static_cast<std::size_t>(holes));
   return c;
+}
+
+// The first stroke of a `skill` golfer on `course`'s first hole, among `clubs` at powers from
+// `from` up to 1.1 in steps of `step`, whose ball comes to rest where `wanted(surface, metres to
+// the cup)`; found by playing them without recording them. None when no such stroke.
+template <class Wanted>
+std::optional<StrokeInput> first_stroke_to(const Course& course, const std::string& skill,
+                                           std::initializer_list<const char*> clubs, double from, double step, Wanted wanted) {
+  GolfPlay probe(test::assets(), course, solo(skill));
+  const GolfRound& r = probe.round();
+  const Terrain& world = *course.holes[0].world->world;
+  for (const char* club : clubs) {
+    for (double p = from; p <= MeterInput::kPower.max + 1e-9; p += step) {
+      StrokeInput in;
+      in.club = club;
+      in.meter.power = p;
+      const Vec3 rest = r.simulate(in).trajectory.summary.rest_position;
+      const std::optional<SurfaceContact> under = r.ground_at(rest.x(), rest.z());
+      const double to_pin = std::hypot(rest.x() - course.holes[0].pin.x(), rest.z() - course.holes[0].pin.z());
+      if (under && wanted(world.material(under->material).kind, to_pin)) return in;
+    }
+  }
+  return std::nullopt;
 }
 
 // Frames every `dt` s, as the window runs them: each frame hands the model the intents whose
@@ -258,26 +282,11 @@ TEST_CASE("putting preview: the flat-green roll grows with power and inverts", "
 }
 
 TEST_CASE("putting preview from off the green: the slower grass first makes the putt play longer", "[modes][golf]") {
-  // An approach that stops just off the green (found by playing the first stroke's clubs and
-  // powers without recording them), then the putt from there.
+  // An approach that stops just off the green, then the putt from there.
   const Course course = first_hole();
-  GolfPlay probe(test::assets(), course, solo("tour"));
-  const GolfRound& r0 = probe.round();
-  std::optional<StrokeInput> off;
-  for (const char* club : {"5-iron", "4-iron", "6-iron", "3-iron", "7-iron"}) {
-    for (double p = 0.6; p <= 1.1 && !off; p += 0.02) {
-      StrokeInput in;
-      in.club = club;
-      in.meter.power = p;
-      const Vec3 rest = r0.simulate(in).trajectory.summary.rest_position;
-      const std::optional<SurfaceContact> under = r0.ground_at(rest.x(), rest.z());
-      const double to_pin = std::hypot(rest.x() - course.holes[0].pin.x(), rest.z() - course.holes[0].pin.z());
-      if (under && to_pin > 4.0 && to_pin < 20.0 &&
-          course.holes[0].world->world->material(under->material).kind == SurfaceKind::Fairway)
-        off = in;
-    }
-    if (off) break;
-  }
+  const std::optional<StrokeInput> off =
+      first_stroke_to(course, "tour", {"5-iron", "4-iron", "6-iron", "7-iron"}, 0.6, 0.02,
+                      [](SurfaceKind k, double to_pin) { return k == SurfaceKind::Fairway && to_pin > 4.0 && to_pin < 20.0; });
   REQUIRE(off);
   GolfSetup setup = solo("tour");
   GolfEvent e;
@@ -314,21 +323,10 @@ TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power fo
   CHECK(tee.caddie_plan()->meter.power >= 0.97);
   // A tee shot that stops 15-45 m from the cup (short of the pond or over the green): the
   // pitch from there is a part swing.
-  const GolfRound& r0 = tee.round();
-  std::optional<StrokeInput> short_one;
-  for (const char* club : {"hybrid", "4-iron", "5-iron", "9-iron", "pw"}) {
-    for (double p = 0.5; p <= 1.1 && !short_one; p += 0.05) {
-      StrokeInput in;
-      in.club = club;
-      in.meter.power = p;
-      const Vec3 rest = r0.simulate(in).trajectory.summary.rest_position;
-      const double to_pin = std::hypot(rest.x() - course.holes[0].pin.x(), rest.z() - course.holes[0].pin.z());
-      const std::optional<SurfaceContact> under = r0.ground_at(rest.x(), rest.z());
-      const SurfaceKind kind = under ? course.holes[0].world->world->material(under->material).kind : SurfaceKind::Water;
-      if (to_pin > 15.0 && to_pin < 45.0 && (kind == SurfaceKind::Fairway || kind == SurfaceKind::Rough)) short_one = in;
-    }
-    if (short_one) break;
-  }
+  const std::optional<StrokeInput> short_one =
+      first_stroke_to(course, "scratch", {"hybrid", "4-iron", "5-iron", "9-iron", "pw"}, 0.5, 0.05, [](SurfaceKind k, double to_pin) {
+        return (k == SurfaceKind::Fairway || k == SurfaceKind::Rough) && to_pin > 15.0 && to_pin < 45.0;
+      });
   REQUIRE(short_one);
   GolfSetup setup = solo("scratch");
   GolfEvent e;

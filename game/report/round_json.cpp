@@ -31,6 +31,12 @@ nlohmann::json holes_json(const GolfRound& round) {
                    {"rest_m", {s.rest.x(), s.rest.y(), s.rest.z()}},
                    {"end", to_string(s.end)},
                    {"to_pin_m", s.to_pin_m}};
+      // Beyond DESIGN §9's keys: how the stroke was swung and how far it flew, for a player
+      // (or a coach) reading a round back. A conceded stroke was not swung.
+      if (!s.conceded) {
+        shot["power"] = s.power;
+        shot["carry_m"] = s.carry_m;
+      }
       if (s.conceded) shot["conceded"] = true;
       if (s.relief) shot["relief"] = "cart_path";
       shots.push_back(shot);

@@ -246,10 +246,15 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       best = tune(stock_[k].club, 1.0, aim, 2);
     }
   } else if (!best.lost) {
-    // Short: one club longer, if it gets there and stays in play.
+    // Short: one club longer, if it stays in play. Going for the cup, swung to its distance
+    // (a soft pitching wedge where the full sand wedge stops a yard short), not full: a
+    // full swing with it flies a whole club's gap (~20 m) past. The one that stops nearer
+    // the cup is played.
     if (at > 0 && allowed(stock_[at - 1])) {
-      const Tried t = tune(stock_[at - 1].club, 1.0, aim, 2);
-      if (!t.lost) best = t;
+      const Stock& longer = stock_[at - 1];
+      const double power = going_for_pin ? std::clamp(std::pow(d / longer.carry, 0.8), 0.05, 1.0) : 1.0;
+      const Tried t = tune(longer.club, power, aim, power < 1.0 ? 3 : 2);
+      if (!t.lost && (!going_for_pin || std::abs(t.reach - d) < std::abs(best.reach - d))) best = t;
     }
   } else {
     // In a penalty: down the bag to the first club in play.
@@ -260,6 +265,18 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
         best = t;
         break;
       }
+    }
+  }
+  // Going for the cup with a full swing that flies well past it (the next club down stops
+  // short, a whole gap away): the same club swung to the distance, as a player takes a
+  // three-quarter wedge, when it stops nearer.
+  constexpr double kPastForPartial = 6.0;  // m: about a third of the wedges' ~20 m gaps
+  if (going_for_pin && !best.lost && best.in.meter.power >= 1.0 && best.reach - d > kPastForPartial) {
+    for (const Stock& s : stock_) {
+      if (s.club != best.in.club) continue;
+      const Tried t = tune(s.club, std::clamp(std::pow(d / s.carry, 0.8), 0.05, 1.0), best.in.aim, 3);
+      if (!t.lost && std::abs(t.reach - d) < std::abs(best.reach - d)) best = t;
+      break;
     }
   }
   return best.in;

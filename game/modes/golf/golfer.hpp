@@ -34,8 +34,10 @@ struct GolferSkill {
   /// Extra power spread of a partial swing per unit of power it leaves out: a chip or a
   /// pitch is judged by feel (and struck fat or thin), and strays more the shorter the swing.
   /// scratch 0.18: its pitches from 25-50 yd finish ~20 ft away as Arccos's scratch golfers'
-  /// do (test_bot_putting.cpp). tour 0.08, amateur 0.26, beginner 0.35: ESTIMATES spaced
-  /// like the full-swing errors, checked only through the rounds' scores and putts there.
+  /// do (test_bot_putting.cpp). tour 0.08, amateur 0.35, beginner 0.45: ESTIMATES spaced
+  /// like the full-swing errors, checked only through the rounds' scores and putts there
+  /// (since the bots swing a longer club softly rather than a full one a gap past the cup,
+  /// the amateur's 0.26 scored 84.9 on the National in calm air; 0.35 scores 87.4).
   double partial_feel_sd = 0.08;
 };
 
@@ -49,7 +51,10 @@ struct GolferSkill {
 /// (TrackMan's published handicap averages put the scratch and 15-handicap male golfer near
 /// 105 and 93 mph). Errors: ESTIMATES chosen so a
 /// tour bot's drives scatter ~±20 yd sideways (PGA TOUR fairways hit ~60 %) and each level
-/// below roughly doubles the spread. The tour bot's putts miss by a speed (6 %) and a
+/// below roughly doubles the spread. The tour bot's power spread, 3.5 %, leaves its
+/// approaches as near the hole as PGA TOUR players' by distance (ShotLink's proximity from
+/// the fairway, about 16, 18, 20, 23, 27, 33, 39 and 48 ft from 50-75 ... 225-250 yd; the bot
+/// over 50 National rounds: 13, 14, 22, 25, 22, 36, 46, 44 ft). The tour bot's putts miss by a speed (6 %) and a
 /// start-line (1.15°) spread that hole as many as PGA Tour players do from every distance
 /// (Broadie 2014, Every Shot Counts: 3 ft 96 %, 5 ft 77 %, 8 ft 50 %, 10 ft 40 %, 20 ft 15 %;
 /// the bot on the national course's greens: 95, 79, 51, 41, 13 %). The others hole what Shot

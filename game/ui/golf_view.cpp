@@ -145,6 +145,11 @@ class GolfView final : public ModeView {
   std::vector<SlopeArrow> slopes_;
   std::string saved_note_;
   double saved_note_at_ = -1.0;  // mode time it was first shown; -1 until then
+  // A note shown for kNoteShown s from its first frame.
+  void note(std::string text) {
+    saved_note_ = std::move(text);
+    saved_note_at_ = -1.0;
+  }
   static constexpr double kNoteShown = 8.0;  // s a note (round saved, latency) stays on screen
   std::optional<LatencyCalibration> calibration_;
   int done_frames_ = 0;
@@ -204,11 +209,9 @@ std::vector<KeyPress> GolfView::calibration_keys(const std::vector<KeyPress>& ke
       } catch (const std::exception& e) {
         std::snprintf(buf, sizeof buf, "Input latency %.0f ms for this session (not saved: %s)", 1000.0 * *latency, e.what());
       }
-      saved_note_at_ = -1.0;
-      saved_note_ = buf;
+      note(buf);
     } else {
-      saved_note_at_ = -1.0;
-      saved_note_ = "Calibration: too few taps in time with the beat; nothing changed (L to try again)";
+      note("Calibration: too few taps in time with the beat; nothing changed (L to try again)");
     }
     calibration_.reset();
   }
@@ -234,11 +237,9 @@ void GolfView::save_round() {
     write_file_atomic(options_.save_path,
                       json_text(round_save_json(g, std::filesystem::absolute(g.course().source).string())) + "\n",
                       OverInput::Allow);
-    saved_note_at_ = -1.0;
-    saved_note_ = "Round saved to " + options_.save_path + " (play --mode golf --resume FILE)";
+    note("Round saved to " + options_.save_path + " (play --mode golf --resume FILE)");
   } catch (const std::exception& e) {
-    saved_note_at_ = -1.0;
-    saved_note_ = std::string("Not saved: ") + e.what();
+    note(std::string("Not saved: ") + e.what());
   }
 }
 

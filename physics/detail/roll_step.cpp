@@ -229,8 +229,8 @@ ShotEvent skid(const ShotModel& m, ShotState& s) {
 /// the face it came from and against its last crossing's direction across the two faces'
 /// bend: a ball rolling straight on over a run of facets whose normals alternate between
 /// two (a terrain grid's cells, each split by a diagonal) meets the same pair of faces again
-/// and again but always going the same way, and rolls on (taken for a valley, a 3 m/s putt
-/// on an imported green lost all its speed at a 0.16° bend).
+/// and again but always going the same way, and rolls on: held in a crease it would keep
+/// only its speed along the bend's line, ~0 where the line runs across its path.
 bool count_valley_crossing(ShotState& s, const Vec3& from, const Vec3& to, const Vec3& v) {
   constexpr int kValleyCrossings = 4;
   const Vec3 across = to - from;

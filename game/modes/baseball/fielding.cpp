@@ -71,6 +71,11 @@ Vec3 at(double depth_ft, double angle_deg) {
   return Vec3(d * std::cos(a), 0.0, d * std::sin(a));
 }
 double horizontal(const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); }
+// The horizontal unit vector from a toward b; `fallback` where they (nearly) meet.
+Vec3 heading(const Vec3& a, const Vec3& b, const Vec3& fallback) {
+  const double d = horizontal(a, b);
+  return d > 1e-6 ? Vec3(Vec3(b.x() - a.x(), 0.0, b.z() - a.z()) / d) : fallback;
+}
 double spray(const Vec3& p) { return std::atan2(p.z(), p.x()); }
 bool fair_direction(const Vec3& p) { return p.x() > 0.0 && std::abs(spray(p)) <= kFoul; }
 
@@ -352,11 +357,8 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
     ready = first_t;
     const double d = horizontal(play.start[first_f], first_p);
     if (d > 1e-6) {
-      const Vec3 run_dir = Vec3(first_p.x() - play.start[first_f].x(), 0.0, first_p.z() - play.start[first_f].z()) / d;
-      const Vec3 second = base_position(2);
-      const double to_second = horizontal(first_p, second);
-      const Vec3 throw_dir =
-          to_second > 1e-6 ? Vec3(Vec3(second.x() - first_p.x(), 0.0, second.z() - first_p.z()) / to_second) : run_dir;
+      const Vec3 run_dir = heading(play.start[first_f], first_p, Vec3::UnitX());
+      const Vec3 throw_dir = heading(first_p, base_position(2), run_dir);
       const double run = fielder_run_time(f, d / kRouteEfficiency);
       FielderAbility braking = f;
       braking.accel = kOutfieldBraking;
@@ -379,9 +381,8 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
       if (fielder_run_time(standing, d) > t) {
         set += kDiveRecovery;
       } else if (d > 1e-6) {
-        const Vec3 run_dir = Vec3(p.x() - play.start[first_f].x(), 0.0, p.z() - play.start[first_f].z()) / d;
-        const double to_base = horizontal(p, first_base);
-        const Vec3 throw_dir = to_base > 1e-6 ? Vec3(first_base.x() - p.x(), 0.0, first_base.z() - p.z()) / to_base : run_dir;
+        const Vec3 run_dir = heading(play.start[first_f], p, Vec3::UnitX());
+        const Vec3 throw_dir = heading(p, first_base, run_dir);
         set += plant_time(f, run_speed(f, d), t - run, run_dir, throw_dir);
       }
       const double at_first = set + horizontal(p, first_base) / f.arm;

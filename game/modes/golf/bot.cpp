@@ -33,19 +33,14 @@ constexpr double kPuttCentred = 0.0135;
 bool putt_line_clear(const GolfRound& round) {
   constexpr double kStep = 0.25;          // m along the line
   constexpr double kPuttableCollar = 3.0; // m of fairway or tee grass a tour player still putts across
-  const Vec3 from = round.ball(), to = round.hole().pin;
-  const double length = round.to_pin();
-  const int n = std::max(1, static_cast<int>(std::ceil(length / kStep)));
-  double collar = 0.0;
   const Terrain& world = *round.hole().world->world;
-  for (int i = 0; i < n; ++i) {
-    const double f = (i + 0.5) / n;
-    const std::optional<SurfaceContact> under = round.ground_at(from.x() + f * (to.x() - from.x()), from.z() + f * (to.z() - from.z()));
-    if (!under) return false;
-    const SurfaceKind k = world.material(under->material).kind;
+  double collar = 0.0;
+  for (const GolfRound::LineStretch& s : round.ground_to_pin(kStep)) {
+    if (!s.ground) return false;
+    const SurfaceKind k = world.material(s.ground->material).kind;
     if (k == SurfaceKind::Green) continue;
     if (k != SurfaceKind::Fairway && k != SurfaceKind::Tee) return false;
-    collar += length / n;
+    collar += s.length;
   }
   return collar <= kPuttableCollar;
 }
@@ -272,12 +267,9 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   // three-quarter wedge, when it stops nearer.
   constexpr double kPastForPartial = 6.0;  // m: about a third of the wedges' ~20 m gaps
   if (going_for_pin && !best.lost && best.in.meter.power >= 1.0 && best.reach - d > kPastForPartial) {
-    for (const Stock& s : stock_) {
-      if (s.club != best.in.club) continue;
-      const Tried t = tune(s.club, std::clamp(std::pow(d / s.carry, 0.8), 0.05, 1.0), best.in.aim, 3);
-      if (!t.lost && std::abs(t.reach - d) < std::abs(best.reach - d)) best = t;
-      break;
-    }
+    const Stock& s = *std::find_if(stock_.begin(), stock_.end(), [&](const Stock& k) { return k.club == best.in.club; });
+    const Tried t = tune(s.club, std::clamp(std::pow(d / s.carry, 0.8), 0.05, 1.0), best.in.aim, 3);
+    if (!t.lost && std::abs(t.reach - d) < std::abs(best.reach - d)) best = t;
   }
   return best.in;
 }

@@ -108,7 +108,6 @@ void GolfPlay::choose_club() {
   // green he points the aim where he would play (a dogleg's corner when the cup is out of
   // reach), on it at the cup: the player reads the putt.
   aim_ = 0.0;
-  caddie_plan_.reset();
   if (r.lie() == "green") {
     club_ = bag_index("putter");
   } else {
@@ -145,7 +144,8 @@ void GolfPlay::build_roll_table() {
   putt_plays_as_ = 0.0;
   putt_crosses_.clear();
   const GolfRound& r = round();
-  if (r.finished() || r.to_pin() > kPuttGuideReach) return;
+  // The preview is the human's meter's: a bot's turn has no use for it.
+  if (r.finished() || r.to_pin() > kPuttGuideReach || !human_turn()) return;
   // The green's own surface, from under the cup.
   const WorldAsset& w = *r.hole().world;
   SurfaceContact hit;
@@ -186,16 +186,11 @@ void GolfPlay::build_roll_table() {
     return k;
   };
   constexpr double kStep = 0.25;  // m along the line
-  const Vec3 from = r.ball(), to = r.hole().pin;
-  const double length = r.to_pin();
-  const int n = std::max(1, static_cast<int>(std::ceil(length / kStep)));
   double plays = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double f = (i + 0.5) / n;
-    const std::optional<SurfaceContact> under = r.ground_at(from.x() + f * (to.x() - from.x()), from.z() + f * (to.z() - from.z()));
-    const double k = under ? ratio_of(under->material) : 1.0;
-    if (under && putt_crosses_.empty() && k > 1.0) putt_crosses_ = to_string(w.world->material(under->material).kind);
-    plays += k * length / n;
+  for (const GolfRound::LineStretch& s : r.ground_to_pin(kStep)) {
+    const double k = s.ground ? ratio_of(s.ground->material) : 1.0;
+    if (s.ground && putt_crosses_.empty() && k > 1.0) putt_crosses_ = to_string(w.world->material(s.ground->material).kind);
+    plays += k * s.length;
   }
   putt_plays_as_ = plays;
 }
@@ -238,8 +233,7 @@ void GolfPlay::advance(double t) {
       meter_.reset();
       stage_ = Stage::Aiming;
       ++cancelled_;
-      message_ = "Swing abandoned, no stroke counted (Space: start, Space: power, Space: accuracy)";
-      message_is_result_ = false;
+      say("Swing abandoned, no stroke counted (Space: start, Space: power, Space: accuracy)");
     } else if (const auto m = meter_->result()) {
       last_meter_ = *m;
       last_click_ = *meter_;
@@ -255,8 +249,7 @@ void GolfPlay::advance(double t) {
 
 void GolfPlay::land(double t) {
   landed_at_ = t;
-  message_ = pending_message_;
-  message_is_result_ = true;
+  say(pending_message_, true);
   if (!group_.note().empty()) message_ += (message_.empty() ? "" : ". ") + group_.note();
   // The player's own copy without their name: "stroke 2: 7-iron, ..." reads as theirs.
   std::string own = pending_message_;
@@ -287,8 +280,7 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   meter_.reset();
   stage_ = Stage::Flying;
   club_ = bag_index(s.club);
-  message_.clear();
-  message_is_result_ = false;
+  say("");
   char msg[200];
   const char* result = end_words(rec.end);
   const std::string rest = rec.relief ? std::string(": on the cart path, free relief (Rule 16.1)")
@@ -350,8 +342,7 @@ void GolfPlay::apply(const Intent& in) {
           meter_.emplace(MeterClock::tempo_for(length, putting), putting, perfect_window_ms(setup_.difficulty));
           meter_->click(t);
           stage_ = Stage::Swinging;
-          message_.clear();
-          message_is_result_ = false;
+          say("");
           break;
         }
         case IntentKind::Concede:
@@ -359,8 +350,7 @@ void GolfPlay::apply(const Intent& in) {
             const std::size_t hole = group_.hole_index();
             group_.concede_hole();
             landed_at_ = t;
-            message_ = group_.note();
-            message_is_result_ = false;
+            say(group_.note());
             if (group_.finished()) stage_ = Stage::RoundOver;
             else if (group_.hole_index() != hole) stage_ = Stage::HoleOver;
             else begin_turn(t);
@@ -389,8 +379,7 @@ void GolfPlay::apply(const Intent& in) {
         meter_.reset();
         stage_ = Stage::Aiming;
         ++cancelled_;
-        message_ = "Swing cancelled, no stroke counted";
-        message_is_result_ = false;
+        say("Swing cancelled, no stroke counted");
       }
       break;
     case Stage::Flying:
@@ -401,8 +390,7 @@ void GolfPlay::apply(const Intent& in) {
       break;
     case Stage::HoleOver:
       if ((in.kind == IntentKind::Continue || in.kind == IntentKind::Swing) && t - landed_at_ >= kCardGrace) {
-        message_.clear();
-        message_is_result_ = false;
+        say("");
         begin_turn(t);
         stage_ = setup_.flyover ? Stage::Flyover : Stage::Aiming;
         flyover_at_ = t;
@@ -423,8 +411,7 @@ void GolfPlay::new_round(double t) {
   meter_.reset();
   last_meter_.reset();
   last_click_.reset();
-  message_.clear();
-  message_is_result_ = false;
+  say("");
   begin_turn(t);
   stage_ = setup_.flyover ? Stage::Flyover : Stage::Aiming;
   flyover_at_ = t;
@@ -451,8 +438,7 @@ void GolfPlay::restart_hole(double t) {
   landed_at_ = t;
   stage_ = Stage::Aiming;
   begin_turn(t);
-  message_ = "Hole " + std::to_string(course_.holes[group_.hole_index()].number) + " restarted";
-  message_is_result_ = false;
+  say("Hole " + std::to_string(course_.holes[group_.hole_index()].number) + " restarted");
 }
 
 }  // namespace sweetspot

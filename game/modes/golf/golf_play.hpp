@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "game/modes/golf/bot.hpp"
@@ -149,6 +150,11 @@ class GolfPlay {
   void new_round(double t);
   void restart_hole(double t);
   void build_roll_table();
+  /// The HUD's message; `result`: it tells the last stroke's result (message_is_result()).
+  void say(std::string text, bool result = false) {
+    message_ = std::move(text);
+    message_is_result_ = result;
+  }
 
   const Assets& assets_;
   Course course_;

@@ -36,8 +36,7 @@ struct GolferSkill {
   /// scratch 0.18: its pitches from 25-50 yd finish ~20 ft away as Arccos's scratch golfers'
   /// do (test_bot_putting.cpp). tour 0.08, amateur 0.35, beginner 0.45: ESTIMATES spaced
   /// like the full-swing errors, checked only through the rounds' scores and putts there
-  /// (since the bots swing a longer club softly rather than a full one a gap past the cup,
-  /// the amateur's 0.26 scored 84.9 on the National in calm air; 0.35 scores 87.4).
+  /// (the amateur's calm National rounds average 87.4 against the 85-93 band).
   double partial_feel_sd = 0.08;
 };
 

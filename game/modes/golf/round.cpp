@@ -36,6 +36,19 @@ std::optional<SurfaceContact> GolfRound::ground_at(double x, double z) const {
   return hit;
 }
 
+std::vector<GolfRound::LineStretch> GolfRound::ground_to_pin(double step) const {
+  const Vec3& from = ball_;
+  const Vec3& to = hole().pin;
+  const double length = to_pin();
+  const int n = std::max(1, static_cast<int>(std::ceil(length / step)));
+  std::vector<LineStretch> out(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const double f = (i + 0.5) / n;
+    out[static_cast<std::size_t>(i)] = {length / n, ground_at(from.x() + f * (to.x() - from.x()), from.z() + f * (to.z() - from.z()))};
+  }
+  return out;
+}
+
 std::string GolfRound::surface_at(const Vec3& p) const {
   const std::optional<SurfaceContact> hit = ground_at(p.x(), p.z());
   return hit ? to_string(hole().world->world->material(hit->material).kind) : "out_of_bounds";

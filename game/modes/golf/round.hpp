@@ -114,6 +114,14 @@ class GolfRound {
   static constexpr double kMaxRelief = 15.0;  ///< m searched for ground off the path
   /// The ground straight below (x, z) on this hole's world; none off its ground.
   std::optional<SurfaceContact> ground_at(double x, double z) const;
+  /// The straight line from the ball to the cup cut into equal stretches of at most `step`
+  /// m: each stretch's length and the ground under its middle (none off the world's ground).
+  /// What a putt along it rolls over.
+  struct LineStretch {
+    double length = 0.0;
+    std::optional<SurfaceContact> ground;
+  };
+  std::vector<LineStretch> ground_to_pin(double step) const;
 
  private:
   const StrokeRecord& play_spec(const ShotSpec& spec, const std::string& club, double power, ShotResult* shot);

@@ -6,7 +6,9 @@
 namespace sweetspot {
 
 double swing_pre_roll(const std::optional<ImpactorPlacement>& impactor, const std::string& impactor_mesh) {
-  if (!impactor || impactor_mesh.empty() || impactor->velocity.norm() <= 1.0) return 0.0;
+  // Any delivered motion: a tap-in's putter moves at ~0.3 m/s, and a nominal impactor
+  // (launch numbers without a delivery) at none.
+  if (!impactor || impactor_mesh.empty() || impactor->velocity.norm() <= kMinDeliveredSpeed) return 0.0;
   return swing_shape(impactor_mesh).downswing;
 }
 

@@ -45,6 +45,10 @@ const SwingShape& swing_shape(const std::string& impactor_mesh);
 ImpactorPlacement swing_pose(const ImpactorPlacement& impact, const Vec3& contact, const Vec3& shaft, double t,
                              const SwingShape& shape);
 
+/// m/s: an impactor slower than this at impact has no swing to show (GolfSwing's slowest
+/// putter head is 0.1 m/s).
+inline constexpr double kMinDeliveredSpeed = 0.05;
+
 /// How long before launch a replay (or `render --at`) may show the downswing: the swing's
 /// duration when the impactor has a mesh and a delivered velocity, else 0.
 double swing_pre_roll(const std::optional<ImpactorPlacement>& impactor, const std::string& impactor_mesh);

@@ -274,8 +274,8 @@ std::string group_table(const GolfGroup& g) {
     sum_row("points", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_points); });
   if (s.format == GolfFormat::Skins)
     for (std::size_t p = 0; p < n; ++p)
-      out += g.players()[p].name + ": " + std::to_string(s.skins->skins[p]) + " skins\n";
-  if (s.format == GolfFormat::Skins && s.skins->unwon > 0) out += std::to_string(s.skins->unwon) + " skins carried, unwon\n";
+      out += g.players()[p].name + ": " + std::to_string(s.skins->skins[p]) + (s.skins->skins[p] == 1 ? " skin\n" : " skins\n");
+  if (s.format == GolfFormat::Skins && s.skins->unwon > 0) out += std::to_string(s.skins->unwon) + (s.skins->unwon == 1 ? " skin" : " skins") + " carried, unwon\n";
   if (s.format == GolfFormat::Match) out += "result: " + s.match->result + "\n";
   else if (s.holes > 0) out += leaders_text(g, s) + "\n";
   out += "(* a stroke received; putts in brackets; 1p a penalty stroke; PU picked up)\n";

@@ -51,6 +51,8 @@ int stableford_points(int par, int net_strokes) { return std::max(0, 2 + par - n
 namespace {
 
 std::string up_text(const std::string& leader, int up) { return leader + " " + std::to_string(up) + " up"; }
+// The human player's card name is "You": "You win 3&2", not "You wins".
+std::string wins_text(const std::string& leader) { return leader + (leader == "You" ? " win " : " wins "); }
 
 }  // namespace
 
@@ -74,8 +76,8 @@ MatchResult score_match(const std::vector<int>& net0, const std::vector<int>& ne
       hole.status = m.holes.back().status;
     } else if (up > remaining) {
       m.decided_after = h;
-      hole.status = remaining == 0 ? leader + " wins " + std::to_string(up) + " up"
-                                   : leader + " wins " + std::to_string(up) + "&" + std::to_string(remaining);
+      hole.status = remaining == 0 ? wins_text(leader) + std::to_string(up) + " up"
+                                   : wins_text(leader) + std::to_string(up) + "&" + std::to_string(remaining);
     } else if (up == 0) {
       hole.status = "all square";
     } else if (up == remaining) {

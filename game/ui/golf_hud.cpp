@@ -137,15 +137,20 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       const PlayerStanding& ps = s.players[p];
       char extra[48] = "";
       if (s.format == GolfFormat::Stableford) std::snprintf(extra, sizeof extra, "  %d pts", ps.total_points);
-      if (s.format == GolfFormat::Skins) std::snprintf(extra, sizeof extra, "  %d skins", s.skins->skins[p]);
+      if (s.format == GolfFormat::Skins) std::snprintf(extra, sizeof extra, "  %d skin%s", s.skins->skins[p], s.skins->skins[p] == 1 ? "" : "s");
       ImGui::Text("%-14s %3d (%s)%s", g.players()[p].name.c_str(), ps.total_strokes, to_par_text(ps.total_strokes - ps.total_par).c_str(), extra);
     }
     if (s.match) ImGui::Text("Match: %s", s.match->holes.back().status.c_str());
+  } else if (g.options().format == GolfFormat::Match) {
+    ImGui::Separator();
+    ImGui::Text("Match: all square");
   }
   const auto at_rest = [&](const StrokeRecord& last, const std::string& lie) {
     if (last.club.empty() || last.end != StrokeEnd::Rest) return;
     const std::string away = last.to_pin_m < 20.0 ? units.putt(last.to_pin_m) : units.distance(last.to_pin_m);
-    ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(lie));
+    // A ball at rest and then holed by a conceded putt (a gimme): where it stopped, on the green.
+    if (lie == "holed") ImGui::Text("At rest %s from the pin: conceded", away.c_str());
+    else ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(lie));
   };
   if (!play.message().empty() && !in_air) {
     ImGui::Separator();
@@ -241,8 +246,14 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       char last[40] = "";
       if (play.last_click() && play.last_click()->putting())
         std::snprintf(last, sizeof last, " (last putt %.0f %%)", 100.0 * play.last_click()->power());
-      std::snprintf(label, sizeof label, "putt: %s, %.0f %% rolls that far on flat green%s   Space: putt", cup,
-                    100.0 * cup_p, last);
+      // Past the putter's longest stroke the mark sits at the bar's end: say so, not "110 %".
+      const double reach = play.flat_roll(1.1);
+      if (plays > reach)
+        std::snprintf(label, sizeof label, "putt: %s, beyond a putt: 110 %% rolls %s on flat green%s   Space: putt", cup,
+                      units.putt(reach).c_str(), last);
+      else
+        std::snprintf(label, sizeof label, "putt: %s, %.0f %% rolls that far on flat green%s   Space: putt", cup,
+                      100.0 * cup_p, last);
     }
   } else if (meter) {
     std::snprintf(label, sizeof label, "power %.0f %%   Esc: cancel", 100.0 * meter->position(now));
@@ -281,8 +292,9 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
 
 void draw_wind(const GolfPlay& play, const GolfUnits& units, int w) {
   const GolfGroup& g = play.group();
-  if (g.finished()) return;
-  const HoleWind wind = g.winds()[g.hole_index()];
+  if (g.finished() || play.hole_shown() >= g.winds().size()) return;
+  // The hole the header names: while a finished hole's card shows, its wind, not the next's.
+  const HoleWind wind = g.winds()[play.hole_shown()];
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   const ImVec2 c(static_cast<float>(w) - 60.0f, 230.0f);
   dl->AddCircleFilled(c, 34.0f, IM_COL32(20, 24, 30, 200));

@@ -68,6 +68,10 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
     rim[k] = ImVec2(b.x + r * std::cos(a), b.y + 0.45f * r * std::sin(a));
   }
   dl->AddConvexPolyFilled(rim, 24, IM_COL32(10, 10, 10, 255));
+  // Near enough, the scene's own flagstick and wind-blown flag read on their own: a drawn
+  // flag over them would show two flags, one of them pointing a way the wind does not blow.
+  constexpr float kSceneFlagReadsPx = 60.0f;
+  if (top && b.y - px(*top).y >= kSceneFlagReadsPx) return;
   dl->AddLine(b, t, IM_COL32(240, 240, 240, 255), 2.0f);
   const float fh = 0.3f * (b.y - t.y);
   dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));

@@ -91,7 +91,9 @@ class GolfView final : public ModeView {
 
  private:
   void view_keys(const std::vector<KeyPress>& keys);
-  void ensure_scene();
+  /// The scene of the hole being played, its impactor `mesh` (the club at address, or the
+  /// club of the stroke in flight: its swing shape draws the follow-through).
+  void ensure_scene(const std::string& mesh);
   bool can_replay() const;
   void start_replay(double now);
   /// Draws the replay at mode time `now`; false once it has run its course.
@@ -265,11 +267,10 @@ std::vector<std::pair<Vec3, Eigen::Vector3f>> tee_markers(const CourseHole& h, c
 
 }  // namespace
 
-void GolfView::ensure_scene() {
+void GolfView::ensure_scene(const std::string& mesh) {
   const GolfRound& r = play_->round();
   if (r.finished()) return;
   const EquipmentCatalog& eq = assets_.equipment();
-  const std::string mesh = eq.club_info_of(play_->club()).mesh;
   const bool tee = r.teed() && r.lie() == "tee";
   if (scene_ && scene_world_ == r.hole().world && scene_mesh_ == mesh && scene_tee_ == tee && scene_imperial_ == units_.imperial)
     return;
@@ -468,7 +469,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   const bool over = !settling && (stage == GolfPlay::Stage::HoleOver || stage == GolfPlay::Stage::RoundOver);
   if (flying && flight_struck_ != play_->struck_at()) flight_shown_ = false;
   if (addressing || flyover) {
-    ensure_scene();
+    ensure_scene(assets_.equipment().club_info_of(play_->club()).mesh);
     if (scene_) {
       scene_->set_shot(resting(play_->ball_centre()), std::nullopt);
       scene_->set_aim(addressing ? std::optional<Vec3>(play_->aim_direction()) : std::nullopt);
@@ -497,6 +498,9 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   } else if (scene_) {
     scene_->set_aim(std::nullopt);  // the shot's own line from where it was hit
     if (!flight_shown_) {
+      // A bot may strike before his address was drawn: the scene still holds the last
+      // player's club, whose full finish a putt must not take.
+      if (!play_->last_shot().impactor_mesh.empty()) ensure_scene(play_->last_shot().impactor_mesh);
       scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
       sound_strike(play_->last_shot());
       rattle_due_ = play_->last_shot().end == ShotEnd::Holed;

@@ -122,9 +122,15 @@ void BattingCage::advance(double t) {
                   : strike                              ? PitchResult::CalledStrike
                                                         : PitchResult::Ball);
   }
-  if (stage_ == Stage::Batted && t - batted_at_ >= duration(played_)) {
-    stage_ = Stage::Called;
-    if (!outcome_text_.empty()) call_text_ = outcome_text_;
+  if (stage_ == Stage::Batted) {
+    // The call comes when the play is made: a fielder has the ball (a catch, a hit fielded
+    // off the wall) or a home run lands; the ball may roll on in the corner for seconds more.
+    const FieldingPlay& play = last_.result.play;
+    double call_at = duration(played_);
+    if (play.fielder >= 0 && play.fielded_time > 0.0) call_at = std::min(call_at, play.fielded_time);
+    else if (last_.result.outcome == BattedOutcome::HomeRun) call_at = std::min(call_at, played_.summary.hang_time_s);
+    if (t - batted_at_ >= call_at && !outcome_text_.empty()) call_text_ = outcome_text_;
+    if (t - batted_at_ >= duration(played_)) stage_ = Stage::Called;
   }
 }
 

@@ -45,6 +45,36 @@ bool putt_line_clear(const GolfRound& round) {
   return collar <= kPuttableCollar;
 }
 
+/// How a lie plays for the next stroke: the short grass, then the rough (and anything else
+/// off the fairway), then sand.
+int lie_rank(const std::string& surface) {
+  if (surface == "fairway" || surface == "green" || surface == "tee") return 0;
+  return surface == "sand" ? 2 : 1;
+}
+
+/// The point on the hole's line from `bend` on (its later bends, then `pin`) that lies
+/// `reach` m from `ball` in a straight line, or the pin when all of it is nearer.
+Vec3 past_bend(const Vec3& ball, const Vec3& bend, const std::vector<Vec3>& later, const Vec3& pin, double reach) {
+  const auto flat = [](const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); };
+  Vec3 a = bend;
+  std::vector<Vec3> rest = later;
+  rest.push_back(pin);
+  for (const Vec3& b : rest) {
+    if (flat(ball, b) >= reach) {
+      // Bisect the segment for the point at `reach` (the distance grows along it from a
+      // point nearer than `reach` to one beyond).
+      double lo = 0.0, hi = 1.0;
+      for (int i = 0; i < 40; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (flat(ball, a + mid * (b - a)) < reach ? lo : hi) = mid;
+      }
+      return a + lo * (b - a);
+    }
+    a = b;
+  }
+  return pin;
+}
+
 }  // namespace
 
 GolfBot::GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed, std::vector<Stock> bag)
@@ -175,7 +205,12 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   bool going_for_pin = d <= reach;
   double line = round.line_to_pin();
   // Out of reach on a bending hole: play to the next bend of its line (a dogleg's corner), as
-  // far as the shortest club that gets there carries it.
+  // far as the shortest club that gets there carries it. A corner well inside the longest
+  // club's carry may also be played past, along the next leg (below).
+  std::optional<Vec3> beyond;
+  const Stock* longest = nullptr;
+  for (const Stock& s : stock_)
+    if (!longest && allowed(s)) longest = &s;
   if (const std::optional<Vec3> bend = round.next_bend(); bend && !going_for_pin) {
     const Vec3& b = round.ball();
     const double to_bend = std::hypot(bend->x() - b.x(), bend->z() - b.z());
@@ -183,9 +218,21 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       d = to_bend;
       line = std::atan2(bend->z() - b.z(), bend->x() - b.x());
     }
+    // A player with 300 m to go and the corner 100 m away takes a long club past the corner,
+    // not a 9-iron to it: the target on the next leg as far away as his longest club carries.
+    constexpr double kPastBend = 30.0;  // m: the corner at least this far inside that carry
+    if (longest && longest->carry - to_bend > kPastBend) {
+      std::vector<Vec3> later;
+      bool after = false;
+      for (const Vec3& x : round.hole().bends) {
+        if (after) later.push_back(x);
+        after = after || x == *bend;
+      }
+      beyond = past_bend(b, *bend, later, round.hole().pin, longest->carry);
+    }
   }
   // Aims are taken from the line to the cup: the bend's line starts this far off it.
-  const double toward = std::remainder(line - round.line_to_pin(), 2.0 * kPi);
+  double toward = std::remainder(line - round.line_to_pin(), 2.0 * kPi);
   // Tries a club on the course and corrects the aim (wind, slopes, curve) and a partial
   // swing's power; returns the stroke, how far along the line to the cup it stops in these
   // conditions, and whether it ends in a penalty.
@@ -193,6 +240,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
     StrokeInput in;
     double reach = 0.0;  ///< m along the line where it stops (or is lost)
     bool lost = false;
+    Vec3 rest = Vec3::Zero();  ///< where it stops (or is lost)
   };
   // `aim` starts the correction (a neighbour's); `iterations` simulations, the last one told.
   auto tune = [&](const std::string& club, double power, double aim, int iterations) {
@@ -206,6 +254,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       const Vec3& rest = t.lost ? r.trajectory.summary.landing_position : r.trajectory.summary.rest_position;
       const AlongAcross at = relative(round.ball(), line, rest);
       t.reach = at.along;
+      t.rest = rest;
       if (i + 1 == iterations) break;
       // Corrections stay within 0.4 rad of the line played (a dogleg's corner may lie further
       // off the line to the cup than that).
@@ -261,6 +310,19 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
         break;
       }
     }
+  }
+  // Past the corner: the longest club aimed along the next leg, played when it stops
+  // clearly nearer the cup than the layup and lies no worse.
+  if (beyond && longest) {
+    const Vec3& b = round.ball();
+    line = std::atan2(beyond->z() - b.z(), beyond->x() - b.x());
+    toward = std::remainder(line - round.line_to_pin(), 2.0 * kPi);
+    const Tried t = tune(longest->club, 1.0, toward, 3);
+    const auto to_cup = [&](const Vec3& p) { return std::hypot(round.hole().pin.x() - p.x(), round.hole().pin.z() - p.z()); };
+    constexpr double kClearlyNearer = 15.0;  // m, about half a club
+    if (!t.lost && to_cup(t.rest) < to_cup(best.rest) - kClearlyNearer &&
+        lie_rank(round.surface_at(t.rest)) <= lie_rank(round.surface_at(best.rest)))
+      best = t;
   }
   // Going for the cup with a full swing that flies well past it (the next club down stops
   // short, a whole gap away): the same club swung to the distance, as a player takes a

@@ -92,9 +92,9 @@ void GolfGroup::after_turn(int player, std::size_t hole_before) {
   const std::string& name = players_[static_cast<std::size_t>(player)].name;
   char buf[160];
   if (r.hole_index() == hole_before && options_.gimme_m > 0.0 && r.lie() == "green" && r.to_pin() <= options_.gimme_m) {
-    const double d = r.to_pin();
     r.concede_stroke();
-    std::snprintf(buf, sizeof buf, "%s's %.1f m putt is conceded", name.c_str(), d);
+    // The distance is the HUD's to give, in the player's units ("At rest 4 in from the pin").
+    std::snprintf(buf, sizeof buf, "%s's putt is conceded", name.c_str());
     note_ = buf;
   }
   const HoleCard& c = r.card()[hole_before];

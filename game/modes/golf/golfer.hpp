@@ -35,8 +35,7 @@ struct GolferSkill {
   /// pitch is judged by feel (and struck fat or thin), and strays more the shorter the swing.
   /// scratch 0.18: its pitches from 25-50 yd finish ~20 ft away as Arccos's scratch golfers'
   /// do (test_bot_putting.cpp). tour 0.08, amateur 0.35, beginner 0.45: ESTIMATES spaced
-  /// like the full-swing errors, checked only through the rounds' scores and putts there
-  /// (the amateur's calm National rounds average 87.4 against the 85-93 band).
+  /// like the full-swing errors, checked only through the rounds' scores and putts there.
   double partial_feel_sd = 0.08;
 };
 
@@ -50,7 +49,10 @@ struct GolferSkill {
 /// (TrackMan's published handicap averages put the scratch and 15-handicap male golfer near
 /// 105 and 93 mph). Errors: ESTIMATES chosen so a
 /// tour bot's drives scatter ~±20 yd sideways (PGA TOUR fairways hit ~60 %) and each level
-/// below roughly doubles the spread. The tour bot's power spread, 3.5 %, leaves its
+/// below roughly doubles the spread; the amateur's 36 ms timing spread (with a part swing's
+/// 0.35 feel) puts his calm National rounds at 87.0 over 24 seeds, inside a 15 handicap's
+/// ~85-93 (his fairways 36 % and greens in regulation 28 %; Arccos's 15 handicaps hit ~45 % and
+/// ~27 %, quoted from memory, not a stored source). The tour bot's power spread, 3.5 %, leaves its
 /// approaches as near the hole as PGA TOUR players' by distance (ShotLink's proximity from
 /// the fairway, about 16, 18, 20, 23, 27, 33, 39 and 48 ft from 50-75 ... 225-250 yd; the bot
 /// over 50 National rounds: 13, 14, 22, 25, 22, 36, 46, 44 ft). The tour bot's putts miss by a speed (6 %) and a

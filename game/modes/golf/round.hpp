@@ -122,11 +122,12 @@ class GolfRound {
     std::optional<SurfaceContact> ground;
   };
   std::vector<LineStretch> ground_to_pin(double step) const;
+  /// The surface at `p` on this hole ("fairway", "rough", ...), as lie() names the ball's.
+  std::string surface_at(const Vec3& p) const;
 
  private:
   const StrokeRecord& play_spec(const ShotSpec& spec, const std::string& club, double power, ShotResult* shot);
   Vec3 drop_back_on_line(const Vec3& in_water, const Vec3& from) const;
-  std::string surface_at(const Vec3& p) const;
   void finish_hole();
   HoleCard new_card() const;
 

@@ -2,6 +2,7 @@
 // putt that lips out too fast and drops slower, the lie changing the strike, bad files.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -199,4 +200,38 @@ TEST_CASE("bad course and swings files name file:line and the range", "[golf][in
   CHECK_THROWS_WITH(load_course(test::assets(), no_pin.path.string()), Contains(":2") && Contains("missing pin"));
   TempFile swings("swings.toml", "[[stroke]]\npower = \"95%\"\n[[stroke]]\nclub = \"driver\"\npower = \"140%\"\n");
   CHECK_THROWS_WITH(load_swings(swings.path), Contains(":5") && Contains("power = 140 %") && Contains("(0, 110] %"));
+}
+
+// A dogleg's corner well inside a long club's carry, the green out of reach: a golfer plays a
+// long club past the corner along the next leg, not a wedge to the corner. On the National's
+// 12th (a par 5 whose line bends ~100 m past an amateur's drive) the amateur bot used to lay
+// up 100 m with a 9-iron from 320 m out.
+TEST_CASE("out of reach with a bend close ahead, a bot plays past the bend, not a wedge to it", "[golf][bot]") {
+  const GolferSkill& amateur = golfer_skill("amateur");
+  Course course = load_course(test::assets(), "national");
+  course.holes = {course.holes[11]};
+  REQUIRE(course.holes[0].par == 5);
+  REQUIRE_FALSE(course.holes[0].bends.empty());
+  int checked = 0;
+  for (const double aim : {-0.06, -0.03, 0.0, 0.03, 0.06}) {
+    GolfRound round(test::assets(), course, amateur);
+    StrokeInput drive;
+    drive.club = "driver";
+    drive.aim = aim;
+    round.play(drive);
+    const std::optional<Vec3> bend = round.next_bend();
+    if (round.finished() || round.lie() == "sand" || !bend) continue;
+    const GolfBot bot(test::assets(), amateur, 1);
+    const double to_bend = std::hypot(bend->x() - round.ball().x(), bend->z() - round.ball().z());
+    const double longest = bot.stock()[1].carry;  // the 3-wood: no driver off the deck
+    if (round.to_pin() <= bot.stock()[1].total || longest - to_bend < 30.0) continue;
+    const StrokeInput in = bot.intend(round);
+    const auto stock = std::find_if(bot.stock().begin(), bot.stock().end(), [&](const GolfBot::Stock& s) { return s.club == in.club; });
+    REQUIRE(stock != bot.stock().end());
+    INFO("aim " << aim << ": " << round.to_pin() << " m to go from the " << round.lie() << ", the bend " << to_bend
+                << " m ahead: " << in.club << " (" << stock->carry << " m)");
+    CHECK(stock->carry > to_bend + 30.0);
+    ++checked;
+  }
+  CHECK(checked >= 2);
 }

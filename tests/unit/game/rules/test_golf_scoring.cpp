@@ -73,6 +73,9 @@ TEST_CASE("match play: holes up, dormie, the match decided early, a conceded hol
   CHECK(conceded.result == "Bob wins 2 up");
   CHECK(score_match({4, 4}, {4, 4}, {}, 2, "Ann", "Bob").result == "halved");
   CHECK(score_match({4}, {5}, {}, 3, "Ann", "Bob").result == "Ann 1 up after 1");
+  // The human's card name is "You": the verb agrees.
+  CHECK(score_match({3, 3, 3, 9, 9}, {4, 4, 4, 3, 3}, {}, 5, "You", "Bob").result == "You win 3&2");
+  CHECK(score_match({3, 3, 3, 9, 9}, {4, 4, 4, 3, 3}, {}, 5, "Bob", "You").result == "Bob wins 3&2");
 }
 
 TEST_CASE("skins: the lone lowest net takes the hole's skin and those carried to it", "[rules][golf][formats]") {

@@ -128,7 +128,7 @@ nets = []
 for p in j["players"]:
     assert p["total_strokes"] == sum(h["strokes"] for h in p["holes"]), p["player"]
     assert p["total_putts"] == sum(h["putts"] for h in p["holes"]), p["player"]
-    assert p["to_par"] == p["total_strokes"] - j["total_par"], p["player"]
+    assert p["to_par"] == p["total_strokes"] - sum(h["par"] for h in p["holes"]), p["player"]
     for h, si in zip(p["holes"], index):
         assert "wind_mps" in h and "wind_toward_deg" in h
         assert h["strokes_received"] == received(p["handicap"], si), (p["player"], h["number"])
@@ -162,6 +162,8 @@ else:
         if decided is None and abs(lead) > n - k - 1: decided = k + 1
     assert r["decided_after_hole"] == decided, r
     assert r["holes_up"] == lead
+    # A decided match ends there (Rule 3.2a(3)): the holes left are not played.
+    assert all(len(p["holes"]) == (decided or n) for p in j["players"]), (decided, [len(p["holes"]) for p in j["players"]])
 PY
 done
 # The table a player reads adds its putts too (the total row once put the score to par there).

@@ -123,6 +123,24 @@ std::vector<int> GolfGroup::honour_order() const {
   return order;
 }
 
+bool GolfGroup::match_decided() const {
+  if (options_.format != GolfFormat::Match || hole_ == 0) return false;
+  std::vector<int> conceded_by(hole_, -1);
+  std::vector<std::vector<int>> nets;
+  for (int p = 0; p < 2; ++p) {
+    const std::vector<int> given = strokes_received(p);
+    std::vector<int> net;
+    for (std::size_t h = 0; h < hole_; ++h) {
+      const HoleCard& c = rounds_[static_cast<std::size_t>(p)].card()[h];
+      net.push_back(c.strokes - given[h]);
+      if (c.conceded) conceded_by[h] = p;
+    }
+    nets.push_back(std::move(net));
+  }
+  return score_match(nets[0], nets[1], conceded_by, static_cast<int>(course_.holes.size()), players_[0].name, players_[1].name)
+             .decided_after >= 0;
+}
+
 void GolfGroup::choose_next() {
   const std::size_t n = course_.holes.size();
   auto on_hole = [&](int p) { return rounds_[static_cast<std::size_t>(p)].hole_index() == hole_; };
@@ -131,7 +149,7 @@ void GolfGroup::choose_next() {
     hole_first_events_.push_back(events_.size());
     if (hole_ < n) order_ = honour_order();
   }
-  if (hole_ >= n) {
+  if (hole_ >= n || match_decided()) {
     next_ = -1;
     return;
   }
@@ -158,6 +176,9 @@ void GolfGroup::replay(const std::vector<GolfEvent>& events) {
   for (std::size_t i = 0; i < events.size(); ++i) {
     const GolfEvent& e = events[i];
     const std::string where = "event " + std::to_string(i + 1);
+    // A match saved by a build that played on past its decision: the holes after it were
+    // never part of the match.
+    if (finished() && match_decided()) break;
     if (finished()) throw InputError(where + ": the round was already over");
     if (e.player != next_)
       throw InputError(where + ": player " + std::to_string(e.player + 1) + " played, but it was player " +

@@ -61,8 +61,12 @@ class GolfGroup {
   /// of [0, 54], match play for other than two, a gimme out of range.
   GolfGroup(const Assets& assets, const Course& course, std::vector<GolfPlayer> players, GolfOptions options);
 
+  /// The round is over: every hole played, or in match play the match decided (one side
+  /// leads by more holes than remain, Rule 3.2a(3)), when the holes left are not played.
   bool finished() const { return next_ < 0; }
-  std::size_t hole_index() const { return hole_; }  ///< the hole the group is on
+  /// Match play: one side leads by more holes than remain after the holes finished.
+  bool match_decided() const;
+  std::size_t hole_index() const { return hole_; }  ///< the hole the group is on; once finished, the holes played
   const Course& course() const { return course_; }
   const std::vector<GolfPlayer>& players() const { return players_; }
   const GolfOptions& options() const { return options_; }

@@ -8,7 +8,8 @@ Standings standings(const GolfGroup& g) {
   Standings s;
   s.format = g.options().format;
   const int n = static_cast<int>(g.players().size());
-  s.holes = g.finished() ? g.course().holes.size() : g.hole_index();
+  // The holes the whole group has finished: all of them, or a match's up to its decision.
+  s.holes = g.hole_index();
   std::vector<std::vector<int>> nets;
   std::vector<int> conceded_by(s.holes, -1);
   for (int p = 0; p < n; ++p) {

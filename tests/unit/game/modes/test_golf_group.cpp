@@ -122,12 +122,17 @@ TEST_CASE("match play: the status follows the holes won, a short putt is concede
   const Standings s = standings(g);
   REQUIRE(s.match);
   CHECK(s.match->holes[0].winner == 1 - conceder);
+  // The match ends where it is decided (Rule 3.2a(3)): the holes left are not played.
+  REQUIRE(g.finished());
+  REQUIRE(s.holes == s.match->holes.size());
+  if (s.match->decided_after >= 0) CHECK(s.holes == static_cast<std::size_t>(s.match->decided_after) + 1);
+  else CHECK(s.holes == 3);
   int lead = 0;
-  for (std::size_t h = 0; h < 3; ++h) {
+  for (std::size_t h = 0; h < s.holes; ++h) {
     const int a = s.players[0].net[h], b = s.players[1].net[h];
     const int winner = h == 0 ? 1 - conceder : a < b ? 0 : b < a ? 1 : -1;
     CHECK(s.match->holes[h].winner == winner);
-    if (s.match->decided_after < 0 || static_cast<int>(h) <= s.match->decided_after) lead += winner == 0 ? 1 : winner == 1 ? -1 : 0;
+    lead += winner == 0 ? 1 : winner == 1 ? -1 : 0;
   }
   CHECK(s.match->lead == lead);
   // Every conceded putt was inside the gimme; no putt was played from inside it.
@@ -144,6 +149,33 @@ TEST_CASE("match play: the status follows the holes won, a short putt is concede
   // Stroke play refuses a concession.
   GolfGroup stroke(test::assets(), test::links(), {bot("tour")}, {});
   CHECK_THROWS_AS(stroke.concede_hole(), InputError);
+}
+
+TEST_CASE("a match decided with holes to play ends there; the card, the result and the JSON hold its holes only",
+          "[modes][golf][formats]") {
+  GolfOptions o;
+  o.format = GolfFormat::Match;
+  o.seed = 3;
+  GolfGroup g(test::assets(), load_course(test::assets(), "national"), {bot("tour", 0), bot("beginner", 0)}, o);
+  play_out(g);
+  const Standings s = standings(g);
+  REQUIRE(s.match);
+  REQUIRE(s.match->decided_after >= 0);
+  CHECK(s.holes == static_cast<std::size_t>(s.match->decided_after) + 1);
+  CHECK(s.holes < 18);
+  CHECK(s.match->result.find(" wins ") != std::string::npos);
+  CHECK(s.match->result.find('&') != std::string::npos);
+  for (int p = 0; p < 2; ++p) {
+    CHECK(s.players[static_cast<std::size_t>(p)].gross.size() == s.holes);
+    int strokes = 0;
+    for (std::size_t h = 0; h < s.holes; ++h) strokes += g.round(p).card()[h].strokes;
+    CHECK(s.players[static_cast<std::size_t>(p)].total_strokes == strokes);
+  }
+  // A round replayed from its events ends at the same hole.
+  GolfGroup again(test::assets(), load_course(test::assets(), "national"), {bot("tour", 0), bot("beginner", 0)}, o);
+  again.replay(g.events());
+  CHECK(again.finished());
+  CHECK(again.hole_index() == g.hole_index());
 }
 
 TEST_CASE("gimmes and auto-putt: conceded putts count one stroke, auto-putts count what the physics holes", "[modes][golf][formats]") {

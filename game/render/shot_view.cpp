@@ -14,6 +14,23 @@ std::optional<ImpactorPlacement> impactor_placement(const ShotResult& r) {
   return p;
 }
 
+ShotTrajectory ball_at_rest(const Vec3& centre) {
+  ShotTrajectory t;
+  TrajectorySample s;
+  s.position = centre;
+  s.phase = Phase::Rest;
+  t.samples = {s, s};
+  t.summary.landing_position = t.summary.rest_position = centre;
+  return t;
+}
+
+ImpactorPlacement club_at_address(const Vec3& centre, const Vec3& aim, double ball_radius) {
+  LaunchState along;
+  along.position = centre;
+  along.velocity = aim;
+  return nominal_impactor(false, along, ball_radius, 0.0);
+}
+
 ImpactorPlacement nominal_impactor(bool bat, const LaunchState& launch, double ball_radius, double bat_length) {
   const Vec3 n = launch.velocity.norm() > 0.0 ? Vec3(launch.velocity.normalized()) : Vec3::UnitX();
   const double yaw = std::atan2(n.z(), n.x());

@@ -22,6 +22,13 @@ std::optional<ImpactorPlacement> impactor_placement(const ShotResult& r);
 /// ball, level and square to the launch direction (`bat_length` m, knob on the third-base side).
 ImpactorPlacement nominal_impactor(bool bat, const LaunchState& launch, double ball_radius, double bat_length = 0.84);
 
+/// A ball lying still at `centre` (m): the "shot" a view shows while a player addresses it.
+ShotTrajectory ball_at_rest(const Vec3& centre);
+
+/// The club a golfer addresses a ball at `centre` with, square behind it along `aim` (unit,
+/// horizontal).
+ImpactorPlacement club_at_address(const Vec3& centre, const Vec3& aim, double ball_radius);
+
 ShotSceneInput scene_input_for(const Assets& assets, const ResolvedShot& shot, const ShotResult& r);
 RenderRequest render_request_for(const Assets& assets, const ResolvedShot& shot, const ShotResult& r);
 

@@ -52,6 +52,18 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
   const double lo = BattingCage::kZoneLow, hi = BattingCage::kZoneHigh, half = BattingCage::kPlateHalf;
   const auto a = pt(hi, -half), b = pt(hi, half), d = pt(lo, half), e = pt(lo, -half);
   if (a && b && d && e) dl->AddQuad(*a, *b, *d, *e, IM_COL32(255, 255, 255, 200), 2.0f);
+  // Where the pitch crossed the front of the plate, once it has (a taken pitch or a miss):
+  // the call's evidence, green in the zone, red outside, as big as the ball.
+  if (c.stage() == Stage::Called && !c.batted()) {
+    const Vec3& at = c.pitch().plate;
+    const double r = c.ball_radius();
+    const auto centre = pt(at.y(), at.z()), edge = pt(at.y(), at.z() + r);
+    if (centre && edge) {
+      const float rad = std::max(4.0f, std::abs(edge->x - centre->x));
+      const ImU32 col = StrikeZone::contains(at, r) ? IM_COL32(90, 230, 120, 255) : IM_COL32(240, 80, 70, 255);
+      dl->AddCircle(*centre, rad, col, 20, 2.5f);
+    }
+  }
   // The bat's height: where the swing will meet the ball.
   const auto l = pt(c.bat_height(), -half - 0.25), r = pt(c.bat_height(), half + 0.25);
   if (l && r) dl->AddLine(*l, *r, c.power() ? IM_COL32(255, 170, 40, 230) : IM_COL32(80, 200, 255, 230), 3.0f);

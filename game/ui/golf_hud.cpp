@@ -255,6 +255,9 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         std::snprintf(label, sizeof label, "putt: %s, %.0f %% rolls that far on flat green%s   Space: putt", cup,
                       100.0 * cup_p, last);
     }
+  } else if (meter && meter->phase() == MeterClock::Phase::Downswing) {
+    // The power is set: the marker on its way back is the accuracy's, not a power.
+    std::snprintf(label, sizeof label, "power %.0f %%, now the accuracy: Space at the mark   Esc: cancel", 100.0 * meter->power());
   } else if (meter) {
     std::snprintf(label, sizeof label, "power %.0f %%   Esc: cancel", 100.0 * meter->position(now));
   } else {

@@ -70,7 +70,7 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
   dl->AddConvexPolyFilled(rim, 24, IM_COL32(10, 10, 10, 255));
   // Near enough, the scene's own flagstick and wind-blown flag read on their own: a drawn
   // flag over them would show two flags, one of them pointing a way the wind does not blow.
-  constexpr float kSceneFlagReadsPx = 60.0f;
+  constexpr float kSceneFlagReadsPx = 24.0f;
   if (top && b.y - px(*top).y >= kSceneFlagReadsPx) return;
   dl->AddLine(b, t, IM_COL32(240, 240, 240, 255), 2.0f);
   const float fh = 0.3f * (b.y - t.y);

@@ -42,16 +42,6 @@ Intents golf_intents(const std::vector<KeyPress>& keys) {
 namespace {
 
 // A trajectory of one sample: the ball at rest where it lies (the scene draws it there).
-ShotTrajectory resting(const Vec3& centre) {
-  ShotTrajectory t;
-  TrajectorySample s;
-  s.position = centre;
-  s.phase = Phase::Rest;
-  t.samples = {s, s};
-  t.summary.landing_position = t.summary.rest_position = centre;
-  return t;
-}
-
 Vec3 flat_unit(const Vec3& from, const Vec3& to) {
   Vec3 d(to.x() - from.x(), 0.0, to.z() - from.z());
   const double n = d.norm();
@@ -471,16 +461,11 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   if (addressing || flyover) {
     ensure_scene(assets_.equipment().club_info_of(play_->club()).mesh);
     if (scene_) {
-      scene_->set_shot(resting(play_->ball_centre()), std::nullopt);
+      scene_->set_shot(ball_at_rest(play_->ball_centre()), std::nullopt);
       scene_->set_aim(addressing ? std::optional<Vec3>(play_->aim_direction()) : std::nullopt);
       // The player at address: his club square behind the ball along his aim.
       std::optional<ImpactorPlacement> club;
-      if (addressing) {
-        LaunchState along;
-        along.position = play_->ball_centre();
-        along.velocity = play_->aim_direction();
-        club = nominal_impactor(false, along, assets_.equipment().ball("tour").radius, 0.0);
-      }
+      if (addressing) club = club_at_address(play_->ball_centre(), play_->aim_direction(), assets_.equipment().ball("tour").radius);
       scene_->set_address(club);
       const HoleWind wind = play_->round().wind();
       scene_->set_wind(wind.speed * Vec3(std::cos(wind.toward), 0.0, std::sin(wind.toward)));

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "game/modes/replay.hpp"
@@ -56,6 +57,7 @@ class RangeView final : public ModeView {
   std::unique_ptr<ShotScene> scene_;
   std::string scene_mesh_;
   double shown_struck_ = -1.0;
+  bool addressed_ = false;  ///< the scene shows the golfer at address, not the last shot
   std::string note_;
 };
 
@@ -134,6 +136,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
     scene_ = std::make_unique<ShotScene>(si);
     scene_mesh_ = mesh;
     scene_imperial_ = units_.imperial;
+    addressed_ = false;
     if (relabel && shown_struck_ >= 0.0) {
       scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
     } else {
@@ -144,23 +147,40 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
   const bool hit = play_->struck_at() > 0.0 || !play_->session().shots().empty();
   if (hit && shown_struck_ != play_->struck_at()) {
     scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
+    scene_->set_address(std::nullopt);
     if (play_->struck_at() > 0.0) sound_strike(play_->last_shot());
     shown_struck_ = play_->struck_at();
+    addressed_ = false;
   }
   const double end = hit ? duration(play_->last_shot().trajectory) : 0.0;
-  const double t = flying ? std::clamp(in.now - play_->struck_at(), 0.0, end) : end;
+  // The last ball stays on view where it stopped a moment, then the golfer addresses the
+  // next on the tee (at once when he starts his swing).
+  constexpr double kShowLanded = 2.5;  // s
+  const bool address = !flying && (!hit || play_->stage() == RangePlay::Stage::Swinging ||
+                                   in.now - play_->struck_at() > end + kShowLanded);
+  if (address && !addressed_) {
+    const double radius = eq.ball("tour").radius;
+    const Vec3 ball(0.0, radius + eq.club_info_of(play_->club()).tee_height, 0.0);
+    scene_->set_shot(ball_at_rest(ball), std::nullopt);
+    scene_->set_address(club_at_address(ball, Vec3::UnitX(), radius));
+    addressed_ = true;
+  }
+  const double t = address ? 0.0 : flying ? std::clamp(in.now - play_->struck_at(), 0.0, end) : end;
   if (w > 0 && h > 0) {
     fit_renderer(renderer, w, h, in.render_scale);
     Camera cam;
     if (flying) {
       cam = scene_->camera(CameraKind::Follow, t, w, h);
     } else {
-      // Behind the tee, the flags out to 250 yd in view.
-      cam.eye = Vec3(-14.0, 5.0, 0.0);
-      cam.target = Vec3(150.0, -2.0, 0.0);
-      cam.fov_y = deg_to_rad(26.0);
+      // Behind the golfer on the tee, as the course's full-shot view stands (golf_view.cpp's
+      // address camera: 9 m back, 2.6 m up, 5° down): his feet at the view's lower edge, the
+      // flags out to 250 yd just below the horizon.
+      const double down = deg_to_rad(5.0);
+      cam.eye = Vec3(-9.0, 2.6, 0.0);
+      cam.target = cam.eye + 50.0 * Vec3(std::cos(down), -std::sin(down), 0.0);
+      cam.fov_y = deg_to_rad(30.0);
     }
-    renderer.draw(scene_->build(cam, hit ? t : 0.0, w, h), cam);
+    renderer.draw(scene_->build(cam, t, w, h), cam);
     renderer.blit_to(0, w, h);
     for (const double d : RangePlay::targets()) draw_cup_and_flag(cam, Vec3(d, 0.0, 0.0), w, h);
   }

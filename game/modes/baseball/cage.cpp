@@ -97,6 +97,8 @@ void BattingCage::count_pitch(PitchResult r) {
   count_ = Count{};
 }
 
+double BattingCage::ball_radius() const { return assets_.equipment().ball("mlb").radius; }
+
 void BattingCage::update(const Intents& intents, double now) {
   apply_in_time_order(intents, now, [this](double t) { advance(t); }, [this](const Intent& in) { apply(in); });
 }

@@ -42,6 +42,8 @@ class BattingCage {
   Stage stage() const { return stage_; }
   const PitchCall& call() const { return call_; }
   const PitchFlight& pitch() const { return pitch_; }
+  /// m, the cage's ball (the league's).
+  double ball_radius() const;
   /// Pitch time (s since release, slowed by kPitchTimeScale; negative in the wind-up) at mode time `t`.
   double pitch_clock(double t) const { return (t - released_at_) * kPitchTimeScale; }
   /// The batted ball's flight runs from this mode time.

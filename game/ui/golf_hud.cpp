@@ -112,13 +112,22 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     for (const GolfBot::Stock& s : play.caddie().stock())
       if (s.club == club) carry = s.carry;
     if (club == "putter") ImGui::Text("Club: putter");
-    else ImGui::Text("Club: %s (carry %s, here %s)", club.c_str(), units.distance(carry).c_str(),
+    else if (play.carry_here_blocked(club))
+      ImGui::Text("Club: %s (carry %s, a tree in the way at %s)", club.c_str(), units.distance(carry).c_str(),
+                  units.distance(play.carry_here(club)).c_str());
+    else ImGui::Text("Club: %s (carry %s, plays %s here)", club.c_str(), units.distance(carry).c_str(),
                      units.distance(play.carry_here(club)).c_str());
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing).
     if (const auto& plan = play.caddie_plan(); plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn())
       ImGui::Text("Caddie: a part swing, %.0f %% power", 100.0 * plan->meter.power);
-    ImGui::Text("Aim: %.1f deg %s of the pin", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left");
+    // An aim off the pin against a crosswind says why: the ball drifts back with the wind.
+    const HoleWind hw = r.wind();
+    const double cross = hw.speed * std::sin(hw.toward - r.line_to_pin());  // m/s, + toward the right
+    constexpr double kCrossNoted = 2.0;  // m/s (4.5 mph): moves a full shot's landing by metres
+    const bool allows = std::abs(rad_to_deg(play.aim())) >= 0.5 && std::abs(cross) >= kCrossNoted && (cross > 0.0) == (play.aim() < 0.0);
+    ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left",
+                allows ? (cross > 0.0 ? " (the wind drifts it right)" : " (the wind drifts it left)") : "");
     if (play.human_turn()) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
       ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");

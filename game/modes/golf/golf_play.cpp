@@ -126,9 +126,18 @@ double GolfPlay::carry_here(const std::string& club) const {
     return carry_here_->carry;
   StrokeInput in;
   in.club = club;
-  const double carry = r.simulate(in).trajectory.summary.carry_m;
-  carry_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), carry};
-  return carry;
+  const FlightSummary f = r.simulate(in).trajectory.summary;
+  // The first touch well above the ground under it: a tree's crown or trunk stopped the flight.
+  constexpr double kAboveGround = 0.5;  // m, more than any tee, ball or turf contact
+  const std::optional<SurfaceContact> under = r.ground_at(f.landing_position.x(), f.landing_position.z());
+  const bool blocked = under && f.landing_position.y() - under->point.y() > kAboveGround;
+  carry_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), f.carry_m, blocked};
+  return f.carry_m;
+}
+
+bool GolfPlay::carry_here_blocked(const std::string& club) const {
+  carry_here(club);
+  return carry_here_ && carry_here_->blocked;
 }
 
 void GolfPlay::begin_turn(double t) {

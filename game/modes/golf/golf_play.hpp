@@ -128,6 +128,8 @@ class GolfPlay {
   /// and off this lie: its carry (m), from the same physics as the stroke. The caddie picks
   /// by it; the bag's carries are calm air on flat fairway.
   double carry_here(const std::string& club) const;
+  /// That carry ends against something standing above the ground (a tree), not on it.
+  bool carry_here_blocked(const std::string& club) const;
 
   /// Aim steps: a degree for a full shot, a quarter of one for a putt.
   static constexpr double kAimStep = 0.017453292519943295;   // rad (1°)
@@ -188,6 +190,7 @@ class GolfPlay {
     Vec3 ball = Vec3::Zero();
     std::size_t hole = 0;
     double carry = 0.0;
+    bool blocked = false;
   };
   mutable std::optional<CarryHere> carry_here_;  ///< carry_here()'s last answer
 };

@@ -38,7 +38,8 @@ RunFn setup_play(CLI::App& sub) {
       ->capture_default_str());
   window_only.push_back(sub.add_option("--holes", o->holes, "golf: play only the first N holes")->check(CLI::Range(1, 18)));
   window_only.push_back(sub.add_option("--tees", o->course_setup.tees, "golf: the tee set to play from, as the course names them (default: each hole's own tee)"));
-  window_only.push_back(sub.add_option("--pins", o->course_setup.pin_set, "golf: the pin set, 1..9 (default 1)")->check(CLI::Range(1, 9)));
+  o->course_setup.pin_set = CourseSetup::kDayPinSet;
+  window_only.push_back(sub.add_option("--pins", o->course_setup.pin_set, "golf: the pin set, 0..9 (default 0, a mix: the holes take their sets in turn)")->check(CLI::Range(0, 9)));
   window_only.push_back(sub.add_option("--bot", o->bots, "golf: a bot player of this skill, repeat for up to 3 (default one of --skill; none: alone)"));
   window_only.push_back(sub.add_option("--format", o->format, "golf: stroke (default), match (one bot), stableford or skins"));
   window_only.push_back(sub.add_option("--human", o->humans, "golf: a friend at the same keys (hot seat), by name; repeat for up to 3"));

@@ -207,8 +207,9 @@ RunFn setup_round(CLI::App& sub) {
   sub.add_option("--gimme", o->gimme, "putts this close (m) are conceded, 0..3 (default: 0.6 in match play, else off)")
       ->check(CLI::Range(GolfOptions::kGimme.min, GolfOptions::kGimme.max));
   sub.add_option("--tees", o->setup.tees, "the tee set to play from, as the course names them (\"white\"; default: each hole's own tee)");
-  sub.add_option("--pins", o->setup.pin_set, "the pin set, 1..9: where the cups are today (default 1; a course from course import has up to 4)")
-      ->check(CLI::Range(1, 9));
+  o->setup.pin_set = CourseSetup::kDayPinSet;
+  sub.add_option("--pins", o->setup.pin_set, "the pin set, 0..9: where the cups are today (default 0, a mix: the holes take their sets in turn; 1 each hole's own pin; a course from course import has up to 4)")
+      ->check(CLI::Range(0, 9));
   sub.add_flag("--calm", o->calm, "no wind on any hole (default: the course's wind, else drawn from the seed)");
   sub.add_option("--seed", o->seed, "seed of the bot's swing errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   sub.add_option("--swings", o->swings, "scripted meter inputs, one [[stroke]] per stroke (TOML)");

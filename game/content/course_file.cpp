@@ -205,10 +205,12 @@ void set_up(Course& course, const CourseSetup& setup) {
                        (list.empty() ? std::string("none: its holes have one tee each") : list) + ")");
     }
   }
-  for (CourseHole& h : course.holes) {
+  for (std::size_t i = 0; i < course.holes.size(); ++i) {
+    CourseHole& h = course.holes[i];
     for (const CourseHole::TeeSet& t : h.tee_sets)
       if (t.name == setup.tees) h.tee = t.at;
-    const std::size_t k = static_cast<std::size_t>(setup.pin_set - 1) % (h.more_pins.size() + 1);
+    const std::size_t set = setup.pin_set == 0 ? i : static_cast<std::size_t>(setup.pin_set - 1);
+    const std::size_t k = set % (h.more_pins.size() + 1);
     if (k > 0) h.pin = h.more_pins[k - 1];
   }
   course.setup = setup;

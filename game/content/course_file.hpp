@@ -49,8 +49,16 @@ struct CourseHole {
 /// The day's set-up of a course: which tees the players play from and where the cups are.
 struct CourseSetup {
   std::string tees;   ///< a tee set's name; "" the holes' own tees
-  int pin_set = 1;    ///< 1: each hole's `pin`; k: its (k-1)th of more_pins (cycling through its own)
-  static constexpr Range kPinSet{1.0, 9.0};
+  /// 1: each hole's `pin`; k: its (k-1)th of more_pins (cycling through its own); 0: a
+  /// tournament's mix, the holes taking their sets in turn (hole n its set n, cycling through
+  /// its own), so a round meets a middle pin on some greens and edge pins on the rest.
+  int pin_set = 1;
+  static constexpr Range kPinSet{0.0, 9.0};
+  /// What `round` and `play` cut when not told: the mix. A course's `pin` is its green's middle
+  /// when course import places it (the importer's sets 2.. sit toward the edges), and every
+  /// cup in the middle made the tour bot a 66.7 shooter hitting 86 % of the greens (the
+  /// National, 10 calm rounds; the mix: docs/courses.md).
+  static constexpr int kDayPinSet = 0;
 };
 
 struct Course {

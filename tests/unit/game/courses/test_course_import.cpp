@@ -589,6 +589,20 @@ TEST_CASE("course import: named tee boxes become tee sets and each green gets sp
   Course cycled = plain;
   set_up(cycled, {"", 5});
   CHECK(cycled.holes[2].pin.x() == Approx(plain.holes[2].pin.x()).margin(1e-9));
+  // Pin set 0, the day's mix: hole n (from 0) takes its set n, cycling through its own, so a
+  // round meets its middle pin on some greens and the edge pins on the rest.
+  Course mixed = plain;
+  set_up(mixed, {"", 0});
+  std::size_t middle = 0;
+  for (std::size_t i = 0; i < mixed.holes.size(); ++i) {
+    const std::size_t k = i % (r.holes[i].more_pins.size() + 1);
+    const double want_x = k == 0 ? plain.holes[i].pin.x() : r.holes[i].more_pins[k - 1].x;
+    CHECK(mixed.holes[i].pin.x() == Approx(want_x).margin(1e-3));
+    middle += k == 0 ? 1 : 0;
+  }
+  CHECK(middle >= 1);
+  CHECK(middle < mixed.holes.size());
+  CHECK(mixed.setup.pin_set == 0);
   Course wrong = plain;
   CHECK_THROWS_WITH(set_up(wrong, {"blue", 1}), Contains("no tee set 'blue'") && Contains("allowed: white, red"));
 }

@@ -56,7 +56,7 @@ struct CourseSetup {
   static constexpr Range kPinSet{0.0, 9.0};
   /// What `round` and `play` cut when not told: the mix. A course's `pin` is its green's middle
   /// when course import places it (the importer's sets 2.. sit toward the edges), and every
-  /// cup in the middle made the tour bot a 66.7 shooter hitting 86 % of the greens (the
+  /// cup in the middle makes the tour bot a 66.7 shooter hitting 86 % of the greens (the
   /// National, 10 calm rounds; the mix: docs/courses.md).
   static constexpr int kDayPinSet = 0;
 };

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/units.hpp"
+
 namespace sweetspot {
 
 std::optional<ImpactorPlacement> impactor_placement(const ShotResult& r) {
@@ -29,6 +31,15 @@ ImpactorPlacement club_at_address(const Vec3& centre, const Vec3& aim, double ba
   along.position = centre;
   along.velocity = aim;
   return nominal_impactor(false, along, ball_radius, 0.0);
+}
+
+Camera full_shot_address_camera(const Vec3& ball, const Vec3& aim) {
+  const double down = deg_to_rad(5.0);
+  Camera c;
+  c.eye = ball - 9.0 * aim + Vec3(0.0, 2.6, 0.0);
+  c.target = c.eye + 50.0 * (std::cos(down) * aim - std::sin(down) * Vec3::UnitY());
+  c.fov_y = deg_to_rad(30.0);
+  return c;
 }
 
 ImpactorPlacement nominal_impactor(bool bat, const LaunchState& launch, double ball_radius, double bat_length) {

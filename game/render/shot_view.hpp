@@ -29,6 +29,11 @@ ShotTrajectory ball_at_rest(const Vec3& centre);
 /// horizontal).
 ImpactorPlacement club_at_address(const Vec3& centre, const Vec3& aim, double ball_radius);
 
+/// The view of a golfer addressing a full shot at `ball` toward `aim` (unit, horizontal):
+/// 9 m behind the ball and 2.6 m up, looking 5° down: his feet at the view's lower edge (16°
+/// down of its 20°), the target area a degree or two below the horizon in its upper half.
+Camera full_shot_address_camera(const Vec3& ball, const Vec3& aim);
+
 ShotSceneInput scene_input_for(const Assets& assets, const ResolvedShot& shot, const ShotResult& r);
 RenderRequest render_request_for(const Assets& assets, const ResolvedShot& shot, const ShotResult& r);
 

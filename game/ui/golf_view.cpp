@@ -41,7 +41,6 @@ Intents golf_intents(const std::vector<KeyPress>& keys) {
 
 namespace {
 
-// A trajectory of one sample: the ball at rest where it lies (the scene draws it there).
 Vec3 flat_unit(const Vec3& from, const Vec3& to) {
   Vec3 d(to.x() - from.x(), 0.0, to.z() - from.z());
   const double n = d.norm();
@@ -310,9 +309,7 @@ Camera GolfView::address_camera() const {
   const bool putt = r.lie() == "green";
   const Vec3 d = play_->aim_direction();
   // Behind the ball looking down the aim line: low and close for a putt; for a full shot
-  // behind the golfer, 9 m back and 2.6 m up, looking 5° down: his feet are in the view's
-  // lower edge (16° down of its 20°) and the target area, a degree or two below the
-  // horizon, in its upper half.
+  // behind the golfer (full_shot_address_camera).
   if (putt) {
     // 4 m back and 0.4 m right of the line, 1.9 m up: the golfer addressing from the line's
     // left stands aside of the line to the cup instead of filling the view's left half, and
@@ -324,11 +321,7 @@ Camera GolfView::address_camera() const {
     c.fov_y = deg_to_rad(45.0);
     return c;
   }
-  const double down = deg_to_rad(5.0);
-  c.eye = b - 9.0 * d + Vec3(0.0, 2.6, 0.0);
-  c.target = c.eye + 50.0 * (std::cos(down) * d - std::sin(down) * Vec3::UnitY());
-  c.fov_y = deg_to_rad(30.0);
-  return c;
+  return full_shot_address_camera(b, d);
 }
 
 Camera GolfView::high_camera() const {

@@ -4,7 +4,6 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 
 #include "game/modes/replay.hpp"
@@ -172,13 +171,9 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
     if (flying) {
       cam = scene_->camera(CameraKind::Follow, t, w, h);
     } else {
-      // Behind the golfer on the tee, as the course's full-shot view stands (golf_view.cpp's
-      // address camera: 9 m back, 2.6 m up, 5° down): his feet at the view's lower edge, the
-      // flags out to 250 yd just below the horizon.
-      const double down = deg_to_rad(5.0);
-      cam.eye = Vec3(-9.0, 2.6, 0.0);
-      cam.target = cam.eye + 50.0 * Vec3(std::cos(down), -std::sin(down), 0.0);
-      cam.fov_y = deg_to_rad(30.0);
+      // Behind the golfer on the tee, as the course's full-shot view stands: the flags out to
+      // 250 yd just below the horizon.
+      cam = full_shot_address_camera(Vec3::Zero(), Vec3::UnitX());
     }
     renderer.draw(scene_->build(cam, t, w, h), cam);
     renderer.blit_to(0, w, h);

@@ -125,17 +125,13 @@ std::vector<int> GolfGroup::honour_order() const {
 
 bool GolfGroup::match_decided() const {
   if (options_.format != GolfFormat::Match || hole_ == 0) return false;
+  // The holes the whole group has finished (a player may have holed out on the next).
+  std::vector<int> nets[2] = {net(0), net(1)};
   std::vector<int> conceded_by(hole_, -1);
-  std::vector<std::vector<int>> nets;
   for (int p = 0; p < 2; ++p) {
-    const std::vector<int> given = strokes_received(p);
-    std::vector<int> net;
-    for (std::size_t h = 0; h < hole_; ++h) {
-      const HoleCard& c = rounds_[static_cast<std::size_t>(p)].card()[h];
-      net.push_back(c.strokes - given[h]);
-      if (c.conceded) conceded_by[h] = p;
-    }
-    nets.push_back(std::move(net));
+    nets[p].resize(hole_);
+    for (std::size_t h = 0; h < hole_; ++h)
+      if (round(p).card()[h].conceded) conceded_by[h] = p;
   }
   return score_match(nets[0], nets[1], conceded_by, static_cast<int>(course_.holes.size()), players_[0].name, players_[1].name)
              .decided_after >= 0;
@@ -144,12 +140,14 @@ bool GolfGroup::match_decided() const {
 void GolfGroup::choose_next() {
   const std::size_t n = course_.holes.size();
   auto on_hole = [&](int p) { return rounds_[static_cast<std::size_t>(p)].hole_index() == hole_; };
+  const std::size_t hole_before = hole_;
   while (hole_ < n && std::none_of(order_.begin(), order_.end(), on_hole)) {
     ++hole_;
     hole_first_events_.push_back(events_.size());
     if (hole_ < n) order_ = honour_order();
   }
-  if (hole_ >= n || match_decided()) {
+  // A match can only be decided as a hole ends.
+  if (hole_ >= n || (hole_ != hole_before && match_decided())) {
     next_ = -1;
     return;
   }

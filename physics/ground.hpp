@@ -53,6 +53,13 @@ struct SurfaceMaterial {
   /// incidence); Penner's green 0.269 (15.4°); 0 = rigid surface (walls, cart paths).
   double crater_tilt = 0.0;
   static constexpr Range kCraterTilt{0.0, 0.6};
+  /// s/m; the inertia of the turf's surface layer (grass and thatch) that a landing ball
+  /// sweeps aside: a bounce takes layer_drag · v_t² off the ball's speed along the surface,
+  /// in full once the ball presses through the layer (turf_layer_share()). Poncelet's
+  /// inertial term, ½ρ·A·v² over the contact time: see layer_speed_loss(). 0 = none (a
+  /// green, whose bounce is Penner's measured crater alone; walls, paths, the ballpark).
+  double layer_drag = 0.0;
+  static constexpr Range kLayerDrag{0.0, 0.1};
   /// The lie: what the surface does to a strike of a ball resting on it. Grass trapped
   /// between face and ball lubricates the contact (the "flyer": spin falls 60-70 %, the
   /// launch rises), sand or long grass slows the club before it reaches the ball.
@@ -105,11 +112,35 @@ struct BounceResult {
 /// stiffness relative to the material's (1 = as measured, 2 = twice as firm).
 double crater_tilt_at(const SurfaceMaterial& m, double speed, double incidence, double firmness = 1.0);
 
+/// The normal approach speed (m/s) at which a landing ball presses through the turf's
+/// surface layer and meets all of its inertia. Derivation: a fairway's layer of mown grass
+/// and thatch is ~12 mm deep and bears a resting ball (0.45 N) near its top; pressing the
+/// ball through it takes ~10 N over those 12 mm, ~0.1 J, which is the normal energy of a
+/// 45.93 g ball at ~2 m/s.
+inline constexpr double kTurfLayerSpeed = 2.0;
+
+/// The share (0..1) of the layer a touch at normal approach speed `vn` (m/s) sweeps through:
+/// against a layer that resists with a steady force the ball presses in as deep as its normal
+/// energy takes it, (vn / kTurfLayerSpeed)², all of it from kTurfLayerSpeed on. A rolling
+/// ball's last hops (a few cm/s) skim it, so a hop that turns into a roll loses nothing to it
+/// that the roll does not.
+inline double turf_layer_share(double vn) {
+  if (!(vn > 0.0)) return 0.0;
+  const double r = vn / kTurfLayerSpeed;
+  return r >= 1.0 ? 1.0 : r * r;
+}
+
+/// The speed (m/s) a bounce's sweep through the turf's layer takes off a ball meeting it at
+/// tangential speed `vt` and normal approach speed `vn`: layer_drag · vt² · share / √firmness
+/// (a firmer turf is pressed less deep, as its crater: crater_tilt_at), at most half of vt.
+double layer_speed_loss(const SurfaceMaterial& m, double vt, double vn, double firmness = 1.0);
+
 /// One bounce of a ball moving at `velocity` with `spin` onto a surface with unit face
 /// normal `face_normal` (pointing out of the ground). Uses solve_impact() with the ground
 /// as an infinite mass, e = m.e at the normal approach speed, e_t = 0, Coulomb friction,
 /// on the plane tilted by crater_tilt_at() — lowered where it would return a spinless ball
-/// backwards (only backspin brings a ball back). Never creates energy.
+/// backwards (only backspin brings a ball back) — after the turf's layer has taken
+/// layer_speed_loss() off the speed along the surface. Never creates energy.
 BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal, const Vec3& velocity,
                                const Vec3& spin, const BallProperties& ball, double firmness = 1.0);
 

@@ -24,7 +24,8 @@ std::vector<SurfaceMaterial> load_materials(const fs::path& path) {
   for (const auto& [name_key, node] : f.root()) {
     const std::string name(name_key.str());
     const toml::table& t = f.table(node, name);
-    f.only_keys(t, name, {"kind", "e", "mu", "rolling_resistance", "stimp", "crater_tilt", "lie_friction", "lie_speed_loss"});
+    f.only_keys(t, name, {"kind", "e", "mu", "rolling_resistance", "stimp", "crater_tilt", "layer_drag", "lie_friction",
+                        "lie_speed_loss"});
     SurfaceMaterial m;
     m.name = name;
     const std::string kind = f.text(f.required(t, "kind", "allowed: " + surface_kind_names()), name + ".kind");
@@ -46,6 +47,7 @@ std::vector<SurfaceMaterial> load_materials(const fs::path& path) {
         f.quantity_or(t, "rolling_resistance", Dimension::Dimensionless, 0.0, &SurfaceMaterial::kRollingResistance);
     m.stimp = f.quantity_or(t, "stimp", Dimension::Length, 0.0, &SurfaceMaterial::kStimp);
     m.crater_tilt = f.quantity_or(t, "crater_tilt", Dimension::Angle, 0.0, &SurfaceMaterial::kCraterTilt);
+    m.layer_drag = f.quantity_or(t, "layer_drag", Dimension::Dimensionless, 0.0, &SurfaceMaterial::kLayerDrag);
     m.lie_friction = f.quantity_or(t, "lie_friction", Dimension::Dimensionless, 1.0, &SurfaceMaterial::kLieFriction);
     m.lie_speed_loss = f.quantity_or(t, "lie_speed_loss", Dimension::Dimensionless, 0.0, &SurfaceMaterial::kLieSpeedLoss);
     if (const std::string why = validate_surface_material(m); !why.empty()) throw InputError(f.where(node) + ": " + why);

@@ -20,6 +20,7 @@ SurfaceMaterial rigid(double e, double mu) {
   m.e = CorCurve::constant(e);
   m.mu = mu;
   m.crater_tilt = 0.0;
+  m.layer_drag = 0.0;
   return m;
 }
 
@@ -65,6 +66,7 @@ TEST_CASE("the closed-form bounce is the impact solver's rigid Coulomb impulse w
   for (int i = 0; i < 20000; ++i) {
     SurfaceMaterial m = default_fairway();  // its speed-dependent e curve
     m.crater_tilt = 0.0;
+    m.layer_drag = 0.0;  // the impulse alone: the layer's loss is checked on its own below
     m.mu = 1.5 * u();
     const Vec3 n = Vec3(0.6 * (u() - 0.5), 1.0, 0.6 * (u() - 0.5)).normalized();
     const Vec3 v(60.0 * (u() - 0.5), -30.0 * u() - 0.1, 60.0 * (u() - 0.5));
@@ -107,19 +109,71 @@ TEST_CASE("bounces never create energy, whatever the spin, angle or surface", "[
   for (int i = 0; i < 20000; ++i) {
     SurfaceMaterial m = rigid(u(), 2.0 * u());
     m.crater_tilt = 0.6 * u();
+    m.layer_drag = SurfaceMaterial::kLayerDrag.max * u() * u();
     const Vec3 n = Vec3(0.3 * (u() - 0.5), 1.0, 0.3 * (u() - 0.5)).normalized();
     const Vec3 v(60.0 * (u() - 0.5), -30.0 * u() - 0.1, 60.0 * (u() - 0.5));
     const Vec3 w(800.0 * (u() - 0.5), 800.0 * (u() - 0.5), 800.0 * (u() - 0.5));
-    const BounceResult b = bounce_on_surface(m, n, v, w, ball);
+    const double firmness = kFirmness.min + (kFirmness.max - kFirmness.min) * u();
+    const BounceResult b = bounce_on_surface(m, n, v, w, ball, firmness);
     INFO(i);
     REQUIRE(ke(ball, b.velocity, b.spin) <= ke(ball, v, w) * (1 + 1e-12));
+    // The energy the result reports lost is what was lost, the layer's share included.
+    REQUIRE(b.impact.energy_loss ==
+            Approx(ke(ball, v, w) - ke(ball, b.velocity, b.spin)).margin(1e-9 * (1.0 + ke(ball, v, w))));
   }
+}
+
+TEST_CASE("the turf's layer takes layer_drag · v_t² from a landing that presses through it",
+          "[ground][bounce][layer]") {
+  SurfaceMaterial m = rigid(0.3, 0.4);
+  m.layer_drag = 0.01;  // s/m
+  // Pressed through (v_n ≥ kTurfLayerSpeed): all of it; 20 m/s along loses 4 m/s.
+  CHECK(layer_speed_loss(m, 20.0, 10.0) == Approx(4.0).epsilon(1e-12));
+  CHECK(layer_speed_loss(m, 20.0, kTurfLayerSpeed) == Approx(4.0).epsilon(1e-12));
+  // Quadratic in the speed along: the layer's mass is set moving at the ball's speed
+  // (Poncelet's inertial term), so a landing at twice the speed loses four times as much.
+  CHECK(layer_speed_loss(m, 10.0, 10.0) == Approx(1.0).epsilon(1e-12));
+  // A lighter touch presses in as far as its normal energy: (v_n / kTurfLayerSpeed)².
+  CHECK(layer_speed_loss(m, 20.0, 0.5 * kTurfLayerSpeed) == Approx(1.0).epsilon(1e-12));
+  CHECK(layer_speed_loss(m, 20.0, 0.0) == 0.0);
+  // A firmer turf is pressed less deep, as its crater: 1/√firmness.
+  CHECK(layer_speed_loss(m, 20.0, 10.0, 4.0) == Approx(2.0).epsilon(1e-12));
+  // Never more than half the speed along (the layer slows the ball, it does not stop it).
+  CHECK(layer_speed_loss(m, 80.0, 10.0) == Approx(40.0).epsilon(1e-12));
+  m.layer_drag = 0.0;
+  CHECK(layer_speed_loss(m, 20.0, 10.0) == 0.0);
+
+  // In a bounce the loss comes off the speed along the surface before the contact's friction
+  // acts: a spinless ball at 21 m/s along and 10 m/s down, e 0.3, grips (µ 0.4 covers 2/7 of
+  // the slip) and leaves rolling at 5/7 of the 21 − 4.41 m/s the layer leaves it.
+  const BallProperties ball = golf_ball_properties();
+  m.layer_drag = 0.01;
+  const BounceResult b = bounce_on_surface(m, Vec3::UnitY(), Vec3(21, -10, 0), Vec3::Zero(), ball);
+  CHECK(b.impact.contact == ContactKind::Grip);
+  CHECK(b.velocity.x() == Approx(5.0 / 7.0 * (21.0 - 0.01 * 21.0 * 21.0)).epsilon(1e-9));
+  CHECK(b.velocity.y() == Approx(3.0).epsilon(1e-9));
+}
+
+TEST_CASE("the layer's share grows continuously from a touch to a landing", "[ground][layer][property]") {
+  // No step at any normal speed: a hop that barely leaves the ground and the roll it turns
+  // into lose alike (the hop-or-roll sweep in test_world.cpp checks the rest it gives).
+  double previous = 0.0;
+  for (int i = 1; i <= 400; ++i) {
+    const double vn = 0.01 * i;  // 0.01 .. 4 m/s
+    const double share = turf_layer_share(vn);
+    CHECK(share >= previous);
+    CHECK(share - previous <= 2.0 * 0.01 / kTurfLayerSpeed + 1e-12);
+    previous = share;
+  }
+  CHECK(turf_layer_share(4.0) == 1.0);
+  CHECK(turf_layer_share(0.25) == Approx(0.015625));  // a roll's threshold touch: 1.6 %
 }
 
 TEST_CASE("the crater tilt: Penner's at his reference, linear in speed, none for a vertical drop",
           "[ground][crater]") {
   SurfaceMaterial green = default_fairway();
   green.crater_tilt = deg_to_rad(15.4);  // Penner 2002's green at 18.6 m/s, 44.4°
+  green.layer_drag = 0.0;                // a green's bounce is Penner's crater alone
   const BallProperties ball = golf_ball_properties();
   const auto tilt = [&](double speed, double incidence_deg, double firmness = 1.0) {
     return rad_to_deg(crater_tilt_at(green, speed, deg_to_rad(incidence_deg), firmness));

@@ -126,7 +126,7 @@ SurfaceMaterial default_fairway() {
   // assets/materials.toml's fairway (its comment has the sources): a tour drive runs out
   // 15-25 yd, a 7-iron a few yards, a PW checks; the layer of grass and thatch keeps a flat
   // landing from running on twice as far as turf lets it.
-  m.rolling_resistance = 0.18;
+  m.rolling_resistance = 0.16;
   m.crater_tilt = deg_to_rad(12.0);
   m.layer_drag = 0.01;
   return m;

@@ -44,7 +44,7 @@ std::uint64_t hash_doubles(std::initializer_list<double> values, std::uint64_t h
   return h;
 }
 
-constexpr std::uint64_t kGoldenHash = 0x0f5174590c45e6e1ULL;
+constexpr std::uint64_t kGoldenHash = 0x5b311d0148fd16c9ULL;
 
 }  // namespace
 

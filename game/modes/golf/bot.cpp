@@ -351,9 +351,13 @@ StrokeInput GolfBot::plan(const GolfRound& round) {
     return in;
   }
   // A partial swing is judged by feel: its power strays more the shorter it is.
+  const bool partial = in.meter.power < 1.0;
   const double power_sd = skill_.power_sd + skill_.partial_feel_sd * (1.0 - std::min(in.meter.power, 1.0));
   in.meter.power = std::clamp(in.meter.power * (1.0 + rng_.normal(power_sd)), 0.02, 1.1);
   in.meter.accuracy_ms = std::clamp(rng_.normal(skill_.accuracy_sd_ms), MeterInput::kAccuracy.min, MeterInput::kAccuracy.max);
+  // And aimed by eye along a read of the green, as a putt is: the same start-line spread
+  // (the bot's plan reads the green perfectly; the spread stands for its misreads).
+  if (partial) in.aim = std::clamp(in.aim + rng_.normal(skill_.putt_aim_sd), -1.5, 1.5);
   return in;
 }
 

@@ -147,11 +147,15 @@ TEST_CASE("over eight calm rounds each bot scores and putts as golfers of its le
   // under what he averages (USGA), so on this par 72 a scratch player averages ~75 and a 15
   // handicap ~90; the tour bot 66-72 like a PGA Tour field; the beginner (slower than a 25
   // handicap) at least 96. Calm air: the command line's rounds draw wind and play ~1 higher.
+  // The day's cups, as `round` and `play` cut them (docs/courses.md).
   struct Row {
     const char* skill;
     double score_lo, score_hi, putts_lo, putts_hi;
   };
-  const Course national = load_course(test::assets(), "national");
+  Course national = load_course(test::assets(), "national");
+  CourseSetup day;
+  day.pin_set = CourseSetup::kDayPinSet;
+  set_up(national, day);
   for (const Row& row : {Row{"tour", 66, 72, 27, 32}, Row{"scratch", 72, 78, 29, 34}, Row{"amateur", 85, 93, 31, 36},
                          Row{"beginner", 96, 112, 34, 42}}) {
     const GolferSkill& g = golfer_skill(row.skill);

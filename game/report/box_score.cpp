@@ -26,11 +26,15 @@ nlohmann::json team_json(const TeamBox& t) {
   const auto pitching = [](const PitchingLine& p) {
     return nlohmann::json{{"outs", p.outs},
                           {"innings_pitched", std::to_string(p.outs / 3) + "." + std::to_string(p.outs % 3)},
-                          {"batters_faced", p.batters}, {"h", p.h}, {"r", p.r}, {"bb", p.bb}, {"so", p.so}, {"hr", p.hr},
-                          {"hbp", p.hbp}, {"pitches", p.pitches}, {"strikes", p.strikes}};
+                          {"batters_faced", p.batters}, {"h", p.h}, {"r", p.r}, {"er", p.er}, {"bb", p.bb}, {"so", p.so},
+                          {"hr", p.hr}, {"hbp", p.hbp}, {"pitches", p.pitches}, {"strikes", p.strikes}};
   };
   nlohmann::json pitchers = nlohmann::json::array();
-  for (const PitchingLine& p : t.pitchers) pitchers.push_back(pitching(p));
+  for (const PitchingLine& p : t.pitchers) {
+    nlohmann::json one = pitching(p);
+    one["decision"] = to_string(p.decision);  // "W", "L", "S" or ""
+    pitchers.push_back(one);
+  }
   return {{"team", t.name},
           {"runs_by_inning", t.runs_by_inning},
           {"runs", t.runs},
@@ -152,13 +156,14 @@ std::string box_score_text(const GameRecord& g) {
     line(out, "%-10s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d   LOB %d\n", "Totals", sum.ab, sum.r, sum.h, sum.doubles,
          sum.triples, sum.hr, sum.rbi, sum.bb, sum.so, sum.hbp, sum.sf, t->left_on_base);
   }
-  line(out, "\nPitching       IP   H  R BB SO HR  Pitches-strikes\n");
+  line(out, "\nPitching           IP   H  R ER BB SO HR  Pitches-strikes\n");
   for (const TeamBox* t : {&g.away, &g.home}) {
     for (std::size_t i = 0; i < t->pitchers.size(); ++i) {
       const PitchingLine& p = t->pitchers[i];
-      const std::string who = t->name + (i == 0 ? " SP" : " RP" + std::to_string(i));
-      line(out, "%-12s %2d.%d %3d %2d %2d %2d %2d  %d-%d\n", who.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.bb, p.so, p.hr,
-           p.pitches, p.strikes);
+      std::string who = t->name + (i == 0 ? " SP" : " RP" + std::to_string(i));
+      if (p.decision != Decision::None) who += std::string(" (") + to_string(p.decision) + ")";
+      line(out, "%-16s %2d.%d %3d %2d %2d %2d %2d %2d  %d-%d\n", who.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.er, p.bb,
+           p.so, p.hr, p.pitches, p.strikes);
     }
   }
   if (g.walk_off) line(out, "\nWalk-off in the %s.\n", ordinal(g.innings_played).c_str());

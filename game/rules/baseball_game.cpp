@@ -63,8 +63,78 @@ BattingLine& BattingLine::operator+=(const BattingLine& o) {
 
 PitchingLine& PitchingLine::operator+=(const PitchingLine& o) {
   outs += o.outs, h += o.h, r += o.r, bb += o.bb, so += o.so, hr += o.hr, hbp += o.hbp;
-  pitches += o.pitches, strikes += o.strikes, batters += o.batters;
+  pitches += o.pitches, strikes += o.strikes, batters += o.batters, er += o.er;
   return *this;
+}
+
+const char* to_string(Decision d) {
+  switch (d) {
+    case Decision::Win: return "W";
+    case Decision::Loss: return "L";
+    case Decision::Save: return "S";
+    case Decision::None: break;
+  }
+  return "";
+}
+
+void assign_decisions(const std::vector<ScoreAfter>& log, int scheduled, TeamBox& away, TeamBox& home) {
+  TeamBox* const team[2] = {&away, &home};
+  for (TeamBox* t : team)
+    for (PitchingLine& p : t->pitchers) p.decision = Decision::None;
+  if (log.empty() || log.back().away == log.back().home) return;
+  const int w = log.back().home > log.back().away ? 1 : 0, l = 1 - w;
+  const auto runs = [](const ScoreAfter& s, int t) { return t == 0 ? s.away : s.home; };
+  // The plate appearance after which the winners went ahead for good.
+  std::size_t go_ahead = 0;
+  bool ahead = false;
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    const bool now = runs(log[i], w) > runs(log[i], l);
+    if (now && !ahead) go_ahead = i;
+    ahead = now;
+  }
+  TeamBox& wt = *team[w];
+  TeamBox& lt = *team[l];
+  if (log[go_ahead].fielding != l || wt.pitchers.empty() || lt.pitchers.empty()) return;
+  // Runs are charged to the pitcher who let the runner on; pitchers change between innings
+  // here, so that is the one pitching when it scored.
+  lt.pitchers[static_cast<std::size_t>(log[go_ahead].pitcher)].decision = Decision::Loss;
+  std::size_t record = 0;  // the winners' pitcher of record: the last of theirs to pitch before it
+  for (std::size_t i = 0; i < go_ahead; ++i)
+    if (log[i].fielding == w) record = static_cast<std::size_t>(log[i].pitcher);
+  const int starter_needs = scheduled >= 6 ? 15 : 12;  // outs: five innings, four in a short game
+  if (record == 0 && wt.pitchers[0].outs < starter_needs && wt.pitchers.size() > 1) {
+    record = 1;
+    for (std::size_t i = 2; i < wt.pitchers.size(); ++i)
+      if (wt.pitchers[i].outs > wt.pitchers[record].outs) record = i;
+  }
+  wt.pitchers[record].decision = Decision::Win;
+  const std::size_t last = wt.pitchers.size() - 1;
+  PitchingLine& f = wt.pitchers[last];
+  const int lead = f.lead_at_entry;
+  const bool save_spot = (lead >= 1 && lead <= 3 && f.outs >= 3) || (lead >= 1 && lead <= 2) || f.outs >= 9;
+  if (last != record && f.outs >= 1 && save_spot) f.decision = Decision::Save;
+}
+
+std::string decisions_mismatch(const TeamBox& away, const TeamBox& home) {
+  int wins[2] = {0, 0}, losses[2] = {0, 0}, saves[2] = {0, 0};
+  const TeamBox* const team[2] = {&away, &home};
+  for (int t = 0; t < 2; ++t)
+    for (const PitchingLine& p : team[t]->pitchers) {
+      if (p.er < 0 || p.er > p.r) return team[t]->name + ": a pitcher's earned runs are not among his runs";
+      wins[t] += p.decision == Decision::Win;
+      losses[t] += p.decision == Decision::Loss;
+      saves[t] += p.decision == Decision::Save;
+      if (p.decision == Decision::Save && p.outs < 1) return team[t]->name + ": a save without an out";
+    }
+  if (away.runs == home.runs) {
+    if (wins[0] + wins[1] + losses[0] + losses[1] + saves[0] + saves[1] != 0) return "a tied game with a decision";
+    return "";
+  }
+  const int w = home.runs > away.runs ? 1 : 0, l = 1 - w;
+  if (wins[w] != 1 || wins[l] != 0) return team[w]->name + ": the winners do not have the one winning pitcher";
+  if (losses[l] != 1 || losses[w] != 0) return team[l]->name + ": the losers do not have the one losing pitcher";
+  if (saves[w] > 1 || saves[l] != 0) return "a save that is not the winners' one";
+  return "";
 }
 
 std::string box_score_mismatch(const TeamBox& bat, const TeamBox& field) {
@@ -83,8 +153,8 @@ std::string box_score_mismatch(const TeamBox& bat, const TeamBox& field) {
   if (!field.pitchers.empty()) {
     PitchingLine staff;
     for (const PitchingLine& one : field.pitchers) staff += one;
-    if (staff.outs != p.outs || staff.r != p.r || staff.h != p.h || staff.bb != p.bb || staff.so != p.so ||
-        staff.pitches != p.pitches || staff.batters != p.batters)
+    if (staff.outs != p.outs || staff.r != p.r || staff.er != p.er || staff.h != p.h || staff.bb != p.bb ||
+        staff.so != p.so || staff.pitches != p.pitches || staff.batters != p.batters)
       return field.name + ": the pitchers' lines do not add up to the staff's";
   }
   if (p.r != bat.runs || p.h != bat.hits || p.bb != sum.bb || p.so != sum.so || p.hr != sum.hr || p.hbp != sum.hbp ||

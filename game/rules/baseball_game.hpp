@@ -48,9 +48,21 @@ struct BattingLine {
   BattingLine& operator+=(const BattingLine& o);
 };
 
+/// A pitcher's decision in a game that was won (MLB Rules 9.17 and 9.19).
+enum class Decision { None, Win, Loss, Save };
+/// "W", "L", "S", or "" for none.
+const char* to_string(Decision d);
+
 struct PitchingLine {
   int outs = 0, h = 0, r = 0, bb = 0, so = 0, hr = 0, hbp = 0, pitches = 0, strikes = 0, batters = 0;
-  PitchingLine& operator+=(const PitchingLine& o);
+  /// Runs charged to him that were earned: not scored by a batter who reached on an error, nor
+  /// by extra innings' placed runner (Rule 9.16; the game's errors are rare, and a run that an
+  /// error let score otherwise is counted earned).
+  int er = 0;
+  Decision decision = Decision::None;
+  /// His team's runs less the other team's when he came in (a save needs a lead of 1-3).
+  int lead_at_entry = 0;
+  PitchingLine& operator+=(const PitchingLine& o);  ///< the counts; not the decision or the lead
 };
 
 /// One team's side of the box score.
@@ -62,6 +74,30 @@ struct TeamBox {
   PitchingLine pitching;             ///< its pitchers together, against the other team
   std::vector<PitchingLine> pitchers;///< each pitcher in the order they pitched
 };
+
+/// One plate appearance as the decisions read it: the fielding team (0 away, 1 home), the
+/// index of its pitcher in TeamBox::pitchers, and the score after it.
+struct ScoreAfter {
+  int fielding = 0;
+  int pitcher = 0;
+  int away = 0, home = 0;
+};
+
+/// Credits the win, the loss and a save to the pitchers of `away` and `home` from the game's
+/// plate appearances in order (`log`), as the official scorer does; none when the game ended
+/// tied. Rule 9.17: the loser is the pitcher charged with the run that put the winners ahead
+/// for good, the winner their pitcher of record then, but a starter needs five innings (four
+/// in a game of five or fewer `scheduled` innings), else the reliever the scorer judges most
+/// effective (here: the one with the most outs). Rule 9.19: the winners' finishing pitcher,
+/// not the winner, with an out, saves it when he came in leading by at most three and pitched
+/// an inning, or with the tying run at bat or on deck (a lead of one or two: pitchers change
+/// between innings, with the bases empty), or pitched three innings.
+void assign_decisions(const std::vector<ScoreAfter>& log, int scheduled, TeamBox& away, TeamBox& home);
+
+/// "" when the decisions agree with the score (a decided game has one win and one loss, on the
+/// two teams, and at most one save, the winners', not the winner's; a tied game none) and every
+/// pitcher's earned runs are among his runs, otherwise the first that does not.
+std::string decisions_mismatch(const TeamBox& away, const TeamBox& home);
 
 /// Every way the lines of a box score must agree (the runs by inning add up to the runs, the
 /// batters' runs and hits to the team's, the opponents' pitching to the batting, their

@@ -285,6 +285,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
     box[t].pitchers.assign(1, PitchingLine{});
   }
   int next_up[2] = {0, 0};
+  std::vector<ScoreAfter> score_log;  // for the decisions
   GameSituation s;
   s.scheduled = o.innings;
   const Env env = air(assets);
@@ -297,11 +298,19 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
       Team& field = teams[1 - half];
       HalfInning h{assets, env, {-1, -1, -1}, 0};
       // The fielding team's bullpen: a fresh pitcher for the inning when his turn has come.
-      if (field.to_the_bullpen(s.inning, o.seed * 1000003ULL + static_cast<std::uint64_t>(2 * s.inning + half)))
+      if (field.to_the_bullpen(s.inning, o.seed * 1000003ULL + static_cast<std::uint64_t>(2 * s.inning + half))) {
         box[1 - half].pitchers.emplace_back();
+        box[1 - half].pitchers.back().lead_at_entry = s.bottom ? s.away_runs - s.home_runs : s.home_runs - s.away_runs;
+      }
+      // Runners whose runs are unearned (Rule 9.16): a batter who reached on an error, and
+      // extra innings' placed runner.
+      std::array<bool, 9> unearned{};
       // Extra innings start with a runner on second: the batter before this half's leadoff
       // man (MLB Rule 7.01(b), since 2023).
-      if (s.inning > s.scheduled) h.bases[1] = (next_up[half] + 8) % 9;
+      if (s.inning > s.scheduled) {
+        h.bases[1] = (next_up[half] + 8) % 9;
+        unearned[static_cast<std::size_t>(h.bases[1])] = true;
+      }
       int runs = 0;
       while (h.outs < 3) {
         const int batter = next_up[half];
@@ -338,12 +347,18 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
         }
         if (s.bottom && s.inning >= s.scheduled && pa.result != "home_run") walk_off_limit(pa, s, scored);
         pa.runs = static_cast<int>(scored.size());
+        unearned[static_cast<std::size_t>(batter)] = pa.result == "error";
+        int earned = pa.runs;
+        for (int who : scored) earned -= unearned[static_cast<std::size_t>(who)] ? 1 : 0;
         for (int who : scored) ++box[half].batting[static_cast<std::size_t>(who)].r;
         runs += pa.runs;
         (s.bottom ? s.home_runs : s.away_runs) += pa.runs;
         credit_batter(box[half].batting[static_cast<std::size_t>(batter)], pa);
         charge_pitcher(box[1 - half].pitching, pa);
         charge_pitcher(box[1 - half].pitchers.back(), pa);
+        box[1 - half].pitching.er += earned;
+        box[1 - half].pitchers.back().er += earned;
+        score_log.push_back({1 - half, static_cast<int>(box[1 - half].pitchers.size()) - 1, s.away_runs, s.home_runs});
         g.plate_appearances.push_back(std::move(pa));
         s.outs = h.outs;
         if (s.bottom && game_over(s) && h.outs < 3) {
@@ -366,6 +381,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
     box[t].runs = t == 0 ? s.away_runs : s.home_runs;
     for (const BattingLine& l : box[t].batting) box[t].hits += l.h;
   }
+  assign_decisions(score_log, o.innings, box[0], box[1]);
   g.away = box[0];
   g.home = box[1];
   return g;

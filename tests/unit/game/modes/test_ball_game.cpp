@@ -52,6 +52,7 @@ TEST_CASE("a nine-inning game: the box score adds up, 27 outs a side unless the 
     INFO("seed " << seed << "\n" << box_score_text(g));
     CHECK(box_score_mismatch(g.away, g.home) == "");
     CHECK(box_score_mismatch(g.home, g.away) == "");
+    CHECK(decisions_mismatch(g.away, g.home) == "");  // a W, an L, at most one S; ER among R
     CHECK(g.away.runs != g.home.runs);  // no ties
     CHECK_FALSE(g.stopped_tied);
     CHECK(g.innings_played >= 9);

@@ -90,3 +90,85 @@ TEST_CASE("a box score whose lines disagree is caught", "[baseball][rules]") {
   field.pitching.so = 2;
   CHECK_FALSE(box_score_mismatch(bat, field).empty());
 }
+
+namespace {
+
+TeamBox staff(const char* name, std::initializer_list<std::pair<int, int>> outs_and_lead) {
+  TeamBox t;
+  t.name = name;
+  for (const auto& [outs, lead] : outs_and_lead) {
+    PitchingLine p;
+    p.outs = outs;
+    p.lead_at_entry = lead;
+    t.pitchers.push_back(p);
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("the win, the loss and the save go where Rules 9.17 and 9.19 put them", "[baseball][rules][decisions]") {
+  // Away leads 2-0 from the 1st; home goes ahead 3-2 off the away starter in the 6th and its
+  // closer comes in for the 9th leading by one.
+  std::vector<ScoreAfter> log = {{1, 0, 2, 0}, {0, 0, 2, 0}, {0, 0, 2, 3}, {1, 0, 2, 3}, {1, 1, 2, 3}, {1, 1, 2, 3}};
+  TeamBox away = staff("away", {{18, 0}, {6, -1}}), home = staff("home", {{24, 0}, {3, 1}});
+  away.runs = 2, home.runs = 3;
+  assign_decisions(log, 9, away, home);
+  CHECK(away.pitchers[0].decision == Decision::Loss);  // charged with the go-ahead run
+  CHECK(away.pitchers[1].decision == Decision::None);
+  CHECK(home.pitchers[0].decision == Decision::Win);   // pitcher of record, eight innings
+  CHECK(home.pitchers[1].decision == Decision::Save);  // a one-run lead, an inning
+  CHECK(decisions_mismatch(away, home) == "");
+
+  // A starter out after four innings cannot win: the reliever with the most outs does.
+  home = staff("home", {{12, 0}, {9, 2}, {3, 1}});
+  assign_decisions(log, 9, away, home);
+  CHECK(home.pitchers[0].decision == Decision::None);
+  CHECK(home.pitchers[1].decision == Decision::Win);
+  CHECK(home.pitchers[2].decision == Decision::Save);
+
+  // A closer who comes in four runs up and gets three outs has no save; three innings do.
+  home = staff("home", {{18, 0}, {3, 4}});
+  assign_decisions(log, 9, away, home);
+  CHECK(home.pitchers[1].decision == Decision::None);
+  home = staff("home", {{18, 0}, {9, 5}});
+  assign_decisions(log, 9, away, home);
+  CHECK(home.pitchers[1].decision == Decision::Save);
+  // Two runs up, the tying run on deck: one out saves it.
+  home = staff("home", {{24, 0}, {1, 2}});
+  assign_decisions(log, 9, away, home);
+  CHECK(home.pitchers[1].decision == Decision::Save);
+
+  // The lead changes hands: the last go-ahead decides. Home leads 1-0, away goes ahead 2-1 off
+  // home's reliever in the 7th, home ties it, away goes ahead for good off the next reliever.
+  log = {{0, 0, 0, 1}, {1, 1, 2, 1}, {0, 1, 2, 2}, {1, 2, 3, 2}, {0, 2, 3, 2}};
+  away = staff("away", {{18, 0}, {6, -1}, {3, 1}});
+  home = staff("home", {{18, 0}, {3, 1}, {3, 0}});
+  away.runs = 3, home.runs = 2;
+  assign_decisions(log, 9, away, home);
+  CHECK(home.pitchers[1].decision == Decision::None);  // his run against was not the one that stood
+  CHECK(home.pitchers[2].decision == Decision::Loss);
+  CHECK(away.pitchers[1].decision == Decision::Win);   // pitching when his team went ahead for good
+  CHECK(away.pitchers[2].decision == Decision::Save);
+  CHECK(decisions_mismatch(away, home) == "");
+
+  // A tie has no decisions; a second winner, or a save on the losing side, is caught.
+  log.push_back({1, 2, 3, 3});
+  home.runs = 3;
+  assign_decisions(log, 9, away, home);
+  for (const TeamBox* t : {&away, &home})
+    for (const PitchingLine& p : t->pitchers) CHECK(p.decision == Decision::None);
+  CHECK(decisions_mismatch(away, home) == "");
+  home.runs = 2;
+  away.pitchers[0].decision = Decision::Win;
+  away.pitchers[1].decision = Decision::Win;
+  home.pitchers[0].decision = Decision::Loss;
+  CHECK(decisions_mismatch(away, home) != "");
+  away.pitchers[1].decision = Decision::None;
+  home.pitchers[1].decision = Decision::Save;
+  CHECK(decisions_mismatch(away, home) != "");
+  home.pitchers[1].decision = Decision::None;
+  CHECK(decisions_mismatch(away, home) == "");
+  away.pitchers[2].er = 1;  // earned runs beyond his runs
+  CHECK(decisions_mismatch(away, home) != "");
+}

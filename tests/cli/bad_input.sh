@@ -117,6 +117,9 @@ sed -i '0,/^mu = /s/^mu = .*/mu = 9/' "$assets_copy/materials.toml"
 export SWEETSPOT_ASSETS="$assets_copy"
 expect_bad "a broken materials.toml" "materials.toml:|mu = 9|[0, 2]" -- shot golf/driver
 grep -q "driver.toml" "$tmp/err" && fail "a broken materials.toml blamed on the scenario: $(cat "$tmp/err")"
+cp "$SWEETSPOT_ROOT/assets/materials.toml" "$assets_copy/materials.toml"
+sed -i '0,/^layer_drag = /s/^layer_drag = .*/layer_drag = 0.5/' "$assets_copy/materials.toml"
+expect_bad "a turf layer beyond its range" "materials.toml:|layer_drag|0.5|0.1" -- shot golf/driver
 unset SWEETSPOT_ASSETS
 rm -rf "$assets_copy"
 sed 's/^number = 1$/number = 1.5/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$tmp/course.toml"

@@ -218,18 +218,21 @@ Vec3 tilted(const Vec3& face_normal, const Vec3& along, double tilt) {
 
 namespace {
 
+/// A ball presses into turf `firmness` times as stiff as the material's own this many times
+/// less deep (√stiffness for a turf spring). The crater's tilt and the share of the surface
+/// layer a landing sweeps are both divided by it.
+double depth_divisor(double firmness) { return firmness == 1.0 ? 1.0 : std::sqrt(firmness); }
+
 /// crater_tilt_at() from sin 2θ of the incidence θ (a bounce has it from the velocity's
 /// components without an atan2 and a sine: sin 2θ = 2·v_n·v_t / |v|²).
 double crater_tilt_from(const SurfaceMaterial& m, double speed, double sin_2theta, double firmness) {
   if (m.crater_tilt <= 0.0) return 0.0;
   // Penner's tilt grows with speed and with incidence up to his 44.4°; a crater dug
   // straight down (90°) is symmetric and tilts nothing. sin 2θ carries both: linear in θ
-  // for shallow landings (Penner's form), 1 at 45°, 0 at 90°. Depth, and with it the tilt,
-  // scales as 1/√stiffness for a turf spring: firmness is the stiffness relative to the
-  // material's own.
+  // for shallow landings (Penner's form), 1 at 45°, 0 at 90°. The tilt scales with the
+  // crater's depth.
   const double shape = sin_2theta / kCraterReferenceShape;
-  const double stiffness = firmness == 1.0 ? 1.0 : std::sqrt(firmness);
-  const double tilt = m.crater_tilt * (speed / kCraterReferenceSpeed) * shape / stiffness;
+  const double tilt = m.crater_tilt * (speed / kCraterReferenceSpeed) * shape / depth_divisor(firmness);
   return std::clamp(tilt, 0.0, std::min(2.0 * m.crater_tilt, 0.6));
 }
 
@@ -241,8 +244,7 @@ double crater_tilt_at(const SurfaceMaterial& m, double speed, double incidence, 
 
 double layer_speed_loss(const SurfaceMaterial& m, double vt, double vn, double firmness) {
   if (m.layer_drag <= 0.0 || !(vt > 0.0)) return 0.0;
-  const double stiffness = firmness == 1.0 ? 1.0 : std::sqrt(firmness);
-  return std::min(m.layer_drag * vt * vt * turf_layer_share(vn) / stiffness, 0.5 * vt);
+  return std::min(m.layer_drag * vt * vt * turf_layer_share(vn) / depth_divisor(firmness), 0.5 * vt);
 }
 
 BounceResult bounce_on_surface(const SurfaceMaterial& m, const Vec3& face_normal, const Vec3& velocity_in,

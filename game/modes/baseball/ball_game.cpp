@@ -348,9 +348,11 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
         if (s.bottom && s.inning >= s.scheduled && pa.result != "home_run") walk_off_limit(pa, s, scored);
         pa.runs = static_cast<int>(scored.size());
         unearned[static_cast<std::size_t>(batter)] = pa.result == "error";
-        int earned = pa.runs;
-        for (int who : scored) earned -= unearned[static_cast<std::size_t>(who)] ? 1 : 0;
-        for (int who : scored) ++box[half].batting[static_cast<std::size_t>(who)].r;
+        int earned = 0;
+        for (int who : scored) {
+          ++box[half].batting[static_cast<std::size_t>(who)].r;
+          if (!unearned[static_cast<std::size_t>(who)]) ++earned;
+        }
         runs += pa.runs;
         (s.bottom ? s.home_runs : s.away_runs) += pa.runs;
         credit_batter(box[half].batting[static_cast<std::size_t>(batter)], pa);

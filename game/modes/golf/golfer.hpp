@@ -56,7 +56,8 @@ struct GolferSkill {
 /// below roughly doubles the spread; the amateur's 36 ms timing spread (with a part swing's
 /// 0.35 feel) puts his calm National rounds at 88.3 over 24 seeds (every cup in the middle),
 /// inside a 15 handicap's ~85-93 (greens in regulation 20 %; Arccos's 15 handicaps hit ~45 %
-/// of fairways and ~27 % of greens, quoted from memory, not a stored source). The tour bot's power spread, 3.5 %, leaves its
+/// of fairways and ~27 % of greens, quoted from memory, not a stored source). The tour bot's
+/// power spread, 3.5 %, leaves its
 /// approaches as near the hole as PGA TOUR players' by distance (ShotLink's proximity from
 /// the fairway, about 16, 18, 20, 23, 27, 33, 39 and 48 ft from 50-75 ... 225-250 yd; the bot
 /// over 50 National rounds: 13, 14, 22, 25, 22, 36, 46, 44 ft). The tour bot's putts miss by a speed (6 %) and a

@@ -222,7 +222,7 @@ ShotFraming shot_framing(const ShotTrajectory& trajectory, double t) {
   return f;
 }
 
-Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height) {
+Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height, const FrameWindow& window) {
   const double aspect = double(width) / height;
   const Vec3 up = Vec3::UnitY();
   // Side, Top and Behind look along the target line (+x, DESIGN §2), not along this shot, so
@@ -257,7 +257,11 @@ Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int he
       break;
   }
   // Behind: the eye stands behind the launch point and turns to centre the shot's angular
-  // extent; it steps back until the extent fits a field of view of at most 60°.
+  // extent on the window; it steps back until the extent fits a field of view of at most 60°.
+  // The window in normalised device coordinates (x right, y up, -1..1): its half sizes and
+  // its centre (the whole image: halves of 1 about 0, and no turn below).
+  const double win_half_x = window.right - window.left, win_half_y = window.bottom - window.top;
+  const double win_x = window.left + window.right - 1.0, win_y = 1.0 - window.top - window.bottom;
   Camera c;
   for (double back : {14.0, 20.0, 30.0, 45.0, 70.0, 110.0, 170.0, 260.0, 420.0}) {
     // A little to the right of the line (like a TV tower behind the tee), so a straight
@@ -275,13 +279,17 @@ Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int he
       pitch_lo = std::min(pitch_lo, pitch);
       pitch_hi = std::max(pitch_hi, pitch);
     }
-    const double yaw = 0.5 * (yaw_lo + yaw_hi), pitch = 0.5 * (pitch_lo + pitch_hi);
-    const double need_v = std::max(std::tan(0.5 * (pitch_hi - pitch_lo)) / kMargin,
-                                   std::tan(0.5 * (yaw_hi - yaw_lo)) / (kMargin * aspect));
+    const double need_v = std::max(std::tan(0.5 * (pitch_hi - pitch_lo)) / (kMargin * win_half_y),
+                                   std::tan(0.5 * (yaw_hi - yaw_lo)) / (kMargin * aspect * win_half_x));
     const double fov = 2.0 * std::atan(need_v);
+    c.fov_y = std::max(fov, deg_to_rad(30.0));
+    // Turned so the extent's centre lands on the window's: a point at NDC y sits
+    // atan(y·tan(fov/2)) above the view's axis (across, the same scaled by the aspect).
+    const double tan_v = std::tan(0.5 * c.fov_y);
+    const double yaw = 0.5 * (yaw_lo + yaw_hi) - std::atan(win_x * tan_v * aspect),
+                 pitch = 0.5 * (pitch_lo + pitch_hi) - std::atan(win_y * tan_v);
     const Vec3 dir = (std::cos(pitch) * (std::cos(yaw) * aim + std::sin(yaw) * right) + std::sin(pitch) * up);
     c.target = c.eye + 50.0 * dir;
-    c.fov_y = std::max(fov, deg_to_rad(30.0));
     if (fov <= deg_to_rad(60.0)) break;
   }
   return c;

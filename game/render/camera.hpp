@@ -73,6 +73,13 @@ struct ShotFraming {
 };
 ShotFraming shot_framing(const ShotTrajectory& trajectory, double t);
 
+/// The part of the image a framing must keep the shot in, as fractions of its width and
+/// height from the top-left: a view that draws panels over its image frames the shot beside
+/// them (the batting cage's HUD covers the top-left of its view). The whole image by default.
+struct FrameWindow {
+  double left = 0.0, top = 0.0, right = 1.0, bottom = 1.0;
+};
+
 /// The camera of `kind` for a width x height image. Behind, Side and Top keep every framing
 /// point inside the image with a margin of about 8 % per side. Top lays the shot's long
 /// axis along the image's long axis (downrange to the right in a landscape image when the
@@ -80,7 +87,9 @@ ShotFraming shot_framing(const ShotTrajectory& trajectory, double t);
 /// of the line so a straight shot's rising and falling legs do not overlap. Follow chases
 /// the ball in the air and, in the last second before the landing, turns to frame the landing
 /// area (the descending leg, the bounces and the ball).
-Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height);
+/// Behind keeps the points inside `window` instead (with the same margin of it); the other
+/// kinds frame the whole image.
+Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height, const FrameWindow& window = {});
 
 /// The camera a fraction w (0..1) of the way from a to b: eye, target, up and field of view
 /// interpolated, w eased at both ends by the caller (ease_in_out). For a smooth cut between

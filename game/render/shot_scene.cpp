@@ -254,14 +254,14 @@ std::optional<double> ShotScene::ground_height(double x, double z) const {
   return hit.point.y();
 }
 
-Camera ShotScene::camera(CameraKind kind, double t, int width, int height) const {
+Camera ShotScene::camera(CameraKind kind, double t, int width, int height, const FrameWindow& window) const {
   ShotFraming f = shot_framing(trajectory_, t);
   if (impactor_) f.points.push_back(impactor_->position);
   // From above, a ballpark shows the whole park, fence to fence (a spray chart's view).
   if (kind == CameraKind::Top && impl_->input.world != nullptr)
     for (const Vec3& p : impl_->input.world->fence_line) f.points.push_back(p);
   // Follow sits close to the ball and may dip to grass height; 0.3 m keeps it off the blades.
-  return keep_above_ground(frame_shot(kind, f, width, height), kind == CameraKind::Follow ? 0.3 : 1.0);
+  return keep_above_ground(frame_shot(kind, f, width, height, window), kind == CameraKind::Follow ? 0.3 : 1.0);
 }
 
 double ShotScene::pre_roll() const { return swing_pre_roll(impactor_, impl_->input.impactor_mesh); }

@@ -109,7 +109,7 @@ class ShotScene {
 
   /// The camera of `kind` at time t (s) for a width x height image, its eye kept above
   /// the ground (keep_above_ground).
-  Camera camera(CameraKind kind, double t, int width, int height) const;
+  Camera camera(CameraKind kind, double t, int width, int height, const FrameWindow& window = {}) const;
   /// `c` with its eye raised, if needed, to `clearance` m above the ground under it (the
   /// world's, or the surrounding plane's), the target kept: a mouse orbit or a framing
   /// never looks from under the turf.

@@ -215,7 +215,10 @@ class CageView final : public ModeView {
       const double t = c.stage() == Stage::Pitching ? std::min(c.pitch_clock(in.now), c.pitch().flight_time)
                        : batted ? (c.stage() == Stage::Batted ? std::clamp(in.now - c.batted_at(), 0.0, flight_end) : flight_end)
                                 : c.pitch().flight_time;
-      const Camera cam = batted ? scene_->camera(CameraKind::Behind, t, w, h) : batter_view(c.left_handed());
+      // The batted ball framed below the HUD panel and the call under it (last frame's
+      // extent), so its apex never flies behind them.
+      const FrameWindow below_hud{0.0, std::clamp((hud_bottom_ + 8.0) / h, 0.0, 0.5), 1.0, 1.0};
+      const Camera cam = batted ? scene_->camera(CameraKind::Behind, t, w, h, below_hud) : batter_view(c.left_handed());
       scene_->set_people(cage_people(c, in.now));
       const bool moving = c.stage() == Stage::Pitching || batted;
       renderer.draw(scene_->build(cam, moving ? cage_scene_time(c, in.now) : t, w, h), cam);
@@ -225,7 +228,12 @@ class CageView final : public ModeView {
     const float panel_bottom = draw_stats(c, w, h);
     // The box fits the call (a miss explains itself at some length), below the HUD panel so
     // a long call does not run under its lines.
-    if (!c.call_text().empty()) draw_banner(c.call_text().c_str(), w, std::max(60.0f, panel_bottom + 14.0f));
+    const float banner_y = std::max(60.0f, panel_bottom + 14.0f);
+    hud_bottom_ = panel_bottom;
+    if (!c.call_text().empty()) {
+      draw_banner(c.call_text().c_str(), w, banner_y);
+      hud_bottom_ = banner_y + kBannerHeight;
+    }
     if (options_.pitches > 0 && static_cast<int>(c.swings().size()) >= options_.pitches && c.stage() == Stage::Called)
       ++done_frames_;
   }
@@ -235,6 +243,7 @@ class CageView final : public ModeView {
   CageViewOptions options_;
   std::unique_ptr<ShotScene> scene_;
   int done_frames_ = 0;
+  double hud_bottom_ = 0.0;  ///< px, the lowest the HUD panel and the call reached last frame
 };
 
 }  // namespace

@@ -20,7 +20,7 @@ void draw_banner(const char* text, int width, float y) {
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   const float text_w = ImGui::CalcTextSize(text).x;
   const ImVec2 pos(0.5f * (static_cast<float>(width) - text_w), y);
-  dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + text_w + 10, pos.y + 24), IM_COL32(0, 0, 0, 170), 4.0f);
+  dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + text_w + 10, pos.y + kBannerHeight), IM_COL32(0, 0, 0, 170), 4.0f);
   dl->AddText(pos, IM_COL32(255, 230, 120, 255), text);
 }
 

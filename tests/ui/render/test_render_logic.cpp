@@ -98,6 +98,40 @@ TEST_CASE("default cameras frame the whole shot inside the image", "[render][uni
   CHECK(std::abs(ball->y() - h / 2.0) < 0.25 * h);
 }
 
+// A view that draws a panel over the top of its image (the batting cage's HUD and its call)
+// frames the shot below it: Behind keeps every point inside the window, still filling it;
+// the whole image as the window is the default framing exactly.
+TEST_CASE("the behind camera frames the shot inside a window of the image", "[render][unit]") {
+  const ShotTrajectory shot = synthetic_shot();
+  const int w = 1280, h = 800;
+  const ShotFraming f = shot_framing(shot, shot.samples.back().t);
+  const Camera whole = frame_shot(CameraKind::Behind, f, w, h);
+  const Camera same = frame_shot(CameraKind::Behind, f, w, h, FrameWindow{});
+  CHECK(same.eye == whole.eye);
+  CHECK(same.target == whole.target);
+  CHECK(same.fov_y == whole.fov_y);
+  for (const FrameWindow win : {FrameWindow{0.0, 0.38, 1.0, 1.0}, FrameWindow{0.36, 0.0, 1.0, 1.0},
+                                FrameWindow{0.0, 0.0, 1.0, 0.6}, FrameWindow{0.1, 0.2, 0.7, 0.9}}) {
+    INFO("window " << win.left << " " << win.top << " " << win.right << " " << win.bottom);
+    const Camera c = frame_shot(CameraKind::Behind, f, w, h, win);
+    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+    for (const Vec3& p : f.points) {
+      const auto q = c.project(p, w, h);
+      REQUIRE(q);
+      xmin = std::min(xmin, q->x());
+      xmax = std::max(xmax, q->x());
+      ymin = std::min(ymin, q->y());
+      ymax = std::max(ymax, q->y());
+    }
+    CHECK(xmin >= win.left * w);
+    CHECK(xmax <= win.right * w);
+    CHECK(ymin >= win.top * h);
+    CHECK(ymax <= win.bottom * h);
+    // Not lost in a corner of it: the shot spans a good part of the window one way.
+    CHECK(std::max((xmax - xmin) / ((win.right - win.left) * w), (ymax - ymin) / ((win.bottom - win.top) * h)) > 0.5);
+  }
+}
+
 TEST_CASE("sample_at interpolates between samples and clamps to the shot", "[render][unit]") {
   ShotTrajectory s;
   s.samples.resize(2);

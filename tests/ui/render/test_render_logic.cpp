@@ -1,4 +1,5 @@
 // Rendering logic that needs no GL: camera framing, trail colouring, row flipping, labels.
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
@@ -13,6 +14,26 @@
 #include "physics/error.hpp"
 
 using namespace sweetspot;
+
+namespace {
+// The pixel box the points project into; every point must be in front of the camera.
+struct PixelBox {
+  double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+};
+template <class Points, class Position>
+PixelBox projected_box(const Camera& c, const Points& points, Position position, int w, int h) {
+  PixelBox b;
+  for (const auto& p : points) {
+    const auto q = c.project(position(p), w, h);
+    REQUIRE(q);
+    b.xmin = std::min(b.xmin, q->x());
+    b.xmax = std::max(b.xmax, q->x());
+    b.ymin = std::min(b.ymin, q->y());
+    b.ymax = std::max(b.ymax, q->y());
+  }
+  return b;
+}
+}  // namespace
 
 TEST_CASE("camera names parse and bad ones list the allowed names", "[render][unit]") {
   CHECK(parse_camera_kind("behind") == CameraKind::Behind);
@@ -47,15 +68,7 @@ TEST_CASE("default cameras frame the whole shot inside the image", "[render][uni
   for (auto k : {CameraKind::Behind, CameraKind::Side, CameraKind::Top}) {
     INFO(to_string(k));
     const Camera c = frame_shot(k, shot, shot.samples.back().t, w, h);
-    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
-    for (const auto& s : shot.samples) {
-      const auto p = c.project(s.position, w, h);
-      REQUIRE(p);
-      xmin = std::min(xmin, p->x());
-      xmax = std::max(xmax, p->x());
-      ymin = std::min(ymin, p->y());
-      ymax = std::max(ymax, p->y());
-    }
+    const auto [xmin, xmax, ymin, ymax] = projected_box(c, shot.samples, [](const TrajectorySample& s) { return s.position; }, w, h);
     // Inside with a margin, and not lost in a corner: the shot spans a good part of the image.
     CHECK(xmin > 0.03 * w);
     CHECK(xmax < 0.97 * w);
@@ -114,15 +127,7 @@ TEST_CASE("the behind camera frames the shot inside a window of the image", "[re
                                 FrameWindow{0.0, 0.0, 1.0, 0.6}, FrameWindow{0.1, 0.2, 0.7, 0.9}}) {
     INFO("window " << win.left << " " << win.top << " " << win.right << " " << win.bottom);
     const Camera c = frame_shot(CameraKind::Behind, f, w, h, win);
-    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
-    for (const Vec3& p : f.points) {
-      const auto q = c.project(p, w, h);
-      REQUIRE(q);
-      xmin = std::min(xmin, q->x());
-      xmax = std::max(xmax, q->x());
-      ymin = std::min(ymin, q->y());
-      ymax = std::max(ymax, q->y());
-    }
+    const auto [xmin, xmax, ymin, ymax] = projected_box(c, f.points, [](const Vec3& p) { return p; }, w, h);
     CHECK(xmin >= win.left * w);
     CHECK(xmax <= win.right * w);
     CHECK(ymin >= win.top * h);

@@ -106,14 +106,15 @@ void GolfPlay::choose_club() {
   if (r.finished()) return;
   // The caddie's club plays like the distance today: the wind, the lie, the ground; off the
   // green he points the aim where he would play (a dogleg's corner when the cup is out of
-  // reach), on it at the cup: the player reads the putt.
+  // reach, the way out from behind a tree), on it at the cup: the player reads the putt.
   aim_ = 0.0;
   if (r.lie() == "green") {
     club_ = bag_index("putter");
   } else {
     const StrokeInput plan = caddie().intend(r);
     club_ = bag_index(plan.club);
-    if (r.next_bend()) aim_ = plan.aim;
+    // Behind a tree he points the way out as well: his club aimed at the flag would strike it.
+    if (r.next_bend() || carry_here_blocked(plan.club)) aim_ = plan.aim;
     caddie_plan_ = plan;
   }
 }
@@ -127,10 +128,7 @@ double GolfPlay::carry_here(const std::string& club) const {
   StrokeInput in;
   in.club = club;
   const FlightSummary f = r.simulate(in).trajectory.summary;
-  // The first touch well above the ground under it: a tree's crown or trunk stopped the flight.
-  constexpr double kAboveGround = 0.5;  // m, more than any tee, ball or turf contact
-  const std::optional<SurfaceContact> under = r.ground_at(f.landing_position.x(), f.landing_position.z());
-  const bool blocked = under && f.landing_position.y() - under->point.y() > kAboveGround;
+  const bool blocked = r.first_touch_in_a_tree(f);
   carry_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), f.carry_m, blocked};
   return f.carry_m;
 }

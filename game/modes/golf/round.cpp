@@ -49,6 +49,12 @@ std::vector<GolfRound::LineStretch> GolfRound::ground_to_pin(double step) const 
   return out;
 }
 
+bool GolfRound::first_touch_in_a_tree(const FlightSummary& f) const {
+  constexpr double kAboveGround = 0.5;  // m, more than any tee, ball or turf contact
+  const std::optional<SurfaceContact> under = ground_at(f.landing_position.x(), f.landing_position.z());
+  return under && f.landing_position.y() - under->point.y() > kAboveGround;
+}
+
 std::string GolfRound::surface_at(const Vec3& p) const {
   const std::optional<SurfaceContact> hit = ground_at(p.x(), p.z());
   return hit ? to_string(hole().world->world->material(hit->material).kind) : "out_of_bounds";

@@ -114,6 +114,9 @@ class GolfRound {
   static constexpr double kMaxRelief = 15.0;  ///< m searched for ground off the path
   /// The ground straight below (x, z) on this hole's world; none off its ground.
   std::optional<SurfaceContact> ground_at(double x, double z) const;
+  /// The flight's first touch was well above the ground under it: a tree's crown or trunk
+  /// stopped it, not the turf.
+  bool first_touch_in_a_tree(const FlightSummary& f) const;
   /// The straight line from the ball to the cup cut into equal stretches of at most `step`
   /// m: each stretch's length and the ground under its middle (none off the world's ground).
   /// What a putt along it rolls over.

@@ -426,3 +426,22 @@ TEST_CASE("the club's carry from here is the stroke's own physics: the hole's wi
   CHECK(b.carry_here("5-iron") == b.round().simulate(in).trajectory.summary.carry_m);
   CHECK(a.carry_here("putter") == 0.0);
 }
+
+TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", "[modes][golf]") {
+  // The National's 9th from the left rough ~225 m out: a tree ~15 m ahead on the line to the
+  // flag (the bot's test, test_golf_round.cpp). The player is handed the caddie's club and
+  // line: a club aimed at the flag would strike the tree.
+  Course course = load_course(test::assets(), "national");
+  course.holes = {course.holes[8]};
+  SurfaceContact hit;
+  REQUIRE(ground_under(*course.holes[0].world->world, -307.4, -473.5, 400.0, 420.0, &hit));
+  course.holes[0].tee = hit.point;
+  const GolfPlay play(test::assets(), course, solo("amateur"));
+  REQUIRE(play.caddie_plan());
+  INFO(play.club() << " aimed " << play.aim() << " rad");
+  CHECK(play.carry_here_blocked(play.club()));  // straight at the flag it would not get out
+  CHECK(play.aim() == play.caddie_plan()->aim);
+  CHECK(std::abs(play.aim()) > 0.05);
+  StrokeInput in = *play.caddie_plan();
+  CHECK_FALSE(play.round().first_touch_in_a_tree(play.round().simulate(in).trajectory.summary));
+}

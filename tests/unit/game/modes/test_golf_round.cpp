@@ -235,3 +235,34 @@ TEST_CASE("out of reach with a bend close ahead, a bot plays past the bend, not 
   }
   CHECK(checked >= 2);
 }
+
+// Behind a tree a golfer takes a way out: a line beside it, or a club that flies under or over
+// it. On the National's 9th, from the left rough ~225 m out, a tree stands ~15 m ahead on the
+// line to the flag; the amateur bot used to hit its 3-wood into it (carry 14 m) every time.
+TEST_CASE("behind a tree, a bot plays a way out that clears it, not a club into its branches", "[golf][bot]") {
+  const GolferSkill& amateur = golfer_skill("amateur");
+  Course course = load_course(test::assets(), "national");
+  course.holes = {course.holes[8]};
+  SurfaceContact hit;
+  REQUIRE(ground_under(*course.holes[0].world->world, -307.4, -473.5, 400.0, 420.0, &hit));
+  course.holes[0].tee = hit.point;
+  const GolfRound round(test::assets(), course, amateur);
+  const GolfBot bot(test::assets(), amateur, 1);
+  // Straight at the flag every long club strikes the tree.
+  for (const char* club : {"3-wood", "5-wood", "hybrid"}) {
+    StrokeInput straight;
+    straight.club = club;
+    INFO(club << " at the flag");
+    REQUIRE(round.first_touch_in_a_tree(round.simulate(straight).trajectory.summary));
+  }
+  const StrokeInput in = bot.intend(round);
+  const ShotResult r = round.simulate(in);
+  const Vec3& rest = r.trajectory.summary.rest_position;
+  const double to_cup = std::hypot(course.holes[0].pin.x() - rest.x(), course.holes[0].pin.z() - rest.z());
+  INFO(in.club << " aimed " << in.aim << " rad: carry " << r.trajectory.summary.carry_m << " m, " << to_cup << " m left on the "
+               << round.surface_at(rest));
+  CHECK_FALSE(round.first_touch_in_a_tree(r.trajectory.summary));
+  CHECK(r.end == ShotEnd::Rest);
+  CHECK(to_cup < round.to_pin() - 60.0);  // a real advance toward the cup, not a chip sideways
+  CHECK(round.surface_at(rest) != "sand");
+}

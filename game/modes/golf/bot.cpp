@@ -58,6 +58,8 @@ double lie_cost(const std::string& surface) {
 /// is luck (the plan sees one bounce of many), and Broadie's recovery shots, from behind trees,
 /// cost a tour player ~0.5 strokes more than the same distance from the rough: ~100 m.
 constexpr double kTreeCost = 100.0;
+/// A penalty stroke in metres of fairway at Broadie's ~0.0045 strokes per metre: ~220 m.
+constexpr double kStrokeCost = 220.0;
 /// The ways out of trees a bot tries: lines this far apart (rad, ~11°) on each side of the
 /// planned one, up to ~57° off it, with every other club from the planned one down.
 constexpr double kWayOutStep = 0.2;
@@ -263,9 +265,10 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
     Vec3 rest = Vec3::Zero();  ///< where it stops (or is lost)
   };
   // `aim` starts the correction (a neighbour's); `iterations` simulations, the last one told.
-  auto tune = [&](const std::string& club, double power, double aim, int iterations) {
+  auto tune = [&](const std::string& club, double power, double aim, int iterations, double accuracy_ms = 0.0) {
     Tried t;
     t.in.club = club;
+    t.in.meter.accuracy_ms = accuracy_ms;
     for (int i = 0; i < iterations; ++i) {
       t.in.aim = aim;
       t.in.meter.power = power;
@@ -356,23 +359,33 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   }
   // Blocked: the plan flies into a tree. A player takes the way out that leaves the best next
   // shot: a line off to the side of it, or a club that flies under or over it, judged by how
-  // far from the cup it stops and on what (the tree-struck plan too, its bounce counted a risk).
+  // far from the cup it stops and on what, struck as this golfer strikes it: the mean over
+  // the plan and its misses either way of half and one standard deviation of the meter's
+  // timing, so a gap the ball only threads when struck perfectly is not taken.
   if (best.in_tree) {
     const Vec3& pin = round.hole().pin;
     const auto cost = [&](const Tried& t) {
-      if (t.lost) return std::numeric_limits<double>::infinity();
+      if (t.lost) return round.to_pin() + kStrokeCost;  // stroke and distance, or a drop back
       const double to_cup = std::hypot(pin.x() - t.rest.x(), pin.z() - t.rest.z());
       return to_cup + lie_cost(round.surface_at(t.rest)) + (t.in_tree ? kTreeCost : 0.0);
     };
-    double best_cost = cost(best);
+    const double miss = skill_.accuracy_sd_ms;
+    const auto as_struck = [&](const std::string& club, double aim) {
+      const Tried planned = tune(club, 1.0, aim, 1);
+      double sum = cost(planned);
+      for (const double f : {-1.0, -0.5, 0.5, 1.0}) sum += cost(tune(club, 1.0, aim, 1, f * miss));
+      return std::make_pair(planned, sum / 5.0);
+    };
+    double best_cost = as_struck(best.in.club, best.in.aim).second;
     const std::size_t planned = static_cast<std::size_t>(
         std::find_if(stock_.begin(), stock_.end(), [&](const Stock& k) { return k.club == best.in.club; }) - stock_.begin());
     for (std::size_t k = planned; k < stock_.size(); k += kWayOutClubStride) {
       if (!allowed(stock_[k])) continue;
       for (int i = -kWayOutLines; i <= kWayOutLines; ++i) {
         const double a = std::clamp(toward + kWayOutStep * i, StrokeInput::kAim.min, StrokeInput::kAim.max);
-        const Tried t = tune(stock_[k].club, 1.0, a, 1);
-        const double c = cost(t);
+        // Struck perfectly it must already beat the best: only then are its misses tried.
+        if (cost(tune(stock_[k].club, 1.0, a, 1)) >= best_cost) continue;
+        const auto [t, c] = as_struck(stock_[k].club, a);
         if (c < best_cost) best = t, best_cost = c;
       }
     }

@@ -113,7 +113,8 @@ void GolfPlay::choose_club() {
   } else {
     const StrokeInput plan = caddie().intend(r);
     club_ = bag_index(plan.club);
-    // Behind a tree he points the way out as well: his club aimed at the flag would strike it.
+    // Behind a tree he points the way out as well: his club aimed at the flag (the aim is
+    // still 0 here) would strike it.
     if (r.next_bend() || carry_here_blocked(plan.club)) aim_ = plan.aim;
     caddie_plan_ = plan;
   }
@@ -123,13 +124,14 @@ double GolfPlay::carry_here(const std::string& club) const {
   const GolfRound& r = round();
   if (r.finished() || club == "putter") return 0.0;
   if (carry_here_ && carry_here_->player == player_ && carry_here_->club == club && carry_here_->ball == r.ball() &&
-      carry_here_->hole == group_.hole_index())
+      carry_here_->hole == group_.hole_index() && carry_here_->aim == aim_)
     return carry_here_->carry;
   StrokeInput in;
   in.club = club;
+  in.aim = aim_;
   const FlightSummary f = r.simulate(in).trajectory.summary;
   const bool blocked = r.first_touch_in_a_tree(f);
-  carry_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), f.carry_m, blocked};
+  carry_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), aim_, f.carry_m, blocked};
   return f.carry_m;
 }
 

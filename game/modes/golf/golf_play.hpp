@@ -124,9 +124,9 @@ class GolfPlay {
   const std::string& putt_crosses() const { return putt_crosses_; }
   /// The preview is offered this near the cup (m): past it nobody putts.
   static constexpr double kPuttGuideReach = 40.0;
-  /// A full, square swing of `club` at the pin from where the ball lies, in this hole's wind
-  /// and off this lie: its carry (m), from the same physics as the stroke. The caddie picks
-  /// by it; the bag's carries are calm air on flat fairway.
+  /// A full, square swing of `club` along the aim from where the ball lies, in this hole's
+  /// wind and off this lie: its carry (m), from the same physics as the stroke. The caddie
+  /// picks by it; the bag's carries are calm air on flat fairway.
   double carry_here(const std::string& club) const;
   /// That carry ends against something standing above the ground (a tree), not on it.
   bool carry_here_blocked(const std::string& club) const;
@@ -189,6 +189,7 @@ class GolfPlay {
     std::string club;
     Vec3 ball = Vec3::Zero();
     std::size_t hole = 0;
+    double aim = 0.0;
     double carry = 0.0;
     bool blocked = false;
   };

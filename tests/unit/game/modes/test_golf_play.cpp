@@ -439,9 +439,14 @@ TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", 
   const GolfPlay play(test::assets(), course, solo("amateur"));
   REQUIRE(play.caddie_plan());
   INFO(play.club() << " aimed " << play.aim() << " rad");
-  CHECK(play.carry_here_blocked(play.club()));  // straight at the flag it would not get out
+  StrokeInput straight;
+  straight.club = play.club();
+  CHECK(play.round().first_touch_in_a_tree(play.round().simulate(straight).trajectory.summary));  // at the flag: the tree
   CHECK(play.aim() == play.caddie_plan()->aim);
   CHECK(std::abs(play.aim()) > 0.05);
   StrokeInput in = *play.caddie_plan();
   CHECK_FALSE(play.round().first_touch_in_a_tree(play.round().simulate(in).trajectory.summary));
+  // The HUD's carry from here is along that aim: clear of the tree, the stroke's own carry.
+  CHECK_FALSE(play.carry_here_blocked(play.club()));
+  CHECK(play.carry_here(play.club()) == play.round().simulate(in).trajectory.summary.carry_m);
 }

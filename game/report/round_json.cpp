@@ -230,14 +230,16 @@ std::string group_table(const GolfGroup& g) {
   };
   // Each player's column: gross strokes, a '*' per stroke received, the putts in brackets, the
   // penalty strokes (out of bounds, water, unplayable) as "Np", so a 6 with one putt reads.
-  std::string head = "hole par  SI";
+  // The first column is as wide as the totals' labels ("strokes"), so each total's par sits
+  // under "par".
+  std::string head = "hole     par  SI";
   for (const GolfPlayer& p : g.players()) head += "  " + pad(p.name.substr(0, 14), 14);
   if (s.format == GolfFormat::Match) head += "  match";
   if (s.format == GolfFormat::Skins) head += "  skin";
   out += head + "\n";
   for (std::size_t h = 0; h < s.holes; ++h) {
     const CourseHole& ch = g.course().holes[h];
-    std::snprintf(cell, sizeof cell, "%4d %3d %3d", ch.number, ch.par, ch.stroke_index);
+    std::snprintf(cell, sizeof cell, "%4d     %3d %3d", ch.number, ch.par, ch.stroke_index);
     std::string line = cell;
     for (std::size_t p = 0; p < n; ++p) {
       const PlayerStanding& ps = s.players[p];
@@ -259,7 +261,7 @@ std::string group_table(const GolfGroup& g) {
     out += line + "\n";
   }
   auto sum_row = [&](const char* label, int par, auto value) {
-    std::snprintf(cell, sizeof cell, "%-8s %3s", label, par >= 0 ? std::to_string(par).c_str() : "");
+    std::snprintf(cell, sizeof cell, "%-8s %3s    ", label, par >= 0 ? std::to_string(par).c_str() : "");
     std::string line = cell;
     for (std::size_t p = 0; p < n; ++p) line += "  " + pad(value(s.players[p]), 14);
     out += line + "\n";

@@ -33,9 +33,11 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
 /// The meter bar, bottom centre: −15 % to 110 %, the accuracy mark as wide as the perfect
 /// window, the marker, and where the last swing's clicks landed.
 struct MeterBar {
+  /// The meter's fractions the bar spans: 15 % past the accuracy mark to 110 % power.
+  static constexpr double kLow = -0.15, kHigh = 1.1;
   float x0 = 0.0f, y0 = 0.0f, bw = 560.0f, bh = 26.0f;
   double shown = 0.0;  ///< the marker's position now
-  float at(double f) const { return x0 + static_cast<float>((f + 0.15) * (bw / 1.25f)); }
+  float at(double f) const { return x0 + static_cast<float>((f - kLow) * (bw / (kHigh - kLow))); }
 };
 MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optional<MeterClock>& last, bool putting,
                         double window_ms, int w, int h, double now);

@@ -112,9 +112,9 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     for (const GolfBot::Stock& s : play.caddie().stock())
       if (s.club == club) carry = s.carry;
     if (club == "putter") ImGui::Text("Club: putter");
-    else if (play.carry_here_blocked(club))
+    else if (const std::optional<double> tree = play.tree_in_the_way(club))
       ImGui::Text("Club: %s (carry %s, a tree in the way at %s)", club.c_str(), units.distance(carry).c_str(),
-                  units.distance(play.carry_here(club)).c_str());
+                  units.distance(*tree).c_str());
     else ImGui::Text("Club: %s (carry %s, plays %s here)", club.c_str(), units.distance(carry).c_str(),
                      units.distance(play.carry_here(club)).c_str());
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
@@ -207,9 +207,11 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optio
     // Where the last swing's clicks landed: power (white) and accuracy (red). Only a stroke
     // of the same kind: a wedge's power mark on the putt's scale would read as a length.
     dl->AddLine(ImVec2(at(last->power()), y0 - 6), ImVec2(at(last->power()), y0 + bh + 6), IM_COL32(255, 255, 255, 150), 2.0f);
-    if (!last->putting())
-      dl->AddLine(ImVec2(at(last->accuracy_position()), y0 - 6), ImVec2(at(last->accuracy_position()), y0 + bh + 6),
-                  IM_COL32(255, 80, 60, 170), 2.0f);
+    if (!last->putting()) {
+      // A click past the bar's ends (up to 200 ms late) is marked at the end it went past.
+      const double a = std::clamp(last->accuracy_position(), MeterBar::kLow, MeterBar::kHigh);
+      dl->AddLine(ImVec2(at(a), y0 - 6), ImVec2(at(a), y0 + bh + 6), IM_COL32(255, 80, 60, 170), 2.0f);
+    }
   }
   return bar;
 }

@@ -115,7 +115,7 @@ void GolfPlay::choose_club() {
     club_ = bag_index(plan.club);
     // Behind a tree he points the way out as well: his club aimed at the flag (the aim is
     // still 0 here) would strike it.
-    if (r.next_bend() || carry_here_blocked(plan.club)) aim_ = plan.aim;
+    if (r.next_bend() || tree_in_the_way(plan.club)) aim_ = plan.aim;
     caddie_plan_ = plan;
   }
 }
@@ -130,14 +130,27 @@ double GolfPlay::carry_here(const std::string& club) const {
   in.club = club;
   in.aim = aim_;
   const FlightSummary f = r.simulate(in).trajectory.summary;
-  const bool blocked = r.first_touch_in_a_tree(f);
-  carry_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), aim_, f.carry_m, blocked};
+  carry_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), aim_, 1.0, f.carry_m, false};
   return f.carry_m;
 }
 
-bool GolfPlay::carry_here_blocked(const std::string& club) const {
-  carry_here(club);
-  return carry_here_ && carry_here_->blocked;
+std::optional<double> GolfPlay::tree_in_the_way(const std::string& club) const {
+  const GolfRound& r = round();
+  if (r.finished() || club == "putter") return std::nullopt;
+  // A pitch the caddie means as a part swing is judged at its power: a full swing's flight
+  // into a tree 60 yd off says nothing of a 25 % chip.
+  const double power =
+      caddie_plan_ && caddie_plan_->club == club && caddie_plan_->meter.power < 1.0 ? caddie_plan_->meter.power : 1.0;
+  if (blocked_here_ && blocked_here_->player == player_ && blocked_here_->club == club && blocked_here_->ball == r.ball() &&
+      blocked_here_->hole == group_.hole_index() && blocked_here_->aim == aim_ && blocked_here_->power == power)
+    return blocked_here_->blocked ? std::optional<double>(blocked_here_->carry) : std::nullopt;
+  StrokeInput in;
+  in.club = club;
+  in.aim = aim_;
+  in.meter.power = power;
+  const FlightSummary f = r.simulate(in).trajectory.summary;
+  blocked_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, r.first_touch_in_a_tree(f)};
+  return blocked_here_->blocked ? std::optional<double>(f.carry_m) : std::nullopt;
 }
 
 void GolfPlay::begin_turn(double t) {
@@ -299,9 +312,11 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
                   100.0 * last_meter_->power, rest.c_str());
   } else if (last_meter_) {
     const double late = last_click_ ? last_click_->click_error_ms() : last_meter_->accuracy_ms;
-    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f %%, %s %.0f ms%s", who.name.c_str(), stroke_no,
+    // The meter plays a swing whose last click never came at its latest (MeterInput::kAccuracy).
+    const bool at_the_limit = std::abs(late) >= MeterInput::kAccuracy.max - 0.5;
+    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f %%, %s %.0f ms%s%s", who.name.c_str(), stroke_no,
                   s.club.c_str(), 100.0 * last_meter_->power, std::abs(late) < 0.5 ? "on time" : late > 0 ? "Late" : "Early",
-                  std::abs(late), rest.c_str());
+                  std::abs(late), at_the_limit ? " (the meter's limit)" : "", rest.c_str());
   } else {
     std::snprintf(msg, sizeof msg, "%s, stroke %d: %s%s%s", who.name.c_str(), stroke_no, s.club.c_str(),
                   who.human ? " (the caddie's swing)" : "", rest.c_str());

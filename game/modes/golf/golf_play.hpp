@@ -128,8 +128,10 @@ class GolfPlay {
   /// wind and off this lie: its carry (m), from the same physics as the stroke. The caddie
   /// picks by it; the bag's carries are calm air on flat fairway.
   double carry_here(const std::string& club) const;
-  /// That carry ends against something standing above the ground (a tree), not on it.
-  bool carry_here_blocked(const std::string& club) const;
+  /// Where the stroke the player would play with `club` along the aim (the caddie's part
+  /// swing when he planned one with it, else a full swing) ends its flight against something
+  /// standing above the ground, a tree: its carry (m) to it. None when it lands on the ground.
+  std::optional<double> tree_in_the_way(const std::string& club) const;
 
   /// Aim steps: a degree for a full shot, a quarter of one for a putt.
   static constexpr double kAimStep = 0.017453292519943295;   // rad (1°)
@@ -190,10 +192,12 @@ class GolfPlay {
     Vec3 ball = Vec3::Zero();
     std::size_t hole = 0;
     double aim = 0.0;
+    double power = 1.0;
     double carry = 0.0;
     bool blocked = false;
   };
   mutable std::optional<CarryHere> carry_here_;  ///< carry_here()'s last answer
+  mutable std::optional<CarryHere> blocked_here_;  ///< tree_in_the_way()'s last answer
 };
 
 const char* to_string(GolfPlay::Stage s);

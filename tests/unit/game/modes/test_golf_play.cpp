@@ -447,6 +447,27 @@ TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", 
   StrokeInput in = *play.caddie_plan();
   CHECK_FALSE(play.round().first_touch_in_a_tree(play.round().simulate(in).trajectory.summary));
   // The HUD's carry from here is along that aim: clear of the tree, the stroke's own carry.
-  CHECK_FALSE(play.carry_here_blocked(play.club()));
+  CHECK_FALSE(play.tree_in_the_way(play.club()));
   CHECK(play.carry_here(play.club()) == play.round().simulate(in).trajectory.summary.carry_m);
+}
+
+TEST_CASE("a pitch's tree warning is the pitch's: a full wedge into the trees says nothing of it", "[modes][golf]") {
+  // The National's 10th, calm, in the rough 15 m from the cup: a full lob wedge at the flag
+  // flies into the trees behind the green (carry ~43 m); the caddie's part swing lands short
+  // of them, and the panel warns of no tree.
+  Course course = load_course(test::assets(), "national");
+  course.holes = {course.holes[9]};
+  course.holes[0].wind_speed = 0.0;
+  SurfaceContact hit;
+  REQUIRE(ground_under(*course.holes[0].world->world, 93.5, -407.7, 400.0, 420.0, &hit));
+  course.holes[0].tee = hit.point;
+  const GolfPlay play(test::assets(), course, solo("amateur"));
+  REQUIRE(play.caddie_plan());
+  INFO(play.club() << " at " << play.caddie_plan()->meter.power << " power, aimed " << play.aim());
+  REQUIRE(play.caddie_plan()->meter.power < 0.9);
+  StrokeInput full;
+  full.club = play.club();
+  full.aim = play.aim();
+  REQUIRE(play.round().first_touch_in_a_tree(play.round().simulate(full).trajectory.summary));
+  CHECK_FALSE(play.tree_in_the_way(play.club()));
 }

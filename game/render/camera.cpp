@@ -69,10 +69,11 @@ Camera chase_camera(const ShotFraming& framing) {
   return c;
 }
 
-// The landing area from behind and above, along the shot's aim, 25 degrees down: the
-// descending leg, the bounces and the ball all in view.
+// The landing area from behind and above, along the way the ball came down, 25 degrees
+// down: the descending leg, the bounces and the ball all in view.
 Camera landing_camera(const ShotFraming& framing, double aspect) {
-  const Vec3 f = (framing.aim * std::cos(deg_to_rad(25.0)) - Vec3::UnitY() * std::sin(deg_to_rad(25.0))).normalized();
+  const Vec3 f =
+      (framing.landing_aim * std::cos(deg_to_rad(25.0)) - Vec3::UnitY() * std::sin(deg_to_rad(25.0))).normalized();
   std::vector<Vec3> points = framing.finish;
   // At least ~12 m of ground around the ball, so a ball that stopped by the landing point
   // is seen on its patch of grass, not as a speck filling the image.
@@ -205,6 +206,9 @@ ShotFraming shot_framing(const ShotTrajectory& trajectory, double t) {
   Vec3 d = s.back().position - f.launch;
   d.y() = 0;
   f.aim = d.norm() > 1.0 ? d.normalized() : Vec3::UnitX();
+  Vec3 to_landing = trajectory.summary.landing_position - f.launch;
+  to_landing.y() = 0;
+  f.landing_aim = trajectory.summary.hang_time_s > 0.0 && to_landing.norm() > 1.0 ? to_landing.normalized() : f.aim;
   const TrajectorySample at = sample_at(trajectory, t);
   f.ball = at.position;
   f.ball_velocity = at.velocity;

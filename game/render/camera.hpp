@@ -61,6 +61,10 @@ struct ShotFraming {
   std::vector<Vec3> points;           ///< m; trajectory samples (decimated is fine)
   Vec3 launch = Vec3::Zero();         ///< m
   Vec3 aim = Vec3::UnitX();           ///< unit, horizontal: launch -> rest (or +x); Follow uses it at rest
+  /// unit, horizontal: launch -> first landing (or `aim`): the way the ball came down, which
+  /// the landing view looks along. A ball that rebounds off a tree or a wall can rest beside
+  /// or behind where it came from; the landing is still ahead of it.
+  Vec3 landing_aim = Vec3::UnitX();
   Vec3 ball = Vec3::Zero();           ///< m, ball centre at the time shown
   Vec3 ball_velocity = Vec3::Zero();  ///< m/s at the time shown (Follow looks along it)
   /// s since the first landing at the time shown (negative before it); -1e9 when the shot

@@ -41,6 +41,25 @@ Intents golf_intents(const std::vector<KeyPress>& keys) {
 
 namespace {
 
+/// The view of a stroke at address: behind ball `b` down the aim line `d` (unit, flat).
+Camera address_camera_at(const Vec3& b, const Vec3& d, bool putt, double to_pin) {
+  // Behind the ball looking down the aim line: low and close for a putt; for a full shot
+  // behind the golfer (full_shot_address_camera).
+  Camera c;
+  if (putt) {
+    // 4 m back and 0.4 m right of the line, 1.9 m up: the golfer addressing from the line's
+    // left stands aside of the line to the cup instead of filling the view's left half, and
+    // the flag of a putt up to ~40 ft stays in the frame.
+    const Vec3 right(-d.z(), 0.0, d.x());
+    c.eye = b - 4.0 * d + 0.4 * right + Vec3(0.0, 1.9, 0.0);
+    c.target = b + (std::min(to_pin, 12.0) + 0.5) * d;
+    c.target.y() = b.y() - 0.2;
+    c.fov_y = deg_to_rad(45.0);
+    return c;
+  }
+  return full_shot_address_camera(b, d);
+}
+
 Vec3 flat_unit(const Vec3& from, const Vec3& to) {
   Vec3 d(to.x() - from.x(), 0.0, to.z() - from.z());
   const double n = d.norm();
@@ -304,24 +323,7 @@ Camera GolfView::green_camera(bool from_pin) const {
 
 Camera GolfView::address_camera() const {
   const GolfRound& r = play_->round();
-  Camera c;
-  const Vec3 b = play_->ball_centre();
-  const bool putt = r.lie() == "green";
-  const Vec3 d = play_->aim_direction();
-  // Behind the ball looking down the aim line: low and close for a putt; for a full shot
-  // behind the golfer (full_shot_address_camera).
-  if (putt) {
-    // 4 m back and 0.4 m right of the line, 1.9 m up: the golfer addressing from the line's
-    // left stands aside of the line to the cup instead of filling the view's left half, and
-    // the flag of a putt up to ~40 ft stays in the frame.
-    const Vec3 right(-d.z(), 0.0, d.x());
-    c.eye = b - 4.0 * d + 0.4 * right + Vec3(0.0, 1.9, 0.0);
-    c.target = b + (std::min(r.to_pin(), 12.0) + 0.5) * d;
-    c.target.y() = b.y() - 0.2;
-    c.fov_y = deg_to_rad(45.0);
-    return c;
-  }
-  return full_shot_address_camera(b, d);
+  return address_camera_at(play_->ball_centre(), play_->aim_direction(), r.lie() == "green", r.to_pin());
 }
 
 Camera GolfView::high_camera() const {
@@ -486,10 +488,27 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       // A stroke struck before its player's address was ever drawn (Enter lets a bot play at
       // once) would hold the last view at address, the previous player's, for the swing:
       // a chip watched from the tee 150 m away. Then the view from behind this ball instead.
+      // So is a view that looks another way: the previous player's, aimed down his own line
+      // from a ball beside this one (the ball would leave the picture sideways).
       const Vec3 launch = play_->last_shot().launch_state.position;
+      const Vec3 leaves = play_->last_shot().launch_state.velocity;
       constexpr double kAddressReach = 15.0;  // m: the full-shot view stands ~9.4 m from the ball
-      if (w > 0 && h > 0 && (!address_view_ || (address_view_->eye - launch).norm() > kAddressReach))
-        address_view_ = scene_->camera(CameraKind::Behind, 0.0, w, h);
+      constexpr double kAddressTurn = 0.52;   // rad (30°): more than any start line strays from the aim
+      const auto looks_along = [&](const Camera& c) {
+        const Vec3 f = c.forward();
+        const double a = std::atan2(f.z(), f.x()), b = std::atan2(leaves.z(), leaves.x());
+        return std::abs(std::remainder(a - b, 2.0 * kPi)) < kAddressTurn || std::hypot(leaves.x(), leaves.z()) < 1e-9;
+      };
+      if (w > 0 && h > 0 &&
+          (!address_view_ || (address_view_->eye - launch).norm() > kAddressReach || !looks_along(*address_view_))) {
+        // The view this stroke's address would have had: behind its ball, down the line it
+        // left on (the scene's Behind camera looks down the world's +x, a range's line).
+        Vec3 line(leaves.x(), 0.0, leaves.z());
+        line = line.norm() > 1e-9 ? line.normalized() : play_->aim_direction();
+        const Vec3& pin = play_->round().hole().pin;
+        address_view_ = address_camera_at(launch, line, play_->last_record().club == "putter",
+                                          std::hypot(pin.x() - launch.x(), pin.z() - launch.z()));
+      }
       stroke_view_ = address_view_;
       flight_shown_ = true;
       flight_struck_ = play_->struck_at();

@@ -69,3 +69,37 @@ TEST_CASE("follow turns smoothly from the chase to the landing view", "[render][
   const Vec3 ball = sample_at(shot, t).position;
   CHECK((frame_shot(CameraKind::Follow, shot, t, w, h).eye - ball).norm() < 6.0);
 }
+
+TEST_CASE("follow's landing view looks the way the ball came down, when it rebounds behind", "[render][unit]") {
+  // A ball that flies 50 m along +x, strikes a tree there and rebounds to rest 5 m behind
+  // its launch: the landing view looks down the flight (+x), not back along launch -> rest.
+  ShotTrajectory shot;
+  const double land = 3.0;
+  for (int i = 0; i <= 60; ++i) {
+    const double t = land * i / 60.0, x = 50.0 * i / 60.0;
+    TrajectorySample s;
+    s.t = t;
+    s.position = Vec3(x, 0.02 + 4.0 * 15.0 * (t / land) * (1.0 - t / land), 0.0);
+    s.velocity = Vec3(50.0 / land, 20.0 * (1.0 - 2.0 * t / land), 0.0);
+    shot.samples.push_back(s);
+  }
+  for (int i = 1; i <= 30; ++i) {
+    TrajectorySample s;
+    s.t = land + 0.1 * i;
+    s.position = Vec3(50.0 - 55.0 * i / 30.0, 0.02, 3.0 * i / 30.0);
+    s.velocity = Vec3(-18.0, 0.0, 1.0);
+    s.phase = Phase::Roll;
+    shot.samples.push_back(s);
+  }
+  shot.summary.hang_time_s = land;
+  shot.summary.landing_position = Vec3(50.0, 0.02, 0.0);
+  shot.summary.rest_position = shot.samples.back().position;
+  const int w = 960, h = 540;
+  const Camera c = frame_shot(CameraKind::Follow, shot, land, w, h);
+  INFO("forward " << c.forward().transpose());
+  CHECK(c.forward().x() > 0.8);
+  CHECK(in_frame(c, shot.summary.landing_position, w, h, 2.0));
+  // Half a second before the landing, mid-turn, the ball is still in the picture.
+  const double t = land - 0.5;
+  CHECK(in_frame(frame_shot(CameraKind::Follow, shot, t, w, h), sample_at(shot, t).position, w, h, 2.0));
+}

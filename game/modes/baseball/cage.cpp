@@ -79,8 +79,13 @@ void BattingCage::count_pitch(PitchResult r) {
     case PlateEnd::Strikeout:
       ++at_bats_.strikeouts;
       ++at_bats_.outs;
-      call_text_ = r == PitchResult::CalledStrike ? "Strikeout looking" : r == PitchResult::FoulTip ? "Strikeout on a foul tip"
-                                                                                                  : "Strikeout swinging";
+      // A swinging strike three keeps the miss's own words (early, late, over, under).
+      if (r == PitchResult::SwingingStrike && call_text_.rfind("Swinging strike", 0) == 0)
+        call_text_ = "Strikeout swinging" + call_text_.substr(std::string("Swinging strike").size());
+      else
+        call_text_ = r == PitchResult::CalledStrike ? "Strikeout looking"
+                     : r == PitchResult::FoulTip    ? "Strikeout on a foul tip"
+                                                    : "Strikeout swinging";
       break;
     case PlateEnd::Walk: ++at_bats_.walks; call_text_ = "Walk"; break;
     case PlateEnd::HitByPitch: ++at_bats_.hit_by_pitch; call_text_ = "Hit by pitch"; break;
@@ -206,7 +211,11 @@ void BattingCage::apply(const Intent& in) {
       if (stage_ != Stage::Pitching) {
         // Space between pitches calls for the next one, as P does.
         next_pitch(t);
-      } else if (in.kind == IntentKind::Swing && pitch_clock(t) >= 0.0) {  // he holds until the ball is on its way
+      } else if (in.kind == IntentKind::Swing && pitch_clock(t) < 0.0) {
+        // He holds until the ball is on its way: a key pressed during the windup swings at
+        // nothing, and says so.
+        call_text_ = "Too soon: swing once the pitcher lets the ball go";
+      } else if (in.kind == IntentKind::Swing) {
         SwingInput s;
         // The swing's timing as pressed; the physics takes it within its range (past ±150 ms
         // the bat is round or not yet started either way), the call says it as it was.

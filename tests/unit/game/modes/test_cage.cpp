@@ -150,3 +150,35 @@ TEST_CASE("a miss is called in a hitter's words, never '0 cm'", "[modes][basebal
   r.through = true;
   CHECK(miss_call(r, 48.0) == "Swinging strike: late by 48 ms, the bat not yet round");
 }
+
+TEST_CASE("a swing pressed during the windup is refused in words; strike three swinging keeps its miss", "[modes][baseball]") {
+  BattingCage cage(test::assets(), 3);
+  cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);
+  REQUIRE(cage.live());
+  double now = 1.0;
+  // Space during the windup: no swing, and the batter is told why.
+  cage.update({at(IntentKind::Pitch, now)}, now);
+  cage.update({at(IntentKind::Swing, now + 0.1)}, now + 0.1);
+  CHECK(cage.swings().empty());
+  CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("Too soon"));
+  now += (kWindupTime + cage.pitch().flight_time + BattingCage::kTakenAfter) / BattingCage::kPitchTimeScale + 0.01;
+  cage.update({}, now);
+  CHECK_THAT(cage.call_text(), !Catch::Matchers::Contains("Too soon"));  // the pitch's call replaces it
+  // Swinging 300 ms early at every pitch until the plate appearance ends: strike three
+  // swinging says how he missed, as strikes one and two did.
+  int guard = 0;
+  while (cage.at_bats().pa < 1 && ++guard < 20) {
+    now += 0.5;
+    cage.update({at(IntentKind::Pitch, now)}, now);
+    const double arrive = now + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
+    cage.update({at(IntentKind::Swing, arrive - 0.3 / BattingCage::kPitchTimeScale)}, arrive - 0.3 / BattingCage::kPitchTimeScale);
+    now = arrive + BattingCage::kTakenAfter / BattingCage::kPitchTimeScale + 0.5;
+    cage.update({}, now);
+    if (cage.at_bats().pa == 0) {
+      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 300 ms"));
+      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains(")"));  // the count follows
+    }
+  }
+  REQUIRE(cage.at_bats().strikeouts == 1);
+  CHECK_THAT(cage.call_text(), Catch::Matchers::StartsWith("Strikeout swinging: early by 300 ms"));
+}

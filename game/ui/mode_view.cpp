@@ -17,7 +17,8 @@ void fit_renderer(Renderer& renderer, int w, int h, double scale) {
 }
 
 void draw_banner(const char* text, int width, float y) {
-  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  // Under every window: the pause menu covers it, as it covers the picture.
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const float text_w = ImGui::CalcTextSize(text).x;
   const ImVec2 pos(0.5f * (static_cast<float>(width) - text_w), y);
   dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + text_w + 10, pos.y + kBannerHeight), IM_COL32(0, 0, 0, 170), 4.0f);

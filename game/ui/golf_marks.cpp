@@ -71,7 +71,13 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
   // Near enough, the scene's own flagstick and wind-blown flag read on their own: a drawn
   // flag over them would show two flags, one of them pointing a way the wind does not blow.
   constexpr float kSceneFlagReadsPx = 24.0f;
-  if (top && b.y - px(*top).y >= kSceneFlagReadsPx) return;
+  if (top && b.y - px(*top).y >= kSceneFlagReadsPx) {
+    // Its cloth does; its 25 mm pole is under 2 px wide until ~15 m away at 800 lines and
+    // drops out of the raster, leaving the cloth afloat over the cup: drawn 2 px wide then.
+    constexpr float kPoleDiameterOverHeight = 0.025f / 2.13f;  // assets/meshes/flag.obj
+    if ((b.y - px(*top).y) * kPoleDiameterOverHeight < 2.0f) dl->AddLine(b, px(*top), IM_COL32(240, 240, 240, 255), 2.0f);
+    return;
+  }
   dl->AddLine(b, t, IM_COL32(240, 240, 240, 255), 2.0f);
   const float fh = 0.3f * (b.y - t.y);
   dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));

@@ -505,9 +505,9 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
         // left on (the scene's Behind camera looks down the world's +x, a range's line).
         Vec3 line(leaves.x(), 0.0, leaves.z());
         line = line.norm() > 1e-9 ? line.normalized() : play_->aim_direction();
-        const Vec3& pin = play_->round().hole().pin;
+        // (A putt's view reaches as far as this putt rolled: the round may be over, no cup.)
         address_view_ = address_camera_at(launch, line, play_->last_record().club == "putter",
-                                          std::hypot(pin.x() - launch.x(), pin.z() - launch.z()));
+                                          play_->last_shot().trajectory.summary.total_m);
       }
       stroke_view_ = address_view_;
       flight_shown_ = true;

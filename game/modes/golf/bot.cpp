@@ -60,6 +60,10 @@ double lie_cost(const std::string& surface) {
 constexpr double kTreeCost = 100.0;
 /// A penalty stroke in metres of fairway at Broadie's ~0.0045 strokes per metre: ~220 m.
 constexpr double kStrokeCost = 220.0;
+/// Around the green a chip that stays off it is another chip, not a putt: from ~10 yd a tour
+/// player needs ~2.4-2.5 strokes from the rough and ~2.0 from 30 ft on the green, where a
+/// metre of putt is worth ~0.07 strokes (Broadie's baseline): the rough counts as ~5 m more.
+constexpr double kChipLieCost = 5.0;
 /// The ways out of trees a bot tries: lines this far apart (rad, ~11°) on each side of the
 /// planned one, up to ~57° off it, with every other club from the planned one down.
 constexpr double kWayOutStep = 0.2;
@@ -292,8 +296,25 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
     return t;
   };
   if (d < shortest.carry) {
-    // A partial wedge: carry grows a little faster than swing speed; start at that guess.
-    return tune(shortest.club, std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0), toward, 3).in;
+    // A partial wedge: carry grows a little faster than swing speed; start at that guess and
+    // correct the aim. Where rough or a bank lies short of the cup a ball landing there stops
+    // dead and one a little firmer runs past, so the correction's steps (d / reach)^0.8 can
+    // swing about the cup without settling: the power is then chosen among its neighbours,
+    // the one whose ball stops nearest the cup counted with its lie (a chip left in the rough
+    // is another chip).
+    const Tried first = tune(shortest.club, std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0), toward, 3);
+    const Vec3& pin = round.hole().pin;
+    const auto left = [&](const Tried& t) {
+      if (t.lost) return std::numeric_limits<double>::infinity();
+      return std::hypot(pin.x() - t.rest.x(), pin.z() - t.rest.z()) + kChipLieCost * (lie_cost(round.surface_at(t.rest)) > 0.0);
+    };
+    Tried best_chip = first;
+    double best_left = left(first);
+    for (double f = 0.6; f <= 1.45; f += 0.05) {
+      const Tried t = tune(shortest.club, std::clamp(first.in.meter.power * f, 0.05, 1.0), first.in.aim, 1);
+      if (const double l = left(t); l < best_left) best_chip = t, best_left = l;
+    }
+    return best_chip.in;
   }
   // The club that plays like the distance today: the still-air club, tried on the course
   // (the wind, the lie, the ground); a shorter one when it runs past the cup by more than the

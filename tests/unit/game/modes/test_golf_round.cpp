@@ -266,3 +266,33 @@ TEST_CASE("behind a tree, a bot plays a way out that clears it, not a club into 
   CHECK(to_cup < round.to_pin() - 60.0);  // a real advance toward the cup, not a chip sideways
   CHECK(round.surface_at(rest) != "sand");
 }
+
+// A chip over rough to a cup 14 m away (the National's 7th, the cup cut near the green's edge
+// by the day's pins): a ball landing in the rough stops dead, one a little firmer runs on,
+// and the bot's aim-and-power corrections swung about the cup and ended 6 m short in the
+// rough, where it chipped again (and again: lw, lw, lw, putt in a seeded round).
+TEST_CASE("a bot's chip over rough is planned to finish near the cup, not in the rough short of it", "[golf][bot]") {
+  Course course = load_course(test::assets(), "national");
+  course.holes = {course.holes[6]};
+  course.holes[0].wind_speed = 0.0;
+  const Terrain& world = *course.holes[0].world->world;
+  SurfaceContact ball, cup;
+  REQUIRE(ground_under(world, -37.54, -220.23, 400.0, 420.0, &ball));
+  REQUIRE(ground_under(world, -26.0, -212.0, 400.0, 420.0, &cup));
+  course.holes[0].tee = ball.point;
+  course.holes[0].pin = cup.point;
+  for (const char* skill : {"tour", "amateur"}) {
+    const GolferSkill& g = golfer_skill(skill);
+    const GolfRound round(test::assets(), course, g);
+    REQUIRE(round.to_pin() == Approx(14.2).margin(0.2));
+    const GolfBot bot(test::assets(), g, 1);
+    const StrokeInput in = bot.intend(round);
+    const ShotResult r = round.simulate(in);
+    const Vec3& rest = r.trajectory.summary.rest_position;
+    INFO(skill << ": " << in.club << " at " << in.meter.power << " power stops "
+               << std::hypot(cup.point.x() - rest.x(), cup.point.z() - rest.z()) << " m away on the " << round.surface_at(rest));
+    CHECK(in.meter.power < 1.0);
+    CHECK(round.surface_at(rest) == "green");
+    CHECK(std::hypot(cup.point.x() - rest.x(), cup.point.z() - rest.z()) < 2.5);
+  }
+}

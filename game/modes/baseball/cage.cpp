@@ -3,12 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 #include "game/modes/baseball/figures.hpp"
 #include "game/modes/replay.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
+namespace {
+/// How miss_call begins every miss; strike three swinging keeps the rest of its words.
+constexpr std::string_view kSwingingStrike = "Swinging strike";
+}  // namespace
 
 std::string miss_call(const SwingResult& r, double timing_ms) {
   // Why the bat missed: early or late, the ball past the end of the bat; or above or below it
@@ -80,8 +85,8 @@ void BattingCage::count_pitch(PitchResult r) {
       ++at_bats_.strikeouts;
       ++at_bats_.outs;
       // A swinging strike three keeps the miss's own words (early, late, over, under).
-      if (r == PitchResult::SwingingStrike && call_text_.rfind("Swinging strike", 0) == 0)
-        call_text_ = "Strikeout swinging" + call_text_.substr(std::string("Swinging strike").size());
+      if (r == PitchResult::SwingingStrike && call_text_.starts_with(kSwingingStrike))
+        call_text_ = "Strikeout swinging" + call_text_.substr(kSwingingStrike.size());
       else
         call_text_ = r == PitchResult::CalledStrike ? "Strikeout looking"
                      : r == PitchResult::FoulTip    ? "Strikeout on a foul tip"

@@ -306,7 +306,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
     const Vec3& pin = round.hole().pin;
     const auto left = [&](const Tried& t) {
       if (t.lost) return std::numeric_limits<double>::infinity();
-      return std::hypot(pin.x() - t.rest.x(), pin.z() - t.rest.z()) + kChipLieCost * (lie_cost(round.surface_at(t.rest)) > 0.0);
+      return std::hypot(pin.x() - t.rest.x(), pin.z() - t.rest.z()) + kChipLieCost * (lie_rank(round.surface_at(t.rest)) > 0);
     };
     Tried best_chip = first;
     double best_left = left(first);
@@ -400,13 +400,13 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       return to_cup + lie_cost(round.surface_at(t.rest)) + (t.in_tree ? kTreeCost : 0.0);
     };
     const double miss = skill_.accuracy_sd_ms;
-    const auto as_struck = [&](const std::string& club, double aim) {
-      const Tried planned = tune(club, 1.0, aim, 1);
+    // `planned`, struck perfectly, and its misses: the mean cost.
+    const auto as_struck = [&](const Tried& planned) {
       double sum = cost(planned);
-      for (const double f : {-1.0, -0.5, 0.5, 1.0}) sum += cost(tune(club, 1.0, aim, 1, f * miss));
-      return std::make_pair(planned, sum / 5.0);
+      for (const double f : {-1.0, -0.5, 0.5, 1.0}) sum += cost(tune(planned.in.club, 1.0, planned.in.aim, 1, f * miss));
+      return sum / 5.0;
     };
-    double best_cost = as_struck(best.in.club, best.in.aim).second;
+    double best_cost = as_struck(tune(best.in.club, 1.0, best.in.aim, 1));
     const std::size_t planned = static_cast<std::size_t>(
         std::find_if(stock_.begin(), stock_.end(), [&](const Stock& k) { return k.club == best.in.club; }) - stock_.begin());
     for (std::size_t k = planned; k < stock_.size(); k += kWayOutClubStride) {
@@ -414,9 +414,9 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       for (int i = -kWayOutLines; i <= kWayOutLines; ++i) {
         const double a = std::clamp(toward + kWayOutStep * i, StrokeInput::kAim.min, StrokeInput::kAim.max);
         // Struck perfectly it must already beat the best: only then are its misses tried.
-        if (cost(tune(stock_[k].club, 1.0, a, 1)) >= best_cost) continue;
-        const auto [t, c] = as_struck(stock_[k].club, a);
-        if (c < best_cost) best = t, best_cost = c;
+        const Tried t = tune(stock_[k].club, 1.0, a, 1);
+        if (cost(t) >= best_cost) continue;
+        if (const double c = as_struck(t); c < best_cost) best = t, best_cost = c;
       }
     }
   }

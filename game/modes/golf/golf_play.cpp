@@ -120,37 +120,34 @@ void GolfPlay::choose_club() {
   }
 }
 
-double GolfPlay::carry_here(const std::string& club) const {
+const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double power) const {
   const GolfRound& r = round();
-  if (r.finished() || club == "putter") return 0.0;
-  if (carry_here_ && carry_here_->player == player_ && carry_here_->club == club && carry_here_->ball == r.ball() &&
-      carry_here_->hole == group_.hole_index() && carry_here_->aim == aim_)
-    return carry_here_->carry;
-  StrokeInput in;
-  in.club = club;
-  in.aim = aim_;
-  const FlightSummary f = r.simulate(in).trajectory.summary;
-  carry_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), aim_, 1.0, f.carry_m, false};
-  return f.carry_m;
-}
-
-std::optional<double> GolfPlay::tree_in_the_way(const std::string& club) const {
-  const GolfRound& r = round();
-  if (r.finished() || club == "putter") return std::nullopt;
-  // A pitch the caddie means as a part swing is judged at its power: a full swing's flight
-  // into a tree 60 yd off says nothing of a 25 % chip.
-  const double power =
-      caddie_plan_ && caddie_plan_->club == club && caddie_plan_->meter.power < 1.0 ? caddie_plan_->meter.power : 1.0;
-  if (blocked_here_ && blocked_here_->player == player_ && blocked_here_->club == club && blocked_here_->ball == r.ball() &&
-      blocked_here_->hole == group_.hole_index() && blocked_here_->aim == aim_ && blocked_here_->power == power)
-    return blocked_here_->blocked ? std::optional<double>(blocked_here_->carry) : std::nullopt;
+  std::optional<FlownHere>& slot = flown_[power < 1.0 ? 1 : 0];
+  if (slot && slot->player == player_ && slot->club == club && slot->ball == r.ball() && slot->hole == group_.hole_index() &&
+      slot->aim == aim_ && slot->power == power)
+    return *slot;
   StrokeInput in;
   in.club = club;
   in.aim = aim_;
   in.meter.power = power;
   const FlightSummary f = r.simulate(in).trajectory.summary;
-  blocked_here_ = CarryHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, r.first_touch_in_a_tree(f)};
-  return blocked_here_->blocked ? std::optional<double>(f.carry_m) : std::nullopt;
+  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, r.first_touch_in_a_tree(f)};
+  return *slot;
+}
+
+double GolfPlay::carry_here(const std::string& club) const {
+  if (round().finished() || club == "putter") return 0.0;
+  return flown_here(club, 1.0).carry;
+}
+
+std::optional<double> GolfPlay::tree_in_the_way(const std::string& club) const {
+  if (round().finished() || club == "putter") return std::nullopt;
+  // A pitch the caddie means as a part swing is judged at its power: a full swing's flight
+  // into a tree 60 yd off says nothing of a 25 % chip.
+  const double power =
+      caddie_plan_ && caddie_plan_->club == club && caddie_plan_->meter.power < 1.0 ? caddie_plan_->meter.power : 1.0;
+  const FlownHere& f = flown_here(club, power);
+  return f.in_tree ? std::optional<double>(f.carry) : std::nullopt;
 }
 
 void GolfPlay::begin_turn(double t) {

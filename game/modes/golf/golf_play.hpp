@@ -186,7 +186,10 @@ class GolfPlay {
   std::optional<StrokeInput> caddie_plan_;
   double putt_plays_as_ = 0.0;
   std::string putt_crosses_;
-  struct CarryHere {  // players tee off from one spot with their own swings: keyed by player too
+  /// A stroke of `club` along the aim at `power`, flown from where the ball lies: its carry
+  /// and whether a tree stopped it. Keyed by player too: players tee off from one spot with
+  /// their own swings.
+  struct FlownHere {
     int player = 0;
     std::string club;
     Vec3 ball = Vec3::Zero();
@@ -194,10 +197,12 @@ class GolfPlay {
     double aim = 0.0;
     double power = 1.0;
     double carry = 0.0;
-    bool blocked = false;
+    bool in_tree = false;
   };
-  mutable std::optional<CarryHere> carry_here_;  ///< carry_here()'s last answer
-  mutable std::optional<CarryHere> blocked_here_;  ///< tree_in_the_way()'s last answer
+  /// The stroke flown (or the last answer for it, from `flown_` when it is the same stroke).
+  const FlownHere& flown_here(const std::string& club, double power) const;
+  /// The last full swing asked for and the last part swing: the HUD asks of both each frame.
+  mutable std::optional<FlownHere> flown_[2];
 };
 
 const char* to_string(GolfPlay::Stage s);

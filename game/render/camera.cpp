@@ -148,6 +148,8 @@ double Camera::metres_per_pixel(const Vec3& p, int height) const {
   return 2.0 * depth * std::tan(fov_y / 2) / height;
 }
 
+Vec3 aim_line(double aim) { return Vec3(std::cos(aim), 0.0, std::sin(aim)); }
+
 void Bounds::add(const Vec3& p) {
   min = min.cwiseMin(p);
   max = max.cwiseMax(p);
@@ -229,10 +231,11 @@ ShotFraming shot_framing(const ShotTrajectory& trajectory, double t) {
 Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int height, const FrameWindow& window) {
   const double aspect = double(width) / height;
   const Vec3 up = Vec3::UnitY();
-  // Side, Top and Behind look along the target line (+x, DESIGN §2), not along this shot, so
-  // a slice or a pull shows as a curve away from the line.
-  const Vec3 aim = Vec3::UnitX();
-  const Vec3 right = Vec3::UnitZ();
+  // Side, Top and Behind look along the target line, not along this shot, so a slice or a
+  // pull shows as a curve away from the line.
+  Vec3 aim(framing.target_line.x(), 0.0, framing.target_line.z());
+  aim = aim.norm() > 1e-9 ? Vec3(aim.normalized()) : Vec3::UnitX();
+  const Vec3 right = aim.cross(up);  // +z for a +x line (DESIGN §2: z right)
   switch (kind) {
     case CameraKind::Side: {
       // From the right of the shot, 10° down, so downrange runs left to right.

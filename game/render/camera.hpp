@@ -47,6 +47,9 @@ struct Camera {
   double metres_per_pixel(const Vec3& p, int height) const;
 };
 
+/// The horizontal unit direction `aim` rad right of the world's +x (ShotResult::aim).
+Vec3 aim_line(double aim);
+
 /// Axis-aligned box around a shot: every trajectory sample and the launch point.
 struct Bounds {
   Vec3 min = Vec3::Zero(), max = Vec3::Zero();
@@ -65,6 +68,10 @@ struct ShotFraming {
   /// the landing view looks along. A ball that rebounds off a tree or a wall can rest beside
   /// or behind where it came from; the landing is still ahead of it.
   Vec3 landing_aim = Vec3::UnitX();
+  /// unit, horizontal: the line the shot was aimed down (a range's is the world's +x).
+  /// Behind, Side and Top look along it, not along this shot, so a push, a pull or a
+  /// slice shows as a start or a curve away from the line.
+  Vec3 target_line = Vec3::UnitX();
   Vec3 ball = Vec3::Zero();           ///< m, ball centre at the time shown
   Vec3 ball_velocity = Vec3::Zero();  ///< m/s at the time shown (Follow looks along it)
   /// s since the first landing at the time shown (negative before it); -1e9 when the shot

@@ -64,6 +64,7 @@ void copy_scene_fields(const From& f, To& t) {
   t.flag = f.flag;
   t.tee_markers = f.tee_markers;
   t.wind = f.wind;
+  t.target_line = f.target_line;
   t.people = f.people;
 }
 }  // namespace

@@ -26,6 +26,7 @@ struct RenderRequest {
   std::optional<Vec3> flag;         ///< m; see ShotSceneInput::flag
   std::vector<std::pair<Vec3, Eigen::Vector3f>> tee_markers;  ///< see ShotSceneInput::tee_markers
   Vec3 wind = Vec3::Zero();         ///< m/s; see ShotSceneInput::wind
+  Vec3 target_line = Vec3::UnitX(); ///< see ShotSceneInput::target_line
   PeopleFn people;                  ///< see ShotSceneInput::people
   int width = 1280, height = 720;   ///< px, 16..8192
   CameraKind camera = CameraKind::Behind;

@@ -157,6 +157,7 @@ struct ShotScene::Impl {
 const ShotSceneInput& ShotScene::input() const { return impl_->input; }
 void ShotScene::set_wind(const Vec3& wind) { impl_->input.wind = wind; }
 void ShotScene::set_people(PeopleFn people) { impl_->input.people = std::move(people); }
+void ShotScene::set_target_line(const Vec3& line) { impl_->input.target_line = line; }
 
 ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
@@ -256,6 +257,7 @@ std::optional<double> ShotScene::ground_height(double x, double z) const {
 
 Camera ShotScene::camera(CameraKind kind, double t, int width, int height, const FrameWindow& window) const {
   ShotFraming f = shot_framing(trajectory_, t);
+  f.target_line = impl_->input.target_line;
   if (impactor_) f.points.push_back(impactor_->position);
   // From above, a ballpark shows the whole park, fence to fence (a spray chart's view).
   if (kind == CameraKind::Top && impl_->input.world != nullptr)

@@ -57,6 +57,9 @@ struct ShotSceneInput {
   std::vector<std::pair<Vec3, Eigen::Vector3f>> tee_markers;
   /// m/s, world, horizontal: the flag streams downwind and flutters with it.
   Vec3 wind = Vec3::Zero();
+  /// unit, horizontal: the line the shot was aimed down (aim_line of ShotResult::aim); the
+  /// Behind, Side and Top cameras look along it. A range's and a ballpark's is +x.
+  Vec3 target_line = Vec3::UnitX();
   /// The players the mode puts on the field (a batting cage's pitcher, batter and
   /// fielders); empty = none. The golfer comes with his club (set_shot, set_address).
   PeopleFn people;
@@ -98,8 +101,9 @@ class ShotScene {
   /// The club at address behind a ball that waits to be hit (nothing: none): drawn with the
   /// golfer holding it, square to the shot. A shot with its own club (set_shot) shows that.
   void set_address(const std::optional<ImpactorPlacement>& club) { address_ = club; }
-  /// ShotSceneInput::wind and ::people, as play goes on.
+  /// ShotSceneInput::wind, ::people and ::target_line, as play goes on.
   void set_wind(const Vec3& wind);
+  void set_target_line(const Vec3& line);
   void set_people(PeopleFn people);
   const ShotTrajectory& trajectory() const { return trajectory_; }
   /// What the scene was made of; with trajectory() and impactor(), enough to make it again

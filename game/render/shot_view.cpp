@@ -71,6 +71,7 @@ ShotSceneInput scene_input_for(const Assets& assets, const ResolvedShot& s, cons
   in.tee = s.start_surface == "tee" && s.spec.placement.teed;
   in.impactor = impactor_placement(r);
   in.impactor_mesh = in.impactor ? r.impactor_mesh : "";
+  in.target_line = aim_line(r.aim);
   return in;
 }
 

@@ -148,6 +148,7 @@ class ConnectModeView final : public ModeView {
       v_.scene.reset();
       v_.ensure_scene(r.world.empty() ? "none" : r.world, flag);
       v_.scene->set_shot(r.trajectory, impactor_placement(r));
+      v_.scene->set_target_line(aim_line(r.aim));
       sound_strike(r);  // a monitor's ball data alone has no strike to sound
       v_.replay.restart();
       v_.have_shot = false;

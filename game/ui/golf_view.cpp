@@ -482,6 +482,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       // player's club, whose full finish a putt must not take.
       if (!play_->last_shot().impactor_mesh.empty()) ensure_scene(play_->last_shot().impactor_mesh);
       scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
+      scene_->set_target_line(aim_line(play_->last_shot().aim));  // the high camera and the replay's side view
       sound_strike(play_->last_shot());
       rattle_due_ = play_->last_shot().end == ShotEnd::Holed;
       stroke_input_ = scene_->input();

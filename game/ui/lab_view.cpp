@@ -68,6 +68,7 @@ class LabView final : public ModeView {
       mesh_ = res.impactor_mesh;
     }
     scene_->set_shot(res.trajectory, impactor_placement(res));
+    scene_->set_target_line(aim_line(res.aim));
     replay_.pre_roll = scene_->pre_roll();
     replay_.restart();
     serial_ = lab_->shot_serial();

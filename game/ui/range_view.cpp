@@ -138,6 +138,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
     addressed_ = false;
     if (relabel && shown_struck_ >= 0.0) {
       scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
+      scene_->set_target_line(aim_line(play_->last_shot().aim));
     } else {
       shown_struck_ = -1.0;
     }
@@ -147,6 +148,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
   if (hit && shown_struck_ != play_->struck_at()) {
     scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
     scene_->set_address(std::nullopt);
+    scene_->set_target_line(aim_line(play_->last_shot().aim));
     if (play_->struck_at() > 0.0) sound_strike(play_->last_shot());
     shown_struck_ = play_->struck_at();
     addressed_ = false;

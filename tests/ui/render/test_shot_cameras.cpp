@@ -103,3 +103,40 @@ TEST_CASE("follow's landing view looks the way the ball came down, when it rebou
   const double t = land - 0.5;
   CHECK(in_frame(frame_shot(CameraKind::Follow, shot, t, w, h), sample_at(shot, t).position, w, h, 2.0));
 }
+
+TEST_CASE("behind, side and top look along the shot's target line, not the world's +x", "[render][unit]") {
+  // The tour drive turned to fly along +z, as on a hole played that way: its aim is the
+  // hole's line, and each framing camera must stand where it does on a range, turned with it.
+  const ShotResult r = run_scenario(load_scenario(test::assets(), "golf/driver", {}));
+  const Quat turn(Eigen::AngleAxisd(-kPi / 2.0, Vec3::UnitY()));  // +x -> +z
+  ShotTrajectory shot = r.trajectory;
+  for (auto& s : shot.samples) {
+    s.position = turn * s.position;
+    s.velocity = turn * s.velocity;
+  }
+  shot.summary.landing_position = turn * shot.summary.landing_position;
+  shot.summary.rest_position = turn * shot.summary.rest_position;
+  const Vec3 line = aim_line(kPi / 2.0);
+  REQUIRE(line.isApprox(Vec3::UnitZ(), 1e-12));
+  const int w = 960, h = 540;
+  const double t = shot.summary.hang_time_s;
+  ShotFraming f = shot_framing(shot, t);
+  f.target_line = line;
+  const ShotFraming range = shot_framing(r.trajectory, t);  // the same shot down +x
+  for (const CameraKind k : {CameraKind::Behind, CameraKind::Side, CameraKind::Top}) {
+    INFO("camera " << to_string(k));
+    const Camera c = frame_shot(k, f, w, h), ref = frame_shot(k, range, w, h);
+    // The turned camera is the range camera turned: eye, view and image right alike.
+    CHECK((c.eye - turn * ref.eye).norm() < 1e-6 * (1.0 + ref.eye.norm()));
+    CHECK((c.forward() - turn * ref.forward()).norm() < 1e-9);
+    CHECK((c.right() - turn * ref.right()).norm() < 1e-9);
+    for (const auto& s : shot.samples) CHECK(in_frame(c, s.position, w, h));
+  }
+  // Behind stands behind the tee looking down the line; the side view sees downrange to the
+  // image's right.
+  const Camera behind = frame_shot(CameraKind::Behind, f, w, h);
+  CHECK(behind.forward().dot(line) > 0.8);
+  CHECK((f.launch - behind.eye).dot(line) > 10.0);
+  const Camera side = frame_shot(CameraKind::Side, f, w, h);
+  CHECK(side.right().dot(line) > 0.95);
+}

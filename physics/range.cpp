@@ -1,6 +1,7 @@
 #include "physics/range.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "physics/error.hpp"
@@ -8,12 +9,22 @@
 namespace sweetspot {
 namespace {
 
-std::string number(double v) {
+std::string number(double v, int digits = 6) {
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   std::ostringstream s;
-  s.precision(6);
+  s.precision(digits);
   s << v;
   return s.str();
+}
+
+// A refused value written with as many digits as it takes to read as outside the range
+// (110.0001 % is not "110 %" against an allowed (0, 110] %).
+std::string refused_number(double v, const Range& r) {
+  for (int digits = 6; digits < 17; ++digits) {
+    const std::string t = number(v, digits);
+    if (!r.contains(std::strtod(t.c_str(), nullptr))) return t;
+  }
+  return number(v, 17);
 }
 
 }  // namespace
@@ -43,7 +54,7 @@ std::string range_text(const Range& r, std::string_view si_unit) {
 std::string range_refusal(std::string_view field, double value, const Range& r, std::string_view si_unit) {
   if (r.contains(value)) return {};
   std::string out(field);
-  out += " = " + number(value);
+  out += " = " + refused_number(value, r);
   if (!si_unit.empty()) {
     out += ' ';
     out.append(si_unit);

@@ -50,7 +50,7 @@ RunFn setup_connect(CLI::App& sub) {
     if (!o->server.table.world.empty()) {
       try {
         const WorldAsset* w = assets.world(o->server.table.world);
-        if (!w->sport.empty() && w->sport != "golf")
+        if (w != nullptr && !w->sport.empty() && w->sport != "golf")  // nullptr: "none", the flat range
           throw InputError("'" + o->server.table.world + "' is a " + w->sport + " world; a launch monitor's range is a golf world");
       } catch (const InputError& e) {
         throw InputError(std::string("--world: ") + e.what());

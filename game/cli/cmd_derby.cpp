@@ -81,7 +81,7 @@ RunFn setup_derby(CLI::App& sub) {
   sub.add_option("--seed", o->seed, "seed of the pitcher's and the batter's errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   auto* outs = sub.add_option("--outs", o->session.outs, "derby: outs before it ends, 1..50 (default 10)");
   sub.add_option("--mode", o->session.mode, "derby (default), at-bat, practice or game (two bot lineups against bot pitchers)");
-  auto* innings = sub.add_option("--innings", o->innings, "game: innings scheduled, 1..200 (default 9)");
+  auto* innings = sub.add_option("--innings", o->innings, "game: innings scheduled, 1..50 (default 9)");
   auto* games = sub.add_option("--games", o->games, "game: games in a row (seeds S, S+1, ...) with their league rates, 1..1000 (default 1)");
   auto* swings = sub.add_option("--swings", o->session.swings, "practice: pitches, 1..500 (default 20)");
   sub.add_flag("--left", o->session.left_handed, "a left-handed batter");

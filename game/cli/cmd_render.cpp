@@ -3,6 +3,8 @@
 // The shot is a scenario (with --set) or, without SCENARIO, the launch-monitor flags as a
 // launch-only scenario (game/cli/launch_flags.hpp): either way the one ShotSpec path, so
 // render draws every file `shot` accepts, on the world the shot flew on.
+#include <cctype>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -124,6 +126,11 @@ RunFn setup_render(CLI::App& sub) {
     if (!o->output.empty()) check_png_output(o->output, "-o");
     if (!o->video.empty()) {
       check_output_path(o->video, "--video");
+      std::string ext = std::filesystem::path(o->video).extension().string();
+      for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (ext != ".mp4") throw InputError("--video " + o->video + ": the clip is an MP4 (H.264); name it FILE.mp4");
+      if (!o->output.empty() && same_output_file(o->output, o->video))
+        throw InputError("-o " + o->output + " --video " + o->video + ": the image and the clip would overwrite each other");
       if (at) throw InputError("--at picks one frame for -o; --video renders the whole shot (leave --at out)");
       if (!o->course.empty()) throw InputError("--video: a hole's overview (--course) is a still image; use -o");
       clip_frame_times(ClipTiming{0.0, 0.0, o->fps, o->slow});  // --fps and --slow-motion in range

@@ -205,7 +205,7 @@ RunFn setup_round(CLI::App& sub) {
   sub.add_option("--format", o->format, "stroke (default), match (two players), stableford or skins")
       ->check(checked_by([](const std::string& t) { golf_format(t); }, "FORMAT"));
   sub.add_option("--gimme", o->gimme, "putts this close (m) are conceded, 0..3 (default: 0.6 in match play, else off)")
-      ->check(CLI::Range(GolfOptions::kGimme.min, GolfOptions::kGimme.max));
+      ->check(finite_range(GolfOptions::kGimme.min, GolfOptions::kGimme.max));
   sub.add_option("--tees", o->setup.tees, "the tee set to play from, as the course names them (\"white\"; default: each hole's own tee)");
   o->setup.pin_set = CourseSetup::kDayPinSet;
   sub.add_option("--pins", o->setup.pin_set, "the pin set, 0..9: where the cups are today (default 0, a mix: the holes take their sets in turn; 1 each hole's own pin; a course from course import has up to 4)")
@@ -217,7 +217,8 @@ RunFn setup_round(CLI::App& sub) {
   auto* balls = sub.add_option("--balls", o->balls, "balls for ctp and long-drive, 1..100 (default 5)");
   sub.add_flag("--json", o->json, "print the DESIGN §9 JSON");
   sub.add_option("--save", o->save, "write the round (players, options, every turn) to FILE to resume later");
-  sub.add_option("--stop-after", o->stop_after, "stop once the group has finished this many holes, 1..18 (with --save)");
+  sub.add_option("--stop-after", o->stop_after, "stop once the group has finished this many holes, 1..18 (with --save)")
+      ->check(CLI::Range(1, 18));
   sub.add_option("--resume", o->resume, "go on with a round written by --save (its players, format and options)");
   sub.add_option("--plot", o->plot, "also write the session's dispersion (carry vs side per club) to FILE.png");
   return [o, balls](const Assets& assets) -> int {
@@ -246,7 +247,13 @@ RunFn setup_round(CLI::App& sub) {
     if (o->mode != "stroke" && (o->bots.size() > 1 || o->format != "stroke"))
       throw InputError("--mode " + o->mode + ": a contest is one bot's; --bot once, no --format");
     if (o->bots.size() > 4) throw InputError("--bot: a round has at most 4 players, not " + std::to_string(o->bots.size()));
-    if (!o->plot.empty() && !o->swings.empty()) refuse_output_over_input(o->plot, o->swings, "--plot");
+    // The files this run reads are not its outputs (a resumed round may be saved over itself).
+    for (const auto& [flag, out] : {std::pair{"--save", &o->save}, std::pair{"--plot", &o->plot}}) {
+      if (out->empty()) continue;
+      for (const std::string* in : {&o->bag, &o->swings})
+        if (!in->empty()) refuse_output_over_input(*out, *in, flag);
+      if (std::string(flag) == "--plot" && !o->resume.empty()) refuse_output_over_input(*out, o->resume, flag);
+    }
     return o->mode == "stroke" ? play_stroke_round(assets, *o) : play_contest(assets, *o);
   };
 }

@@ -32,10 +32,10 @@ RunFn setup_validate(CLI::App& sub) {
   sub.add_option("--filter", o->filter, "run only the cases with this tag (golf, baseball, launch, carry, roll, ...)");
   sub.add_option("--min-pass-rate", o->min_pass_rate,
                  "exit 0 when at least this percent of the cases pass (default: every case must)")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(finite_range(0.0, 100.0));
   sub.add_option("--min-unfitted-pass-rate", o->min_unfitted_pass_rate,
                  "with --min-pass-rate: also at least this percent of the cases no model was fitted to")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(finite_range(0.0, 100.0));
   sub.add_option("--library", o->library, "a validation file or folder (default: the assets' validation/)");
   return [o](const Assets& assets) -> int {
     // Every flag is checked before a case runs: a bad one prints nothing but its message.

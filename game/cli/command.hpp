@@ -9,6 +9,7 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 
 #include <functional>
@@ -42,6 +43,27 @@ inline const CLI::Validator kNotEmpty(
       return text.empty() ? "an empty value: give one, or leave the option out for its default" : std::string();
     },
     "");
+/// A number flag within [lo, hi]. CLI::Range alone lets "nan" through (no comparison with
+/// NaN is true), which a run would then read as the flag left out.
+inline CLI::Validator finite_range(double lo, double hi) {
+  const auto shown = [](double v) {
+    std::string t = std::to_string(v);
+    t.erase(t.find_last_not_of('0') + 1);
+    if (!t.empty() && t.back() == '.') t.pop_back();
+    return t;
+  };
+  const std::string allowed = "[" + shown(lo) + ", " + shown(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, allowed](std::string& text) -> std::string {
+        double v = 0.0;
+        const char* end = text.data() + text.size();
+        const auto [p, ec] = std::from_chars(text.data(), end, v);
+        if (text.empty() || ec != std::errc() || p != end || !std::isfinite(v) || v < lo || v > hi)
+          return "'" + text + "' is not a number in " + allowed;
+        return {};
+      },
+      "NUMBER in " + allowed);
+}
 /// A flag checked by the model's own lookup (a skill, a format): its InputError's message
 /// becomes the flag's error, so the one list of allowed values stays with the model.
 template <class Check>

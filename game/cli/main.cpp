@@ -94,8 +94,13 @@ int main(int argc, char** argv) {
     runs.emplace_back(sub, c.setup(*sub));
     // One rule for empty values: `--world ""` is a mistake (an unset variable in a script),
     // never a way to ask for the default, so every option that takes a value refuses "".
-    for (CLI::Option* opt : sub->get_options())
-      if (opt->get_type_size() > 0) opt->check(kNotEmpty);
+    // (Nested subcommands too: `course import --name ""`.)
+    const std::function<void(CLI::App*)> refuse_empty = [&](CLI::App* a) {
+      for (CLI::Option* opt : a->get_options())
+        if (opt->get_type_size() > 0) opt->check(kNotEmpty);
+      for (CLI::App* nested : a->get_subcommands({})) refuse_empty(nested);
+    };
+    refuse_empty(sub);
   }
 
   // A mistyped command (`sweetspot fly`) is named, with the commands there are; CLI11 alone

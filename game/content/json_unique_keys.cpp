@@ -40,7 +40,23 @@ nlohmann::json parse_json_unique_keys(std::string_view text, const std::string& 
   try {
     j = nlohmann::json::parse(text, check);
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(std::string("malformed JSON: ") + e.what());
+    // The parser's own words without its "[json.exception.kind.id] " tag, bytes that are not
+    // printable ASCII written as \xNN, and the key whose value it was reading.
+    std::string why = e.what();
+    if (const std::size_t tag = why.find("] "); why.rfind("[json.exception.", 0) == 0 && tag != std::string::npos)
+      why.erase(0, tag + 2);
+    std::string clean;
+    for (const char c : why) {
+      const auto u = static_cast<unsigned char>(c);
+      if (u >= 0x20 && u < 0x7f) {
+        clean += c;
+      } else {
+        static const char* hex = "0123456789ABCDEF";
+        clean += std::string("\\x") + hex[u >> 4] + hex[u & 15];
+      }
+    }
+    const std::string at = last_key.empty() ? std::string() : " in " + names.back() + "." + last_key;
+    throw InputError("malformed JSON" + at + ": " + clean);
   }
   if (!duplicate.empty()) throw InputError(duplicate + " is given twice (keys match without case)");
   return j;

@@ -293,7 +293,7 @@ std::string import_in_child(const std::filesystem::path& path, const char* what,
         const aiVector3D& p = m->mVertices[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
           throw InputError(path.string() + ": " + what + " '" + m->mName.C_Str() + "' has a vertex that is not a " +
-                           "finite number (NaN or infinity); fix the file");
+                           "finite number (NaN, infinity, or past the mesh reader's 32-bit float range, 3.4e38); fix the file");
       }
     }
     scene = importer.ApplyPostProcessing(flags);

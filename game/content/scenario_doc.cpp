@@ -281,7 +281,10 @@ CheckedDoc::CheckedDoc(const ScenarioDoc& doc, const Schema& schema, const Sport
   };
 
   for (const auto& s : doc.sections) {
-    if (schema.has_section(s.key) || schema.find(s.key, kAnyStrike) != nullptr) continue;
+    if (schema.has_section(s.key)) continue;
+    // A key written as a table (`[update]` for `update = false`) holds no value: refused,
+    // not read as the key left out.
+    if (schema.find(s.key, kAnyStrike) != nullptr) fail(s.origin, s.key, "a value, not a table: write " + s.key + " = ...");
     const auto parent = parent_section_of(s.key);
     if (!parent.empty() && schema.has_section(parent)) {
       fail(s.origin, s.key, unknown_in(parent));

@@ -78,7 +78,7 @@ void add_meshes(const MeshFile& file_meshes, const fs::path& file, WorldDescript
       const Vec3 q(part.positions[v][0], part.positions[v][1], part.positions[v][2]);
       if (!q.allFinite())
         throw InputError(file.string() + ": mesh '" + mname + "' vertex " + std::to_string(v) +
-                         " is not a finite number (NaN or infinity); fix the file");
+                         " is not a finite number (NaN, infinity, or past the mesh reader's 32-bit float range, 3.4e38); fix the file");
       // Far-away vertices would swamp Bullet's quantised triangle tree and the bounds, so a
       // world is limited to kMaxWorldExtent from its origin in every axis.
       if (q.cwiseAbs().maxCoeff() > kMaxWorldExtent)

@@ -150,7 +150,10 @@ class Collector : public osmium::handler::Handler {
   explicit Collector(GolfMap& map) : map_(map) {}
 
   void node(const osmium::Node& n) {
-    if (!n.location().valid()) return;
+    // A node off the globe would drop out of every way it is on, silently reshaping a green.
+    if (!n.location().valid())
+      throw InputError("node " + std::to_string(n.id()) +
+                       ": its location is missing or off the globe (allowed: latitude -90..90, longitude -180..180)");
     const GeoPoint at{n.location().lat(), n.location().lon()};
     if (n.tags().has_tag("golf", "pin")) map_.pins.push_back({"node " + std::to_string(n.id()), at});
     if (n.tags().has_tag("natural", "tree"))
@@ -344,6 +347,7 @@ bool is_overpass_json(const std::filesystem::path& path) {
 GolfMap read_golf_map(const std::filesystem::path& path) {
   GolfMap map;
   std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": a directory, not a map (give an .osm or .osm.pbf file)");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": no such file");
   const std::string overpass = is_overpass_json(path) ? overpass_to_xml(path) : std::string();
   try {

@@ -219,6 +219,7 @@ void MessageFramer::broken(std::vector<Piece>& out, Piece::Kind kind, std::size_
   // A candidate that began inside an earlier broken part is a piece of that part.
   if (head_ >= broken_end_) out.push_back({kind, excerpt(head_, end), reason});
   broken_end_ = std::max(broken_end_, end);
+  recovering_ = true;
 }
 
 void MessageFramer::resume_inside(std::size_t end) {
@@ -256,7 +257,7 @@ void MessageFramer::resolve(std::vector<Piece>& out) {
       if (status != JsonScanner::Status::More) break;
     }
     if (status == JsonScanner::Status::Complete && scanned_ - head_ <= max_) {
-      if (head_ < broken_end_ && inside_structure(scanned_)) {
+      if ((head_ < broken_end_ || recovering_) && inside_structure(scanned_)) {
         // An object nested in the broken part (a ',', ':', '}' or ']' goes on after it): a
         // piece of what was answered already, not a message.
         broken_end_ = std::max(broken_end_, scanned_);
@@ -266,6 +267,7 @@ void MessageFramer::resolve(std::vector<Piece>& out) {
         continue;
       }
       out.push_back({Piece::Kind::Message, buf_.substr(head_, scanned_ - head_), ""});
+      recovering_ = false;
       // A message found inside a broken part may be a piece of it (an object nested in the
       // broken one): the bytes after it, up to the next '{', are that part's, not new garbage.
       in_broken_ = head_ < broken_end_;
@@ -301,7 +303,7 @@ std::vector<MessageFramer::Piece> MessageFramer::finish() {
   flush_garbage(out);
   buf_.clear();
   head_ = scanned_ = broken_end_ = 0;
-  in_broken_ = false;
+  in_broken_ = recovering_ = false;
   return out;
 }
 

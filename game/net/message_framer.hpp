@@ -12,8 +12,9 @@
 // (`{"}":1}` after an open string reads as that string's end; Open Connect's keys are words).
 //
 // Each broken part is reported once: a candidate that starts inside an earlier broken part
-// and breaks too is part of it, and so is an object nested in it that a ',', ':', '}' or ']'
-// follows (one the stream ends after, or a '{' follows, is taken as a message). Bytes outside any object are one Garbage piece per run.
+// and breaks too is part of it, and so is an object nested in it (or found after it, before
+// any message) that a ',', ':', '}' or ']' follows: no message is followed by more of a
+// structure. One the stream ends after, or a '{' follows, is taken as a message. Bytes outside any object are one Garbage piece per run.
 // Memory is bounded: a candidate longer than `max_bytes` is refused as Oversized and the
 // search resumes inside it; one nested deeper than kMaxDepth is broken (TooDeep).
 //
@@ -107,6 +108,10 @@ class MessageFramer {
   /// End (in buf_) of the last broken part: candidates that start before it belong to it.
   std::size_t broken_end_ = 0;
   bool in_broken_ = false;   ///< skipping the rest of a broken part up to the next '{'
+  /// Since the last broken part no message has been found: an object found now that more
+  /// of a structure follows (',', ':', '}' or ']') is a piece of that part, wherever the
+  /// grammar first refused it (a bad value early on leaves its nested objects after it).
+  bool recovering_ = false;
   std::string garbage_;      ///< excerpt of the current run of bytes outside any object
   bool garbage_seen_ = false;
   std::uint64_t candidates_ = 0;

@@ -112,6 +112,12 @@ OcMessage parse_open_connect(std::string_view text) {
       throw InputError("message.Units = " + u->dump() + " (allowed: \"Yards\", \"Meters\")");
   }
   const nlohmann::json* opts = field(j, "ShotDataOptions");
+  // Options that are not an object would read as "no options": a shot's data dropped.
+  if (opts != nullptr && !opts->is_object())
+    throw InputError("message.ShotDataOptions = " + opts->dump().substr(0, 40) + ": not an object (send {\"ContainsBallData\": true, ...})");
+  for (const char* key : {"BallData", "ClubData"})
+    if (const nlohmann::json* d = field(j, key); d != nullptr && !d->is_object())
+      throw InputError(std::string("message.") + key + " = " + d->dump().substr(0, 40) + ": not an object");
   const nlohmann::json empty = nlohmann::json::object();
   const nlohmann::json& o = opts ? *opts : empty;
   const bool has_ball = flag(o, "ContainsBallData", "ShotDataOptions") || (opts == nullptr && field(j, "BallData") != nullptr);

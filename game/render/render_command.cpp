@@ -1,6 +1,7 @@
 #include "game/render/render_command.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -88,8 +89,12 @@ std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, con
   // Before launch only as far back as the downswing the scene can show.
   const double start = -swing_pre_roll(request.impactor, request.impactor_mesh);
   if (!std::isfinite(t) || t < start || t > end + 1e-9) {
-    throw InputError("--at " + std::to_string(t) + " s is outside the shot (" + std::to_string(start) + ".." +
-                     std::to_string(end) + " s)");
+    const auto shown = [](double v) {  // %g: 1e308 is not written out as 309 digits
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g", v);
+      return std::string(buf);
+    };
+    throw InputError("--at " + shown(t) + " s is outside the shot (" + shown(start) + ".." + shown(end) + " s)");
   }
   check_size(request);
   ShotFrames frames(trajectory, request);

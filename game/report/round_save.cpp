@@ -120,6 +120,7 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
     GolfPlayer p;
     r.only_keys(players[i], {"name", "skill", "human", "handicap", "bag"}, path);
     p.name = r.text(players[i], "name", path);
+    if (p.name.empty()) r.fail(path + "name", "empty: the card needs each player's name");
     p.skill = r.text(players[i], "skill", path);
     p.human = r.flag(players[i], "human", path);
     const double h = r.number(players[i], "handicap", kHandicap, path);

@@ -25,7 +25,10 @@ double shot_quantity(const ShotResult& r, std::string_view q) {
   if (q == "backspin") return L.spin.backspin;
   if (q == "sidespin") return L.spin.sidespin_right;
   if (q == "spin_axis") return L.spin.axis_rad;
-  if (q == "smash_factor") return r.smash_factor;
+  if (q == "smash_factor") {
+    if (!r.impact.present) throw InputError("quantity smash_factor: this shot has launch numbers only, no club or bat, so no smash factor");
+    return r.smash_factor;
+  }
   if (q == "carry") return F.carry_m;
   if (q == "total") return F.total_m;
   if (q == "roll") return F.total_m - F.carry_m;
@@ -61,6 +64,8 @@ double measure_shot(const Assets& assets, const ValidationCase& c, const std::ve
                                        : read_toml_doc(resolve_scenario(assets, c.scenario));
   for (const auto& [s, origin] : conditions(c, extra)) apply_set(doc, s, origin);
   const Scenario sc = scenario_from_doc(assets, doc, c.id);
+  if (sc.spec.sport != c.tags.front())
+    throw InputError("tags: the case is " + c.tags.front() + "'s (its first tag) but its shot is a " + sc.spec.sport + " shot");
   return shot_quantity(run_scenario(sc, RunOptions{c.quantity->flight, false}), c.quantity->name);
 }
 

@@ -100,6 +100,13 @@ expect2 "idle range" "--idle-timeout" "$bin" connect --headless --port 0 --idle-
 expect2 "unknown course" "--course: .*nowhere" "$bin" connect --headless --port 0 --course nowhere
 expect2 "unknown world" "--world: .*moon" "$bin" connect --headless --port 0 --world moon
 expect2 "baseball world" "--world: .*baseball" "$bin" connect --headless --port 0 --world ballpark
+# The flat range ("none", no world to load) serves its shots.
+start_server flat --world none --max-shots 1
+head -1 "$tmp/session.jsonl" > "$tmp/one_shot.jsonl"
+"$bin" send "$tmp/one_shot.jsonl" --port "$port" >/dev/null 2>"$tmp/flat_send.err" || fail "send to --world none: $(cat "$tmp/flat_send.err")"
+rc=0; wait "$server" || rc=$?
+[ "$rc" = 0 ] || fail "--world none: exit $rc: $(cat "$tmp/flat.err")"
+grep -q '"world": *"none"' "$tmp/flat.out" || fail "--world none: result line: $(cat "$tmp/flat.out")"
 printf '%s\n{"ShotNumber":2,"BallData":{"Speed":900},"ShotDataOptions":{"ContainsBallData":true}}\n' \
   "$(head -1 "$tmp/session.jsonl")" >"$tmp/bad_session.jsonl"
 expect2 "bad session line" "bad_session.jsonl:2: BallData.Speed" "$bin" send "$tmp/bad_session.jsonl" --port 9

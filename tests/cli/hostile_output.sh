@@ -85,6 +85,9 @@ fi
 cp "$SWEETSPOT_ROOT/assets/courses/links.toml" c.toml; cp c.toml c.before; ln -s c.toml c_as.png
 expect_rc 2 "input file of this command" -- "$bin" round c.toml --plot c_as.png
 cmp -s c.toml c.before || fail "round --plot replaced the course"
+"$bin" range --bot tour --shots 1 --bag-out bag.toml > /dev/null; cp bag.toml bag.before
+expect_rc 2 "is the input file" -- "$bin" round national_3 --bag bag.toml --save bag.toml
+cmp -s bag.toml bag.before || fail "round --save replaced the bag it read"
 mkdir w; printf 'usemtl fairway\nv -30 0 -70\nv -30 0 70\nv 450 0 70\nv 450 0 -70\nf 1 2 3\nf 1 3 4\n' > w/flat.obj
 printf 'sport = "golf"\nmesh = "flat.obj"\n' > w/flat.toml; cp w/flat.obj w/flat.before; ln -s flat.obj w/mesh_as.png
 printf 'sport = "golf"\n[world]\nname = "w/flat.toml"\n' > on_flat.toml

@@ -97,5 +97,9 @@ expect_exit 2 "even" golf/driver --video "$tmp/x.mp4" --width 161
 expect_exit 2 "--fps" golf/driver --video "$tmp/x.mp4" --fps 0
 expect_exit 2 "--slow-motion" golf/driver --video "$tmp/x.mp4" --slow-motion 0.5
 expect_exit 2 "--video F.mp4" golf/driver
+expect_exit 2 "name it FILE.mp4" golf/driver --video "$tmp/x.png"
+ln -s same.png "$tmp/same.mp4"  # one file under both names
+expect_exit 2 "overwrite each other" golf/driver -o "$tmp/same.png" --video "$tmp/same.mp4"
+[ -e "$tmp/same.png" ] && fail "a refused -o/--video pair left a file"
 [ -e "$tmp/x.mp4" ] && fail "a refused --video left a file"
 echo "render CLI ok"

@@ -484,9 +484,12 @@ TEST_CASE("course import: hostile maps are refused, not run", "[course][import][
     return edge_variant(s.dir, name, from, to);
   };
   const fs::path out = s.dir / "out";
-  // Hole 1's green node off the globe: the hole keeps one located node.
+  // Hole 1's green node off the globe, and a green's node off it (that one used to drop out
+  // of the green's ring unsaid): refused, naming the node.
   CHECK_THROWS_WITH(import(variant("off_globe.osm", "<node id='2' lat='56.34000000'", "<node id='2' lat='96.34000000'"), out),
-                    Contains("way 100") && Contains("fewer than two located nodes"));
+                    Contains("node 2") && Contains("off the globe"));
+  CHECK_THROWS_WITH(import(variant("off_globe_green.osm", "<node id='54' lat='56.34049907'", "<node id='54' lat='95.0'"), out),
+                    Contains("node 54") && Contains("latitude -90..90"));
   // Green 2 squashed flat (its nodes on one line): no green for hole 2 to end on.
   {
     std::ifstream in(kData / "edge_cases.osm");

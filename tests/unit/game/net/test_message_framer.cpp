@@ -112,6 +112,24 @@ TEST_CASE("an object nested in a broken message is a piece of it, not a message"
   CHECK(bad_pieces(pieces) == 1);
 }
 
+TEST_CASE("objects nested after a broken message's bad value are pieces of it, never shots", "[net][framer][hostile]") {
+  // The grammar refuses NaN before the nested objects begin: each of them, a shot's shape
+  // included, is followed by more of the broken message's structure, so none is a message
+  // (a shot flown from a message the server had answered 501), and the broken message is
+  // answered once, its closing brace with it.
+  const std::string bad = R"({"DeviceID":"x","Speed":NaN,"Extra":{"APIversion":"1","ShotNumber":7,)"
+                          R"("BallData":{"Speed":150,"VLA":12,"HLA":0,"TotalSpin":3000,"SpinAxis":0},)"
+                          R"("ShotDataOptions":{"ContainsBallData":true}}})";
+  for (const bool then_shot : {false, true}) {
+    MessageFramer f;
+    auto pieces = f.feed(bad + (then_shot ? shot("next") : std::string()));
+    append(pieces, f.finish());
+    INFO("followed by a shot: " << then_shot);
+    CHECK(messages(pieces) == (then_shot ? std::vector<std::string>{shot("next")} : std::vector<std::string>{}));
+    CHECK(bad_pieces(pieces) == 1);
+  }
+}
+
 TEST_CASE("the scanner holds JSON's grammar", "[net][framer]") {
   const auto whole = [](const std::string& text) {
     JsonScanner s(MessageFramer::kMaxDepth);

@@ -187,7 +187,10 @@ TEST_CASE("bad numbers are refused with the key and the range", "[net][parser][h
   };
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":900)")), Catch::Contains("BallData.Speed") && Catch::Contains("allowed"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":"NaN")")), Catch::Contains("BallData.Speed"));
-  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":1e999)")), Catch::Contains("malformed JSON") || Catch::Contains("Speed"));
+  // The parser's overflow named by the key it was reading, without the library's tag.
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":1e999)")),
+                    Catch::Contains("malformed JSON in BallData.Speed") && Catch::Contains("1e999") && !Catch::Contains("json.exception"));
+  CHECK_THROWS_WITH(parse_open_connect(shot("\"Speed\":\"\xff\"")), Catch::Contains("\\xFF") && !Catch::Contains("json.exception"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":[1])")), Catch::Contains("BallData.VLA = [1]: not a number"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("VLA":10)")), Catch::Contains("BallData.Speed is missing"));
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":100,"VLA":10,"TotalSpin":-5)")), Catch::Contains("TotalSpin"));
@@ -212,6 +215,12 @@ TEST_CASE("bad numbers are refused with the key and the range", "[net][parser][h
                     Catch::Contains("1e+308") && !Catch::Contains("000000000000"));
   CHECK_THROWS_WITH(parse_open_connect(R"({"ShotDataOptions":{"ContainsBallData":true}})"),
                     Catch::Contains("BallData is missing"));
+  // Options, ball or club data that are not objects would read as absent: a shot dropped
+  // with a 200 reply.
+  CHECK_THROWS_WITH(parse_open_connect(R"({"ShotNumber":1,"BallData":{"Speed":100,"VLA":10,"TotalSpin":2500},"ShotDataOptions":"x"})"),
+                    Catch::Contains("message.ShotDataOptions = \"x\": not an object"));
+  CHECK_THROWS_WITH(parse_open_connect(R"({"ShotNumber":1,"BallData":5,"ShotDataOptions":{"ContainsBallData":true}})"),
+                    Catch::Contains("message.BallData = 5: not an object"));
   CHECK_THROWS_WITH(parse_open_connect("[1,2]"), Catch::Contains("JSON object"));
   CHECK_THROWS_AS(parse_open_connect(""), InputError);
 }

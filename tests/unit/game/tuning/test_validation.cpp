@@ -125,3 +125,33 @@ why = "x"
     CHECK_THAT(std::string(e.what()), Contains("cases.toml:7") && Contains("swing.speed"));
   }
 }
+
+TEST_CASE("a case that asks what its shot cannot give is refused, not failed", "[validation][hostile]") {
+  // A launch-only shot has no club speed, so no smash factor (it would read 0 and fail);
+  // a golf scenario under a baseball case's first tag is a golf shot in the baseball score.
+  const ValidationLibrary no_club = library(R"(
+[[case]]
+id = "no-club"
+source = "s"
+tags = ["golf", "launch"]
+set = ["world.name=none", "launch.ball_speed=150mph", "launch.vertical_angle=10deg", "launch.spin=2500rpm"]
+quantity = "smash_factor"
+published = "1.45"
+tolerance = "0.05"
+why = "x"
+)");
+  CHECK_THROWS_WITH(run_validation(test::assets(), no_club), Contains("cases.toml:7") && Contains("no smash factor"));
+  const ValidationLibrary wrong_sport = library(R"(
+[[case]]
+id = "wrong-sport"
+source = "s"
+tags = ["baseball", "carry"]
+scenario = "golf/driver"
+set = ["world.name=none"]
+quantity = "carry"
+published = "275yd"
+tolerance = "11yd"
+why = "x"
+)");
+  CHECK_THROWS_WITH(run_validation(test::assets(), wrong_sport), Contains("cases.toml:7") && Contains("golf shot"));
+}

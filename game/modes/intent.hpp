@@ -15,7 +15,7 @@ enum class IntentKind : unsigned char {
   Swing,        ///< golf: start the meter / the next click; batting: swing at the pitch
   Cancel,       ///< Esc: drop what is in progress (a meter) with nothing counted
   Restart,      ///< the pause menu's "restart": the hole (golf), the session (batting), the shot (Lab)
-  Continue,     ///< Enter: skip the flight, the next hole, a new round
+  Continue,     ///< Enter: skip the flight, the next hole
   AimLeft,      ///< golf: aim a step left (`value` steps, 1 when 0)
   AimRight,
   ClubUp,       ///< golf: the next longer club
@@ -34,6 +34,7 @@ enum class IntentKind : unsigned char {
   Edit,         ///< Lab: set parameter `param` to `value` (SI)
   Choose,       ///< Lab: set choice `param` to `text` (a scenario, club, bat, model)
   Save,         ///< Lab: write the current shot as scenario TOML to `text`
+  NewRound,     ///< golf: from the final card, a new round (N; Enter, pressed to skip flights, keeps the card)
 };
 
 struct Intent {

@@ -245,8 +245,11 @@ std::string group_table(const GolfGroup& g) {
       const PlayerStanding& ps = s.players[p];
       const HoleCard& c = g.round(static_cast<int>(p)).card()[h];
       char v[48];
-      std::snprintf(v, sizeof v, "%s%d%.*s (%d)", c.picked_up ? "PU " : c.conceded ? "conc " : "", ps.gross[h],
-                    std::min(ps.received[h], 6), "******", ps.putts[h]);
+      if (!ps.scored[h])  // a match's hole conceded (C) or left once conceded: no score
+        std::snprintf(v, sizeof v, "%s", c.conceded ? "C -" : "-");
+      else
+        std::snprintf(v, sizeof v, "%s%d%.*s (%d)", c.picked_up ? "PU " : "", ps.gross[h], std::min(ps.received[h], 6), "******",
+                      ps.putts[h]);
       std::string cellv = v;
       if (c.penalties > 0) cellv.append(" ").append(std::to_string(c.penalties)).append("p");
       if (s.format == GolfFormat::Stableford) cellv.append(" ").append(std::to_string(ps.points[h])).append("pt");
@@ -280,7 +283,8 @@ std::string group_table(const GolfGroup& g) {
   if (s.format == GolfFormat::Skins && s.skins->unwon > 0) out += std::to_string(s.skins->unwon) + (s.skins->unwon == 1 ? " skin" : " skins") + " carried, unwon\n";
   if (s.format == GolfFormat::Match) out += "result: " + s.match->result + "\n";
   else if (s.holes > 0) out += leaders_text(g, s) + "\n";
-  out += "(* a stroke received; putts in brackets; 1p a penalty stroke; PU picked up)\n";
+  out += std::string("(* a stroke received; putts in brackets; 1p a penalty stroke; PU picked up") +
+         (s.format == GolfFormat::Match ? "; C - a hole conceded, - one left unfinished: no score" : "") + ")\n";
   return out;
 }
 

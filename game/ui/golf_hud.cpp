@@ -350,7 +350,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
       par += ch.par;
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::Text("%d", ch.number);
+      if (play.restarts(h) > 0) ImGui::Text("%d R", ch.number);  // restarted: a mulligan
+      else ImGui::Text("%d", ch.number);
       ImGui::TableNextColumn();
       ImGui::Text("%d", ch.par);
       ImGui::TableNextColumn();
@@ -362,8 +363,11 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
         char pts[16] = "", pen[16] = "";
         if (s.format == GolfFormat::Stableford) std::snprintf(pts, sizeof pts, " %dpt", ps.points[h]);
         if (c.penalties > 0) std::snprintf(pen, sizeof pen, " %dp", c.penalties);
-        ImGui::Text("%d%.*s (%d)%s%s%s", ps.gross[h], std::min(ps.received[h], 4), "****", ps.putts[h], pen, pts,
-                    c.picked_up ? " PU" : c.conceded ? " C" : "");
+        if (!ps.scored[h])
+          ImGui::Text("-%s", c.conceded ? " C" : "");  // a match's hole conceded or left: no score
+        else
+          ImGui::Text("%d%.*s (%d)%s%s%s", ps.gross[h], std::min(ps.received[h], 4), "****", ps.putts[h], pen, pts,
+                      c.picked_up ? " PU" : "");
       }
       if (s.match) {
         ImGui::TableNextColumn();
@@ -406,7 +410,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
     ImGui::EndTable();
   }
   // The key says only what the card shows: strokes received, penalties, pick-ups, concessions.
-  bool received = false, picked_up = false, conceded = false, penalty = false;
+  bool received = false, picked_up = false, conceded = false, penalty = false, restarted = false;
+  for (std::size_t h = 0; h < s.holes; ++h) restarted = restarted || play.restarts(h) > 0;
   for (std::size_t p = 0; p < n; ++p)
     for (std::size_t h = 0; h < s.holes; ++h) {
       received = received || s.players[p].received[h] > 0;
@@ -419,7 +424,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
   if (received) key = "* a stroke received (handicap); " + key;
   if (penalty) key += "; 1p a penalty stroke";
   if (picked_up) key += "; PU picked up";
-  if (conceded) key += "; C conceded";
+  if (conceded) key += "; C a hole conceded, - one left unfinished (no score)";
+  if (restarted) key += "; R the hole was restarted from the menu (its first try not counted)";
   ImGui::TextDisabled("%s", key.c_str());
   if (s.match) ImGui::Text("Match: %s", s.match->result.c_str());
   else if (final && s.holes > 0 && n > 1) {
@@ -427,7 +433,7 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
     for (int p : s.leaders) names += (names.empty() ? "" : ", ") + g.players()[static_cast<std::size_t>(p)].name;
     ImGui::Text("%s: %s", s.leaders.size() > 1 ? "Tied" : "Winner", names.c_str());
   }
-  ImGui::TextDisabled(final ? "Enter: play again   Tab: next mode   Esc: menu" : "Enter: next hole");
+  ImGui::TextDisabled(final ? "N: a new round   Tab: next mode   Esc: menu" : "Enter: next hole");
   ImGui::End();
 }
 

@@ -35,6 +35,7 @@ Intents golf_intents(const std::vector<KeyPress>& keys) {
                                   {GLFW_KEY_C, IntentKind::CaddieClub},
                                   {GLFW_KEY_B, IntentKind::CaddiePlays},
                                   {GLFW_KEY_H, IntentKind::Concede},
+                                  {GLFW_KEY_N, IntentKind::NewRound},
                                   {GLFW_KEY_ENTER, IntentKind::Continue},
                                   {GLFW_KEY_KP_ENTER, IntentKind::Continue}});
 }
@@ -134,6 +135,7 @@ class GolfView final : public ModeView {
     std::vector<double> times;  // the shot's time at each 1/60 s of the replay
     double from = 0.0;          // mode time it started
     bool struck = false;        // its strike has sounded
+    std::string whose;          // "scratch bot, stroke 2, 3-wood": whose stroke it shows
   };
   std::optional<Replay> replay_;
   static constexpr double kReplayFps = 60.0, kReplaySlow = 8.0;
@@ -339,20 +341,37 @@ Camera GolfView::high_camera() const {
 }
 
 Camera GolfView::map_camera() const {
-  // The hole from above, the ball at the bottom and the cup at the top of the picture.
+  // The hole from above, up the picture from its tee toward its cup (so the map keeps its
+  // way up however the ball lies, past the cup included), framing the ball and the cup: the
+  // lowest of them 80 % of the way down the picture (above the meter), the highest 15 % from
+  // its top, so the green behind the flag is on the map. In flight, and while the ball
+  // settles, the stroke from where it was struck to where it stops.
   const GolfRound& r = play_->round();
-  const Vec3 ball = r.finished() ? r.course().holes.back().tee : r.ball();
-  const Vec3 pin = r.finished() ? r.course().holes.back().pin : r.hole().pin;
-  const Vec3 d = flat_unit(ball, pin);
-  const double len = std::max(std::hypot(pin.x() - ball.x(), pin.z() - ball.z()), 30.0);
+  const std::size_t shown = std::min(play_->hole_shown(), r.course().holes.size() - 1);
+  const CourseHole& hole = r.course().holes[shown];
+  const Vec3& pin = hole.pin;
+  const Vec3 d = flat_unit(hole.tee, pin);
+  std::vector<Vec3> points;
+  const bool after_stroke = play_->stage() == GolfPlay::Stage::Flying || play_->stage() == GolfPlay::Stage::HoleOver ||
+                            play_->stage() == GolfPlay::Stage::RoundOver || r.finished() || r.hole_index() != shown;
+  if (after_stroke || (flight_shown_ && play_->last_shot().trajectory.samples.size() >= 2)) {
+    points.push_back(play_->last_shot().launch_state.position);
+    points.push_back(play_->last_shot().trajectory.summary.rest_position);
+  }
+  if (!r.finished() && r.hole_index() == shown) points.push_back(r.ball());
+  if (points.empty()) points.push_back(hole.tee);
+  double lo = 0.0, hi = 0.0;  // m along d from the cup
+  for (const Vec3& p : points) {
+    const double a = (p.x() - pin.x()) * d.x() + (p.z() - pin.z()) * d.z();
+    lo = std::min(lo, a);
+    hi = std::max(hi, a);
+  }
   Camera c;
   c.fov_y = deg_to_rad(40.0);
-  // The ball 80 % of the way down the picture (above the meter), the cup 15 % from its top,
-  // so the green behind the flag (a fifth of the hole's length beyond it) is on the map.
-  constexpr double kBallAt = 0.80, kCupAt = 0.15;
-  const double span = len / (kBallAt - kCupAt);  // m from the picture's top to its bottom
+  constexpr double kLowestAt = 0.80, kHighestAt = 0.15;
+  const double span = std::max(hi - lo, 30.0) / (kLowestAt - kHighestAt);  // m from the picture's top to its bottom
   const double height = 0.5 * span / std::tan(0.5 * c.fov_y);
-  const Vec3 mid = ball + (kBallAt - 0.5) * span * d;
+  const Vec3 mid = pin + (lo + (kLowestAt - 0.5) * span) * d;
   c.target = mid;
   c.eye = mid + Vec3(0.0, height, 0.0) - 0.02 * height * d;
   c.up = d;
@@ -401,6 +420,20 @@ void GolfView::start_replay(double now) {
   timing.slow = kReplaySlow;
   r.times = clip_frame_times(timing);
   r.from = now;
+  // Whose stroke: the last one struck, which may be another player's.
+  const GolfGroup& g = play_->group();
+  const int who = play_->shooter();
+  if (who >= 0 && who < static_cast<int>(g.players().size())) {
+    // The last stroke swung (a conceded putt after it was not).
+    const HoleCard* card = nullptr;
+    std::size_t stroke = 0;
+    for (const HoleCard& c : g.round(who).card())
+      for (std::size_t k = 0; k < c.shots.size(); ++k)
+        if (!c.shots[k].conceded) card = &c, stroke = k + 1;
+    r.whose = g.players()[static_cast<std::size_t>(who)].name;
+    if (card != nullptr) r.whose += ", stroke " + std::to_string(stroke) + " on hole " + std::to_string(card->number);
+    r.whose += ", " + play_->last_record().club;
+  }
   replay_ = std::move(r);
 }
 
@@ -427,7 +460,7 @@ bool GolfView::draw_replay(const ViewInput& in, Renderer& renderer) {
                       ease_in_out(std::clamp((t - follow_from) / 0.5, 0.0, 1.0)));
   renderer.draw(r.scene->build(cam, t, w, h), cam);
   renderer.blit_to(0, w, h);
-  draw_banner("Replay   R: stop", w, 20.0f);
+  draw_banner(("Replay" + (r.whose.empty() ? std::string() : ": " + r.whose) + "   R: stop").c_str(), w, 20.0f);
   draw_launch_panel(play_->last_shot(), units_, w, std::max(t, 0.0));
   return true;
 }

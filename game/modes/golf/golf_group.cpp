@@ -77,7 +77,8 @@ void GolfGroup::concede_hole() {
   r.concede_hole();
   events_.push_back({p, GolfEvent::Kind::ConcedeHole, {}, false});
   after_turn(p, hole);
-  note_ = players_[static_cast<std::size_t>(p)].name + " concedes hole " + std::to_string(course_.holes[hole].number);
+  const std::string& who = players_[static_cast<std::size_t>(p)].name;
+  note_ = who + (who == "You" ? " concede hole " : " concedes hole ") + std::to_string(course_.holes[hole].number);
   // The hole is decided: the opponent need not hole out (Rule 3.2b(1)).
   GolfRound& other = rounds_[static_cast<std::size_t>(1 - p)];
   if (other.hole_index() == hole) {
@@ -94,12 +95,13 @@ void GolfGroup::after_turn(int player, std::size_t hole_before) {
   if (r.hole_index() == hole_before && options_.gimme_m > 0.0 && r.lie() == "green" && r.to_pin() <= options_.gimme_m) {
     r.concede_stroke();
     // The distance is the HUD's to give, in the player's units ("At rest 4 in from the pin").
-    std::snprintf(buf, sizeof buf, "%s's putt is conceded", name.c_str());
+    if (name == "You") std::snprintf(buf, sizeof buf, "Your putt is conceded");
+    else std::snprintf(buf, sizeof buf, "%s's putt is conceded", name.c_str());
     note_ = buf;
   }
   const HoleCard& c = r.card()[hole_before];
   if (c.picked_up) {
-    std::snprintf(buf, sizeof buf, "%s picks up at %d strokes", name.c_str(), GolfRound::kPickUp);
+    std::snprintf(buf, sizeof buf, "%s %s up at %d strokes", name.c_str(), name == "You" ? "pick" : "picks", GolfRound::kPickUp);
     note_ = buf;
   }
   choose_next();

@@ -418,8 +418,9 @@ void GolfPlay::apply(const Intent& in) {
       }
       break;
     case Stage::RoundOver:
-      // The final card stays until dismissed: Enter (after the grace) or Restart starts anew.
-      if (in.kind == IntentKind::Continue && t - landed_at_ >= kCardGrace) new_round(t);
+      // The final card stays until a new round is asked for (N, or the menu's restart): the
+      // Enters a player presses to skip flights and turns never throw it away.
+      if (in.kind == IntentKind::NewRound) new_round(t);
       break;
   }
 }
@@ -428,6 +429,7 @@ void GolfPlay::new_round(double t) {
   group_ = GolfGroup(assets_, course_, setup_.players, setup_.options);
   last_record_ = StrokeRecord{};
   own_last_.clear();
+  restarts_.clear();
   pending_message_.clear();
   meter_.reset();
   last_meter_.reset();
@@ -448,6 +450,8 @@ void GolfPlay::restart_hole(double t) {
   }
   // The round is deterministic: the turns before this hole, replayed, leave it exactly where
   // it was when the hole began.
+  restarts_.resize(course_.holes.size(), 0);
+  ++restarts_[hole];
   const std::size_t first = std::min(group_.hole_first_event(hole), group_.events().size());
   std::vector<GolfEvent> before(group_.events().begin(), group_.events().begin() + static_cast<std::ptrdiff_t>(first));
   group_ = GolfGroup(assets_, course_, setup_.players, setup_.options);
@@ -459,7 +463,7 @@ void GolfPlay::restart_hole(double t) {
   landed_at_ = t;
   stage_ = Stage::Aiming;
   begin_turn(t);
-  say("Hole " + std::to_string(course_.holes[group_.hole_index()].number) + " restarted");
+  say("Hole " + std::to_string(course_.holes[group_.hole_index()].number) + " restarted (the card marks it R)");
 }
 
 }  // namespace sweetspot

@@ -107,6 +107,9 @@ class GolfPlay {
     const bool after_stroke = stage_ == Stage::Flying || stage_ == Stage::HoleOver || stage_ == Stage::RoundOver;
     return after_stroke ? round_hole_ : group_.hole_index();
   }
+  /// How many times the hole at group index `hole` was started again from the pause menu
+  /// this round: a mulligan the card shows (R), since the strokes it threw away are gone.
+  int restarts(std::size_t hole) const { return hole < restarts_.size() ? restarts_[hole] : 0; }
   /// The ball's centre where it lies (teed up on a tee).
   Vec3 ball_centre() const;
   /// World direction of the aim, horizontal unit.
@@ -178,6 +181,7 @@ class GolfPlay {
   std::string last_rest_lie_;
   std::string pending_message_;  ///< the stroke's result, told when the ball stops
   std::vector<std::optional<OwnLast>> own_last_;  ///< per player, set when their ball stops
+  std::vector<int> restarts_;                     ///< per hole: restart_hole() this round
   double struck_at_ = 0.0, landed_at_ = 0.0, turn_at_ = 0.0, flyover_at_ = 0.0;
   std::string message_;
   bool message_is_result_ = false;

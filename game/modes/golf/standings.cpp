@@ -24,11 +24,15 @@ Standings standings(const GolfGroup& g) {
       ps.net.push_back(c.strokes - given[h]);
       // A hole not holed (picked up) has no score: no points (Rule 21.1b(1)).
       ps.points.push_back(c.holed ? stableford_points(c.par, c.strokes - given[h]) : 0);
-      ps.total_strokes += c.strokes;
+      const bool scored = c.holed || c.picked_up;
+      ps.scored.push_back(scored);
       ps.total_putts += c.putts;
-      ps.total_net += c.strokes - given[h];
       ps.total_points += ps.points.back();
-      ps.total_par += c.par;
+      if (scored) {
+        ps.total_strokes += c.strokes;
+        ps.total_net += c.strokes - given[h];
+        ps.total_par += c.par;
+      }
       if (c.conceded) conceded_by[h] = p;
     }
     nets.push_back(ps.net);

@@ -12,7 +12,13 @@ namespace sweetspot {
 
 struct PlayerStanding {
   std::vector<int> gross, putts, received, net, points;  ///< per finished hole
-  int total_strokes = 0, total_putts = 0, total_net = 0, total_points = 0, total_par = 0;
+  /// Per finished hole: it has a score (holed, or picked up at the stroke limit). A match's
+  /// hole conceded, or left once the other side conceded it, has none: its strokes are not
+  /// a score, and the totals and "to par" leave it out (they would read 2 strokes on a par 4
+  /// as two under).
+  std::vector<bool> scored;
+  int total_strokes = 0, total_putts = 0, total_net = 0, total_points = 0;
+  int total_par = 0;  ///< the par of the scored holes
 };
 
 struct Standings {

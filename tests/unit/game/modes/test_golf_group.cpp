@@ -135,6 +135,21 @@ TEST_CASE("match play: the status follows the holes won, a short putt is concede
     lead += winner == 0 ? 1 : winner == 1 ? -1 : 0;
   }
   CHECK(s.match->lead == lead);
+  // The conceded hole has no score for either side (the conceder's strokes so far, the other
+  // side's left unfinished): the totals and "to par" are the holes played out only, so two
+  // strokes on a par 4 never read as two under.
+  for (std::size_t p = 0; p < 2; ++p) {
+    const PlayerStanding& ps = s.players[p];
+    CHECK_FALSE(ps.scored[0]);
+    int strokes = 0, par = 0;
+    for (std::size_t h = 1; h < s.holes; ++h) {
+      CHECK(ps.scored[h]);
+      strokes += ps.gross[h];
+      par += g.course().holes[h].par;
+    }
+    CHECK(ps.total_strokes == strokes);
+    CHECK(ps.total_par == par);
+  }
   // Every conceded putt was inside the gimme; no putt was played from inside it.
   for (int p = 0; p < 2; ++p)
     for (const HoleCard& c : g.round(p).card())

@@ -146,8 +146,10 @@ TEST_CASE("a hole played through intents: the caddie's strokes, putts with two c
     play.update({at(IntentKind::Continue, t)}, t);  // Enter: skip the flight
   }
   REQUIRE(play.stage() == GolfPlay::Stage::RoundOver);
-  // An Enter at once keeps the final card (it was meant for the flight); a later one starts anew.
+  // Enters (pressed to skip flights and turns) keep the final card, however late; N starts anew.
   play.update({at(IntentKind::Continue, t + 0.1)}, t + 0.1);
+  CHECK(play.stage() == GolfPlay::Stage::RoundOver);
+  play.update({at(IntentKind::Continue, t + 5.0)}, t + 5.0);
   CHECK(play.stage() == GolfPlay::Stage::RoundOver);
   const HoleCard& card = play.round().card().front();
   CHECK(static_cast<int>(card.shots.size()) == played);
@@ -182,6 +184,9 @@ TEST_CASE("restarting a hole puts the round back where the hole began", "[modes]
   CHECK(play.round().card().front().strokes == hole1);
   CHECK((play.round().ball() - tee).norm() == 0.0);
   CHECK(play.stage() == GolfPlay::Stage::Aiming);
+  // The card says so (R): the strokes thrown away are gone, so a mulligan is not hidden.
+  CHECK(play.restarts(1) == 1);
+  CHECK(play.restarts(0) == 0);
 }
 
 TEST_CASE("a bot takes its own turn, and a stroke's result is told once the ball stops", "[modes][golf]") {

@@ -27,6 +27,16 @@ ValidationLibrary library(const std::string& cases) {
   return load_validation_library(p);
 }
 
+// One case after the library's source, its [[case]] on the file's line 7.
+ValidationLibrary one_case(const std::string& id, const std::string& tags, const std::string& scenario,
+                           const std::string& set, const std::string& quantity, const std::string& published,
+                           const std::string& tolerance) {
+  return library("\n[[case]]\nid = \"" + id + "\"\nsource = \"s\"\ntags = " + tags + "\n" +
+                 (scenario.empty() ? std::string() : "scenario = \"" + scenario + "\"\n") + "set = " + set +
+                 "\nquantity = \"" + quantity + "\"\npublished = \"" + published + "\"\ntolerance = \"" + tolerance +
+                 "\"\nwhy = \"x\"\n");
+}
+
 const char* kCases = R"(
 [[case]]
 id = "driver-carry"
@@ -106,18 +116,8 @@ TEST_CASE("validate runs a case through the shot path, a baseline as a differenc
 }
 
 TEST_CASE("a case whose conditions the schema refuses names the case's file:line", "[validation]") {
-  const ValidationLibrary lib = library(R"(
-[[case]]
-id = "too-fast"
-source = "s"
-tags = ["golf", "launch"]
-scenario = "golf/driver"
-set = ["swing.speed=900mph"]
-quantity = "spin"
-published = "2500rpm"
-tolerance = "100rpm"
-why = "x"
-)");
+  const ValidationLibrary lib =
+      one_case("too-fast", R"(["golf", "launch"])", "golf/driver", R"(["swing.speed=900mph"])", "spin", "2500rpm", "100rpm");
   try {
     run_validation(test::assets(), lib);
     FAIL("accepted");
@@ -129,29 +129,12 @@ why = "x"
 TEST_CASE("a case that asks what its shot cannot give is refused, not failed", "[validation][hostile]") {
   // A launch-only shot has no club speed, so no smash factor (it would read 0 and fail);
   // a golf scenario under a baseball case's first tag is a golf shot in the baseball score.
-  const ValidationLibrary no_club = library(R"(
-[[case]]
-id = "no-club"
-source = "s"
-tags = ["golf", "launch"]
-set = ["world.name=none", "launch.ball_speed=150mph", "launch.vertical_angle=10deg", "launch.spin=2500rpm"]
-quantity = "smash_factor"
-published = "1.45"
-tolerance = "0.05"
-why = "x"
-)");
+  const ValidationLibrary no_club =
+      one_case("no-club", R"(["golf", "launch"])", "",
+               R"(["world.name=none", "launch.ball_speed=150mph", "launch.vertical_angle=10deg", "launch.spin=2500rpm"])",
+               "smash_factor", "1.45", "0.05");
   CHECK_THROWS_WITH(run_validation(test::assets(), no_club), Contains("cases.toml:7") && Contains("no smash factor"));
-  const ValidationLibrary wrong_sport = library(R"(
-[[case]]
-id = "wrong-sport"
-source = "s"
-tags = ["baseball", "carry"]
-scenario = "golf/driver"
-set = ["world.name=none"]
-quantity = "carry"
-published = "275yd"
-tolerance = "11yd"
-why = "x"
-)");
+  const ValidationLibrary wrong_sport =
+      one_case("wrong-sport", R"(["baseball", "carry"])", "golf/driver", R"(["world.name=none"])", "carry", "275yd", "11yd");
   CHECK_THROWS_WITH(run_validation(test::assets(), wrong_sport), Contains("cases.toml:7") && Contains("golf shot"));
 }

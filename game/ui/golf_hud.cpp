@@ -120,7 +120,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing).
     if (const auto& plan = play.caddie_plan(); plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn())
-      ImGui::Text("Caddie: a part swing, %.0f %% power", 100.0 * plan->meter.power);
+      ImGui::Text("Caddie: a part swing, %.0f %% power (blue mark)", 100.0 * plan->meter.power);
     // An aim off the pin against a crosswind says why: the ball drifts back with the wind.
     const HoleWind hw = r.wind();
     const double cross = hw.speed * std::sin(hw.toward - r.line_to_pin());  // m/s, + toward the right
@@ -274,6 +274,14 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   } else {
     std::snprintf(label, sizeof label, "%s: Space to swing (difficulty %s: perfect within %.0f ms)", play.club().c_str(),
                   to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty));
+  }
+  // The caddie's part swing (his club, under full power): a mark on the bar where his power
+  // is, as the putt's cup is marked, so "Caddie: a part swing, 36 % power" has a target.
+  if (!putting) {
+    if (const auto& plan = play.caddie_plan(); plan && plan->club == play.club() && plan->meter.power < 0.97) {
+      const float x = at(plan->meter.power);
+      dl->AddTriangleFilled(ImVec2(x - 6, y0 - 10), ImVec2(x + 6, y0 - 10), ImVec2(x, y0), IM_COL32(120, 220, 255, 255));
+    }
   }
   dl->AddText(ImVec2(x0, y0 - 26), IM_COL32(255, 255, 255, 255), label);
 }

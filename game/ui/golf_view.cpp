@@ -568,7 +568,13 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
                            : scene_->camera(CameraKind::Follow, t, w, h);
       // The player's camera stays behind the golfer while he swings through and the ball
       // leaves, then goes after the ball.
-      if (camera_ == 1 && flying && address_view_)
+      // A putt is watched as television shows one: from behind the ball down its line with
+      // the cup in the picture, to the end. Chased, the camera rose over the rolling ball and
+      // lost the cup.
+      const bool putt = play_->last_record().club == "putter";
+      if (camera_ == 1 && putt && address_view_)
+        cam = *address_view_;
+      else if (camera_ == 1 && flying && address_view_)
         cam = blend_cameras(*address_view_, cam, ease_in_out(std::clamp((t - kHoldAddress) / kLeaveAddress, 0.0, 1.0)));
     } else if (addressing) {
       cam = camera_ == 2 ? high_camera() : camera_ == 3 ? map_camera() : camera_ == 4 ? green_camera(true) : address_camera();

@@ -135,7 +135,7 @@ class GolfView final : public ModeView {
     std::vector<double> times;  // the shot's time at each 1/60 s of the replay
     double from = 0.0;          // mode time it started
     bool struck = false;        // its strike has sounded
-    std::string whose;          // "scratch bot, stroke 2, 3-wood": whose stroke it shows
+    std::string whose;          // whose stroke it shows: "scratch bot, stroke 2 on hole 1, 3-wood"
   };
   std::optional<Replay> replay_;
   static constexpr double kReplayFps = 60.0, kReplaySlow = 8.0;
@@ -569,8 +569,8 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       // The player's camera stays behind the golfer while he swings through and the ball
       // leaves, then goes after the ball.
       // A putt is watched as television shows one: from behind the ball down its line with
-      // the cup in the picture, to the end. Chased, the camera rose over the rolling ball and
-      // lost the cup.
+      // the cup in the picture, to the end (a chase camera rises over a rolling ball and
+      // loses the cup).
       const bool putt = play_->last_record().club == "putter";
       if (camera_ == 1 && putt && address_view_)
         cam = *address_view_;

@@ -306,7 +306,9 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
     ImGui::Text("Rolled      %s", units.putt(r.trajectory.summary.total_m).c_str());
   } else if (!putt && flight_t >= r.trajectory.summary.hang_time_s) {
     ImGui::Separator();
-    ImGui::Text("Carry       %s", units.distance(r.trajectory.summary.carry_m).c_str());
+    // Short of 20 m in the putt's units, as the landing's label in the picture reads.
+    const double carry = r.trajectory.summary.carry_m;
+    ImGui::Text("Carry       %s", carry < 20.0 ? units.putt(carry).c_str() : units.distance(carry).c_str());
     ImGui::Text("Height      %s", units.putt(r.trajectory.summary.apex_m).c_str());
   }
   ImGui::End();

@@ -1,5 +1,6 @@
 #include "game/app/clip_recorder.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 
@@ -15,6 +16,12 @@ constexpr double kClipSlow = 40.0;
 }  // namespace
 
 ClipRecorder::~ClipRecorder() { wait(); }
+
+bool ClipRecorder::busy() {
+  return std::any_of(jobs_.begin(), jobs_.end(), [](std::future<std::string>& j) {
+    return j.valid() && j.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
+  });
+}
 
 void ClipRecorder::wait() {
   for (auto& j : jobs_)

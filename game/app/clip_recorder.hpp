@@ -23,6 +23,10 @@ class ClipRecorder {
   /// Starts a clip of `scene`'s shot; returns the file it will be, or "" when there is no
   /// shot to show.
   std::string start(const ShotScene& scene);
+  /// Whether a clip is still being made. One at a time: each is a whole off-screen render on
+  /// its own thread, so F10 held down (key repeat) would start dozens, and the program's exit
+  /// waits for them all.
+  bool busy();
   /// Waits until every clip started is written (or has failed).
   void wait();
   /// One line for each clip finished since the last call ("clip: F (N frames)" or why not).

@@ -90,7 +90,11 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
         snapshot = true;
         continue;
       }
-      if (k.key == GLFW_KEY_F10) {  // a clip of the shot on screen, in any mode
+      if (k.key == GLFW_KEY_F10) {  // a clip of the shot on screen, in any mode, one at a time
+        if (clips.busy()) {
+          out << "clip: one is still being made; F10 again once it is written\n";
+          continue;
+        }
         const ShotScene* scene = view.clip_scene();
         const std::string path = scene ? clips.start(*scene) : std::string();
         out << (path.empty() ? std::string("clip: no shot on screen yet") : "clip: making " + path) << "\n";
@@ -221,6 +225,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
   }
   for (const Slot& s : slots)
     if (s.view) s.view->report(out);
+  if (clips.busy()) out << "clip: finishing the clip being made before closing\n" << std::flush;
   clips.wait();
   for (const std::string& line : clips.finished()) out << line << "\n";
   return stats;

@@ -84,10 +84,16 @@ class GolfView final : public ModeView {
   const char* restart_label() const override {
     return play_->stage() == GolfPlay::Stage::RoundOver ? "New round" : "Restart hole";
   }
-  bool busy() const override { return play_->stage() == GolfPlay::Stage::Swinging; }
+  // A swing or a latency calibration under way: Esc takes it back instead of pausing.
+  bool busy() const override { return play_->stage() == GolfPlay::Stage::Swinging || calibration_.has_value(); }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 10; }
   void send(const Intent& in) override {
     replay_.reset();  // Esc (and the pause menu) ends a replay
+    if (in.kind == IntentKind::Cancel && calibration_) {
+      calibration_.reset();
+      note("Calibration cancelled; nothing changed (L to try again)");
+      return;
+    }
     play_->update({in}, in.time);
   }
   void frame(const ViewInput& in, Renderer& renderer) override;

@@ -9,7 +9,6 @@
 #pragma once
 
 #include <charconv>
-#include <cmath>
 #include <cstdint>
 
 #include <functional>
@@ -20,6 +19,7 @@
 
 #include "game/content/assets.hpp"
 #include "physics/error.hpp"
+#include "physics/range.hpp"
 
 namespace sweetspot::cli {
 
@@ -46,19 +46,14 @@ inline const CLI::Validator kNotEmpty(
 /// A number flag within [lo, hi]. CLI::Range alone lets "nan" through (no comparison with
 /// NaN is true), which a run would then read as the flag left out.
 inline CLI::Validator finite_range(double lo, double hi) {
-  const auto shown = [](double v) {
-    std::string t = std::to_string(v);
-    t.erase(t.find_last_not_of('0') + 1);
-    if (!t.empty() && t.back() == '.') t.pop_back();
-    return t;
-  };
-  const std::string allowed = "[" + shown(lo) + ", " + shown(hi) + "]";
+  const Range range{lo, hi};
+  const std::string allowed = range_text(range, "");
   return CLI::Validator(
-      [lo, hi, allowed](std::string& text) -> std::string {
+      [range, allowed](std::string& text) -> std::string {
         double v = 0.0;
         const char* end = text.data() + text.size();
         const auto [p, ec] = std::from_chars(text.data(), end, v);
-        if (text.empty() || ec != std::errc() || p != end || !std::isfinite(v) || v < lo || v > hi)
+        if (text.empty() || ec != std::errc() || p != end || !range.contains(v))  // contains: false for NaN
           return "'" + text + "' is not a number in " + allowed;
         return {};
       },

@@ -358,8 +358,7 @@ Camera GolfView::map_camera() const {
   const Vec3& pin = hole.pin;
   const Vec3 d = flat_unit(hole.tee, pin);
   std::vector<Vec3> points;
-  const bool after_stroke = play_->stage() == GolfPlay::Stage::Flying || play_->stage() == GolfPlay::Stage::HoleOver ||
-                            play_->stage() == GolfPlay::Stage::RoundOver || r.finished() || r.hole_index() != shown;
+  const bool after_stroke = play_->after_stroke() || r.finished() || r.hole_index() != shown;
   if (after_stroke || (flight_shown_ && play_->last_shot().trajectory.samples.size() >= 2)) {
     points.push_back(play_->last_shot().launch_state.position);
     points.push_back(play_->last_shot().trajectory.summary.rest_position);

@@ -103,10 +103,9 @@ class GolfPlay {
 
   /// The hole on screen (the group's index): during a flight and on the card after it, the
   /// hole of the last stroke, though the group may already be on the next.
-  std::size_t hole_shown() const {
-    const bool after_stroke = stage_ == Stage::Flying || stage_ == Stage::HoleOver || stage_ == Stage::RoundOver;
-    return after_stroke ? round_hole_ : group_.hole_index();
-  }
+  std::size_t hole_shown() const { return after_stroke() ? round_hole_ : group_.hole_index(); }
+  /// A stroke is in the air, or its hole or round has just ended on it.
+  bool after_stroke() const { return stage_ == Stage::Flying || stage_ == Stage::HoleOver || stage_ == Stage::RoundOver; }
   /// How many times the hole at group index `hole` was started again from the pause menu
   /// this round: a mulligan the card shows (R), since the strokes it threw away are gone.
   int restarts(std::size_t hole) const { return hole < restarts_.size() ? restarts_[hole] : 0; }

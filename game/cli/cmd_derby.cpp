@@ -58,6 +58,7 @@ int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
           std::printf("%s %-2d %-6s #%d  %-32s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
                       pa.bases_before[1] + 1, "starts on 2nd (extra innings)");
         half_shown = half;
+        if (pa.pitching_change) std::printf("%s %-2d %s\n", pa.bottom ? "bot" : "top", pa.inning, pitching_change_text(pa).c_str());
         std::printf("%s %-2d %-6s #%d  %-32s %s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
                     pa.batter + 1, pa.description.c_str(),
                     pa.runs == 1 ? "1 run scores" : pa.runs > 1 ? (std::to_string(pa.runs) + " runs score").c_str() : "");

@@ -33,6 +33,8 @@ nlohmann::json team_json(const TeamBox& t) {
   for (const PitchingLine& p : t.pitchers) {
     nlohmann::json one = pitching(p);
     one["decision"] = to_string(p.decision);  // "W", "L", "S" or ""
+    one["inherited_runners"] = p.inherited;
+    one["inherited_scored"] = p.inherited_scored;
     pitchers.push_back(one);
   }
   return {{"team", t.name},
@@ -117,7 +119,9 @@ nlohmann::json game_json(const GameRecord& g) {
                    {"description", pa.description},
                    {"runs", pa.runs},
                    {"rbi", pa.rbi},
-                   {"outs_made", pa.outs_made}});
+                   {"outs_made", pa.outs_made},
+                   {"pitcher", pa.pitcher},
+                   {"pitching_change", pa.pitching_change}});
   }
   return {{"mode", "game"},
           {"seed", g.options.seed},
@@ -127,6 +131,20 @@ nlohmann::json game_json(const GameRecord& g) {
           {"stopped_tied", g.stopped_tied},
           {"plate_appearances", pas},
           {"box_score", {{"away", team_json(g.away)}, {"home", team_json(g.home)}}}};
+}
+
+std::string pitching_change_text(const PlateAppearance& pa) {
+  const auto name = [](int i) { return i == 0 ? std::string("SP") : "RP" + std::to_string(i); };
+  std::string out = std::string(pa.bottom ? "away" : "home") + " pitching change: " + name(pa.pitcher) + " replaces " +
+                    name(pa.pitcher - 1);
+  static const char* kBase[] = {"1st", "2nd", "3rd"};
+  std::vector<std::string> on;
+  for (int b = 0; b < 3; ++b)
+    if (pa.bases_before[static_cast<std::size_t>(b)] >= 0) on.emplace_back(kBase[b]);
+  if (on.size() == 3) return out + ", bases loaded";
+  if (on.size() == 2) return out + ", runners on " + on[0] + " and " + on[1];
+  if (on.size() == 1) return out + ", a runner on " + on[0];
+  return out;
 }
 
 std::string box_score_text(const GameRecord& g) {
@@ -166,6 +184,14 @@ std::string box_score_text(const GameRecord& g) {
            p.so, p.hr, p.pitches, p.strikes);
     }
   }
+  // Inherited runners-scored, as a newspaper's box prints it under the pitching lines.
+  std::string inherited;
+  for (const TeamBox* t : {&g.away, &g.home})
+    for (std::size_t i = 1; i < t->pitchers.size(); ++i)
+      if (t->pitchers[i].inherited > 0)
+        inherited += (inherited.empty() ? "" : ", ") + t->name + " RP" + std::to_string(i) + " " +
+                     std::to_string(t->pitchers[i].inherited) + "-" + std::to_string(t->pitchers[i].inherited_scored);
+  if (!inherited.empty()) line(out, "Inherited runners-scored: %s.\n", inherited.c_str());
   if (g.walk_off) line(out, "\nWalk-off in the %s.\n", ordinal(g.innings_played).c_str());
   if (g.stopped_tied) line(out, "\nStopped tied after %d innings.\n", g.innings_played);
   return out;

@@ -14,6 +14,9 @@ namespace sweetspot {
 nlohmann::json game_json(const GameRecord& game);
 /// One swing's bat tracking (DESIGN §9), for every JSON that lists swings.
 nlohmann::json bat_tracking_json(const BatTracking& t);
+/// "home pitching change: RP2 replaces RP1, runners on 1st and 3rd" for the plate appearance
+/// a new pitcher came in to face (the play-by-play's line before it).
+std::string pitching_change_text(const PlateAppearance& pa);
 /// The line score, each team's batting lines and the pitching lines.
 std::string box_score_text(const GameRecord& game);
 /// The league-rate table of `rates` (the note's and the test's).

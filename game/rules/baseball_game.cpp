@@ -1,5 +1,6 @@
 #include "game/rules/baseball_game.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 namespace sweetspot {
@@ -46,6 +47,14 @@ int force_advance(Bases& b, int batter) {
   b[0] = batter;
   return runs;
 }
+
+void RunnerCharges::reached(int runner, int pitcher) { pitcher_.at(static_cast<std::size_t>(runner)) = pitcher; }
+
+void RunnerCharges::fielders_choice(int batter, int out_runner) {
+  pitcher_.at(static_cast<std::size_t>(batter)) = pitcher_.at(static_cast<std::size_t>(out_runner));
+}
+
+int RunnerCharges::charged(int runner) const { return pitcher_.at(static_cast<std::size_t>(runner)); }
 
 bool game_over(const GameSituation& s) {
   const bool last_or_later = s.inning >= s.scheduled;
@@ -95,9 +104,14 @@ void assign_decisions(const std::vector<ScoreAfter>& log, int scheduled, TeamBox
   TeamBox& wt = *team[w];
   TeamBox& lt = *team[l];
   if (log[go_ahead].fielding != l || wt.pitchers.empty() || lt.pitchers.empty()) return;
-  // Runs are charged to the pitcher who let the runner on; pitchers change between innings
-  // here, so that is the one pitching when it scored.
-  lt.pitchers[static_cast<std::size_t>(log[go_ahead].pitcher)].decision = Decision::Loss;
+  // The go-ahead run is charged to the pitcher who let that runner on (Rule 9.16(g)), who
+  // may have left before it scored. Runs score lead runner first: it is the run after the
+  // ones that drew the winners level.
+  const ScoreAfter& at = log[go_ahead];
+  const int before = go_ahead == 0 ? 0 : runs(log[go_ahead - 1], w);
+  const std::size_t nth = static_cast<std::size_t>(std::max(0, runs(at, l) - before));
+  const int loser = nth < at.charged.size() ? at.charged[nth] : at.pitcher;
+  lt.pitchers[static_cast<std::size_t>(loser)].decision = Decision::Loss;
   std::size_t record = 0;  // the winners' pitcher of record: the last of theirs to pitch before it
   for (std::size_t i = 0; i < go_ahead; ++i)
     if (log[i].fielding == w) record = static_cast<std::size_t>(log[i].pitcher);
@@ -111,7 +125,8 @@ void assign_decisions(const std::vector<ScoreAfter>& log, int scheduled, TeamBox
   const std::size_t last = wt.pitchers.size() - 1;
   PitchingLine& f = wt.pitchers[last];
   const int lead = f.lead_at_entry;
-  const bool save_spot = (lead >= 1 && lead <= 3 && f.outs >= 3) || (lead >= 1 && lead <= 2) || f.outs >= 9;
+  const bool tying_run_near = lead >= 1 && lead <= f.runners_at_entry + 2;  // on base, at bat or on deck
+  const bool save_spot = (lead >= 1 && lead <= 3 && f.outs >= 3) || tying_run_near || f.outs >= 9;
   if (last != record && f.outs >= 1 && save_spot) f.decision = Decision::Save;
 }
 
@@ -152,7 +167,11 @@ std::string box_score_mismatch(const TeamBox& bat, const TeamBox& field) {
   const PitchingLine& p = field.pitching;
   if (!field.pitchers.empty()) {
     PitchingLine staff;
-    for (const PitchingLine& one : field.pitchers) staff += one;
+    for (const PitchingLine& one : field.pitchers) {
+      staff += one;
+      if (one.inherited_scored < 0 || one.inherited_scored > one.inherited || one.inherited > one.runners_at_entry)
+        return field.name + ": a pitcher's inherited runners who scored are not among those he inherited";
+    }
     if (staff.outs != p.outs || staff.r != p.r || staff.er != p.er || staff.h != p.h || staff.bb != p.bb ||
         staff.so != p.so || staff.pitches != p.pitches || staff.batters != p.batters)
       return field.name + ": the pitchers' lines do not add up to the staff's";

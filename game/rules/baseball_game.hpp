@@ -62,6 +62,11 @@ struct PitchingLine {
   Decision decision = Decision::None;
   /// His team's runs less the other team's when he came in (a save needs a lead of 1-3).
   int lead_at_entry = 0;
+  /// Runners on base when he came in (Rule 9.19(b)(2): the tying run on base, at bat or on
+  /// deck), and of those the ones a pitcher before him let on (he came in during an inning)
+  /// and how many of his inherited runners scored (Rule 9.16(g): charged to the pitcher who
+  /// let them on, not to him).
+  int runners_at_entry = 0, inherited = 0, inherited_scored = 0;
   PitchingLine& operator+=(const PitchingLine& o);  ///< the counts; not the decision or the lead
 };
 
@@ -75,12 +80,32 @@ struct TeamBox {
   std::vector<PitchingLine> pitchers;///< each pitcher in the order they pitched
 };
 
+/// Which pitcher each runner is charged to (MLB Rule 9.16(g)): the one who let him on base,
+/// not one who relieved him while the runner stood there. A batter who reaches on a fielder's
+/// choice that puts out a runner takes over that runner's charge: the rule charges "each
+/// pitcher with the number of runners he put on base, rather than with the individual
+/// runners". Runners are the batting order's 0..8, pitchers TeamBox::pitchers' indices.
+class RunnerCharges {
+ public:
+  /// `runner` reached base against `pitcher` (a hit, a walk, an error, extra innings' placed runner).
+  void reached(int runner, int pitcher);
+  /// The batter reached on a fielder's choice that put `out_runner` out.
+  void fielders_choice(int batter, int out_runner);
+  /// The pitcher charged with `runner`'s run when he scores.
+  int charged(int runner) const;
+
+ private:
+  std::array<int, 9> pitcher_{};
+};
+
 /// One plate appearance as the decisions read it: the fielding team (0 away, 1 home), the
-/// index of its pitcher in TeamBox::pitchers, and the score after it.
+/// index of its pitcher in TeamBox::pitchers, the score after it, and the pitcher charged with
+/// each run it brought in, in the order they scored (empty: the one pitching).
 struct ScoreAfter {
   int fielding = 0;
   int pitcher = 0;
   int away = 0, home = 0;
+  std::vector<int> charged;
 };
 
 /// Credits the win, the loss and a save to the pitchers of `away` and `home` from the game's
@@ -90,8 +115,8 @@ struct ScoreAfter {
 /// in a game of five or fewer `scheduled` innings), else the reliever the scorer judges most
 /// effective (here: the one with the most outs). Rule 9.19: the winners' finishing pitcher,
 /// not the winner, with an out, saves it when he came in leading by at most three and pitched
-/// an inning, or with the tying run at bat or on deck (a lead of one or two: pitchers change
-/// between innings, with the bases empty), or pitched three innings.
+/// an inning, or with the tying run on base, at bat or on deck (a lead of at most the runners
+/// on base and two), or pitched three innings.
 void assign_decisions(const std::vector<ScoreAfter>& log, int scheduled, TeamBox& away, TeamBox& home);
 
 /// "" when the decisions agree with the score (a decided game has one win and one loss, on the
@@ -102,7 +127,8 @@ std::string decisions_mismatch(const TeamBox& away, const TeamBox& home);
 /// Every way the lines of a box score must agree (the runs by inning add up to the runs, the
 /// batters' runs and hits to the team's, the opponents' pitching to the batting, their
 /// pitchers' lines to their staff's, a plate appearance is an at-bat, a walk, a hit-by-pitch
-/// or a sacrifice fly); "" when they all do, otherwise the first that does not.
+/// or a sacrifice fly; no pitcher's inherited runners scored more than he inherited); "" when
+/// they all do, otherwise the first that does not.
 std::string box_score_mismatch(const TeamBox& batting, const TeamBox& fielding);
 
 }  // namespace sweetspot

@@ -44,10 +44,19 @@ const char* lineup_position(int order) {
   return kPositions[static_cast<std::size_t>(order) % kPositions.size()];
 }
 
-bool Team::to_the_bullpen(int inning, std::uint64_t seed) {
+bool Team::to_the_bullpen(const MoundVisit& v, std::uint64_t seed) {
+  if (pitchers_used >= kMaxPitchers) return false;
   const int thrown = pitcher.pitches_thrown();
-  const bool starter_done = thrown >= kStarterPitches || inning > kStarterInnings;
-  if (pitchers_used == 1 ? !starter_done : thrown == 0) return false;
+  const bool starter = pitchers_used == 1;
+  bool done = v.runs_this_inning >= kBlowUpRuns;
+  if (v.inning_start)
+    done = done || (starter ? thrown >= kStarterPitches || v.inning > kStarterInnings
+                            : thrown > 0 && (v.outs_recorded >= 3 || thrown >= kRelieverPitches));
+  else if (starter)
+    done = done || thrown >= kStarterLimit || (thrown >= kStarterPitches - 15 && v.runners >= 2);
+  else
+    done = done || (thrown >= kRelieverPitches && v.runners >= 1) || thrown >= kRelieverPitches + 10;
+  if (!done) return false;
   pitcher = Pitcher(pitcher.profile(), seed);
   ++pitchers_used;
   return true;
@@ -199,7 +208,8 @@ struct HalfInning {
         }
         description = double_play ? "Grounded into a double play, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) +
                                         " to " + kPositionNames[static_cast<std::size_t>(pivot_at)] + " to 1B"
-                                  : "Fielder's choice, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) + " to 2B";
+                                  : "Fielder's choice, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) + " to " +
+                                        kPositionNames[static_cast<std::size_t>(pivot_at)];  // the man covering second
         bases = nb;
         return static_cast<int>(scored.size());
       }
@@ -267,8 +277,11 @@ void charge_pitcher(PitchingLine& p, const PlateAppearance& pa) {
   if (r == "single" || r == "double" || r == "triple" || r == "home_run") ++p.h;
   if (r == "home_run") ++p.hr;
   p.outs += pa.outs_made;
-  p.r += pa.runs;
 }
+
+int runners_on(const Bases& b) { return static_cast<int>(std::count_if(b.begin(), b.end(), [](int r) { return r >= 0; })); }
+
+bool on(const Bases& b, int who) { return std::find(b.begin(), b.end(), who) != b.end(); }
 
 }  // namespace
 
@@ -296,15 +309,12 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
       if (s.bottom && s.inning >= s.scheduled && s.home_runs > s.away_runs) break;  // the home team need not bat
       Team& bat = teams[half];
       Team& field = teams[1 - half];
+      TeamBox& fbox = box[1 - half];
       HalfInning h{assets, env, {-1, -1, -1}, 0};
-      // The fielding team's bullpen: a fresh pitcher for the inning when his turn has come.
-      if (field.to_the_bullpen(s.inning, o.seed * 1000003ULL + static_cast<std::uint64_t>(2 * s.inning + half))) {
-        box[1 - half].pitchers.emplace_back();
-        box[1 - half].pitchers.back().lead_at_entry = s.bottom ? s.away_runs - s.home_runs : s.home_runs - s.away_runs;
-      }
       // Runners whose runs are unearned (Rule 9.16): a batter who reached on an error, and
       // extra innings' placed runner.
       std::array<bool, 9> unearned{};
+      RunnerCharges charges;
       // Extra innings start with a runner on second: the batter before this half's leadoff
       // man (MLB Rule 7.01(b), since 2023).
       if (s.inning > s.scheduled) {
@@ -312,7 +322,25 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
         unearned[static_cast<std::size_t>(h.bases[1])] = true;
       }
       int runs = 0;
+      int runs_on_watch = 0;  // scored this half while the pitcher now on the mound pitched
+      bool inning_start = true;
       while (h.outs < 3) {
+        // The fielding team's bullpen: the manager's look before each batter.
+        const Team::MoundVisit visit{s.inning, inning_start, runners_on(h.bases), runs_on_watch, fbox.pitchers.back().outs};
+        const std::uint64_t mound_seed = o.seed * 1000003ULL + static_cast<std::uint64_t>(2 * s.inning + half) +
+                                         (inning_start ? 0ULL : 7919ULL * static_cast<std::uint64_t>(field.pitchers_used));
+        const bool change = field.to_the_bullpen(visit, mound_seed);
+        if (change) {
+          PitchingLine fresh;
+          fresh.lead_at_entry = s.bottom ? s.away_runs - s.home_runs : s.home_runs - s.away_runs;
+          fresh.runners_at_entry = visit.runners;
+          fresh.inherited = inning_start ? 0 : visit.runners;  // extra innings' runner is his own
+          fbox.pitchers.push_back(fresh);
+          runs_on_watch = 0;
+        }
+        const int mound = static_cast<int>(fbox.pitchers.size()) - 1;
+        if (inning_start && h.bases[1] >= 0) charges.reached(h.bases[1], mound);
+        inning_start = false;
         const int batter = next_up[half];
         next_up[half] = (batter + 1) % 9;
         PlateAppearance pa = plate_appearance(assets, bat.lineup[static_cast<std::size_t>(batter)], field);
@@ -321,6 +349,8 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
         pa.batter = batter;
         pa.outs_before = h.outs;
         pa.bases_before = h.bases;
+        pa.pitcher = mound;
+        pa.pitching_change = change;
         std::vector<int> scored;
         if (pa.result == "walk" || pa.result == "hit_by_pitch") {
           if (force_advance(h.bases, batter) > 0) scored.push_back(pa.bases_before[2]);
@@ -343,24 +373,43 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
                 break;
               }
           pa.rbi = error || double_play ? 0 : static_cast<int>(scored.size());
-          if (error) ++box[1 - half].errors;
+          if (error) ++fbox.errors;
         }
         if (s.bottom && s.inning >= s.scheduled && pa.result != "home_run") walk_off_limit(pa, s, scored);
         pa.runs = static_cast<int>(scored.size());
         unearned[static_cast<std::size_t>(batter)] = pa.result == "error";
+        // Who answers for each runner (Rule 9.16(g)): the batter aboard is this pitcher's,
+        // unless he reached on a fielder's choice that put out a runner another let on.
+        const bool batter_aboard = on(h.bases, batter) || (!scored.empty() && scored.back() == batter);
+        if (batter_aboard) charges.reached(batter, mound);
+        if (pa.result == "out" && on(h.bases, batter))
+          for (int was : pa.bases_before)
+            if (was >= 0 && !on(h.bases, was) && std::find(scored.begin(), scored.end(), was) == scored.end())
+              charges.fielders_choice(batter, was);
+        ScoreAfter after{1 - half, mound, 0, 0, {}};
         int earned = 0;
         for (int who : scored) {
           ++box[half].batting[static_cast<std::size_t>(who)].r;
-          if (!unearned[static_cast<std::size_t>(who)]) ++earned;
+          const bool is_earned = !unearned[static_cast<std::size_t>(who)];
+          earned += is_earned;
+          const int charged = charges.charged(who);
+          PitchingLine& answers = fbox.pitchers[static_cast<std::size_t>(charged)];
+          ++answers.r;
+          answers.er += is_earned;
+          if (charged != mound) ++fbox.pitchers[static_cast<std::size_t>(mound)].inherited_scored;
+          after.charged.push_back(charged);
         }
         runs += pa.runs;
+        runs_on_watch += pa.runs;
         (s.bottom ? s.home_runs : s.away_runs) += pa.runs;
         credit_batter(box[half].batting[static_cast<std::size_t>(batter)], pa);
-        charge_pitcher(box[1 - half].pitching, pa);
-        charge_pitcher(box[1 - half].pitchers.back(), pa);
-        box[1 - half].pitching.er += earned;
-        box[1 - half].pitchers.back().er += earned;
-        score_log.push_back({1 - half, static_cast<int>(box[1 - half].pitchers.size()) - 1, s.away_runs, s.home_runs});
+        charge_pitcher(fbox.pitching, pa);
+        charge_pitcher(fbox.pitchers.back(), pa);
+        fbox.pitching.r += pa.runs;
+        fbox.pitching.er += earned;
+        after.away = s.away_runs;
+        after.home = s.home_runs;
+        score_log.push_back(std::move(after));
         g.plate_appearances.push_back(std::move(pa));
         s.outs = h.outs;
         if (s.bottom && game_over(s) && h.outs < 3) {

@@ -36,6 +36,8 @@ struct PlateAppearance {
   std::string description; ///< in a scorer's words: "Strikeout swinging", "Fly out to CF", ...
   int runs = 0, rbi = 0, outs_made = 0;
   bool sacrifice_fly = false;
+  int pitcher = 0;           ///< the fielding team's pitcher (index in TeamBox::pitchers)
+  bool pitching_change = false;  ///< he came in to face this batter
 };
 
 struct GameOptions {
@@ -61,13 +63,30 @@ class Team {
   Pitcher pitcher;         ///< the one on the mound
   ScoutingReport report;   ///< of this team's pitchers, as the other team knows them
   int pitchers_used = 1;
-  /// Before half-inning `inning`: the starter gives way to the bullpen once he has thrown
-  /// kStarterPitches or worked kStarterInnings, each reliever after an inning of work
-  /// (ESTIMATE of today's usage: MLB starters averaged ~88 pitches and ~5⅓ innings in 2023-24,
-  /// relievers about an inning; complete games are under 1 % of starts). Returns whether he did.
-  bool to_the_bullpen(int inning, std::uint64_t seed);
+  /// The manager's look at his pitcher before a plate appearance.
+  struct MoundVisit {
+    int inning = 1;
+    bool inning_start = false;  ///< before the half's first batter
+    int runners = 0;            ///< on base now
+    int runs_this_inning = 0;   ///< scored while this pitcher was on the mound this half
+    int outs_recorded = 0;      ///< by this pitcher, the whole game
+  };
+  /// Whether the pitcher gives way to the bullpen now; a fresh one (seeded by `seed`) is then
+  /// on the mound. ESTIMATE of today's usage (MLB 2023-24: starters ~88 pitches and ~5⅓
+  /// innings, most of them relieved during an inning; relievers about an inning; complete
+  /// games under 1 % of starts): the starter goes before an inning once he has thrown
+  /// kStarterPitches or worked kStarterInnings, and during one at kStarterLimit, or from
+  /// kStarterPitches − 15 when two men are on; a reliever goes after an inning of work or
+  /// kRelieverPitches, and during an inning from kRelieverPitches with a man on; anyone who
+  /// has let in kBlowUpRuns this inning goes. No more than kMaxPitchers pitch (a roster's 13,
+  /// MLB Rule since 2022), the last one finishes.
+  bool to_the_bullpen(const MoundVisit& visit, std::uint64_t seed);
   static constexpr int kStarterPitches = 95;
   static constexpr int kStarterInnings = 6;
+  static constexpr int kStarterLimit = 110;
+  static constexpr int kRelieverPitches = 30;
+  static constexpr int kBlowUpRuns = 4;
+  static constexpr int kMaxPitchers = 13;
   Defense defense;
   Rng fielding_rng;
 };

@@ -340,3 +340,54 @@ TEST_CASE("over 60+ innings fouls per pitch sit near Statcast's league", "[baseb
   CHECK(pro.foul_per_pitch >= 0.163);
   CHECK(pro.foul_per_pitch <= 0.185);
 }
+
+TEST_CASE("over 40 games starters and relievers work as MLB's do, relieved during innings with runners charged to them",
+          "[baseball][game][reference][statistics]") {
+  // MLB 2023 (Baseball-Reference league pitching): starters 5.3 innings and ~88 pitches a
+  // start, ~4.4 pitchers a team a game, and about 30 % of the runners relievers inherit score.
+  int starts = 0, starter_outs = 0, starter_pitches = 0, pitchers = 0, relieved_mid_inning = 0, inherited = 0, scored = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    GameOptions o;
+    o.seed = seed;
+    const GameRecord g = play_game(test::assets(), o);
+    CHECK(box_score_mismatch(g.away, g.home) == "");
+    CHECK(box_score_mismatch(g.home, g.away) == "");
+    CHECK(decisions_mismatch(g.away, g.home) == "");
+    for (const TeamBox* t : {&g.away, &g.home}) {
+      ++starts;
+      starter_outs += t->pitchers[0].outs;
+      starter_pitches += t->pitchers[0].pitches;
+      pitchers += static_cast<int>(t->pitchers.size());
+      relieved_mid_inning += t->pitchers[0].outs % 3 != 0;
+      int runs = 0;
+      for (const PitchingLine& p : t->pitchers) {
+        CHECK(p.pitches <= 125);
+        inherited += p.inherited;
+        scored += p.inherited_scored;
+        runs += p.r;
+      }
+      CHECK(runs == t->pitching.r);
+    }
+    // Each plate appearance names the pitcher who faced it; a change is his first batter.
+    int last[2] = {0, 0};
+    for (const PlateAppearance& pa : g.plate_appearances) {
+      const int f = pa.bottom ? 0 : 1;
+      CHECK(pa.pitcher == last[f] + (pa.pitching_change ? 1 : 0));
+      last[f] = pa.pitcher;
+    }
+  }
+  const double ip = starter_outs / 3.0 / starts, per_start = double(starter_pitches) / starts;
+  const double staff = double(pitchers) / starts, share = double(scored) / inherited;
+  INFO("starters " << ip << " IP, " << per_start << " pitches; " << staff << " pitchers a team; " << relieved_mid_inning
+                   << " of " << starts << " starters relieved during an inning; inherited " << inherited << ", scored " << share);
+  CHECK(ip > 4.8);
+  CHECK(ip < 5.9);
+  CHECK(per_start > 80.0);
+  CHECK(per_start < 96.0);
+  CHECK(staff > 3.8);
+  CHECK(staff < 5.0);
+  CHECK(relieved_mid_inning >= starts / 5);
+  CHECK(inherited >= 40);
+  CHECK(share > 0.18);
+  CHECK(share < 0.42);
+}

@@ -110,7 +110,8 @@ TeamBox staff(const char* name, std::initializer_list<std::pair<int, int>> outs_
 TEST_CASE("the win, the loss and the save go where Rules 9.17 and 9.19 put them", "[baseball][rules][decisions]") {
   // Away leads 2-0 from the 1st; home goes ahead 3-2 off the away starter in the 6th and its
   // closer comes in for the 9th leading by one.
-  std::vector<ScoreAfter> log = {{1, 0, 2, 0}, {0, 0, 2, 0}, {0, 0, 2, 3}, {1, 0, 2, 3}, {1, 1, 2, 3}, {1, 1, 2, 3}};
+  std::vector<ScoreAfter> log = {{1, 0, 2, 0, {}}, {0, 0, 2, 0, {}}, {0, 0, 2, 3, {}},
+                                 {1, 0, 2, 3, {}}, {1, 1, 2, 3, {}}, {1, 1, 2, 3, {}}};
   TeamBox away = staff("away", {{18, 0}, {6, -1}}), home = staff("home", {{24, 0}, {3, 1}});
   away.runs = 2, home.runs = 3;
   assign_decisions(log, 9, away, home);
@@ -141,7 +142,7 @@ TEST_CASE("the win, the loss and the save go where Rules 9.17 and 9.19 put them"
 
   // The lead changes hands: the last go-ahead decides. Home leads 1-0, away goes ahead 2-1 off
   // home's reliever in the 7th, home ties it, away goes ahead for good off the next reliever.
-  log = {{0, 0, 0, 1}, {1, 1, 2, 1}, {0, 1, 2, 2}, {1, 2, 3, 2}, {0, 2, 3, 2}};
+  log = {{0, 0, 0, 1, {}}, {1, 1, 2, 1, {}}, {0, 1, 2, 2, {}}, {1, 2, 3, 2, {}}, {0, 2, 3, 2, {}}};
   away = staff("away", {{18, 0}, {6, -1}, {3, 1}});
   home = staff("home", {{18, 0}, {3, 1}, {3, 0}});
   away.runs = 3, home.runs = 2;
@@ -153,7 +154,7 @@ TEST_CASE("the win, the loss and the save go where Rules 9.17 and 9.19 put them"
   CHECK(decisions_mismatch(away, home) == "");
 
   // A tie has no decisions; a second winner, or a save on the losing side, is caught.
-  log.push_back({1, 2, 3, 3});
+  log.push_back({1, 2, 3, 3, {}});
   home.runs = 3;
   assign_decisions(log, 9, away, home);
   for (const TeamBox* t : {&away, &home})
@@ -171,4 +172,69 @@ TEST_CASE("the win, the loss and the save go where Rules 9.17 and 9.19 put them"
   CHECK(decisions_mismatch(away, home) == "");
   away.pitchers[2].er = 1;  // earned runs beyond his runs
   CHECK(decisions_mismatch(away, home) != "");
+}
+
+TEST_CASE("runs are charged to the pitcher who let the runner on, and a fielder's choice keeps his count (Rule 9.16(g))",
+          "[baseball][rules][decisions]") {
+  // The rule's own example: A walks the batter (1) and leaves; B gets a fielder's choice that
+  // forces 1 at second with the batter (2) safe, then a home run scores 2 and the hitter (3).
+  RunnerCharges charges;
+  charges.reached(1, 0);  // pitcher 0 (A) walks him
+  charges.reached(2, 1);  // the batter reaches against B ...
+  charges.fielders_choice(2, 1);  // ... on a fielder's choice that puts A's runner out
+  charges.reached(3, 1);
+  CHECK(charges.charged(2) == 0);  // A answers for the runner B's fielder's choice left on
+  CHECK(charges.charged(3) == 1);
+  // A fielder's choice on B's own runner changes nothing.
+  charges.reached(4, 1);
+  charges.fielders_choice(5, 4);
+  CHECK(charges.charged(5) == 1);
+  CHECK_THROWS(charges.reached(9, 0));  // the batting order is 0..8
+}
+
+TEST_CASE("the loss goes to the pitcher charged with the go-ahead run, though he had left; a save with the tying run on base",
+          "[baseball][rules][decisions]") {
+  // Tied 2-2 in the 8th, home's starter leaves two on; his reliever gives up a double that
+  // scores both: the go-ahead run (the first in) is the starter's, the second the reliever's.
+  std::vector<ScoreAfter> log = {{1, 0, 2, 2, {}}, {1, 1, 4, 2, {0, 0}}, {0, 0, 4, 2, {}}, {0, 1, 4, 2, {}}};
+  TeamBox away = staff("away", {{24, 0}, {3, 3}}), home = staff("home", {{22, 0}, {5, 0}});
+  away.runs = 4, home.runs = 2;
+  assign_decisions(log, 9, away, home);
+  CHECK(home.pitchers[0].decision == Decision::Loss);
+  CHECK(home.pitchers[1].decision == Decision::None);
+  // The first run in is the reliever's own (he walked that runner) when the order says so.
+  log[1].charged = {1, 0};
+  assign_decisions(log, 9, away, home);
+  CHECK(home.pitchers[1].decision == Decision::Loss);
+  // Behind 2-3 the same double's second run puts away ahead: its pitcher takes the loss.
+  log = {{1, 0, 2, 3, {}}, {1, 1, 4, 3, {1, 0}}, {0, 0, 4, 3, {}}, {0, 1, 4, 3, {}}};
+  away.runs = 4, home.runs = 3;
+  assign_decisions(log, 9, away, home);
+  CHECK(home.pitchers[0].decision == Decision::Loss);
+  CHECK(home.pitchers[1].decision == Decision::None);
+
+  // Rule 9.19(b)(2): four runs up with two on, the tying run is on deck: one out saves it.
+  // With the bases empty the same lead and out do not.
+  away = staff("away", {{26, 0}, {1, 4}});
+  away.pitchers[1].runners_at_entry = 2;
+  assign_decisions(log, 9, away, home);
+  CHECK(away.pitchers[1].decision == Decision::Save);
+  away.pitchers[1].runners_at_entry = 0;
+  assign_decisions(log, 9, away, home);
+  CHECK(away.pitchers[1].decision == Decision::None);
+}
+
+TEST_CASE("a reliever's inherited runners who scored are among those he inherited", "[baseball][rules]") {
+  TeamBox bat, field;
+  bat.name = "away", field.name = "home";
+  bat.batting.assign(9, BattingLine{});
+  field.pitchers.assign(2, PitchingLine{});
+  field.pitchers[1].runners_at_entry = field.pitchers[1].inherited = 2;
+  field.pitchers[1].inherited_scored = 2;
+  CHECK(box_score_mismatch(bat, field) == "");
+  field.pitchers[1].inherited_scored = 3;
+  CHECK_FALSE(box_score_mismatch(bat, field).empty());
+  field.pitchers[1].inherited_scored = 1;
+  field.pitchers[1].inherited = 3;  // more than were on base when he came in
+  CHECK_FALSE(box_score_mismatch(bat, field).empty());
 }

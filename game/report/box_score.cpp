@@ -162,13 +162,14 @@ std::string box_score_text(const GameRecord& g) {
     line(out, "   %2d %2d %2d\n", t->runs, t->hits, t->errors);
   }
   for (const TeamBox* t : {&g.away, &g.home}) {
-    line(out, "\n%-10s  AB  R  H 2B 3B HR RBI BB SO HBP SF\n", t->name.c_str());
+    // B: the side he bats from; "(L)" is kept for the losing pitcher.
+    line(out, "\n%-8s B  AB  R  H 2B 3B HR RBI BB SO HBP SF\n", t->name.c_str());
     BattingLine sum;
     for (std::size_t i = 0; i < t->batting.size(); ++i) {
       const BattingLine& l = t->batting[i];
       sum += l;
-      const std::string who = std::string(lineup_position(static_cast<int>(i))) + (bats_left(static_cast<int>(i)) ? " (L)" : " (R)");
-      line(out, "%zu. %-7s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d\n", i + 1, who.c_str(),
+      line(out, "%zu. %-5s %c %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d\n", i + 1, lineup_position(static_cast<int>(i)),
+           bats_left(static_cast<int>(i)) ? 'L' : 'R',
            l.ab, l.r, l.h, l.doubles, l.triples, l.hr, l.rbi, l.bb, l.so, l.hbp, l.sf);
     }
     line(out, "%-10s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d   LOB %d\n", "Totals", sum.ab, sum.r, sum.h, sum.doubles,

@@ -391,3 +391,68 @@ TEST_CASE("over 40 games starters and relievers work as MLB's do, relieved durin
   CHECK(share > 0.18);
   CHECK(share < 0.42);
 }
+
+TEST_CASE("over 60 games runners take extra bases and tag up about as MLB's do", "[baseball][game][reference][statistics]") {
+  // Baseball-Reference's league baserunning (2023): a runner on second scores on a single
+  // ~60 % of the time, one on first scores on a double ~40 %, goes first to third on a single
+  // ~28 %; runs a team a game 4.62 (2023), 4.39 (2024). The model's outfielders reach singles
+  // sooner than MLB's (first to third ~15 % here): that band is wide. Runners on second tag
+  // up on outfield flies (they never did before the tag-up from second was modelled).
+  int r2_single = 0, r2_scored = 0, r1_double = 0, r1_scored = 0, r1_single = 0, r1_third = 0;
+  int r3_fly = 0, r3_fly_scored = 0, r2_fly = 0, r2_tagged = 0, runs = 0, teams = 0;
+  for (std::uint64_t seed = 101; seed <= 160; ++seed) {
+    GameOptions o;
+    o.seed = seed;
+    const GameRecord g = play_game(test::assets(), o);
+    runs += g.away.runs + g.home.runs;
+    teams += 2;
+    const auto& pas = g.plate_appearances;
+    for (std::size_t i = 0; i + 1 < pas.size(); ++i) {
+      const PlateAppearance& pa = pas[i];
+      const PlateAppearance& next = pas[i + 1];
+      if (next.inning != pa.inning || next.bottom != pa.bottom) continue;  // the half ended on it
+      const Bases& before = pa.bases_before;
+      const Bases& after = next.bases_before;
+      const auto on = [&](int who) { return who >= 0 && std::find(after.begin(), after.end(), who) != after.end(); };
+      const bool outfield_fly = pa.result == "out" && pa.pitches.back().result.play.caught &&
+                                pa.pitches.back().result.play.fielder >= 6 && pa.outs_before < 2;
+      if (pa.result == "single" && before[1] >= 0) {
+        ++r2_single;
+        r2_scored += !on(before[1]);
+      }
+      if (pa.result == "single" && before[0] >= 0 && before[2] < 0) {
+        ++r1_single;
+        r1_third += after[2] == before[0];
+      }
+      if (pa.result == "double" && before[0] >= 0) {
+        ++r1_double;
+        r1_scored += !on(before[0]);
+      }
+      if (outfield_fly && before[2] >= 0) {
+        ++r3_fly;
+        r3_fly_scored += !on(before[2]);
+      }
+      if (outfield_fly && before[1] >= 0 && before[2] < 0) {
+        ++r2_fly;
+        r2_tagged += after[2] == before[1];
+      }
+    }
+  }
+  const auto share = [](int a, int b) { return b > 0 ? double(a) / b : 0.0; };
+  INFO("runs a team " << share(runs, teams) << "; from 2nd on a single " << share(r2_scored, r2_single) << " (" << r2_single
+                      << "), from 1st on a double " << share(r1_scored, r1_double) << ", 1st to 3rd " << share(r1_third, r1_single)
+                      << ", sacrifice flies " << share(r3_fly_scored, r3_fly) << " (" << r3_fly << "), 2nd to 3rd on a fly "
+                      << share(r2_tagged, r2_fly) << " (" << r2_fly << ")");
+  // 60 games hold ~120 team-games: the mean's sampling error is ~0.3 run.
+  CHECK(share(runs, teams) > 3.6);
+  CHECK(share(runs, teams) < 5.2);
+  CHECK(share(r2_scored, r2_single) > 0.42);
+  CHECK(share(r2_scored, r2_single) < 0.75);
+  CHECK(share(r1_scored, r1_double) > 0.28);
+  CHECK(share(r1_scored, r1_double) < 0.55);
+  CHECK(share(r1_third, r1_single) > 0.08);
+  CHECK(share(r1_third, r1_single) < 0.40);
+  CHECK(share(r3_fly_scored, r3_fly) > 0.4);  // a few dozen chances: a wide band
+  CHECK(share(r2_tagged, r2_fly) > 0.15);
+  CHECK(share(r2_tagged, r2_fly) < 0.70);
+}

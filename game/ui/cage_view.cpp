@@ -31,14 +31,18 @@ namespace {
 
 using Stage = BattingCage::Stage;
 
+constexpr float kStatsPanelRight = 450.0f;  // px: the HUD panel's right edge
+
 // From behind the plate a little to the side away from the batter, so he stands at the
 // left (right for a left-hander) of the view and the pitcher's release is clear of him.
 Camera batter_view(bool batter_left) {
   const double away = batter_left ? -1.0 : 1.0;  // +z is away from a right-handed batter
   Camera c;
+  // Looking a little down, so the whole zone and a low breaking ball's ring sit well inside
+  // the frame while the pitcher's release stays in it.
   c.eye = Vec3(-3.2, 1.6, 0.25 * away);
-  c.target = Vec3(10.0, 1.0, 0.0);
-  c.fov_y = deg_to_rad(36.0);
+  c.target = Vec3(10.0, 0.6, 0.0);
+  c.fov_y = deg_to_rad(40.0);
   return c;
 }
 
@@ -72,7 +76,7 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
 // The HUD panel at the top left; returns its bottom edge (px), where the call goes below it.
 float draw_stats(const BattingCage& c, int w, int h) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(kStatsPanelRight - 10.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   if (c.live()) {
     const BattingCage::AtBats& a = c.at_bats();
@@ -96,7 +100,9 @@ float draw_stats(const BattingCage& c, int w, int h) {
   // events, fair balls only, so a long foul is not the session's longest hit.
   int n = 0, contact = 0, fair = 0, hard = 0, hr = 0;
   double ev = 0.0, la = 0.0, longest = 0.0;
-  for (const SwingRecord& s : c.swings()) {
+  // Only what the player has been told: a ball still in the air counts from its call.
+  for (std::size_t i = 0; i < c.swings_told(); ++i) {
+    const SwingRecord& s = c.swings()[i];
     ++n;
     if (!s.result.contact) continue;
     ++contact;
@@ -140,21 +146,29 @@ float draw_stats(const BattingCage& c, int w, int h) {
   const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
   ImGui::End();
 
-  // The spray chart, bottom right: home plate at the bottom, 450 ft to the top.
-  const float size = 220.0f, x0 = static_cast<float>(w) - size - 12.0f, y0 = static_cast<float>(h) - size - 12.0f;
+  // The spray chart, bottom corner away from the batter (a right-handed batter stands left of
+  // the plate as the camera sees him): home plate at the bottom, fair ground to ~150 m (490 ft)
+  // down either line and ~200 m up the middle, so every fair ball in this park shows.
+  const float size = 220.0f, y0 = static_cast<float>(h) - size - 36.0f;
+  const float x0 = c.left_handed() ? 12.0f : static_cast<float>(w) - size - 12.0f;
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + size, y0 + size), IM_COL32(40, 90, 45, 220), 6.0f);
-  const float scale = size / 140.0f;  // m
+  const float scale = (size / 2.0f - 6.0f) / 106.0f;  // px per m: 106 m across each side, 150 m down a line
   const ImVec2 home(x0 + size / 2, y0 + size - 8.0f);
   const auto px = [&](const Vec3& p) { return ImVec2(home.x + static_cast<float>(p.z()) * scale, home.y - static_cast<float>(p.x()) * scale); };
   // Everything inside the panel: the foul lines run out past its sides, a long ball past its top.
   dl->PushClipRect(ImVec2(x0, y0), ImVec2(x0 + size, y0 + size), true);
   dl->AddLine(home, px(Vec3(130, 0, 130)), IM_COL32(240, 240, 240, 255));
   dl->AddLine(home, px(Vec3(130, 0, -130)), IM_COL32(240, 240, 240, 255));
-  for (const SwingRecord& s : c.swings()) {
+  for (std::size_t i = 0; i < c.swings_told(); ++i) {
+    const SwingRecord& s = c.swings()[i];
     if (!s.result.contact) continue;
     const FlightSummary& f = s.result.shot.trajectory.summary;
-    const Vec3 p = f.carry_m > 40.0 || s.result.outcome == BattedOutcome::HomeRun ? f.landing_position : f.rest_position;
+    // Where it came down, or for a ball on the ground where a fielder picked it up (the
+    // physics' roll past him to the wall was never played).
+    const FieldingPlay& play = s.result.play;
+    const bool in_air = f.carry_m > 40.0 || s.result.outcome == BattedOutcome::HomeRun;
+    const Vec3 p = in_air ? f.landing_position : play.fielder >= 0 && !play.foul ? play.fielded_at : f.rest_position;
     ImU32 col = IM_COL32(150, 150, 150, 255);
     switch (s.result.outcome) {
       case BattedOutcome::HomeRun: col = IM_COL32(220, 40, 40, 255); break;
@@ -193,10 +207,14 @@ class CageView final : public ModeView {
   void frame(const ViewInput& in, Renderer& renderer) override {
     const BattingCage& c = *cage_;
     const std::size_t before = c.swings().size();
-    const Stage stage_before = c.stage();
+    // As last drawn: a restart from the pause menu reaches the model through send().
+    const Stage stage_before = drawn_stage_;
     cage_->update(cage_intents(in.keys), in.now);
+    drawn_stage_ = c.stage();
     // The scene holds the pitch while it flies and the batted ball after contact.
     if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) scene_->set_shot(c.pitch().trajectory, std::nullopt);
+    // A fresh session (restart, or A between batting practice and live at-bats): no old trace.
+    if (c.stage() == Stage::Ready && stage_before != Stage::Ready) scene_->set_shot(ShotTrajectory{}, std::nullopt);
     if (c.swings().size() != before && c.last().result.contact) {
       scene_->set_shot(c.played(), std::nullopt);
       ImpactSoundInput crack;
@@ -226,13 +244,18 @@ class CageView final : public ModeView {
       if (!batted) draw_zone(c, cam, w, h);
     }
     const float panel_bottom = draw_stats(c, w, h);
-    // The box fits the call (a miss explains itself at some length), below the HUD panel so
-    // a long call does not run under its lines.
-    const float banner_y = std::max(60.0f, panel_bottom + 14.0f);
     hud_bottom_ = panel_bottom;
     if (!c.call_text().empty()) {
-      draw_banner(c.call_text().c_str(), w, banner_y);
-      hud_bottom_ = banner_y + kBannerHeight;
+      // The call in large type, in the sky right of the HUD panel (clear of the center-field
+      // sign and the pitcher), or below the panel when the window is too narrow for it.
+      constexpr float kCallScale = 1.6f;
+      const float right = kStatsPanelRight + 16.0f;
+      const float text_w = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize() * kCallScale, 1e9f, 0.0f, c.call_text().c_str()).x;
+      const bool beside = right + text_w + 40.0f <= static_cast<float>(w);
+      const float centre = beside ? 0.5f * (right + static_cast<float>(w)) : 0.5f * static_cast<float>(w);
+      const float y = beside ? 22.0f : panel_bottom + 14.0f;
+      const float bottom = draw_banner(c.call_text().c_str(), centre, y, kCallScale);
+      hud_bottom_ = std::max(hud_bottom_, static_cast<double>(bottom));
     }
     if (options_.pitches > 0 && static_cast<int>(c.swings().size()) >= options_.pitches && c.stage() == Stage::Called)
       ++done_frames_;
@@ -244,6 +267,7 @@ class CageView final : public ModeView {
   std::unique_ptr<ShotScene> scene_;
   int done_frames_ = 0;
   double hud_bottom_ = 0.0;  ///< px, the lowest the HUD panel and the call reached last frame
+  Stage drawn_stage_ = Stage::Ready;  ///< the model's stage the last frame drew
 };
 
 }  // namespace

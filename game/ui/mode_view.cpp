@@ -16,13 +16,20 @@ void fit_renderer(Renderer& renderer, int w, int h, double scale) {
   if (rw != renderer.width() || rh != renderer.height()) renderer.resize(rw, rh);
 }
 
-void draw_banner(const char* text, int width, float y) {
+void draw_banner(const char* text, int width, float y) { draw_banner(text, 0.5f * static_cast<float>(width), y, 1.0f); }
+
+float draw_banner(const char* text, float centre_x, float y, float scale) {
   // Under every window: the pause menu covers it, as it covers the picture.
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  const float text_w = ImGui::CalcTextSize(text).x;
-  const ImVec2 pos(0.5f * (static_cast<float>(width) - text_w), y);
-  dl->AddRectFilled(ImVec2(pos.x - 10, pos.y - 6), ImVec2(pos.x + text_w + 10, pos.y + kBannerHeight), IM_COL32(0, 0, 0, 170), 4.0f);
-  dl->AddText(pos, IM_COL32(255, 230, 120, 255), text);
+  ImFont* font = ImGui::GetFont();
+  const float size = ImGui::GetFontSize() * scale;
+  const float text_w = font->CalcTextSizeA(size, 1e9f, 0.0f, text).x;
+  const ImVec2 pos(centre_x - 0.5f * text_w, y);
+  const float bottom = pos.y + kBannerHeight * scale;
+  dl->AddRectFilled(ImVec2(pos.x - 10 * scale, pos.y - 6 * scale), ImVec2(pos.x + text_w + 10 * scale, bottom),
+                    IM_COL32(0, 0, 0, 170), 4.0f * scale);
+  dl->AddText(font, size, pos, IM_COL32(255, 230, 120, 255), text);
+  return bottom;
 }
 
 }  // namespace sweetspot

@@ -60,6 +60,8 @@ void fit_renderer(Renderer& renderer, int w, int h, double scale);
 /// A line of text centred across a `width` px window at `y` px, in a dark box over the view
 /// (the cage's call, the golf replay's label).
 void draw_banner(const char* text, int width, float y);
+/// The same box, `scale` times the font's size, centred on `centre_x` px; returns its bottom (px).
+float draw_banner(const char* text, float centre_x, float y, float scale);
 /// px the banner's box reaches below its `y` (its text's line and the box's padding).
 inline constexpr float kBannerHeight = 24.0f;
 

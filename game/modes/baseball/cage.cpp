@@ -63,6 +63,7 @@ void BattingCage::start_record() {
   outcome_text_.clear();
   count_ = Count{};
   at_bats_ = AtBats{};
+  told_ = true;
   stage_ = Stage::Ready;
   bot_armed_ = false;
 }
@@ -141,7 +142,10 @@ void BattingCage::advance(double t) {
     double call_at = duration(played_);
     if (play.fielder >= 0 && play.fielded_time > 0.0) call_at = std::min(call_at, play.fielded_time);
     else if (last_.result.outcome == BattedOutcome::HomeRun) call_at = std::min(call_at, played_.summary.hang_time_s);
-    if (t - batted_at_ >= call_at && !outcome_text_.empty()) call_text_ = outcome_text_;
+    if (t - batted_at_ >= call_at) {
+      if (!outcome_text_.empty()) call_text_ = outcome_text_;
+      told_ = true;
+    }
     if (t - batted_at_ >= duration(played_)) stage_ = Stage::Called;
   }
 }
@@ -158,6 +162,8 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms) {
   played_ = as_played(last_.result.shot.trajectory, last_.result.play);
   last_.call_text = to_string(last_.result.outcome);
   swings_.push_back(last_);
+  at_bats_before_ = at_bats_;
+  told_ = !last_.result.contact;
   char text[160];
   if (last_.result.contact) {
     const std::string words = last_.result.outcome == BattedOutcome::Foul ? (last_.result.foul_tip ? "Foul tip" : "Foul ball")

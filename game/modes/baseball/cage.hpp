@@ -59,6 +59,9 @@ class BattingCage {
   /// The last batted ball's path as the play went (as_played): a catch ends it in the glove.
   const ShotTrajectory& played() const { return played_; }
   const std::vector<SwingRecord>& swings() const { return swings_; }
+  /// The swings whose outcome the player has been told: all but a batted ball still in the
+  /// air (the HUD's session figures would otherwise give away a hit before its call).
+  std::size_t swings_told() const { return swings_.size() - (told_ ? 0 : 1); }
   const std::string& call_text() const { return call_text_; }
   /// Live at-bats: the count, and the plate appearances so far.
   bool live() const { return live_; }
@@ -66,7 +69,8 @@ class BattingCage {
   struct AtBats {
     int pa = 0, strikeouts = 0, walks = 0, hit_by_pitch = 0, hits = 0, home_runs = 0, outs = 0;
   };
-  const AtBats& at_bats() const { return at_bats_; }
+  /// As the player has been told them: a ball in play counts from its call.
+  const AtBats& at_bats() const { return told_ ? at_bats_ : at_bats_before_; }
 
  private:
   void apply(const Intent& in);
@@ -96,6 +100,9 @@ class BattingCage {
   std::string call_text_;
   /// A batted ball's outcome, shown once its flight is over (until then its launch).
   std::string outcome_text_;
+  /// Whether the last swing's outcome has been called; the at-bats before it while not.
+  bool told_ = true;
+  AtBats at_bats_before_;
   /// B asked the pro to swing at this pitch: he does when it reaches his timing.
   bool bot_armed_ = false;
   SwingInput bot_plan_;

@@ -422,14 +422,15 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
 }
 
 ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
-  if (!play.caught || t.samples.empty()) return t;
+  const bool fielded = play.caught || (play.fielder >= 0 && !play.foul && play.outcome != BattedOutcome::HomeRun);
+  if (!fielded || t.samples.empty() || play.fielded_time >= t.summary.total_time_s) return t;
   ShotTrajectory out = t;
   out.samples.clear();
   for (const TrajectorySample& s : t.samples) {
     if (s.t >= play.fielded_time) break;
     out.samples.push_back(s);
   }
-  // In the glove: the ball stays where he caught it.
+  // In the glove: the ball stays where he caught it or picked it up.
   TrajectorySample held;
   held.t = play.fielded_time;
   held.position = play.fielded_at;
@@ -438,6 +439,14 @@ ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
   if (out.samples.size() < 2) out.samples.insert(out.samples.begin(), t.samples.front());
   out.summary.rest_position = play.fielded_at;
   out.summary.total_time_s = play.fielded_time;
+  // Its distance is to where he had it: the label on the scene's rest pin.
+  out.summary.total_m = horizontal(t.samples.front().position, play.fielded_at);
+  if (play.caught) {
+    // Caught before it came down: the glove is its landing too (no ring where it never fell).
+    out.summary.landing_position = play.fielded_at;
+    out.summary.carry_m = out.summary.total_m;
+    out.summary.hang_time_s = play.fielded_time;
+  }
   return out;
 }
 

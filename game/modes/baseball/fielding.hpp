@@ -119,8 +119,9 @@ BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const En
                          std::string* fielder = nullptr);
 
 /// The batted ball's path as the play went: a ball caught in the air ends in the fielder's
-/// glove at the catch (the physics' path past it, into the wall or the seats, was never
-/// flown); any other ball's path is the physics' whole.
+/// glove at the catch, a fair ball he fields on the ground where he picks it up (the physics'
+/// path past him, rolling to the wall or into the seats, was never played); a home run, a
+/// foul no one fields, or a ball at rest before he gets there keeps the physics' whole path.
 ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play);
 
 /// The time a throw by `f` from `from` to base `base` takes, with the fielder's transfer.

@@ -55,7 +55,9 @@ double type_zone_intent(double intent, const PitchType& type, const std::vector<
 
 bool hits_batter(const Vec3& p, bool left, double r) {
   const double inside = left ? p.z() : -p.z();  // toward the batter
-  return inside + r >= kBodyFromMiddle && p.y() + r >= kBodyLow && p.y() - r <= kBodyHigh;
+  const bool body = inside + r >= kBodyFromMiddle && p.y() + r >= kBodyLow && p.y() - r <= kBodyHigh;
+  const bool hands = std::hypot(inside - kStanceHandsFromMiddle, p.y() - kStanceHandsHigh) <= kStanceHandsReach + r;
+  return body || hands;
 }
 
 Pitcher::Pitcher(PitcherProfile profile, std::uint64_t seed) : profile_(std::move(profile)), rng_(seed) {}

@@ -75,10 +75,16 @@ double zone_intent(const Count& count);
 /// (PitchType::zone_share) over his mix's, usage-weighted: over his mix the intent is kept.
 double type_zone_intent(double intent, const PitchType& type, const std::vector<PitchType>& arsenal);
 
+/// A right-handed batter's hands in his stance, held at his back shoulder over the inner line
+/// of the box: m from the middle of the plate toward him, m up, and the reach of his fists and
+/// gloves about that point (ESTIMATES; the cage's figure holds the bat there, batter_figure).
+inline constexpr double kStanceHandsFromMiddle = 0.45, kStanceHandsHigh = 1.45, kStanceHandsReach = 0.05;
+
 /// Where a pitch crossing at `plate` hits a batter standing in the box on his side (`left`:
 /// a left-hander, on the first-base side): his body starts 0.55 m from the middle of the plate
 /// (the box's inner line is 6 in off the plate's edge, the front of a batter's body ~10 in
-/// beyond it; ESTIMATE) and spans 0.3–1.8 m up.
+/// beyond it; ESTIMATE) and spans 0.3–1.8 m up; his hands reach in over the box's line (the
+/// hands are the batter's, Rule 5.05(b)(2): a pitch that hits them is a hit-by-pitch).
 bool hits_batter(const Vec3& plate, bool left, double ball_radius);
 
 }  // namespace sweetspot

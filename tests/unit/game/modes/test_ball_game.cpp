@@ -341,15 +341,30 @@ TEST_CASE("over 60+ innings fouls per pitch sit near Statcast's league", "[baseb
   CHECK(pro.foul_per_pitch <= 0.185);
 }
 
-TEST_CASE("over 40 games starters and relievers work as MLB's do, relieved during innings with runners charged to them",
+namespace {
+
+// A hundred league games, played once for the tests of the game's flow (bullpen, base running).
+const std::vector<GameRecord>& league_games() {
+  static const std::vector<GameRecord> games = [] {
+    std::vector<GameRecord> all;
+    for (std::uint64_t seed = 101; seed <= 200; ++seed) {
+      GameOptions o;
+      o.seed = seed;
+      all.push_back(play_game(test::assets(), o));
+    }
+    return all;
+  }();
+  return games;
+}
+
+}  // namespace
+
+TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved during innings with runners charged to them",
           "[baseball][game][reference][statistics]") {
   // MLB 2023 (Baseball-Reference league pitching): starters 5.3 innings and ~88 pitches a
   // start, ~4.4 pitchers a team a game, and about 30 % of the runners relievers inherit score.
   int starts = 0, starter_outs = 0, starter_pitches = 0, pitchers = 0, relieved_mid_inning = 0, inherited = 0, scored = 0;
-  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-    GameOptions o;
-    o.seed = seed;
-    const GameRecord g = play_game(test::assets(), o);
+  for (const GameRecord& g : league_games()) {
     CHECK(box_score_mismatch(g.away, g.home) == "");
     CHECK(box_score_mismatch(g.home, g.away) == "");
     CHECK(decisions_mismatch(g.away, g.home) == "");
@@ -392,7 +407,7 @@ TEST_CASE("over 40 games starters and relievers work as MLB's do, relieved durin
   CHECK(share < 0.42);
 }
 
-TEST_CASE("over 60 games runners take extra bases and tag up about as MLB's do", "[baseball][game][reference][statistics]") {
+TEST_CASE("over 100 games runners take extra bases and tag up about as MLB's do", "[baseball][game][reference][statistics]") {
   // Baseball-Reference's league baserunning (2023): a runner on second scores on a single
   // ~60 % of the time, one on first scores on a double ~40 %, goes first to third on a single
   // ~28 %; runs a team a game 4.62 (2023), 4.39 (2024). The model's outfielders reach singles
@@ -400,10 +415,7 @@ TEST_CASE("over 60 games runners take extra bases and tag up about as MLB's do",
   // up on outfield flies (they never did before the tag-up from second was modelled).
   int r2_single = 0, r2_scored = 0, r1_double = 0, r1_scored = 0, r1_single = 0, r1_third = 0;
   int r3_fly = 0, r3_fly_scored = 0, r2_fly = 0, r2_tagged = 0, runs = 0, teams = 0;
-  for (std::uint64_t seed = 101; seed <= 160; ++seed) {
-    GameOptions o;
-    o.seed = seed;
-    const GameRecord g = play_game(test::assets(), o);
+  for (const GameRecord& g : league_games()) {
     runs += g.away.runs + g.home.runs;
     teams += 2;
     const auto& pas = g.plate_appearances;
@@ -443,16 +455,17 @@ TEST_CASE("over 60 games runners take extra bases and tag up about as MLB's do",
                       << "), from 1st on a double " << share(r1_scored, r1_double) << ", 1st to 3rd " << share(r1_third, r1_single)
                       << ", sacrifice flies " << share(r3_fly_scored, r3_fly) << " (" << r3_fly << "), 2nd to 3rd on a fly "
                       << share(r2_tagged, r2_fly) << " (" << r2_fly << ")");
-  // 60 games hold ~120 team-games: the mean's sampling error is ~0.3 run.
-  CHECK(share(runs, teams) > 3.6);
-  CHECK(share(runs, teams) < 5.2);
+  // The bands are about two sampling errors wide: 100 games hold ~200 team-games (±0.2 run),
+  // ~200 singles with a man on second, ~100 doubles with one on first, ~40 sacrifice-fly chances.
+  CHECK(share(runs, teams) > 3.8);
+  CHECK(share(runs, teams) < 5.0);
   CHECK(share(r2_scored, r2_single) > 0.42);
-  CHECK(share(r2_scored, r2_single) < 0.75);
-  CHECK(share(r1_scored, r1_double) > 0.28);
+  CHECK(share(r2_scored, r2_single) < 0.72);
+  CHECK(share(r1_scored, r1_double) > 0.25);
   CHECK(share(r1_scored, r1_double) < 0.55);
   CHECK(share(r1_third, r1_single) > 0.08);
   CHECK(share(r1_third, r1_single) < 0.40);
-  CHECK(share(r3_fly_scored, r3_fly) > 0.4);  // a few dozen chances: a wide band
-  CHECK(share(r2_tagged, r2_fly) > 0.15);
+  CHECK(share(r3_fly_scored, r3_fly) > 0.45);
+  CHECK(share(r2_tagged, r2_fly) > 0.2);
   CHECK(share(r2_tagged, r2_fly) < 0.70);
 }

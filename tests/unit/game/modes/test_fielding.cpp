@@ -155,7 +155,7 @@ TEST_CASE("fielding: a grounder deep in the hole is an infield hit; the same bal
 
 // The cage draws the batted ball as the play went: a catch ends its path in the glove, so a
 // fly caught at the track does not go on to bounce off the wall behind the fielder.
-TEST_CASE("as_played: a caught fly ends in the glove; a hit keeps its whole path", "[baseball][fielding]") {
+TEST_CASE("as_played: a caught fly ends in the glove, a fielded ball where he picks it up, a home run goes on", "[baseball][fielding]") {
   int caught = 0, hits = 0;
   for (double ev = 90.0; ev <= 104.0; ev += 2.0)
     for (double spray = -30.0; spray <= 30.0; spray += 15.0) {
@@ -173,9 +173,31 @@ TEST_CASE("as_played: a caught fly ends in the glove; a hit keeps its whole path
         for (std::size_t i = 0; i + 1 < t.samples.size(); ++i) CHECK(t.samples[i].phase == Phase::Flight);
       } else {
         ++hits;
-        CHECK(t.samples.size() == shot.trajectory.samples.size());
+        // A fair hit a fielder picks up ends there (not a ground-rule double or one already at rest).
+        if (p.fielder >= 0 && !p.foul && p.fielded_time < shot.trajectory.summary.total_time_s) {
+          CHECK((t.samples.back().position - p.fielded_at).norm() < 1e-12);
+          CHECK(t.samples.back().t == Approx(p.fielded_time));
+        } else {
+          CHECK(t.samples.size() == shot.trajectory.samples.size());
+        }
       }
     }
   CHECK(caught > 0);
   CHECK(hits > 0);
+  // A hard grounder the shortstop fields ends in his glove, not rolling on to the wall.
+  const ResolvedShot r = resolve(test::launch_spec("baseball", 91.0, -13.0, 1500.0, -10.0), test::assets());
+  const ShotResult shot = run_shot(r, "test", {true, true});
+  const FieldingPlay p = field_play(shot, *r.aero, r.spec.environment, league_defense(), false, 8.23, nullptr);
+  const ShotTrajectory t = as_played(shot.trajectory, p);
+  INFO("fielded by " << p.fielder << " at " << p.fielded_at.transpose() << ", rolled on to " << shot.trajectory.summary.rest_position.transpose());
+  REQUIRE(p.fielder >= 0);
+  REQUIRE(p.fielder < 6);
+  CHECK((t.samples.back().position - p.fielded_at).norm() < 1e-12);
+  CHECK(t.summary.rest_position.norm() < shot.trajectory.summary.rest_position.norm() - 10.0);
+  // A home run keeps its whole flight into the seats.
+  const ResolvedShot hr = resolve(test::launch_spec("baseball", 110.0, 28.0, 2500.0, 0.0), test::assets());
+  const ShotResult long_ball = run_shot(hr, "test", {true, true});
+  const FieldingPlay gone = field_play(long_ball, *hr.aero, hr.spec.environment, league_defense(), false, 8.23, nullptr);
+  CHECK(gone.outcome == BattedOutcome::HomeRun);
+  CHECK(as_played(long_ball.trajectory, gone).samples.size() == long_ball.trajectory.samples.size());
 }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "game/modes/baseball/pitcher.hpp"
 #include "game/modes/baseball/session.hpp"
 #include "game/report/session_json.hpp"
 #include "physics/error.hpp"
@@ -293,4 +294,19 @@ TEST_CASE("a pitcher means each type for the zone by its share, keeping the coun
   // Over the mix the intent is about kept (odds, not shares, are scaled).
   const double kept = 0.5 * type_zone_intent(0.58, mix[0], mix) + 0.5 * type_zone_intent(0.58, mix[1], mix);
   CHECK(kept == Approx(0.58).margin(0.01));
+}
+
+TEST_CASE("a pitch into the batter's body or his hands is a hit-by-pitch; one past them is not (Rule 5.05(b)(2))",
+          "[baseball][rules]") {
+  const double r = 0.0369;
+  // A right-hander stands on the third-base side (−z): up and in at his hands, or at his hip.
+  CHECK(hits_batter(Vec3(0.0, kStanceHandsHigh, -kStanceHandsFromMiddle), false, r));
+  CHECK(hits_batter(Vec3(0.0, 0.9, -0.6), false, r));
+  // Under his hands and short of his body: a ball inside, not a hit batter.
+  CHECK_FALSE(hits_batter(Vec3(0.0, 1.0, -0.40), false, r));
+  // Over the plate, or a foot away on the other side: nothing to hit.
+  CHECK_FALSE(hits_batter(Vec3(0.0, 0.8, 0.0), false, r));
+  CHECK_FALSE(hits_batter(Vec3(0.0, kStanceHandsHigh, kStanceHandsFromMiddle), false, r));
+  // A left-hander is the mirror image.
+  CHECK(hits_batter(Vec3(0.0, kStanceHandsHigh, kStanceHandsFromMiddle), true, r));
 }

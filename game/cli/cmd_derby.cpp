@@ -112,16 +112,31 @@ RunFn setup_derby(CLI::App& sub) {
       std::cout << json_text(j) << "\n";
       return 0;
     }
+    Count count;  // an at-bat's count before each pitch
     for (const SwingRecord& s : swings) {
+      if (o->session.mode == "at-bat") {
+        std::printf("%d-%d  ", count.balls, count.strikes);
+        const std::string& c = s.call_text;
+        apply_pitch(count, c == "ball"              ? PitchResult::Ball
+                           : c == "called_strike"   ? PitchResult::CalledStrike
+                           : c == "swinging_strike" ? PitchResult::SwingingStrike
+                           : c == "foul"            ? PitchResult::Foul
+                           : c == "foul_tip"        ? PitchResult::FoulTip
+                           : c == "hit_by_pitch"    ? PitchResult::HitByPitch
+                                                    : PitchResult::InPlay);
+      }
       // A take has no swing to time: its column says so instead of a timing of 0.
       if (s.swung)
         std::printf("%-10s %5.1f mph  timing %+5.1f ms  ", s.call.type.type.c_str(), mps_to_mph(s.call.type.speed), s.timing_ms);
       else
         std::printf("%-10s %5.1f mph  %-15s  ", s.call.type.type.c_str(), mps_to_mph(s.call.type.speed), "taken");
+      // A fair ball's play in a scorer's words says where it went ("Double to RF").
+      const bool fair = s.result.contact && s.result.outcome != BattedOutcome::Foul;
       if (s.result.contact)
-        std::printf("EV %5.1f mph LA %+5.1f deg  %5.0f ft  %s%s\n", mps_to_mph(s.result.shot.launch.ball_speed),
+        std::printf("EV %5.1f mph LA %+5.1f deg  %5.0f ft  %s%s%s%s\n", mps_to_mph(s.result.shot.launch.ball_speed),
                     rad_to_deg(s.result.shot.launch.vertical_angle), m_to_ft(s.result.shot.trajectory.summary.carry_m),
-                    s.call_text.c_str(), s.result.barrel ? " (barrel)" : "");
+                    s.call_text.c_str(), s.result.barrel ? " (barrel)" : "", fair ? "  " : "",
+                    fair ? s.result.play.description.c_str() : "");
       else
         std::printf("%s\n", s.call_text.c_str());
     }

@@ -60,4 +60,8 @@ echo "home runs over 4 derbies of 8 outs: pro $pro, amateur $amateur"
 "$bin" derby --mode at-bat --seed 3 --json | python3 -c '
 import json, sys
 j = json.load(sys.stdin); assert j["mode"] == "at-bat" and j["result"] and j["balls"] <= 4 and j["strikes"] <= 3, j' || fail "at-bat"
+# The at-bat's text gives each pitch's count, from 0-0; a derby's fair balls say where they went.
+"$bin" derby --mode at-bat --seed 3 | head -1 | grep -q '^0-0 ' || fail "at-bat: no count before the first pitch"
+"$bin" derby --bot pro --seed 2 | grep -E ' (home_run|double|single|triple|out)' | grep -vqE ' to (LF|CF|RF|P|C|1B|2B|3B|SS)' \
+  && fail "a derby's fair ball without its direction"
 echo "derby: ok"

@@ -18,6 +18,11 @@ constexpr double kBall = 0.0369;       // m, the baseball's radius (assets' "mlb
 // on): off first and third ~11 ft, off second ~18 ft.
 constexpr std::array<double, 3> kLead{3.4, 5.5, 3.4};  // m
 constexpr double kRead = 0.3;          // s a runner takes to read a ball on the ground (ESTIMATE)
+// A ball in the air that no fielder could reach (Statcast's catch probability under kPlainHit)
+// is read as a hit: the runners go once they have read it, kReadAir after contact, instead of
+// holding until it drops (ESTIMATES).
+constexpr double kPlainHit = 0.25;
+constexpr double kReadAir = 1.0;       // s
 // Time to spare a runner is sent with for an extra base (or a tag): a coach sends him when he
 // is likely safe, as MLB's are on ~95 % of the extra bases they try. With the fielder's
 // throw uncertain by ~0.2 s (its line, its hop, the tag), a margin of 0.15 s is safe ~3 times
@@ -167,9 +172,12 @@ struct HalfInning {
     if (o == BattedOutcome::HomeRun || o == BattedOutcome::Triple || o == BattedOutcome::Double ||
         o == BattedOutcome::Single || o == BattedOutcome::Error) {
       const int hit = o == BattedOutcome::HomeRun ? 4 : o == BattedOutcome::Triple ? 3 : o == BattedOutcome::Double ? 2 : 1;
-      // On a ball in the air runners hold at their leads until it drops, unless two are out.
+      // On a ball in the air runners hold at their leads until it drops, unless two are out
+      // or it is plainly a hit.
       const double drops = last.result.shot.trajectory.summary.hang_time_s;
-      const double start = (p.type == BattedBallType::GroundBall || outs == 2) ? kRead : std::max(kRead, drops);
+      const double start = (p.type == BattedBallType::GroundBall || outs == 2) ? kRead
+                           : p.catch_probability < kPlainHit                    ? std::max(kRead, std::min(kReadAir, drops))
+                                                                                : std::max(kRead, drops);
       for (int b = 3; b >= 1; --b) {
         const int who = bases[static_cast<std::size_t>(b - 1)];
         if (who < 0) continue;

@@ -410,9 +410,9 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
 TEST_CASE("over 100 games runners take extra bases and tag up about as MLB's do", "[baseball][game][reference][statistics]") {
   // Baseball-Reference's league baserunning (2023): a runner on second scores on a single
   // ~60 % of the time, one on first scores on a double ~40 %, goes first to third on a single
-  // ~28 %; runs a team a game 4.62 (2023), 4.39 (2024). The model's outfielders reach singles
-  // sooner than MLB's (first to third ~15 % here): that band is wide. Runners on second tag
-  // up on outfield flies (they never did before the tag-up from second was modelled).
+  // ~28 %; runs a team a game 4.62 (2023), 4.39 (2024). Runners on second tag up on outfield
+  // flies, and on a ball in the air no one can reach they run once they have read it (before
+  // either, from second on a single was ~25 %, first to third ~8-15 %, tags from second none).
   int r2_single = 0, r2_scored = 0, r1_double = 0, r1_scored = 0, r1_single = 0, r1_third = 0;
   int r3_fly = 0, r3_fly_scored = 0, r2_fly = 0, r2_tagged = 0, runs = 0, teams = 0;
   for (const GameRecord& g : league_games()) {
@@ -463,7 +463,7 @@ TEST_CASE("over 100 games runners take extra bases and tag up about as MLB's do"
   CHECK(share(r2_scored, r2_single) < 0.72);
   CHECK(share(r1_scored, r1_double) > 0.25);
   CHECK(share(r1_scored, r1_double) < 0.55);
-  CHECK(share(r1_third, r1_single) > 0.08);
+  CHECK(share(r1_third, r1_single) > 0.18);
   CHECK(share(r1_third, r1_single) < 0.40);
   CHECK(share(r3_fly_scored, r3_fly) > 0.45);
   CHECK(share(r2_tagged, r2_fly) > 0.2);

@@ -24,9 +24,8 @@ constexpr double kRead = 0.3;          // s a runner takes to read a ball on the
 constexpr double kPlainHit = 0.25;
 constexpr double kReadAir = 1.0;       // s
 // Time to spare a runner is sent with for an extra base (or a tag): a coach sends him when he
-// is likely safe, as MLB's are on ~95 % of the extra bases they try. With the fielder's
-// throw uncertain by ~0.2 s (its line, its hop, the tag), a margin of 0.15 s is safe ~3 times
-// in 4 on the estimate alone (ESTIMATE).
+// is likely safe. With the fielder's throw uncertain by ~0.2 s (its line, its hop, the tag),
+// a margin of 0.15 s is safe ~3 times in 4 on the estimate alone (ESTIMATE).
 constexpr double kRunnerExtraBaseMargin = 0.15;
 constexpr double kPivotExtra = 0.1;    // s the pivot man's turn takes beyond a clean transfer (ESTIMATE)
 constexpr int kMaxExtra = 40;          // extra innings before a game still tied is stopped (MLB's longest: 26 innings)

@@ -271,6 +271,9 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
     std::snprintf(label, sizeof label, "power %.0f %%, now the accuracy: Space at the mark   Esc: cancel", 100.0 * meter->power());
   } else if (meter) {
     std::snprintf(label, sizeof label, "power %.0f %%   Esc: cancel", 100.0 * meter->position(now));
+  } else if (play.swing_undone()) {
+    // Said where the player was looking when it happened, not only in the panel.
+    std::snprintf(label, sizeof label, "%s", play.message().c_str());
   } else {
     std::snprintf(label, sizeof label, "%s: Space to swing (difficulty %s: perfect within %.0f ms)", play.club().c_str(),
                   to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty));

@@ -253,6 +253,7 @@ void GolfPlay::advance(double t) {
       stage_ = Stage::Aiming;
       ++cancelled_;
       say("Swing abandoned, no stroke counted (Space: start, Space: power, Space: accuracy)");
+      swing_undone_ = true;
     } else if (const auto m = meter_->result()) {
       last_meter_ = *m;
       last_click_ = *meter_;
@@ -361,6 +362,7 @@ void GolfPlay::apply(const Intent& in) {
         case IntentKind::Swing: {
           const double length = assets_.equipment().club(club()).length;
           meter_.emplace(MeterClock::tempo_for(length, putting), putting, perfect_window_ms(setup_.difficulty));
+          swing_undone_ = false;
           meter_->click(t);
           stage_ = Stage::Swinging;
           say("");
@@ -400,7 +402,8 @@ void GolfPlay::apply(const Intent& in) {
         meter_.reset();
         stage_ = Stage::Aiming;
         ++cancelled_;
-        say("Swing cancelled, no stroke counted");
+        say("Swing cancelled, no stroke counted (Space: swing again)");
+        swing_undone_ = true;
       }
       break;
     case Stage::Flying:

@@ -98,6 +98,9 @@ class GolfPlay {
   const OwnLast* own_last(int player) const;
   /// Strokes cancelled with Esc this round (none of them counted).
   int cancelled() const { return cancelled_; }
+  /// The last swing was cancelled or abandoned, and nothing has been said or swung since:
+  /// the meter's caption says so where the player is looking.
+  bool swing_undone() const { return swing_undone_; }
   /// The flyover's progress, 0 at the tee... 1 done (the view flies the camera with it).
   double flyover_progress(double now) const;
 
@@ -160,6 +163,7 @@ class GolfPlay {
   void say(std::string text, bool result = false) {
     message_ = std::move(text);
     message_is_result_ = result;
+    swing_undone_ = false;
   }
 
   const Assets& assets_;
@@ -185,6 +189,7 @@ class GolfPlay {
   std::string message_;
   bool message_is_result_ = false;
   int cancelled_ = 0;
+  bool swing_undone_ = false;
   std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green
   std::optional<StrokeInput> caddie_plan_;
   double putt_plays_as_ = 0.0;

@@ -116,6 +116,7 @@ TEST_CASE("Esc cancels a swing in progress and no stroke is counted", "[modes][g
   play.update({at(IntentKind::Cancel, 1.3)}, 1.4);
   CHECK(play.stage() == GolfPlay::Stage::Aiming);
   CHECK(play.cancelled() == 1);
+  CHECK(play.swing_undone());  // the meter's caption says so until the next swing
   CHECK(play.round().card().back().strokes == 0);
   CHECK(play.round().card().back().shots.empty());
   // Left alone long after, nothing finishes itself: the meter is gone.
@@ -265,6 +266,10 @@ TEST_CASE("a stray Space is abandoned at the top of the meter: no stroke, no pen
   CHECK(play.stage() == GolfPlay::Stage::Aiming);
   CHECK(play.round().card().back().strokes == 0);
   CHECK(play.cancelled() == 1);
+  CHECK(play.swing_undone());
+  // The next swing takes the caption back.
+  play.update({at(IntentKind::Swing, 11.0)}, 11.1);
+  CHECK_FALSE(play.swing_undone());
 }
 
 TEST_CASE("putting preview: the flat-green roll grows with power and inverts", "[modes][golf]") {

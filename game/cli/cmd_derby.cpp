@@ -116,14 +116,12 @@ RunFn setup_derby(CLI::App& sub) {
     for (const SwingRecord& s : swings) {
       if (o->session.mode == "at-bat") {
         std::printf("%d-%d  ", count.balls, count.strikes);
-        const std::string& c = s.call_text;
-        apply_pitch(count, c == "ball"              ? PitchResult::Ball
-                           : c == "called_strike"   ? PitchResult::CalledStrike
-                           : c == "swinging_strike" ? PitchResult::SwingingStrike
-                           : c == "foul"            ? PitchResult::Foul
-                           : c == "foul_tip"        ? PitchResult::FoulTip
-                           : c == "hit_by_pitch"    ? PitchResult::HitByPitch
-                                                    : PitchResult::InPlay);
+        // The session names a pitch's call by to_string(PitchResult), a ball in play by its outcome.
+        PitchResult call = PitchResult::InPlay;
+        for (PitchResult r : {PitchResult::Ball, PitchResult::CalledStrike, PitchResult::SwingingStrike, PitchResult::Foul,
+                              PitchResult::FoulTip, PitchResult::HitByPitch})
+          if (s.call_text == to_string(r)) call = r;
+        apply_pitch(count, call);
       }
       // A take has no swing to time: its column says so instead of a timing of 0.
       if (s.swung)

@@ -86,6 +86,9 @@ void line(std::string& out, const char* fmt, ...) {
   out += buf;
 }
 
+// A pitcher by his place in the staff's order: the starter "SP", the relievers "RP1", "RP2"...
+std::string pitcher_name(std::size_t i) { return i == 0 ? std::string("SP") : "RP" + std::to_string(i); }
+
 std::string ordinal(int n) {
   const int teen = n % 100, last = n % 10;
   const char* suffix = (teen >= 11 && teen <= 13) ? "th" : last == 1 ? "st" : last == 2 ? "nd" : last == 3 ? "rd" : "th";
@@ -134,9 +137,9 @@ nlohmann::json game_json(const GameRecord& g) {
 }
 
 std::string pitching_change_text(const PlateAppearance& pa) {
-  const auto name = [](int i) { return i == 0 ? std::string("SP") : "RP" + std::to_string(i); };
-  std::string out = std::string(pa.bottom ? "away" : "home") + " pitching change: " + name(pa.pitcher) + " replaces " +
-                    name(pa.pitcher - 1);
+  const auto in_order = static_cast<std::size_t>(pa.pitcher);
+  std::string out = std::string(pa.bottom ? "away" : "home") + " pitching change: " + pitcher_name(in_order) + " replaces " +
+                    pitcher_name(in_order - 1);
   static const char* kBase[] = {"1st", "2nd", "3rd"};
   std::vector<std::string> on;
   for (int b = 0; b < 3; ++b)
@@ -179,7 +182,7 @@ std::string box_score_text(const GameRecord& g) {
   for (const TeamBox* t : {&g.away, &g.home}) {
     for (std::size_t i = 0; i < t->pitchers.size(); ++i) {
       const PitchingLine& p = t->pitchers[i];
-      std::string who = t->name + (i == 0 ? " SP" : " RP" + std::to_string(i));
+      std::string who = t->name + " " + pitcher_name(i);
       if (p.decision != Decision::None) who += std::string(" (") + to_string(p.decision) + ")";
       line(out, "%-16s %2d.%d %3d %2d %2d %2d %2d %2d  %d-%d\n", who.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.er, p.bb,
            p.so, p.hr, p.pitches, p.strikes);
@@ -190,7 +193,7 @@ std::string box_score_text(const GameRecord& g) {
   for (const TeamBox* t : {&g.away, &g.home})
     for (std::size_t i = 1; i < t->pitchers.size(); ++i)
       if (t->pitchers[i].inherited > 0)
-        inherited += (inherited.empty() ? "" : ", ") + t->name + " RP" + std::to_string(i) + " " +
+        inherited += (inherited.empty() ? "" : ", ") + t->name + " " + pitcher_name(i) + " " +
                      std::to_string(t->pitchers[i].inherited) + "-" + std::to_string(t->pitchers[i].inherited_scored);
   if (!inherited.empty()) line(out, "Inherited runners-scored: %s.\n", inherited.c_str());
   if (g.walk_off) line(out, "\nWalk-off in the %s.\n", ordinal(g.innings_played).c_str());

@@ -250,7 +250,7 @@ class CageView final : public ModeView {
       // sign and the pitcher), or below the panel when the window is too narrow for it.
       constexpr float kCallScale = 1.6f;
       const float right = kStatsPanelRight + 16.0f;
-      const float text_w = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize() * kCallScale, 1e9f, 0.0f, c.call_text().c_str()).x;
+      const float text_w = banner_text_width(c.call_text().c_str(), kCallScale);
       const bool beside = right + text_w + 40.0f <= static_cast<float>(w);
       const float centre = beside ? 0.5f * (right + static_cast<float>(w)) : 0.5f * static_cast<float>(w);
       const float y = beside ? 22.0f : panel_bottom + 14.0f;

@@ -18,12 +18,16 @@ void fit_renderer(Renderer& renderer, int w, int h, double scale) {
 
 void draw_banner(const char* text, int width, float y) { draw_banner(text, 0.5f * static_cast<float>(width), y, 1.0f); }
 
+float banner_text_width(const char* text, float scale) {
+  return ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize() * scale, 1e9f, 0.0f, text).x;
+}
+
 float draw_banner(const char* text, float centre_x, float y, float scale) {
   // Under every window: the pause menu covers it, as it covers the picture.
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   ImFont* font = ImGui::GetFont();
   const float size = ImGui::GetFontSize() * scale;
-  const float text_w = font->CalcTextSizeA(size, 1e9f, 0.0f, text).x;
+  const float text_w = banner_text_width(text, scale);
   const ImVec2 pos(centre_x - 0.5f * text_w, y);
   const float bottom = pos.y + kBannerHeight * scale;
   dl->AddRectFilled(ImVec2(pos.x - 10 * scale, pos.y - 6 * scale), ImVec2(pos.x + text_w + 10 * scale, bottom),

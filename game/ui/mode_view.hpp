@@ -62,6 +62,8 @@ void fit_renderer(Renderer& renderer, int w, int h, double scale);
 void draw_banner(const char* text, int width, float y);
 /// The same box, `scale` times the font's size, centred on `centre_x` px; returns its bottom (px).
 float draw_banner(const char* text, float centre_x, float y, float scale);
+/// px the text of such a banner spans (without its box's padding).
+float banner_text_width(const char* text, float scale);
 /// px the banner's box reaches below its `y` (its text's line and the box's padding).
 inline constexpr float kBannerHeight = 24.0f;
 

@@ -422,7 +422,8 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
 }
 
 ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
-  const bool fielded = play.caught || (play.fielder >= 0 && !play.foul && play.outcome != BattedOutcome::HomeRun);
+  // A home run or a ground-rule double has no fielder (-1).
+  const bool fielded = play.caught || (play.fielder >= 0 && !play.foul);
   if (!fielded || t.samples.empty() || play.fielded_time >= t.summary.total_time_s) return t;
   ShotTrajectory out = t;
   out.samples.clear();

@@ -137,8 +137,8 @@ Figure batter_figure(double phase, double bat_height, bool left_handed) {
   // a swing to a player's eye).
   const double swing = phase < 0.6 ? 0.0 : smooth((phase - 0.6) / 0.4);  // 0 loaded .. 1 contact
   const double turn = phase < 1.0 ? -0.5 * kPi * (1.0 - swing) : 0.8 * kPi * smooth((phase - 1.0) / 0.6);
-  const double stance_y = kStanceHandsHigh;
-  const double hands_y = phase < 1.0 ? stance_y - (stance_y - bat_height) * swing : bat_height + 0.9 * smooth((phase - 1.0) / 0.6);
+  const double hands_y = phase < 1.0 ? kStanceHandsHigh - (kStanceHandsHigh - bat_height) * swing
+                                     : bat_height + 0.9 * smooth((phase - 1.0) / 0.6);
   const Vec3 hands(0.05 + 0.35 * (phase < 1.0 ? swing : 1.0), hands_y, -kStanceHandsFromMiddle);
   // The bat's direction: up and back in the stance, level and square (along +z) at contact.
   const double tilt = phase < 1.0 ? (1.0 - swing) * 1.1 : 0.0;

@@ -179,6 +179,10 @@ std::string box_score_mismatch(const TeamBox& bat, const TeamBox& field) {
   if (p.r != bat.runs || p.h != bat.hits || p.bb != sum.bb || p.so != sum.so || p.hr != sum.hr || p.hbp != sum.hbp ||
       p.batters != sum.pa)
     return who + "the opposing pitcher's line does not match the batting";
+  // The box score's proof (Rule 9.03(c)): every batter, and every runner placed on second in
+  // extra innings, scored, was left on base or was put out.
+  if (sum.pa + bat.placed_runners != bat.runs + bat.left_on_base + p.outs)
+    return who + "plate appearances and placed runners are not runs + left on base + the opponents' putouts";
   return "";
 }
 

@@ -75,6 +75,7 @@ struct TeamBox {
   std::string name;
   std::vector<int> runs_by_inning;  ///< one entry per half it batted
   int runs = 0, hits = 0, errors = 0, left_on_base = 0;
+  int placed_runners = 0;  ///< extra innings' runners placed on second (Rule 7.01(b)): on base without a plate appearance
   std::vector<BattingLine> batting;  ///< by batting order
   PitchingLine pitching;             ///< its pitchers together, against the other team
   std::vector<PitchingLine> pitchers;///< each pitcher in the order they pitched
@@ -127,7 +128,8 @@ std::string decisions_mismatch(const TeamBox& away, const TeamBox& home);
 /// Every way the lines of a box score must agree (the runs by inning add up to the runs, the
 /// batters' runs and hits to the team's, the opponents' pitching to the batting, their
 /// pitchers' lines to their staff's, a plate appearance is an at-bat, a walk, a hit-by-pitch
-/// or a sacrifice fly; no pitcher's inherited runners scored more than he inherited); "" when
+/// or a sacrifice fly; no pitcher's inherited runners scored more than he inherited; the proof,
+/// plate appearances and placed runners = runs + left on base + the opponents' putouts); "" when
 /// they all do, otherwise the first that does not.
 std::string box_score_mismatch(const TeamBox& batting, const TeamBox& fielding);
 

@@ -6,6 +6,7 @@
 
 #include "game/content/resolve.hpp"
 #include "game/modes/baseball/aim.hpp"
+#include "game/modes/baseball/base_running.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 
@@ -13,21 +14,6 @@ namespace sweetspot {
 namespace {
 
 constexpr double kBall = 0.0369;       // m, the baseball's radius (assets' "mlb")
-// A runner's lead and secondary lead when the ball is hit, by base (ESTIMATES of Statcast's
-// lead distances: ~10-12 ft off first at the pitch, more off second, where no one holds him
-// on): off first and third ~11 ft, off second ~18 ft.
-constexpr std::array<double, 3> kLead{3.4, 5.5, 3.4};  // m
-constexpr double kRead = 0.3;          // s a runner takes to read a ball on the ground (ESTIMATE)
-// A ball in the air that no fielder could reach (Statcast's catch probability under kPlainHit)
-// is read as a hit: the runners go once they have read it, kReadAir after contact, instead of
-// holding until it drops (ESTIMATES).
-constexpr double kPlainHit = 0.25;
-constexpr double kReadAir = 1.0;       // s
-// Time to spare a runner is sent with for an extra base (or a tag): a coach sends him when he
-// is likely safe. With the fielder's throw uncertain by ~0.2 s (its line, its hop, the tag),
-// a margin of 0.15 s is safe ~3 times in 4 on the estimate alone (ESTIMATE).
-constexpr double kRunnerExtraBaseMargin = 0.15;
-constexpr double kPivotExtra = 0.1;    // s the pivot man's turn takes beyond a clean transfer (ESTIMATE)
 constexpr int kMaxExtra = 40;          // extra innings before a game still tied is stopped (MLB's longest: 26 innings)
 
 struct Env {
@@ -43,8 +29,6 @@ Env air(const Assets& assets) {
   const ResolvedShot r = resolve(spec, assets);
   return {r.aero, r.spec.environment};
 }
-
-double run_time(double speed, double distance) { return distance / std::max(speed, 1.0); }
 
 }  // namespace
 
@@ -135,121 +119,6 @@ PlateAppearance plate_appearance(const Assets& assets, Hitter& batter, Team& fie
 
 namespace {
 
-// One half-inning's base running after a ball in play: who scores, who is out, who stands
-// where. Each runner takes the bases the hit gives him, and one more when he would reach
-// it with time to spare before the fielder's throw.
-struct HalfInning {
-  const Assets& assets;
-  Env env;
-  Bases bases{-1, -1, -1};
-  int outs = 0;
-
-  // Runner from `from` (1..3) sent to `to`: starting `start` s after contact, from his lead
-  // or, tagging up on a caught fly, from the base.
-  bool beats_throw(const FieldingPlay& p, const FielderAbility& f, double sprint, int from, int to, double start,
-                   bool tagging = false) const {
-    const double dist = (to - from) * kBaseLine - (tagging ? 0.0 : kLead[static_cast<std::size_t>(from - 1)]);
-    const double runner = start + run_time(sprint, dist) + (to - from - 1) * kBaseRoundingTime;
-    const double defence = p.ready_time + throw_time(f, *env.aero, env.environment, p.fielded_at, to);
-    return runner + kRunnerExtraBaseMargin < defence;
-  }
-
-  // Runs scored (each runner who reached home pushed to `scored`).
-  int advance(const PlateAppearance& pa, const Team& batting, const Team& fielding, std::vector<int>& scored,
-              int& outs_made, std::string& description) {
-    const PitchRecord& last = pa.pitches.back();
-    const FieldingPlay& p = last.result.play;
-    const int batter = pa.batter;
-    const auto sprint = [&](int who) { return batting.lineup[static_cast<std::size_t>(who)].skill().sprint_speed; };
-    const FielderAbility& f = fielding.defense.ability[static_cast<std::size_t>(std::max(p.fielder, 0))];
-    Bases next{-1, -1, -1};
-    auto place = [&](int who, int base) {
-      if (base >= 4) scored.push_back(who);
-      else next[static_cast<std::size_t>(base - 1)] = who;
-    };
-    const BattedOutcome o = last.result.outcome;
-    if (o == BattedOutcome::HomeRun || o == BattedOutcome::Triple || o == BattedOutcome::Double ||
-        o == BattedOutcome::Single || o == BattedOutcome::Error) {
-      const int hit = o == BattedOutcome::HomeRun ? 4 : o == BattedOutcome::Triple ? 3 : o == BattedOutcome::Double ? 2 : 1;
-      // On a ball in the air runners hold at their leads until it drops, unless two are out
-      // or it is plainly a hit.
-      const double drops = last.result.shot.trajectory.summary.hang_time_s;
-      const double start = (p.type == BattedBallType::GroundBall || outs == 2) ? kRead
-                           : p.catch_probability < kPlainHit                    ? std::max(kRead, std::min(kReadAir, drops))
-                                                                                : std::max(kRead, drops);
-      for (int b = 3; b >= 1; --b) {
-        const int who = bases[static_cast<std::size_t>(b - 1)];
-        if (who < 0) continue;
-        int to = std::min(4, b + hit);
-        if (to < 4 && (to + 1 > 3 || next[static_cast<std::size_t>(to)] < 0) && o != BattedOutcome::Error &&
-            beats_throw(p, f, sprint(who), b, to + 1, start))
-          ++to;
-        place(who, to);
-      }
-      place(batter, hit);
-      bases = next;
-      return static_cast<int>(scored.size());
-    }
-    // An out in play.
-    if (p.caught) {
-      ++outs;
-      outs_made = 1;
-      // Runners on third and second tag up and go on a fly when the throw cannot beat them
-      // (the throw goes to one base: the lead runner's, as the others are sent only behind him).
-      if (outs < 3 && !p.foul && p.type != BattedBallType::PopUp) {
-        if (bases[2] >= 0 && beats_throw(p, f, sprint(bases[2]), 3, 4, p.fielded_time, true)) {
-          scored.push_back(bases[2]);
-          bases[2] = -1;
-        }
-        if (bases[1] >= 0 && bases[2] < 0 && beats_throw(p, f, sprint(bases[1]), 2, 3, p.fielded_time, true)) {
-          bases[2] = bases[1];
-          bases[1] = -1;
-        }
-      }
-      return static_cast<int>(scored.size());
-    }
-    // A ground ball out: with a runner forced at second and fewer than two out, the lead
-    // runner first, then the relay to first for two when it beats the batter.
-    if (outs < 2 && bases[0] >= 0) {
-      const double runner = kRead + run_time(sprint(bases[0]), kBaseLine - kLead[0]);
-      const double at_second = p.ready_time + throw_time(f, *env.aero, env.environment, p.fielded_at, 2);
-      if (at_second < runner) {
-        // The pivot at second: the second baseman when the shortstop or third baseman fields
-        // it, the shortstop otherwise (a 6-4-3, a 5-4-3; a 4-6-3, a 3-6-3, a 1-6-3).
-        const int pivot_at = p.fielder == 4 || p.fielder == 5 ? 3 : 4;
-        const FielderAbility& pivot = fielding.defense.ability[static_cast<std::size_t>(pivot_at)];
-        const double at_first = at_second + kPivotExtra + throw_time(pivot, *env.aero, env.environment, base_position(2), 1);
-        const bool double_play = at_first < p.batter_to_first;
-        outs += double_play ? 2 : 1;
-        outs_made = double_play ? 2 : 1;
-        Bases nb{double_play ? -1 : batter, -1, -1};
-        if (outs < 3) {
-          if (bases[2] >= 0) scored.push_back(bases[2]);
-          nb[2] = bases[1];
-        } else {
-          nb = {-1, bases[1], bases[2]};  // the inning is over: they are left on base
-        }
-        description = double_play ? "Grounded into a double play, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) +
-                                        " to " + kPositionNames[static_cast<std::size_t>(pivot_at)] + " to 1B"
-                                  : "Fielder's choice, " + std::string(kPositionNames[static_cast<std::size_t>(p.fielder)]) + " to " +
-                                        kPositionNames[static_cast<std::size_t>(pivot_at)];  // the man covering second
-        bases = nb;
-        return static_cast<int>(scored.size());
-      }
-    }
-    ++outs;
-    outs_made = 1;
-    if (outs >= 3) return 0;
-    // The batter out at first: the others move up a base.
-    Bases nb{-1, -1, -1};
-    if (bases[2] >= 0) scored.push_back(bases[2]);
-    if (bases[1] >= 0) nb[2] = bases[1];
-    if (bases[0] >= 0) nb[1] = bases[0];
-    bases = nb;
-    return static_cast<int>(scored.size());
-  }
-};
-
 // A walk-off other than a home run: the game ends when the winning run scores, so only the
 // runs up to it count (MLB Rule 5.08(b)), and a hit is worth only the bases the winning runner
 // took (Rule 9.06(f)). Runners reach home lead runner first.
@@ -325,6 +194,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
   GameSituation s;
   s.scheduled = o.innings;
   const Env env = air(assets);
+  Rng throws(o.seed * 0x9E3779B97F4A7C15ULL + 0x7468726F77ULL);  // the throws as they come (base_running.hpp)
   for (s.inning = 1; s.inning <= o.innings + kMaxExtra; ++s.inning) {
     for (int half = 0; half < 2; ++half) {
       s.bottom = half == 1;
@@ -333,7 +203,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
       Team& bat = teams[half];
       Team& field = teams[1 - half];
       TeamBox& fbox = box[1 - half];
-      HalfInning h{assets, env, {-1, -1, -1}, 0};
+      HalfInning h{env.aero, env.environment, {-1, -1, -1}, 0};
       // Runners whose runs are unearned (Rule 9.16): a batter who reached on an error, and
       // extra innings' placed runner.
       std::array<bool, 9> unearned{};
@@ -343,6 +213,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
       if (s.inning > s.scheduled) {
         h.bases[1] = (next_up[half] + 8) % 9;
         unearned[static_cast<std::size_t>(h.bases[1])] = true;
+        ++box[half].placed_runners;
       }
       int runs = 0;
       int runs_on_watch = 0;  // scored this half while the pitcher now on the mound pitched
@@ -383,10 +254,11 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
           pa.outs_made = 1;
         } else {
           int outs_made = 0;
-          h.advance(pa, bat, field, scored, outs_made, pa.description);
+          h.advance(pa, bat, field, throws, scored, outs_made, pa.description);
           pa.outs_made = outs_made;
           const bool error = pa.result == "error";
-          const bool double_play = outs_made == 2;
+          // No run batted in on a ground ball into a double play (Rule 9.04(b)(1)).
+          const bool double_play = pa.description.rfind("Grounded into a double play", 0) == 0;
           pa.sacrifice_fly = pa.result == "out" && pa.pitches.back().result.play.caught && !scored.empty();
           // The scorer's words for it: a run scored on the catch is a sacrifice fly.
           if (pa.sacrifice_fly)
@@ -398,7 +270,12 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
           pa.rbi = error || double_play ? 0 : static_cast<int>(scored.size());
           if (error) ++fbox.errors;
         }
-        if (s.bottom && s.inning >= s.scheduled && pa.result != "home_run") walk_off_limit(pa, s, scored);
+        if (s.bottom && s.inning >= s.scheduled && pa.result != "home_run") {
+          // Runners whose runs no longer count are left on base.
+          const std::size_t crossed = scored.size();
+          walk_off_limit(pa, s, scored);
+          box[half].left_on_base += static_cast<int>(crossed - scored.size());
+        }
         pa.runs = static_cast<int>(scored.size());
         unearned[static_cast<std::size_t>(batter)] = pa.result == "error";
         // Who answers for each runner (Rule 9.16(g)): the batter aboard is this pitcher's,

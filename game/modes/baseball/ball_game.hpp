@@ -1,8 +1,8 @@
 // A game of baseball between two bot teams (DESIGN §9): nine hitters of a skill against a
 // pitcher, pitch by pitch with counts, balls in play fielded by nine fielders, runners who
-// advance by the hit and their speed (each extra base taken only when the throw cannot beat
-// him), outs, runs, innings to the end the rules give, and the box score. Headless and
-// seeded: the same options, the same game.
+// advance by the hit and their speed (base_running.hpp: sent for an extra base when the throw
+// should not beat them, and now and then thrown out), outs, runs, innings to the end the rules
+// give, and the box score. Headless and seeded: the same options, the same game.
 #pragma once
 
 #include <cstdint>

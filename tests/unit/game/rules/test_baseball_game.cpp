@@ -80,7 +80,15 @@ TEST_CASE("a box score whose lines disagree is caught", "[baseball][rules]") {
   field.pitching.so = 1;
   field.pitching.hr = 1;
   field.pitching.batters = 5;
+  field.pitching.outs = 1;
+  bat.left_on_base = 1;  // the proof: 5 PA = 3 R + 1 LOB + 1 putout
   CHECK(box_score_mismatch(bat, field).empty());
+  bat.left_on_base = 2;  // a runner counted twice
+  CHECK_FALSE(box_score_mismatch(bat, field).empty());
+  bat.placed_runners = 1;  // unless an extra inning's placed runner was left on too
+  CHECK(box_score_mismatch(bat, field).empty());
+  bat.left_on_base = 1;
+  bat.placed_runners = 0;
   bat.runs_by_inning = {1, 0, 1};
   CHECK_FALSE(box_score_mismatch(bat, field).empty());
   bat.runs_by_inning = {1, 0, 2};

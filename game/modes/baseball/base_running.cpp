@@ -1,0 +1,246 @@
+#include "game/modes/baseball/base_running.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace sweetspot {
+namespace {
+
+// A runner's lead and secondary lead when the ball is hit, by base (ESTIMATES of Statcast's
+// lead distances: ~10-12 ft off first at the pitch, more off second, where no one holds him
+// on): off first and third ~11 ft, off second ~18 ft.
+constexpr std::array<double, 3> kLead{3.4, 5.5, 3.4};  // m
+constexpr double kRead = 0.3;          // s a runner takes to read a ball on the ground, or a catch (ESTIMATE)
+// A ball in the air that no fielder could reach (Statcast's catch probability under kPlainHit)
+// is read as a hit: the runners go once they have read it, kReadAir after contact, instead of
+// holding until it drops (ESTIMATES).
+constexpr double kPlainHit = 0.25;
+constexpr double kReadAir = 1.0;       // s
+constexpr double kLikelyCatch = 0.5;   // a ball more likely caught than not: the runners go back to their bases
+// Time to spare a runner is sent with for an extra base (or a tag): a coach sends him when he
+// is likely safe. With the throw as it comes spread by kThrowSpread, a runner sent with
+// 0.15 s to spare is safe ~3 times in 4 (ESTIMATE).
+constexpr double kRunnerExtraBaseMargin = 0.15;
+constexpr double kPivotExtra = 0.1;    // s the pivot man's turn takes beyond a clean transfer (ESTIMATE)
+
+const char* base_name(int base) {
+  static constexpr std::array<const char*, 5> kNames{"home", "1st", "2nd", "3rd", "home"};
+  return kNames[static_cast<std::size_t>(std::clamp(base, 0, 4))];
+}
+
+// Who takes a throw at `base` (kPositionNames' index): the catcher at home, the third
+// baseman at third (the shortstop when he fielded it), at second the shortstop on a ball to
+// the right side and the second baseman otherwise, the first baseman at first.
+int receiver(int base, int fielder) {
+  switch (base) {
+    case 4: return 1;
+    case 3: return fielder == 5 ? 4 : 5;
+    case 2: return fielder == 2 || fielder == 3 || fielder == 8 ? 4 : 3;
+    default: return 2;
+  }
+}
+
+double run_time(double speed, double distance) { return distance / std::max(speed, 1.0); }
+
+}  // namespace
+
+void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const Team& fielding, Rng& throws,
+                         std::vector<int>& scored, int& outs_made, std::string& description) {
+  const PitchRecord& last = pa.pitches.back();
+  const FieldingPlay& p = last.result.play;
+  const int batter = pa.batter;
+  const auto sprint = [&](int who) { return batting.lineup[static_cast<std::size_t>(who)].skill().sprint_speed; };
+  const std::size_t fielder = static_cast<std::size_t>(std::max(p.fielder, 0));
+  const FielderAbility& f = fielding.defense.ability[fielder];
+  // The seconds by which the runner from `from`, starting `start` s after contact `lead` m off
+  // his base, beats the fielder's throw to `to` (negative: the throw is there first).
+  const auto spare = [&](int who, int from, int to, double start, double lead, double ready) {
+    const double dist = (to - from) * kBaseLine - lead;
+    const double runner = start + run_time(sprint(who), dist) + (to - from - 1) * kBaseRoundingTime;
+    return ready + throw_time(f, *aero, environment, p.fielded_at, to) - runner;
+  };
+  // The throw as it comes: safe when he beats it.
+  const auto safe = [&](double estimate) { return estimate + throws.normal(kThrowSpread) > 0.0; };
+  // A runner put out: his out, and the scorer's words for it after the batter's.
+  std::string runner_out;
+  const auto put_out = [&](int from, int at) {
+    ++outs;
+    ++outs_made;
+    const int takes = receiver(at, p.fielder);
+    const std::string throw_words = std::string(" (") + kPositionNames[fielder] +
+                                    (takes == p.fielder ? std::string(" unassisted)")
+                                                        : std::string(" to ") + kPositionNames[static_cast<std::size_t>(takes)] + ")");
+    runner_out = from == at ? std::string(", double play: runner doubled off ") + base_name(at) + throw_words
+                            : std::string(", runner from ") + base_name(from) + " out at " + base_name(at) + throw_words;
+  };
+  Bases next{-1, -1, -1};
+  const auto place = [&](int who, int base) {
+    if (base >= 4) scored.push_back(who);
+    else next[static_cast<std::size_t>(base - 1)] = who;
+  };
+
+  const BattedOutcome o = last.result.outcome;
+  if (o == BattedOutcome::HomeRun || o == BattedOutcome::Triple || o == BattedOutcome::Double ||
+      o == BattedOutcome::Single || o == BattedOutcome::Error) {
+    const int hit = o == BattedOutcome::HomeRun ? 4 : o == BattedOutcome::Triple ? 3 : o == BattedOutcome::Double ? 2 : 1;
+    // On a ball in the air runners hold at their leads until it drops, unless two are out
+    // or it is plainly a hit.
+    const double drops = last.result.shot.trajectory.summary.hang_time_s;
+    const double start = (p.type == BattedBallType::GroundBall || outs == 2) ? kRead
+                         : p.catch_probability < kPlainHit                    ? std::max(kRead, std::min(kReadAir, drops))
+                                                                              : std::max(kRead, drops);
+    for (int b = 3; b >= 1; --b) {
+      const int who = bases[static_cast<std::size_t>(b - 1)];
+      if (who < 0) continue;
+      int to = std::min(4, b + hit);
+      const bool open = to < 4 && (to + 1 > 3 || next[static_cast<std::size_t>(to)] < 0);
+      if (open && o != BattedOutcome::Error && outs < 3 && runner_out.empty()) {
+        const double s = spare(who, b, to + 1, start, kLead[static_cast<std::size_t>(b - 1)], p.ready_time);
+        if (s > kRunnerExtraBaseMargin) {
+          if (!safe(s)) {
+            put_out(b, to + 1);
+            continue;
+          }
+          ++to;
+        }
+      }
+      place(who, to);
+    }
+    place(batter, hit);
+    bases = next;
+    description += runner_out;
+    return;
+  }
+
+  if (p.caught) {
+    ++outs;
+    outs_made = 1;
+    if (outs >= 3 || p.foul) return;
+    // Caught: a runner who had left his base must get back before the throw beats him there.
+    // On a ball he read as a likely catch he went back once he had read it; otherwise he held
+    // at his lead until it would drop, or ran from kReadAir when it looked a plain hit, and
+    // turns back when he sees the catch.
+    const double caught = p.fielded_time;
+    for (int b = 3; b >= 1 && outs < 3; --b) {
+      const int who = bases[static_cast<std::size_t>(b - 1)];
+      if (who < 0) continue;
+      double off = kLead[static_cast<std::size_t>(b - 1)];
+      if (p.catch_probability < kPlainHit && caught > kReadAir) off += sprint(who) * (caught - kReadAir);
+      off = std::min(off, kBaseLine);
+      const double turns = p.catch_probability >= kLikelyCatch ? 0.0 : caught;
+      const double back = turns + kRead + run_time(sprint(who), off);
+      const double throw_there = caught + throw_time(f, *aero, environment, p.fielded_at, b);
+      if (!safe(throw_there - back)) {
+        put_out(b, b);
+        bases[static_cast<std::size_t>(b - 1)] = -1;
+        break;  // one throw
+      }
+    }
+    description += runner_out;
+    if (outs >= 3 || p.type == BattedBallType::PopUp || !runner_out.empty()) return;
+    // Runners on third and second tag up and go when the throw cannot beat them (the throw
+    // goes to one base: the lead runner's, as the others are sent only behind him).
+    if (bases[2] >= 0) {
+      const double s = spare(bases[2], 3, 4, p.fielded_time, 0.0, p.fielded_time);
+      if (s > kRunnerExtraBaseMargin) {
+        if (safe(s)) scored.push_back(bases[2]);
+        else put_out(3, 4);
+        bases[2] = -1;
+      }
+    }
+    // The throw went home if he was sent: the runner from second moves up behind it.
+    if (outs < 3 && bases[1] >= 0 && bases[2] < 0) {
+      const bool throw_home = !scored.empty() || !runner_out.empty();
+      const double s = spare(bases[1], 2, 3, p.fielded_time, 0.0, p.fielded_time);
+      if (throw_home || s > kRunnerExtraBaseMargin) {
+        if (throw_home || safe(s)) bases[2] = bases[1];
+        else put_out(2, 3);
+        bases[1] = -1;
+      }
+    }
+    description += runner_out;
+    return;
+  }
+
+  // A ground ball out: with a runner forced at second and fewer than two out, the lead
+  // runner first, then the relay to first for two when it beats the batter.
+  if (outs < 2 && bases[0] >= 0) {
+    const double runner = kRead + run_time(sprint(bases[0]), kBaseLine - kLead[0]);
+    const double at_second = p.ready_time + throw_time(f, *aero, environment, p.fielded_at, 2);
+    if (at_second < runner) {
+      // The pivot at second: the second baseman when the shortstop or third baseman fields
+      // it, the shortstop otherwise (a 6-4-3, a 5-4-3; a 4-6-3, a 3-6-3, a 1-6-3).
+      const int pivot_at = p.fielder == 4 || p.fielder == 5 ? 3 : 4;
+      const FielderAbility& pivot = fielding.defense.ability[static_cast<std::size_t>(pivot_at)];
+      const double at_first = at_second + kPivotExtra + throw_time(pivot, *aero, environment, base_position(2), 1);
+      const bool double_play = at_first < p.batter_to_first && safe(p.batter_to_first - at_first);
+      outs += double_play ? 2 : 1;
+      outs_made = double_play ? 2 : 1;
+      Bases nb{double_play ? -1 : batter, -1, -1};
+      if (outs < 3) {
+        if (bases[2] >= 0) scored.push_back(bases[2]);
+        nb[2] = bases[1];
+      } else {
+        nb = {-1, bases[1], bases[2]};  // the inning is over: they are left on base
+      }
+      description = double_play ? "Grounded into a double play, " + std::string(kPositionNames[fielder]) + " to " +
+                                      kPositionNames[static_cast<std::size_t>(pivot_at)] + " to 1B"
+                                : "Fielder's choice, " + std::string(kPositionNames[fielder]) + " to " +
+                                      kPositionNames[static_cast<std::size_t>(pivot_at)];  // the man covering second
+      bases = nb;
+      return;
+    }
+  }
+  // The throw goes to first. Forced runners move up; a runner not forced goes on the ground
+  // ball only when the throw to his base could not beat him (a ball hit behind him), and the
+  // fielder who sees him go throws there instead when it gets him.
+  if (outs >= 2) {
+    ++outs;
+    outs_made = 1;
+    return;
+  }
+  const bool forced2 = bases[0] >= 0, forced3 = forced2 && bases[1] >= 0;
+  Bases nb{-1, -1, -1};
+  bool thrown_elsewhere = false;
+  if (bases[2] >= 0) {
+    const int who = bases[2];
+    const double s = forced3 ? 1.0 : spare(who, 3, 4, kRead, kLead[2], p.ready_time);
+    if (forced3 || s > kRunnerExtraBaseMargin) {
+      if (forced3 || safe(s)) {
+        scored.push_back(who);
+      } else {
+        put_out(3, 4);
+        thrown_elsewhere = true;
+      }
+    } else {
+      nb[2] = who;
+    }
+  }
+  if (bases[1] >= 0) {
+    const int who = bases[1];
+    const bool open = nb[2] < 0;
+    const double s = forced3 || !open ? 1.0 : spare(who, 2, 3, kRead, kLead[1], p.ready_time);
+    if (forced2 || (open && s > kRunnerExtraBaseMargin)) {
+      if (forced2 || thrown_elsewhere || safe(s)) {
+        nb[2] = who;
+      } else {
+        put_out(2, 3);
+        thrown_elsewhere = true;
+      }
+    } else {
+      nb[1] = who;
+    }
+  }
+  if (bases[0] >= 0) nb[1] = bases[0];
+  if (thrown_elsewhere) {
+    // The fielder's choice: the batter is safe at first.
+    nb[0] = batter;
+    description = "Fielder's choice" + runner_out;
+  } else {
+    ++outs;
+    outs_made = 1;
+  }
+  bases = nb;
+}
+
+}  // namespace sweetspot

@@ -1,0 +1,38 @@
+// Base running after a ball in play (DESIGN §9): who scores, who is out, who stands where.
+// Each runner takes the bases the hit gives him, and one more when he would reach it with
+// time to spare before the fielder's throw; on a ground out the forced runners run and the
+// others go only when the throw to their base cannot beat them; on a caught fly they tag up,
+// and a runner caught off his base is doubled off. Every such decision is made on the
+// estimate, and the throw as it comes (its line, its hop, the tag) decides the play, so some
+// runners who are sent are thrown out.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "game/modes/baseball/ball_game.hpp"
+#include "game/util/rng.hpp"
+
+namespace sweetspot {
+
+/// s: how far the defence's real time for a throw and tag runs from what a runner or coach
+/// can judge at the moment he goes: the throw's line and hop, the catch and the tag (ESTIMATE:
+/// a pop time's spread on a catcher's throw to second is ~0.1 s, Statcast 2023; an
+/// outfielder's throw from the run, its bounce and the tag sweep add about as much again).
+inline constexpr double kThrowSpread = 0.2;
+
+/// A half-inning's base runners and outs.
+struct HalfInning {
+  const AeroModel* aero = nullptr;
+  Environment environment;
+  Bases bases{-1, -1, -1};
+  int outs = 0;
+
+  /// The runners' part of a ball in play (the batter's is `pa`'s result). Runs scored push
+  /// the runner to `scored`; `outs_made` counts the batter's out and the runners'; the
+  /// runners' outs are added to `description`. `throws` draws the throws as they come.
+  void advance(const PlateAppearance& pa, const Team& batting, const Team& fielding, Rng& throws, std::vector<int>& scored,
+               int& outs_made, std::string& description);
+};
+
+}  // namespace sweetspot

@@ -97,7 +97,7 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
       if (open && o != BattedOutcome::Error && outs < 3 && runner_out.empty()) {
         const double s = spare(who, b, to + 1, start, kLead[static_cast<std::size_t>(b - 1)], p.ready_time);
         if (s > kRunnerExtraBaseMargin) {
-          if (!safe(s)) {
+          if (p.batter_out_at == 0 && !safe(s)) {  // the throw goes to the batter when he stretches
             put_out(b, to + 1);
             continue;
           }
@@ -106,7 +106,12 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
       }
       place(who, to);
     }
-    place(batter, hit);
+    if (p.batter_out_at > 0 && outs < 3) {
+      ++outs;
+      ++outs_made;
+    } else if (p.batter_out_at == 0) {
+      place(batter, hit);
+    }
     bases = next;
     description += runner_out;
     return;

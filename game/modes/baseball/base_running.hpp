@@ -3,8 +3,8 @@
 // time to spare before the fielder's throw; on a ground out the forced runners run and the
 // others go only when the throw to their base cannot beat them; on a caught fly they tag up,
 // and a runner caught off his base is doubled off. Every such decision is made on the
-// estimate, and the throw as it comes (its line, its hop, the tag) decides the play, so some
-// runners who are sent are thrown out.
+// estimate, and the throw as it comes (kThrowSpread: its line, its hop, the tag) decides the
+// play, so some runners who are sent are thrown out.
 #pragma once
 
 #include <string>
@@ -14,12 +14,6 @@
 #include "game/util/rng.hpp"
 
 namespace sweetspot {
-
-/// s: how far the defence's real time for a throw and tag runs from what a runner or coach
-/// can judge at the moment he goes: the throw's line and hop, the catch and the tag (ESTIMATE:
-/// a pop time's spread on a catcher's throw to second is ~0.1 s, Statcast 2023; an
-/// outfielder's throw from the run, its bounce and the tag sweep add about as much again).
-inline constexpr double kThrowSpread = 0.2;
 
 /// A half-inning's base runners and outs.
 struct HalfInning {

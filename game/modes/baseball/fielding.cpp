@@ -410,14 +410,26 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   if (defence(1) < to_first) {
     play.outcome = BattedOutcome::Out;
     if (rng && rng->uniform() < kBootRate) play.outcome = BattedOutcome::Error;
-  } else if (defence(2) < to_first + base_to_base + kBatterExtraBaseMargin) {
-    play.outcome = BattedOutcome::Single;
-  } else if (defence(3) < to_first + 2.0 * base_to_base + kBatterExtraBaseMargin) {
-    play.outcome = BattedOutcome::Double;
-  } else {
-    play.outcome = BattedOutcome::Triple;
+    play.description = describe(play, first_p);
+    return play;
   }
+  // He takes each further base he should beat the throw to by kBatterExtraBaseMargin; the
+  // throw as it comes (kThrowSpread) can still get him there.
+  int reached = 1;
+  for (int base = 2; base <= 3; ++base) {
+    const double spare = defence(base) - (to_first + (base - 1) * base_to_base);
+    if (spare < kBatterExtraBaseMargin) break;
+    if (rng && spare + rng->normal(kThrowSpread) < 0.0) {
+      play.batter_out_at = base;
+      break;
+    }
+    reached = base;
+  }
+  play.outcome = reached == 1 ? BattedOutcome::Single : reached == 2 ? BattedOutcome::Double : BattedOutcome::Triple;
   play.description = describe(play, first_p);
+  if (play.batter_out_at > 0)
+    play.description += std::string(", out stretching at ") + (play.batter_out_at == 2 ? "2nd" : "3rd") + " (" +
+                        kPositionNames[first_f] + " to " + (play.batter_out_at == 2 ? (first_f >= 7 ? "SS" : "2B") : "3B") + ")";
   return play;
 }
 

@@ -77,6 +77,9 @@ struct FieldingPlay {
   /// to settle, later when he must first stop his run or get up from a dive (ground_pickup).
   double ready_time = 0.0;
   double batter_to_first = 4.47; ///< s, his home-to-first time
+  /// The base (2 or 3) where the batter was thrown out stretching his hit, 0 when he was not:
+  /// the hit is his (`outcome`), and the out.
+  int batter_out_at = 0;
   std::array<Vec3, 9> start{}, goal{};  ///< each fielder's spot and where he runs (drawing)
   std::string description;       ///< "Fly out to CF", "Double to RF", ...
 };
@@ -85,6 +88,13 @@ struct FieldingPlay {
 /// where it passes the bases or comes to rest; into the stands, by where it came down (a fair
 /// ball bounced into them is a ground-rule double, field_play).
 bool is_fair_ball(const ShotResult& shot);
+
+/// s: how far the defence's real time for a throw and tag runs from what a runner or coach
+/// can judge at the moment he goes: the throw's line and hop, the catch and the tag (ESTIMATE:
+/// a catcher's pop time to second spreads ~0.1 s, Statcast 2023; an outfielder's throw from
+/// the run, its bounce and the tag sweep add about as much again). A runner sent on the
+/// estimate is out when the throw as it comes beats him.
+inline constexpr double kThrowSpread = 0.2;
 
 /// Seconds a runner loses rounding a base (ESTIMATE), for the batter and the runners alike.
 inline constexpr double kBaseRoundingTime = 0.3;

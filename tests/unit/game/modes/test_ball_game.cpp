@@ -475,7 +475,8 @@ TEST_CASE("over 100 games some runners who are sent are thrown out, and on a gro
   // Baseball-Reference: a runner on third with fewer than two out scores about half the time
   // (49-52 %, 2013-14; 51.7 % over 2003-04's 21,073 chances); its "outs on base" are 47 a team
   // in 2022 (0.29 a game), counting every out a runner makes advancing (this game's: on hits,
-  // on tags, doubled off) and those on wild pitches and passed balls, which it does not play.
+  // on tags, doubled off, the batter stretching a hit) and those on wild pitches and passed
+  // balls, which it does not play. Within a half-inning, outs and runners carry over.
   int r3 = 0, r3_scored = 0, runner_outs = 0, teams = 0;
   int behind = 0, behind_moved = 0, in_front = 0, in_front_moved = 0;
   for (const GameRecord& g : league_games()) {
@@ -485,8 +486,15 @@ TEST_CASE("over 100 games some runners who are sent are thrown out, and on a gro
       const PlateAppearance& pa = pas[i];
       const Bases& before = pa.bases_before;
       runner_outs += pa.description.find(", runner from") != std::string::npos ||
-                     pa.description.find("doubled off") != std::string::npos;
+                     pa.description.find("doubled off") != std::string::npos ||
+                     pa.description.find("out stretching") != std::string::npos;
       const bool same_half = i + 1 < pas.size() && pas[i + 1].inning == pa.inning && pas[i + 1].bottom == pa.bottom;
+      if (same_half) {
+        // Every man who was on or came up is on base after it, scored, or was put out.
+        const auto count = [](const Bases& b) { return static_cast<int>(std::count_if(b.begin(), b.end(), [](int r) { return r >= 0; })); };
+        CHECK(pas[i + 1].outs_before == pa.outs_before + pa.outs_made);
+        CHECK(count(pas[i + 1].bases_before) == count(before) + 1 - pa.runs - pa.outs_made);
+      }
       if (before[2] >= 0 && pa.outs_before < 2) {
         ++r3;
         const Bases* after = same_half ? &pas[i + 1].bases_before : nullptr;

@@ -61,10 +61,11 @@ constexpr double kCatchOffset = 0.25; // s: a catch that takes all of his reach 
 constexpr double kRouteEfficiency = 0.9;
 constexpr double kGatherUnder = 0.35;  // s
 // Misplays per chance: MLB fielding percentage ~.985 (2023), outfielders ~.990 and
-// infielders ~.975: a ball caught in the air is dropped 0.5 % of the time, a grounder
-// fielded for an out is booted or thrown away 2 % of the time (two chances: the stop and
-// the throw).
-constexpr double kDropRate = 0.005, kBootRate = 0.02;
+// infielders ~.975: a ball caught in the air is dropped 0.5 % of the time; a grounder
+// fielded for an out is booted or thrown away 3 % of the time: the fielder's chance (an
+// infielder's ~2.5 %) and the first baseman's catch of the throw (~0.5 %) (ESTIMATES from
+// those percentages).
+constexpr double kDropRate = 0.005, kBootRate = 0.03;
 
 Vec3 at(double depth_ft, double angle_deg) {
   const double d = depth_ft * 0.3048, a = deg_to_rad(angle_deg);

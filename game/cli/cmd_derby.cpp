@@ -55,13 +55,17 @@ int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
         // An extra inning's half opens with its runner on second (MLB Rule 7.01(b)): say so,
         // or a run he scores comes from nowhere in the play-by-play.
         if (half != half_shown && pa.inning > o.innings && pa.bases_before[1] >= 0)
-          std::printf("%s %-2d %-6s #%d  %-32s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
+          std::printf("%s %-2d %-6s #%d  %s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
                       pa.bases_before[1] + 1, "starts on 2nd (extra innings)");
         half_shown = half;
         if (pa.pitching_change) std::printf("%s %-2d %s\n", pa.bottom ? "bot" : "top", pa.inning, pitching_change_text(pa).c_str());
-        std::printf("%s %-2d %-6s #%d  %-32s %s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
-                    pa.batter + 1, pa.description.c_str(),
-                    pa.runs == 1 ? "1 run scores" : pa.runs > 1 ? (std::to_string(pa.runs) + " runs score").c_str() : "");
+        const std::string runs = pa.runs == 1 ? "1 run scores" : pa.runs > 1 ? std::to_string(pa.runs) + " runs score" : "";
+        char line[512];
+        std::snprintf(line, sizeof line, "%s %-2d %-6s #%d  %-32s %s", pa.bottom ? "bot" : "top", pa.inning,
+                      pa.bottom ? "home" : "away", pa.batter + 1, pa.description.c_str(), runs.c_str());
+        std::string text = line;
+        text.erase(text.find_last_not_of(' ') + 1);  // the padding is for the runs column only
+        std::printf("%s\n", text.c_str());
       }
       std::printf("\n%s", box_score_text(game).c_str());
     } else {

@@ -254,6 +254,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
           pa.outs_made = 1;
         } else {
           int outs_made = 0;
+          h.runs_to_win = s.bottom && s.inning >= s.scheduled ? std::max(0, s.away_runs - s.home_runs + 1) : 0;
           h.advance(pa, bat, field, throws, scored, outs_made, pa.description);
           pa.outs_made = outs_made;
           const bool error = pa.result == "error";

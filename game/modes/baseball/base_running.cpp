@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace sweetspot {
 namespace {
@@ -17,6 +18,9 @@ constexpr double kRead = 0.3;          // s a runner takes to read a ball on the
 constexpr double kPlainHit = 0.25;
 constexpr double kReadAir = 1.0;       // s
 constexpr double kLikelyCatch = 0.5;   // a ball more likely caught than not: the runners go back to their bases
+// s before a catch that a runner who held or ran sees it coming (the fielder settling under
+// the ball: kGatherUnder's 0.35 s and his last strides; ESTIMATE) and turns back.
+constexpr double kSeesCatch = 1.0;
 // Time to spare a runner is sent with for an extra base (or a tag): a coach sends him when he
 // is likely safe. With the throw as it comes spread by kThrowSpread, a runner sent with
 // 0.15 s to spare is safe ~3 times in 4 (ESTIMATE).
@@ -26,18 +30,6 @@ constexpr double kPivotExtra = 0.1;    // s the pivot man's turn takes beyond a 
 const char* base_name(int base) {
   static constexpr std::array<const char*, 5> kNames{"home", "1st", "2nd", "3rd", "home"};
   return kNames[static_cast<std::size_t>(std::clamp(base, 0, 4))];
-}
-
-// Who takes a throw at `base` (kPositionNames' index): the catcher at home, the third
-// baseman at third (the shortstop when he fielded it), at second the shortstop on a ball to
-// the right side and the second baseman otherwise, the first baseman at first.
-int receiver(int base, int fielder) {
-  switch (base) {
-    case 4: return 1;
-    case 3: return fielder == 5 ? 4 : 5;
-    case 2: return fielder == 2 || fielder == 3 || fielder == 8 ? 4 : 3;
-    default: return 2;
-  }
 }
 
 double run_time(double speed, double distance) { return distance / std::max(speed, 1.0); }
@@ -54,10 +46,31 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   const FielderAbility& f = fielding.defense.ability[fielder];
   // The seconds by which the runner from `from`, starting `start` s after contact `lead` m off
   // his base, beats the fielder's throw to `to` (negative: the throw is there first).
+  const auto apart = [](const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); };
+  // When the ball can be at base `to`: thrown there once the man covering it has run there
+  // from where he stood when it was hit, or carried there by the fielder himself.
+  const auto at_base = [&](int to, double ready) {
+    const Vec3 base = base_position(to);
+    const std::size_t c = static_cast<std::size_t>(covering_fielder(to, p.fielder));
+    const double thrown = std::max(ready + throw_time(f, *aero, environment, p.fielded_at, to),
+                                   fielder_run_time(fielding.defense.ability[c], apart(p.start[c], base)));
+    const double carried = ready + fielder_run_time(f, apart(p.fielded_at, base)) - f.reaction;
+    return std::min(thrown, carried);
+  };
   const auto spare = [&](int who, int from, int to, double start, double lead, double ready) {
     const double dist = (to - from) * kBaseLine - lead;
     const double runner = start + run_time(sprint(who), dist) + (to - from - 1) * kBaseRoundingTime;
-    return ready + throw_time(f, *aero, environment, p.fielded_at, to) - runner;
+    double ahead = at_base(to, ready) - runner;
+    // A fielder with the ball beside the base path tags him on the way (a ball hit in front
+    // of him): the nearest point of his last leg to the fielder, who starts from where he has it.
+    const Vec3 a = base_position(to - 1), b = base_position(to);
+    const Vec3 leg = (b - a) / kBaseLine;
+    const double along = std::clamp((p.fielded_at - a).dot(leg), 0.0, kBaseLine);
+    const Vec3 meet = a + along * leg;
+    const double runner_there = start + run_time(sprint(who), (to - 1 - from) * kBaseLine + along - lead) +
+                                (to - from - 1) * kBaseRoundingTime;
+    const double fielder_there = ready + fielder_run_time(f, apart(p.fielded_at, meet)) - f.reaction;
+    return std::min(ahead, fielder_there - runner_there);
   };
   // The throw as it comes: safe when he beats it.
   const auto safe = [&](double estimate) { return estimate + throws.normal(kThrowSpread) > 0.0; };
@@ -66,7 +79,7 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   const auto put_out = [&](int from, int at) {
     ++outs;
     ++outs_made;
-    const int takes = receiver(at, p.fielder);
+    const int takes = covering_fielder(at, p.fielder);
     const std::string throw_words = std::string(" (") + kPositionNames[fielder] +
                                     (takes == p.fielder ? std::string(" unassisted)")
                                                         : std::string(" to ") + kPositionNames[static_cast<std::size_t>(takes)] + ")");
@@ -79,6 +92,8 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
     else next[static_cast<std::size_t>(base - 1)] = who;
   };
 
+  // The game is over when the winning run scores (Rule 5.08(b)): no one is put out after it.
+  const auto won = [&] { return runs_to_win > 0 && static_cast<int>(scored.size()) >= runs_to_win; };
   const BattedOutcome o = last.result.outcome;
   if (o == BattedOutcome::HomeRun || o == BattedOutcome::Triple || o == BattedOutcome::Double ||
       o == BattedOutcome::Single || o == BattedOutcome::Error) {
@@ -94,7 +109,7 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
       if (who < 0) continue;
       int to = std::min(4, b + hit);
       const bool open = to < 4 && (to + 1 > 3 || next[static_cast<std::size_t>(to)] < 0);
-      if (open && o != BattedOutcome::Error && outs < 3 && runner_out.empty()) {
+      if (open && o != BattedOutcome::Error && outs < 3 && runner_out.empty() && !won()) {
         const double s = spare(who, b, to + 1, start, kLead[static_cast<std::size_t>(b - 1)], p.ready_time);
         if (s > kRunnerExtraBaseMargin) {
           if (p.batter_out_at == 0 && !safe(s)) {  // the throw goes to the batter when he stretches
@@ -106,10 +121,12 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
       }
       place(who, to);
     }
-    if (p.batter_out_at > 0 && outs < 3) {
+    if (p.batter_out_at > 0 && outs < 3 && !won()) {
       ++outs;
       ++outs_made;
-    } else if (p.batter_out_at == 0) {
+      description += std::string(", out stretching at ") + base_name(p.batter_out_at) + " (" + kPositionNames[fielder] + " to " +
+                     kPositionNames[static_cast<std::size_t>(covering_fielder(p.batter_out_at, p.fielder))] + ")";
+    } else {
       place(batter, hit);
     }
     bases = next;
@@ -129,12 +146,14 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
     for (int b = 3; b >= 1 && outs < 3; --b) {
       const int who = bases[static_cast<std::size_t>(b - 1)];
       if (who < 0) continue;
+      // (A liner is caught before he can see it coming: he turns at the catch.)
+      const double turns =
+          p.catch_probability >= kLikelyCatch ? 0.0 : caught - std::min(kSeesCatch, std::max(0.0, caught - kSeesCatch));
       double off = kLead[static_cast<std::size_t>(b - 1)];
-      if (p.catch_probability < kPlainHit && caught > kReadAir) off += sprint(who) * (caught - kReadAir);
+      if (p.catch_probability < kPlainHit && turns > kReadAir) off += sprint(who) * (turns - kReadAir);
       off = std::min(off, kBaseLine);
-      const double turns = p.catch_probability >= kLikelyCatch ? 0.0 : caught;
-      const double back = turns + kRead + run_time(sprint(who), off);
-      const double throw_there = caught + throw_time(f, *aero, environment, p.fielded_at, b);
+      const double back = std::max(turns + kRead + run_time(sprint(who), off), caught);
+      const double throw_there = at_base(b, caught);
       if (!safe(throw_there - back)) {
         put_out(b, b);
         bases[static_cast<std::size_t>(b - 1)] = -1;
@@ -171,11 +190,11 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   // runner first, then the relay to first for two when it beats the batter.
   if (outs < 2 && bases[0] >= 0) {
     const double runner = kRead + run_time(sprint(bases[0]), kBaseLine - kLead[0]);
-    const double at_second = p.ready_time + throw_time(f, *aero, environment, p.fielded_at, 2);
+    const double at_second = at_base(2, p.ready_time);
     if (at_second < runner) {
       // The pivot at second: the second baseman when the shortstop or third baseman fields
       // it, the shortstop otherwise (a 6-4-3, a 5-4-3; a 4-6-3, a 3-6-3, a 1-6-3).
-      const int pivot_at = p.fielder == 4 || p.fielder == 5 ? 3 : 4;
+      const int pivot_at = covering_fielder(2, p.fielder);
       const FielderAbility& pivot = fielding.defense.ability[static_cast<std::size_t>(pivot_at)];
       const double at_first = at_second + kPivotExtra + throw_time(pivot, *aero, environment, base_position(2), 1);
       const bool double_play = at_first < p.batter_to_first && safe(p.batter_to_first - at_first);

@@ -21,6 +21,9 @@ struct HalfInning {
   Environment environment;
   Bases bases{-1, -1, -1};
   int outs = 0;
+  /// Runs that would win the game now (a walk-off), 0 when none would: once they score no
+  /// one is put out.
+  int runs_to_win = 0;
 
   /// The runners' part of a ball in play (the batter's is `pa`'s result). Runs scored push
   /// the runner to `scored`; `outs_made` counts the batter's out and the runners'; the

@@ -24,7 +24,7 @@ std::string miss_call(const SwingResult& r, double timing_ms) {
   const double under = r.crossing_undercut, miss = std::abs(under) - kReach;
   if (r.through)
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", when, std::abs(timing_ms),
-                  timing_ms >= 0 ? "not yet round" : "already through the zone");
+                  timing_ms >= 0 ? "not around yet" : "already through the zone");
   else if (r.past_end)
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat", when, std::abs(timing_ms));
   else if (miss > 0.0 && miss < 0.0095)  // under a centimetre it reads in millimetres, never "0 cm"
@@ -130,6 +130,7 @@ void BattingCage::advance(double t) {
     const bool strike = StrikeZone::contains(pitch_.plate, r);
     call_text_ = strike ? "Called strike" : "Ball";
     stage_ = Stage::Called;
+    taken_at_ = t;
     if (live_)
       count_pitch(hits_batter(pitch_.plate, lefty_, r) ? PitchResult::HitByPitch
                   : strike                              ? PitchResult::CalledStrike
@@ -170,7 +171,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms) {
                                                                            : last_.result.play.description;
     std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %.0f ft", words.c_str(),
                   mps_to_mph(last_.result.shot.launch.ball_speed), rad_to_deg(last_.result.shot.launch.vertical_angle),
-                  m_to_ft(last_.result.shot.trajectory.summary.carry_m));
+                  m_to_ft(played_.summary.carry_m));  // to the glove on a catch, as the field's label
     call_text_ = text;
     batted_at_ = t;
     stage_ = Stage::Batted;
@@ -219,6 +220,10 @@ void BattingCage::apply(const Intent& in) {
       break;
     case IntentKind::Pitch:
     case IntentKind::Swing:
+      if (in.kind == IntentKind::Swing && stage_ == Stage::Called && t - taken_at_ < kLateSwing) {
+        // A swing pressed just after the pitch went by: too late, and not a call for the next.
+        break;
+      }
       if (stage_ != Stage::Pitching) {
         // Space between pitches calls for the next one, as P does.
         next_pitch(t);

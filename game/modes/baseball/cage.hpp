@@ -32,6 +32,9 @@ class BattingCage {
   static constexpr double kZoneLow = StrikeZone::kLow, kZoneHigh = StrikeZone::kHigh, kPlateHalf = StrikeZone::kHalfWidth;
   /// After the pitch crosses the plate it is taken (called) once this much pitch time more has passed.
   static constexpr double kTakenAfter = 0.15;  // s
+  /// s after a pitch goes by that Space is still his swing, too late, not a call for the next
+  /// pitch (a press a beat late would otherwise throw one he is not ready for; P still calls).
+  static constexpr double kLateSwing = 0.5;
   /// The pitcher's delivery before the release, in pitch time (figures.hpp kWindupTime): a
   /// pitch called at mode time t leaves his hand at t + kWindupTime / kPitchTimeScale.
 
@@ -92,6 +95,7 @@ class BattingCage {
   PitchCall call_;
   PitchFlight pitch_;
   double released_at_ = 0.0, batted_at_ = 0.0, swung_at_ = -1e9;
+  double taken_at_ = -1e9;  ///< when the last pitch went by untouched
   double bat_height_ = 0.76;
   bool power_ = true, lefty_ = false;
   SwingRecord last_;

@@ -66,6 +66,13 @@ constexpr double kGatherUnder = 0.35;  // s
 // infielder's ~2.5 %) and the first baseman's catch of the throw (~0.5 %) (ESTIMATES from
 // those percentages).
 constexpr double kDropRate = 0.005, kBootRate = 0.03;
+// A ball in the air that a fielder would catch this surely is his to call for, and the order
+// of who takes it when several could: CF; RF and LF; SS, 2B; 3B, 1B; C; P (kPositionNames).
+constexpr double kRoutineCatch = 0.9;
+// m from home to the infield's edge: the grass line's 95 ft arc about the pitcher's plate
+// (60.5 ft out) reaches 155.5 ft in straightaway centre (Official Baseball Rules, diagram 1).
+constexpr double kInfieldEdge = 47.4;
+constexpr std::array<int, 9> kCatchPriority{7, 8, 6, 4, 3, 5, 2, 1, 0};
 
 Vec3 at(double depth_ft, double angle_deg) {
   const double d = depth_ft * 0.3048, a = deg_to_rad(angle_deg);
@@ -117,7 +124,10 @@ std::string describe(const FieldingPlay& f, const Vec3& toward) {
     case BattedOutcome::HomeRun: return std::string("Home run to ") + field_part(toward);
     case BattedOutcome::Foul: return "Foul";
     case BattedOutcome::Error: return "Reached on an error by " + who;
-    case BattedOutcome::Single: return std::string("Single to ") + (outfield ? who : who + " (infield hit)");
+    case BattedOutcome::Single:
+      // A ball an infielder runs down past the infield is a single to the outfield there.
+      if (!outfield && std::hypot(toward.x(), toward.z()) > kInfieldEdge) return std::string("Single to ") + field_part(toward);
+      return std::string("Single to ") + (outfield ? who : who + " (infield hit)");
     case BattedOutcome::Double: return "Double to " + std::string(field_part(toward));
     case BattedOutcome::Triple: return "Triple to " + std::string(field_part(toward));
     case BattedOutcome::Out:
@@ -240,6 +250,15 @@ double catch_probability(double spare) {
   return 0.5 * std::erfc(-(spare - kCatchOffset) / (kCatchSpread * std::sqrt(2.0)));
 }
 
+int covering_fielder(int base, int fielder) {
+  switch (base) {
+    case 4: return 1;
+    case 3: return fielder == 5 ? 4 : 5;
+    case 2: return fielder == 4 || fielder == 5 || fielder == 6 ? 3 : 4;
+    default: return 2;
+  }
+}
+
 double throw_time(const FielderAbility& f, const AeroModel& aero, const Environment& env, const Vec3& from, int base) {
   return transfer_and_throw(Thrower(aero, env, f.arm, kTransfer), from, base);
 }
@@ -282,6 +301,10 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
     f.accel = std::min(f.accel, kAccel);
     f.reach = std::min(f.reach, kReach);
   }
+  std::array<double, 9> own_spare;
+  own_spare.fill(-std::numeric_limits<double>::infinity());
+  std::array<Vec3, 9> own_at;
+  std::array<double, 9> own_t{};
   for (std::size_t i = 0; i < 9; ++i) {
     for (const TrajectorySample& s : t.samples) {
       if (s.t > hang) break;
@@ -290,13 +313,33 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
       if (play.foul && !in_foul_ground(s.position)) continue;
       const double run = fielder_run_time(in_air[i], horizontal(play.start[i], s.position) / kRouteEfficiency);
       const double spare = s.t - run - kGatherUnder;
-      if (spare > best_spare) {
-        best_spare = spare;
-        best = static_cast<int>(i);
-        best_at = s.position;
-        best_t = s.t;
+      if (spare > own_spare[i]) {
+        own_spare[i] = spare;
+        own_at[i] = s.position;
+        own_t[i] = s.t;
       }
     }
+    if (own_spare[i] > best_spare) {
+      best_spare = own_spare[i];
+      best = static_cast<int>(i);
+    }
+  }
+  // The catch is called for (every club's priority rule): among those with a routine catch,
+  // the centre fielder over the corner outfielders, any outfielder over an infielder, the
+  // middle infielders over the corners, anyone over the catcher and the pitcher.
+  if (best >= 0 && catch_probability(best_spare) >= kRoutineCatch) {
+    for (int who : kCatchPriority) {
+      const std::size_t i = static_cast<std::size_t>(who);
+      if (catch_probability(own_spare[i]) >= kRoutineCatch) {
+        best = who;
+        best_spare = own_spare[i];
+        break;
+      }
+    }
+  }
+  if (best >= 0) {
+    best_at = own_at[static_cast<std::size_t>(best)];
+    best_t = own_t[static_cast<std::size_t>(best)];
   }
   if (best >= 0) {
     play.catch_probability = catch_probability(best_spare);
@@ -428,9 +471,6 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   }
   play.outcome = reached == 1 ? BattedOutcome::Single : reached == 2 ? BattedOutcome::Double : BattedOutcome::Triple;
   play.description = describe(play, first_p);
-  if (play.batter_out_at > 0)
-    play.description += std::string(", out stretching at ") + (play.batter_out_at == 2 ? "2nd" : "3rd") + " (" +
-                        kPositionNames[first_f] + " to " + (play.batter_out_at == 2 ? (first_f >= 7 ? "SS" : "2B") : "3B") + ")";
   return play;
 }
 

@@ -77,8 +77,8 @@ struct FieldingPlay {
   /// to settle, later when he must first stop his run or get up from a dive (ground_pickup).
   double ready_time = 0.0;
   double batter_to_first = 4.47; ///< s, his home-to-first time
-  /// The base (2 or 3) where the batter was thrown out stretching his hit, 0 when he was not:
-  /// the hit is his (`outcome`), and the out.
+  /// The base (2 or 3) where the throw gets the batter stretching his hit, 0 when it does not:
+  /// the hit is his (`outcome`), and the out (the game's base running records it).
   int batter_out_at = 0;
   std::array<Vec3, 9> start{}, goal{};  ///< each fielder's spot and where he runs (drawing)
   std::string description;       ///< "Fly out to CF", "Double to RF", ...
@@ -95,6 +95,13 @@ bool is_fair_ball(const ShotResult& shot);
 /// the run, its bounce and the tag sweep add about as much again). A runner sent on the
 /// estimate is out when the throw as it comes beats him.
 inline constexpr double kThrowSpread = 0.2;
+
+/// Who takes a throw at `base` (1..3, 4 = home) on a ball `fielder` played (kPositionNames'
+/// index): the catcher at home; at third the third baseman, the shortstop when the third
+/// baseman fielded it; at second the second baseman on a ball to the left side (SS, 3B, LF)
+/// and the shortstop otherwise; at first the first baseman. The fielder himself when he has
+/// the ball at the base he would cover (an unassisted play).
+int covering_fielder(int base, int fielder);
 
 /// Seconds a runner loses rounding a base (ESTIMATE), for the batter and the runners alike.
 inline constexpr double kBaseRoundingTime = 0.3;

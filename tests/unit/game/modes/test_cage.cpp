@@ -148,7 +148,7 @@ TEST_CASE("a miss is called in a hitter's words, never '0 cm'", "[modes][basebal
   CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, past the end of the bat");
   r.past_end = false;
   r.through = true;
-  CHECK(miss_call(r, 48.0) == "Swinging strike: late by 48 ms, the bat not yet round");
+  CHECK(miss_call(r, 48.0) == "Swinging strike: late by 48 ms, the bat not around yet");
 }
 
 TEST_CASE("a swing pressed during the windup is refused in words; strike three swinging keeps its miss", "[modes][baseball]") {
@@ -181,4 +181,17 @@ TEST_CASE("a swing pressed during the windup is refused in words; strike three s
   }
   REQUIRE(cage.at_bats().strikeouts == 1);
   CHECK_THAT(cage.call_text(), Catch::Matchers::StartsWith("Strikeout swinging: early by 300 ms"));
+}
+
+TEST_CASE("Space pressed a beat after a pitch went by is a late swing, not a call for the next pitch", "[modes][baseball]") {
+  BattingCage cage(test::assets(), 3);
+  cage.update({at(IntentKind::Pitch, 0.5)}, 0.5);
+  const double by = 0.5 + (kWindupTime + cage.pitch().flight_time + BattingCage::kTakenAfter) / BattingCage::kPitchTimeScale;
+  // The frame the pitch goes by; the press comes a fifth of a second later.
+  cage.update({at(IntentKind::Swing, by + 0.2)}, by + 0.21);
+  CHECK(cage.stage() == BattingCage::Stage::Called);
+  CHECK(cage.swings().empty());
+  // Once he has had time to see the call, Space asks for the next pitch again.
+  cage.update({at(IntentKind::Swing, by + 0.2 + BattingCage::kLateSwing)}, by + 0.3 + BattingCage::kLateSwing);
+  CHECK(cage.stage() == BattingCage::Stage::Pitching);
 }

@@ -47,19 +47,20 @@ double bench_derby_ms(const Assets& assets, int derbies) {
   return swings > 0 ? ms / std::max(derbies, 1) : 0.0;
 }
 
-double bench_game_ms(const Assets& assets, int games) {
+GameBench bench_game(const Assets& assets, int games) {
   GameOptions o;  // nine innings, pro lineups
   o.innings = 1;
   play_game(assets, o);  // loads the ballpark and the pitch types
   o.innings = 9;
   const auto t0 = Clock::now();
-  std::size_t plate_appearances = 0;
+  std::size_t pitches = 0;
   for (int i = 0; i < std::max(games, 1); ++i) {
     o.seed = static_cast<std::uint64_t>(i + 1);
-    plate_appearances += play_game(assets, o).plate_appearances.size();
+    for (const PlateAppearance& pa : play_game(assets, o).plate_appearances) pitches += pa.pitches.size();
   }
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-  return plate_appearances > 0 ? ms / std::max(games, 1) : 0.0;
+  if (pitches == 0) return {};
+  return {ms / std::max(games, 1), 1000.0 * ms / static_cast<double>(pitches)};
 }
 
 }  // namespace sweetspot::bench

@@ -12,7 +12,12 @@ namespace sweetspot::bench {
 double bench_bot_round_ms(const Assets& assets, int rounds);
 /// ms per home-run derby (10 outs) of the pro bot batter (seed 2), the mean over `derbies`.
 double bench_derby_ms(const Assets& assets, int derbies);
-/// ms per nine-inning bot game (pro lineups against the league's pitcher), seeds 1..games.
-double bench_game_ms(const Assets& assets, int games);
+/// Nine-inning bot games (pro lineups against the league's pitcher), seeds 1..games: ms per
+/// game, and µs per pitch, which stays comparable when a change to the game's rules or
+/// players makes the same seeds play longer or shorter games.
+struct GameBench {
+  double ms_per_game = 0.0, us_per_pitch = 0.0;
+};
+GameBench bench_game(const Assets& assets, int games);
 
 }  // namespace sweetspot::bench

@@ -79,7 +79,9 @@ RunFn setup_bench(CLI::App& sub) {
     // Game modes: what a player waits for while the bots play.
     rows.push_back({"bot_round_ms", bench::bench_bot_round_ms(assets, opts->quick ? 1 : 5), "ms per bot round of the links (tour bot)"});
     rows.push_back({"derby_ms", bench::bench_derby_ms(assets, opts->quick ? 1 : 5), "ms per home-run derby (pro bot, 10 outs)"});
-    rows.push_back({"game_ms", bench::bench_game_ms(assets, opts->quick ? 1 : 3), "ms per nine-inning bot game (pro lineups, the league's pitcher)"});
+    const bench::GameBench game = bench::bench_game(assets, opts->quick ? 1 : 3);
+    rows.push_back({"game_ms", game.ms_per_game, "ms per nine-inning bot game (pro lineups, the league's pitcher)"});
+    rows.push_back({"game_us_per_pitch", game.us_per_pitch, "  us per pitch of those games (comparable across rule changes)"});
 
     const int axis = opts->quick ? 6 : 60;
     const SweepThroughput s1 = measure_sweep(assets, 1, axis);

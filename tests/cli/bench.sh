@@ -13,9 +13,9 @@ v = j["impact_solves_per_s"]
 assert isinstance(v, (int, float)) and v > 1e5, f"impact_solves_per_s = {v}"
 for k in ("golf_shots_per_s", "baseball_shots_per_s", "baseline_golf_shots_per_s", "speedup_vs_baseline",
           "carry_error_m", "baseline_carry_error_m", "frame_ms_1280x720", "golf_us_per_shot_flat",
-          "golf_us_per_shot_tight", "terrain_cost_ratio", "tolerance_speedup", "bot_round_ms", "derby_ms", "game_ms"):
+          "golf_us_per_shot_tight", "terrain_cost_ratio", "tolerance_speedup", "bot_round_ms", "derby_ms", "game_ms", "game_us_per_pitch"):
     assert k in j, f"missing key {k}"
-for k in ("golf_us_per_shot", "golf_us_per_shot_flat", "golf_us_per_shot_tight", "bot_round_ms", "derby_ms", "game_ms"):
+for k in ("golf_us_per_shot", "golf_us_per_shot_flat", "golf_us_per_shot_tight", "bot_round_ms", "derby_ms", "game_ms", "game_us_per_pitch"):
     assert j[k] > 0, f"{k} = {j[k]}"
 # Accuracy at the default tolerances is a contract: carry within 4 mm of the reference.
 assert j["carry_error_m"] < 0.004, j["carry_error_m"]

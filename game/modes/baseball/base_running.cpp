@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace sweetspot {
 namespace {
@@ -46,13 +47,15 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   const FielderAbility& f = fielding.defense.ability[fielder];
   // The seconds by which the runner from `from`, starting `start` s after contact `lead` m off
   // his base, beats the fielder's throw to `to` (negative: the throw is there first).
+  std::optional<Thrower> thrower;  // the fielder's arm, worked out at his first throw
   const auto apart = [](const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); };
   // When the ball can be at base `to`: thrown there once the man covering it has run there
   // from where he stood when it was hit, or carried there by the fielder himself.
   const auto at_base = [&](int to, double ready) {
     const Vec3 base = base_position(to);
     const std::size_t c = static_cast<std::size_t>(covering_fielder(to, p.fielder));
-    const double thrown = std::max(ready + throw_time(f, *aero, environment, p.fielded_at, to),
+    if (!thrower) thrower.emplace(fielder_thrower(f, *aero, environment));
+    const double thrown = std::max(ready + throw_time(*thrower, p.fielded_at, to),
                                    fielder_run_time(fielding.defense.ability[c], apart(p.start[c], base)));
     const double carried = ready + fielder_run_time(f, apart(p.fielded_at, base)) - f.reaction;
     return std::min(thrown, carried);

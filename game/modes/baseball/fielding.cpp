@@ -259,9 +259,15 @@ int covering_fielder(int base, int fielder) {
   }
 }
 
-double throw_time(const FielderAbility& f, const AeroModel& aero, const Environment& env, const Vec3& from, int base) {
-  return transfer_and_throw(Thrower(aero, env, f.arm, kTransfer), from, base);
+Thrower fielder_thrower(const FielderAbility& f, const AeroModel& aero, const Environment& env) {
+  return Thrower(aero, env, f.arm, kTransfer);
 }
+
+double throw_time(const FielderAbility& f, const AeroModel& aero, const Environment& env, const Vec3& from, int base) {
+  return transfer_and_throw(fielder_thrower(f, aero, env), from, base);
+}
+
+double throw_time(const Thrower& thrower, const Vec3& from, int base) { return transfer_and_throw(thrower, from, base); }
 
 FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Environment& env, const Defense& defense,
                         bool batter_left, double batter_sprint, Rng* rng) {

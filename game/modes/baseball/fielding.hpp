@@ -10,6 +10,7 @@
 #include <array>
 #include <string>
 
+#include "game/modes/baseball/throwing.hpp"
 #include "game/rules/run_shot.hpp"
 #include "game/util/rng.hpp"
 #include "physics/aero.hpp"
@@ -143,5 +144,9 @@ ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play);
 
 /// The time a throw by `f` from `from` to base `base` takes, with the fielder's transfer.
 double throw_time(const FielderAbility& f, const AeroModel& aero, const Environment& env, const Vec3& from, int base);
+/// A fielder's arm (his throws, relays with his transfer) worked out once, for several throws.
+Thrower fielder_thrower(const FielderAbility& f, const AeroModel& aero, const Environment& env);
+/// throw_time() with the fielder's arm from fielder_thrower().
+double throw_time(const Thrower& thrower, const Vec3& from, int base);
 
 }  // namespace sweetspot

@@ -112,21 +112,24 @@ float draw_stats(const BattingCage& c, int w, int h) {
     la += rad_to_deg(s.result.shot.launch.vertical_angle);
     hard += s.result.hard_hit;
     hr += s.result.outcome == BattedOutcome::HomeRun;
-    longest = std::max(longest, s.result.shot.trajectory.summary.carry_m);
+    // As far as the call said: to the glove on a catch (as_played), where it came down otherwise.
+    longest = std::max(longest, as_played(s.result.shot.trajectory, s.result.play).summary.carry_m);
   }
   ImGui::Text("Swings %d, contact %d, fair %d, home runs %d", n, contact, fair, hr);
   if (n > 0) {
-    // Statcast's bat tracking: the last swing, and the session's squared-up and blast counts.
-    const BatTracking& t = c.swings().back().result.tracking;
+    // Statcast's bat tracking: the last swing told, and the told swings' squared-up and blast
+    // counts (the same swings as the line above).
+    const SwingRecord& last = c.swings()[c.swings_told() - 1];
+    const BatTracking& t = last.result.tracking;
     int squared = 0, blasts = 0;
-    for (const SwingRecord& s : c.swings()) {
-      squared += s.result.tracking.is_squared_up;
-      blasts += s.result.tracking.blast;
+    for (std::size_t i = 0; i < c.swings_told(); ++i) {
+      squared += c.swings()[i].result.tracking.is_squared_up;
+      blasts += c.swings()[i].result.tracking.blast;
     }
     // The attack angle and direction are the bat's where it meets the ball; a miss meets it
     // nowhere (an early bat has turned past 90 deg of pull by the time the ball arrives), so a
     // miss shows what every swing has: its speed and length.
-    const bool met = c.swings().back().result.contact;
+    const bool met = last.result.contact;
     if (met)
       ImGui::Text("Bat %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", mps_to_mph(t.bat_speed_mps),
                   t.attack_angle_deg, t.attack_direction_deg >= 0.0 ? "oppo" : "pull", std::abs(t.attack_direction_deg),
@@ -152,7 +155,9 @@ float draw_stats(const BattingCage& c, int w, int h) {
   const float size = 220.0f, y0 = static_cast<float>(h) - size - 36.0f;
   const float x0 = c.left_handed() ? 12.0f : static_cast<float>(w) - size - 12.0f;
   ImDrawList* dl = ImGui::GetForegroundDrawList();
-  dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + size, y0 + size), IM_COL32(40, 90, 45, 220), 6.0f);
+  // Opaque and framed: the field's own foul lines behind it must not read as the chart's.
+  dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + size, y0 + size), IM_COL32(40, 90, 45, 255), 6.0f);
+  dl->AddRect(ImVec2(x0, y0), ImVec2(x0 + size, y0 + size), IM_COL32(15, 30, 15, 255), 6.0f, 0, 2.0f);
   const float scale = (size / 2.0f - 6.0f) / 106.0f;  // px per m: 106 m across each side, 150 m down a line
   const ImVec2 home(x0 + size / 2, y0 + size - 8.0f);
   const auto px = [&](const Vec3& p) { return ImVec2(home.x + static_cast<float>(p.z()) * scale, home.y - static_cast<float>(p.x()) * scale); };

@@ -230,5 +230,23 @@ done
 sed '0,/^tee = \["0m", "0m"\] .*/s//tee = ["0m", "0m"]\npin = ["100m", "0m"]/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$plot_dir/pond.toml"
 set +e; msg=$("$bin" round "$plot_dir/pond.toml" 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q "pond.toml:14: pin .* lies on water (allowed: green)" <<<"$msg" || fail "a pin in the pond: exit $rc, $msg"
+# A ball lodged in a tree's branches is unplayable (Rule 19.2c): one penalty stroke, and the
+# next stroke is played from the ground below it. Only strokes with the putter count as putts.
+"$bin" round national --format match --bot scratch --bot amateur --handicap 0 --handicap 14 --seed 13 --json | python3 -c '
+import json, sys
+j = json.load(sys.stdin)
+lodged = 0
+for p in j["players"]:
+    for h in p["holes"]:
+        shots = h["shots"]
+        assert h["putts"] == sum(1 for s in shots if s["lie"] == "green" and s["club"] == "putter"), h
+        assert h["strokes"] == len(shots) + h["penalties"], h
+        for a, b in zip(shots, shots[1:]):
+            if a.get("unplayable"):
+                lodged += 1
+                assert h["penalties"] >= 1, h
+                assert abs(b["start_m"][0] - a["rest_m"][0]) < 0.01 and abs(b["start_m"][2] - a["rest_m"][2]) < 0.01, (a, b)
+                assert b["start_m"][1] < a["rest_m"][1] - 5.0, (a, b)  # from the ground, not the branches
+assert lodged >= 1, "seed 13 lodges a 3-wood in a tree on the 5th"' || fail "a ball lodged in a tree"
 rm -rf "$plot_dir"
 echo "round: ok"

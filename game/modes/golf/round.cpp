@@ -49,10 +49,15 @@ std::vector<GolfRound::LineStretch> GolfRound::ground_to_pin(double step) const 
   return out;
 }
 
-bool GolfRound::first_touch_in_a_tree(const FlightSummary& f) const {
-  constexpr double kAboveGround = 0.5;  // m, more than any tee, ball or turf contact
-  const std::optional<SurfaceContact> under = ground_at(f.landing_position.x(), f.landing_position.z());
-  return under && f.landing_position.y() - under->point.y() > kAboveGround;
+namespace {
+constexpr double kAboveGround = 0.5;  // m, more than any tee, ball or turf contact
+}  // namespace
+
+bool GolfRound::first_touch_in_a_tree(const FlightSummary& f) const { return lodged_off_the_ground(f.landing_position); }
+
+bool GolfRound::lodged_off_the_ground(const Vec3& p) const {
+  const std::optional<SurfaceContact> under = ground_at(p.x(), p.z());
+  return under && p.y() - under->point.y() > kAboveGround;
 }
 
 std::string GolfRound::surface_at(const Vec3& p) const {
@@ -141,7 +146,7 @@ const StrokeRecord& GolfRound::concede_stroke() {
   rec.end = StrokeEnd::Holed;
   rec.conceded = true;
   ++h.strokes;
-  if (rec.lie == "green") ++h.putts;
+  if (rec.lie == "green" && rec.club == "putter") ++h.putts;
   h.holed = true;
   h.shots.push_back(rec);
   finish_hole();
@@ -244,7 +249,7 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
   rec.carry_m = r.trajectory.summary.carry_m;
   rec.side_m = side_of_aim(r, r.trajectory.summary.landing_position);
   ++h.strokes;
-  if (rec.lie == "green") ++h.putts;
+  if (rec.lie == "green" && club == "putter") ++h.putts;
   switch (r.end) {
     case ShotEnd::Holed:
       rec.end = StrokeEnd::Holed;
@@ -265,6 +270,13 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
       rec.end = StrokeEnd::Rest;
       ball_ = Vec3(rec.rest.x(), rec.rest.y() - resolved.ball.radius, rec.rest.z());
       teed_ = false;
+      if (lodged_off_the_ground(rec.rest)) {
+        // No one plays a ball out of a tree's branches: unplayable (Rule 19.2c), one stroke,
+        // dropped at the spot on the ground directly below it.
+        rec.unplayable = true;
+        rec.penalty = 1;
+        if (const std::optional<SurfaceContact> below = ground_at(rec.rest.x(), rec.rest.z())) ball_ = below->point;
+      }
       if (surface_at(ball_) == "path") {
         const Vec3 moved = path_relief(ball_);
         rec.relief = (moved - ball_).norm() > 0.0;  // none where no ground lies beside the path

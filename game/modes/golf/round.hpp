@@ -37,12 +37,15 @@ struct StrokeRecord {
   bool conceded = false;
   /// It came to rest on a cart path and was moved off it without penalty (Rule 16.1b).
   bool relief = false;
+  /// It lodged in a tree, off the ground: unplayable, one penalty stroke, and played from the
+  /// spot on the ground directly below it (Rule 19.2c, lateral relief's reference point).
+  bool unplayable = false;
 };
 
 struct HoleCard {
   int number = 0, par = 0;
   int strokes = 0;            ///< shots played + penalty strokes
-  int putts = 0;              ///< shots played from the green
+  int putts = 0;              ///< strokes with the putter from the green (a chip off the green is not a putt)
   int penalties = 0;
   bool holed = false;         ///< false: picked up at 10, or the hole conceded
   bool picked_up = false;     ///< the ball was picked up at the stroke limit
@@ -117,6 +120,8 @@ class GolfRound {
   /// The flight's first touch was well above the ground under it: a tree's crown or trunk
   /// stopped it, not the turf.
   bool first_touch_in_a_tree(const FlightSummary& f) const;
+  /// A point more than half a metre above the ground under it: a ball there is in a tree.
+  bool lodged_off_the_ground(const Vec3& p) const;
   /// The straight line from the ball to the cup cut into equal stretches of at most `step`
   /// m: each stretch's length and the ground under its middle (none off the world's ground).
   /// What a putt along it rolls over.

@@ -44,7 +44,8 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optio
 /// The meter, bottom centre; on a putt the flat-green distances along it.
 void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h, double now);
 /// Ball data at launch, carry once the ball has landed (as a launch monitor shows them).
-void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t);
+/// `hit_tree`: its first touch was a tree, so the carry reads as where it struck it.
+void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree = false);
 void draw_golf_card(const GolfPlay& play, int w, bool final);
 /// The cup and flagstick, never smaller than a few pixels however far.
 void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h);

@@ -289,7 +289,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   dl->AddText(ImVec2(x0, y0 - 26), IM_COL32(255, 255, 255, 255), label);
 }
 
-void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t) {
+void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree) {
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(w) - 250, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(240, 0), ImGuiCond_Always);
   ImGui::Begin("Launch monitor", nullptr, kFixed);
@@ -311,7 +311,7 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
     ImGui::Separator();
     // Short of 20 m in the putt's units, as the landing's label in the picture reads.
     const double carry = r.trajectory.summary.carry_m;
-    ImGui::Text("Carry       %s", carry < 20.0 ? units.putt(carry).c_str() : units.distance(carry).c_str());
+    ImGui::Text(hit_tree ? "Hit a tree  %s" : "Carry       %s", carry < 20.0 ? units.putt(carry).c_str() : units.distance(carry).c_str());
     ImGui::Text("Height      %s", units.putt(r.trajectory.summary.apex_m).c_str());
   }
   ImGui::End();

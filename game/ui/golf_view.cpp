@@ -466,7 +466,7 @@ bool GolfView::draw_replay(const ViewInput& in, Renderer& renderer) {
   renderer.draw(r.scene->build(cam, t, w, h), cam);
   renderer.blit_to(0, w, h);
   draw_banner(("Replay" + (r.whose.empty() ? std::string() : ": " + r.whose) + "   R: stop").c_str(), w, 20.0f);
-  draw_launch_panel(play_->last_shot(), units_, w, std::max(t, 0.0));
+  draw_launch_panel(play_->last_shot(), units_, w, std::max(t, 0.0), play_->last_hit_tree());
   return true;
 }
 
@@ -607,7 +607,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     ImGui::TextUnformatted(saved_note_.c_str());
     ImGui::End();
   }
-  if (flying || settling) draw_launch_panel(play_->last_shot(), units_, w, flying ? t : end);
+  if (flying || settling) draw_launch_panel(play_->last_shot(), units_, w, flying ? t : end, play_->last_hit_tree());
   else draw_wind(*play_, units_, w);
   if (!settling) draw_golf_meter(*play_, units_, w, h, in.now);
   if (calibration_) draw_calibration(w, h, in.now);

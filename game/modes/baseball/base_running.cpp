@@ -45,8 +45,6 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   const auto sprint = [&](int who) { return batting.lineup[static_cast<std::size_t>(who)].skill().sprint_speed; };
   const std::size_t fielder = static_cast<std::size_t>(std::max(p.fielder, 0));
   const FielderAbility& f = fielding.defense.ability[fielder];
-  // The seconds by which the runner from `from`, starting `start` s after contact `lead` m off
-  // his base, beats the fielder's throw to `to` (negative: the throw is there first).
   std::optional<Thrower> thrower;  // the fielder's arm, worked out at his first throw
   const auto apart = [](const Vec3& a, const Vec3& b) { return std::hypot(a.x() - b.x(), a.z() - b.z()); };
   // When the ball can be at base `to`: thrown there once the man covering it has run there
@@ -60,6 +58,8 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
     const double carried = ready + fielder_run_time(f, apart(p.fielded_at, base)) - f.reaction;
     return std::min(thrown, carried);
   };
+  // The seconds by which the runner from `from`, starting `start` s after contact `lead` m off
+  // his base, beats the ball to `to` (negative: the ball is there first).
   const auto spare = [&](int who, int from, int to, double start, double lead, double ready) {
     const double dist = (to - from) * kBaseLine - lead;
     const double runner = start + run_time(sprint(who), dist) + (to - from - 1) * kBaseRoundingTime;

@@ -295,7 +295,9 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   const StrokeRecord rec = bot ? group_.play_drawn(s, &last_) : group_.play(s, &last_);
   last_record_ = rec;
   const GolfRound& mine = round();
-  last_rest_lie_ = mine.finished() || mine.hole_index() != round_hole_ ? "holed" : mine.lie();
+  const bool moved_on = mine.finished() || mine.hole_index() != round_hole_;
+  last_rest_lie_ = moved_on ? "holed" : mine.lie();
+  last_hit_tree_ = !moved_on && mine.first_touch_in_a_tree(last_.trajectory.summary);
   struck_at_ = t;
   meter_.reset();
   stage_ = Stage::Flying;

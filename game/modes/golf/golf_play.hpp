@@ -86,6 +86,9 @@ class GolfPlay {
   /// The last stroke's record (where it started and stopped) and the lie it stopped on.
   const StrokeRecord& last_record() const { return last_record_; }
   const std::string& last_rest_lie() const { return last_rest_lie_; }
+  /// The last stroke's flight first touched a tree, not the ground: its "carry" is where it
+  /// struck the tree.
+  bool last_hit_tree() const { return last_hit_tree_; }
   /// A player's own last stroke on the hole being played: what it did and where it stopped.
   /// The HUD shows it on their turn, when somebody else has played since.
   struct OwnLast {
@@ -182,6 +185,7 @@ class GolfPlay {
   ShotResult last_;
   StrokeRecord last_record_;
   std::string last_rest_lie_;
+  bool last_hit_tree_ = false;
   std::string pending_message_;  ///< the stroke's result, told when the ball stops
   std::vector<std::optional<OwnLast>> own_last_;  ///< per player, set when their ball stops
   std::vector<int> restarts_;                     ///< per hole: restart_hole() this round

@@ -39,6 +39,7 @@ nlohmann::json holes_json(const GolfRound& round) {
       }
       if (s.conceded) shot["conceded"] = true;
       if (s.relief) shot["relief"] = "cart_path";
+      if (s.wrong_green) shot["relief"] = "wrong_green";
       if (s.unplayable) shot["unplayable"] = true;
       shots.push_back(shot);
     }

@@ -307,6 +307,7 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   const char* result = end_words(rec.end);
   const std::string rest = rec.unplayable ? std::string(": lodged in a tree, unplayable, one stroke (Rule 19.2)")
                           : rec.relief       ? std::string(": on the cart path, free relief (Rule 16.1)")
+                          : rec.wrong_green  ? std::string(": on another hole's green, free relief (Rule 13.1f)")
                           : rec.end == StrokeEnd::Rest ? std::string() : std::string(": ") + result;
   if (last_meter_ && s.club == "putter") {
     std::snprintf(msg, sizeof msg, "%s, stroke %d: putt at %.0f %% power%s", who.name.c_str(), stroke_no,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "physics/error.hpp"
 #include "game/rules/run_shot.hpp"
@@ -183,6 +184,39 @@ Vec3 GolfRound::drop_back_on_line(const Vec3& in_water, const Vec3& from) const 
   return from;
 }
 
+bool GolfRound::on_another_green(const Vec3& p) const {
+  const auto green = [&](double x, double z) {
+    const std::optional<SurfaceContact> hit = ground_at(x, z);
+    return hit && hole().world->world->material(hit->material).kind == SurfaceKind::Green;
+  };
+  if (!green(p.x(), p.z())) return false;
+  const Vec3& pin = hole().pin;
+  const double dx = pin.x() - p.x(), dz = pin.z() - p.z(), d = std::hypot(dx, dz);
+  // Green all the way along the straight line to the cup: the same green.
+  bool straight = true;
+  for (double t = 0.5; t < d && straight; t += 0.5) straight = green(p.x() + dx * t / d, p.z() + dz * t / d);
+  if (straight) return false;
+  // Otherwise spread over the green from the ball on a 1 m grid: it is this hole's green if
+  // the spread reaches the cup. A putting green is well under kLargestGreen across.
+  constexpr double kCell = 1.0, kLargestGreen = 120.0;
+  constexpr int kHalf = static_cast<int>(kLargestGreen / kCell);
+  std::vector<std::pair<int, int>> todo{{0, 0}};
+  std::set<std::pair<int, int>> seen{{0, 0}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    const double x = p.x() + i * kCell, z = p.z() + j * kCell;
+    if (std::hypot(pin.x() - x, pin.z() - z) <= 1.5 * kCell) return false;
+    for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      const std::pair<int, int> n{i + di, j + dj};
+      if (std::abs(n.first) > kHalf || std::abs(n.second) > kHalf || seen.count(n)) continue;
+      seen.insert(n);
+      if (green(p.x() + n.first * kCell, p.z() + n.second * kCell)) todo.push_back(n);
+    }
+  }
+  return true;
+}
+
 Vec3 GolfRound::path_relief(const Vec3& on_path) const {
   // Rule 16.1b: free relief from an immovable obstruction in the general area, at the
   // nearest point where the path no longer interferes, no nearer the hole; here the nearest
@@ -280,6 +314,11 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
       if (surface_at(ball_) == "path") {
         const Vec3 moved = path_relief(ball_);
         rec.relief = (moved - ball_).norm() > 0.0;  // none where no ground lies beside the path
+        ball_ = moved;
+      } else if (on_another_green(ball_)) {
+        // Rule 13.1f: a ball on a wrong green must not be played from it; free relief off it.
+        const Vec3 moved = path_relief(ball_);
+        rec.wrong_green = (moved - ball_).norm() > 0.0;
         ball_ = moved;
       }
       break;

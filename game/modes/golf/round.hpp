@@ -37,6 +37,8 @@ struct StrokeRecord {
   bool conceded = false;
   /// It came to rest on a cart path and was moved off it without penalty (Rule 16.1b).
   bool relief = false;
+  /// It came to rest on another hole's green and was moved off it without penalty (Rule 13.1f).
+  bool wrong_green = false;
   /// It lodged in a tree, off the ground: unplayable, one penalty stroke, and played from the
   /// spot on the ground directly below it (Rule 19.2c, lateral relief's reference point).
   bool unplayable = false;
@@ -110,11 +112,14 @@ class GolfRound {
   const std::vector<HoleWind>& winds() const { return winds_; }
   /// The shot without playing it (bots plan with it). Deterministic.
   ShotResult simulate(const StrokeInput& in, bool record_samples = false) const;
-  /// Where a ball at rest on a cart path on this hole is moved to, free (Rule 16.1b): the
-  /// nearest spot of playable ground off the path (not water, out of bounds or a green), no
-  /// nearer the hole; `on_path` itself when none lies within kMaxRelief.
+  /// Where a ball at rest on a cart path (Rule 16.1b) or on another hole's green (Rule 13.1f)
+  /// is moved to, free: the nearest spot of playable ground (not a path, water, out of bounds
+  /// or a green), no nearer the hole; `on_path` itself when none lies within kMaxRelief.
   Vec3 path_relief(const Vec3& on_path) const;
-  static constexpr double kMaxRelief = 15.0;  ///< m searched for ground off the path
+  static constexpr double kMaxRelief = 15.0;  ///< m searched for ground off the path or green
+  /// `p` lies on a green that is not this hole's: no stretch of green joins it to the cup's
+  /// (a double green shared with another hole is this hole's too).
+  bool on_another_green(const Vec3& p) const;
   /// The ground straight below (x, z) on this hole's world; none off its ground.
   std::optional<SurfaceContact> ground_at(double x, double z) const;
   /// The flight's first touch was well above the ground under it: a tree's crown or trunk

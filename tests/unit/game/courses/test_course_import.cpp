@@ -639,6 +639,34 @@ TEST_CASE("course import: a cart path is a paved strip of its width; a ball at r
   CHECK(w.world->material(hit.material).name == "rough");
 }
 
+TEST_CASE("course import: a ball on another hole's green is moved off it free (Rule 13.1f); on its own green it is putted",
+          "[course][import]") {
+  Scratch s("wrong_green");
+  import(kData / "nine_holes.osm", s.dir / "nine");
+  const Course c = load_course(test::assets(), (s.dir / "nine").string());
+  REQUIRE(c.holes.size() >= 2);
+  const GolfRound round(test::assets(), c, golfer_skill("tour"));  // on the first hole
+  const WorldAsset& w = *c.holes[0].world;
+  SurfaceContact hit;
+  const auto on_ground = [&](const Vec3& p) {
+    REQUIRE(ground_under(*w.world, p.x(), p.z(), 100.0, 200.0, &hit));
+    return Vec3(p.x(), hit.point.y(), p.z());
+  };
+  // Beside the first hole's cup: its own green.
+  const Vec3 own = on_ground(c.holes[0].pin + Vec3(1.0, 0.0, 0.0));
+  REQUIRE(round.surface_at(own) == "green");
+  CHECK_FALSE(round.on_another_green(own));
+  // At the second hole's cup: a green no stretch of green joins to the first hole's.
+  const Vec3 other = on_ground(c.holes[1].pin);
+  REQUIRE(round.surface_at(other) == "green");
+  CHECK(round.on_another_green(other));
+  const Vec3 relief = round.path_relief(other);
+  CHECK(round.surface_at(relief) != "green");
+  CHECK(std::hypot(relief.x() - other.x(), relief.z() - other.z()) > 0.0);
+  // Off a green there is nothing to take relief from.
+  CHECK_FALSE(round.on_another_green(relief));
+}
+
 TEST_CASE("course import: a tree row or wood drawn across the country costs no more than the course", "[course][import][hostile]") {
   Scratch s("far_trees");
   // A row 300 km long through the course, and a wood that is a thin sliver as long, beside it.

@@ -112,8 +112,8 @@ float draw_stats(const BattingCage& c, int w, int h) {
     la += rad_to_deg(s.result.shot.launch.vertical_angle);
     hard += s.result.hard_hit;
     hr += s.result.outcome == BattedOutcome::HomeRun;
-    // As far as the call said: to the glove on a catch (as_played), where it came down otherwise.
-    longest = std::max(longest, as_played(s.result.shot.trajectory, s.result.play).summary.carry_m);
+    // As far as the call said: to the glove on a catch, where it came down otherwise.
+    longest = std::max(longest, c.carries_as_played()[i]);
   }
   ImGui::Text("Swings %d, contact %d, fair %d, home runs %d", n, contact, fair, hr);
   if (n > 0) {

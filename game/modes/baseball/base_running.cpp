@@ -77,17 +77,19 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   };
   // The throw as it comes: safe when he beats it.
   const auto safe = [&](double estimate) { return estimate + throws.normal(kThrowSpread) > 0.0; };
+  // The scorer's words for a throw to base `at`: "(RF to C)", "(1B unassisted)".
+  const auto thrown_to = [&](int at) {
+    const int takes = covering_fielder(at, p.fielder);
+    return std::string(" (") + kPositionNames[fielder] +
+           (takes == p.fielder ? std::string(" unassisted)") : std::string(" to ") + kPositionNames[static_cast<std::size_t>(takes)] + ")");
+  };
   // A runner put out: his out, and the scorer's words for it after the batter's.
   std::string runner_out;
   const auto put_out = [&](int from, int at) {
     ++outs;
     ++outs_made;
-    const int takes = covering_fielder(at, p.fielder);
-    const std::string throw_words = std::string(" (") + kPositionNames[fielder] +
-                                    (takes == p.fielder ? std::string(" unassisted)")
-                                                        : std::string(" to ") + kPositionNames[static_cast<std::size_t>(takes)] + ")");
-    runner_out = from == at ? std::string(", double play: runner doubled off ") + base_name(at) + throw_words
-                            : std::string(", runner from ") + base_name(from) + " out at " + base_name(at) + throw_words;
+    runner_out = from == at ? std::string(", double play: runner doubled off ") + base_name(at) + thrown_to(at)
+                            : std::string(", runner from ") + base_name(from) + " out at " + base_name(at) + thrown_to(at);
   };
   Bases next{-1, -1, -1};
   const auto place = [&](int who, int base) {
@@ -127,8 +129,7 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
     if (p.batter_out_at > 0 && outs < 3 && !won()) {
       ++outs;
       ++outs_made;
-      description += std::string(", out stretching at ") + base_name(p.batter_out_at) + " (" + kPositionNames[fielder] + " to " +
-                     kPositionNames[static_cast<std::size_t>(covering_fielder(p.batter_out_at, p.fielder))] + ")";
+      description += std::string(", out stretching at ") + base_name(p.batter_out_at) + thrown_to(p.batter_out_at);
     } else {
       place(batter, hit);
     }
@@ -163,8 +164,10 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
         break;  // one throw
       }
     }
-    description += runner_out;
-    if (outs >= 3 || p.type == BattedBallType::PopUp || !runner_out.empty()) return;
+    if (outs >= 3 || p.type == BattedBallType::PopUp || !runner_out.empty()) {
+      description += runner_out;
+      return;
+    }
     // Runners on third and second tag up and go when the throw cannot beat them (the throw
     // goes to one base: the lead runner's, as the others are sent only behind him).
     if (bases[2] >= 0) {
@@ -229,33 +232,31 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   const bool forced2 = bases[0] >= 0, forced3 = forced2 && bases[1] >= 0;
   Bases nb{-1, -1, -1};
   bool thrown_elsewhere = false;
-  if (bases[2] >= 0) {
-    const int who = bases[2];
-    const double s = forced3 ? 1.0 : spare(who, 3, 4, kRead, kLead[2], p.ready_time);
-    if (forced3 || s > kRunnerExtraBaseMargin) {
-      if (forced3 || safe(s)) {
-        scored.push_back(who);
-      } else {
-        put_out(3, 4);
-        thrown_elsewhere = true;
-      }
+  if (const int who = bases[2]; who >= 0) {
+    const double s = forced3 ? 0.0 : spare(who, 3, 4, kRead, kLead[2], p.ready_time);
+    if (forced3) {
+      scored.push_back(who);
+    } else if (s <= kRunnerExtraBaseMargin) {
+      nb[2] = who;  // he holds
+    } else if (safe(s)) {
+      scored.push_back(who);
     } else {
-      nb[2] = who;
+      put_out(3, 4);
+      thrown_elsewhere = true;
     }
   }
-  if (bases[1] >= 0) {
-    const int who = bases[1];
+  if (const int who = bases[1]; who >= 0) {
     const bool open = nb[2] < 0;
-    const double s = forced3 || !open ? 1.0 : spare(who, 2, 3, kRead, kLead[1], p.ready_time);
-    if (forced2 || (open && s > kRunnerExtraBaseMargin)) {
-      if (forced2 || thrown_elsewhere || safe(s)) {
-        nb[2] = who;
-      } else {
-        put_out(2, 3);
-        thrown_elsewhere = true;
-      }
+    const double s = forced2 || !open ? 0.0 : spare(who, 2, 3, kRead, kLead[1], p.ready_time);
+    if (forced2) {
+      nb[2] = who;
+    } else if (!open || s <= kRunnerExtraBaseMargin) {
+      nb[1] = who;  // he holds
+    } else if (thrown_elsewhere || safe(s)) {
+      nb[2] = who;
     } else {
-      nb[1] = who;
+      put_out(2, 3);
+      thrown_elsewhere = true;
     }
   }
   if (bases[0] >= 0) nb[1] = bases[0];

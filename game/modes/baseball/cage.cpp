@@ -58,6 +58,7 @@ void BattingCage::next_pitch(double t) {
 
 void BattingCage::start_record() {
   swings_.clear();
+  carries_as_played_.clear();
   last_ = SwingRecord{};
   call_text_.clear();
   outcome_text_.clear();
@@ -163,6 +164,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms) {
   played_ = as_played(last_.result.shot.trajectory, last_.result.play);
   last_.call_text = to_string(last_.result.outcome);
   swings_.push_back(last_);
+  carries_as_played_.push_back(played_.summary.carry_m);
   at_bats_before_ = at_bats_;
   told_ = !last_.result.contact;
   char text[160];

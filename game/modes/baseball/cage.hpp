@@ -62,6 +62,9 @@ class BattingCage {
   /// The last batted ball's path as the play went (as_played): a catch ends it in the glove.
   const ShotTrajectory& played() const { return played_; }
   const std::vector<SwingRecord>& swings() const { return swings_; }
+  /// m each swing's ball went as the play went (as_played's carry: to the glove on a catch),
+  /// in swings() order.
+  const std::vector<double>& carries_as_played() const { return carries_as_played_; }
   /// The swings whose outcome the player has been told: all but a batted ball still in the
   /// air (the HUD's session figures would otherwise give away a hit before its call).
   std::size_t swings_told() const { return swings_.size() - (told_ ? 0 : 1); }
@@ -100,6 +103,7 @@ class BattingCage {
   bool power_ = true, lefty_ = false;
   SwingRecord last_;
   ShotTrajectory played_;
+  std::vector<double> carries_as_played_;
   std::vector<SwingRecord> swings_;
   std::string call_text_;
   /// A batted ball's outcome, shown once its flight is over (until then its launch).

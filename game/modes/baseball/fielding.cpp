@@ -69,10 +69,10 @@ constexpr double kDropRate = 0.005, kBootRate = 0.03;
 // A ball in the air that a fielder would catch this surely is his to call for, and the order
 // of who takes it when several could: CF; RF and LF; SS, 2B; 3B, 1B; C; P (kPositionNames).
 constexpr double kRoutineCatch = 0.9;
+constexpr std::array<int, 9> kCatchPriority{7, 8, 6, 4, 3, 5, 2, 1, 0};
 // m from home to the infield's edge: the grass line's 95 ft arc about the pitcher's plate
 // (60.5 ft out) reaches 155.5 ft in straightaway centre (Official Baseball Rules, diagram 1).
 constexpr double kInfieldEdge = 47.4;
-constexpr std::array<int, 9> kCatchPriority{7, 8, 6, 4, 3, 5, 2, 1, 0};
 
 Vec3 at(double depth_ft, double angle_deg) {
   const double d = depth_ft * 0.3048, a = deg_to_rad(angle_deg);
@@ -297,8 +297,6 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   const bool near_wall = land.y() > 0.3;  // its first touch was the fence
   double best_spare = -std::numeric_limits<double>::infinity();
   int best = -1;
-  Vec3 best_at = land;
-  double best_t = hang;
   // A ball in the air is read and chased as an outfielder does: an infielder's ready hop
   // gains him nothing going back on a fly.
   std::array<FielderAbility, 9> in_air = defense.ability;
@@ -344,10 +342,8 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
     }
   }
   if (best >= 0) {
-    best_at = own_at[static_cast<std::size_t>(best)];
-    best_t = own_t[static_cast<std::size_t>(best)];
-  }
-  if (best >= 0) {
+    const Vec3 best_at = own_at[static_cast<std::size_t>(best)];
+    const double best_t = own_t[static_cast<std::size_t>(best)];
     play.catch_probability = catch_probability(best_spare);
     play.goal[static_cast<std::size_t>(best)] = best_at;
     if (drawn(play.catch_probability)) {

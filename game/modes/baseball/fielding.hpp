@@ -100,8 +100,8 @@ inline constexpr double kThrowSpread = 0.2;
 /// Who takes a throw at `base` (1..3, 4 = home) on a ball `fielder` played (kPositionNames'
 /// index): the catcher at home; at third the third baseman, the shortstop when the third
 /// baseman fielded it; at second the second baseman on a ball to the left side (SS, 3B, LF)
-/// and the shortstop otherwise; at first the first baseman. The fielder himself when he has
-/// the ball at the base he would cover (an unassisted play).
+/// and the shortstop otherwise; at first the first baseman. It can be the fielder himself (the
+/// first baseman at first): an unassisted play.
 int covering_fielder(int base, int fielder);
 
 /// Seconds a runner loses rounding a base (ESTIMATE), for the batter and the runners alike.

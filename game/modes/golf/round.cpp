@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include "physics/error.hpp"
 #include "game/rules/run_shot.hpp"
@@ -200,37 +199,38 @@ bool GolfRound::on_another_green(const Vec3& p) const {
   // the spread reaches the cup. A putting green is well under kLargestGreen across.
   constexpr double kCell = 1.0, kLargestGreen = 120.0;
   constexpr int kHalf = static_cast<int>(kLargestGreen / kCell);
+  constexpr int kSide = 2 * kHalf + 1;
+  std::vector<char> seen(static_cast<std::size_t>(kSide) * kSide, 0);
+  const auto cell = [&](int i, int j) -> char& { return seen[static_cast<std::size_t>((i + kHalf) * kSide + (j + kHalf))]; };
   std::vector<std::pair<int, int>> todo{{0, 0}};
-  std::set<std::pair<int, int>> seen{{0, 0}};
+  cell(0, 0) = 1;
   while (!todo.empty()) {
     const auto [i, j] = todo.back();
     todo.pop_back();
-    const double x = p.x() + i * kCell, z = p.z() + j * kCell;
-    if (std::hypot(pin.x() - x, pin.z() - z) <= 1.5 * kCell) return false;
-    for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-      const std::pair<int, int> n{i + di, j + dj};
-      if (std::abs(n.first) > kHalf || std::abs(n.second) > kHalf || seen.count(n)) continue;
-      seen.insert(n);
-      if (green(p.x() + n.first * kCell, p.z() + n.second * kCell)) todo.push_back(n);
+    if (std::hypot(pin.x() - (p.x() + i * kCell), pin.z() - (p.z() + j * kCell)) <= 1.5 * kCell) return false;
+    for (const auto& [ni, nj] : {std::pair{i + 1, j}, std::pair{i - 1, j}, std::pair{i, j + 1}, std::pair{i, j - 1}}) {
+      if (std::abs(ni) > kHalf || std::abs(nj) > kHalf || cell(ni, nj)) continue;
+      cell(ni, nj) = 1;
+      if (green(p.x() + ni * kCell, p.z() + nj * kCell)) todo.push_back({ni, nj});
     }
   }
   return true;
 }
 
-Vec3 GolfRound::path_relief(const Vec3& on_path) const {
-  // Rule 16.1b: free relief from an immovable obstruction in the general area, at the
-  // nearest point where the path no longer interferes, no nearer the hole; here the nearest
-  // such spot of playable ground (not the path, water, out of bounds or a green), searched on
-  // rings 0.25 m apart (a place within the club-length relief area the Rule allows).
+Vec3 GolfRound::free_relief(const Vec3& spot) const {
+  // Rule 16.1b (an immovable obstruction: the path) and Rule 13.1f (a wrong green): free relief
+  // at the nearest point where the condition no longer interferes, no nearer the hole; here the
+  // nearest such spot of playable ground (not a path, water, out of bounds or a green),
+  // searched on rings 0.25 m apart (a place within the club-length relief area the Rules allow).
   const Vec3& pin = hole().pin;
-  const double from_pin = std::hypot(pin.x() - on_path.x(), pin.z() - on_path.z());
+  const double from_pin = std::hypot(pin.x() - spot.x(), pin.z() - spot.z());
   constexpr int kDirections = 32;
   for (double r = 0.25; r <= kMaxRelief; r += 0.25) {
     double best_pin = HUGE_VAL;
     std::optional<Vec3> best;
     for (int k = 0; k < kDirections; ++k) {
       const double a = 2.0 * kPi * k / kDirections;
-      const double x = on_path.x() + r * std::cos(a), z = on_path.z() + r * std::sin(a);
+      const double x = spot.x() + r * std::cos(a), z = spot.z() + r * std::sin(a);
       const double to_pin = std::hypot(pin.x() - x, pin.z() - z);
       if (to_pin < from_pin) continue;
       const std::optional<SurfaceContact> hit = ground_at(x, z);
@@ -244,7 +244,7 @@ Vec3 GolfRound::path_relief(const Vec3& on_path) const {
     }
     if (best) return *best;
   }
-  return on_path;  // a path with no playable ground beside it: played as it lies
+  return spot;  // no playable ground within reach: played as it lies
 }
 
 void GolfRound::finish_hole() {
@@ -312,12 +312,12 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
         if (const std::optional<SurfaceContact> below = ground_at(rec.rest.x(), rec.rest.z())) ball_ = below->point;
       }
       if (surface_at(ball_) == "path") {
-        const Vec3 moved = path_relief(ball_);
+        const Vec3 moved = free_relief(ball_);
         rec.relief = (moved - ball_).norm() > 0.0;  // none where no ground lies beside the path
         ball_ = moved;
       } else if (on_another_green(ball_)) {
         // Rule 13.1f: a ball on a wrong green must not be played from it; free relief off it.
-        const Vec3 moved = path_relief(ball_);
+        const Vec3 moved = free_relief(ball_);
         rec.wrong_green = (moved - ball_).norm() > 0.0;
         ball_ = moved;
       }

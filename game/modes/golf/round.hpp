@@ -114,8 +114,8 @@ class GolfRound {
   ShotResult simulate(const StrokeInput& in, bool record_samples = false) const;
   /// Where a ball at rest on a cart path (Rule 16.1b) or on another hole's green (Rule 13.1f)
   /// is moved to, free: the nearest spot of playable ground (not a path, water, out of bounds
-  /// or a green), no nearer the hole; `on_path` itself when none lies within kMaxRelief.
-  Vec3 path_relief(const Vec3& on_path) const;
+  /// or a green), no nearer the hole; `spot` itself when none lies within kMaxRelief.
+  Vec3 free_relief(const Vec3& spot) const;
   static constexpr double kMaxRelief = 15.0;  ///< m searched for ground off the path or green
   /// `p` lies on a green that is not this hole's: no stretch of green joins it to the cup's
   /// (a double green shared with another hole is this hole's too).

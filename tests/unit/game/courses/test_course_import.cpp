@@ -628,7 +628,7 @@ TEST_CASE("course import: a cart path is a paved strip of its width; a ball at r
   REQUIRE(ground_under(*w.world, on.x, on.z, 100.0, 200.0, &hit));
   CHECK(w.world->material(hit.material).name == "cart_path");
   const Vec3 spot(on.x, hit.point.y(), on.z);
-  const Vec3 relief = round.path_relief(spot);
+  const Vec3 relief = round.free_relief(spot);
   // The nearest ground off the 3 m strip: 1.5 m to its edge, within the search's 0.25 m rings.
   const double moved = std::hypot(relief.x() - spot.x(), relief.z() - spot.z());
   CHECK(moved > 1.5);
@@ -660,7 +660,7 @@ TEST_CASE("course import: a ball on another hole's green is moved off it free (R
   const Vec3 other = on_ground(c.holes[1].pin);
   REQUIRE(round.surface_at(other) == "green");
   CHECK(round.on_another_green(other));
-  const Vec3 relief = round.path_relief(other);
+  const Vec3 relief = round.free_relief(other);
   CHECK(round.surface_at(relief) != "green");
   CHECK(std::hypot(relief.x() - other.x(), relief.z() - other.z()) > 0.0);
   // Off a green there is nothing to take relief from.

@@ -45,6 +45,8 @@ nlohmann::json holes_json(const GolfRound& round) {
     }
     json hole = {{"number", h.number}, {"par", h.par},       {"strokes", h.strokes},
                  {"putts", h.putts},   {"penalties", h.penalties}, {"holed", h.holed},
+                 {"fairway", h.tee_shot == TeeShot::None ? json(nullptr) : json(to_string(h.tee_shot))},
+                 {"green_in_regulation", h.green_in_regulation},
                  {"shots", shots}};
     if (h.picked_up) hole["picked_up"] = true;
     if (h.conceded) hole["conceded"] = true;
@@ -53,19 +55,36 @@ nlohmann::json holes_json(const GolfRound& round) {
   return holes;
 }
 
+// Fairways hit of the par 4s and 5s teed off, and greens in regulation, over the holes listed.
+struct BallStriking {
+  int fairways_hit = 0, fairways = 0, greens = 0;
+};
+BallStriking ball_striking(const GolfRound& round) {
+  BallStriking b;
+  for (const HoleCard* h : listed_holes(round)) {
+    b.fairways += h->tee_shot != TeeShot::None;
+    b.fairways_hit += h->tee_shot == TeeShot::Fairway;
+    b.greens += h->green_in_regulation;
+  }
+  return b;
+}
+
 }  // namespace
 
 nlohmann::json round_json(const GolfRound& round, const std::string& player, std::uint64_t seed) {
   int total = 0;
   for (const HoleCard* h : listed_holes(round)) total += h->strokes;
+  const BallStriking b = ball_striking(round);
   return {{"course", round.course().name}, {"player", player}, {"seed", seed}, {"holes", holes_json(round)},
-          {"total_strokes", total}, {"total_par", round.total_par()}};
+          {"total_strokes", total}, {"total_par", round.total_par()}, {"fairways_hit", b.fairways_hit},
+          {"fairways", b.fairways}, {"greens_in_regulation", b.greens}};
 }
 
 std::string round_table(const GolfRound& round, const std::string& player) {
   std::string out = round.course().name + " — " + player + "\n";
   char line[200];
-  std::snprintf(line, sizeof line, "%-6s %4s %8s %6s %10s %s\n", "hole", "par", "strokes", "putts", "penalties", "");
+  std::snprintf(line, sizeof line, "%-6s %4s %8s %6s %8s %6s %10s %s\n", "hole", "par", "strokes", "putts", "fairway", "green",
+                "penalties", "");
   out += line;
   int par = 0, strokes = 0, putts = 0, penalties = 0;
   for (const HoleCard& h : round.card()) {
@@ -73,11 +92,17 @@ std::string round_table(const GolfRound& round, const std::string& player) {
     strokes += h.strokes;
     putts += h.putts;
     penalties += h.penalties;
-    std::snprintf(line, sizeof line, "%-6d %4d %8d %6d %10d %s\n", h.number, h.par, h.strokes, h.putts, h.penalties,
-                  h.picked_up ? "(picked up)" : h.conceded ? "(conceded)" : "");
+    // The fairway column: "hit", or the side the tee shot missed on; "-" on a par 3.
+    const char* fairway = h.tee_shot == TeeShot::None ? "-" : h.tee_shot == TeeShot::Fairway ? "hit" : to_string(h.tee_shot);
+    std::snprintf(line, sizeof line, "%-6d %4d %8d %6d %8s %6s %10d %s\n", h.number, h.par, h.strokes, h.putts, fairway,
+                  h.green_in_regulation ? "hit" : "-", h.penalties, h.picked_up ? "(picked up)" : h.conceded ? "(conceded)" : "");
     out += line;
   }
-  std::snprintf(line, sizeof line, "%-6s %4d %8d %6d %10d\n", "total", par, strokes, putts, penalties);
+  const BallStriking b = ball_striking(round);
+  const std::string fairways = std::to_string(b.fairways_hit) + "/" + std::to_string(b.fairways);
+  const std::string greens = std::to_string(b.greens) + "/" + std::to_string(listed_holes(round).size());
+  std::snprintf(line, sizeof line, "%-6s %4d %8d %6d %8s %6s %10d\n", "total", par, strokes, putts, fairways.c_str(), greens.c_str(),
+                penalties);
   out += line;
   out += "to par: " + to_par_text(strokes - par) + "\n";
   return out;
@@ -186,6 +211,7 @@ nlohmann::json group_json(const GolfGroup& g) {
       net += h["net"].get<int>();
       par += h["par"].get<int>();
     }
+    const BallStriking b = ball_striking(r);
     players.push_back({{"player", pl.name},
                        {"skill", pl.human ? std::string("human") : pl.skill},
                        {"handicap", pl.handicap},
@@ -193,7 +219,10 @@ nlohmann::json group_json(const GolfGroup& g) {
                        {"total_strokes", strokes},
                        {"total_putts", putts},
                        {"total_net", net},
-                       {"to_par", strokes - par}});
+                       {"to_par", strokes - par},
+                       {"fairways_hit", b.fairways_hit},
+                       {"fairways", b.fairways},
+                       {"greens_in_regulation", b.greens}});
   }
   json winds = json::array();
   for (std::size_t h = 0; h < g.winds().size(); ++h) {
@@ -217,6 +246,7 @@ nlohmann::json group_json(const GolfGroup& g) {
     j["player"] = g.players()[0].name;
     j["holes"] = players[0]["holes"];
     j["total_strokes"] = players[0]["total_strokes"];
+    for (const char* k : {"fairways_hit", "fairways", "greens_in_regulation"}) j[k] = players[0][k];
   }
   return j;
 }
@@ -275,6 +305,8 @@ std::string group_table(const GolfGroup& g) {
   for (std::size_t h = 0; h < s.holes; ++h) par += g.course().holes[h].par;
   sum_row("strokes", par, [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
   sum_row("putts", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
+  sum_row("fairways", -1, [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
+  sum_row("greens", -1, [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(s.holes); });
   sum_row("to par", -1, [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
   sum_row("net", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
   if (s.format == GolfFormat::Stableford)

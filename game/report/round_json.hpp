@@ -12,7 +12,8 @@
 namespace sweetspot {
 
 nlohmann::json round_json(const GolfRound& round, const std::string& player, std::uint64_t seed);
-/// Hole, par, strokes, putts, penalties, then the totals and the score against par.
+/// Hole, par, strokes, putts, fairway (hit, or the side missed), green in regulation,
+/// penalties, then the totals (fairways and greens as hit/of) and the score against par.
 std::string round_table(const GolfRound& round, const std::string& player);
 /// A score against par as golfers write it: "E", "+3", "-2".
 std::string to_par_text(int diff);

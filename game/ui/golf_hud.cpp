@@ -393,7 +393,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
         else ImGui::Text("%s x%d", g.players()[static_cast<std::size_t>(win)].name.c_str(), s.skins->value[h]);
       }
     }
-    // The sum rows: strokes (with par), putts, to par, net, points.
+    // The sum rows: strokes (with par), putts, fairways hit and greens in regulation, to par,
+    // net, points.
     auto sum_row = [&](const char* label, const char* par_text, auto cell) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
@@ -410,6 +411,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
     const std::string par_text = std::to_string(par);
     sum_row("Strokes", par_text.c_str(), [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
     sum_row("Putts", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
+    sum_row("Fairways", "", [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
+    sum_row("Greens", "", [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(s.holes); });
     sum_row("To par", "", [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
     sum_row("Net", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
     if (s.format == GolfFormat::Stableford)

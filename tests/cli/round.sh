@@ -31,6 +31,47 @@ for h in j["holes"]:
 assert j["total_strokes"] == total
 PY
 
+# Fairways and greens in regulation, derived again from the shots: a par 4's or 5's tee shot
+# at rest on the fairway (or holed); on the green (or holed) with par - 2 strokes or fewer,
+# penalty strokes counted. The totals and the text card's total row agree with the holes.
+for args in "--bot scratch --seed 5" "--bot amateur --seed 2"; do
+  # shellcheck disable=SC2086
+  "$bin" round national $args --json > "$tmp/fir.json"
+  # shellcheck disable=SC2086
+  "$bin" round national $args > "$tmp/fir.txt"
+  python3 - "$tmp/fir.json" "$tmp/fir.txt" <<'PY' || fail "fairways and greens ($args)"
+import json, re, sys
+j = json.load(open(sys.argv[1]))
+checked = 0
+for h in j["holes"]:
+    shots = h["shots"]
+    if h["par"] == 3:
+        assert h["fairway"] is None, h["number"]
+    else:
+        s0 = shots[0]
+        assert h["fairway"] in ("fairway", "left", "right"), h["number"]
+        if s0["end"] == "holed":
+            assert h["fairway"] == "fairway"
+        elif s0["end"] == "rest" and "relief" not in s0 and not s0.get("unplayable"):
+            assert (h["fairway"] == "fairway") == (shots[1]["lie"] == "fairway"), (h["number"], h["fairway"], shots[1]["lie"])
+            checked += 1
+    count, gir = 0, False
+    for k, s in enumerate(shots):
+        count += 1 + (s["end"] in ("water", "out_of_bounds")) + bool(s.get("unplayable"))
+        on = s["end"] == "holed" or (s["end"] == "rest" and k + 1 < len(shots) and shots[k + 1]["lie"] == "green"
+                                      and s.get("relief") != "wrong_green")
+        gir = gir or (on and count <= h["par"] - 2)
+    assert h["green_in_regulation"] == gir, (h["number"], h["green_in_regulation"], gir)
+assert checked >= 8, checked
+assert j["fairways"] == sum(h["par"] > 3 for h in j["holes"])
+assert j["fairways_hit"] == sum(h["fairway"] == "fairway" for h in j["holes"])
+assert j["greens_in_regulation"] == sum(h["green_in_regulation"] for h in j["holes"])
+total = [l.split() for l in open(sys.argv[2]) if l.startswith("total")][0]
+assert total[4] == "%d/%d" % (j["fairways_hit"], j["fairways"]), total
+assert total[5] == "%d/%d" % (j["greens_in_regulation"], len(j["holes"])), total
+PY
+done
+
 # Better golfers score lower, averaged over seeds (DESIGN §9 skills).
 avg() {
   local sum=0

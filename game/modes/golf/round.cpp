@@ -18,6 +18,16 @@ const char* to_string(StrokeEnd e) {
   return "?";
 }
 
+const char* to_string(TeeShot t) {
+  switch (t) {
+    case TeeShot::None: return "";
+    case TeeShot::Fairway: return "fairway";
+    case TeeShot::Left: return "left";
+    case TeeShot::Right: return "right";
+  }
+  return "?";
+}
+
 GolfRound::GolfRound(const Assets& assets, Course course, const GolferSkill& golfer, std::vector<HoleWind> winds)
     : assets_(&assets), course_(std::move(course)), golfer_(golfer), winds_(std::move(winds)) {
   if (course_.holes.empty()) throw InputError("course '" + course_.name + "' has no holes");
@@ -274,6 +284,10 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
   ShotResult r = run_shot(resolved, "hole " + std::to_string(hole().number), {true, shot != nullptr});
   const std::size_t k = card_.size() - 1;
   HoleCard& h = card_[k];
+  const bool tee_shot = h.shots.empty() && h.par >= 4;
+  // The hole's line from the tee: to its first bend, or to the cup on a straight hole.
+  const Vec3 line_to = next_bend().value_or(hole().pin);
+  std::string rest_surface;  // where the ball came to rest, before any relief moved it
   StrokeRecord rec;
   rec.club = club;
   rec.power = power;
@@ -304,6 +318,7 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
       rec.end = StrokeEnd::Rest;
       ball_ = Vec3(rec.rest.x(), rec.rest.y() - resolved.ball.radius, rec.rest.z());
       teed_ = false;
+      rest_surface = surface_at(ball_);
       if (lodged_off_the_ground(rec.rest)) {
         // No one plays a ball out of a tree's branches: unplayable (Rule 19.2c), one stroke,
         // dropped at the spot on the ground directly below it.
@@ -325,6 +340,13 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
   }
   h.penalties += rec.penalty;
   h.strokes += rec.penalty;
+  if (tee_shot) {
+    const bool fairway = rec.end == StrokeEnd::Holed || (rest_surface == "fairway" && !rec.unplayable);
+    const Vec3 line = line_to - rec.start, off = rec.rest - rec.start;
+    h.tee_shot = fairway ? TeeShot::Fairway : line.x() * off.z() - line.z() * off.x() >= 0.0 ? TeeShot::Right : TeeShot::Left;
+  }
+  const bool on_this_green = rec.end == StrokeEnd::Rest && surface_at(ball_) == "green" && !on_another_green(ball_);
+  if (h.strokes <= h.par - 2 && (rec.end == StrokeEnd::Holed || on_this_green)) h.green_in_regulation = true;
   rec.to_pin_m = rec.end == StrokeEnd::Holed ? 0.0 : std::hypot(hole().pin.x() - rec.rest.x(), hole().pin.z() - rec.rest.z());
   h.shots.push_back(rec);
   if (shot != nullptr) *shot = std::move(r);

@@ -21,6 +21,12 @@ namespace sweetspot {
 enum class StrokeEnd { Rest, Holed, Water, OutOfBounds };
 const char* to_string(StrokeEnd e);
 
+/// Where a par 4's or par 5's tee shot finished, as the statistics keep it (PGA TOUR's
+/// "fairways hit"; missed left or right of the hole's line from the tee). A par 3 has none.
+enum class TeeShot { None, Fairway, Left, Right };
+/// "fairway", "left", "right"; "" for None.
+const char* to_string(TeeShot t);
+
 struct StrokeRecord {
   std::string club;
   std::string lie;            ///< "tee", "fairway", "rough", "sand", "green"
@@ -52,6 +58,13 @@ struct HoleCard {
   bool holed = false;         ///< false: picked up at 10, or the hole conceded
   bool picked_up = false;     ///< the ball was picked up at the stroke limit
   bool conceded = false;      ///< the player conceded the hole (match play, Rule 3.2b(1))
+  /// A par 4's or 5's first stroke at rest on the fairway (or holed), else the side of the
+  /// hole's line it missed on (a ball in water, out of bounds, in a tree or short on the tee
+  /// is a miss too). None on a par 3.
+  TeeShot tee_shot = TeeShot::None;
+  /// On this hole's green, or holed, in par − 2 strokes or fewer, penalty strokes counted
+  /// (a green "in regulation", as PGA TOUR and every stats app count it).
+  bool green_in_regulation = false;
   std::vector<StrokeRecord> shots;
 };
 

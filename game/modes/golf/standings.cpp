@@ -27,6 +27,13 @@ Standings standings(const GolfGroup& g) {
       const bool scored = c.holed || c.picked_up;
       ps.scored.push_back(scored);
       ps.total_putts += c.putts;
+      ps.tee_shot.push_back(c.tee_shot);
+      ps.green_in_regulation.push_back(c.green_in_regulation);
+      if (c.tee_shot != TeeShot::None) {
+        ++ps.fairways;
+        if (c.tee_shot == TeeShot::Fairway) ++ps.fairways_hit;
+      }
+      if (c.green_in_regulation) ++ps.greens_in_regulation;
       ps.total_points += ps.points.back();
       if (scored) {
         ps.total_strokes += c.strokes;

@@ -1,6 +1,7 @@
-// Where a group's round stands: each player's gross and net scores, putts and the format's
-// result over the holes the whole group has finished. The scorecard view and the JSON
-// report read this one summary, so the window and `round` cannot disagree.
+// Where a group's round stands: each player's gross and net scores, putts, fairways and greens
+// in regulation, and the format's result over the holes the whole group has finished. The
+// scorecard view and the JSON report read this one summary, so the window and `round`
+// cannot disagree.
 #pragma once
 
 #include <optional>
@@ -17,8 +18,12 @@ struct PlayerStanding {
   /// a score, and the totals and "to par" leave it out (they would read 2 strokes on a par 4
   /// as two under).
   std::vector<bool> scored;
+  std::vector<TeeShot> tee_shot;   ///< per finished hole (None on a par 3)
+  std::vector<bool> green_in_regulation;
   int total_strokes = 0, total_putts = 0, total_net = 0, total_points = 0;
   int total_par = 0;  ///< the par of the scored holes
+  /// Fairways hit of the par 4s and 5s teed off, and greens in regulation of the holes played.
+  int fairways_hit = 0, fairways = 0, greens_in_regulation = 0;
 };
 
 struct Standings {

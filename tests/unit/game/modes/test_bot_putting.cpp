@@ -137,7 +137,7 @@ TEST_CASE("each bot holes short and mid-range putts as Shot Scope's golfers of i
   }
 }
 
-TEST_CASE("over eight calm rounds each bot scores and putts as golfers of its level do",
+TEST_CASE("over eight calm rounds each bot scores, putts, hits fairways and greens as golfers of its level do",
           "[golf][bot][reference][statistics]") {
   // Putts per round: Shot Scope by handicap (MyGolfSpy, as above) scratch 29.9, 15 handicap
   // 32.1, 25 handicap 34.3; Arccos's scratch golfers 5.2 one-putts, 11.5 two-putts and 1.7
@@ -148,18 +148,25 @@ TEST_CASE("over eight calm rounds each bot scores and putts as golfers of its le
   // handicap ~90; the tour bot 66-72 like a PGA Tour field; the beginner (slower than a 25
   // handicap) at least 96. Calm air: the command line's rounds draw wind and play ~1 higher.
   // The day's cups, as `round` and `play` cut them (docs/courses.md).
+  // Fairways hit and greens in regulation, where published for the level: the PGA TOUR's
+  // ~60 % and ~66 % (2023 season averages); Arccos's scratch golfers 51 % and 56 % (Arccos,
+  // "Scratch vs 10 vs 20 handicap", Golf Monthly 2023; "The stats behind a scratch golfer",
+  // 2022). Bands: the published figure ± 10 points, about two standard errors of 8 rounds'
+  // 112 tee shots and 144 greens.
   struct Row {
     const char* skill;
     double score_lo, score_hi, putts_lo, putts_hi;
+    double fairways = -1.0, greens = -1.0;  // published share; < 0: not checked
   };
   Course national = load_course(test::assets(), "national");
   CourseSetup day;
   day.pin_set = CourseSetup::kDayPinSet;
   set_up(national, day);
-  for (const Row& row : {Row{"tour", 66, 72, 27, 32}, Row{"scratch", 72, 78, 29, 34}, Row{"amateur", 85, 93, 31, 36},
-                         Row{"beginner", 96, 112, 34, 42}}) {
+  for (const Row& row : {Row{"tour", 66, 72, 27, 32, 0.60, 0.66}, Row{"scratch", 72, 78, 29, 34, 0.51, 0.56},
+                         Row{"amateur", 85, 93, 31, 36}, Row{"beginner", 96, 112, 34, 42}}) {
     const GolferSkill& g = golfer_skill(row.skill);
     double strokes = 0.0, putts = 0.0;
+    int fairways = 0, fairways_hit = 0, holes = 0, greens = 0;
     constexpr int kRounds = 8;
     for (int seed = 1; seed <= kRounds; ++seed) {
       GolfRound round(test::assets(), national, g);
@@ -168,13 +175,21 @@ TEST_CASE("over eight calm rounds each bot scores and putts as golfers of its le
       for (const HoleCard& h : round.card()) {
         strokes += h.strokes;
         putts += h.putts;
+        fairways += h.tee_shot != TeeShot::None;
+        fairways_hit += h.tee_shot == TeeShot::Fairway;
+        greens += h.green_in_regulation;
+        ++holes;
       }
     }
-    INFO(row.skill << ": " << strokes / kRounds << " strokes, " << putts / kRounds << " putts a round");
+    const double fir = static_cast<double>(fairways_hit) / fairways, gir = static_cast<double>(greens) / holes;
+    INFO(row.skill << ": " << strokes / kRounds << " strokes, " << putts / kRounds << " putts a round, fairways "
+                   << 100 * fir << " %, greens in regulation " << 100 * gir << " %");
     CHECK(strokes / kRounds >= row.score_lo);
     CHECK(strokes / kRounds <= row.score_hi);
     CHECK(putts / kRounds >= row.putts_lo);
     CHECK(putts / kRounds <= row.putts_hi);
+    if (row.fairways >= 0.0) CHECK(std::abs(fir - row.fairways) <= 0.10);
+    if (row.greens >= 0.0) CHECK(std::abs(gir - row.greens) <= 0.10);
   }
 }
 

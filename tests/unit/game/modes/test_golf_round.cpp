@@ -296,3 +296,46 @@ TEST_CASE("a bot's chip over rough is planned to finish near the cup, not in the
     CHECK(std::hypot(cup.point.x() - rest.x(), cup.point.z() - rest.z()) < 2.5);
   }
 }
+
+TEST_CASE("the card keeps fairways hit and greens in regulation as the statistics count them", "[golf][round][card]") {
+  // Hole 3, a par 5 with out of bounds all along the right: a driver 150 ms late is lost
+  // right, and the tee shot counts as the miss even once the ball is played again.
+  GolfRound late(test::assets(), one_hole(3), golfer_skill("tour"));
+  REQUIRE(late.play(stroke("driver", 1.0, 150.0, 0.25)).end == StrokeEnd::OutOfBounds);
+  CHECK(late.card()[0].tee_shot == TeeShot::Right);
+  GolfBot caddie(test::assets(), golfer_skill("tour"), 1);
+  late.play(caddie.intend(late));
+  CHECK(late.card()[0].tee_shot == TeeShot::Right);
+  // 150 ms early: hooked left into the rough or beyond.
+  GolfRound early(test::assets(), one_hole(3), golfer_skill("tour"));
+  early.play(stroke("driver", 1.0, -150.0));
+  CHECK(early.card()[0].tee_shot == TeeShot::Left);
+  // The caddie's plan struck perfectly finds the fairway, and the hole's greens in
+  // regulation are counted from where each stroke comes to rest: on the green in three.
+  GolfRound straight(test::assets(), one_hole(3), golfer_skill("tour"));
+  const StrokeRecord& drive = straight.play(caddie.intend(straight));
+  CHECK(straight.card()[0].tee_shot == TeeShot::Fairway);
+  CHECK(straight.surface_at(drive.rest) == "fairway");
+  int strokes = 1;
+  bool reached = false;
+  while (!straight.finished() && !reached) {
+    const StrokeRecord& r = straight.play(caddie.intend(straight));
+    strokes += 1 + r.penalty;
+    reached = r.end == StrokeEnd::Holed || (!straight.finished() && straight.lie() == "green");
+  }
+  REQUIRE(reached);
+  CHECK(straight.card()[0].green_in_regulation == (strokes <= 3));
+
+  // A par 3 has no fairway. Into the pond and dropped: two strokes before the next, so the
+  // green is not reached in regulation whatever follows.
+  GolfRound wet(test::assets(), one_hole(1), golfer_skill("tour"));
+  REQUIRE(wet.play(stroke("7-iron", 0.72)).end == StrokeEnd::Water);
+  while (!wet.finished()) wet.play(caddie.intend(wet));
+  CHECK(wet.card()[0].tee_shot == TeeShot::None);
+  CHECK(!wet.card()[0].green_in_regulation);
+  // Struck as planned, the par 3's tee shot finds the green: in regulation.
+  GolfRound dry(test::assets(), one_hole(1), golfer_skill("tour"));
+  dry.play(caddie.intend(dry));
+  CHECK(dry.lie() == "green");
+  CHECK(dry.card()[0].green_in_regulation);
+}

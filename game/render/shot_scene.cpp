@@ -524,6 +524,12 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
         for (double z : {m.world_min.z(), m.world_max.z()}) reach = std::max(reach, (Vec3(x, 0, z) - launch).dot(aim));
     }
     const double half = 22.0;
+    // Each stripe's number sits just left of the aim line, where the player looks, not at
+    // the stripe's end (under the panels, or off the image). Toward the horizon the stripes
+    // close up on screen: a number is left out unless it stands a line's height clear of any
+    // number written above or below it, so the far ones never run together.
+    const double h_px = style_scale * m.style.label_height_px, line_px = 1.6 * h_px;
+    std::vector<Eigen::Vector3d> numbers;  // px: left, right, baseline of each number written
     for (int k = 1; k * stripe <= reach && k <= 20; ++k) {
       const Vec3 mid = launch + k * stripe * aim;
       if (!m.world.empty() && !ground_height(mid.x(), mid.z())) continue;  // off the world
@@ -533,7 +539,18 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
         return Vec3(q.x(), ground_at(q.x(), q.z()), q.z());
       };
       for (int i = 0; i < n; ++i) ground_line(at(-half + 2 * half * i / n), at(-half + 2 * half * (i + 1) / n), 2.0, kWhite);
-      label(std::to_string(k * 50), at(-half - 3.0) + Vec3(0, 1.0, 0), kWhite);
+      const std::string text = std::to_string(k * 50);
+      const Vec3 on_line = at(0.0);
+      const auto seen = camera.project(on_line, width, height);
+      if (!seen) continue;
+      const double w_px = text_width(text, h_px);
+      const Eigen::Vector3d box(seen->x() - w_px - 8.0 * style_scale, seen->x(), seen->y());
+      const bool crowded = std::any_of(numbers.begin(), numbers.end(), [&](const Eigen::Vector3d& o) {
+        return box[0] < o[1] + h_px && o[0] < box[1] + h_px && std::abs(box[2] - o[2]) < line_px;
+      });
+      if (crowded) continue;
+      label(text, on_line + cam_up * px(on_line, 6.0) - cam_right * px(on_line, 0.5 * w_px / style_scale + 8.0), kWhite);
+      numbers.push_back(box);
     }
   } else {
     for (const auto& [dist, at_wall] : m.fence_marks) {

@@ -2,7 +2,8 @@
 // Sun + sky ambient lighting with distance haze, and procedural surface detail chosen by the
 // vertex's surface look (game/render/mesh_import.hpp surface_look): 0 plain, 1 mown grass
 // (stripes across x every 12 m, fine blade noise), 2 long grass (patchy), 3 sand (grain and
-// ripples), 4 water (sky reflection at grazing angles, sun glints), 5 dirt (clods, grain).
+// ripples), 4 water (sky reflection at grazing angles, sun glints), 5 dirt (clods, grain),
+// 6 cloth (a flag: bright from any side, as the cloth glows with the light through it).
 // Large patches come per vertex (lit.vert); one fine noise octave per surface fades out
 // where it would alias (its cells under ~2 pixels), so far terrain stays calm and cheap.
 in vec3 v_world;
@@ -86,6 +87,10 @@ void main() {
   vec3 h = normalize(u_sun_dir + v);
   float spec = pow(max(dot(n, h), 0.0), shininess) * 0.18 * specular * sunlit;
   vec3 lit = albedo * (0.72 * diffuse * vec3(1.0, 0.97, 0.90) + 0.52 * sky_ambient) + spec;
+  // A flag's thin cloth glows with the light through it and off both faces: under a high
+  // sun a hanging flag gets almost none of it straight on, yet reads bright red from any
+  // side and any distance, as the HUD's far flag is drawn.
+  if (look == 6) lit = albedo * (0.8 + 0.2 * diffuse);
 
   float haze = 1.0 - exp(-dist / u_haze_range);
   frag_color = vec4(mix(lit, u_haze, haze), 1.0);

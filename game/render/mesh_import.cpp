@@ -36,7 +36,7 @@ const std::array<Named, 23>& palette() {
       {"grass", {{0.30f, 0.58f, 0.22f}, surface_look::kMown}},
       {"warning_track", {{0.52f, 0.36f, 0.24f}, surface_look::kDirt}},
       {"wall", {{0.10f, 0.30f, 0.20f}, surface_look::kPlain}},
-      {"flag", {{0.90f, 0.10f, 0.10f}, surface_look::kPlain}},
+      {"flag", {{0.90f, 0.10f, 0.10f}, surface_look::kCloth}},
       {"pole", {{0.95f, 0.95f, 0.95f}, surface_look::kPlain}},
       {"ball", {{0.97f, 0.97f, 0.97f}, surface_look::kPlain}},
       {"clubhead", {{0.45f, 0.46f, 0.50f}, surface_look::kPlain}},

@@ -24,6 +24,7 @@ inline constexpr float kLongGrass = 2.0f;  ///< rough, out of bounds: patchy, no
 inline constexpr float kSand = 3.0f;       ///< bunkers: fine grain and wind ripples
 inline constexpr float kWater = 4.0f;      ///< ponds: the sky reflected at grazing angles, sun glints
 inline constexpr float kDirt = 5.0f;       ///< infield skin, warning track: clods and raked grain
+inline constexpr float kCloth = 6.0f;      ///< a flag: thin cloth, bright from any side
 }  // namespace surface_look
 
 struct PaletteEntry {

@@ -438,6 +438,19 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     }
   }
 
+  // Arrows on the ground, each with a head of two barbs back from its tip.
+  for (const GroundArrow& a : arrows_) {
+    Vec3 d = a.to - a.from;
+    d.y() = 0.0;
+    const double len = d.norm();
+    if (len < 1e-6) continue;
+    d /= len;
+    const Vec3 side(-d.z(), 0.0, d.x());
+    const double head = std::min(0.35 * len, 0.3);
+    ground_line(a.from, a.to, 2.5, a.color);
+    for (const double s : {-1.0, 1.0}) ground_line(a.to, a.to - head * (0.87 * d + s * 0.5 * side), 2.5, a.color);
+  }
+
   // Distance markers: stripes across the golf hole every 50 yd; fence distances in a park.
   const Vec3 cam_right = camera.right(), cam_up = camera.true_up();
   // Labels never overlap on screen: each claims its rectangle, and a label that would
@@ -514,11 +527,13 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     aim = aim.norm() > 1e-9 ? aim.normalized() : Vec3::UnitX();
     const Vec3 across(-aim.z(), 0.0, aim.x());  // right of the aim line
     const double stripe = 50.0 * unit_length(m.input.distance_unit);  // m between the lines
-    double reach = 60.0;
-    for (const auto& q : samples) reach = std::max(reach, (q.position - launch).dot(aim) + 20.0);
-    if (!m.world.empty() && m.flag_position) {
-      // On a hole: to 50 yd past the flag (a course's world runs on over the other holes).
-      reach = std::max(reach, (*m.flag_position - launch).dot(aim) + stripe);
+    const bool on_hole = !m.world.empty() && m.flag_position;
+    // On a hole: to the stripe nearest past the flag (a course's world runs on over the other
+    // holes), so a putt or a chip, all of it well inside the first stripe, has none.
+    double reach = on_hole ? 0.0 : 60.0;
+    for (const auto& q : samples) reach = std::max(reach, (q.position - launch).dot(aim) + (on_hole ? 0.0 : 20.0));
+    if (on_hole) {
+      reach = std::max(reach, (*m.flag_position - launch).dot(aim) + 0.5 * stripe);
     } else if (!m.world.empty()) {
       for (double x : {m.world_min.x(), m.world_max.x()})
         for (double z : {m.world_min.z(), m.world_max.z()}) reach = std::max(reach, (Vec3(x, 0, z) - launch).dot(aim));

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "game/render/camera.hpp"
 #include "game/render/scene.hpp"
@@ -17,6 +18,13 @@
 #include "physics/trajectory.hpp"
 
 namespace sweetspot {
+
+/// An arrow lying on the ground (a green's downhill), drawn in the scene so the people and
+/// the ground in front of it hide it as they hide the turf.
+struct GroundArrow {
+  Vec3 from = Vec3::Zero(), to = Vec3::Zero();  ///< m, on the ground
+  Eigen::Vector3f color = Eigen::Vector3f::Ones();
+};
 
 /// Where the club head or bat is at impact: its mesh frame (HEAD FRAME / BAT FRAME) to
 /// world. Fill it from Delivery::impactor_at_impact (position, orientation).
@@ -101,6 +109,8 @@ class ShotScene {
   /// The club at address behind a ball that waits to be hit (nothing: none): drawn with the
   /// golfer holding it, square to the shot. A shot with its own club (set_shot) shows that.
   void set_address(const std::optional<ImpactorPlacement>& club) { address_ = club; }
+  /// Arrows on the ground (none: none), e.g. a green's slopes while a putt is lined up.
+  void set_ground_arrows(std::vector<GroundArrow> arrows) { arrows_ = std::move(arrows); }
   /// ShotSceneInput::wind, ::people and ::target_line, as play goes on.
   void set_wind(const Vec3& wind);
   void set_target_line(const Vec3& line);
@@ -133,6 +143,7 @@ class ShotScene {
   std::optional<ImpactorPlacement> impactor_;
   std::optional<Vec3> aim_;
   std::optional<ImpactorPlacement> address_;
+  std::vector<GroundArrow> arrows_;
 };
 
 }  // namespace sweetspot

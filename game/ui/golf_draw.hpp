@@ -10,6 +10,7 @@
 
 #include "game/modes/golf/golf_play.hpp"
 #include "game/render/camera.hpp"
+#include "game/render/shot_scene.hpp"
 
 namespace sweetspot {
 
@@ -49,7 +50,11 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
 void draw_golf_card(const GolfPlay& play, int w, bool final);
 /// The cup and flagstick, never smaller than a few pixels however far.
 void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h);
-void draw_aim_and_slopes(const GolfPlay& play, const std::vector<SlopeArrow>& slopes, const Camera& cam, int w, int h);
+/// The aim line from the ball (to the cup's distance and a metre on for a putt).
+void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h);
+/// The green's slopes as arrows on the ground for the scene (ShotScene::set_ground_arrows),
+/// so the golfer and the meter are never drawn under them.
+std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes);
 /// The map's marks: the ball, the selected club's carry ring and the player's dispersion
 /// ellipse for it (from this round's shots with it, else their bag's measured spread).
 void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h);

@@ -1,5 +1,6 @@
 // Marks drawn on the course over the 3-D view: the cup and flag at any distance, the aim
-// line, the green's slopes with arrowheads, the map's rings and dispersion ellipse.
+// line, the map's rings and dispersion ellipse; the green's slope arrows, which the scene draws
+// on the ground.
 #include <imgui.h>
 
 #include <algorithm>
@@ -83,33 +84,29 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
   dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));
 }
 
-void draw_aim_and_slopes(const GolfPlay& play, const std::vector<SlopeArrow>& slopes, const Camera& cam, int w, int h) {
+void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h) {
   const GolfRound& r = play.round();
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const Vec3 b = play.ball_centre();
   const double len = r.lie() == "green" ? r.to_pin() + 1.0 : std::min(r.to_pin(), 250.0);
   const auto p0 = cam.project(b, w, h), p1 = cam.project(b + len * play.aim_direction(), w, h);
   if (p0 && p1) dl->AddLine(px(*p0), px(*p1), IM_COL32(255, 255, 255, 170), 2.0f);
+}
+
+std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes) {
+  std::vector<GroundArrow> out;
   for (const SlopeArrow& a : slopes) {
     // The arrow points downhill; its length and colour grow with the slope (white flat, red
     // at 4 %, steep for a green: USGA greens run 1-3 % where cups are cut).
     const double s = a.downhill.norm();
     if (s < 1e-4) continue;
     const Vec3 dir = a.downhill / s;
-    const double len_m = 0.4 + 0.8 * std::clamp(s / 0.04, 0.0, 1.0);
-    const Vec3 from = a.at + Vec3(0, 0.02, 0) - 0.5 * len_m * dir, to = a.at + Vec3(0, 0.02, 0) + 0.5 * len_m * dir;
-    const auto q0 = cam.project(from, w, h), q1 = cam.project(to, w, h);
-    if (!q0 || !q1) continue;
-    const int red = static_cast<int>(std::clamp(s / 0.04, 0.0, 1.0) * 255);
-    const ImU32 col = IM_COL32(255, 255 - red * 3 / 4, 255 - red, 235);
-    const ImVec2 A = px(*q0), B = px(*q1);
-    dl->AddLine(A, B, col, 2.5f);
-    // The head: two barbs back from the tip.
-    const float dx = B.x - A.x, dy = B.y - A.y, l = std::max(std::sqrt(dx * dx + dy * dy), 1.0f);
-    const float ux = dx / l, uy = dy / l, head = std::min(9.0f, 0.5f * l);
-    dl->AddTriangleFilled(B, ImVec2(B.x - head * ux - 0.6f * head * uy, B.y - head * uy + 0.6f * head * ux),
-                          ImVec2(B.x - head * ux + 0.6f * head * uy, B.y - head * uy - 0.6f * head * ux), col);
+    const double steep = std::clamp(s / 0.04, 0.0, 1.0);
+    const double len_m = 0.4 + 0.8 * steep;
+    const float red = static_cast<float>(steep);
+    out.push_back({a.at - 0.5 * len_m * dir, a.at + 0.5 * len_m * dir, Eigen::Vector3f(1.0f, 1.0f - 0.75f * red, 1.0f - red)});
   }
+  return out;
 }
 
 void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h) {

@@ -513,8 +513,10 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     } else if (!green) {
       slopes_.clear();
     }
+    if (scene_) scene_->set_ground_arrows(addressing ? slope_arrows(slopes_) : std::vector<GroundArrow>{});
   } else if (scene_) {
     scene_->set_aim(std::nullopt);  // the shot's own line from where it was hit
+    scene_->set_ground_arrows({});
     if (!flight_shown_) {
       // A bot may strike before his address was drawn: the scene still holds the last
       // player's club, whose full finish a putt must not take.
@@ -595,7 +597,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     renderer.blit_to(0, w, h);
     const GolfRound& r = play_->round();
     if (!r.finished() && !over) draw_cup_and_flag(cam, r.hole().pin, w, h);
-    if (addressing) draw_aim_and_slopes(*play_, slopes_, cam, w, h);
+    if (addressing) draw_aim(*play_, cam, w, h);
     if (addressing && camera_ == 3) draw_map_marks(*play_, units_, cam, w, h);
   }
   draw_golf_hud(*play_, units_, camera_, settling, t);

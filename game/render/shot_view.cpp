@@ -42,6 +42,24 @@ Camera full_shot_address_camera(const Vec3& ball, const Vec3& aim) {
   return c;
 }
 
+Camera clear_view_of(const Camera& c, const Vec3& subject, const Terrain& world) {
+  constexpr double kClearance = 0.5, kNearest = 3.0, kAbove = 2.5;  // m
+  SurfaceContact hit;
+  if (!world.sweep(subject, c.eye, kClearance, &hit, nullptr)) return c;
+  const Vec3 back = c.eye - subject;
+  const double reach = std::max(0.0, hit.fraction * back.norm() - kClearance);
+  Camera out = c;
+  if (reach >= kNearest) {
+    out.eye = subject + reach * back.normalized();
+  } else {
+    Vec3 flat(back.x(), 0.0, back.z());
+    flat = flat.norm() > 1e-9 ? Vec3(flat.normalized()) : Vec3::Zero();
+    out.eye = subject + std::min(reach, 1.0) * flat + Vec3(0.0, kAbove, 0.0);
+  }
+  out.target = c.target + (out.eye - c.eye);
+  return out;
+}
+
 ImpactorPlacement nominal_impactor(bool bat, const LaunchState& launch, double ball_radius, double bat_length) {
   const Vec3 n = launch.velocity.norm() > 0.0 ? Vec3(launch.velocity.normalized()) : Vec3::UnitX();
   const double yaw = std::atan2(n.z(), n.x());

@@ -34,6 +34,13 @@ ImpactorPlacement club_at_address(const Vec3& centre, const Vec3& aim, double ba
 /// down of its 20°), the target area a degree or two below the horizon in its upper half.
 Camera full_shot_address_camera(const Vec3& ball, const Vec3& aim);
 
+/// `c` moved so nothing of `world` (a tree's trunk or crown, a bank) stands between its eye
+/// and `subject` (a golfer's head): the eye comes forward along its line to just in front
+/// of the first thing in the way, and where that would put it nearer than 3 m, 2.5 m above
+/// the subject instead, a metre or less behind, looking the same way. Unchanged when the
+/// line is clear.
+Camera clear_view_of(const Camera& c, const Vec3& subject, const Terrain& world);
+
 ShotSceneInput scene_input_for(const Assets& assets, const ResolvedShot& shot, const ShotResult& r);
 RenderRequest render_request_for(const Assets& assets, const ResolvedShot& shot, const ShotResult& r);
 

@@ -331,7 +331,11 @@ Camera GolfView::green_camera(bool from_pin) const {
 
 Camera GolfView::address_camera() const {
   const GolfRound& r = play_->round();
-  return address_camera_at(play_->ball_centre(), play_->aim_direction(), r.lie() == "green", r.to_pin());
+  const Vec3 ball = play_->ball_centre();
+  const Camera c = address_camera_at(ball, play_->aim_direction(), r.lie() == "green", r.to_pin());
+  // A tree (or a bank) between the golfer and the camera would fill the view.
+  if (r.finished()) return c;
+  return clear_view_of(c, ball + Vec3(0.0, 1.7, 0.0), *r.hole().world->world);
 }
 
 Camera GolfView::high_camera() const {

@@ -20,9 +20,11 @@
 #include "game/render/render_paths.hpp"
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
+#include "game/render/shot_view.hpp"
 #include "game/render/synthetic_shot.hpp"
 #include "game/render/trail_geometry.hpp"
 #include "physics/error.hpp"
+#include "physics/world.hpp"
 #include "support/test_assets.hpp"
 
 #include <map>
@@ -424,4 +426,51 @@ TEST_CASE("sun shadows: the flag and the club shade the turf and nothing gets br
   OffscreenContext probe;
   Renderer auto_renderer(64, 64);
   if (auto_renderer.software()) CHECK(render_shot_rgba(synthetic_shot(), r) == off);
+}
+
+TEST_CASE("the address camera comes out from behind a tree, or up over the golfer when it is close", "[render][camera]") {
+  // Flat turf, and a tree's trunk (a wall 4 m wide and 6 m tall, both faces) across the line
+  // from a golfer's head to the camera 9 m behind him, `gap` m behind the ball.
+  const auto world_with_tree = [](double gap) {
+    WorldDescription d;
+    d.name = "tree";
+    SurfaceMaterial tree = default_fairway();
+    tree.name = "tree";
+    tree.kind = SurfaceKind::Tree;
+    d.materials = {default_fairway(), tree};
+    WorldMesh turf;
+    turf.material = 0;
+    turf.vertices = {Vec3(-50, 0, -50), Vec3(50, 0, -50), Vec3(50, 0, 50), Vec3(-50, 0, 50)};
+    turf.indices = {0, 2, 1, 0, 3, 2};
+    WorldMesh trunk;
+    trunk.material = 1;
+    trunk.vertices = {Vec3(-gap, 0, -2), Vec3(-gap, 0, 2), Vec3(-gap, 6, 2), Vec3(-gap, 6, -2)};
+    trunk.indices = {0, 1, 2, 0, 2, 3, 0, 2, 1, 0, 3, 2};
+    d.meshes = {turf, trunk};
+    d.bounds_min = Vec3(-50, -5, -50);
+    d.bounds_max = Vec3(50, 100, 50);
+    return d;
+  };
+  const Vec3 ball(0.0, 0.021, 0.0), head = ball + Vec3(0.0, 1.7, 0.0);
+  const Camera behind = full_shot_address_camera(ball, Vec3::UnitX());
+  SECTION("nothing in the way: unchanged") {
+    const World open(world_with_tree(30.0));
+    const Camera c = clear_view_of(behind, head, open);
+    CHECK((c.eye - behind.eye).norm() < 1e-12);
+  }
+  SECTION("a trunk 6 m back: the camera stands in front of it, looking the same way") {
+    const World w(world_with_tree(6.0));
+    const Camera c = clear_view_of(behind, head, w);
+    CHECK(c.eye.x() > -6.0);
+    CHECK(c.eye.x() < -3.0);
+    CHECK(((c.target - c.eye).normalized() - (behind.target - behind.eye).normalized()).norm() < 1e-9);
+    SurfaceContact hit;
+    CHECK(!w.sweep(head, c.eye, 0.1, &hit, nullptr));
+  }
+  SECTION("a trunk 2 m back: up over the golfer's head") {
+    const World w(world_with_tree(2.0));
+    const Camera c = clear_view_of(behind, head, w);
+    CHECK(c.eye.x() > -2.0);
+    CHECK(c.eye.y() > head.y() + 2.0);
+  }
 }

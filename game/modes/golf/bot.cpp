@@ -387,6 +387,48 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
     const Tried t = tune(s.club, std::clamp(std::pow(d / s.carry, 0.8), 0.05, 1.0), best.in.aim, 3);
     if (!t.lost && std::abs(t.reach - d) < std::abs(best.reach - d)) best = t;
   }
+  // A plan that runs through the green into the rough behind it (a cup cut near the back, a
+  // ball that releases): a player takes the club down, or this one a little softer, so that
+  // it lands short and stops on the green; whichever of the three stops nearest the cup,
+  // counted with its lie (kChipLieCost off the green).
+  if (going_for_pin && !best.lost && round.surface_at(best.rest) != "green") {
+    const Vec3& pin = round.hole().pin;
+    const auto left = [&](const Tried& t) {
+      if (t.lost) return std::numeric_limits<double>::infinity();
+      return std::hypot(pin.x() - t.rest.x(), pin.z() - t.rest.z()) + kChipLieCost * (round.surface_at(t.rest) != "green");
+    };
+    const std::size_t k = static_cast<std::size_t>(
+        std::find_if(stock_.begin(), stock_.end(), [&](const Stock& c) { return c.club == best.in.club; }) - stock_.begin());
+    std::vector<Tried> options;
+    if (best.reach > d && k + 1 < stock_.size() && allowed(stock_[k + 1])) options.push_back(tune(stock_[k + 1].club, 1.0, best.in.aim, 2));
+    if (best.reach > d) options.push_back(tune(best.in.club, std::clamp(best.in.meter.power * std::pow(d / best.reach, 1.25), 0.05, 1.0), best.in.aim, 2));
+    for (const Tried& t : options)
+      if (left(t) < left(best)) best = t;
+  }
+  // A plan that gets there only when struck perfectly: a player who carries trouble in front
+  // of the green takes enough club that his usual short one still clears it. Struck a power
+  // standard deviation short (his full swing's spread, more for a part swing, as plan()
+  // draws it), where does it stop? In a worse lie than the plan's (the rough or a bunker
+  // short of the green, water), he swings a standard deviation harder, or takes the next club
+  // up when he is already swinging full, if that plan stays in play on as good a lie and its
+  // own short one clears.
+  if (going_for_pin && !best.lost) {
+    const auto rank = [&](const Tried& t) { return t.lost ? 3 : lie_rank(round.surface_at(t.rest)); };
+    const auto spread = [&](double power) { return skill_.power_sd + skill_.partial_feel_sd * (1.0 - std::min(power, 1.0)); };
+    const auto short_of = [&](const Tried& t) {
+      return tune(t.in.club, t.in.meter.power * (1.0 - spread(t.in.meter.power)), t.in.aim, 1);
+    };
+    if (rank(short_of(best)) > rank(best)) {
+      const std::size_t k = static_cast<std::size_t>(
+          std::find_if(stock_.begin(), stock_.end(), [&](const Stock& c) { return c.club == best.in.club; }) - stock_.begin());
+      std::optional<Tried> firmer;
+      if (best.in.meter.power < 1.0)
+        firmer = tune(best.in.club, std::min(1.0, best.in.meter.power * (1.0 + spread(best.in.meter.power))), best.in.aim, 1);
+      else if (k > 0 && allowed(stock_[k - 1]))
+        firmer = tune(stock_[k - 1].club, 1.0, best.in.aim, 2);
+      if (firmer && rank(*firmer) <= rank(best) && rank(short_of(*firmer)) <= rank(best)) best = *firmer;
+    }
+  }
   // Blocked: the plan flies into a tree. A player takes the way out that leaves the best next
   // shot: a line off to the side of it, or a club that flies under or over it, judged by how
   // far from the cup it stops and on what, struck as this golfer strikes it: the mean over

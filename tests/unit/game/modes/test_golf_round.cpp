@@ -339,3 +339,27 @@ TEST_CASE("the card keeps fairways hit and greens in regulation as the statistic
   CHECK(dry.lie() == "green");
   CHECK(dry.card()[0].green_in_regulation);
 }
+
+TEST_CASE("a bot takes enough club that its usual short one still reaches the green", "[golf][bot]") {
+  // The National's 6th with the day's cup (pin set 2), cut 3 m inside the front of the green
+  // behind rough: the tour bot's plan, and the same plan struck a power standard deviation
+  // short (the skill's spread, a part swing's more), both finish on the green.
+  Course national = load_course(test::assets(), "national");
+  CourseSetup day;
+  day.pin_set = CourseSetup::kDayPinSet;
+  set_up(national, day);
+  Course sixth = national;
+  sixth.holes = {national.holes[5]};
+  sixth.holes[0].number = 1;
+  const GolferSkill& g = golfer_skill("tour");
+  GolfRound round(test::assets(), sixth, g);
+  const GolfBot bot(test::assets(), g, 1);
+  StrokeInput in = bot.intend(round);
+  const double spread = g.power_sd + g.partial_feel_sd * (1.0 - std::min(in.meter.power, 1.0));
+  INFO(in.club << " at " << in.meter.power);
+  const ShotResult planned = round.simulate(in);
+  CHECK(round.surface_at(planned.trajectory.summary.rest_position) == "green");
+  in.meter.power *= 1.0 - spread;
+  const ShotResult short_one = round.simulate(in);
+  CHECK(round.surface_at(short_one.trajectory.summary.rest_position) == "green");
+}

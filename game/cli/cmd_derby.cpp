@@ -60,9 +60,13 @@ int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
         half_shown = half;
         if (pa.pitching_change) std::printf("%s %-2d %s\n", pa.bottom ? "bot" : "top", pa.inning, pitching_change_text(pa).c_str());
         const std::string runs = pa.runs == 1 ? "1 run scores" : pa.runs > 1 ? std::to_string(pa.runs) + " runs score" : "";
+        // The runs in their column; a description too long for it takes them after a comma
+        // ("Grounded into a double play, 3B to 2B to 1B, 1 run scores").
+        constexpr std::size_t kColumn = 32;
+        const std::string play = pa.description.size() >= kColumn && !runs.empty() ? pa.description + "," : pa.description;
         char line[512];
         std::snprintf(line, sizeof line, "%s %-2d %-6s #%d  %-32s %s", pa.bottom ? "bot" : "top", pa.inning,
-                      pa.bottom ? "home" : "away", pa.batter + 1, pa.description.c_str(), runs.c_str());
+                      pa.bottom ? "home" : "away", pa.batter + 1, play.c_str(), runs.c_str());
         std::string text = line;
         text.erase(text.find_last_not_of(' ') + 1);  // the padding is for the runs column only
         std::printf("%s\n", text.c_str());

@@ -545,6 +545,16 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     // number written above or below it, so the far ones never run together.
     const double h_px = style_scale * m.style.label_height_px, line_px = 1.6 * h_px;
     std::vector<Eigen::Vector3d> numbers;  // px: left, right, baseline of each number written
+    // Nor over the flag: the game draws a far flag at least 40 px tall (game/ui/golf_marks),
+    // and a number behind its cloth reads as another ("1$0").
+    if (on_hole) {
+      const auto base = camera.project(*m.flag_position, width, height);
+      const auto top = camera.project(*m.flag_position + Vec3(0.0, 2.13, 0.0), width, height);
+      if (base) {
+        const double tall = std::max(40.0, top ? base->y() - top->y() : 0.0);
+        taken.push_back(Eigen::Vector4d(base->x() - 4.0, base->y() - tall - 4.0, base->x() + 0.3 * tall + 4.0, base->y()));
+      }
+    }
     for (int k = 1; k * stripe <= reach && k <= 20; ++k) {
       const Vec3 mid = launch + k * stripe * aim;
       if (!m.world.empty() && !ground_height(mid.x(), mid.z())) continue;  // off the world

@@ -92,10 +92,10 @@ std::string round_table(const GolfRound& round, const std::string& player) {
     strokes += h.strokes;
     putts += h.putts;
     penalties += h.penalties;
-    // The fairway column: "hit", or the side the tee shot missed on; "-" on a par 3.
-    const char* fairway = h.tee_shot == TeeShot::None ? "-" : h.tee_shot == TeeShot::Fairway ? "hit" : to_string(h.tee_shot);
+    // The fairway column: "hit", or the side the tee shot missed on; "-" on a par 3 (none).
+    const char* fairway = h.tee_shot == TeeShot::None ? "-" : to_string(h.tee_shot);
     std::snprintf(line, sizeof line, "%-6d %4d %8d %6d %8s %6s %10d %s\n", h.number, h.par, h.strokes, h.putts, fairway,
-                  h.green_in_regulation ? "hit" : "-", h.penalties, h.picked_up ? "(picked up)" : h.conceded ? "(conceded)" : "");
+                  h.green_in_regulation ? "hit" : "miss", h.penalties, h.picked_up ? "(picked up)" : h.conceded ? "(conceded)" : "");
     out += line;
   }
   const BallStriking b = ball_striking(round);

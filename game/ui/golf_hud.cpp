@@ -227,8 +227,12 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   const double shown = bar.shown;
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   char label[256];
+  // The words around the bar sit on a dark band so the view behind (a green's slope arrows,
+  // sand, sky) never runs through them.
+  constexpr ImU32 kBand = IM_COL32(15, 20, 25, 170);
   if (putting) {
     // The putt preview: how far each power rolls on a flat green of this speed.
+    dl->AddRectFilled(ImVec2(x0 - 4, y0 + bh + 2), ImVec2(x0 + bar.bw + 4, y0 + bh + 24), kBand, 4.0f);
     const double step = units.imperial ? 5.0 * 0.3048 : 2.0;
     for (double d = step; d < play.flat_roll(1.1); d += step) {
       const double p = play.power_for_roll(d);
@@ -286,6 +290,8 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       dl->AddTriangleFilled(ImVec2(x - 6, y0 - 10), ImVec2(x + 6, y0 - 10), ImVec2(x, y0), IM_COL32(120, 220, 255, 255));
     }
   }
+  const ImVec2 size = ImGui::CalcTextSize(label);
+  dl->AddRectFilled(ImVec2(x0 - 4, y0 - 28), ImVec2(x0 + size.x + 4, y0 - 24 + size.y), kBand, 4.0f);
   dl->AddText(ImVec2(x0, y0 - 26), IM_COL32(255, 255, 255, 255), label);
 }
 

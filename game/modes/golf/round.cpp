@@ -21,7 +21,7 @@ const char* to_string(StrokeEnd e) {
 const char* to_string(TeeShot t) {
   switch (t) {
     case TeeShot::None: return "";
-    case TeeShot::Fairway: return "fairway";
+    case TeeShot::Fairway: return "hit";
     case TeeShot::Left: return "left";
     case TeeShot::Right: return "right";
   }

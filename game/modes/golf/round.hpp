@@ -24,7 +24,7 @@ const char* to_string(StrokeEnd e);
 /// Where a par 4's or par 5's tee shot finished, as the statistics keep it (PGA TOUR's
 /// "fairways hit"; missed left or right of the hole's line from the tee). A par 3 has none.
 enum class TeeShot { None, Fairway, Left, Right };
-/// "fairway", "left", "right"; "" for None.
+/// "hit", "left", "right"; "" for None.
 const char* to_string(TeeShot t);
 
 struct StrokeRecord {

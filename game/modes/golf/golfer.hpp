@@ -51,17 +51,18 @@ struct GolferSkill {
 /// PGA row: 12.5° at its strike, TrackMan's 2023 PGA average 12.8°). Driver speeds: tour
 /// 113 mph (TrackMan PGA average), scratch 105, a 15-handicap amateur 93, a beginner 80
 /// (TrackMan's published handicap averages put the scratch and 15-handicap male golfer near
-/// 105 and 93 mph). Errors: the timing spreads are set against published rates. The tour
-/// bot's 12 ms scatters its drives ~±20 yd sideways: over 24 calm National rounds (the day's
-/// cups) it hits 61 % of fairways and 66 % of greens in regulation (PGA TOUR ~60 % and ~66 %).
-/// The scratch bot's 18 ms: 49 % of fairways, 53 % of greens, 75.5 strokes and 29.9 putts,
-/// against Arccos's scratch golfers' 51 %, 56 % and ~76 (2.2 birdies, 4.6 bogeys and 0.7
-/// doubles or worse a round; Golf Monthly, "Scratch vs 10 vs 20 handicap", 2023) and Shot
-/// Scope's 29.9 putts (at 20 ms: 43 %, 50 %, 77.0). The amateur's 36 ms timing spread (with
-/// a part swing's 0.35 feel) puts his calm National rounds at 91.4 over 24 seeds (the day's
-/// cups), inside a 15 handicap's ~85-93, but with 30 % of fairways and 16 % of greens where
-/// Arccos's golfers of 12-20 hit 41-45 % and ~20-31 % (12 handicaps 31 %): he strays too far
-/// off the tee and loses too few strokes elsewhere (penalties, duffs). 30 ms gives 34 % and 17 %.
+/// 105 and 93 mph). Errors: the timing spreads are set against published rates, over 24
+/// National rounds each (the day's cups, the seeds' wind; docs/courses.md). The tour bot's
+/// 12 ms scatters its drives ~±20 yd sideways: 61 % of fairways and 67 % of greens in
+/// regulation (PGA TOUR ~60 % and ~66 %). The scratch bot's 18 ms: 48 % of fairways, 50 % of
+/// greens, 75.5 strokes and 29.5 putts (calm: 48 %, 56 %, 75.1, 30.0), against Arccos's
+/// scratch golfers' 51 %, 56 % and ~76 (2.2 birdies, 4.6 bogeys and 0.7 doubles or worse a
+/// round; Golf Monthly, "Scratch vs 10 vs 20 handicap", 2023) and Shot Scope's 29.9 putts; at
+/// 20 ms (calm) 43 %, 50 %, 77.0. The amateur's 36 ms timing spread (with a part swing's 0.35
+/// feel) puts his National rounds at 91.6, inside a 15 handicap's ~85-93, but with 32 % of
+/// fairways and 14 % of greens where Arccos's golfers of 12-20 hit 41-45 % and ~20-31 % (12
+/// handicaps 31 %): he strays too far off the tee and loses too few strokes elsewhere
+/// (penalties, duffs). 30 ms gave 34 % and 17 % (calm).
 /// The tour bot's
 /// power spread, 3.5 %, leaves its
 /// approaches as near the hole as PGA TOUR players' by distance (ShotLink's proximity from

@@ -552,9 +552,11 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const auto top = camera.project(*m.flag_position + Vec3(0.0, 2.13, 0.0), width, height);
       if (base) {
         const double tall = std::max(40.0, top ? base->y() - top->y() : 0.0);
-        taken.push_back(Eigen::Vector4d(base->x() - 4.0, base->y() - tall - 4.0, base->x() + 0.3 * tall + 4.0, base->y()));
+        // The cloth flies right of the pole: a number left of the aim line still fits beside it.
+        taken.push_back(Eigen::Vector4d(base->x() + 2.0, base->y() - tall - 4.0, base->x() + 0.3 * tall + 4.0, base->y()));
       }
     }
+    std::vector<std::pair<int, Vec3>> written;  // each stripe's number and where it sits
     for (int k = 1; k * stripe <= reach && k <= 20; ++k) {
       const Vec3 mid = launch + k * stripe * aim;
       if (!m.world.empty() && !ground_height(mid.x(), mid.z())) continue;  // off the world
@@ -564,8 +566,14 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
         return Vec3(q.x(), ground_at(q.x(), q.z()), q.z());
       };
       for (int i = 0; i < n; ++i) ground_line(at(-half + 2 * half * i / n), at(-half + 2 * half * (i + 1) / n), 2.0, kWhite);
+      written.emplace_back(k, at(0.0));
+    }
+    if (focus_)
+      std::stable_sort(written.begin(), written.end(), [&](const auto& a, const auto& b) {
+        return std::abs(a.first * stripe - *focus_) < std::abs(b.first * stripe - *focus_);
+      });
+    for (const auto& [k, on_line] : written) {
       const std::string text = std::to_string(k * 50);
-      const Vec3 on_line = at(0.0);
       const auto seen = camera.project(on_line, width, height);
       if (!seen) continue;
       const double w_px = text_width(text, h_px);

@@ -109,6 +109,10 @@ class ShotScene {
   /// The club at address behind a ball that waits to be hit (nothing: none): drawn with the
   /// golfer holding it, square to the shot. A shot with its own club (set_shot) shows that.
   void set_address(const std::optional<ImpactorPlacement>& club) { address_ = club; }
+  /// The distance (m from the ball) the player means to play, e.g. his club's carry: the
+  /// golf stripes' numbers nearest it are written first, so where the far stripes crowd
+  /// together the one that matters is the one shown. Nothing: nearest the ball first.
+  void set_focus(const std::optional<double>& metres) { focus_ = metres; }
   /// Arrows on the ground (none: none), e.g. a green's slopes while a putt is lined up.
   void set_ground_arrows(std::vector<GroundArrow> arrows) { arrows_ = std::move(arrows); }
   /// ShotSceneInput::wind, ::people and ::target_line, as play goes on.
@@ -144,6 +148,7 @@ class ShotScene {
   std::optional<Vec3> aim_;
   std::optional<ImpactorPlacement> address_;
   std::vector<GroundArrow> arrows_;
+  std::optional<double> focus_;
 };
 
 }  // namespace sweetspot

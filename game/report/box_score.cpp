@@ -121,6 +121,7 @@ nlohmann::json game_json(const GameRecord& g) {
                    {"result", pa.result},
                    {"description", pa.description},
                    {"runs", pa.runs},
+                   {"earned_runs", pa.earned_runs},
                    {"rbi", pa.rbi},
                    {"outs_made", pa.outs_made},
                    {"pitcher", pa.pitcher},

@@ -500,6 +500,11 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     if (scene_) {
       scene_->set_shot(ball_at_rest(play_->ball_centre()), std::nullopt);
       scene_->set_aim(addressing ? std::optional<Vec3>(play_->aim_direction()) : std::nullopt);
+      // The stripes' numbers around where the chosen club carries come first.
+      std::optional<double> carry;
+      for (const GolfBot::Stock& st : play_->caddie().stock())
+        if (addressing && st.club == play_->club()) carry = st.carry;
+      scene_->set_focus(carry);
       // The player at address: his club square behind the ball along his aim.
       std::optional<ImpactorPlacement> club;
       if (addressing) club = club_at_address(play_->ball_centre(), play_->aim_direction(), assets_.equipment().ball("tour").radius);
@@ -521,6 +526,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   } else if (scene_) {
     scene_->set_aim(std::nullopt);  // the shot's own line from where it was hit
     scene_->set_ground_arrows({});
+    scene_->set_focus(std::nullopt);
     if (!flight_shown_) {
       // A bot may strike before his address was drawn: the scene still holds the last
       // player's club, whose full finish a putt must not take.

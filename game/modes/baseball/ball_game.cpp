@@ -217,6 +217,9 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
       }
       int runs = 0;
       int runs_on_watch = 0;  // scored this half while the pitcher now on the mound pitched
+      // Errors that put a batter aboard this half: each would have been an out (Rule 9.16(a)),
+      // and runs that score once those and the real outs make three are unearned.
+      int errors_as_outs = 0;
       bool inning_start = true;
       while (h.outs < 3) {
         // The fielding team's bullpen: the manager's look before each batter.
@@ -289,9 +292,13 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
               charges.fielders_choice(batter, was);
         ScoreAfter after{1 - half, mound, 0, 0, {}};
         int earned = 0;
+        // The inning as it would have gone without the errors: over before this play, or
+        // ended by this play's out before the runs crossed (a sacrifice fly for the third out).
+        const bool past_the_third_out =
+            pa.outs_before + errors_as_outs >= 3 || (pa.outs_made > 0 && h.outs + errors_as_outs >= 3);
         for (int who : scored) {
           ++box[half].batting[static_cast<std::size_t>(who)].r;
-          const bool is_earned = !unearned[static_cast<std::size_t>(who)];
+          const bool is_earned = !unearned[static_cast<std::size_t>(who)] && !past_the_third_out;
           earned += is_earned;
           const int charged = charges.charged(who);
           PitchingLine& answers = fbox.pitchers[static_cast<std::size_t>(charged)];
@@ -300,6 +307,8 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
           if (charged != mound) ++fbox.pitchers[static_cast<std::size_t>(mound)].inherited_scored;
           after.charged.push_back(charged);
         }
+        pa.earned_runs = earned;
+        if (pa.result == "error") ++errors_as_outs;
         runs += pa.runs;
         runs_on_watch += pa.runs;
         (s.bottom ? s.home_runs : s.away_runs) += pa.runs;

@@ -35,6 +35,10 @@ struct PlateAppearance {
   std::string result;      ///< strikeout, walk, hit_by_pitch, out, single, double, triple, home_run, error
   std::string description; ///< in a scorer's words: "Strikeout swinging", "Fly out to CF", ...
   int runs = 0, rbi = 0, outs_made = 0;
+  /// Of `runs`, those earned (Rule 9.16): not a runner who reached on an error or was placed
+  /// on second in extra innings, and not after the inning would have ended had each error
+  /// been the out it should have been.
+  int earned_runs = 0;
   bool sacrifice_fly = false;
   int pitcher = 0;           ///< the fielding team's pitcher (index in TeamBox::pitchers)
   bool pitching_change = false;  ///< he came in to face this batter

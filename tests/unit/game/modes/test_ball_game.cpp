@@ -87,6 +87,38 @@ TEST_CASE("a nine-inning game: the box score adds up, 27 outs a side unless the 
   }
 }
 
+TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9.16(a))", "[baseball][game]") {
+  // Rebuilt half-inning by half-inning from the plate appearances: no run is earned once the
+  // outs and the errors that put batters aboard make three (or on the play whose out makes
+  // them three), and the pitchers' earned runs are the plate appearances' own.
+  int reconstructed = 0;
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    GameOptions o;
+    o.seed = seed;
+    const GameRecord g = play_game(test::assets(), o);
+    int earned[2] = {0, 0}, errors = 0, half = -1;
+    for (const PlateAppearance& pa : g.plate_appearances) {
+      if (2 * pa.inning + pa.bottom != half) {
+        half = 2 * pa.inning + pa.bottom;
+        errors = 0;
+      }
+      CHECK(pa.earned_runs >= 0);
+      CHECK(pa.earned_runs <= pa.runs);
+      const bool past = pa.outs_before + errors >= 3 || (pa.outs_made > 0 && pa.outs_before + pa.outs_made + errors >= 3);
+      if (past) {
+        INFO("seed " << seed << ", inning " << pa.inning << ": " << pa.description);
+        CHECK(pa.earned_runs == 0);
+        reconstructed += pa.runs > 0;
+      }
+      if (pa.result == "error") ++errors;
+      earned[pa.bottom ? 1 : 0] += pa.earned_runs;
+    }
+    CHECK(earned[0] == g.home.pitching.er);
+    CHECK(earned[1] == g.away.pitching.er);
+  }
+  CHECK(reconstructed > 0);  // the 60 games have runs the errors made unearned
+}
+
 TEST_CASE("the play-by-play reads as a scorer's: sacrifice flies named, infield flies popped up", "[baseball][game]") {
   int innings = 0, sac = 0, pops = 0;
   for (const PlateAppearance& pa : games("pro", 12, 40, &innings)) {

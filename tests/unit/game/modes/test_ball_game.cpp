@@ -92,7 +92,8 @@ TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9
   // outs and the errors that put batters aboard make three (or on the play whose out makes
   // them three), and the pitchers' earned runs are the plate appearances' own.
   int reconstructed = 0;
-  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+  // Twelve games: seeds 1, 6 and 11 each have such a run (and the sanitizer stage plays them).
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     GameOptions o;
     o.seed = seed;
     const GameRecord g = play_game(test::assets(), o);
@@ -116,7 +117,7 @@ TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9
     CHECK(earned[0] == g.home.pitching.er);
     CHECK(earned[1] == g.away.pitching.er);
   }
-  CHECK(reconstructed > 0);  // the 60 games have runs the errors made unearned
+  CHECK(reconstructed > 0);  // runs the errors made unearned
 }
 
 TEST_CASE("the play-by-play reads as a scorer's: sacrifice flies named, infield flies popped up", "[baseball][game]") {

@@ -160,7 +160,7 @@ class GolfView final : public ModeView {
   double flight_struck_ = -1.0;    // which flight
   std::size_t slopes_for_ = 99;
   Vec3 slopes_ball_ = Vec3::Zero();
-  std::vector<SlopeArrow> slopes_;
+  std::vector<GroundArrow> slopes_;  // the green's slopes round the ball, as the scene draws them
   std::string saved_note_;
   double saved_note_at_ = -1.0;  // mode time it was first shown; -1 until then
   // A note shown for kNoteShown s from its first frame.
@@ -516,13 +516,13 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     const GolfRound& r = play_->round();
     const bool green = !r.finished() && r.lie() == "green";
     if (green && (slopes_for_ != r.card().size() || slopes_ball_ != r.ball())) {
-      slopes_ = green_slopes(*r.hole().world, r.ball(), r.hole().pin);
+      slopes_ = slope_arrows(green_slopes(*r.hole().world, r.ball(), r.hole().pin));
       slopes_for_ = r.card().size();
       slopes_ball_ = r.ball();
     } else if (!green) {
       slopes_.clear();
     }
-    if (scene_) scene_->set_ground_arrows(addressing ? slope_arrows(slopes_) : std::vector<GroundArrow>{});
+    if (scene_) scene_->set_ground_arrows(addressing ? slopes_ : std::vector<GroundArrow>{});
   } else if (scene_) {
     scene_->set_aim(std::nullopt);  // the shot's own line from where it was hit
     scene_->set_ground_arrows({});

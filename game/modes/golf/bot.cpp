@@ -141,6 +141,11 @@ std::string GolfBot::suggest(double distance, bool teed) const {
   return pick->club;
 }
 
+std::size_t GolfBot::stock_index(const std::string& club) const {
+  return static_cast<std::size_t>(
+      std::find_if(stock_.begin(), stock_.end(), [&](const Stock& s) { return s.club == club; }) - stock_.begin());
+}
+
 StrokeInput GolfBot::putt(const GolfRound& round) const {
   StrokeInput in;
   in.club = "putter";
@@ -383,7 +388,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
   // three-quarter wedge, when it stops nearer.
   constexpr double kPastForPartial = 6.0;  // m: about a third of the wedges' ~20 m gaps
   if (going_for_pin && !best.lost && best.in.meter.power >= 1.0 && best.reach - d > kPastForPartial) {
-    const Stock& s = *std::find_if(stock_.begin(), stock_.end(), [&](const Stock& k) { return k.club == best.in.club; });
+    const Stock& s = stock_[stock_index(best.in.club)];
     const Tried t = tune(s.club, std::clamp(std::pow(d / s.carry, 0.8), 0.05, 1.0), best.in.aim, 3);
     if (!t.lost && std::abs(t.reach - d) < std::abs(best.reach - d)) best = t;
   }
@@ -397,8 +402,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       if (t.lost) return std::numeric_limits<double>::infinity();
       return std::hypot(pin.x() - t.rest.x(), pin.z() - t.rest.z()) + kChipLieCost * (round.surface_at(t.rest) != "green");
     };
-    const std::size_t k = static_cast<std::size_t>(
-        std::find_if(stock_.begin(), stock_.end(), [&](const Stock& c) { return c.club == best.in.club; }) - stock_.begin());
+    const std::size_t k = stock_index(best.in.club);
     std::vector<Tried> options;
     if (best.reach > d && k + 1 < stock_.size() && allowed(stock_[k + 1])) options.push_back(tune(stock_[k + 1].club, 1.0, best.in.aim, 2));
     if (best.reach > d) options.push_back(tune(best.in.club, std::clamp(best.in.meter.power * std::pow(d / best.reach, 1.25), 0.05, 1.0), best.in.aim, 2));
@@ -419,8 +423,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       return tune(t.in.club, t.in.meter.power * (1.0 - spread(t.in.meter.power)), t.in.aim, 1);
     };
     if (rank(short_of(best)) > rank(best)) {
-      const std::size_t k = static_cast<std::size_t>(
-          std::find_if(stock_.begin(), stock_.end(), [&](const Stock& c) { return c.club == best.in.club; }) - stock_.begin());
+      const std::size_t k = stock_index(best.in.club);
       std::optional<Tried> firmer;
       if (best.in.meter.power < 1.0)
         firmer = tune(best.in.club, std::min(1.0, best.in.meter.power * (1.0 + spread(best.in.meter.power))), best.in.aim, 1);
@@ -449,8 +452,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       return sum / 5.0;
     };
     double best_cost = as_struck(tune(best.in.club, 1.0, best.in.aim, 1));
-    const std::size_t planned = static_cast<std::size_t>(
-        std::find_if(stock_.begin(), stock_.end(), [&](const Stock& k) { return k.club == best.in.club; }) - stock_.begin());
+    const std::size_t planned = stock_index(best.in.club);
     for (std::size_t k = planned; k < stock_.size(); k += kWayOutClubStride) {
       if (!allowed(stock_[k])) continue;
       for (int i = -kWayOutLines; i <= kWayOutLines; ++i) {

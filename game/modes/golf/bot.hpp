@@ -41,6 +41,8 @@ class GolfBot {
 
  private:
   StrokeInput putt(const GolfRound& round) const;
+  /// The club's place in stock_ (the bag's order, longest first); stock_.size() if absent.
+  std::size_t stock_index(const std::string& club) const;
   const Assets* assets_;  // a pointer: a bot is assignable (a round restarted)
   GolferSkill skill_;
   Rng rng_;

@@ -289,11 +289,21 @@ def flag():
     surface_of_revolution(m, "pole", [(0.0, 0.0125), (2.13, 0.0125)], (0, 0, 0),
                           ((0, 1, 0), (1, 0, 0), (0, 0, -1)), 10, False, True)
     top, h, w = 2.10, 0.36, 0.50
-    cloth = [(0.0, top - h, 0.0), (w, top - h, 0.0), (w, top, 0.0), (0.0, top, 0.0)]
-    m.flat_tri("flag", cloth[0], cloth[1], cloth[2])
-    m.flat_tri("flag", cloth[0], cloth[2], cloth[3])
-    m.flat_tri("flag", cloth[0], cloth[2], cloth[1])  # back side
-    m.flat_tri("flag", cloth[0], cloth[3], cloth[2])
+    # The cloth hangs in folds, as cloth does (pinned straight at the pole, the folds deepening
+    # toward the fly end): seen edge-on, along the wind, it still shows their zig-zag, ~10 cm
+    # across, where a flat sheet would vanish into a line. Two folds over its length.
+    segments, folds, depth = 8, 2.0, 0.05
+
+    def z(x):
+        return depth * (x / w) * math.sin(2.0 * math.pi * folds * x / w)
+
+    for i in range(segments):
+        x0, x1 = w * i / segments, w * (i + 1) / segments
+        q = [(x0, top - h, z(x0)), (x1, top - h, z(x1)), (x1, top, z(x1)), (x0, top, z(x0))]
+        m.flat_tri("flag", q[0], q[1], q[2])
+        m.flat_tri("flag", q[0], q[2], q[3])
+        m.flat_tri("flag", q[0], q[2], q[1])  # back side
+        m.flat_tri("flag", q[0], q[3], q[2])
     m.write(os.path.join(ROOT, "assets/meshes/flag.obj"), {"pole": (0.95, 0.95, 0.95), "flag": (0.90, 0.10, 0.10)},
             "flag: origin at the hole, pole 2.13 m up +y, cloth toward +x")
 

@@ -353,6 +353,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
   const std::size_t n = g.players().size();
   ImGui::SetNextWindowPos(ImVec2(0.5f * static_cast<float>(w) - 300, 150), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(600, 0), ImGuiCond_Always);
+  // Opaque: the scene's labels (drawn under the windows) must not read through the card.
+  ImGui::SetNextWindowBgAlpha(1.0f);
   ImGui::Begin(final ? "Final scorecard" : "Scorecard", nullptr, kFixed);
   const int cols = 3 + static_cast<int>(n) + (s.match || s.skins ? 1 : 0);
   if (ImGui::BeginTable("card", cols, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {

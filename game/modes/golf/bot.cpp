@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 
@@ -271,34 +273,42 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
     double reach = 0.0;  ///< m along the line where it stops (or is lost)
     bool lost = false;
     bool in_tree = false;      ///< its flight ends in a tree's branches or trunk
+    Vec3 land = Vec3::Zero();  ///< where it first lands
     Vec3 rest = Vec3::Zero();  ///< where it stops (or is lost)
+  };
+  // One correction from where `t` stopped: the aim turned onto the line (within 0.4 rad of the
+  // line played: a dogleg's corner may lie further off the line to the cup than that), and a
+  // partial swing's power scaled to the distance.
+  const auto correct = [&](const Tried& t, double* aim, double* power) {
+    const AlongAcross at = relative(round.ball(), line, t.rest);
+    if (at.along <= 1.0) return;
+    *aim = std::clamp(std::clamp(*aim - std::atan2(at.across, at.along), toward - 0.4, toward + 0.4), StrokeInput::kAim.min,
+                      StrokeInput::kAim.max);
+    if (*power < 1.0 && going_for_pin) *power = std::clamp(*power * std::pow(d / at.along, 0.8), 0.05, 1.0);
   };
   // `aim` starts the correction (a neighbour's); `iterations` simulations, the last one told.
   auto tune = [&](const std::string& club, double power, double aim, int iterations, double accuracy_ms = 0.0) {
     Tried t;
     t.in.club = club;
     t.in.meter.accuracy_ms = accuracy_ms;
-    for (int i = 0; i < iterations; ++i) {
+    for (int i = 0;; ++i) {
       t.in.aim = aim;
       t.in.meter.power = power;
       const ShotResult r = round.simulate(t.in);
       t.lost = r.end == ShotEnd::Water || r.end == ShotEnd::OutOfBounds || r.end == ShotEnd::StepLimit;
       t.in_tree = round.first_touch_in_a_tree(r.trajectory.summary);
-      const Vec3& rest = t.lost ? r.trajectory.summary.landing_position : r.trajectory.summary.rest_position;
-      const AlongAcross at = relative(round.ball(), line, rest);
-      t.reach = at.along;
-      t.rest = rest;
-      if (i + 1 == iterations) break;
-      // Corrections stay within 0.4 rad of the line played (a dogleg's corner may lie further
-      // off the line to the cup than that).
-      if (at.along > 1.0)
-        aim = std::clamp(std::clamp(aim - std::atan2(at.across, at.along), toward - 0.4, toward + 0.4), StrokeInput::kAim.min,
-                         StrokeInput::kAim.max);
-      if (power < 1.0 && going_for_pin && at.along > 1.0) power = std::clamp(power * std::pow(d / at.along, 0.8), 0.05, 1.0);
+      t.land = r.trajectory.summary.landing_position;
+      t.rest = t.lost ? t.land : r.trajectory.summary.rest_position;
+      t.reach = relative(round.ball(), line, t.rest).along;
+      if (i + 1 >= iterations) return t;
+      correct(t, &aim, &power);
     }
-    t.in.aim = aim;
-    t.in.meter.power = power;
-    return t;
+  };
+  // `more` simulations on from `t`: the same as having tuned it that many iterations longer.
+  const auto refine = [&](const Tried& t, int more) {
+    double aim = t.in.aim, power = t.in.meter.power;
+    correct(t, &aim, &power);
+    return tune(t.in.club, power, aim, more, t.in.meter.accuracy_ms);
   };
   if (d < shortest.carry) {
     // A partial wedge: carry grows a little faster than swing speed; start at that guess and
@@ -346,7 +356,7 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       if (!allowed(stock_[k]) || best.reach - d <= stock_[k - 1].carry - stock_[k].carry) break;
       const Tried t = tune(stock_[k].club, 1.0, aim, 1);
       if (!good(t)) break;
-      best = tune(stock_[k].club, 1.0, aim, 2);
+      best = refine(t, 1);
     }
   } else if (!best.lost) {
     // Short: one club longer, if it stays in play. Going for the cup, swung to its distance
@@ -422,14 +432,42 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
     const auto short_of = [&](const Tried& t) {
       return tune(t.in.club, t.in.meter.power * (1.0 - spread(t.in.meter.power)), t.in.aim, 1);
     };
-    if (rank(short_of(best)) > rank(best)) {
+    // Only where worse ground lies in a short miss's way is it simulated: along the line
+    // from where it would land (carry grows as power^1.25, less a margin for its bounce and
+    // the wind) through the plan's landing to its rest. On open fairway or green no short
+    // miss can finish worse.
+    const auto worse_ground_short = [&](const Tried& t) {
+      constexpr double kStep = 2.0;    // m between the ground's samples: a bunker's lip is wider
+      constexpr double kMargin = 5.0;  // m short of the estimate
+      const Vec3& b = round.ball();
+      const double carry = std::hypot(t.land.x() - b.x(), t.land.z() - b.z());
+      if (carry < kStep) return true;
+      const double lands = carry * std::pow(1.0 - spread(t.in.meter.power), 1.25) - kMargin;
+      const int plan = rank(t);
+      const auto worse = [&](const Vec3& p) {
+        const std::string s = round.surface_at(p);
+        return (s == "water" || s == "out_of_bounds" ? 3 : lie_rank(s)) > plan;
+      };
+      for (double x = std::max(0.0, lands); x < carry; x += kStep)
+        if (worse(b + (t.land - b) * (x / carry))) return true;
+      const double roll = std::hypot(t.rest.x() - t.land.x(), t.rest.z() - t.land.z());
+      for (double x = 0.0; x <= roll; x += kStep)
+        if (worse(roll > 0.0 ? Vec3(t.land + (t.rest - t.land) * (x / roll)) : t.land)) return true;
+      // A wedge that spins back stops short of where it landed: its short miss stops as much
+      // nearer the ball again as it lands short.
+      const Vec3 back = (b - t.land) / carry;
+      for (double x = kStep; x <= carry - lands; x += kStep)
+        if (worse(t.rest + back * x)) return true;
+      return false;
+    };
+    if (worse_ground_short(best) && rank(short_of(best)) > rank(best)) {
       const std::size_t k = stock_index(best.in.club);
       std::optional<Tried> firmer;
       if (best.in.meter.power < 1.0)
         firmer = tune(best.in.club, std::min(1.0, best.in.meter.power * (1.0 + spread(best.in.meter.power))), best.in.aim, 1);
       else if (k > 0 && allowed(stock_[k - 1]))
         firmer = tune(stock_[k - 1].club, 1.0, best.in.aim, 2);
-      if (firmer && rank(*firmer) <= rank(best) && rank(short_of(*firmer)) <= rank(best)) best = *firmer;
+      if (firmer && rank(*firmer) <= rank(best) && (!worse_ground_short(*firmer) || rank(short_of(*firmer)) <= rank(best))) best = *firmer;
     }
   }
   // Blocked: the plan flies into a tree. A player takes the way out that leaves the best next
@@ -451,7 +489,8 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       for (const double f : {-1.0, -0.5, 0.5, 1.0}) sum += cost(tune(planned.in.club, 1.0, planned.in.aim, 1, f * miss));
       return sum / 5.0;
     };
-    double best_cost = as_struck(tune(best.in.club, 1.0, best.in.aim, 1));
+    // The plan itself, swung full (a part swing is tried again at full power).
+    double best_cost = as_struck(best.in.meter.power == 1.0 ? best : tune(best.in.club, 1.0, best.in.aim, 1));
     const std::size_t planned = stock_index(best.in.club);
     for (std::size_t k = planned; k < stock_.size(); k += kWayOutClubStride) {
       if (!allowed(stock_[k])) continue;

@@ -105,10 +105,11 @@ std::string format_distance(double metres, const std::string& unit) {
 }
 
 // A golf ball's carry or run as a player reads it: yards (or metres) for a shot, feet (or
-// metres to the decimetre) under 20 m, as the HUD's putts and tap-ins read.
-std::string format_golf_distance(double metres, const std::string& unit) {
+// metres to the decimetre) when the whole shot (`scale`, m) is under 20 m, as the HUD's putts
+// and tap-ins read.
+std::string format_golf_distance(double metres, const std::string& unit, double scale) {
   constexpr double kShort = 20.0;  // m
-  if (metres >= kShort) return format_distance(metres, unit);
+  if (scale >= kShort) return format_distance(metres, unit);
   char buf[32];
   if (unit == "m") std::snprintf(buf, sizeof buf, "%.1f m", metres);
   else std::snprintf(buf, sizeof buf, "%.0f ft", metres / kFoot);
@@ -494,8 +495,11 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     const double end_t = samples.back().t;
     // A putt never leaves the ground (its skid's first instants are no flight): no carry.
     const bool rolled_only = s.apex_m < 0.05;
+    // One unit on one trail: a chip that carries 16 m and runs out to 26 m reads in yards both
+    // times, not "53 ft" beside "28 yd".
+    const double scale = std::max(s.carry_m, s.total_m);
     const auto shown = [&](double metres) {
-      return m.golf ? format_golf_distance(metres, m.input.distance_unit) : format_distance(metres, m.input.distance_unit);
+      return m.golf ? format_golf_distance(metres, m.input.distance_unit, scale) : format_distance(metres, m.input.distance_unit);
     };
     if (s.hang_time_s > 0 && !rolled_only && t >= s.hang_time_s - 1e-9) {
       const Vec3 lp = s.landing_position;

@@ -450,7 +450,10 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
   if (picked_up) key += "; PU picked up";
   if (conceded) key += "; C a hole conceded, - one left unfinished (no score)";
   if (restarted) key += "; R the hole was restarted from the menu (its first try not counted)";
-  ImGui::TextDisabled("%s", key.c_str());
+  // Wrapped: with several marks the key runs past the card's 600 px.
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", key.c_str());
+  ImGui::PopStyleColor();
   if (s.match) ImGui::Text("Match: %s", s.match->result.c_str());
   else if (final && s.holes > 0 && n > 1) {
     std::string names;

@@ -100,8 +100,8 @@ class GolfView final : public ModeView {
   void report(std::ostream& out) const override {
     const GolfRound& r = play_->group().round(0);
     out << "golf: hole " << std::min(play_->group().hole_index() + 1, r.course().holes.size()) << " of "
-        << r.course().holes.size() << ", " << r.total_strokes() << " strokes, " << play_->cancelled()
-        << " swings cancelled, " << to_string(play_->stage()) << "\n";
+        << r.course().holes.size() << ", " << r.total_strokes() << (r.total_strokes() == 1 ? " stroke, " : " strokes, ") << play_->cancelled()
+        << (play_->cancelled() == 1 ? " swing" : " swings") << " cancelled, " << to_string(play_->stage()) << "\n";
   }
 
  private:

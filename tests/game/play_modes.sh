@@ -47,7 +47,7 @@ cat "$work/log.txt"
 [ "$rc" -eq 0 ] || { echo "exit $rc (expected 0 on Quit)"; exit 1; }
 if grep -qi "assert" "$work/log.txt"; then echo "an assertion fired"; exit 1; fi
 # One swing cancelled, the caddie's tee shot the only stroke: the round kept across 16 Tabs.
-grep -Eq "^golf: hole 1 of 1, 1 strokes, 1 swings cancelled" "$work/log.txt" || { echo "the golf round was not kept"; exit 1; }
+grep -Eq "^golf: hole 1 of 1, 1 stroke, 1 swing cancelled" "$work/log.txt" || { echo "the golf round was not kept"; exit 1; }
 "$check" "$work/modes.png" 1280 800
 [ -n "${SWEETSPOT_GAME_ARTIFACTS:-}" ] && cp "$work/modes.png" "$SWEETSPOT_GAME_ARTIFACTS/" || true
 echo "play modes test passed"

@@ -176,7 +176,7 @@ BallCrossing meet_ball(const Vec3& ball_dir, double attack, double vertical_bat_
 }
 
 const char* contact_spot(const BatSpec& bat, double from_tip) {
-  if (bat.cor_factor_at(from_tip) >= 1.0 - 1e-9) return "on the barrel";
+  if (bat.cor_factor_at(from_tip) >= kBarrelCorFactor) return "on the barrel";
   return from_tip < bat.sweet_spot_from_tip ? "off the end of the bat" : "in on the hands";
 }
 

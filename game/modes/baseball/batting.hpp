@@ -182,9 +182,11 @@ struct SwingResult {
 inline constexpr double kFoulTipCone = 0.349;  // rad, 20°
 
 /// Where on `bat` a ball met `from_tip` m from the tip was struck, in a hitter's words: "on
-/// the barrel" over the plateau where the bat's restitution is whole (bats.toml's cor_profile:
-/// the vibrations a rigid bat lacks cost nothing there), else "off the end of the bat" out
-/// toward the tip or "in on the hands" toward the handle.
+/// the barrel" where the bat keeps at least kBarrelCorFactor of its restitution (bats.toml's
+/// cor_profile: the maple's 3.3-10.6 in from the tip, a ball there leaving within a few mph of
+/// the plateau's), else "off the end of the bat" out toward the tip or "in on the hands" toward
+/// the handle.
+inline constexpr double kBarrelCorFactor = 0.9;
 const char* contact_spot(const BatSpec& bat, double from_tip);
 
 /// Statcast: hard-hit EV ≥ 95 mph; sweet spot LA 8–32°; barrel LA ≤ 50, EV ≥ 98,

@@ -190,9 +190,12 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms) {
   if (stage_ == Stage::Batted) {
     // While the ball flies the call is its launch, as a broadcast shows it; the outcome when it lands.
     outcome_text_ = call_text_;
-    std::snprintf(text, sizeof text, "%.0f mph off the bat, %.0f deg, %s", mps_to_mph(last_.result.shot.launch.ball_speed),
-                  rad_to_deg(last_.result.shot.launch.vertical_angle),
-                  contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip));
+    // Where on the bat, and, when it went straight up or into the dirt, which side of the
+    // ball's centre: what to change next swing (Statcast's pop-ups leave above 50 deg).
+    const double la = rad_to_deg(last_.result.shot.launch.vertical_angle);
+    const char* side = la > 50.0 ? ", under the ball" : la < -20.0 ? ", on top of the ball" : "";
+    std::snprintf(text, sizeof text, "%.0f mph off the bat, %.0f deg, %s%s", mps_to_mph(last_.result.shot.launch.ball_speed), la,
+                  contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip), side);
     call_text_ = text;
   }
 }

@@ -26,7 +26,10 @@ std::string miss_call(const SwingResult& r, double timing_ms) {
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", when, std::abs(timing_ms),
                   timing_ms >= 0 ? "not around yet" : "already through the zone");
   else if (r.past_end)
-    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat", when, std::abs(timing_ms));
+    // The turned bat's end does not reach the ball's line: said as the hitter sees it, the end
+    // still coming round (late) or already round past the ball (early), over a middle pitch too.
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat (%s)", when, std::abs(timing_ms),
+                  timing_ms >= 0 ? "its end not yet round to the ball" : "its end already round past the ball");
   else if (miss > 0.0 && miss < 0.0095)  // under a centimetre it reads in millimetres, never "0 cm"
     std::snprintf(text, sizeof text, "Swinging strike: the bat passed %.0f mm %s the ball", std::max(1.0, std::round(1000.0 * miss)),
                   under > 0.0 ? "under" : "over");

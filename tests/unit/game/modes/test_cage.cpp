@@ -145,7 +145,8 @@ TEST_CASE("a miss is called in a hitter's words, never '0 cm'", "[modes][basebal
   CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 3 cm under the ball");
   r.crossing_undercut = 0.0;
   r.past_end = true;
-  CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, past the end of the bat");
+  CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, past the end of the bat (its end already round past the ball)");
+  CHECK(miss_call(r, 17.0) == "Swinging strike: late by 17 ms, past the end of the bat (its end not yet round to the ball)");
   r.past_end = false;
   r.through = true;
   CHECK(miss_call(r, 48.0) == "Swinging strike: late by 48 ms, the bat not around yet");

@@ -65,8 +65,8 @@ int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
         constexpr std::size_t kColumn = 32;
         const std::string play = pa.description.size() >= kColumn && !runs.empty() ? pa.description + "," : pa.description;
         char line[512];
-        std::snprintf(line, sizeof line, "%s %-2d %-6s #%d  %-32s %s", pa.bottom ? "bot" : "top", pa.inning,
-                      pa.bottom ? "home" : "away", pa.batter + 1, play.c_str(), runs.c_str());
+        std::snprintf(line, sizeof line, "%s %-2d %-6s #%d  %-*s %s", pa.bottom ? "bot" : "top", pa.inning,
+                      pa.bottom ? "home" : "away", pa.batter + 1, static_cast<int>(kColumn), play.c_str(), runs.c_str());
         std::string text = line;
         text.erase(text.find_last_not_of(' ') + 1);  // the padding is for the runs column only
         std::printf("%s\n", text.c_str());

@@ -553,7 +553,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     // and a number behind its cloth reads as another ("1$0").
     if (on_hole) {
       const auto base = camera.project(*m.flag_position, width, height);
-      const auto top = camera.project(*m.flag_position + Vec3(0.0, 2.13, 0.0), width, height);
+      const auto top = camera.project(*m.flag_position + Vec3(0.0, kFlagstickHeight, 0.0), width, height);
       if (base) {
         const double tall = std::max(40.0, top ? base->y() - top->y() : 0.0);
         // The cloth flies right of the pole: a number left of the aim line still fits beside it.

@@ -19,6 +19,10 @@
 
 namespace sweetspot {
 
+/// The flagstick's height: 2.13 m (7 ft, the usual height; the Rules set none), as
+/// assets/meshes/flag.obj models it.
+inline constexpr double kFlagstickHeight = 2.13;  // m
+
 /// An arrow lying on the ground (a green's downhill), drawn in the scene so the people and
 /// the ground in front of it hide it as they hide the turf.
 struct GroundArrow {

@@ -108,9 +108,8 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     const bool near = r.lie() == "green" || r.to_pin() < 20.0;
     ImGui::Text("To the pin: %s", near ? units.putt(r.to_pin()).c_str() : units.distance(r.to_pin()).c_str());
     const std::string& club = play.club();
-    double carry = 0.0;
-    for (const GolfBot::Stock& s : play.caddie().stock())
-      if (s.club == club) carry = s.carry;
+    const GolfBot::Stock* stock = play.caddie().stock_of(club);
+    const double carry = stock ? stock->carry : 0.0;
     if (club == "putter") ImGui::Text("Club: putter");
     else if (const std::optional<double> tree = play.tree_in_the_way(club))
       ImGui::Text("Club: %s (carry %s, a tree in the way at %s)", club.c_str(), units.distance(carry).c_str(),

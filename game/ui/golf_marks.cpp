@@ -55,9 +55,9 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const auto base = cam.project(pin, w, h);
   if (!base) return;
-  // The flagstick is 2.13 m (7 ft, the usual height; the Rules set no height) with a flag at its
-  // top; drawn at least 40 px tall so a pin 400 m away is still seen.
-  const auto top = cam.project(pin + Vec3(0.0, 2.13, 0.0), w, h);
+  // The flagstick (kFlagstickHeight) with a flag at its top, drawn at least 40 px tall so a
+  // pin 400 m away is still seen.
+  const auto top = cam.project(pin + Vec3(0.0, kFlagstickHeight, 0.0), w, h);
   ImVec2 b = px(*base), t = top ? px(*top) : ImVec2(b.x, b.y - 40.0f);
   if (b.y - t.y < 40.0f) t = ImVec2(b.x, b.y - 40.0f);
   // The cup: 108 mm across (Rules of Golf, Definitions "Hole"), never under 5 px.
@@ -75,7 +75,7 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
   if (top && b.y - px(*top).y >= kSceneFlagReadsPx) {
     // Its cloth does; its 25 mm pole is under 2 px wide until ~15 m away at 800 lines and
     // drops out of the raster, leaving the cloth afloat over the cup: drawn 2 px wide then.
-    constexpr float kPoleDiameterOverHeight = 0.025f / 2.13f;  // assets/meshes/flag.obj
+    constexpr float kPoleDiameterOverHeight = static_cast<float>(0.025 / kFlagstickHeight);  // assets/meshes/flag.obj
     if ((b.y - px(*top).y) * kPoleDiameterOverHeight < 2.0f) dl->AddLine(b, px(*top), IM_COL32(240, 240, 240, 255), 2.0f);
     return;
   }
@@ -119,13 +119,9 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
   const Vec3 side(-aim.z(), 0.0, aim.x());
   const std::string& club = play.club();
   // The selected club's carry: the caddie's (the player's bag when they measured one).
-  double carry = 0.0, spread = 0.0, side_spread = 0.0;
-  for (const GolfBot::Stock& s : play.caddie().stock())
-    if (s.club == club) {
-      carry = s.carry;
-      spread = s.spread;
-      side_spread = s.side_spread;
-    }
+  const GolfBot::Stock* stock = play.caddie().stock_of(club);
+  double carry = stock ? stock->carry : 0.0;
+  double spread = stock ? stock->spread : 0.0, side_spread = stock ? stock->side_spread : 0.0;
   if (club == "putter") carry = r.to_pin();
   // The player's own dispersion with this club this round, when they have hit it twice with a
   // full swing (a part swing's carry is another club's: it would smear the spread).

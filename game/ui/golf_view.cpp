@@ -501,10 +501,8 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       scene_->set_shot(ball_at_rest(play_->ball_centre()), std::nullopt);
       scene_->set_aim(addressing ? std::optional<Vec3>(play_->aim_direction()) : std::nullopt);
       // The stripes' numbers around where the chosen club carries come first.
-      std::optional<double> carry;
-      for (const GolfBot::Stock& st : play_->caddie().stock())
-        if (addressing && st.club == play_->club()) carry = st.carry;
-      scene_->set_focus(carry);
+      const GolfBot::Stock* stock = addressing ? play_->caddie().stock_of(play_->club()) : nullptr;
+      scene_->set_focus(stock ? std::optional<double>(stock->carry) : std::nullopt);
       // The player at address: his club square behind the ball along his aim.
       std::optional<ImpactorPlacement> club;
       if (addressing) club = club_at_address(play_->ball_centre(), play_->aim_direction(), assets_.equipment().ball("tour").radius);

@@ -114,9 +114,9 @@ double fielder_run_time(const FielderAbility& f, double distance);
 double run_speed(const FielderAbility& f, double distance);
 /// Statcast's catch probability as a function of the time to spare (s, + ahead of the ball,
 /// against the run the fielder's reaction, acceleration and top speed allow): a normal ogive
-/// with a 0.35 s spread centred a quarter-second ahead, so a catch that takes everything he
-/// has is a 5-star play (Statcast: ≤ 25 %; here 24 %), half a second short is near hopeless
-/// (1.6 %) and a second to spare is routine (98 %). The quarter-second: the route's
+/// with a 0.4 s spread (kCatchSpread) centred a quarter-second ahead, so a catch that takes
+/// everything he has is about a 5-star play (Statcast: ≤ 25 %; here 27 %), half a second short
+/// is near hopeless (3 %) and a second to spare is routine (97 %). The quarter-second: the route's
 /// inefficiency and the last steps' slowing under the ball (ESTIMATE).
 double catch_probability(double time_to_spare);
 

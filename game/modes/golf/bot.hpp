@@ -35,6 +35,11 @@ class GolfBot {
   MeterInput full_swing();
 
   const std::vector<Stock>& stock() const { return stock_; }
+  /// `club`'s entry in the stock; nullptr when the bag has no such club.
+  const Stock* stock_of(const std::string& club) const {
+    const std::size_t k = stock_index(club);
+    return k < stock_.size() ? &stock_[k] : nullptr;
+  }
   /// The club a player of this skill would hit `distance` m (the shortest that carries it;
   /// the longest when none does); never the putter, the driver only from a tee.
   std::string suggest(double distance, bool teed) const;

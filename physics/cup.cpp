@@ -7,10 +7,20 @@
 namespace sweetspot {
 namespace {
 
-/// Lip-out: the far rim turns the ball away from the centre by at most this (rad) and keeps
-/// this share of its speed. ESTIMATES (see cup.hpp).
-constexpr double kMaxLipTurn = 0.5 * kPi;
-constexpr double kLipSpeedKept = 0.8;
+/// Rolling on the rim: the ball's kinetic energy is 7/10 m v² (a solid sphere rolling without
+/// slip, I = 2/5 m r²), so along the rim gravity accelerates it by 5/7 of its share of g.
+constexpr double kRollingGravity = 5.0 / 7.0;
+/// The rim ride's time step (s) and the longest ride followed (s): a ball still circling
+/// after that has lost its speed to the turf and drops.
+constexpr double kRideStep = 2.0e-5;
+constexpr double kRideLongest = 1.0;
+
+/// The ball's centre in the rim's frame: ψ its tilt over the rim edge toward the hole
+/// (0: straight above the edge; π/2: level with it, against the hole's wall), φ its angle
+/// around the hole's axis.
+struct RimState {
+  double psi = 0.0, psi_dot = 0.0, phi = 0.0;
+};
 
 }  // namespace
 
@@ -109,22 +119,125 @@ CupPass pass_over_cup(const Cup& cup, double ball_radius, const Vec3& from, cons
     out.velocity = after + v.dot(up) * up;
     return out;
   }
-  // Slow enough for its chord (Holmes): it drops.
-  if (speed < cup_capture_speed(cup, ball_radius, offset)) {
+  const double R = cup.radius, r = ball_radius;
+  // Where the centre reaches the hole's circle, and the velocity there split into its part
+  // toward the hole's axis and its part along the rim.
+  const Vec3 at_rim = a + enter * d;
+  const Vec3 e1 = at_rim / at_rim.norm();   // outward, from the axis to the entry point
+  const Vec3 e2 = up.cross(e1).normalized(); // along the rim
+  const double inward = -vt.dot(e1), along = vt.dot(e2);
+  out.fraction = std::clamp(enter, 0.0, 1.0);
+  const auto holed = [&](double time) {
     out.kind = CupPass::Kind::Holed;
-    out.fraction = std::clamp(enter, 0.0, 1.0);
+    out.time_on_rim = time;
     out.velocity.setZero();
     return out;
+  };
+  const auto lips_out = [&](const Vec3& leave, const Vec3& velocity, double time) {
+    out.kind = CupPass::Kind::LipOut;
+    out.leave_offset = leave - at_rim;
+    out.time_on_rim = time;
+    out.velocity = velocity + v.dot(up) * up;
+    return out;
+  };
+  if (inward * inward >= kGravity * r) {
+    // Too fast toward the axis to follow the rim's edge down (the edge would have to pull):
+    // the ball leaves it and falls over the hole (Holmes). Slow enough for its chord: it drops.
+    if (speed < cup_capture_speed(cup, r, offset)) return holed(0.0);
+    // Faster: its front meets the far rim's edge and it tips over it. The edge grips (the
+    // turf's cut), so the ball's angular momentum about the edge is kept through the blow
+    // (the blow acts at the edge) and the ball leaves pivoting about it: up, over and turned
+    // toward the hole's middle, the more the farther the edge lies round from straight ahead.
+    // The blow's loss is what slows it; Holmes's rule alone says it gets over.
+    const Vec3 side = closest.norm() > 0.0 ? Vec3(closest / closest.norm()) : Vec3::Zero();
+    const double half_chord = std::sqrt(std::max(0.0, R * R - offset * offset));
+    // x: along the path from its closest approach to the axis; the ball fell from the entry.
+    const auto height = [&](double x) {
+      const double t = (x + half_chord) / speed;
+      return r - 0.5 * kGravity * t * t;
+    };
+    const auto clear = [&](double x) {  // > 0 while the ball's surface is short of the edge
+      const double z = height(x), rho = std::hypot(offset, x);
+      return z > 0.0 && (R - rho) * (R - rho) + z * z > r * r;
+    };
+    double lo = 0.0, hi = half_chord;
+    if (clear(lo)) {
+      constexpr int kScan = 256;
+      for (int k = 1; k <= kScan; ++k) {
+        const double x = half_chord * k / kScan;
+        if (!clear(x)) {
+          hi = x;
+          break;
+        }
+        lo = x;
+      }
+      for (int k = 0; k < 50; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (clear(mid) ? lo : hi) = mid;
+      }
+    } else {
+      hi = 0.0;
+    }
+    const double x = hi, t = (x + half_chord) / speed, z = std::max(height(x), 0.0);
+    const Vec3 centre = offset * side + x * dir;  // in the plane, from the axis
+    const double rho = centre.norm();
+    const Vec3 radial = rho > 0.0 ? Vec3(centre / rho) : dir;
+    const Vec3 arm = -(R - rho) * radial + z * up;  // from the edge to the ball's centre
+    const Vec3 vel = speed * dir - kGravity * t * up;
+    const Vec3 spin = up.cross(vt) / r;  // rolling when it left the green
+    const double mass = 1.0, inertia = 0.4 * mass * r * r;  // per unit mass: only ratios matter
+    const Vec3 about_edge = mass * arm.cross(vel) + inertia * spin;
+    const Mat3 pivot_inertia =
+        inertia * Mat3::Identity() + mass * (arm.squaredNorm() * Mat3::Identity() - arm * arm.transpose());
+    const Vec3 pivot = pivot_inertia.ldlt().solve(about_edge);
+    const double energy = 0.5 * pivot.dot(pivot_inertia * pivot);
+    // Over the edge it rolls on the green (7/10 m v²) the way the pivot carries its top.
+    Vec3 heading = pivot.cross(up);
+    heading -= heading.dot(up) * up;
+    const double leave_speed = std::sqrt(2.0 * energy / (1.4 * mass));
+    if (heading.norm() < 1e-12 || leave_speed < 1e-6) return lips_out(centre, Vec3::Zero(), t);
+    return lips_out(centre, leave_speed * heading.normalized(), t);
   }
-  // Lips out: turned away from the centre, the more the nearer the rim and the slower.
-  const Vec3 side = closest.norm() > 0.0 ? Vec3(closest / closest.norm()) : Vec3::Zero();
-  const double v0 = cup_capture_speed(cup, ball_radius, 0.0);
-  const double turn = kMaxLipTurn * (offset / cup.radius) * std::min(1.0, v0 / speed);
-  const Vec3 turned = std::cos(turn) * dir + std::sin(turn) * side;
-  out.kind = CupPass::Kind::LipOut;
-  out.fraction = std::clamp(s, 0.0, 1.0);
-  out.velocity = kLipSpeedKept * speed * turned.normalized() + v.dot(up) * up;
-  return out;
+  // Slow toward the axis: the ball rolls onto the rim's edge and rides it, gravity tipping it
+  // into the hole and its turn around the hole's axis flinging it out (Hogan & Antali 2025's
+  // rim lip-out). Its centre moves on the torus of radius r about the edge: with ρ = R − r sinψ
+  // and rolling's 7/10 m v², the Lagrangian gives
+  //     ψ'' = −ρ cosψ φ'²/r + (5/7)(g/r) sinψ,   ρ² φ' = R·(speed along the rim) constant,
+  // and the edge pushes while g cosψ − r ψ'² + ρ φ'² sinψ > 0.
+  const double h = R * along;
+  RimState st;
+  st.psi_dot = inward / r;
+  const auto rho_of = [&](double psi) { return R - r * std::sin(psi); };
+  const auto accel = [&](double psi) {
+    const double rho = rho_of(psi), phi_dot = h / (rho * rho);
+    return -rho * std::cos(psi) * phi_dot * phi_dot / r + kRollingGravity * kGravity / r * std::sin(psi);
+  };
+  double time = 0.0;
+  while (true) {
+    // One RK4 step of (ψ, ψ', φ).
+    const auto phi_rate = [&](double psi) { const double rho = rho_of(psi); return h / (rho * rho); };
+    const double dt = kRideStep;
+    const double p1 = st.psi_dot, a1 = accel(st.psi), f1 = phi_rate(st.psi);
+    const double p2 = st.psi_dot + 0.5 * dt * a1, a2 = accel(st.psi + 0.5 * dt * p1), f2 = phi_rate(st.psi + 0.5 * dt * p1);
+    const double p3 = st.psi_dot + 0.5 * dt * a2, a3 = accel(st.psi + 0.5 * dt * p2), f3 = phi_rate(st.psi + 0.5 * dt * p2);
+    const double p4 = st.psi_dot + dt * a3, a4 = accel(st.psi + dt * p3), f4 = phi_rate(st.psi + dt * p3);
+    st.psi += dt / 6.0 * (p1 + 2.0 * p2 + 2.0 * p3 + p4);
+    st.psi_dot += dt / 6.0 * (a1 + 2.0 * a2 + 2.0 * a3 + a4);
+    st.phi += dt / 6.0 * (f1 + 2.0 * f2 + 2.0 * f3 + f4);
+    time += dt;
+    const double rho = rho_of(st.psi), phi_dot = h / (rho * rho);
+    const double press = kGravity * std::cos(st.psi) - r * st.psi_dot * st.psi_dot + rho * phi_dot * phi_dot * std::sin(st.psi);
+    const bool off_edge = st.psi < 0.0 || (press < 0.0 && st.psi_dot < 0.0);
+    if (off_edge) {
+      const Vec3 out_dir = std::cos(st.phi) * e1 + std::sin(st.phi) * e2;
+      const Vec3 round = -std::sin(st.phi) * e1 + std::cos(st.phi) * e2;
+      const Vec3 velocity = -r * std::cos(st.psi) * st.psi_dot * out_dir + rho * phi_dot * round;
+      return lips_out(rho * out_dir, velocity, time);
+    }
+    // Against the hole's wall, off the edge toward the middle, or still circling after a
+    // second: it drops.
+    if (st.psi >= 0.5 * kPi || press < 0.0 || time > kRideLongest) return holed(time);
+  }
 }
 
 }  // namespace sweetspot

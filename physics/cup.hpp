@@ -6,10 +6,16 @@
 // is over the hole; it is caught when it has dropped a ball radius before its centre reaches
 // the far edge less a radius, so the fastest ball that drops is
 //     v_c(b) = (L(b) − R_ball) · √(g / (2 R_ball)),   L(b) = 2 √(R_hole² − b²),
-// 1.31 m/s through the centre (b = 0) for a 108 mm hole and a 42.7 mm ball. A faster ball
-// passes over and meets the far rim: it lips out, turned away from the hole's centre and
-// slowed (an ESTIMATE of what Hogan & Antali 2025 describe qualitatively: the more it was
-// off-centre and the slower, the more the rim turns it).
+// 1.31 m/s through the centre (b = 0) for a 108 mm hole and a 42.7 mm ball. Holmes's fall
+// starts where the ball leaves the rim's edge, which it does at once when it comes in toward
+// the hole's axis faster than √(g r) (0.46 m/s: the edge would have to pull to keep it). A
+// faster ball meets the far rim's edge while its centre is still above it; the edge grips, so
+// the ball keeps its angular momentum about the edge through the blow and tips over it,
+// turned toward the hole's middle when it passed off centre and slowed by the blow. A ball that comes in slower toward the axis (a glancing putt) rolls
+// onto the edge and rides it (Hogan & Antali, "Mechanics of the golf lip out", R. Soc. Open
+// Sci. 12, 250907, 2025): gravity tips it in, its turn around the hole flings it out, and it
+// leaves turned around the hole, toward the side it did not pass on, by as much as half a
+// turn, or drops.
 //
 // Flagstick (Rules of Golf 13.2a: the player may leave it in): a vertical cylinder of radius
 // 6.35 mm (0.25 in, the stick Pelz measured) at the centre. A ball that strikes it rebounds
@@ -45,6 +51,10 @@ struct CupPass {
   Kind kind = Kind::Miss;
   double fraction = 1.0;        ///< along from→to where it happened
   Vec3 velocity = Vec3::Zero(); ///< after (LipOut, Stick: the ball goes on)
+  /// LipOut: where the ball leaves the rim, from the point at `fraction` (m, in the green's
+  /// plane), and the time it spent over and around the hole after reaching it (s; Holed too).
+  Vec3 leave_offset = Vec3::Zero();
+  double time_on_rim = 0.0;
 };
 /// Where the centre's straight path from→to enters the hole's circle (radius cup.radius
 /// about its axis), as a fraction of the way; +infinity when the path misses the circle or

@@ -508,7 +508,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
       const CupPass pass = pass_over_cup(*m.cup, r, p, p1, v, up);
       if (pass.kind != CupPass::Kind::Miss) {
         const double f = pass.fraction;
-        s.t += f * step_t;
+        s.t += f * step_t + pass.time_on_rim;
         if (pass.kind == CupPass::Kind::Holed) {
           s.y.segment<3>(0) = m.cup->centre - (m.cup->depth - r) * up;
           s.y.segment<6>(3).setZero();
@@ -518,7 +518,7 @@ ShotEvent roll_step(const ShotModel& m, ShotState& s, double until) {
           ev.contact = c;
           return ev;
         }
-        set_rolling(s, p + f * (p1 - p), pass.velocity, n, r);
+        set_rolling(s, p + f * (p1 - p) + pass.leave_offset, pass.velocity, n, r);
         s.over_cup = true;
         ev.kind = ShotEventKind::LipOut;
         ev.contact = c;

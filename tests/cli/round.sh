@@ -273,7 +273,21 @@ set +e; msg=$("$bin" round "$plot_dir/pond.toml" 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q "pond.toml:14: pin .* lies on water (allowed: green)" <<<"$msg" || fail "a pin in the pond: exit $rc, $msg"
 # A ball lodged in a tree's branches is unplayable (Rule 19.2c): one penalty stroke, and the
 # next stroke is played from the ground below it. Only strokes with the putter count as putts.
-"$bin" round national --format match --bot scratch --bot amateur --handicap 0 --handicap 14 --seed 48 --json | python3 -c '
+# On the National's 10th a full driver 16 deg left of the line lodges in the crown of a tree
+# in the left rough (a tee shot that never reaches the cup: nothing at the hole moves it); the
+# amateur bot plays on after the script.
+cat > "$plot_dir/tree.toml" <<TOML
+name = "The National's 10th"
+[[hole]]
+number = 1
+par = 4
+index = 1
+world = "$SWEETSPOT_ROOT/assets/courses/national/world.toml"
+tee = ["480.616m", "-419.993m"]
+pin = ["93.454m", "-422.677m"]
+TOML
+printf '[[stroke]]\nclub = "driver"\npower = "100%%"\naim = "-16deg"\n' > "$plot_dir/tree_swing.toml"
+check_card='
 import json, sys
 j = json.load(sys.stdin)
 lodged = 0
@@ -288,6 +302,8 @@ for p in j["players"]:
                 assert h["penalties"] >= 1, h
                 assert abs(b["start_m"][0] - a["rest_m"][0]) < 0.01 and abs(b["start_m"][2] - a["rest_m"][2]) < 0.01, (a, b)
                 assert b["start_m"][1] < a["rest_m"][1] - 5.0, (a, b)  # from the ground, not the branches
-assert lodged >= 1, "seed 48: the amateur lodges his drive in a tree on the 10th"' || fail "a ball lodged in a tree"
+assert lodged >= int(sys.argv[1]), "lodged %d" % lodged'
+"$bin" round "$plot_dir/tree.toml" --calm --swings "$plot_dir/tree_swing.toml" --bot amateur --json | python3 -c "$check_card" 1 || fail "a ball lodged in a tree"
+"$bin" round national --format match --bot scratch --bot amateur --handicap 0 --handicap 14 --seed 48 --json | python3 -c "$check_card" 0 || fail "match card: putts and strokes"
 rm -rf "$plot_dir"
 echo "round: ok"

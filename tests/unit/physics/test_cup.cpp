@@ -115,3 +115,73 @@ TEST_CASE("a putt skids, then rolls at 5/7 of its speed", "[cup][skid]") {
   const double mu = default_fairway().mu;
   CHECK(s.position().x() == Approx(12.0 * 4.0 / (49.0 * mu * kGravity)).epsilon(0.01));
 }
+
+namespace {
+
+// The hole at the origin on a flat green (+y up); a ball rolling along +x, its centre passing
+// `offset` m to the +z side of the hole's axis at `speed` m/s.
+CupPass lip(double offset, double speed) {
+  const Cup cup;
+  return pass_over_cup(cup, kBallR, Vec3(-0.2, kBallR, offset), Vec3(0.2, kBallR, offset), Vec3(speed, 0.0, 0.0),
+                       Vec3::UnitY());
+}
+
+double turn_deg(const CupPass& p) { return rad_to_deg(std::atan2(p.velocity.z(), p.velocity.x())); }
+
+}  // namespace
+
+TEST_CASE("a lip-out turns the ball round the hole, toward its middle, the more the slower it comes", "[cup]") {
+  // Hogan & Antali (R. Soc. Open Sci. 2025): a lipping ball is turned around the rim, toward
+  // the side of the hole it did not pass on. Past Holmes's capture speed it tips over the far
+  // edge: its angular momentum about the edge is kept, so it turns the more the farther round
+  // it meets the edge (off centre) and the slower it comes, and the blow never adds speed.
+  for (const double offset : {0.015, 0.030, 0.045}) {
+    const double capture = cup_capture_speed(Cup{}, kBallR, offset);
+    double last_turn = -1.0;
+    for (const double speed : {4.0, 2.5, 1.8, 1.4}) {
+      if (speed <= capture) continue;
+      INFO("offset " << offset << " m, " << speed << " m/s (capture " << capture << ")");
+      const CupPass p = lip(offset, speed);
+      REQUIRE(p.kind == CupPass::Kind::LipOut);
+      CHECK(p.velocity.z() < 0.0);                         // toward the middle (-z), never away
+      CHECK(p.velocity.x() > 0.0);                         // on over the hole
+      CHECK(p.velocity.norm() <= speed * (1.0 + 1e-12));   // no speed from the rim
+      const double turn = -turn_deg(p);
+      CHECK(turn >= last_turn - 1e-9);                     // slower: turned more
+      last_turn = turn;
+      // The mirror image lips out the mirror way.
+      const CupPass m = lip(-offset, speed);
+      CHECK(m.velocity.z() == Approx(-p.velocity.z()).margin(1e-12));
+      CHECK(m.velocity.x() == Approx(p.velocity.x()).margin(1e-12));
+    }
+  }
+  // Through the middle it goes straight on, slowed by the blow on the far edge: just past the
+  // capture speed it barely tips over; at 4 m/s it keeps most of its speed.
+  const CupPass slow = lip(0.0, 1.4), fast = lip(0.0, 4.0);
+  REQUIRE(slow.kind == CupPass::Kind::LipOut);
+  REQUIRE(fast.kind == CupPass::Kind::LipOut);
+  CHECK(slow.velocity.z() == Approx(0.0).margin(1e-12));
+  CHECK(slow.velocity.norm() < 0.3);
+  CHECK(fast.velocity.norm() > 0.8 * 4.0);
+  CHECK(fast.velocity.norm() < 4.0);
+}
+
+TEST_CASE("a glancing putt rides the rim: it drops when slow, is flung out round the hole when faster", "[cup]") {
+  // Coming in toward the axis slower than sqrt(g r) the ball rolls onto the edge and rides
+  // it (Hogan & Antali's rim lip-out): gravity tips it in, its turn round the hole flings it
+  // out. On the rim it rolls without slipping and keeps its energy: it leaves at its speed.
+  const CupPass in = lip(0.048, 0.30);
+  CHECK(in.kind == CupPass::Kind::Holed);
+  const CupPass out = lip(0.048, 0.45);
+  REQUIRE(out.kind == CupPass::Kind::LipOut);
+  CHECK(out.velocity.norm() == Approx(0.45).epsilon(1e-3));
+  CHECK(-turn_deg(out) > 30.0);  // turned well round, toward the middle
+  CHECK(out.time_on_rim > 0.1);
+  // It leaves from the rim, round from where it came on: farther along and nearer the middle.
+  CHECK(out.leave_offset.z() < 0.0);
+  // Faster, the same line is barely turned.
+  const CupPass quick = lip(0.048, 1.1);
+  REQUIRE(quick.kind == CupPass::Kind::LipOut);
+  CHECK(-turn_deg(quick) < -turn_deg(out));
+  CHECK(-turn_deg(quick) > 0.0);
+}

@@ -33,7 +33,7 @@ Eigen::Vector4d append_legend(MeshData& out, const std::vector<LegendEntry>& ent
     append_text(out, e.name, screen(x, y), right, up, h_px * mpp, kText);
     x += text_width(e.name, h_px) + 1.5 * gap;
   }
-  return {x_start - 4.0, y - h_px - 4.0, x, y + 4.0};
+  return {x_start - 4.0, y - h_px - 4.0, x, y + text_descent(h_px) + 4.0};
 }
 
 }  // namespace sweetspot

@@ -27,11 +27,18 @@ void append_band(MeshData& out, const Vec3& a, const Vec3& b, double width, cons
 /// True if the 5x7 font has a glyph for c (digits, a few lower-case letters, space, '.').
 bool font_has_glyph(char c);
 
-/// Text drawn as one quad per lit font cell, `height` metres tall (cap height), starting at
-/// `origin` (bottom-left) and running along `right`, with `up` as the glyph's up. Unknown
-/// characters draw as blanks. Returns the text width in metres.
+/// Rows of the font's cell below the baseline (g, p, y hang into them).
+inline constexpr int kDescentRows = 2;
+
+/// Text drawn as one quad per lit font cell, `height` metres tall (cap height), standing on
+/// the baseline through `origin` (its left end) and running along `right`, with `up` as the
+/// glyph's up; descenders reach text_descent(height) below it. Unknown characters draw as
+/// blanks. Returns the text width in metres.
 double append_text(MeshData& out, std::string_view text, const Vec3& origin, const Vec3& right, const Vec3& up,
                    double height, const Eigen::Vector3f& color);
+
+/// How far below the baseline append_text's descenders reach, in the units of `height`.
+double text_descent(double height);
 
 /// Width in metres append_text would use.
 double text_width(std::string_view text, double height);

@@ -471,7 +471,8 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     // Kept a word's space apart from the labels already placed: "150" and "200" of two
     // far stripes squeezed edge to edge read as one number.
     const double gap = 0.5 * h_px;
-    const Eigen::Vector4d r(at_px->x() - gap, at_px->y() - h_px - pad, at_px->x() + w_px + gap, at_px->y() + pad);
+    const Eigen::Vector4d r(at_px->x() - gap, at_px->y() - h_px - pad, at_px->x() + w_px + gap,
+                            at_px->y() + text_descent(h_px) + pad);
     for (const auto& o : taken) {
       if (r[0] < o[2] && o[0] < r[2] && r[1] < o[3] && o[1] < r[3]) return;
     }

@@ -254,6 +254,25 @@ TEST_CASE("label text: every marker character has a glyph, width grows per chara
   CHECK(m.vertices.size() == 48 * 4);
 }
 
+TEST_CASE("label text: g, p and y hang below the baseline, the other letters stand on it", "[render][unit]") {
+  // Cell = 1 m (height 7): the baseline is y = 0; "yd" read as "3d" while the font had no descent.
+  auto lowest = [](const std::string& text) {
+    MeshData m;
+    append_text(m, text, Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), 7.0, Eigen::Vector3f::Ones());
+    float y = 1e9f;
+    for (const Vertex& v : m.vertices) y = std::min(y, v.position.y());
+    return y;
+  };
+  for (const char* c : {"g", "p", "y"}) {
+    INFO(c);
+    CHECK(lowest(c) == Approx(-text_descent(7.0)));
+  }
+  for (const char* c : {"0", "a", "d", "f", "t", "m", "."}) {
+    INFO(c);
+    CHECK(lowest(c) == Approx(0.0));
+  }
+}
+
 TEST_CASE("the tracer's halo lies under the core and fades from the ball back to the launch", "[render][unit]") {
   ShotTrajectory s;
   for (int i = 0; i < 5; ++i) {

@@ -38,7 +38,7 @@ drive "--mode golf --holes 1 --no-flyover --bot none" '
 for i in 1 2 3 4 5; do
   xdotool key b; sleep 0.3; xdotool key Return; sleep 1.8
   xdotool key F12; sleep 0.2; xdotool key space; sleep 0.5; xdotool key F12; sleep 0.2
-  xdotool key Escape; sleep 0.3; xdotool key Escape; sleep 0.3
+  xdotool key Escape; sleep 0.3
 done
 for i in 1 2 3 4 5 6; do xdotool key b; sleep 0.3; xdotool key Return; sleep 1.0; done
 xdotool key F12'

@@ -42,6 +42,26 @@ Camera full_shot_address_camera(const Vec3& ball, const Vec3& aim) {
   return c;
 }
 
+Camera putt_address_camera(const Vec3& ball, const Vec3& aim, double to_pin) {
+  const Vec3 right(-aim.z(), 0.0, aim.x());
+  Camera c;
+  c.eye = ball - 4.0 * aim + 0.4 * right + Vec3(0.0, 1.9, 0.0);
+  c.target = ball + (std::min(to_pin, 12.0) + 0.5) * aim;
+  c.target.y() = ball.y() - 0.2;
+  c.fov_y = deg_to_rad(45.0);
+  // Looking that far ahead alone puts a long putt's ball at the image's bottom edge, under
+  // the meter (the bottom ~110 px of the window): tilt down until the ball is no lower
+  // than 55 % of the half-height below the centre, which clears the meter in any window
+  // 500 px or taller and keeps the cup and the flag of a 40 ft putt in view.
+  const Vec3 to_ball = ball - c.eye, to_target = c.target - c.eye;
+  const double ball_dip = std::atan2(-to_ball.y(), std::hypot(to_ball.x(), to_ball.z()));
+  const double max_below_centre = std::atan(0.55 * std::tan(0.5 * c.fov_y));
+  const double flat = std::hypot(to_target.x(), to_target.z());
+  const double least_pitch = ball_dip - max_below_centre;
+  if (std::atan2(-to_target.y(), flat) < least_pitch) c.target.y() = c.eye.y() - flat * std::tan(least_pitch);
+  return c;
+}
+
 Camera clear_view_of(const Camera& c, const Vec3& subject, const Terrain& world) {
   constexpr double kClearance = 0.5, kNearest = 3.0, kAbove = 2.5;  // m
   SurfaceContact hit;

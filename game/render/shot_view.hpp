@@ -34,6 +34,13 @@ ImpactorPlacement club_at_address(const Vec3& centre, const Vec3& aim, double ba
 /// down of its 20°), the target area a degree or two below the horizon in its upper half.
 Camera full_shot_address_camera(const Vec3& ball, const Vec3& aim);
 
+/// The view of a putt at `ball` toward `aim` (unit, horizontal) with the cup `to_pin` m
+/// away: 4 m behind and 0.4 m right of the line (aside of the golfer addressing it from
+/// the left), 1.9 m up, looking down the line toward the cup (up to 12.5 m ahead), tilted
+/// down as far as it takes to hold the ball no lower than 55 % of the half-height below
+/// the image's centre, above the swing meter at the bottom of the window.
+Camera putt_address_camera(const Vec3& ball, const Vec3& aim, double to_pin);
+
 /// `c` moved so nothing of `world` (a tree's trunk or crown, a bank) stands between its eye
 /// and `subject` (a golfer's head): the eye comes forward along its line to just in front
 /// of the first thing in the way, and where that would put it nearer than 3 m, 2.5 m above

@@ -44,21 +44,7 @@ namespace {
 
 /// The view of a stroke at address: behind ball `b` down the aim line `d` (unit, flat).
 Camera address_camera_at(const Vec3& b, const Vec3& d, bool putt, double to_pin) {
-  // Behind the ball looking down the aim line: low and close for a putt; for a full shot
-  // behind the golfer (full_shot_address_camera).
-  Camera c;
-  if (putt) {
-    // 4 m back and 0.4 m right of the line, 1.9 m up: the golfer addressing from the line's
-    // left stands aside of the line to the cup instead of filling the view's left half, and
-    // the flag of a putt up to ~40 ft stays in the frame.
-    const Vec3 right(-d.z(), 0.0, d.x());
-    c.eye = b - 4.0 * d + 0.4 * right + Vec3(0.0, 1.9, 0.0);
-    c.target = b + (std::min(to_pin, 12.0) + 0.5) * d;
-    c.target.y() = b.y() - 0.2;
-    c.fov_y = deg_to_rad(45.0);
-    return c;
-  }
-  return full_shot_address_camera(b, d);
+  return putt ? putt_address_camera(b, d, to_pin) : full_shot_address_camera(b, d);
 }
 
 Vec3 flat_unit(const Vec3& from, const Vec3& to) {

@@ -6,6 +6,8 @@
 
 #include "game/content/scenario.hpp"
 #include "game/render/camera.hpp"
+#include "game/render/shot_scene.hpp"
+#include "game/render/shot_view.hpp"
 #include "support/test_assets.hpp"
 #include "game/rules/run_shot.hpp"
 
@@ -139,4 +141,26 @@ TEST_CASE("behind, side and top look along the shot's target line, not the world
   CHECK((f.launch - behind.eye).dot(line) > 10.0);
   const Camera side = frame_shot(CameraKind::Side, f, w, h);
   CHECK(side.right().dot(line) > 0.95);
+}
+
+TEST_CASE("a putt's view holds the ball above the swing meter, the cup and the flag in the frame", "[render][unit]") {
+  // The meter takes the bottom ~110 px of the window (golf_hud.cpp: its bar at h - 80, its
+  // label above it). A 40 ft putt's ball used to sit at y = 716 of 800, under it.
+  const Vec3 ball(3.0, 0.021, -2.0), aim = Vec3(1.0, 0.0, 1.0).normalized();
+  for (const auto& [w, h] : {std::pair{1280, 800}, std::pair{1280, 720}, std::pair{960, 540}}) {
+    for (const double to_pin : {0.5, 1.0, 3.0, 6.0, 9.0, 12.2, 18.0, 30.0}) {
+      INFO(w << "x" << h << ", putt of " << to_pin << " m");
+      const Camera c = putt_address_camera(ball, aim, to_pin);
+      const auto at = c.project(ball, w, h);
+      REQUIRE(at);
+      CHECK(at->y() < h - 110.0);
+      CHECK(at->y() > 0.5 * h);  // still the lower half: the line runs up the image from it
+      if (to_pin <= 12.2) {  // the cup up to ~40 ft; the flag's top too from 10 ft (a shorter
+                             // putt's view looks down at the cup, the flag above it)
+        const Vec3 cup = ball + to_pin * aim;
+        CHECK(in_frame(c, Vec3(cup.x(), 0.0, cup.z()), w, h, 2.0));
+        if (to_pin >= 3.0) CHECK(in_frame(c, Vec3(cup.x(), kFlagstickHeight, cup.z()), w, h, 2.0));
+      }
+    }
+  }
 }

@@ -7,11 +7,15 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
 
 #include "game/modes/replay.hpp"
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
 #include "game/ui/cage_people.hpp"
+#include "game/ui/two_lines.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -251,15 +255,20 @@ class CageView final : public ModeView {
     const float panel_bottom = draw_stats(c, w, h);
     hud_bottom_ = panel_bottom;
     if (!c.call_text().empty()) {
-      // The call in large type, in the sky right of the HUD panel (clear of the center-field
-      // sign and the pitcher), or below the panel when the window is too narrow for it.
+      // The call in large type, in the sky right of the HUD panel (clear of the outfield
+      // wall's distance signs and the pitcher): on one line, else cut in two at a clause
+      // break; below the panel only when even two lines are too wide for the window.
       constexpr float kCallScale = 1.6f;
-      const float right = kStatsPanelRight + 16.0f;
-      const float text_w = banner_text_width(c.call_text().c_str(), kCallScale);
-      const bool beside = right + text_w + 40.0f <= static_cast<float>(w);
+      const float right = kStatsPanelRight + 16.0f, room = static_cast<float>(w) - right - 40.0f;
+      const auto width = [&](std::string_view t) { return banner_text_width(std::string(t).c_str(), kCallScale); };
+      const std::string& call = c.call_text();
+      auto lines = std::pair<std::string, std::string>{call, std::string()};
+      if (width(call) > room) lines = split_in_two_lines(call, width);
+      const bool beside = std::max(width(lines.first), width(lines.second)) <= room;
+      if (!beside) lines = {call, std::string()};
       const float centre = beside ? 0.5f * (right + static_cast<float>(w)) : 0.5f * static_cast<float>(w);
-      const float y = beside ? 22.0f : panel_bottom + 14.0f;
-      const float bottom = draw_banner(c.call_text().c_str(), centre, y, kCallScale);
+      float bottom = draw_banner(lines.first.c_str(), centre, beside ? 22.0f : panel_bottom + 14.0f, kCallScale);
+      if (!lines.second.empty()) bottom = draw_banner(lines.second.c_str(), centre, bottom + 10.0f, kCallScale);
       hud_bottom_ = std::max(hud_bottom_, static_cast<double>(bottom));
     }
     if (options_.pitches > 0 && static_cast<int>(c.swings().size()) >= options_.pitches && c.stage() == Stage::Called)

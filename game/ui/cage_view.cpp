@@ -260,7 +260,7 @@ class CageView final : public ModeView {
       // break; below the panel only when even two lines are too wide for the window.
       constexpr float kCallScale = 1.6f;
       const float right = kStatsPanelRight + 16.0f, room = static_cast<float>(w) - right - 40.0f;
-      const auto width = [&](std::string_view t) { return banner_text_width(std::string(t).c_str(), kCallScale); };
+      const auto width = [&](std::string_view t) { return banner_text_width(t, kCallScale); };
       const std::string& call = c.call_text();
       auto lines = std::pair<std::string, std::string>{call, std::string()};
       if (width(call) > room) lines = split_in_two_lines(call, width);

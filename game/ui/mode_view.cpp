@@ -18,8 +18,9 @@ void fit_renderer(Renderer& renderer, int w, int h, double scale) {
 
 void draw_banner(const char* text, int width, float y) { draw_banner(text, 0.5f * static_cast<float>(width), y, 1.0f); }
 
-float banner_text_width(const char* text, float scale) {
-  return ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize() * scale, 1e9f, 0.0f, text).x;
+float banner_text_width(std::string_view text, float scale) {
+  const float size = ImGui::GetFontSize() * scale;
+  return ImGui::GetFont()->CalcTextSizeA(size, 1e9f, 0.0f, text.data(), text.data() + text.size()).x;
 }
 
 float draw_banner(const char* text, float centre_x, float y, float scale) {

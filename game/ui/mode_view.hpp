@@ -6,6 +6,7 @@
 
 #include <initializer_list>
 #include <ostream>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -63,7 +64,7 @@ void draw_banner(const char* text, int width, float y);
 /// The same box, `scale` times the font's size, centred on `centre_x` px; returns its bottom (px).
 float draw_banner(const char* text, float centre_x, float y, float scale);
 /// px the text of such a banner spans (without its box's padding).
-float banner_text_width(const char* text, float scale);
+float banner_text_width(std::string_view text, float scale);
 /// px the banner's box reaches below its `y` (its text's line and the box's padding).
 inline constexpr float kBannerHeight = 24.0f;
 

@@ -142,9 +142,31 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
                   rad_to_deg(tilt));
     check_range(why, w.strike_loft, at_strike, "rad");
   }
+  // The face angle likewise, after the loft it turns with.
+  if (!std::isnan(w.strike_face_angle)) {
+    if (w.face_angle != 0.0) throw InputError(std::string("swing.strike_face_angle: ") + kFaceAngleGivenTwice);
+    const double turn = strike_turn(club, face_centre_loft(w, club), w.impact_toe, up);
+    const Range at_strike{GolfSwing::kFaceAngle.min + turn, GolfSwing::kFaceAngle.max + turn};
+    char why[104];
+    std::snprintf(why, sizeof why, "swing.strike_face_angle (the %s's face turns %.1f deg at this strike)",
+                  club.name.c_str(), rad_to_deg(turn));
+    check_range(why, w.strike_face_angle, at_strike, "rad");
+  }
 }
 
 double strike_tilt(const ClubSpec& club, double up) { return std::atan(up / club.roll_radius); }
+
+double strike_turn(const ClubSpec& club, double centre_loft, double toe, double up) {
+  // The head frame's normal at the strike, pitched by the loft about the toe axis (z): its
+  // toe component is unchanged, its forward one becomes cos L - sin L · up/R_roll.
+  return std::atan2(toe / club.bulge_radius, std::cos(centre_loft) - std::sin(centre_loft) * up / club.roll_radius);
+}
+
+double face_centre_face_angle(const GolfSwing& swing, const ClubSpec& club) {
+  if (std::isnan(swing.strike_face_angle)) return swing.face_angle;
+  const double up = std::isnan(swing.impact_up) ? club.strike_height : swing.impact_up;
+  return swing.strike_face_angle - strike_turn(club, face_centre_loft(swing, club), swing.impact_toe, up);
+}
 
 Vec3 head_direction(const GolfSwing& swing) {
   const double ca = std::cos(swing.attack_angle);
@@ -198,10 +220,11 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
   validate_material(material, "impact");
   validate_golf_swing(swing, club);
   const double loft = face_centre_loft(swing, club);
+  const double face_angle = face_centre_face_angle(swing, club);
 
   // Head pose: loft about the head's toe axis (z), then the face angle about vertical
   // (+ open turns the face toward +z, i.e. right).
-  const Quat q = axis_angle(-swing.face_angle, Vec3::UnitY()) * axis_angle(loft, Vec3::UnitZ());
+  const Quat q = axis_angle(-face_angle, Vec3::UnitY()) * axis_angle(loft, Vec3::UnitZ());
   const Mat3 rot = q.toRotationMatrix();
 
   // Contact point and normal on the curved face, head frame.

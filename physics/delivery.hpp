@@ -34,8 +34,14 @@ struct GolfSwing {
   /// face exceeds the face-centre loft by the roll's tilt at the strike (strike_tilt()).
   /// NaN -> from dynamic_loft; setting both is an error. Same range as kDynamicLoft.
   double strike_loft = std::numeric_limits<double>::quiet_NaN();
-  double face_angle = 0;       ///< rad, + open (face pointing right of target)
+  double face_angle = 0;       ///< rad, + open (face pointing right of target), at the face centre
   static constexpr Range kFaceAngle{deg_to_rad(-30.0), deg_to_rad(30.0)};
+  /// rad, + open, the face's direction where it meets the ball: what TrackMan reports as
+  /// "face angle" (the direction the face points at the centre-point of contact), which on a
+  /// bulged driver face is open of the face centre's by the bulge's turn at a toe strike
+  /// (strike_turn()). NaN -> from face_angle; setting it with a face_angle other than 0 is
+  /// an error. Same range as kFaceAngle.
+  double strike_face_angle = std::numeric_limits<double>::quiet_NaN();
   double impact_toe = 0;       ///< m from the face centre, + toward the toe; ±20 mm is a big miss
   static constexpr Range kImpactToe{-0.05, 0.05};  ///< half a driver face (~110 mm wide)
   /// m from the face centre, + up the face; NaN -> club.strike_height (the tour player's
@@ -99,11 +105,23 @@ double strike_tilt(const ClubSpec& club, double up);
 /// rad, the face-centre loft the swing delivers: dynamic_loft, else strike_loft less the
 /// tilt at the swing's strike, else the club's default.
 double face_centre_loft(const GolfSwing& swing, const ClubSpec& club);
+/// rad, how far the face's bulge (heel-to-toe curvature) turns the horizontal direction of
+/// the face normal, + open, at a strike `toe` metres toward the toe and `up` metres up on a
+/// face whose centre has loft `centre_loft`: the azimuth of the normal (1, up/R_roll,
+/// toe/R_bulge) after the loft, atan2(toe/R_bulge, cos L - sin L · up/R_roll). 2.4° at a
+/// half-inch toe strike on a 305 mm bulge; ~0 on an iron's flat face.
+double strike_turn(const ClubSpec& club, double centre_loft, double toe, double up);
+/// rad, the face-centre face angle the swing delivers: strike_face_angle less the turn at
+/// the swing's strike, else face_angle.
+double face_centre_face_angle(const GolfSwing& swing, const ClubSpec& club);
 /// Unit vector of the face centre's motion: up by the attack angle, right by the path.
 Vec3 head_direction(const GolfSwing& swing);
 /// Why a swing that sets both swing.dynamic_loft and swing.strike_loft is refused.
 inline constexpr const char* kLoftGivenTwice =
     "give the loft at the face centre (swing.dynamic_loft) or where the face meets the ball (swing.strike_loft), not both";
+/// Why a swing that sets both swing.face_angle and swing.strike_face_angle is refused.
+inline constexpr const char* kFaceAngleGivenTwice =
+    "give the face angle at the face centre (swing.face_angle) or where the face meets the ball (swing.strike_face_angle), not both";
 void validate_bat_swing(const BatSwing& swing, const BatSpec& bat, const BallSpec& ball);
 void validate_pitch(const Pitch& pitch);
 

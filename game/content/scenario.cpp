@@ -87,6 +87,11 @@ ShotSpec spec_from(const CheckedDoc& doc) {
       if (!std::isnan(w.dynamic_loft) && !std::isnan(w.strike_loft))
         throw InputError(doc.origin("swing.strike_loft") + ": swing.strike_loft: " + kLoftGivenTwice);
       w.face_angle = doc.quantity("swing.face_angle");
+      w.strike_face_angle = doc.quantity_if_set("swing.strike_face_angle").value_or(std::nan(""));
+      // A face angle of 0 (the scenarios' "square") is the absence of one: an override of
+      // the strike's face angle may stand on a square scenario.
+      if (!std::isnan(w.strike_face_angle) && w.face_angle != 0.0)
+        throw InputError(doc.origin("swing.strike_face_angle") + ": swing.strike_face_angle: " + kFaceAngleGivenTwice);
       if (doc.has("swing.impact_offset")) {
         const auto offset = doc.list("swing.impact_offset");
         w.impact_toe = offset[0];

@@ -122,7 +122,9 @@ Schema build_scenario_schema() {
   k.push_back(quantity("swing.dynamic_loft", Angle, &GolfSwing::kDynamicLoft, "deg", "", "delivered loft at the face centre (default: the club's)", C));
   k.push_back(quantity("swing.strike_loft", Angle, &GolfSwing::kDynamicLoft, "deg", "",
                        "delivered loft where the face meets the ball, TrackMan's dynamic loft (instead of swing.dynamic_loft)", C));
-  k.push_back(quantity("swing.face_angle", Angle, &GolfSwing::kFaceAngle, "deg", "0deg", "face angle to target, + open (right)", C));
+  k.push_back(quantity("swing.face_angle", Angle, &GolfSwing::kFaceAngle, "deg", "0deg", "face angle to target at the face centre, + open (right)", C));
+  k.push_back(quantity("swing.strike_face_angle", Angle, &GolfSwing::kFaceAngle, "deg", "",
+                       "face angle to target where the face meets the ball, TrackMan's face angle (instead of swing.face_angle, which stays 0)", C));
   k.push_back(list("swing.impact_offset", Length, 2, {&GolfSwing::kImpactToe, &GolfSwing::kImpactUp, nullptr}, "mm",
                    "", "impact point [toe +, up +] from the face centre (default: the club's usual strike)", C));
   k.push_back(quantity("swing.closure_rate", Spin, &GolfSwing::kClosureRate, "deg/s", "0deg/s", "face closure rate, + closing", C));

@@ -51,7 +51,10 @@ struct ClubNumbers {
   double speed_at_impact = 0.0;     ///< m/s of the face at the contact point
   double attack_angle = 0.0;        ///< rad, + up
   double path = 0.0;                ///< rad, + in-to-out (right)
-  double face_to_target = 0.0;      ///< rad, + open (right)
+  double face_to_target = 0.0;      ///< rad, + open (right), at the face centre
+  /// rad, + open, the face's direction where it meets the ball (the face-centre angle turned
+  /// by the bulge at the strike): what TrackMan and the launch-monitor table call "face angle".
+  double strike_face_angle = 0.0;
   double dynamic_loft = 0.0;        ///< rad, at the face centre
   /// rad, the face's loft where it meets the ball (the face-centre loft tilted by the roll at
   /// the strike): what TrackMan and the launch-monitor table call "dynamic loft".

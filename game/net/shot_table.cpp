@@ -62,9 +62,10 @@ std::optional<ShotResult> predict_from_club_data(const Assets& assets, const std
   g.club_speed = mph_to_mps(*c.speed_mph);
   g.attack_angle = c.angle_of_attack_deg.value_or(0.0) / kDegPerRad;
   g.club_path = c.path_deg.value_or(0.0) / kDegPerRad;
-  g.face_angle = c.face_to_target_deg.value_or(0.0) / kDegPerRad;
+  // Face angle and loft as a device measures them: where the face meets the ball
+  // (TrackMan's definitions), so a toe strike's bulge is not counted twice.
+  g.strike_face_angle = c.face_to_target_deg.value_or(0.0) / kDegPerRad;
   // A loft of 0 is how connectors say "not measured"; the club's typical loft stands in.
-  // A device measures dynamic loft where the face meets the ball (TrackMan's definition).
   if (c.loft_deg && *c.loft_deg > 0.0) g.strike_loft = *c.loft_deg / kDegPerRad;
   if (c.horizontal_impact_mm) g.impact_toe = *c.horizontal_impact_mm / 1000.0;
   if (c.vertical_impact_mm && *c.vertical_impact_mm != 0.0) g.impact_up = *c.vertical_impact_mm / 1000.0;

@@ -215,11 +215,11 @@ std::vector<Metric> build() {
   m.push_back(angle("attack_angle", "Attack angle", "attack_angle", club, [](const ShotResult& r) { return r.club.attack_angle; }));
   m.push_back(angle("club_path", "Club path", "club_path", club, [](const ShotResult& r) { return r.club.path; },
                     "(+ in-to-out)"));
+  // As a launch monitor reports them: the face angle and loft where the face meets the ball
+  // (a toe strike on a driver's bulged face opens it ~2°, a high strike on its roll adds ~2°
+  // of loft), and the 3D angle between the head's direction and that face.
   m.push_back(angle("face_angle", "Face angle", "face_angle", club,
-                    [](const ShotResult& r) { return r.club.face_to_target; }, "(+ open)"));
-  // As a launch monitor reports them: the loft where the face meets the ball (a high strike
-  // on a driver's rolled face adds ~2°), and the 3D angle between the head's direction and
-  // that face.
+                    [](const ShotResult& r) { return r.club.strike_face_angle; }, "(+ open)"));
   m.push_back(angle("dynamic_loft", "Dynamic loft", "dynamic_loft", club, [](const ShotResult& r) { return r.club.strike_loft; }));
   m.push_back(angle("spin_loft", "Spin loft", "spin_loft", club, [](const ShotResult& r) { return r.club.spin_loft; }));
   m.push_back(text("impact_point", "Impact point", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {

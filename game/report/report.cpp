@@ -63,6 +63,7 @@ nlohmann::json shot_json(const ShotResult& r) {
           {"attack_angle_deg", r.club.attack_angle * kDegPerRad},
           {"path_deg", r.club.path * kDegPerRad},
           {"face_angle_deg", r.club.face_to_target * kDegPerRad},
+          {"strike_face_angle_deg", r.club.strike_face_angle * kDegPerRad},
           {"dynamic_loft_deg", r.club.dynamic_loft * kDegPerRad},
           {"strike_loft_deg", r.club.strike_loft * kDegPerRad},
           {"spin_loft_deg", r.club.spin_loft * kDegPerRad},
@@ -117,9 +118,11 @@ nlohmann::json gspro_json(const ShotResult& r, int shot_number) {
   j["ClubData"] = {
       {"Speed", club ? mps_to_mph(c.speed) : 0.0},
       {"AngleOfAttack", club ? c.attack_angle * kDegPerRad : 0.0},
-      {"FaceToTarget", club ? c.face_to_target * kDegPerRad : 0.0},
+      // A launch monitor's face angle and loft are the face's where it meets the ball
+      // (TrackMan's definitions), as predict_from_club_data reads them back.
+      {"FaceToTarget", club ? c.strike_face_angle * kDegPerRad : 0.0},
       {"Lie", club ? c.lie * kDegPerRad : 0.0},
-      {"Loft", club ? c.dynamic_loft * kDegPerRad : 0.0},
+      {"Loft", club ? c.strike_loft * kDegPerRad : 0.0},
       {"Path", club ? c.path * kDegPerRad : 0.0},
       {"SpeedAtImpact", club ? mps_to_mph(c.speed_at_impact) : 0.0},
       {"VerticalFaceImpact", club ? c.impact_up * 1000.0 : 0.0},

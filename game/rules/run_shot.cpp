@@ -53,12 +53,13 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
       k.speed_at_impact = d.impactor_speed;
       k.attack_angle = w.attack_angle;
       k.path = w.club_path;
-      k.face_to_target = w.face_angle;
+      k.face_to_target = face_centre_face_angle(w, *s.club);
       k.dynamic_loft = face_centre_loft(w, *s.club);
       k.lie = s.club->lie;
       k.impact_toe = w.impact_toe;
       k.impact_up = std::isnan(w.impact_up) ? s.club->strike_height : w.impact_up;
       k.strike_loft = k.dynamic_loft + strike_tilt(*s.club, k.impact_up);
+      k.strike_face_angle = k.face_to_target + strike_turn(*s.club, k.dynamic_loft, k.impact_toe, k.impact_up);
       // TrackMan's spin loft: the angle between the head's direction (attack and path) and
       // the face's normal where it meets the ball; a face open or shut to the path adds to it.
       k.spin_loft = std::acos(std::clamp(d.impact_input.normal.normalized().dot(head_direction(w)), -1.0, 1.0));

@@ -160,6 +160,10 @@ double LabModel::value(LabParam p) const {
       const GolfSwing& w = std::get<ClubStrike>(s.strike).swing;
       return resolved_.club ? face_centre_loft(w, *resolved_.club) : w.dynamic_loft;
     }
+    case LabParam::FaceAngle: {
+      const GolfSwing& w = std::get<ClubStrike>(s.strike).swing;
+      return resolved_.club ? face_centre_face_angle(w, *resolved_.club) : w.face_angle;
+    }
     case LabParam::ImpactUp: {
       const double v = std::get<ClubStrike>(s.strike).swing.impact_up;
       return std::isnan(v) && resolved_.club ? resolved_.club->strike_height : v;
@@ -181,11 +185,17 @@ void LabModel::apply(const Intent& in) {
       const auto p = static_cast<LabParam>(in.param);
       if (in.param < 0 || in.param > static_cast<int>(LabParam::WindDirection)) break;
       ShotSpec spec = resolved_.spec;
-      // A loft given where the face meets the ball becomes the face's own loft first, so an
-      // edit of the strike height moves the contact over the face instead of turning the face.
-      if (auto* club = std::get_if<ClubStrike>(&spec.strike); club && resolved_.club && !std::isnan(club->swing.strike_loft)) {
-        club->swing.dynamic_loft = face_centre_loft(club->swing, *resolved_.club);
-        club->swing.strike_loft = std::nan("");
+      // A loft or face angle given where the face meets the ball becomes the face centre's
+      // first, so an edit of the strike moves the contact over the face instead of turning it.
+      if (auto* club = std::get_if<ClubStrike>(&spec.strike); club && resolved_.club) {
+        if (!std::isnan(club->swing.strike_face_angle)) {
+          club->swing.face_angle = face_centre_face_angle(club->swing, *resolved_.club);
+          club->swing.strike_face_angle = std::nan("");
+        }
+        if (!std::isnan(club->swing.strike_loft)) {
+          club->swing.dynamic_loft = face_centre_loft(club->swing, *resolved_.club);
+          club->swing.strike_loft = std::nan("");
+        }
       }
       if (p == LabParam::E) spec.impact.e = in.value;
       else if (p == LabParam::Et) spec.impact.e_t = in.value;
@@ -285,10 +295,19 @@ std::vector<std::string> LabModel::edit_overrides() const {
     if (k != nullptr)
       out.push_back("swing.strike_loft=" + save_text(value(LabParam::DynamicLoft) + strike_tilt(*resolved_.club, up), *k));
   }
+  // The face angle likewise, turned by the bulge at the strike it now has.
+  const bool keep_strike_face = base && now && resolved_.club && !std::isnan(base->swing.strike_face_angle);
+  if (keep_strike_face && std::isnan(now->swing.strike_face_angle)) {
+    const KeySpec* k = scenario_schema().find("swing.strike_face_angle", kClubKeys);
+    const double turn = strike_turn(*resolved_.club, value(LabParam::DynamicLoft), value(LabParam::ImpactToe),
+                                    value(LabParam::ImpactUp));
+    if (k != nullptr) out.push_back("swing.strike_face_angle=" + save_text(value(LabParam::FaceAngle) + turn, *k));
+  }
   for (const LabParam p : edited_) {
     const LabParamInfo& info = lab_param_info(p);
     const KeySpec* k = scenario_schema().find(info.key, info.strikes);
-    if (k == nullptr || (keep_strike_loft && p == LabParam::DynamicLoft)) continue;
+    if (k == nullptr || (keep_strike_loft && p == LabParam::DynamicLoft) || (keep_strike_face && p == LabParam::FaceAngle))
+      continue;
     if (p == LabParam::ImpactToe || p == LabParam::ImpactUp) {
       if (offset_done) continue;
       offset_done = true;

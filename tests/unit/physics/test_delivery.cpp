@@ -306,6 +306,79 @@ TEST_CASE("a launch monitor's dynamic loft is the face's loft where it meets the
                                               !Contains("swing.dynamic_loft"));
 }
 
+TEST_CASE("a launch monitor's face angle is the face's direction where it meets the ball", "[delivery][golf]") {
+  // TrackMan defines face angle at the centre-point of contact. The driver's bulge (305 mm)
+  // opens the normal of a half-inch toe strike by ~atan(12.7/305) = 2.4° (a little more
+  // with the loft: the azimuth of the lofted normal).
+  const ClubSpec& driver = eq().club("driver");
+  const double loft = driver.dynamic_loft, up = driver.strike_height;
+  CHECK(rad_to_deg(strike_turn(driver, loft, 0.0127, up)) == Approx(2.44).margin(0.02));
+  CHECK(strike_turn(driver, loft, 0.0, up) == 0.0);
+  CHECK(strike_turn(driver, loft, -0.0127, up) == -strike_turn(driver, loft, 0.0127, up));
+  CHECK(std::abs(rad_to_deg(strike_turn(eq().club("7-iron"), deg_to_rad(34.0), 0.0127, 0.0))) < 0.1);  // flat face
+  // The strike's face angle is the horizontal direction of the contact normal, to rounding,
+  // at any strike, loft given either way, face open or shut.
+  for (const double toe : {-0.02, 0.0, 0.0127}) {
+    for (const double given : {-3.0, 0.0, 2.0}) {
+      GolfSwing s;
+      s.impact_toe = toe;
+      s.strike_loft = deg_to_rad(13.0);
+      s.strike_face_angle = deg_to_rad(given);
+      const Vec3 n = golf("driver", s).impact_input.normal;
+      INFO("toe " << toe << " face " << given);
+      CHECK(rad_to_deg(std::atan2(n.z(), n.x())) == Approx(given).margin(1e-9));
+    }
+  }
+  // The same face, named either way, is the same strike, to the bit.
+  GolfSwing at_strike;
+  at_strike.impact_toe = 0.0127;
+  at_strike.strike_face_angle = 0.0;
+  GolfSwing at_centre = at_strike;
+  at_centre.strike_face_angle = std::numeric_limits<double>::quiet_NaN();
+  at_centre.face_angle = face_centre_face_angle(at_strike, driver);
+  CHECK(rad_to_deg(at_centre.face_angle) == Approx(-2.44).margin(0.02));
+  CHECK(golf("driver", at_strike).impact.ball_after.angular_velocity ==
+        golf("driver", at_centre).impact.ball_after.angular_velocity);
+  // Both given is a contradiction, named; a strike angle past the range at this strike too.
+  GolfSwing both = at_strike;
+  both.face_angle = deg_to_rad(1.0);
+  CHECK_THROWS_WITH(golf("driver", both), Contains("swing.strike_face_angle") && Contains("not both"));
+  GolfSwing wide = at_strike;
+  wide.strike_face_angle = deg_to_rad(-29.0);
+  CHECK_THROWS_WITH(golf("driver", wide), Contains("swing.strike_face_angle") && Contains("turns 2.4 deg"));
+}
+
+TEST_CASE("gear effect: a half-inch toe strike, square where it meets the ball, draws as TrackMan measured", "[delivery][golf]") {
+  // TrackMan (2009; McLean & Young, The Ultimate Guide to TrackMan Swing Analysis): from one
+  // dimple (0.14 in) to 1/2 in toward the toe, with the face square to the path, the driver's
+  // spin axis moves 14° toward a draw (± 3°: whole degrees and the monitor's repeatability).
+  // Tour delivery at its usual strike height; TrackMan's face angle is at the contact.
+  auto axis_deg = [](double toe) {
+    GolfSwing s;
+    s.club_speed = mph_to_mps(113.0);
+    s.attack_angle = deg_to_rad(-1.3);
+    s.impact_toe = toe;
+    s.strike_face_angle = 0.0;
+    const LaunchMetrics m = measure_launch(golf("driver", s).launch);
+    return rad_to_deg(m.spin.axis_rad);
+  };
+  CHECK(axis_deg(0.0127) - axis_deg(0.00356) == Approx(-14.0).margin(3.0));
+  // The same strikes with the face centre square: the bulge opens the toe strike's face and
+  // its D-plane takes most of the draw back (a bulge is there to start the ball right of a
+  // draw that brings it home).
+  auto centre_axis_deg = [](double toe) {
+    GolfSwing s;
+    s.club_speed = mph_to_mps(113.0);
+    s.attack_angle = deg_to_rad(-1.3);
+    s.impact_toe = toe;
+    const LaunchMetrics m = measure_launch(golf("driver", s).launch);
+    return rad_to_deg(m.spin.axis_rad);
+  };
+  const double centre_square = centre_axis_deg(0.0127) - centre_axis_deg(0.00356);
+  CHECK(centre_square < 0.0);
+  CHECK(centre_square > axis_deg(0.0127) - axis_deg(0.00356));
+}
+
 TEST_CASE("TrackMan's average golfer's driver delivery launches as TrackMan measured it", "[delivery][golf]") {
   // TrackMan Combine averages, male "average golfer" (14.5 handicap), driver (trackman.com,
   // "What is dynamic loft" / "Spin rate" / "Launch angle", Combine blocks, 2024): 94 mph,

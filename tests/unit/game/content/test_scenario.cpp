@@ -53,6 +53,17 @@ TEST_CASE("the loft is given at the face centre or where the face meets the ball
                     Catch::Contains("swing.strike_loft") && Catch::Contains("not both"));
 }
 
+TEST_CASE("the face angle is given at the face centre or where the face meets the ball, never both", "[scenario-run]") {
+  // The built-in driver says its face is square (0°): that is no face angle, and the strike's
+  // may stand on it.
+  const Scenario s = load_scenario(test::assets(), "golf/driver", {"swing.strike_face_angle=-1.5deg"});
+  const auto& club = std::get<ClubStrike>(s.spec.strike);
+  CHECK(rad_to_deg(club.swing.strike_face_angle) == Approx(-1.5));
+  CHECK(club.swing.face_angle == 0.0);
+  CHECK_THROWS_WITH(load_scenario(test::assets(), "golf/driver", {"swing.strike_face_angle=-1.5deg", "swing.face_angle=2deg"}),
+                    Catch::Contains("--set swing.strike_face_angle") && Catch::Contains("not both"));
+}
+
 TEST_CASE("run_scenario is deterministic and follows DESIGN §2 signs", "[scenario-run]") {
   const Assets& A = test::assets();
   const Scenario s = load_scenario(A, "golf/driver", {"world.name=none"});

@@ -5,10 +5,13 @@
 #include <cmath>
 #include <string>
 
+#include "game/content/scenario.hpp"
 #include "game/modes/golf/round.hpp"
 #include "game/net/message_framer.hpp"
 #include "game/net/open_connect.hpp"
 #include "game/net/shot_table.hpp"
+#include "game/report/report.hpp"
+#include "game/rules/run_shot.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
 #include "support/test_assets.hpp"
@@ -342,6 +345,42 @@ TEST_CASE("a device's measured loft is the loft where the face met the ball", "[
   // its centre, where fairway woods are struck).
   c.loft_deg = 12.5;
   CHECK(club_for_delivery(test::assets(), c, 11.0) == "driver");
+}
+
+TEST_CASE("a device's face angle is the face's direction where it met the ball", "[net][table]") {
+  // A half-inch toe strike with the face square where it meets the ball (TrackMan's face
+  // angle): the bulge's 2.4° comes off the face centre, not on top of the measured angle.
+  OcClubData c;
+  c.speed_mph = 113.0;
+  c.angle_of_attack_deg = -1.3;
+  c.face_to_target_deg = 0.0;
+  c.horizontal_impact_mm = 12.7;
+  const auto r = predict_from_club_data(test::assets(), "driver", c);
+  REQUIRE(r.has_value());
+  CHECK(r->club.strike_face_angle == Approx(0.0).margin(1e-12));
+  CHECK(rad_to_deg(r->club.face_to_target) == Approx(-2.44).margin(0.02));
+  CHECK(rad_to_deg(r->launch.horizontal_angle) == Approx(0.0).margin(1.0));  // starts near the face, not 2° right
+}
+
+TEST_CASE("a shot sent as Open Connect and read back strikes the same ball", "[net][table][report]") {
+  // Our ClubData out (gspro_json) is what a device sends in: loft and face angle where the
+  // face met the ball, the strike on the face. Read back and struck again it must launch the
+  // same ball: nothing lost on the way, the roll's 2.2° of loft and the bulge's turn included.
+  const ShotResult sent = run_scenario(load_scenario(
+      test::assets(), "golf/driver",
+      {"world.name=none", "swing.impact_offset=[12mm,14mm]", "swing.face_angle=1.5deg", "swing.path=-2deg"}));
+  const OcMessage m = parse_open_connect(json_text(gspro_json(sent), 0));
+  REQUIRE(m.club.has_value());
+  const auto back = predict_from_club_data(test::assets(), "driver", *m.club);
+  REQUIRE(back.has_value());
+  CHECK(back->club.strike_loft == Approx(sent.club.strike_loft).margin(1e-9));
+  CHECK(back->club.strike_face_angle == Approx(sent.club.strike_face_angle).margin(1e-9));
+  CHECK(back->club.face_to_target == Approx(sent.club.face_to_target).margin(1e-9));
+  CHECK(back->launch.ball_speed == Approx(sent.launch.ball_speed).epsilon(1e-6));
+  CHECK(back->launch.vertical_angle == Approx(sent.launch.vertical_angle).margin(1e-6));
+  CHECK(back->launch.horizontal_angle == Approx(sent.launch.horizontal_angle).margin(1e-6));
+  CHECK(back->launch.spin.total == Approx(sent.launch.spin.total).epsilon(1e-6));
+  CHECK(back->launch.spin.axis_rad == Approx(sent.launch.spin.axis_rad).margin(1e-6));
 }
 
 TEST_CASE("a round plays the device's shots from where the ball lies", "[net][table][golf]") {

@@ -138,6 +138,31 @@ TEST_CASE("a loft given where the face meets the ball stays so through edits and
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("a face angle given where the face meets the ball stays so through edits and Save", "[lab]") {
+  // A toe strike square where it meets the ball: the face centre is shut by the bulge's
+  // turn. Moving the strike moves the contact over that face (the face does not turn), and
+  // the saved file gives the face angle at its new strike.
+  LabModel lab(test::assets(), "golf/driver", {"swing.strike_face_angle=0deg", "swing.impact_offset=[12.7mm,11.5mm]"});
+  REQUIRE(lab.status().empty());
+  const double face = lab.value(LabParam::FaceAngle);
+  CHECK(rad_to_deg(face) == Approx(-2.44).margin(0.02));
+  CHECK(lab.result().club.strike_face_angle == Approx(0.0).margin(1e-12));
+  lab.update({edit(LabParam::ImpactToe, 0.0)}, 0.0);
+  REQUIRE(lab.status().empty());
+  CHECK(lab.value(LabParam::FaceAngle) == Approx(face).epsilon(1e-12));
+  CHECK(lab.result().club.strike_face_angle == Approx(face).margin(1e-12));  // the centre's own angle now
+  const std::string text = lab.scenario_text();
+  INFO(text);
+  CHECK(text.find("strike_face_angle") != std::string::npos);
+  const ShotResult back = run_scenario(load_scenario(test::assets(), "golf/driver", {[&] {
+    const auto at = text.find("strike_face_angle = \"");
+    REQUIRE(at != std::string::npos);
+    const auto from = at + std::string("strike_face_angle = \"").size();
+    return "swing.strike_face_angle=" + text.substr(from, text.find('"', from) - from);
+  }(), "swing.impact_offset=[0mm,11.5mm]"}));
+  CHECK(back.launch.spin.axis_rad == Approx(lab.result().launch.spin.axis_rad).margin(1e-9));
+}
+
 TEST_CASE("choosing another scenario or sport drops the edits", "[lab]") {
   LabModel lab(test::assets(), "golf/driver");
   lab.update({edit(LabParam::ClubSpeed, mph_to_mps(93.7))}, 0.0);

@@ -62,21 +62,53 @@ Camera putt_address_camera(const Vec3& ball, const Vec3& aim, double to_pin) {
   return c;
 }
 
-Camera clear_view_of(const Camera& c, const Vec3& subject, const Terrain& world) {
-  constexpr double kClearance = 0.5, kNearest = 3.0, kAbove = 2.5;  // m
-  SurfaceContact hit;
-  if (!world.sweep(subject, c.eye, kClearance, &hit, nullptr)) return c;
-  const Vec3 back = c.eye - subject;
-  const double reach = std::max(0.0, hit.fraction * back.norm() - kClearance);
-  Camera out = c;
-  if (reach >= kNearest) {
-    out.eye = subject + reach * back.normalized();
-  } else {
-    Vec3 flat(back.x(), 0.0, back.z());
-    flat = flat.norm() > 1e-9 ? Vec3(flat.normalized()) : Vec3::Zero();
-    out.eye = subject + std::min(reach, 1.0) * flat + Vec3(0.0, kAbove, 0.0);
+Camera clear_view_of(const Camera& c, const Vec3& ball, const Terrain& world) {
+  // m: the golfer's head over the ball, the sweep's radius (the near plane and a margin),
+  // the nearest a framing of the whole golfer holds, the height over him of the last resort.
+  constexpr double kHead = 1.7, kClearance = 0.5, kNearest = 3.0, kAbove = 2.5;
+  constexpr double kStep = kPi / 12.0;  // 15°
+  constexpr int kSteps = 6;             // up to 90°: side-on
+  const Vec3 head = ball + Vec3(0.0, kHead, 0.0);
+  // How far from his head toward `eye` the view is clear (the whole way when nothing is hit).
+  auto clear_reach = [&](const Vec3& eye) {
+    SurfaceContact hit;
+    const double whole = (eye - head).norm();
+    if (!world.sweep(head, eye, kClearance, &hit, nullptr)) return whole;
+    return std::max(0.0, hit.fraction * whole - kClearance);
+  };
+  // The rig (eye and target) turned by `a` about the vertical through his head.
+  auto swung = [&](double a) {
+    const Quat q(Eigen::AngleAxisd(a, Vec3::UnitY()));
+    Camera out = c;
+    out.eye = head + q * (c.eye - head);
+    out.target = head + q * (c.target - head);
+    return out;
+  };
+  Camera best = c;
+  double best_reach = clear_reach(c.eye);
+  if (best_reach >= (c.eye - head).norm()) return c;
+  for (int k = 1; k <= kSteps; ++k) {
+    for (const double sign : {1.0, -1.0}) {
+      const Camera turned = swung(sign * k * kStep);
+      const double reach = clear_reach(turned.eye);
+      if (reach >= (turned.eye - head).norm()) return turned;
+      if (reach > best_reach) best = turned, best_reach = reach;
+    }
   }
-  out.target = c.target + (out.eye - c.eye);
+  const Vec3 back = best.eye - head;
+  Camera out = best;
+  if (best_reach >= kNearest) {
+    out.eye = head + best_reach * back.normalized();
+    out.target = best.target + (out.eye - best.eye);
+    return out;
+  }
+  // Hemmed in: over his head, looking down past him at the ball and the first metre of the
+  // line (the ball ~12° below the image's centre).
+  const Vec3 look = best.target - best.eye;
+  Vec3 ahead(look.x(), 0.0, look.z());
+  ahead = ahead.norm() > 1e-9 ? Vec3(ahead.normalized()) : Vec3::UnitX();
+  out.eye = head - std::min(best_reach, 1.0) * ahead + Vec3(0.0, kAbove, 0.0);
+  out.target = ball + ahead;
   return out;
 }
 

@@ -321,7 +321,7 @@ Camera GolfView::address_camera() const {
   const Camera c = address_camera_at(ball, play_->aim_direction(), r.lie() == "green", r.to_pin());
   // A tree (or a bank) between the golfer and the camera would fill the view.
   if (r.finished()) return c;
-  return clear_view_of(c, ball + Vec3(0.0, 1.7, 0.0), *r.hole().world->world);
+  return clear_view_of(c, ball, *r.hole().world->world);
 }
 
 Camera GolfView::high_camera() const {

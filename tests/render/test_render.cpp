@@ -428,12 +428,16 @@ TEST_CASE("sun shadows: the flag and the club shade the turf and nothing gets br
   if (auto_renderer.software()) CHECK(render_shot_rgba(synthetic_shot(), r) == off);
 }
 
-TEST_CASE("the address camera comes out from behind a tree, or up over the golfer when it is close", "[render][camera]") {
-  // Flat turf, and a tree's trunk (a wall 4 m wide and 6 m tall, both faces) across the line
-  // from a golfer's head to the camera 9 m behind him, `gap` m behind the ball.
-  const auto world_with_tree = [](double gap) {
+TEST_CASE("the address camera goes round a tree, comes out in front of it, or over the golfer when hemmed in", "[render][camera]") {
+  // Flat turf and trees' trunks: walls 6 m tall (both faces), each from `from` to `to` at
+  // ground level, round a golfer addressing a ball at the origin toward +x, the camera 9 m
+  // behind him.
+  struct Wall {
+    Vec3 from, to;
+  };
+  const auto world_with = [](const std::vector<Wall>& walls) {
     WorldDescription d;
-    d.name = "tree";
+    d.name = "trees";
     SurfaceMaterial tree = default_fairway();
     tree.name = "tree";
     tree.kind = SurfaceKind::Tree;
@@ -442,35 +446,72 @@ TEST_CASE("the address camera comes out from behind a tree, or up over the golfe
     turf.material = 0;
     turf.vertices = {Vec3(-50, 0, -50), Vec3(50, 0, -50), Vec3(50, 0, 50), Vec3(-50, 0, 50)};
     turf.indices = {0, 2, 1, 0, 3, 2};
-    WorldMesh trunk;
-    trunk.material = 1;
-    trunk.vertices = {Vec3(-gap, 0, -2), Vec3(-gap, 0, 2), Vec3(-gap, 6, 2), Vec3(-gap, 6, -2)};
-    trunk.indices = {0, 1, 2, 0, 2, 3, 0, 2, 1, 0, 3, 2};
-    d.meshes = {turf, trunk};
+    d.meshes = {turf};
+    for (const Wall& w : walls) {
+      WorldMesh trunk;
+      trunk.material = 1;
+      trunk.vertices = {w.from, w.to, w.to + Vec3(0, 6, 0), w.from + Vec3(0, 6, 0)};
+      trunk.indices = {0, 1, 2, 0, 2, 3, 0, 2, 1, 0, 3, 2};
+      d.meshes.push_back(trunk);
+    }
     d.bounds_min = Vec3(-50, -5, -50);
     d.bounds_max = Vec3(50, 100, 50);
     return d;
   };
   const Vec3 ball(0.0, 0.021, 0.0), head = ball + Vec3(0.0, 1.7, 0.0);
   const Camera behind = full_shot_address_camera(ball, Vec3::UnitX());
-  SECTION("nothing in the way: unchanged") {
-    const World open(world_with_tree(30.0));
-    const Camera c = clear_view_of(behind, head, open);
-    CHECK((c.eye - behind.eye).norm() < 1e-12);
-  }
-  SECTION("a trunk 6 m back: the camera stands in front of it, looking the same way") {
-    const World w(world_with_tree(6.0));
-    const Camera c = clear_view_of(behind, head, w);
-    CHECK(c.eye.x() > -6.0);
-    CHECK(c.eye.x() < -3.0);
-    CHECK(((c.target - c.eye).normalized() - (behind.target - behind.eye).normalized()).norm() < 1e-9);
+  // Within the image (vertically, and across at the window's 16:10): the angle off the view's
+  // axis in each direction.
+  const auto in_view = [](const Camera& c, const Vec3& p) {
+    const Vec3 d = p - c.eye;
+    const double ahead = d.dot(c.forward());
+    if (ahead <= 0.0) return false;
+    const double half_v = std::tan(0.5 * c.fov_y), half_h = 1.6 * half_v;
+    return std::abs(d.dot(c.true_up()) / ahead) < half_v && std::abs(d.dot(c.right()) / ahead) < half_h;
+  };
+  const auto clear = [&](const World& w, const Camera& c) {
     SurfaceContact hit;
-    CHECK(!w.sweep(head, c.eye, 0.1, &hit, nullptr));
+    return !w.sweep(head, c.eye, 0.1, &hit, nullptr);
+  };
+  SECTION("nothing in the way: unchanged") {
+    const World open(world_with({Wall{Vec3(-30, 0, -2), Vec3(-30, 0, 2)}}));
+    const Camera c = clear_view_of(behind, ball, open);
+    CHECK((c.eye - behind.eye).norm() < 1e-12);
+    CHECK((c.target - behind.target).norm() < 1e-12);
   }
-  SECTION("a trunk 2 m back: up over the golfer's head") {
-    const World w(world_with_tree(2.0));
-    const Camera c = clear_view_of(behind, head, w);
+  SECTION("a trunk 6 m back: the camera swings round him, the golfer and the ball framed as before") {
+    const World w(world_with({Wall{Vec3(-6, 0, -2), Vec3(-6, 0, 2)}}));
+    const Camera c = clear_view_of(behind, ball, w);
+    CHECK(clear(w, c));
+    CHECK((c.eye - head).norm() == Approx((behind.eye - head).norm()).epsilon(1e-12));
+    CHECK(c.eye.y() == Approx(behind.eye.y()).epsilon(1e-12));
+    // The nearest swing that clears a 4 m trunk 6 m back (+ the sweep's 0.5 m): 30°.
+    const double swing = std::atan2(std::abs(c.eye.z()), -c.eye.x());
+    CHECK(rad_to_deg(swing) == Approx(30.0).margin(1e-6));
+    // Framed as before: the ball and his head sit where they did in the image.
+    for (const Vec3& p : {ball, head}) {
+      CHECK((p - c.eye).normalized().dot(c.forward()) == Approx((p - behind.eye).normalized().dot(behind.forward())).epsilon(1e-12));
+      CHECK(in_view(c, p));
+    }
+  }
+  SECTION("trees 6 m round him, open ahead: in along the clearest line, in front of the trees") {
+    const World w(world_with({Wall{Vec3(-6, 0, -6), Vec3(-6, 0, 6)}, Wall{Vec3(-6, 0, 6), Vec3(6, 0, 6)},
+                              Wall{Vec3(-6, 0, -6), Vec3(6, 0, -6)}}));
+    const Camera c = clear_view_of(behind, ball, w);
+    CHECK(clear(w, c));
+    CHECK((c.eye - head).norm() >= 3.0);
+    CHECK((c.eye - head).norm() < (behind.eye - head).norm());
+    CHECK(in_view(c, ball));
+    CHECK(in_view(c, head));
+  }
+  SECTION("hemmed in 2 m round: over his head, looking down past him at the ball") {
+    const World w(world_with({Wall{Vec3(-2, 0, -2), Vec3(-2, 0, 2)}, Wall{Vec3(-2, 0, 2), Vec3(2, 0, 2)},
+                              Wall{Vec3(-2, 0, -2), Vec3(2, 0, -2)}}));
+    const Camera c = clear_view_of(behind, ball, w);
     CHECK(c.eye.x() > -2.0);
     CHECK(c.eye.y() > head.y() + 2.0);
+    CHECK(in_view(c, ball));
+    CHECK(in_view(c, head));
+    CHECK(c.forward().x() > 0.0);  // still facing down the line
   }
 }

@@ -199,7 +199,7 @@ bool shot_section(PanelContext& c) {
     changed |= slider(c, LabParam::AttackAngle, "attack angle");
     changed |= slider(c, LabParam::ClubPath, "club path");
     changed |= slider(c, LabParam::DynamicLoft, "centre loft");
-    changed |= slider(c, LabParam::FaceAngle, "face angle");
+    changed |= slider(c, LabParam::FaceAngle, "centre face");
     changed |= slider(c, LabParam::ClosureRate, "closure rate", "%.0f");
     ImGui::Text("impact: toe %+.0f mm, up %+.0f mm", s.value(LabParam::ImpactToe) * 1000, s.value(LabParam::ImpactUp) * 1000);
     ImGui::TextDisabled("click the face to move the impact point");

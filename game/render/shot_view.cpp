@@ -84,30 +84,43 @@ Camera clear_view_of(const Camera& c, const Vec3& ball, const Terrain& world) {
     out.target = head + q * (c.target - head);
     return out;
   };
-  Camera best = c;
-  double best_reach = clear_reach(c.eye);
-  if (best_reach >= (c.eye - head).norm()) return c;
+  // How far below the horizontal `p` lies from `eye` (rad).
+  auto below = [](const Vec3& eye, const Vec3& p) {
+    const Vec3 d = p - eye;
+    return std::atan2(-d.y(), std::hypot(d.x(), d.z()));
+  };
+  // The rig brought in along its own line to `reach` m from his head, looking the same way,
+  // its lens widened as a camera operator's would be so the ball, nearer and lower, stays in
+  // the picture with the line ahead: no lower than the full-shot view holds it, kBallShare
+  // of the half-height below the centre (above the swing meter), up to kWidest.
+  constexpr double kBallShare = 0.72, kWidest = kPi * 75.0 / 180.0;  // 75°
+  auto brought_in = [&](const Camera& rig, double reach) {
+    Camera out = rig;
+    out.eye = head + reach * (rig.eye - head).normalized();
+    out.target = rig.target + (out.eye - rig.eye);
+    const double ball_below_centre = below(out.eye, ball) - below(out.eye, out.target);
+    const double half = std::atan(std::tan(ball_below_centre) / kBallShare);
+    out.fov_y = std::clamp(2.0 * half, rig.fov_y, std::max(rig.fov_y, kWidest));
+    return out;
+  };
+  const double own = clear_reach(c.eye);
+  if (own >= (c.eye - head).norm()) return c;
+  if (own >= kNearest) return brought_in(c, own);
   for (int k = 1; k <= kSteps; ++k) {
     for (const double sign : {1.0, -1.0}) {
       const Camera turned = swung(sign * k * kStep);
       const double reach = clear_reach(turned.eye);
       if (reach >= (turned.eye - head).norm()) return turned;
-      if (reach > best_reach) best = turned, best_reach = reach;
+      if (reach >= kNearest) return brought_in(turned, reach);
     }
   }
-  const Vec3 back = best.eye - head;
-  Camera out = best;
-  if (best_reach >= kNearest) {
-    out.eye = head + best_reach * back.normalized();
-    out.target = best.target + (out.eye - best.eye);
-    return out;
-  }
   // Hemmed in: over his head, looking down past him at the ball and the first metre of the
-  // line (the ball ~12° below the image's centre).
-  const Vec3 look = best.target - best.eye;
+  // line (the ball ~12° below the image's centre), from behind him on his own line.
+  const Vec3 look = c.target - c.eye;
   Vec3 ahead(look.x(), 0.0, look.z());
   ahead = ahead.norm() > 1e-9 ? Vec3(ahead.normalized()) : Vec3::UnitX();
-  out.eye = head - std::min(best_reach, 1.0) * ahead + Vec3(0.0, kAbove, 0.0);
+  Camera out = c;
+  out.eye = head - std::min(own, 1.0) * ahead + Vec3(0.0, kAbove, 0.0);
   out.target = ball + ahead;
   return out;
 }

@@ -42,13 +42,14 @@ Camera full_shot_address_camera(const Vec3& ball, const Vec3& aim);
 Camera putt_address_camera(const Vec3& ball, const Vec3& aim, double to_pin);
 
 /// `c`, a view of a golfer addressing `ball` (his head 1.7 m above it), moved so nothing of
-/// `world` (a tree's trunk or crown, a bank) stands between its eye and his head, as a
-/// television crew would place it: first swung round him (the eye and what it looks at
-/// together, 15° at a time up to side-on, nearest first), so he and the ball stay framed as
-/// they were and only the line turns; else brought forward along the clearest of those
-/// lines to just in front of the first thing in the way, looking the same way; and where
-/// that is nearer than 3 m, 2.5 m over his head, a metre or less behind, looking down past
-/// him at the ball. Unchanged when the line is clear.
+/// `world` (a tree's trunk or crown, a bank) stands between its eye and his head: first
+/// brought forward along its own line to just in front of the first thing in the way,
+/// still looking down the line he aims along, while that leaves it 3 m or more from him;
+/// else swung round him (the eye and what it looks at together, 15° at a time up to
+/// side-on, the smallest turn first) to the first line that is clear for 3 m, brought in
+/// as far as that line needs, so he and the ball stay framed as they were and only the line
+/// turns; and where no line is, 2.5 m over his head, a metre or less behind, looking down
+/// past him at the ball. Unchanged when the line is clear.
 Camera clear_view_of(const Camera& c, const Vec3& ball, const Terrain& world);
 
 ShotSceneInput scene_input_for(const Assets& assets, const ResolvedShot& shot, const ShotResult& r);

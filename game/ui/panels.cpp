@@ -202,6 +202,11 @@ bool shot_section(PanelContext& c) {
     changed |= slider(c, LabParam::FaceAngle, "centre face");
     changed |= slider(c, LabParam::ClosureRate, "closure rate", "%.0f");
     ImGui::Text("impact: toe %+.0f mm, up %+.0f mm", s.value(LabParam::ImpactToe) * 1000, s.value(LabParam::ImpactUp) * 1000);
+    // The sliders set the face centre; a launch monitor (and the table) reads the face where
+    // it met the ball, which the bulge and roll turn at an off-centre strike.
+    const ClubNumbers& k = s.result().club;
+    ImGui::TextDisabled("face at the strike %+.1f deg, loft %.1f deg", rad_to_deg(k.strike_face_angle),
+                        rad_to_deg(k.strike_loft));
     ImGui::TextDisabled("click the face to move the impact point");
   } else if (is_bat(s)) {
     if (combo("bat", s.resolved().bat->name, eq.bats, [](const BatSpec& x) { return x.name; }, chosen)) {

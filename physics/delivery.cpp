@@ -119,7 +119,7 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   check_range("swing.attack_angle", w.attack_angle, GolfSwing::kAttackAngle, "rad");
   check_range("swing.path", w.club_path, GolfSwing::kClubPath, "rad");
   check_range("swing.face_angle", w.face_angle, GolfSwing::kFaceAngle, "rad");
-  const double up = std::isnan(w.impact_up) ? club.strike_height : w.impact_up;
+  const double up = strike_up(w, club);
   check_range("swing.impact_offset[0] (toe)", w.impact_toe, GolfSwing::kImpactToe, "m");
   check_range("swing.impact_offset[1] (up)", up, GolfSwing::kImpactUp, "m");
   // And on this club's face: a putter's is 24 mm tall, an iron's 76 x 46 mm (face_size).
@@ -154,6 +154,10 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   }
 }
 
+double strike_up(const GolfSwing& swing, const ClubSpec& club) {
+  return std::isnan(swing.impact_up) ? club.strike_height : swing.impact_up;
+}
+
 double strike_tilt(const ClubSpec& club, double up) { return std::atan(up / club.roll_radius); }
 
 double strike_turn(const ClubSpec& club, double centre_loft, double toe, double up) {
@@ -164,7 +168,7 @@ double strike_turn(const ClubSpec& club, double centre_loft, double toe, double 
 
 double face_centre_face_angle(const GolfSwing& swing, const ClubSpec& club) {
   if (std::isnan(swing.strike_face_angle)) return swing.face_angle;
-  const double up = std::isnan(swing.impact_up) ? club.strike_height : swing.impact_up;
+  const double up = strike_up(swing, club);
   return swing.strike_face_angle - strike_turn(club, face_centre_loft(swing, club), swing.impact_toe, up);
 }
 
@@ -176,7 +180,7 @@ Vec3 head_direction(const GolfSwing& swing) {
 double face_centre_loft(const GolfSwing& swing, const ClubSpec& club) {
   if (!std::isnan(swing.dynamic_loft)) return swing.dynamic_loft;
   if (std::isnan(swing.strike_loft)) return club.dynamic_loft;
-  const double up = std::isnan(swing.impact_up) ? club.strike_height : swing.impact_up;
+  const double up = strike_up(swing, club);
   return swing.strike_loft - strike_tilt(club, up);
 }
 
@@ -228,7 +232,7 @@ Delivery deliver_golf(const BallSpec& ball, const ClubSpec& club, const GolfSwin
   const Mat3 rot = q.toRotationMatrix();
 
   // Contact point and normal on the curved face, head frame.
-  const double toe = swing.impact_toe, up = std::isnan(swing.impact_up) ? club.strike_height : swing.impact_up;
+  const double toe = swing.impact_toe, up = strike_up(swing, club);
   const Vec3 p_head(-(toe * toe / (2.0 * club.bulge_radius) + up * up / (2.0 * club.roll_radius)), up, toe);
   const Vec3 n_head = Vec3(1.0, up / club.roll_radius, toe / club.bulge_radius).normalized();
   const Vec3 n = (rot * n_head).normalized();

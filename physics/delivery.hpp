@@ -98,6 +98,9 @@ struct Pitch {
 
 /// Each throws InputError naming the field (as a scenario key) and its allowed range.
 void validate_golf_swing(const GolfSwing& swing, const ClubSpec& club);
+/// m, how far above the face centre the swing strikes the ball: swing.impact_up, else the
+/// club's typical strike height (ClubSpec::strike_height).
+double strike_up(const GolfSwing& swing, const ClubSpec& club);
 /// rad, how much the face's roll (sole-to-crown curvature) tilts the face normal up at a
 /// strike `up` metres above the centre: atan(up / roll_radius). 2.2° at 11.5 mm on a 305 mm
 /// roll; ~0 on an iron's flat face.

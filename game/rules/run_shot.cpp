@@ -57,7 +57,7 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
       k.dynamic_loft = face_centre_loft(w, *s.club);
       k.lie = s.club->lie;
       k.impact_toe = w.impact_toe;
-      k.impact_up = std::isnan(w.impact_up) ? s.club->strike_height : w.impact_up;
+      k.impact_up = strike_up(w, *s.club);
       k.strike_loft = k.dynamic_loft + strike_tilt(*s.club, k.impact_up);
       k.strike_face_angle = k.face_to_target + strike_turn(*s.club, k.dynamic_loft, k.impact_toe, k.impact_up);
       // TrackMan's spin loft: the angle between the head's direction (attack and path) and

@@ -91,13 +91,15 @@ TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9
   // Rebuilt half-inning by half-inning from the plate appearances: no run is earned once the
   // outs and the errors that put batters aboard make three (or on the play whose out makes
   // them three), and the pitchers' earned runs are the plate appearances' own.
-  int reconstructed = 0;
-  // Twelve games: seeds 1, 6 and 11 each have such a run (and the sanitizer stage plays them).
-  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+  // Games are played seed by seed until two of them hold such a run (seeds 1 and 6 today):
+  // every game checks the sums, and the rule is seen to act without playing a dozen games
+  // under the sanitizers.
+  int reconstructed = 0, with_unearned = 0;
+  for (std::uint64_t seed = 1; seed <= 24 && with_unearned < 2; ++seed) {
     GameOptions o;
     o.seed = seed;
     const GameRecord g = play_game(test::assets(), o);
-    int earned[2] = {0, 0}, errors = 0, half = -1;
+    int earned[2] = {0, 0}, errors = 0, half = -1, unearned = 0;
     for (const PlateAppearance& pa : g.plate_appearances) {
       if (2 * pa.inning + pa.bottom != half) {
         half = 2 * pa.inning + pa.bottom;
@@ -109,32 +111,37 @@ TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9
       if (past) {
         INFO("seed " << seed << ", inning " << pa.inning << ": " << pa.description);
         CHECK(pa.earned_runs == 0);
-        reconstructed += pa.runs > 0;
+        unearned += pa.runs > 0;
       }
       if (pa.result == "error") ++errors;
       earned[pa.bottom ? 1 : 0] += pa.earned_runs;
     }
     CHECK(earned[0] == g.home.pitching.er);
     CHECK(earned[1] == g.away.pitching.er);
+    reconstructed += unearned;
+    with_unearned += unearned > 0;
   }
   CHECK(reconstructed > 0);  // runs the errors made unearned
 }
 
 TEST_CASE("the play-by-play reads as a scorer's: sacrifice flies named, infield flies popped up", "[baseball][game]") {
+  // Game by game (pros, from seed 40) until both have been seen, at most twelve games.
   int innings = 0, sac = 0, pops = 0;
-  for (const PlateAppearance& pa : games("pro", 12, 40, &innings)) {
-    INFO(pa.description);
-    const bool named = pa.description.rfind("Sacrifice fly to ", 0) == 0;
-    CHECK(named == pa.sacrifice_fly);
-    sac += pa.sacrifice_fly;
-    if (pa.result != "out" || pa.pitches.empty() || !pa.pitches.back().result.play.caught) continue;
-    const FieldingPlay& f = pa.pitches.back().result.play;
-    if (f.foul || named) continue;
-    // An infielder's catch of a fly is a pop out; an outfielder's never is.
-    const bool popped = pa.description.rfind("Pop out to ", 0) == 0;
-    if (f.fielder < 6 && (f.type == BattedBallType::FlyBall || f.type == BattedBallType::PopUp)) CHECK(popped);
-    if (f.fielder >= 6) CHECK_FALSE(popped);
-    pops += popped;
+  for (int game = 0; game < 12 && (sac == 0 || pops == 0); ++game) {
+    for (const PlateAppearance& pa : games("pro", 1, 40 + static_cast<std::uint64_t>(game), &innings)) {
+      INFO(pa.description);
+      const bool named = pa.description.rfind("Sacrifice fly to ", 0) == 0;
+      CHECK(named == pa.sacrifice_fly);
+      sac += pa.sacrifice_fly;
+      if (pa.result != "out" || pa.pitches.empty() || !pa.pitches.back().result.play.caught) continue;
+      const FieldingPlay& f = pa.pitches.back().result.play;
+      if (f.foul || named) continue;
+      // An infielder's catch of a fly is a pop out; an outfielder's never is.
+      const bool popped = pa.description.rfind("Pop out to ", 0) == 0;
+      if (f.fielder < 6 && (f.type == BattedBallType::FlyBall || f.type == BattedBallType::PopUp)) CHECK(popped);
+      if (f.fielder >= 6) CHECK_FALSE(popped);
+      pops += popped;
+    }
   }
   CHECK(sac > 0);
   CHECK(pops > 0);

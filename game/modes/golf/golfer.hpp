@@ -58,11 +58,12 @@ struct GolferSkill {
 /// greens, 75.5 strokes and 29.5 putts (calm: 48 %, 56 %, 75.1, 30.0), against Arccos's
 /// scratch golfers' 51 %, 56 % and ~76 (2.2 birdies, 4.6 bogeys and 0.7 doubles or worse a
 /// round; Golf Monthly, "Scratch vs 10 vs 20 handicap", 2023) and Shot Scope's 29.9 putts; at
-/// 20 ms (calm) 43 %, 50 %, 77.0. The amateur's 36 ms timing spread (with a part swing's 0.35
-/// feel) puts his National rounds at 91.6, inside a 15 handicap's ~85-93, but with 32 % of
-/// fairways and 14 % of greens where Arccos's golfers of 12-20 hit 41-45 % and ~20-31 % (12
-/// handicaps 31 %): he strays too far off the tee and loses too few strokes elsewhere
-/// (penalties, duffs). 30 ms gave 34 % and 17 % (calm).
+/// 20 ms (calm) 43 %, 50 %, 77.0. The amateur's 25 ms timing spread (with a part swing's 0.35
+/// feel): over 48 calm National rounds (`sweetspot round --bot amateur --calm`, seeds 1-48)
+/// 43.8 % of fairways, 21.5 % of greens, 89.3 strokes and 33.1 putts, where Arccos's golfers
+/// of 12-20 hit 41-45 % and ~20-31 % (12 handicaps 31 %) and a 15 handicap averages ~85-93;
+/// at 36 ms he hit 30 % of fairways with the same score (his misses cost little more in
+/// the rough than on the fairway), at 30 ms 38 %.
 /// The tour bot's
 /// power spread, 3.5 %, leaves its
 /// approaches as near the hole as PGA TOUR players' by distance (ShotLink's proximity from

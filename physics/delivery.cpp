@@ -154,10 +154,6 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   }
 }
 
-double strike_up(const GolfSwing& swing, const ClubSpec& club) {
-  return std::isnan(swing.impact_up) ? club.strike_height : swing.impact_up;
-}
-
 double strike_tilt(const ClubSpec& club, double up) { return std::atan(up / club.roll_radius); }
 
 double strike_turn(const ClubSpec& club, double centre_loft, double toe, double up) {

@@ -4,6 +4,7 @@
 // and inertia fed to the same impulse solver; there is no hand-added spin term.
 #pragma once
 
+#include <cmath>
 #include <limits>
 
 #include "physics/compliant_impact.hpp"
@@ -100,7 +101,9 @@ struct Pitch {
 void validate_golf_swing(const GolfSwing& swing, const ClubSpec& club);
 /// m, how far above the face centre the swing strikes the ball: swing.impact_up, else the
 /// club's typical strike height (ClubSpec::strike_height).
-double strike_up(const GolfSwing& swing, const ClubSpec& club);
+inline double strike_up(const GolfSwing& swing, const ClubSpec& club) {
+  return std::isnan(swing.impact_up) ? club.strike_height : swing.impact_up;
+}
 /// rad, how much the face's roll (sole-to-crown curvature) tilts the face normal up at a
 /// strike `up` metres above the centre: atan(up / roll_radius). 2.2° at 11.5 mm on a 305 mm
 /// roll; ~0 on an iron's flat face.

@@ -62,8 +62,8 @@ struct GolferSkill {
 /// feel): over 48 calm National rounds (`sweetspot round --bot amateur --calm`, seeds 1-48)
 /// 43.8 % of fairways, 21.5 % of greens, 89.3 strokes and 33.1 putts, where Arccos's golfers
 /// of 12-20 hit 41-45 % and ~20-31 % (12 handicaps 31 %) and a 15 handicap averages ~85-93;
-/// at 36 ms he hit 30 % of fairways with the same score (his misses cost little more in
-/// the rough than on the fairway), at 30 ms 38 %.
+/// at 36 ms he hit 30 % of fairways for 91.1 strokes (24 rounds: his misses cost little more
+/// in the rough than on the fairway), at 30 ms 38 %.
 /// The tour bot's
 /// power spread, 3.5 %, leaves its
 /// approaches as near the hole as PGA TOUR players' by distance (ShotLink's proximity from

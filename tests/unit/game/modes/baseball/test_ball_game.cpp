@@ -94,7 +94,7 @@ TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9
   // Games are played seed by seed until two of them hold such a run (seeds 1 and 6 today):
   // every game checks the sums, and the rule is seen to act without playing a dozen games
   // under the sanitizers.
-  int reconstructed = 0, with_unearned = 0;
+  int with_unearned = 0;
   for (std::uint64_t seed = 1; seed <= 24 && with_unearned < 2; ++seed) {
     GameOptions o;
     o.seed = seed;
@@ -118,10 +118,9 @@ TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9
     }
     CHECK(earned[0] == g.home.pitching.er);
     CHECK(earned[1] == g.away.pitching.er);
-    reconstructed += unearned;
     with_unearned += unearned > 0;
   }
-  CHECK(reconstructed > 0);  // runs the errors made unearned
+  CHECK(with_unearned > 0);  // games with runs the errors made unearned
 }
 
 TEST_CASE("the play-by-play reads as a scorer's: sacrifice flies named, infield flies popped up", "[baseball][game]") {

@@ -83,6 +83,15 @@ struct ShotModel {
   std::optional<Cup> cup;             ///< the hole on the green, when the world has one (golf)
   double air_density = 0.0;           ///< kg/m³, from environment
   double air_viscosity = 1.81e-5;     ///< Pa·s, from environment (Sutherland)
+  /// Side force of a seam-shifted wake (a pitched baseball): ½ρA·C_s·|v_r|² along v̂_r × m̂,
+  /// m̂ the Magnus force's direction, so across both the flow and the Magnus force. A pitch
+  /// thrown with its seams held in one orientation to the flow separates asymmetrically
+  /// whatever its spin (Smith, Nathan & Pavlidis, "Not just about Magnus anymore", Baseball
+  /// Prospectus 2020); the orientation rides on the spin axis, so the force keeps its place
+  /// beside the Magnus force. 0 = none (golf balls and batted balls: their dimples or
+  /// tumbling seams make no steady wake).
+  double seam_side_force = 0.0;
+  static constexpr Range kSeamSideForce{-0.3, 0.3};  ///< |C_s| up to the Magnus C_L of a fast-spinning pitch
 };
 
 /// Validates (throws InputError naming the field and its range) and builds the model.

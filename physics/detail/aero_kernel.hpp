@@ -57,8 +57,9 @@ struct AeroKernel {
   double inv_onset;     ///< 1/lift_onset, 0 when none
   double decay_per_metre;  ///< the model's decay_per_metre at this air's density (1/m)
   double decay_const;      ///< 1/decay_tau at this air's density (1/s), 0 when none
+  double side_accel;       ///< ½ρA·C_s/m (1/m) of a seam-shifted wake (ShotModel::seam_side_force), 0 when none
 
-  AeroKernel(const AeroModel& m, double density, double r, double viscosity, double mass)
+  AeroKernel(const AeroModel& m, double density, double r, double viscosity, double mass, double seam_side_force = 0.0)
       : model(&m),
         radius(r),
         accel_per_cd(0.5 * density * kPi * r * r / mass),
@@ -66,7 +67,8 @@ struct AeroKernel {
         inv_width(1.0 / m.crisis_width),
         inv_onset(m.lift_onset > 0.0 ? 1.0 / m.lift_onset : 0.0),
         decay_per_metre(m.decay_per_metre * (density / kSpinDecayReferenceDensity)),
-        decay_const(m.decay_tau > 0.0 ? (density / kSpinDecayReferenceDensity) / m.decay_tau : 0.0) {}
+        decay_const(m.decay_tau > 0.0 ? (density / kSpinDecayReferenceDensity) / m.decay_tau : 0.0),
+        side_accel(0.5 * density * kPi * r * r / mass * seam_side_force) {}
 
   /// Acceleration (m/s²) of a ball moving at `v_rel` through the air with spin `omega`
   /// (rad/s), and its spin's rate of change (rad/s²).
@@ -87,6 +89,13 @@ struct AeroKernel {
     const AeroCoefficients c = aero_coefficients(m, s, spin, speed * re_per_speed, inv_width, inv_onset);
     // Drag -½ρA·Cd·|v_r|·v_r; lift ½ρA·Cl·|v_r|²·(ω × v_r)/(|ω||v_r|); per unit mass.
     *accel = (-accel_per_cd * c.cd * speed) * v_rel + (accel_per_cd * c.cl * speed * inv_spin) * lift_dir;
+    if (side_accel != 0.0) {
+      // The seam-shifted wake: |v_r × (ω × v_r)| = |v_r| |ω × v_r|, so this is ½ρA·C_s·|v_r|²/m
+      // along v̂_r × m̂. A ball spinning about its line of flight has no Magnus direction to
+      // hold its seams' place by: none.
+      const double lift_norm = lift_dir.norm();
+      if (lift_norm > 0.0) *accel += (side_accel * speed / lift_norm) * v_rel.cross(lift_dir);
+    }
   }
 };
 

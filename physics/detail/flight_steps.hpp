@@ -83,7 +83,7 @@ struct Dynamics {
   /// turf the ball bounces on, not over the world's reference).
   Dynamics(const ShotModel& m, bool landed, double hop_ground, ContactLayer l = {})
       : model(&m),
-        aero(*m.aero, m.air_density, m.ball.radius, m.air_viscosity, m.ball.mass),
+        aero(*m.aero, m.air_density, m.ball.radius, m.air_viscosity, m.ball.mass, m.seam_side_force),
         ground_height(landed ? hop_ground : m.terrain->reference_height()),
         still_air(m.environment.wind_speed == 0.0),
         profile(landed ? WindProfile::Logarithmic : m.environment.wind_profile),

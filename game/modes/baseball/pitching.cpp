@@ -17,8 +17,8 @@ std::vector<PitchType> load_pitch_types(const Assets& assets) {
   static constexpr Range kSide{-1.5, 1.5};
   static constexpr Range kExtension{0.5, 3.0};
   for (const toml::table* t : f.tables(f.root(), "pitch", true)) {
-    f.only_keys(*t, "pitch", {"type", "speed", "spin", "active_spin", "movement_direction", "release_height",
-                              "release_side", "extension", "usage", "zone_share"});
+    f.only_keys(*t, "pitch", {"type", "speed", "spin", "active_spin", "movement_direction", "seam_wake_deviation",
+                              "release_height", "release_side", "extension", "usage", "zone_share"});
     PitchType p;
     p.type = f.text(f.required(*t, "type", "the pitch's name"), "type");
     p.speed = f.quantity(f.required(*t, "speed", "out-of-hand speed"), "speed", Dimension::Speed, &PitchType::kSpeed);
@@ -26,6 +26,8 @@ std::vector<PitchType> load_pitch_types(const Assets& assets) {
     p.active_spin = f.quantity(f.required(*t, "active_spin", "transverse share"), "active_spin", Dimension::Fraction, &kFraction);
     p.movement_direction = f.quantity(f.required(*t, "movement_direction", "deg from up"), "movement_direction",
                                       Dimension::Angle, &kDirection);
+    p.seam_wake_deviation = f.quantity(f.required(*t, "seam_wake_deviation", "deg toward the arm side"),
+                                       "seam_wake_deviation", Dimension::Angle, &PitchType::kSeamWakeDeviation);
     p.release_height = f.quantity(f.required(*t, "release_height", "m"), "release_height", Dimension::Length, &kHeight);
     p.release_side = f.quantity(f.required(*t, "release_side", "m"), "release_side", Dimension::Length, &kSide);
     p.extension = f.quantity(f.required(*t, "extension", "m"), "extension", Dimension::Length, &kExtension);
@@ -102,23 +104,45 @@ ShotModel pitch_model(const Assets& assets) {
                          assets.aero(assets.sport("baseball").default_aero), Environment{}, &ground);
 }
 
+// The seam-shifted wake's side-force coefficient that turns the pitch's Magnus force by its
+// type's measured deviation at release: across the Magnus force, C_s = C_L·tan δ, with C_L
+// the lift the transverse spin gives there (the aero law's C_L(R|ω|/v) times the transverse
+// share, as physics/aero.hpp reads it). Signed for ShotModel's v̂ × m̂: that side is the arm
+// side of a right-hander's pitch; a left-hander's mirrors it.
+double seam_side_force(const ShotModel& model, const PitchType& t, double hand) {
+  const double s = model.ball.radius * t.spin / t.speed;
+  const double re = model.air_density * t.speed * 2.0 * model.ball.radius / model.air_viscosity;
+  const double cl = model.aero->coefficients(s, t.spin, re).cl * t.active_spin;
+  return hand * cl * std::tan(t.seam_wake_deviation);
+}
+
 }  // namespace
 
 PitchFlight throw_pitch(const Assets& assets, const PitchCall& call) {
   const PitchType& t = call.type;
   check_range("pitch.speed", t.speed, PitchType::kSpeed, "m/s");
   check_range("pitch.spin", t.spin, PitchType::kSpin, "rad/s");
-  const ShotModel model = pitch_model(assets);
+  check_range("pitch.seam_wake_deviation", t.seam_wake_deviation, PitchType::kSeamWakeDeviation, "rad");
+  ShotModel model = pitch_model(assets);
   const double hand = call.left_handed ? -1.0 : 1.0;
+  model.seam_side_force = seam_side_force(model, t, hand);
+  check_range("pitch seam-shifted wake C_s", model.seam_side_force, ShotModel::kSeamSideForce, "");
   PitchFlight out;
+  out.seam_side_force = model.seam_side_force;
   out.release = Vec3(kRubberToPlate - t.extension, t.release_height, hand * t.release_side);
-  // The spin: its transverse part pushes the ball toward the movement direction (seen from
-  // the catcher: up and toward first base), for a ball travelling toward −x; the rest is gyro
-  // spin along the flight, which makes no Magnus force.
-  const double dir = hand * t.movement_direction;
+  // The spin: its transverse part pushes the ball toward the spin-based direction, the
+  // movement's turned back by the seam wake's deviation (seen from the catcher: from up,
+  // + toward first base), for a ball travelling toward −x; the rest is gyro spin along the
+  // flight, which makes no Magnus force. The wake's side force turns the movement on to its
+  // measured direction. A left-hander's pitch is the mirror image (z -> -z) of a
+  // right-hander's: spin is an axial vector, so its x and y parts change sign, the gyro part
+  // too (a falling pitch's flow is not quite along x, and the gyro part then turns the
+  // Magnus force: unmirrored, a left-hander's sinker ran 0.5 in farther and rose 1.0 in less
+  // than a right-hander's mirrored).
+  const double dir = hand * (t.movement_direction + t.seam_wake_deviation);
   const double wt = t.spin * t.active_spin;
   const double wg = t.spin * std::sqrt(std::max(0.0, 1.0 - t.active_spin * t.active_spin));
-  out.spin = Vec3(-wg, wt * std::sin(dir), -wt * std::cos(dir));
+  out.spin = Vec3(-hand * wg, wt * std::sin(dir), -wt * std::cos(dir));
   const Vec3 target(0.0, call.target_height, call.target_side);
   // Aim: the release direction that crosses the plate at the target, by a few corrections
   // of the straight line (gravity, drag and break bend it).
@@ -146,7 +170,8 @@ PitchFlight throw_pitch(const Assets& assets, const PitchCall& call) {
 }
 
 PitchMovement statcast_movement(const Assets& assets, const PitchFlight& pitch) {
-  const ShotModel model = pitch_model(assets);
+  ShotModel model = pitch_model(assets);
+  model.seam_side_force = pitch.seam_side_force;
   const Crossing at_start = fly_to(model, pitch.release, pitch.release_velocity, pitch.spin, false, kMovementStart);
   const Crossing front = fly_to(model, at_start.p, at_start.v, at_start.w, false, kPlateFront);
   AeroModel liftless = *model.aero;
@@ -154,6 +179,7 @@ PitchMovement statcast_movement(const Assets& assets, const PitchFlight& pitch) 
   liftless.l0 = liftless.l1 = liftless.l2 = 0.0;
   ShotModel no_lift = model;
   no_lift.aero = &liftless;
+  no_lift.seam_side_force = 0.0;  // Statcast's movement is all that is not gravity and drag
   const Crossing plain = fly_to(no_lift, at_start.p, at_start.v, at_start.w, false, kPlateFront);
   return {front.p.y() - plain.p.y(), front.p.z() - plain.p.z()};
 }

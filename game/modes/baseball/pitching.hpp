@@ -25,6 +25,12 @@ struct PitchType {
   static constexpr Range kSpin{0.0, rpm_to_radps(4000.0)};
   double active_spin = 0.9;      ///< fraction of the spin that is transverse
   double movement_direction = 0; ///< rad from up, + toward first base (catcher's view), right-handed pitcher
+  /// rad: how far the pitch's movement turns from where its spin alone pushes it, toward the
+  /// arm side and down when > 0 (a right-hander's: + toward third base from up): Hawk-Eye's
+  /// measured spin axis against the axis its movement implies, the seam-shifted wake's share.
+  /// The Magnus force acts at movement_direction + this (catcher's view, right-hander).
+  double seam_wake_deviation = 0;
+  static constexpr Range kSeamWakeDeviation{-kPi / 4.0, kPi / 4.0};
   double release_height = 1.78;  ///< m
   double release_side = -0.55;   ///< m, + toward first base
   double extension = 1.98;       ///< m in front of the rubber (60.5 ft from the plate)
@@ -61,6 +67,7 @@ struct PitchFlight {
   /// the same release thrown without spin. What a batter sees develop from the hand;
   /// statcast_movement() gives what Statcast reports.
   double flight_break_vertical = 0.0, flight_break_horizontal = 0.0;
+  double seam_side_force = 0.0;  ///< C_s of its seam-shifted wake (ShotModel::seam_side_force)
   ShotTrajectory trajectory;     ///< release to the plate (samples), for drawing
 };
 

@@ -517,3 +517,36 @@ TEST_CASE("a hop's apex in a hurricane is flown on: never held in mid-air, never
   CHECK(s.t > 1.0);
   if (s.end == EndReason::Rest) CHECK(s.y[1] == Approx(model.ball.radius).margin(1e-3));
 }
+
+TEST_CASE("a seam-shifted wake pushes across the flow and the Magnus force, ½ρA·C_s·v², and does no work",
+          "[flight][aero][baseball]") {
+  const AeroModel& nathan = test::assets().aero("nathan");
+  const BallProperties ball{0.145, 0.0369, 0.4 * 0.145 * 0.0369 * 0.0369};
+  FlightSettings settings;
+  settings.max_time = 0.4;  // a pitch's flight
+  const ShotModel plain = make_shot_model(ball, nathan, Environment{}, nullptr, settings);
+  ShotModel wake = plain;
+  wake.seam_side_force = 0.1;
+  LaunchState l;
+  l.position = Vec3(18.4, 1.8, 0.0);
+  l.velocity = Vec3(-40.0, 0.0, 0.0);
+  l.spin = Vec3(0.0, 0.0, -230.0);  // backspin for a ball flying toward -x: the Magnus force is up
+  const ShotTrajectory a = simulate_shot(plain, l, true), b = simulate_shot(wake, l, true);
+  const TrajectorySample &pa = a.samples.back(), &pb = b.samples.back();
+  REQUIRE(pa.t == Approx(0.4));
+  REQUIRE(pb.t == Approx(0.4));
+  // Across the flow (-x) and the Magnus force (+y): v̂ × m̂ = -z. Its push, ½ρA·C_s·v²/m, lies
+  // between its value at the end's speed and at the release's over the ½t² of a steady push.
+  const Vec3 d = pb.position - pa.position;
+  const double k = 0.5 * plain.air_density * kPi * ball.radius * ball.radius / ball.mass * wake.seam_side_force;
+  INFO("side " << d.z() << " m, up " << d.y() << " m, along " << d.x() << " m");
+  CHECK(d.z() < 0.0);
+  CHECK(-d.z() > 0.5 * k * pa.velocity.squaredNorm() * 0.16);
+  CHECK(-d.z() < 0.5 * k * l.velocity.squaredNorm() * 0.16);
+  CHECK(std::abs(d.y()) < 0.02 * std::abs(d.z()));
+  // Across the motion it does no work: the speed is the plain ball's.
+  CHECK(pb.velocity.norm() == Approx(pa.velocity.norm()).epsilon(1e-4));
+  // Without spin there is no Magnus direction to hold the seams' place by: no wake.
+  l.spin = Vec3::Zero();
+  CHECK(simulate_shot(wake, l, true).samples.back().position == simulate_shot(plain, l, true).samples.back().position);
+}

@@ -72,6 +72,38 @@ TEST_CASE("sliders, cutters and curveballs move as Savant measures them at their
   }
 }
 
+TEST_CASE("the sinker's seam-shifted wake turns its movement off its spin toward the arm side, as Hawk-Eye measures",
+          "[baseball][pitch][reference]") {
+  // Savant: the league sinker runs 15.0 in arm side (2024 movement leaderboard); Hawk-Eye's
+  // measured spin axes put the movement its spin alone gives 22.1° above where it goes
+  // (the spin-direction leaderboard, pitches.toml). 2 in: the validation band.
+  const PitchType& si = pitch_type(types(), "sinker");
+  const PitchFlight f = pitch("sinker");
+  const PitchMovement m = statcast_movement(test::assets(), f);
+  const Vec3 magnus = f.spin.cross(f.release_velocity);  // seen from the catcher: y up, z toward first base
+  const double spin_based = std::atan2(magnus.z(), magnus.y());
+  const double moved = std::atan2(m.horizontal_break, m.induced_vertical_break);
+  INFO("spin-based " << rad_to_deg(spin_based) << " deg, moved " << rad_to_deg(moved) << " deg, HB "
+                     << inches(m.horizontal_break) << " in");
+  CHECK(rad_to_deg(spin_based - moved) == Approx(rad_to_deg(si.seam_wake_deviation)).margin(2.0));
+  CHECK(std::abs(-inches(m.horizontal_break) - 15.0) <= 2.0);
+  // The same spin along the movement's direction and no wake (the Magnus force alone) runs
+  // it less far: the wake adds to the Magnus force, across it.
+  PitchCall plain;
+  plain.type = si;
+  plain.type.seam_wake_deviation = 0.0;
+  const PitchFlight pf = throw_pitch(test::assets(), plain);
+  CHECK(pf.seam_side_force == 0.0);
+  CHECK(-inches(m.horizontal_break) > -inches(statcast_movement(test::assets(), pf).horizontal_break) + 0.5);
+  // A left-hander's sinker is the mirror image.
+  PitchCall left;
+  left.type = si;
+  left.left_handed = true;
+  const PitchMovement lm = statcast_movement(test::assets(), throw_pitch(test::assets(), left));
+  CHECK(lm.horizontal_break == Approx(-m.horizontal_break).margin(1e-6));
+  CHECK(lm.induced_vertical_break == Approx(m.induced_vertical_break).margin(1e-6));
+}
+
 TEST_CASE("Statcast's movement is the Magnus share from 50 ft to the plate's front", "[baseball][pitch]") {
   // A pitch without spin has no lift: the ball under the liftless law is the same ball.
   PitchCall still;

@@ -91,7 +91,9 @@ struct ShotModel {
   /// beside the Magnus force. 0 = none (golf balls and batted balls: their dimples or
   /// tumbling seams make no steady wake).
   double seam_side_force = 0.0;
-  static constexpr Range kSeamSideForce{-0.3, 0.3};  ///< |C_s| up to the Magnus C_L of a fast-spinning pitch
+  /// Up to a baseball's largest lift coefficient (~0.5: Nathan's saturating C_L tends to 0.48)
+  /// turned by 45°, the largest deviation a pitch type may give (game/modes/baseball/pitching.hpp).
+  static constexpr Range kSeamSideForce{-0.5, 0.5};
 };
 
 /// Validates (throws InputError naming the field and its range) and builds the model.

@@ -1,5 +1,6 @@
 // `sweetspot pitch TYPE`: one pitch from the release point to the plate (DESIGN §9 JSON):
-// where it crosses, how long it flew, its induced vertical and horizontal break.
+// where it crosses, how long it flew, its induced vertical and horizontal break and the
+// seam-shifted wake's share of them.
 #include <iostream>
 #include <cstdio>
 #include <memory>
@@ -45,15 +46,19 @@ RunFn setup_pitch(CLI::App& sub) {
                                 {"flight_time_s", f.flight_time},
                                 {"plate_position_m", {f.plate.x(), f.plate.y(), f.plate.z()}},
                                 {"induced_vertical_break_m", m.induced_vertical_break},
-                                {"horizontal_break_m", m.horizontal_break}};
+                                {"horizontal_break_m", m.horizontal_break},
+                                {"seam_wake_vertical_m", m.seam_wake_vertical},
+                                {"seam_wake_horizontal_m", m.seam_wake_horizontal}};
       std::cout << json_text(j) << "\n";
     } else {
       std::printf("%s (%s-handed)\n  release speed  %.1f mph\n  spin           %.0f rpm\n  flight time    %.3f s\n"
                   "  plate speed    %.1f mph\n  crosses at     %.2f ft high, %+.2f ft (+ first-base side)\n"
-                  "  induced vertical break  %+.1f in\n  horizontal break        %+.1f in\n",
+                  "  induced vertical break  %+.1f in\n  horizontal break        %+.1f in\n"
+                  "    of which seam-shifted wake  %+.1f in up, %+.1f in (+ first-base side)\n",
                   call.type.type.c_str(), o->lefty ? "left" : "right", mps_to_mph(call.type.speed),
                   radps_to_rpm(call.type.spin), f.flight_time, mps_to_mph(f.plate_velocity.norm()), m_to_ft(f.plate.y()),
-                  m_to_ft(f.plate.z()), 12.0 * m_to_ft(m.induced_vertical_break), 12.0 * m_to_ft(m.horizontal_break));
+                  m_to_ft(f.plate.z()), 12.0 * m_to_ft(m.induced_vertical_break), 12.0 * m_to_ft(m.horizontal_break),
+                  12.0 * m_to_ft(m.seam_wake_vertical), 12.0 * m_to_ft(m.seam_wake_horizontal));
     }
     return 0;
   };

@@ -181,7 +181,15 @@ PitchMovement statcast_movement(const Assets& assets, const PitchFlight& pitch) 
   no_lift.aero = &liftless;
   no_lift.seam_side_force = 0.0;  // Statcast's movement is all that is not gravity and drag
   const Crossing plain = fly_to(no_lift, at_start.p, at_start.v, at_start.w, false, kPlateFront);
-  return {front.p.y() - plain.p.y(), front.p.z() - plain.p.z()};
+  PitchMovement out{front.p.y() - plain.p.y(), front.p.z() - plain.p.z()};
+  if (model.seam_side_force != 0.0) {
+    ShotModel magnus_only = model;
+    magnus_only.seam_side_force = 0.0;
+    const Crossing spun = fly_to(magnus_only, at_start.p, at_start.v, at_start.w, false, kPlateFront);
+    out.seam_wake_vertical = front.p.y() - spun.p.y();
+    out.seam_wake_horizontal = front.p.z() - spun.p.z();
+  }
+  return out;
 }
 
 }  // namespace sweetspot

@@ -92,6 +92,9 @@ PitchFlight throw_pitch(const Assets& assets, const PitchCall& call);
 struct PitchMovement {
   double induced_vertical_break = 0.0;
   double horizontal_break = 0.0;  ///< + toward first base (Statcast's pfx_x sign)
+  /// Of that movement, the seam-shifted wake's (m, up and + toward first base): against the
+  /// same ball from 50 ft with its spin's Magnus force alone. 0 for a pitch without a wake.
+  double seam_wake_vertical = 0.0, seam_wake_horizontal = 0.0;
 };
 PitchMovement statcast_movement(const Assets& assets, const PitchFlight& pitch);
 

@@ -87,6 +87,15 @@ TEST_CASE("the sinker's seam-shifted wake turns its movement off its spin toward
                      << inches(m.horizontal_break) << " in");
   CHECK(rad_to_deg(spin_based - moved) == Approx(rad_to_deg(si.seam_wake_deviation)).margin(2.0));
   CHECK(std::abs(-inches(m.horizontal_break) - 15.0) <= 2.0);
+  // The wake's share is across the Magnus force's, tan δ of it (the two forces keep their
+  // angle as the pitch slows; their sizes drift apart by a few per cent over its flight).
+  const double wv = m.seam_wake_vertical, wh = m.seam_wake_horizontal;
+  const double mv = m.induced_vertical_break - wv, mh = m.horizontal_break - wh;
+  INFO("wake " << inches(wv) << " in up, " << inches(wh) << " in; Magnus " << inches(mv) << " up, " << inches(mh));
+  CHECK(rad_to_deg(std::acos((wv * mv + wh * mh) / (std::hypot(wv, wh) * std::hypot(mv, mh)))) == Approx(90.0).margin(3.0));
+  CHECK(std::hypot(wv, wh) / std::hypot(mv, mh) == Approx(std::tan(si.seam_wake_deviation)).epsilon(0.05));
+  CHECK(wh < 0.0);  // arm side
+  CHECK(wv < 0.0);  // and down
   // The same spin along the movement's direction and no wake (the Magnus force alone) runs
   // it less far: the wake adds to the Magnus force, across it.
   PitchCall plain;

@@ -49,6 +49,11 @@ void check_ball_density(const BallProperties& ball, double air_density) {
 
 }  // namespace
 
+void set_seam_side_force(ShotModel& model, double c_s) {
+  check_range("flight.seam_side_force", c_s, ShotModel::kSeamSideForce, "");
+  model.seam_side_force = c_s;
+}
+
 ShotModel make_shot_model(const BallProperties& ball, const AeroModel& aero, const Environment& environment,
                           const Terrain* terrain, const FlightSettings& settings) {
   if (!(ball.mass > 0.0 && ball.mass <= 1.0)) throw InputError("ball.mass out of range (allowed (0, 1] kg)");

@@ -88,13 +88,17 @@ struct ShotModel {
   /// thrown with its seams held in one orientation to the flow separates asymmetrically
   /// whatever its spin (Smith, Nathan & Pavlidis, "Not just about Magnus anymore", Baseball
   /// Prospectus 2020); the orientation rides on the spin axis, so the force keeps its place
-  /// beside the Magnus force. 0 = none (golf balls and batted balls: their dimples or
-  /// tumbling seams make no steady wake).
+  /// beside the Magnus force. 0 = none (a golf ball's dimples have no orientation, and no grip
+  /// sets a batted ball's seams to the flow). Set with set_seam_side_force().
   double seam_side_force = 0.0;
-  /// Up to a baseball's largest lift coefficient (~0.5: Nathan's saturating C_L tends to 0.48)
-  /// turned by 45°, the largest deviation a pitch type may give (game/modes/baseball/pitching.hpp).
+  /// No larger than a baseball's largest Magnus coefficient (Nathan's saturating C_L tends to
+  /// 0.48) turned by 45°: a wake as strong as the Magnus force.
   static constexpr Range kSeamSideForce{-0.5, 0.5};
 };
+
+/// Sets a pitch's seam-wake coefficient (ShotModel::seam_side_force); InputError naming
+/// flight.seam_side_force and its range when out of it.
+void set_seam_side_force(ShotModel& model, double c_s);
 
 /// Validates (throws InputError naming the field and its range) and builds the model.
 /// `terrain` == nullptr is an infinite flat fairway at y = 0 (flight without a world); the

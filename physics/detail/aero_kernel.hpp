@@ -4,7 +4,7 @@
 // divisions of an evaluation independent of each other so they overlap in the pipeline.
 // A flight evaluates it ~130 times per shot: as the plain law, a fifth of a golf shot's time.
 // The law itself lives here once; aero_effect() (physics/aero.cpp) is this kernel with a
-// unit mass.
+// unit mass and no seam wake (a pitch's: ShotModel::seam_side_force).
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 #include "game/modes/baseball/pitching.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
@@ -26,7 +27,7 @@ std::vector<PitchType> load_pitch_types(const Assets& assets) {
     p.active_spin = f.quantity(f.required(*t, "active_spin", "transverse share"), "active_spin", Dimension::Fraction, &kFraction);
     p.movement_direction = f.quantity(f.required(*t, "movement_direction", "deg from up"), "movement_direction",
                                       Dimension::Angle, &kDirection);
-    p.seam_wake_deviation = f.quantity(f.required(*t, "seam_wake_deviation", "deg toward the arm side"),
+    p.seam_wake_deviation = f.quantity(f.required(*t, "seam_wake_deviation", "deg, + counter-clockwise from the catcher"),
                                        "seam_wake_deviation", Dimension::Angle, &PitchType::kSeamWakeDeviation);
     p.release_height = f.quantity(f.required(*t, "release_height", "m"), "release_height", Dimension::Length, &kHeight);
     p.release_side = f.quantity(f.required(*t, "release_side", "m"), "release_side", Dimension::Length, &kSide);
@@ -125,8 +126,11 @@ PitchFlight throw_pitch(const Assets& assets, const PitchCall& call) {
   check_range("pitch.seam_wake_deviation", t.seam_wake_deviation, PitchType::kSeamWakeDeviation, "rad");
   ShotModel model = pitch_model(assets);
   const double hand = call.left_handed ? -1.0 : 1.0;
-  model.seam_side_force = seam_side_force(model, t, hand);
-  check_range("pitch seam-shifted wake C_s", model.seam_side_force, ShotModel::kSeamSideForce, "");
+  const double c_s = seam_side_force(model, t, hand);
+  if (!ShotModel::kSeamSideForce.contains(c_s))
+    throw InputError("pitch '" + t.type + "': its seam_wake_deviation with the aero model's lift at its speed and spin gives a seam-wake coefficient " +
+                     std::to_string(c_s) + " (allowed [-0.5, 0.5]: a baseball's C_L turned by at most 45 deg)");
+  set_seam_side_force(model, c_s);
   PitchFlight out;
   out.seam_side_force = model.seam_side_force;
   out.release = Vec3(kRubberToPlate - t.extension, t.release_height, hand * t.release_side);
@@ -137,8 +141,8 @@ PitchFlight throw_pitch(const Assets& assets, const PitchCall& call) {
   // measured direction. A left-hander's pitch is the mirror image (z -> -z) of a
   // right-hander's: spin is an axial vector, so its x and y parts change sign, the gyro part
   // too (a falling pitch's flow is not quite along x, and the gyro part then turns the
-  // Magnus force: unmirrored, a left-hander's sinker ran 0.5 in farther and rose 1.0 in less
-  // than a right-hander's mirrored).
+  // Magnus force: left unmirrored it would run a left-hander's sinker 0.5 in farther and
+  // 1.0 in lower than the mirror image of a right-hander's).
   const double dir = hand * (t.movement_direction + t.seam_wake_deviation);
   const double wt = t.spin * t.active_spin;
   const double wg = t.spin * std::sqrt(std::max(0.0, 1.0 - t.active_spin * t.active_spin));

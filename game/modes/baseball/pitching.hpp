@@ -25,10 +25,10 @@ struct PitchType {
   static constexpr Range kSpin{0.0, rpm_to_radps(4000.0)};
   double active_spin = 0.9;      ///< fraction of the spin that is transverse
   double movement_direction = 0; ///< rad from up, + toward first base (catcher's view), right-handed pitcher
-  /// rad: how far the pitch's movement turns from where its spin alone pushes it, toward the
-  /// arm side and down when > 0 (a right-hander's: + toward third base from up): Hawk-Eye's
-  /// measured spin axis against the axis its movement implies, the seam-shifted wake's share.
-  /// The Magnus force acts at movement_direction + this (catcher's view, right-hander).
+  /// rad: how far the pitch's movement turns from where its spin alone pushes it,
+  /// + counter-clockwise as the catcher sees a right-hander's pitch (a sinker's: toward the arm
+  /// side and down): Hawk-Eye's measured spin axis against the axis its movement implies, the
+  /// seam-shifted wake's share. The Magnus force acts at movement_direction + this.
   double seam_wake_deviation = 0;
   static constexpr Range kSeamWakeDeviation{-kPi / 4.0, kPi / 4.0};
   double release_height = 1.78;  ///< m

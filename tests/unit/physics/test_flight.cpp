@@ -526,7 +526,11 @@ TEST_CASE("a seam-shifted wake pushes across the flow and the Magnus force, ½ρ
   settings.max_time = 0.4;  // a pitch's flight
   const ShotModel plain = make_shot_model(ball, nathan, Environment{}, nullptr, settings);
   ShotModel wake = plain;
-  wake.seam_side_force = 0.1;
+  set_seam_side_force(wake, 0.1);
+  // A wake stronger than a baseball's largest Magnus force is refused, by name.
+  ShotModel refused = plain;
+  CHECK_THROWS_WITH(set_seam_side_force(refused, 0.6), Catch::Contains("flight.seam_side_force") && Catch::Contains("0.5"));
+  CHECK(refused.seam_side_force == 0.0);
   LaunchState l;
   l.position = Vec3(18.4, 1.8, 0.0);
   l.velocity = Vec3(-40.0, 0.0, 0.0);

@@ -113,7 +113,7 @@ TEST_CASE("the sinker's seam-shifted wake turns its movement off its spin toward
   CHECK(lm.induced_vertical_break == Approx(m.induced_vertical_break).margin(1e-6));
 }
 
-TEST_CASE("Statcast's movement is the Magnus share from 50 ft to the plate's front", "[baseball][pitch]") {
+TEST_CASE("Statcast's movement is the spin's share (Magnus and seam wake) from 50 ft to the plate's front", "[baseball][pitch]") {
   // A pitch without spin has no lift: the ball under the liftless law is the same ball.
   PitchCall still;
   still.type = pitch_type(types(), "four-seam");

@@ -128,8 +128,9 @@ PitchFlight throw_pitch(const Assets& assets, const PitchCall& call) {
   const double hand = call.left_handed ? -1.0 : 1.0;
   const double c_s = seam_side_force(model, t, hand);
   if (!ShotModel::kSeamSideForce.contains(c_s))
-    throw InputError("pitch '" + t.type + "': its seam_wake_deviation with the aero model's lift at its speed and spin gives a seam-wake coefficient " +
-                     std::to_string(c_s) + " (allowed [-0.5, 0.5]: a baseball's C_L turned by at most 45 deg)");
+    throw InputError("pitch '" + t.type + "': its seam_wake_deviation, with the aero model's lift at its speed and spin, " +
+                     "gives a seam-wake coefficient " + std::to_string(c_s) + " (allowed " +
+                     range_text(ShotModel::kSeamSideForce, "") + ": a baseball's C_L turned by at most 45 deg)");
   set_seam_side_force(model, c_s);
   PitchFlight out;
   out.seam_side_force = model.seam_side_force;

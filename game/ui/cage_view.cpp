@@ -90,10 +90,19 @@ float draw_stats(const BattingCage& c, int w, int h) {
   } else {
     ImGui::Text("Batting practice");
   }
-  if (c.stage() == Stage::Ready)
+  if (c.stage() == Stage::Ready) {
     ImGui::TextUnformatted("Pitch: P or Space calls for one");
-  else
+  } else if (c.stage() == Stage::Pitching) {
     ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
+  } else {
+    // Once it has gone by, its shape as Statcast tells it: the run toward the pitcher's arm or
+    // glove side and the rise or drop against a spinless ball (induced vertical break).
+    const PitchMovement& m = c.movement();
+    const bool arm_side = (m.horizontal_break < 0.0) != c.call().left_handed;
+    ImGui::Text("Pitch: %s %.0f mph, %.0f in %s, %.0f in %s", c.call().type.type.c_str(),
+                mps_to_mph(c.call().type.speed), 12.0 * std::abs(m_to_ft(m.horizontal_break)), arm_side ? "arm side" : "glove side",
+                12.0 * std::abs(m_to_ft(m.induced_vertical_break)), m.induced_vertical_break >= 0.0 ? "rise" : "drop");
+  }
   ImGui::Text("Swing: %s, %s-handed", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right");
   ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height");
   ImGui::TextDisabled("C: power/contact  L: batter's side");

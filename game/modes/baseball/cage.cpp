@@ -52,6 +52,7 @@ BattingCage::BattingCage(const Assets& assets, std::uint64_t seed)
 void BattingCage::next_pitch(double t) {
   call_ = live_ ? pitcher_.next(count_, lefty_).call : derby_pitch(types_, rng_);
   pitch_ = throw_pitch(assets_, call_);
+  movement_ = statcast_movement(assets_, pitch_);
   released_at_ = t + kWindupTime / kPitchTimeScale;
   stage_ = Stage::Pitching;
   call_text_.clear();

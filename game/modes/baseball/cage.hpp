@@ -45,6 +45,9 @@ class BattingCage {
   Stage stage() const { return stage_; }
   const PitchCall& call() const { return call_; }
   const PitchFlight& pitch() const { return pitch_; }
+  /// The pitch's movement as Statcast reads it (its run and rise or drop, the seam wake's
+  /// share): what the HUD tells once the pitch has gone by.
+  const PitchMovement& movement() const { return movement_; }
   /// m, the cage's ball (the league's).
   double ball_radius() const;
   /// Pitch time (s since release, slowed by kPitchTimeScale; negative in the wind-up) at mode time `t`.
@@ -97,6 +100,7 @@ class BattingCage {
   Stage stage_ = Stage::Ready;
   PitchCall call_;
   PitchFlight pitch_;
+  PitchMovement movement_;
   double released_at_ = 0.0, batted_at_ = 0.0, swung_at_ = -1e9;
   double taken_at_ = -1e9;  ///< when the last pitch went by untouched
   double bat_height_ = 0.76;

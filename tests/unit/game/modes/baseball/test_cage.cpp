@@ -196,3 +196,31 @@ TEST_CASE("Space pressed a beat after a pitch went by is a late swing, not a cal
   cage.update({at(IntentKind::Swing, by + 0.2 + BattingCage::kLateSwing)}, by + 0.3 + BattingCage::kLateSwing);
   CHECK(cage.stage() == BattingCage::Stage::Pitching);
 }
+
+TEST_CASE("the cage tells each pitch's movement as Statcast reads it, the seam wake's share in it", "[modes][baseball]") {
+  BattingCage cage(test::assets(), 3);
+  cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);  // the league's pitcher: his mix
+  REQUIRE(cage.live());
+  std::set<std::string> seen;
+  double now = 1.0;
+  for (int i = 0; i < 40 && seen.size() < 4; ++i) {
+    cage.update({at(IntentKind::Pitch, now)}, now);
+    REQUIRE(cage.stage() == BattingCage::Stage::Pitching);
+    const PitchMovement expect = statcast_movement(test::assets(), cage.pitch());
+    CHECK(cage.movement().induced_vertical_break == expect.induced_vertical_break);
+    CHECK(cage.movement().horizontal_break == expect.horizontal_break);
+    // A right-hander's sinker and changeup run to his arm side (third base, Statcast's pfx_x < 0)
+    // with their wake's share; a four-seamer rises.
+    const std::string& type = cage.call().type.type;
+    seen.insert(type);
+    if (type == "sinker" || type == "changeup") {
+      CHECK(cage.movement().horizontal_break < 0.0);
+      CHECK(cage.movement().seam_wake_horizontal < 0.0);
+    }
+    if (type == "four-seam") CHECK(cage.movement().induced_vertical_break > 0.3);
+    while (cage.stage() == BattingCage::Stage::Pitching) cage.update({}, now += 0.05);
+    now += 2.0;
+    cage.update({}, now);
+  }
+  CHECK(seen.size() >= 4);
+}

@@ -38,17 +38,30 @@ LaunchState launch_of(const ImpactResult& r, const Vec3& ball_centre) {
   return l;
 }
 
+// The least closing speed that is a strike, as a share of the contact's speed: the surface
+// moving within 1° of its own plane only grazes the ball (a 90° spin loft, a bat swung
+// along the ball's side). sin 1° = 0.0175 leaves a ball of ~2 % of the club's speed, the
+// slowest a launch monitor would read as a shot; anything less is a whiff.
+constexpr double kGrazeShare = 0.0175;
+
+// Far off-centre contact with a slow swing, or a face laid open to the swing's direction,
+// can leave the striking surface moving along or away from the contact normal: a geometric
+// miss, which deserves words a player understands rather than a 0 mph "shot".
+void refuse_miss(const Delivery& d, const char* who) {
+  const Vec3 u = contact_velocity(d.impact_input.impactor, d.impact_input.ball);
+  const double closing = -u.dot(d.impact_input.normal);
+  if (closing > kGrazeShare * u.norm() && closing > 1e-3) return;
+  std::ostringstream os;
+  os << who << ": the strike misses: at this contact point the " << (std::string(who).starts_with("golf") ? "club" : "bat")
+     << " does not close on the ball (closing speed " << closing << " m/s along the contact normal, of "
+     << u.norm() << " m/s; a strike needs at least " << kGrazeShare
+     << " of it, the surface moving more than 1 deg out of its own plane); hit nearer the centre, "
+        "swing faster or present less loft to the swing";
+  throw InputError(os.str());
+}
+
 void solve_into(Delivery& d, const char* who) {
-  // Far off-centre contact with a slow swing can leave the striking surface moving along or
-  // away from the contact normal: a geometric miss, which deserves words a player understands.
-  const double closing = -contact_velocity(d.impact_input.impactor, d.impact_input.ball).dot(d.impact_input.normal);
-  if (closing <= 0.0) {
-    std::ostringstream os;
-    os << who << ": the strike misses: at this contact point the " << (std::string(who).starts_with("golf") ? "club" : "bat")
-       << " does not close on the ball (closing speed " << closing
-       << " m/s along the contact normal); hit nearer the centre or swing faster";
-    throw InputError(os.str());
-  }
+  refuse_miss(d, who);
   if (auto msg = validate_impact(d.impact_input); !msg.empty()) {
     throw InputError(std::string(who) + ": " + msg);
   }
@@ -62,14 +75,7 @@ bool uses_duration(const BallSpec& ball, const ImpactMaterial& m) {
 }
 
 void solve_compliant_into(Delivery& d, CompliantImpactInput& in, const char* who) {
-  const double closing = -contact_velocity(d.impact_input.impactor, d.impact_input.ball).dot(d.impact_input.normal);
-  if (closing <= 0.0) {
-    std::ostringstream os;
-    os << who << ": the strike misses: at this contact point the " << (std::string(who).starts_with("golf") ? "club" : "bat")
-       << " does not close on the ball (closing speed " << closing
-       << " m/s along the contact normal); hit nearer the centre or swing faster";
-    throw InputError(os.str());
-  }
+  refuse_miss(d, who);
   if (auto msg = validate_compliant_impact(in); !msg.empty()) throw InputError(std::string(who) + ": " + msg);
   const CompliantImpactResult r = solve_compliant_impact(in);
   ImpactResult& out = d.impact;

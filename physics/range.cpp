@@ -18,18 +18,32 @@ std::string number(double v, int digits = 6) {
 }
 
 // A refused value written with as many digits as it takes to read as outside the range
-// (110.0001 % is not "110 %" against an allowed (0, 110] %).
-std::string refused_number(double v, const Range& r) {
+// (110.0001 % is not "110 %" against an allowed (0, 110] %), in units of `scale` per SI unit.
+std::string refused_number(double v, const Range& r, double scale) {
   for (int digits = 6; digits < 17; ++digits) {
-    const std::string t = number(v, digits);
-    if (!r.contains(std::strtod(t.c_str(), nullptr))) return t;
+    const std::string t = number(v * scale, digits);
+    if (!r.contains(std::strtod(t.c_str(), nullptr) / scale)) return t;
   }
-  return number(v, 17);
+  return number(v * scale, 17);
+}
+
+// Messages are read by people: an angle's SI radian shows as degrees, the unit every input
+// takes and every table shows (SI inside, display units at the edges).
+struct Shown {
+  double scale = 1.0;
+  std::string_view unit;
+};
+Shown shown_unit(std::string_view si_unit) {
+  if (si_unit == "rad") return {180.0 / 3.14159265358979323846, "deg"};
+  return {1.0, si_unit};
 }
 
 }  // namespace
 
-std::string range_text(const Range& r, std::string_view si_unit) {
+std::string range_text(const Range& si, std::string_view si_unit) {
+  const Shown u = shown_unit(si_unit);
+  const Range r{si.min * u.scale, si.max * u.scale, si.min_open, si.max_open};
+  si_unit = u.unit;
   // A one-sided range reads as a bound ("> 0 m/s", ">= 0"), not as an interval to infinity.
   // (Built with a stream: GCC 12 warns falsely, -Wrestrict, on assigning short literals.)
   const bool no_min = std::isinf(r.min) && r.min < 0, no_max = std::isinf(r.max) && r.max > 0;
@@ -54,10 +68,11 @@ std::string range_text(const Range& r, std::string_view si_unit) {
 std::string range_refusal(std::string_view field, double value, const Range& r, std::string_view si_unit) {
   if (r.contains(value)) return {};
   std::string out(field);
-  out += " = " + refused_number(value, r);
-  if (!si_unit.empty()) {
+  const Shown u = shown_unit(si_unit);
+  out += " = " + refused_number(value, r, u.scale);
+  if (!u.unit.empty()) {
     out += ' ';
-    out.append(si_unit);
+    out.append(u.unit);
   }
   out += " is out of range (allowed " + range_text(r, si_unit) + ")";
   return out;

@@ -32,11 +32,12 @@ struct Range {
   }
 };
 
-/// "(0, 90] m/s": the range in SI with the unit given.
+/// "(0, 90] m/s": the range in SI with the unit given; an angle (si_unit "rad") in degrees,
+/// "[0, 70] deg", as people read and write it.
 std::string range_text(const Range& r, std::string_view si_unit);
 
 /// Empty when `value` is in `r`; otherwise "FIELD = VALUE UNIT is out of range (allowed
-/// RANGE)". `field` names the parameter as users write it ("swing.speed").
+/// RANGE)", an angle in degrees. `field` names the parameter as users write it ("swing.speed").
 std::string range_refusal(std::string_view field, double value, const Range& r, std::string_view si_unit);
 
 /// Throws InputError with range_refusal()'s message when `value` is outside `r`.

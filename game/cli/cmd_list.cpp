@@ -3,6 +3,7 @@
 
 #include "game/cli/command.hpp"
 #include "game/content/scenario.hpp"
+#include "game/util/terminal_text.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -13,7 +14,10 @@ RunFn setup_list(CLI::App& /*sub*/) {
     std::size_t width = 0;
     for (const auto& s : all) width = std::max(width, s.name.size());
     for (const auto& s : all) {
-      std::cout << s.name << std::string(width + 2 - s.name.size(), ' ') << scenario_description(s) << "\n";
+      // A scenario file is text from outside: its description prints with nothing a
+      // terminal acts on.
+      std::cout << terminal_safe(s.name) << std::string(width + 2 - s.name.size(), ' ')
+                << terminal_safe(scenario_description(s)) << "\n";
     }
     return 0;
   };

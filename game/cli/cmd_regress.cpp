@@ -48,6 +48,16 @@ RunFn setup_regress(CLI::App& sub) {
       failed_cases += r.passed() ? 0 : 1;
     }
     if (o->update) {
+      // Every file to rewrite must be writable before the first is touched: all updated or
+      // none (a read-only case among them is refused up front).
+      for (const auto& r : results) {
+        if (r.updated_text == r.original_text) continue;
+        try {
+          check_output_path(r.path, "--update");
+        } catch (const InputError& e) {
+          throw InputError(std::string(e.what()) + "; no case file was changed");
+        }
+      }
       int written = 0;
       std::string done;  // the files already rewritten, named if a later one fails
       for (const auto& r : results) {

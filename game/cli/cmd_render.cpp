@@ -91,9 +91,11 @@ RunFn setup_render(CLI::App& sub) {
   sub.add_option("scenario", o->scenario, "built-in scenario name or .toml path (without it: the launch flags below)");
   sub.add_option("-o,--output", o->output, "PNG file to write (written atomically)");
   sub.add_option("--video", o->video, "MP4 (H.264) of the whole shot from the downswing, written atomically");
-  sub.add_option("--fps", o->fps, "--video: frames per second, 1..240")->capture_default_str();
-  sub.add_option("--slow-motion", o->slow, "--video: play the strike (10 ms before to 40 ms after contact) this many times slower, 1..1000")
-      ->capture_default_str();
+  const CLI::Option* fps = sub.add_option("--fps", o->fps, "--video: frames per second, 1..240")->capture_default_str();
+  const CLI::Option* slow =
+      sub.add_option("--slow-motion", o->slow,
+                     "--video: play the strike (10 ms before to 40 ms after contact) this many times slower, 1..1000")
+          ->capture_default_str();
   sub.add_option("--width", o->width, "image width in pixels (16..8192)")->check(CLI::Range(16, 8192))->capture_default_str();
   sub.add_option("--height", o->height, "image height in pixels (16..8192)")->check(CLI::Range(16, 8192))->capture_default_str();
   sub.add_option("--camera", o->camera, "behind, side, top or follow")->capture_default_str();
@@ -111,7 +113,11 @@ RunFn setup_render(CLI::App& sub) {
   sub.add_option("--hole", o->hole, "the hole to overview with --course, 1..18")->check(CLI::Range(1, 18));
   sub.add_option("--shadows", o->shadows, "sun shadows: auto (on with a GPU, off on llvmpipe for speed), on or off")
       ->capture_default_str()->check(CLI::IsMember({"auto", "on", "off"}));
-  return [o, launch_only](const Assets& assets) -> int {
+  return [o, launch_only, fps, slow](const Assets& assets) -> int {
+    // The clip's settings without a clip would be ignored: said instead.
+    for (const CLI::Option* clip_only : {fps, slow})
+      if (o->video.empty() && clip_only->count() > 0)
+        throw InputError(clip_only->get_name() + ": a setting of the clip; give it with --video F.mp4");
     RenderRequest r;
     r.camera = parse_camera_kind(o->camera);
     std::optional<double> at;
@@ -199,6 +205,8 @@ RunFn setup_render(CLI::App& sub) {
     }
     if (!o->impactor.empty()) r.impactor_mesh = o->impactor == "none" ? "" : o->impactor;
     if (r.impactor_mesh.empty()) r.impactor.reset();
+    // A clip too large to draw is refused before the image is written: nothing half done.
+    if (!o->video.empty()) video_frame_times(result.trajectory, r, VideoRequest{o->fps, o->slow});
     try {
       if (!o->output.empty()) render_shot_png(result.trajectory, r, o->output);
       if (!o->video.empty()) {

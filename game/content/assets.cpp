@@ -8,6 +8,7 @@
 
 #include "game/content/aero_file.hpp"
 #include "game/content/sport_file.hpp"
+#include "game/content/toml_file.hpp"
 #include "game/core/shot_spec.hpp"
 #include "physics/error.hpp"
 
@@ -62,13 +63,80 @@ const EquipmentCatalog& Assets::equipment() const {
   return impl_->once(impl_->equipment, [&] { return load_equipment(impl_->root / "equipment"); });
 }
 
+namespace {
+
+// A name sports.toml gives, refused at the line that gives it.
+[[noreturn]] void refuse(const SportProfile& p, const std::string& key, const std::string& message) {
+  const auto it = p.source.find(key);
+  throw InputError((it != p.source.end() ? it->second + ": " : "sports.toml: ") + key + ": " + message);
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// What each sport names must exist among the other assets, and be of that sport: a ball and
+// an impactor of the equipment, a world file and a built-in scenario.
+void check_sport_names(const SportCatalog& catalog, const EquipmentCatalog& eq, const fs::path& root) {
+  for (const SportProfile& p : catalog.sports) {
+    std::vector<std::string> names;
+    for (const BallSpec& b : eq.balls) names.push_back(b.name);
+    if (std::find(names.begin(), names.end(), p.ball) == names.end())
+      refuse(p, "ball", "unknown ball '" + p.ball + "' (allowed: " + listed(names) + ")");
+    names.clear();
+    if (p.impactor == ImpactorKind::Club)
+      for (const ClubSpec& c : eq.clubs) names.push_back(c.name);
+    else
+      for (const BatSpec& b : eq.bats) names.push_back(b.name);
+    if (std::find(names.begin(), names.end(), p.default_impactor) == names.end())
+      refuse(p, "default_impactor",
+             "unknown " + std::string(to_string(p.impactor)) + " '" + p.default_impactor + "' (allowed: " + listed(names) + ")");
+    if (p.default_world != kFlatWorld) {
+      const fs::path world = root / "worlds" / (p.default_world + ".toml");
+      std::error_code ec;
+      if (p.default_world.find('/') != std::string::npos || !fs::is_regular_file(world, ec))
+        refuse(p, "default_world", "no world '" + p.default_world + "' in assets/worlds (or none, flat ground)");
+      const TomlFile w = TomlFile::read(world, "world");
+      const toml::node* sport = w.root().get("sport");
+      const std::string its = sport != nullptr ? w.text(*sport, "sport") : "";
+      if (its != p.name) refuse(p, "default_world", "world '" + p.default_world + "' is a " + its + " world, not " + p.name);
+    }
+    std::error_code ec;
+    if (!p.default_scenario.starts_with(p.name + "/") || p.default_scenario.find("..") != std::string::npos ||
+        !fs::is_regular_file(root / "scenarios" / (p.default_scenario + ".toml"), ec))
+      refuse(p, "default_scenario",
+             "no built-in scenario '" + p.default_scenario + "' (allowed: " + p.name + "/NAME of assets/scenarios/" +
+                 p.name + ")");
+  }
+}
+
+}  // namespace
+
 const SportCatalog& Assets::sports() const {
-  return impl_->once(impl_->sports, [&] { return load_sports(impl_->root / "sports.toml"); });
+  const EquipmentCatalog& eq = equipment();
+  return impl_->once(impl_->sports, [&] {
+    SportCatalog c = load_sports(impl_->root / "sports.toml");
+    check_sport_names(c, eq, impl_->root);
+    return c;
+  });
 }
 
 const std::vector<AeroModel>& Assets::aero_models() const {
   const SportCatalog& catalog = sports();
-  return impl_->once(impl_->aero, [&] { return load_aero_models(impl_->root / "aero_models.toml", catalog); });
+  return impl_->once(impl_->aero, [&] {
+    std::vector<AeroModel> models = load_aero_models(impl_->root / "aero_models.toml", catalog);
+    for (const SportProfile& p : catalog.sports) {
+      std::vector<std::string> names;
+      for (const AeroModel& m : models)
+        if (m.sport == p.name) names.push_back(m.name);
+      if (std::find(names.begin(), names.end(), p.default_aero) == names.end())
+        refuse(p, "default_aero", "no " + p.name + " aero model '" + p.default_aero + "' in aero_models.toml (allowed: " +
+                                      listed(names) + ")");
+    }
+    return models;
+  });
 }
 
 const AeroModel& Assets::aero(std::string_view name) const {

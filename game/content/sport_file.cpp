@@ -41,6 +41,13 @@ SportCatalog load_sports(const std::filesystem::path& path) {
       auto& list = std::string_view(key) == "report" ? p.report : p.csv;
       for (const auto& e : *a) list.push_back(f.text(e, key));
     }
+    // The rules play the game the impactor makes: golf strokes with a club, at-bats with a
+    // bat. A mismatch would run a round whose ball can never be holed.
+    if ((p.rules == "golf") != (p.impactor == ImpactorKind::Club))
+      f.fail(rules, "rules", "'" + p.rules + "' does not go with impactor '" + kind + "' (allowed: golf with club, baseball with bat)");
+    for (const char* key : {"name", "ball", "impactor", "default_impactor", "default_world", "default_aero",
+                            "default_scenario", "rules", "report", "csv"})
+      p.source[key] = f.where(*t->get(key));
     for (const SportProfile& o : out.sports)
       if (o.name == p.name) throw InputError(f.where(*t) + ": sport '" + p.name + "' is defined twice");
     out.sports.push_back(std::move(p));

@@ -4,6 +4,7 @@
 // pitching machine are data.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,9 @@ struct SportProfile {
   std::string distance_unit = "yd";  ///< imperial display unit of distances: "yd" or "ft"
   std::vector<std::string> report;   ///< launch-monitor rows: metric ids (game/report/metrics.hpp)
   std::vector<std::string> csv;      ///< CSV columns: metric ids
+  /// Where the file set each key ("…/sports.toml:12"), so a name checked against the other
+  /// assets later (the ball, the world, the aero model) is refused at its own line.
+  std::map<std::string, std::string, std::less<>> source;
 };
 
 /// The set of sports a build knows (loaded once by Assets).

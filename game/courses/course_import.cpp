@@ -17,6 +17,7 @@
 #include "game/courses/tree_planting.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
+#include "physics/range.hpp"
 
 namespace sweetspot {
 namespace {
@@ -67,7 +68,10 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
     throw InputError(o.out.string() + ": already exists (course import writes a new directory; remove it or give another -o)");
   const std::filesystem::path parent = o.out.has_parent_path() ? o.out.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(parent, ec)) throw InputError(o.out.string() + ": its folder " + parent.string() + " does not exist");
-  if (!(o.cell >= 0.5 && o.cell <= 50.0)) throw InputError("--cell: " + std::to_string(o.cell) + " m (allowed [0.5, 50])");
+  if (!(o.cell >= 0.5 && o.cell <= 50.0)) {
+    static constexpr Range kCell{0.5, 50.0};
+    throw InputError(range_refusal("--cell", o.cell, kCell, "m"));
+  }
   note_input_file(o.map);
   std::unique_ptr<ElevationModel> dem;
   if (!o.dem.empty()) {

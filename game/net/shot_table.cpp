@@ -65,7 +65,16 @@ std::optional<ShotResult> predict_from_club_data(const Assets& assets, const std
   // Face angle and loft as a device measures them: where the face meets the ball
   // (TrackMan's definitions), so a toe strike's bulge is not counted twice.
   g.strike_face_angle = c.face_to_target_deg.value_or(0.0) / kDegPerRad;
-  // A loft of 0 is how connectors say "not measured"; the club's typical loft stands in.
+  // A loft of 0 is how connectors say "not measured"; the club's typical loft stands in. A
+  // negative one is a measurement this model cannot strike with (the face turned past
+  // vertical onto the ball): said, not silently replaced by the typical loft.
+  if (c.loft_deg && *c.loft_deg < 0.0) {
+    char loft[32];
+    std::snprintf(loft, sizeof loft, "%g", *c.loft_deg);
+    throw InputError(std::string("ClubData.Loft = ") + loft +
+                     " deg: a face delivered with negative loft is not modelled (allowed: 0 for not measured, or a "
+                     "positive dynamic loft within the club's range)");
+  }
   if (c.loft_deg && *c.loft_deg > 0.0) g.strike_loft = *c.loft_deg / kDegPerRad;
   if (c.horizontal_impact_mm) g.impact_toe = *c.horizontal_impact_mm / 1000.0;
   if (c.vertical_impact_mm && *c.vertical_impact_mm != 0.0) g.impact_up = *c.vertical_impact_mm / 1000.0;
@@ -87,6 +96,10 @@ std::string club_for_delivery(const Assets& assets, const OcClubData& c, double 
     // The device measured dynamic loft: the club whose typical loft is nearest.
     for (const std::string& club : golf_bag()) {
       const ClubSpec& spec = eq.club(club);
+      // A full swing's speed is no putting stroke, however little loft the device saw
+      // (the putter's reference stroke is a few mph; 2.5 x covers the longest putt).
+      const ClubInfo& info = eq.club_info_of(club);
+      if (info.kind == "putter" && c.speed_mph && *c.speed_mph > 2.5 * mps_to_mph(info.tour_speed)) continue;
       const double typical = spec.dynamic_loft + strike_tilt(spec, spec.strike_height);
       const double d = std::abs(typical * kDegPerRad - *c.loft_deg);
       if (d < gap) gap = d, best = club;

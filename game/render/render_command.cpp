@@ -101,8 +101,8 @@ std::vector<std::uint8_t> render_shot_rgba(const ShotTrajectory& trajectory, con
   return frames.at(t);
 }
 
-int render_shot_video(const ShotTrajectory& trajectory, const RenderRequest& request, const VideoRequest& video,
-                      const std::filesystem::path& out) {
+std::vector<double> video_frame_times(const ShotTrajectory& trajectory, const RenderRequest& request,
+                                      const VideoRequest& video) {
   if (trajectory.samples.empty()) throw InputError("render: the shot has no trajectory samples");
   check_size(request);
   ClipTiming timing;
@@ -110,7 +110,22 @@ int render_shot_video(const ShotTrajectory& trajectory, const RenderRequest& req
   timing.end = trajectory.samples.back().t;
   timing.fps = video.fps;
   timing.slow = video.slow;
-  const std::vector<double> times = clip_frame_times(timing);
+  std::vector<double> times = clip_frame_times(timing);
+  const double pixels = static_cast<double>(times.size()) * request.width * request.height;
+  if (pixels > kMaxClipPixels) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "--video: %zu frames of %dx%d (--fps %d, --slow-motion %g) draw %.3g pixels, more than the %.3g a "
+                  "clip may (~4 min of software rendering); lower --fps, --slow-motion or the size",
+                  times.size(), request.width, request.height, video.fps, video.slow, pixels, kMaxClipPixels);
+    throw InputError(text);
+  }
+  return times;
+}
+
+int render_shot_video(const ShotTrajectory& trajectory, const RenderRequest& request, const VideoRequest& video,
+                      const std::filesystem::path& out) {
+  const std::vector<double> times = video_frame_times(trajectory, request, video);
   Mp4Writer writer(request.width, request.height, video.fps);
   ShotFrames frames(trajectory, request);
   for (double t : times) writer.add_frame(frames.at(t));

@@ -52,8 +52,16 @@ struct VideoRequest {
   int fps = 30;
   double slow = 1.0;
 };
+/// Pixels a clip may draw in all (frames x width x height): 4e9, ~4 min of llvmpipe at its
+/// measured ~16 Mpx/s (the default 1280x720 clip of a drive, ~350 frames, is 3.2e8 in 20 s),
+/// e.g. 1080p at 30 fps for a minute.
+inline constexpr double kMaxClipPixels = 4e9;
+/// The clip's frame times; throws InputError (naming --fps, --slow-motion and the size)
+/// when they would draw more than kMaxClipPixels, before anything is drawn or written.
+std::vector<double> video_frame_times(const ShotTrajectory& trajectory, const RenderRequest& request,
+                                      const VideoRequest& video);
 /// Renders every frame off-screen and writes them as an H.264 MP4 to `out`, atomically.
-/// Returns the number of frames. Throws as render_shot_rgba.
+/// Returns the number of frames. Throws as render_shot_rgba and video_frame_times.
 int render_shot_video(const ShotTrajectory& trajectory, const RenderRequest& request, const VideoRequest& video,
                       const std::filesystem::path& out);
 

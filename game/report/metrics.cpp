@@ -187,7 +187,18 @@ const auto always = [](const ShotResult&) { return true; };
 std::vector<Metric> build() {
   std::vector<Metric> m;
   // ---- launch ------------------------------------------------------------------------
-  m.push_back(speed("club_speed", "Club speed", "club_speed", club, [](const ShotResult& r) { return r.club.speed; }));
+  {
+    // The swing's speed, and where a lie (sand, rough) took some of it before the face met the
+    // ball, the speed it met the ball at: the one the smash factor divides by.
+    Metric cs = speed("club_speed", "Club speed", "club_speed", club, [](const ShotResult& r) { return r.club.speed; });
+    cs.show = [base = cs.show](const ShotResult& r, const DisplayUnits& u) -> std::optional<std::string> {
+      auto out = base(r, u);
+      if (out && !r.lie.empty() && r.club.speed_at_impact > 0.0 && r.club.speed_at_impact < 0.99 * r.club.speed)
+        *out += ", " + fixed(u.speed(r.club.speed_at_impact), 1) + " at the ball (the " + r.lie + " took the rest)";
+      return out;
+    };
+    m.push_back(cs);
+  }
   m.push_back(speed("ball_speed", "Ball speed", "ball_speed", always,
                     [](const ShotResult& r) { return r.launch.ball_speed; }, "ball_speed"));
   m.push_back(speed("exit_velocity", "Exit velocity", "exit_velocity", always,

@@ -21,7 +21,19 @@ constexpr double kDegPerRad = 180.0 / kPi;
 
 DisplayUnits display_units(const SportProfile& sport, UnitSystem units) { return DisplayUnits{units, sport.distance_unit}; }
 
+void check_metric_ids(const SportProfile& sport) {
+  for (const char* key : {"report", "csv"}) {
+    for (const std::string& id : std::string_view(key) == "report" ? sport.report : sport.csv) {
+      if (find_metric(id) != nullptr) continue;
+      const auto at = sport.source.find(key);
+      throw InputError((at != sport.source.end() ? at->second : std::string("sports.toml")) + ": " + key +
+                       ": unknown launch-monitor metric '" + id + "' (allowed: " + metric_ids() + ")");
+    }
+  }
+}
+
 std::string launch_table(const ShotResult& r, const SportProfile& sport, UnitSystem units) {
+  check_metric_ids(sport);
   std::string title = r.scenario;
   if (r.impact.present) title += "  (" + (r.club.club.empty() ? r.bat.bat : r.club.club) + ")";
   std::string table = metric_table(title, sport.report, r, display_units(sport, units));
@@ -161,6 +173,7 @@ const Metric& metric(const std::string& id) {
 }  // namespace
 
 std::string csv_header(const SportProfile& sport, UnitSystem units) {
+  check_metric_ids(sport);
   const DisplayUnits u = display_units(sport, units);
   std::string out;
   for (const std::string& id : sport.csv) {
@@ -171,6 +184,7 @@ std::string csv_header(const SportProfile& sport, UnitSystem units) {
 }
 
 std::string csv_row(const ShotResult& r, const SportProfile& sport, UnitSystem units) {
+  check_metric_ids(sport);
   const DisplayUnits u = display_units(sport, units);
   std::string out;
   bool first = true;

@@ -17,6 +17,9 @@ namespace sweetspot {
 /// The display units of a sport in a unit system.
 DisplayUnits display_units(const SportProfile& sport, UnitSystem units);
 
+/// Refuses (InputError at sports.toml's line) a report or csv metric id the build does not know.
+void check_metric_ids(const SportProfile& sport);
+
 /// Launch-monitor table: one "Label  value unit" line per row of the sport's profile.
 std::string launch_table(const ShotResult& r, const SportProfile& sport, UnitSystem units);
 

@@ -6,6 +6,7 @@
 #include "game/content/json_unique_keys.hpp"
 #include "game/content/toml_file.hpp"
 #include "physics/error.hpp"
+#include "physics/range.hpp"
 
 namespace sweetspot {
 namespace {
@@ -36,7 +37,10 @@ struct Reader {
     const auto& v = at(j, key, path);
     if (!v.is_number()) fail(path + key, "must be a number");
     const double x = v.get<double>();
-    if (!r.contains(x)) fail(path + key, std::to_string(x) + " is out of range (allowed " + range_text(r, "") + ")");
+    if (!r.contains(x)) {
+      const std::string refusal = range_refusal(key, x, r, "");  // "key = 1e+308 is out of range (allowed ...)"
+      fail(path + key, refusal.substr(refusal.find(" = ") + 3));
+    }
     return x;
   }
   bool flag(const nlohmann::json& j, const std::string& key, const std::string& path = "") const {

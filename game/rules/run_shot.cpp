@@ -161,7 +161,9 @@ ShotResult run_shot(const ResolvedShot& s, const std::string& name, const RunOpt
     model.cup = cup;
   }
   if (r.impact.present) add_measured_range_warnings(s, r);
-  if (r.impact.present && r.impact.energy_loss < 0.0) {
+  // Energy created beyond the solve's own round-off (the compliant contact integrates to
+  // ~1e-5 J of a ~150 J impact; 0.05 J is the table's last shown digit).
+  if (r.impact.present && r.impact.energy_loss < -0.05) {
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "the %s friction model created %.1f J in the impact (it does not bound the tangential impulse)",

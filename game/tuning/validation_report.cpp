@@ -80,7 +80,8 @@ std::string validation_scorecard(const std::vector<ValidationOutcome>& outcomes,
       const ValidationCase& c = *o.c;
       const bool diff = !c.baseline.empty();
       char err[32];
-      std::snprintf(err, sizeof err, "%+.2f", o.error_in_tolerances());
+      const double e = o.error_in_tolerances();
+      std::snprintf(err, sizeof err, std::fabs(e) < 1e4 ? "%+.2f" : "%+.3g", e);  // 1e308 yd is no 309-digit row
       rows.push_back({c.id + (c.fitted ? " (fitted)" : ""), std::string(c.quantity->name) + (diff ? " change" : ""),
                       shown(c.published, c, diff), shown(o.got, c, diff), shown(c.tolerance, c, true), err,
                       o.passed ? "pass" : "FAIL"});

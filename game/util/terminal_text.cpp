@@ -31,6 +31,19 @@ std::size_t utf8_length(std::string_view text, std::size_t i) {
   return n;
 }
 
+// The code point at text[i] (a valid n-byte sequence) when it reorders or breaks the text
+// a terminal shows (the bidirectional embeddings, overrides, isolates and marks: a name
+// with U+202E prints reversed, "Trojan Source"; the line and paragraph separators), else 0.
+unsigned layout_control(std::string_view text, std::size_t i, std::size_t n) {
+  if (n != 2 && n != 3) return 0;
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned>(static_cast<unsigned char>(text[i + k])); };
+  const unsigned cp = n == 2 ? ((byte(0) & 0x1F) << 6) | (byte(1) & 0x3F)
+                             : ((byte(0) & 0x0F) << 12) | ((byte(1) & 0x3F) << 6) | (byte(2) & 0x3F);
+  const bool bidi = cp == 0x200E || cp == 0x200F || cp == 0x061C || (cp >= 0x202A && cp <= 0x202E) ||
+                    (cp >= 0x2066 && cp <= 0x2069);
+  return bidi || cp == 0x2028 || cp == 0x2029 ? cp : 0;
+}
+
 }  // namespace
 
 std::string terminal_safe(std::string_view text) {
@@ -53,6 +66,9 @@ std::string terminal_safe(std::string_view text) {
     } else if (n == 2 && b == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0) {
       escaped(out, "\\u%04x", static_cast<unsigned char>(text[i + 1]));  // a C1 control
       i += 2;
+    } else if (const unsigned cp = layout_control(text, i, n); cp != 0) {
+      escaped(out, "\\u%04x", cp);
+      i += n;
     } else {
       out.append(text, i, n);
       i += n;

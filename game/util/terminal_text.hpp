@@ -10,8 +10,10 @@ namespace sweetspot {
 
 /// `text` with every byte a terminal could act on shown escaped: C0 controls and DEL as
 /// "\xNN" ("\n" and "\t" as themselves escaped), the C1 controls U+0080..U+009F (in UTF-8)
-/// as "\u00NN", and bytes that are not UTF-8 as "\xNN" (a lone 0x9B is CSI to an 8-bit
-/// terminal). Valid UTF-8 text otherwise passes unchanged.
+/// as "\u00NN", the bidirectional controls (U+202A..U+202E, U+2066..U+2069, U+200E/F,
+/// U+061C) and the line and paragraph separators as "\uNNNN", and bytes that are not UTF-8
+/// as "\xNN" (a lone 0x9B is CSI to an 8-bit terminal). Valid UTF-8 text otherwise passes
+/// unchanged.
 std::string terminal_safe(std::string_view text);
 
 }  // namespace sweetspot

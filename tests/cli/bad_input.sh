@@ -104,8 +104,24 @@ expect_bad "a newline in a value" 'swing.speed=113mph\n' -- shot golf/driver --s
 expect_bad "usage error on one line" "--world|run with --help" -- flight --ball-speed 160mph --launch-angle 10deg --spin 2500rpm --world ""
 [ "$(wc -l < "$tmp/err")" = 1 ] || fail "a usage error takes $(wc -l < "$tmp/err") lines"
 expect_bad "play's game options headless" "--mode needs the game window" -- play --mode golf
+# A clip too large to draw is refused before anything is drawn or written, the image included.
+expect_bad "render: a clip of hours" "--video|pixels|lower --fps" -- render golf/driver -o "$tmp/big.png" --video "$tmp/big.mp4" --width 8192 --height 8192 --fps 240 --slow-motion 1000
+[ ! -e "$tmp/big.png" ] && [ ! -e "$tmp/big.mp4" ] || fail "render wrote part of a refused clip"
+expect_bad "render: a clip's setting without a clip" "--fps|give it with --video" -- render golf/driver -o "$tmp/a.png" --fps 10
 expect_bad "render: a launch flag with a scenario" "--spin-axis|sets its own" -- render golf/driver -o "$tmp/a.png" --spin-axis 30deg
 expect_bad "a golf shot on the ballpark" "'ballpark' is a baseball world" -- flight --ball-speed 100mph --launch-angle 20deg --spin 2000rpm --world ballpark
+# regress --update writes all the case files it changes or none: a read-only one among them
+# is refused before the first is touched.
+cp "$SWEETSPOT_ROOT/tests/regression/golf_pw.toml" "$tmp/a_case.toml"
+cp "$SWEETSPOT_ROOT/tests/regression/golf_driver.toml" "$tmp/b_case.toml"
+sed -i 's/^\(ball_speed = "\)[0-9.]*/\1100/' "$tmp/a_case.toml" "$tmp/b_case.toml"
+chmod 444 "$tmp/b_case.toml"
+before=$(md5sum "$tmp/a_case.toml")
+set +e; "$bin" regress "$tmp/a_case.toml" "$tmp/b_case.toml" --update >"$tmp/out" 2>"$tmp/err"; rc=$?; set -e
+[ $rc -eq 2 ] || fail "regress --update with a read-only case: exit $rc, want 2 ($(cat "$tmp/err"))"
+grep -qF "no case file was changed" "$tmp/err" || fail "regress --update: $(cat "$tmp/err")"
+[ "$(md5sum "$tmp/a_case.toml")" = "$before" ] || fail "regress --update rewrote one case before refusing another"
+chmod 644 "$tmp/b_case.toml"
 expect_bad "a case given twice" "given twice" -- regress "$SWEETSPOT_ROOT/tests/regression/golf_pw.toml" "$SWEETSPOT_ROOT/tests/regression/golf_pw.toml"
 export SWEETSPOT_ASSETS=""
 expect_bad "empty SWEETSPOT_ASSETS" "SWEETSPOT_ASSETS is set but empty" -- list
@@ -120,6 +136,24 @@ grep -q "driver.toml" "$tmp/err" && fail "a broken materials.toml blamed on the 
 cp "$SWEETSPOT_ROOT/assets/materials.toml" "$assets_copy/materials.toml"
 sed -i '0,/^layer_drag = /s/^layer_drag = .*/layer_drag = 0.5/' "$assets_copy/materials.toml"
 expect_bad "a turf layer beyond its range" "materials.toml:|layer_drag|0.5|0.1" -- shot golf/driver
+cp "$SWEETSPOT_ROOT/assets/materials.toml" "$assets_copy/materials.toml"
+# sports.toml's names are checked against the other assets at their own line.
+sed -i '0,/^rules = "golf"/s//rules = "baseball"/' "$assets_copy/sports.toml"
+expect_bad "golf played by baseball's rules" "sports.toml:|rules|does not go with impactor 'club'" -- round links --calm
+cp "$SWEETSPOT_ROOT/assets/sports.toml" "$assets_copy/sports.toml"
+sed -i '0,/^ball = "tour"/s//ball = "nope"/' "$assets_copy/sports.toml"
+expect_bad "a sport's unknown ball" "sports.toml:7|ball|unknown ball 'nope'|tour, mlb" -- flight --sport golf --ball-speed 100mph --launch-angle 10deg --spin 2000rpm
+cp "$SWEETSPOT_ROOT/assets/sports.toml" "$assets_copy/sports.toml"
+sed -i '0,/^default_world = "golf_hole"/s//default_world = "ballpark"/' "$assets_copy/sports.toml"
+expect_bad "golf's world a ballpark" "sports.toml:|default_world|a baseball world" -- shot golf/driver
+cp "$SWEETSPOT_ROOT/assets/sports.toml" "$assets_copy/sports.toml"
+sed -i '0,/"club_speed", "ball_speed"/s//"nope", "ball_speed"/' "$assets_copy/sports.toml"
+expect_bad "an unknown launch-monitor row" "sports.toml:|report|unknown launch-monitor metric 'nope'" -- shot golf/driver
+cp "$SWEETSPOT_ROOT/assets/sports.toml" "$assets_copy/sports.toml"
+# A pitcher whose every pitch type is thrown 0 % of the time has nothing to throw.
+sed -i 's/^usage = .*/usage = "0%"/' "$assets_copy/pitches.toml"
+expect_bad "no pitch type thrown" "pitches.toml:|usage|at least one must be thrown" -- derby --mode at-bat
+cp "$SWEETSPOT_ROOT/assets/pitches.toml" "$assets_copy/pitches.toml"
 unset SWEETSPOT_ASSETS
 rm -rf "$assets_copy"
 sed 's/^number = 1$/number = 1.5/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$tmp/course.toml"
@@ -129,6 +163,8 @@ expect_bad "a fence without its line" "fence.toml:3|fence_line" -- shot baseball
 printf 'sport = "golf"\nmesh = "x.obj"\nbounds_max = ["450m", "400m", "70m"]\npin = ["9000m", "0m", "0m"]\n' > "$tmp/pin.toml"
 expect_bad "a pin outside the world" "pin.toml:4|outside the world" -- shot golf/driver --set world.name="$tmp/pin.toml"
 expect_bad "a plot that is not a PNG" "name it FILE.png" -- derby --plot "$tmp/spray.jpg"
+# A face laid open to the swing's direction (90 deg of spin loft) grazes: no 0 mph "shot".
+expect_bad "a grazing strike" "the strike misses|1 deg out of its own plane" -- shot golf/driver --set club.name=lw --set swing.attack_angle=-30deg --set swing.dynamic_loft=60deg
 expect_bad "a strike off the 7-iron's face" "on the 7-iron's face|[-0.023, 0.023] m" -- shot golf/7-iron --set "swing.impact_offset=[0mm,28mm]"
 expect_bad "sweep mu without friction" "--mu|friction model is none" -- sweep golf/driver --e 0.7:0.8:2 --mu 0.2:0.4:2 --set impact.friction=none --no-flight
 # A sport switched by --set: the file's club keys are not blamed alone.

@@ -17,6 +17,7 @@ std::vector<PitchType> load_pitch_types(const Assets& assets) {
   static constexpr Range kHeight{0.5, 3.0};
   static constexpr Range kSide{-1.5, 1.5};
   static constexpr Range kExtension{0.5, 3.0};
+  const toml::table* last = nullptr;
   for (const toml::table* t : f.tables(f.root(), "pitch", true)) {
     f.only_keys(*t, "pitch", {"type", "speed", "spin", "active_spin", "movement_direction", "seam_wake_deviation",
                               "release_height", "release_side", "extension", "usage", "zone_share"});
@@ -38,7 +39,16 @@ std::vector<PitchType> load_pitch_types(const Assets& assets) {
     for (const PitchType& o : out)
       if (o.type == p.type) f.fail(*t->get("type"), "type", "'" + p.type + "' is defined twice");
     out.push_back(p);
+    last = t;
   }
+  // The pitcher draws each pitch by these shares: with none above zero there is nothing to
+  // draw from (and a draw over zeros would throw only the last type).
+  double total_usage = 0.0;
+  for (const PitchType& p : out) total_usage += p.usage;
+  if (last != nullptr && total_usage <= 0.0)
+    f.fail(*last->get("usage"), "usage",
+           "every pitch type's usage is 0 %: at least one must be thrown (allowed: shares in [0, 100] % summing "
+           "above 0)");
   return out;
 }
 

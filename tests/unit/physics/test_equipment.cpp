@@ -15,7 +15,7 @@ TEST_CASE("physics-side validation names the field and range", "[equipment][vali
   c.name = "test";
   CHECK_NOTHROW(validate_club(c));
   c.loft = deg_to_rad(95);
-  CHECK_THROWS_WITH(validate_club(c), Contains("club 'test': loft = 1.65806 rad is out of range (allowed [0, 1.22173] rad)"));
+  CHECK_THROWS_WITH(validate_club(c), Contains("club 'test': loft = 95 deg is out of range (allowed [0, 70] deg)"));
   c = ClubSpec{};
   c.cg = Vec3(0.01, 0, 0);
   CHECK_THROWS_WITH(validate_club(c), Contains("behind the face"));

@@ -5,6 +5,7 @@
 // its longest hole (longest in bounds). Same seed, same output, bit for bit.
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -115,7 +116,11 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
       try {
         group.play(in);
       } catch (const InputError& e) {
-        throw InputError(s.where + ": " + e.what());
+        // Say which of the stroke's inputs led there: a speed or a club the player never wrote
+        // comes from its power and the club chosen for it.
+        char power[48];
+        std::snprintf(power, sizeof power, "%.4g %%", 100.0 * s.meter.power);
+        throw InputError(s.where + ": the stroke (" + in.club + ", power = " + power + "): " + e.what());
       }
     } else if (script_turn && !scripted_plays_on) {
       // The script ran out mid-round and no bot plays on: a card with unfinished holes is

@@ -1,6 +1,8 @@
 // `sweetspot shot SCENARIO`: one shot, printed as a launch-monitor table (default), the
 // DESIGN §6 JSON, a GSPro OpenConnect v1 message or a CSV row.
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -78,7 +80,12 @@ RunFn setup_shot(CLI::App& sub) {
     if (!o->e.empty()) apply_set(doc, "impact.e=" + o->e, "--e " + o->e);
     if (!o->mu.empty()) apply_set(doc, "impact.mu=" + o->mu, "--mu " + o->mu);
     const Scenario scenario = scenario_from_doc(assets, doc, o->scenario);
-    if (!o->sound.empty()) check_output_path(o->sound, "--sound");
+    if (!o->sound.empty()) {
+      check_output_path(o->sound, "--sound");
+      std::string ext = std::filesystem::path(o->sound).extension().string();
+      for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (ext != ".wav") throw InputError("--sound " + o->sound + ": the sound is a WAV file; name it FILE.wav");
+    }
     ShotResult r = run_scenario(scenario, RunOptions{true, false});
     if (!o->sound.empty()) write_impact_wav(r, o->sound, "--sound");
     if (r.impact.present) r.impact.mu_grip = mu_grip(scenario.resolved);

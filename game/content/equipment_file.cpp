@@ -117,7 +117,10 @@ FaceLaw read_face(const TomlFile& f, const toml::table& root) {
   const toml::table& t = f.table(*n, "face");
   f.only_keys(t, "face", {"cor_reference_speed", "cor_slope", "mu", "e_t", "friction", "model", "measured"});
   if (const toml::node* m = t.get("measured")) law.measured = read_measured(f, *m, "face.measured");
-  law.reference_speed = f.quantity_or(t, "cor_reference_speed", Dimension::Speed, law.reference_speed);
+  // The speed the face's COR is quoted at (the USGA test's 48.8 m/s); the curve of e over
+  // speed is built about it, so it must be a speed a ball meets a face at.
+  static constexpr Range kReferenceSpeed{1.0, 100.0};
+  law.reference_speed = f.quantity_or(t, "cor_reference_speed", Dimension::Speed, law.reference_speed, &kReferenceSpeed);
   static constexpr Range kSlope{0.0, 0.05};
   law.slope = f.quantity_or(t, "cor_slope", Dimension::Dimensionless, 0.0, &kSlope);
   law.material.mu = f.quantity_or(t, "mu", Dimension::Dimensionless, law.material.mu, &ImpactMaterial::kMu);
@@ -170,6 +173,12 @@ void read_club(const TomlFile& f, const toml::table& t, const FaceLaw& face, con
   k.length = f.quantity(f.required(t, "length", "shaft length"), "length", Dimension::Length, &ClubSpec::kLength);
   if (const toml::node* n = t.get("face_size")) {
     const auto size = f.quantities(*n, "face_size", Dimension::Length, 2);
+    // Checked as written (width and height), at face_size's own line.
+    static constexpr Range kFaceSize{2.0 * ClubSpec::kFaceHalfSize.min, 2.0 * ClubSpec::kFaceHalfSize.max};
+    for (int i = 0; i < 2; ++i)
+      if (const std::string why = range_refusal(i == 0 ? "face_size[0] (width)" : "face_size[1] (height)", size[i], kFaceSize, "m");
+          !why.empty())
+        f.fail(*n, "face_size", why);
     k.face_half_width = 0.5 * size[0];
     k.face_half_height = 0.5 * size[1];
   }

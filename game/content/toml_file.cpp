@@ -105,11 +105,15 @@ void TomlFile::fail(const toml::node& n, std::string_view key, std::string_view 
 }
 
 std::string TomlFile::in_context(const std::string& message, const std::string& context) const {
+  // A message that already names its context ("club 'driver'.inertia: ...") gets it once.
+  const auto with = [&](const std::string& where, const std::string& rest) {
+    return rest.rfind(context, 0) == 0 ? where + rest : where + context + ": " + rest;
+  };
   if (message.rfind(source_ + ":", 0) == 0) {
     const auto colon = message.find(": ", source_.size() + 1);
-    if (colon != std::string::npos) return message.substr(0, colon + 2) + context + ": " + message.substr(colon + 2);
+    if (colon != std::string::npos) return with(message.substr(0, colon + 2), message.substr(colon + 2));
   }
-  return source_ + ": " + context + ": " + message;
+  return with(source_ + ": ", message);
 }
 
 void TomlFile::only_keys(const toml::table& t, std::string_view what,

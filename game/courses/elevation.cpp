@@ -1,9 +1,14 @@
 #include "game/courses/elevation.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <mutex>
+
+#include <unistd.h>
 
 #include <gdal.h>
 #include <ogr_srs_api.h>
@@ -35,6 +40,10 @@ ElevationModel::ElevationModel(const std::filesystem::path& path) : impl_(std::m
   std::call_once(registered, [] { GDALAllRegister(); });
   Impl& m = *impl_;
   m.path = path;
+  // A missing or unreadable file is said as such, not as a raster GDAL cannot read.
+  if (std::error_code ec; !std::filesystem::is_regular_file(path, ec))
+    throw m.fail(std::filesystem::exists(path, ec) ? "not a regular file" : "no such file");
+  if (::access(path.c_str(), R_OK) != 0) throw m.fail(std::string("cannot be read: ") + std::strerror(errno));
   CPLPushErrorHandler(CPLQuietErrorHandler);
   m.ds = GDALOpen(path.string().c_str(), GA_ReadOnly);
   CPLPopErrorHandler();

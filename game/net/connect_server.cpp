@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstring>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -492,7 +494,14 @@ ConnectServer::ConnectServer(const Assets& assets, const ConnectOptions& o, std:
     std::error_code ec;
     impl_->record_bytes = std::filesystem::exists(o.record, ec) ? std::filesystem::file_size(o.record, ec) : 0;
     impl_->record.open(o.record, std::ios::binary | std::ios::app);
-    if (!impl_->record) throw InputError("--record " + o.record + ": cannot open for writing");
+    if (!impl_->record) {
+      std::error_code ec;
+      const std::filesystem::path dir = std::filesystem::path(o.record).parent_path();
+      const std::string why = !dir.empty() && !std::filesystem::is_directory(dir, ec)
+                                  ? "the folder '" + dir.string() + "' does not exist"
+                                  : std::string(std::strerror(errno));
+      throw InputError("--record " + o.record + ": cannot open for writing (" + why + ")");
+    }
   }
   impl_->accept();
 }

@@ -101,6 +101,13 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
     i.tangential_impulse = d.impact.tangential_impulse;
     i.energy_loss = d.impact.energy_loss;
     i.contact_time = d.contact_time;
+    // e_t is the rigid solve's input: the contact with duration makes its own tangential
+    // rebound from the ball's shear, so a set e_t would otherwise change nothing unseen.
+    const bool with_duration = s.ball.compliance.stiffness > 0.0 && s.material.model == ImpactModel::Compliant &&
+                               s.material.friction != FrictionModel::Textbook;
+    if (s.spec.impact.e_t && with_duration)
+      r.warnings.emplace_back("impact.e_t acts in the rigid model only (impact.model=rigid); the compliant contact's "
+                              "tangential rebound comes from the ball's shear (balls.toml), so it is unused here");
   }
   // Launch numbers are measured relative to the aim line; then the shot turns onto it.
   r.launch = measure_launch(r.launch_state);

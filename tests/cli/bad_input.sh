@@ -154,6 +154,14 @@ cp "$SWEETSPOT_ROOT/assets/sports.toml" "$assets_copy/sports.toml"
 sed -i 's/^usage = .*/usage = "0%"/' "$assets_copy/pitches.toml"
 expect_bad "no pitch type thrown" "pitches.toml:|usage|at least one must be thrown" -- derby --mode at-bat
 cp "$SWEETSPOT_ROOT/assets/pitches.toml" "$assets_copy/pitches.toml"
+# A club's face size is checked as written, at face_size's line; a message names its club once.
+sed -i '0,/face_size = \["110mm", "56mm"\]/s//face_size = ["0mm", "56mm"]/' "$assets_copy/equipment/clubs.toml"
+expect_bad "a face of no width" "clubs.toml:|face_size[0] (width)|[0.01, 0.2] m" -- shot golf/driver
+cp "$SWEETSPOT_ROOT/assets/equipment/clubs.toml" "$assets_copy/equipment/clubs.toml"
+sed -i '0,/inertia = \["2843g/s//inertia = ["-2843g/' "$assets_copy/equipment/clubs.toml"
+expect_bad "a head of negative inertia" "clubs.toml:|club 'driver'.inertia|positive definite" -- shot golf/driver
+grep -qF "club 'driver': club 'driver'" "$tmp/err" && fail "the club named twice: $(cat "$tmp/err")"
+cp "$SWEETSPOT_ROOT/assets/equipment/clubs.toml" "$assets_copy/equipment/clubs.toml"
 unset SWEETSPOT_ASSETS
 rm -rf "$assets_copy"
 sed 's/^number = 1$/number = 1.5/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$tmp/course.toml"
@@ -164,6 +172,7 @@ printf 'sport = "golf"\nmesh = "x.obj"\nbounds_max = ["450m", "400m", "70m"]\npi
 expect_bad "a pin outside the world" "pin.toml:4|outside the world" -- shot golf/driver --set world.name="$tmp/pin.toml"
 expect_bad "a plot that is not a PNG" "name it FILE.png" -- derby --plot "$tmp/spray.jpg"
 # A face laid open to the swing's direction (90 deg of spin loft) grazes: no 0 mph "shot".
+expect_bad "an elevation raster that is not there" "$tmp/none.tif: no such file" -- course import "$SWEETSPOT_ROOT/assets/courses/sources/national.osm" -o "$tmp/course_out" --dem "$tmp/none.tif"
 expect_bad "a grazing strike" "the strike misses|1 deg out of its own plane" -- shot golf/driver --set club.name=lw --set swing.attack_angle=-30deg --set swing.dynamic_loft=60deg
 expect_bad "a strike off the 7-iron's face" "on the 7-iron's face|[-0.023, 0.023] m" -- shot golf/7-iron --set "swing.impact_offset=[0mm,28mm]"
 expect_bad "sweep mu without friction" "--mu|friction model is none" -- sweep golf/driver --e 0.7:0.8:2 --mu 0.2:0.4:2 --set impact.friction=none --no-flight

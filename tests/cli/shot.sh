@@ -102,6 +102,11 @@ msg=$("$bin" shot baseball/line-drive --sound "$tmp" 2>&1); rc=$?
 [ $rc -eq 2 ] && echo "$msg" | grep -q -- "--sound" || fail "--sound to a folder: rc $rc: $msg"
 msg=$("$bin" shot golf/driver --set impact.model=rigid --sound "$tmp/rigid.wav" 2>&1); rc=$?
 [ $rc -eq 2 ] && echo "$msg" | grep -q -- "--sound" || fail "--sound without a contact time: rc $rc: $msg"
+msg=$("$bin" shot golf/driver --sound "$tmp/crack.mp3" 2>&1); rc=$?
+[ $rc -eq 2 ] && echo "$msg" | grep -q -- "name it FILE.wav" || fail "--sound to an .mp3 name: rc $rc: $msg"
+# e_t is the rigid solve's input: set under the compliant contact, the table says it is unused.
+"$bin" shot golf/driver --set impact.e_t=1 | grep -q "warning: impact.e_t acts in the rigid model only" ||
+  fail "impact.e_t under the compliant contact passed unremarked"
 set -e
-[ ! -e "$tmp/rigid.wav" ] || fail "--sound wrote a file it refused"
+[ ! -e "$tmp/rigid.wav" ] && [ ! -e "$tmp/crack.mp3" ] || fail "--sound wrote a file it refused"
 echo "shot: ok"

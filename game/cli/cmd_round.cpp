@@ -213,7 +213,7 @@ RunFn setup_round(CLI::App& sub) {
       ->check(finite_range(GolfOptions::kGimme.min, GolfOptions::kGimme.max));
   sub.add_option("--tees", o->setup.tees, "the tee set to play from, as the course names them (\"white\"; default: each hole's own tee)");
   o->setup.pin_set = CourseSetup::kDayPinSet;
-  sub.add_option("--pins", o->setup.pin_set, "the pin set, 0..9: where the cups are today (default 0, a mix: the holes take their sets in turn; 1 each hole's own pin; a course from course import has up to 4)")
+  auto* pins = sub.add_option("--pins", o->setup.pin_set, "the pin set, 0..9: where the cups are today (default 0, a mix: the holes take their sets in turn; 1 each hole's own pin; a course from course import has up to 4)")
       ->check(CLI::Range(0, 9));
   sub.add_flag("--calm", o->calm, "no wind on any hole (default: the course's wind, else drawn from the seed)");
   sub.add_option("--seed", o->seed, "seed of the bot's swing errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
@@ -226,7 +226,7 @@ RunFn setup_round(CLI::App& sub) {
       ->check(CLI::Range(1, 18));
   sub.add_option("--resume", o->resume, "go on with a round written by --save (its players, format and options)");
   sub.add_option("--plot", o->plot, "also write the session's dispersion (carry vs side per club) to FILE.png");
-  return [o, balls](const Assets& assets) -> int {
+  return [o, balls, pins](const Assets& assets) -> int {
     if (o->mode != "stroke" && o->mode != "ctp" && o->mode != "long-drive")
       throw InputError("--mode " + o->mode + ": unknown mode (allowed: stroke, ctp, long-drive)");
     if (!o->swings.empty() && o->mode != "stroke")
@@ -251,6 +251,15 @@ RunFn setup_round(CLI::App& sub) {
     golf_format(o->format);
     if (o->mode != "stroke" && (o->bots.size() > 1 || o->format != "stroke"))
       throw InputError("--mode " + o->mode + ": a contest is one bot's; --bot once, no --format");
+    // A contest scores one ball's finish: no putts to concede, no strokes to give, no round
+    // to save, and a long drive has no cup to place. Said, not silently ignored.
+    if (o->mode != "stroke") {
+      const std::vector<std::pair<bool, const char*>> stroke_only{
+          {o->gimme >= 0.0, "--gimme"}, {!o->handicaps.empty(), "--handicap"}, {!o->save.empty(), "--save"},
+          {o->stop_after > 0, "--stop-after"}, {o->mode == "long-drive" && pins->count() > 0, "--pins"}};
+      for (const auto& [given, flag] : stroke_only)
+        if (given) throw InputError(std::string(flag) + ": not part of --mode " + o->mode + " (a stroke round's option)");
+    }
     if (o->bots.size() > 4) throw InputError("--bot: a round has at most 4 players, not " + std::to_string(o->bots.size()));
     // The files this run reads are not its outputs (a resumed round may be saved over itself).
     for (const auto& [flag, out] : {std::pair{"--save", &o->save}, std::pair{"--plot", &o->plot}}) {

@@ -58,7 +58,7 @@ constexpr double kSettle = 1.2;
 
 class GolfView final : public ModeView {
  public:
-  const ShotScene* clip_scene() const override { return scene_.get(); }
+  const ShotScene* clip_scene() const override;
   GolfView(const Assets& a, std::unique_ptr<GolfPlay> m, const GolfViewOptions& o, std::ostream& out)
       : assets_(a), play_(std::move(m)), options_(o), out_(out) {
     units_.imperial = o.imperial;
@@ -119,6 +119,10 @@ class GolfView final : public ModeView {
   // The last stroke as it was struck: its scene (club, tee, markers) and the view from
   // behind its golfer, for R's replay.
   std::optional<ShotSceneInput> stroke_input_;
+  // F10's clip: the stroke last played, built from its own scene (by then the view may hold
+  // the ball at address for the next one, a shot of one frame); made again for each stroke.
+  mutable std::unique_ptr<ShotScene> clip_;
+  mutable double clip_struck_ = -1.0;
   std::optional<Camera> stroke_view_;
   // R at rest: the stroke again, its strike slowed, from behind the golfer, alongside the
   // flight and after the ball to where it stopped.
@@ -156,6 +160,7 @@ class GolfView final : public ModeView {
   }
   static constexpr double kNoteShown = 8.0;  // s a note (round saved, latency) stays on screen
   std::optional<LatencyCalibration> calibration_;
+  double space_quiet_until_ = -1.0;  // Space ignored until then: the calibration just ended
   int done_frames_ = 0;
 };
 
@@ -196,6 +201,8 @@ std::vector<KeyPress> GolfView::calibration_keys(const std::vector<KeyPress>& ke
       calibration_->tap(k.time);
       continue;
     }
+    // A tap or two past the last beat belongs to the calibration's rhythm, not to a swing.
+    if (!calibration_ && k.key == GLFW_KEY_SPACE && k.time < space_quiet_until_) continue;
     if (!calibration_) rest.push_back(k);
   }
   if (calibration_ && calibration_->done(now)) {
@@ -218,6 +225,7 @@ std::vector<KeyPress> GolfView::calibration_keys(const std::vector<KeyPress>& ke
       note("Calibration: too few taps in time with the beat; nothing changed (L to try again)");
     }
     calibration_.reset();
+    space_quiet_until_ = now + 3.0 * LatencyCalibration::kPeriod;
   }
   return rest;
 }
@@ -228,11 +236,14 @@ void GolfView::draw_calibration(int w, int h, double now) const {
   const int glow = static_cast<int>(255.0 * calibration_->flash(now));
   dl->AddRectFilled(ImVec2(c.x - 260, c.y - 150), ImVec2(c.x + 260, c.y + 130), IM_COL32(20, 24, 30, 230), 8.0f);
   dl->AddCircleFilled(c, 60.0f, IM_COL32(60 + glow * 3 / 4, 60 + glow * 3 / 4, 60, 255));
-  char text[160];
-  std::snprintf(text, sizeof text, "Tap Space on each flash (%d counted; the first %d set the rhythm)", calibration_->counted(),
+  char text[96], counted[96];
+  std::snprintf(text, sizeof text, "Tap Space on each flash: beat %d of %d", calibration_->beats_shown(now),
+                LatencyCalibration::kBeats);
+  std::snprintf(counted, sizeof counted, "%d taps counted (the first %d beats only set the rhythm)", calibration_->counted(),
                 LatencyCalibration::kLeadIn);
   dl->AddText(ImVec2(c.x - 240, c.y - 130), IM_COL32(255, 255, 255, 255), "Input latency calibration");
-  dl->AddText(ImVec2(c.x - 240, c.y + 90), IM_COL32(220, 220, 220, 255), text);
+  dl->AddText(ImVec2(c.x - 240, c.y + 86), IM_COL32(220, 220, 220, 255), text);
+  dl->AddText(ImVec2(c.x - 240, c.y + 106), IM_COL32(180, 180, 180, 255), counted);
 }
 
 void GolfView::save_round() {
@@ -390,6 +401,22 @@ Camera GolfView::flyover_camera(double progress) const {
   c.target = h.pin + (1.0 - s) * 0.2 * (h.tee - h.pin);
   c.fov_y = deg_to_rad(50.0);
   return c;
+}
+
+const ShotScene* GolfView::clip_scene() const {
+  const ShotResult& shot = play_->last_shot();
+  if (!stroke_input_ || shot.trajectory.samples.size() < 2) return nullptr;  // nothing played yet
+  if (!clip_ || clip_struck_ != play_->struck_at()) {
+    try {
+      clip_ = std::make_unique<ShotScene>(*stroke_input_);
+    } catch (const std::exception&) {
+      return nullptr;  // the stroke's world or club mesh cannot be loaded again
+    }
+    clip_->set_shot(shot.trajectory, impactor_placement(shot));
+    clip_->set_target_line(aim_line(shot.aim));
+    clip_struck_ = play_->struck_at();
+  }
+  return clip_.get();
 }
 
 bool GolfView::can_replay() const {

@@ -368,15 +368,31 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       if (!t.lost && (!going_for_pin || std::abs(t.reach - d) < std::abs(best.reach - d))) best = t;
     }
   } else {
-    // In a penalty: down the bag to the first club in play.
+    // In a penalty. A strong wind can blow the first tries' aim off the map before the
+    // correction settles, so the club is tuned on; then longer clubs (into that wind one of
+    // them may be the one that gets there), and down the bag to the first club in play. Of those
+    // in play the one that stops nearest the distance is played: laying up 80 yd short of a
+    // par 3 with a wedge is no player's answer to a wind the 6-iron holds.
+    std::vector<Tried> options{refine(best, 3)};
+    // Up the bag while the longer clubs still end in the penalty (a headwind that drops the
+    // stock club into the water in front of a green), to the first that carries it.
+    for (std::size_t k = at; options.front().lost && k-- > 0;) {
+      if (!allowed(stock_[k])) continue;
+      const Tried t = tune(stock_[k].club, 1.0, options.front().in.aim, 2);
+      options.push_back(t);
+      if (!t.lost) break;
+    }
     for (std::size_t k = at + 1; k < stock_.size(); ++k) {
       if (!allowed(stock_[k])) continue;
       const Tried t = tune(stock_[k].club, 1.0, aim, 2);
       if (!t.lost) {
-        best = t;
+        options.push_back(t);
         break;
       }
     }
+    bool found = false;
+    for (const Tried& t : options)
+      if (!t.lost && (!found || std::abs(t.reach - d) < std::abs(best.reach - d))) best = t, found = true;
   }
   // Past the corner: the longest club aimed along the next leg, played when it stops
   // clearly nearer the cup than the layup and lies no worse.

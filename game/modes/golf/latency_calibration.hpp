@@ -30,6 +30,11 @@ class LatencyCalibration {
   bool done(double now) const { return now >= beat(kBeats - 1) + 0.5 * kPeriod; }
   /// How bright the flash is at `now` (1 on the beat, fading over a fifth of the period).
   double flash(double now) const;
+  /// Beats flashed by `now` (0..kBeats): the dialog's progress.
+  int beats_shown(double now) const {
+    const int k = static_cast<int>((now - start_) / kPeriod);
+    return k < 0 ? 0 : k > kBeats ? kBeats : k;
+  }
   /// Taps counted so far.
   int counted() const { return static_cast<int>(offsets_.size()); }
   /// The latency (s): the median offset of the counted taps, clamped to kLatency; none with

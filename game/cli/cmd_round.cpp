@@ -4,6 +4,7 @@
 // plays N balls at the course's par 3 (closest to the pin), `--mode long-drive` N drives on
 // its longest hole (longest in bounds). Same seed, same output, bit for bit.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
@@ -25,6 +26,7 @@
 #include "game/report/round_save.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/error.hpp"
+#include "physics/units.hpp"
 
 namespace sweetspot::cli {
 namespace {
@@ -55,10 +57,14 @@ std::vector<GolfPlayer> round_players(const RoundOptions& o) {
   const std::size_t first_bot = o.swings.empty() ? 0 : 1;  // with a script, the first --bot plays on after it
   for (std::size_t i = first_bot; i < o.bots.size(); ++i) players.push_back({o.bots[i] + " bot", o.bots[i], false, 0, {}});
   if (players.empty()) players.push_back({"tour bot", "tour", false, 0, {}});
+  // Counted on the names as given: numbering the first "amateur bot" must not make the
+  // second look unique.
+  std::vector<std::string> given;
+  for (const GolfPlayer& p : players) given.push_back(p.name);
   for (std::size_t i = 0; i < players.size(); ++i) {
     int same = 0, before = 0;
     for (std::size_t k = 0; k < players.size(); ++k) {
-      if (players[k].name != players[i].name) continue;
+      if (given[k] != given[i]) continue;
       ++same;
       if (k < i) ++before;
     }
@@ -179,8 +185,9 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
     if (in_play) best = ctp ? std::min(best, value) : std::max(best, value);
     balls.push_back({{"club", r.club}, {"end", to_string(r.end)}, {ctp ? "to_pin_m" : "distance_m", value}, {"in_play", in_play}});
   }
-  nlohmann::json j = {{"mode", o.mode}, {"course", course.name}, {"hole", hole.world_name}, {"player", skill + " bot"},
-                      {"seed", o.seed}, {"balls", balls}};
+  nlohmann::json j = {{"mode", o.mode},     {"course", course.name},         {"hole", hole.world_name},
+                      {"hole_number", hole.number}, {"par", hole.par}, {"length_m", hole.length()},
+                      {"player", skill + " bot"}, {"seed", o.seed}, {"balls", balls}};
   if ((ctp && best < 1e9) || (!ctp && best > 0.0)) j[ctp ? "best_to_pin_m" : "best_distance_m"] = best;
   if (!o.plot.empty())
     write_dispersion_plot(contest_strokes, std::string(ctp ? "closest to the pin, " : "long drive, ") + skill + " bot",
@@ -188,13 +195,22 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
   if (o.json) {
     std::cout << json_text(j) << "\n";
   } else {
-    std::cout << (ctp ? "closest to the pin" : "long drive") << " on " << course.name << " (" << hole.world_name
-              << "), " << skill << " bot\n";
+    // A golfer's words: the hole by its number, par and yardage; a ball's distance to the pin
+    // in feet, a drive in yards, each with its metres.
+    const auto shown = [&](double m) {
+      char text[64];
+      if (ctp) std::snprintf(text, sizeof text, "%.0f ft (%.1f m)", m_to_ft(m), m);
+      else std::snprintf(text, sizeof text, "%.0f yd (%.1f m)", m_to_yd(m), m);
+      return std::string(text);
+    };
+    std::cout << (ctp ? "closest to the pin" : "long drive") << " on " << course.name << ", hole " << hole.number << " (par "
+              << hole.par << ", " << std::lround(m_to_yd(hole.length())) << " yd), " << skill << " bot\n";
     for (const auto& b : balls)
       std::cout << "  " << b["club"].get<std::string>() << "  " << b["end"].get<std::string>() << "  "
-                << b[ctp ? "to_pin_m" : "distance_m"].get<double>() << " m\n";
+                << shown(b[ctp ? "to_pin_m" : "distance_m"].get<double>()) << (b["in_play"].get<bool>() ? "" : "  (not in play)")
+                << "\n";
     if (j.contains(ctp ? "best_to_pin_m" : "best_distance_m"))
-      std::cout << "best: " << j[ctp ? "best_to_pin_m" : "best_distance_m"].get<double>() << " m\n";
+      std::cout << "best: " << shown(j[ctp ? "best_to_pin_m" : "best_distance_m"].get<double>()) << "\n";
   }
   return 0;
 }

@@ -306,7 +306,7 @@ std::string group_table(const GolfGroup& g) {
   sum_row("strokes", par, [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
   sum_row("putts", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
   sum_row("fairways", -1, [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
-  sum_row("greens", -1, [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(s.holes); });
+  sum_row("greens", -1, [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(ps.greens); });
   sum_row("to par", -1, [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
   sum_row("net", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
   if (s.format == GolfFormat::Stableford)

@@ -419,7 +419,7 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
     sum_row("Strokes", par_text.c_str(), [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
     sum_row("Putts", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
     sum_row("Fairways", "", [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
-    sum_row("Greens", "", [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(s.holes); });
+    sum_row("Greens", "", [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(ps.greens); });
     sum_row("To par", "", [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
     sum_row("Net", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
     if (s.format == GolfFormat::Stableford)

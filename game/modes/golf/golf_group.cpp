@@ -22,6 +22,9 @@ GolfGroup::GolfGroup(const Assets& assets, const Course& course, std::vector<Gol
     throw InputError("a round has 1 to 4 players, not " + std::to_string(players_.size()));
   if (options_.format == GolfFormat::Match && players_.size() != 2)
     throw InputError("match play is between two players, not " + std::to_string(players_.size()));
+  // A skin is won by beating everyone else on a hole: alone, every hole is a skin.
+  if (options_.format == GolfFormat::Skins && players_.size() < 2)
+    throw InputError("skins is played by 2 to 4 players, not " + std::to_string(players_.size()));
   check_range("gimme", options_.gimme_m, GolfOptions::kGimme, "m");
   winds_ = round_winds(course_, options_.seed);
   // The first player's bot draws from the round's seed itself (a one-bot round as `round

@@ -33,6 +33,8 @@ Standings standings(const GolfGroup& g) {
         ++ps.fairways;
         if (c.tee_shot == TeeShot::Fairway) ++ps.fairways_hit;
       }
+      // A hole this player conceded stays out of the green count as out of the fairways'.
+      if (!c.conceded) ++ps.greens;
       if (c.green_in_regulation) ++ps.greens_in_regulation;
       ps.total_points += ps.points.back();
       if (scored) {

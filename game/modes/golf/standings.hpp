@@ -24,6 +24,7 @@ struct PlayerStanding {
   int total_par = 0;  ///< the par of the scored holes
   /// Fairways hit of the par 4s and 5s teed off, and greens in regulation of the holes played.
   int fairways_hit = 0, fairways = 0, greens_in_regulation = 0;
+  int greens = 0;  ///< holes that count toward greens in regulation: those played, not conceded
 };
 
 struct Standings {

@@ -164,6 +164,10 @@ TEST_CASE("match play: the status follows the holes won, a short putt is concede
   // Stroke play refuses a concession.
   GolfGroup stroke(test::assets(), test::links(), {bot("tour")}, {});
   CHECK_THROWS_AS(stroke.concede_hole(), InputError);
+  // Skins alone would win every hole: refused as match play alone is.
+  GolfOptions skins;
+  skins.format = GolfFormat::Skins;
+  CHECK_THROWS_WITH(GolfGroup(test::assets(), test::links(), {bot("tour")}, skins), Catch::Contains("skins is played by 2 to 4"));
 }
 
 TEST_CASE("a match decided with holes to play ends there; the card, the result and the JSON hold its holes only",

@@ -1,6 +1,8 @@
 #include "game/app/mode_registry.hpp"
 
+#include <algorithm>
 #include <filesystem>
+#include <sstream>
 
 #include "game/content/bag_file.hpp"
 #include "game/content/course_file.hpp"
@@ -12,6 +14,7 @@
 #include "game/ui/golf_view.hpp"
 #include "game/ui/lab_view.hpp"
 #include "game/ui/range_view.hpp"
+#include "physics/error.hpp"
 
 namespace sweetspot {
 
@@ -45,8 +48,14 @@ std::unique_ptr<GolfPlay> golf_model(const Assets& assets, const PlayOptions& o)
   for (const std::string& name : o.humans) setup.players.push_back({name, o.skill, true, 0, {}});
   // No bot asked for: one of your skill when you play alone, none when friends play.
   const std::vector<std::string> bots = !o.bots.empty() ? o.bots : o.humans.empty() ? std::vector<std::string>{o.skill} : std::vector<std::string>{};
-  for (const std::string& b : bots)
-    if (b != "none") setup.players.push_back({b + " bot", b, false, 0, {}});
+  for (const std::string& b : bots) {
+    if (b == "none") continue;
+    // Two bots of one skill are told apart: "amateur bot 1" and "amateur bot 2".
+    const auto same = static_cast<int>(std::count(bots.begin(), bots.end(), b));
+    int nth = 0;
+    for (const GolfPlayer& p : setup.players) nth += p.skill == b && !p.human;
+    setup.players.push_back({b + " bot" + (same > 1 ? " " + std::to_string(nth + 1) : ""), b, false, 0, {}});
+  }
   for (std::size_t i = 0; i < o.handicaps.size() && i < setup.players.size(); ++i) setup.players[i].handicap = o.handicaps[i];
   setup.options.format = golf_format(o.format);
   setup.options.gimme_m = o.gimme >= 0.0 ? o.gimme : setup.options.format == GolfFormat::Match ? kMatchGimme : 0.0;
@@ -71,6 +80,16 @@ ModeRegistry play_modes(const Assets& assets, const PlayOptions& o, std::ostream
        }},
       {"baseball", [a, o] { return make_cage_view(*a, std::make_unique<BattingCage>(*a, o.seed), {o.exit_when_done, o.pitches}); }},
   };
+}
+
+void check_play_mode(const Assets& assets, const PlayOptions& o) {
+  std::ostringstream quiet;  // building the registry only names the modes; nothing is made yet
+  std::string names;
+  for (const ModeEntry& m : play_modes(assets, o, quiet)) {
+    if (m.name == o.mode) return;
+    names += (names.empty() ? "" : ", ") + m.name;
+  }
+  throw InputError("--mode " + o.mode + ": unknown mode (allowed: " + names + ")");
 }
 
 }  // namespace sweetspot

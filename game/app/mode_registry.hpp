@@ -11,4 +11,7 @@ namespace sweetspot {
 
 ModeRegistry play_modes(const Assets& assets, const PlayOptions& o, std::ostream& out);
 
+/// Refuses (InputError listing the registry's names) a --mode that is not one of them.
+void check_play_mode(const Assets& assets, const PlayOptions& o);
+
 }  // namespace sweetspot

@@ -17,6 +17,7 @@
 #include "game/render/render_error.hpp"
 #include "game/render/renderer.hpp"
 #include "game/report/report.hpp"
+#include "game/report/round_save.hpp"
 #include "physics/error.hpp"
 #include "game/rules/run_shot.hpp"
 
@@ -72,6 +73,8 @@ LoopStats run_window(const Assets& assets, const PlayOptions& given, std::ostrea
   // same round and the same pitches every time); the seed is printed, and --seed plays that
   // session again.
   PlayOptions o = given;
+  // A resumed round goes on with its own seed (its winds and bots): the session takes it.
+  if (o.seed == 0 && !o.resume.empty()) o.seed = read_round_save(o.resume).options.seed;
   if (o.seed == 0) o.seed = session_seed();
   out << "seed " << o.seed << " (play --seed " << o.seed << " draws this session again)\n";
   // Bad input fails here, before a window opens.
@@ -79,7 +82,7 @@ LoopStats run_window(const Assets& assets, const PlayOptions& given, std::ostrea
   std::size_t first = modes.size();
   for (std::size_t i = 0; i < modes.size(); ++i)
     if (modes[i].name == o.mode) first = i;
-  if (first == modes.size()) throw InputError("--mode " + o.mode + ": unknown mode (allowed: lab, golf, range, baseball)");
+  if (first == modes.size()) check_play_mode(assets, o);  // names the modes there are
   if (o.mode == "range") {
     golfer_skill(o.skill);
   } else if (o.mode == "golf") {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "game/app/mode_registry.hpp"
 #include "game/app/play_app.hpp"
 #include "game/cli/command.hpp"
 #include "game/render/image.hpp"
@@ -60,6 +61,7 @@ RunFn setup_play(CLI::App& sub) {
   window_only.push_back(sub.add_option("--seed", o->seed, "the session's winds, bot and caddie swings and pitches, 1..2^64-1 (default: a fresh draw, printed)")
       ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max())));
   return [o, window_only](const Assets& assets) -> int {
+    check_play_mode(assets, *o);  // first: an unknown mode is that, with or without a display
     if (!o->screenshot.empty()) check_png_output(o->screenshot, "--screenshot");  // before the frames run
     // The golf options are checked now, not when Tab first opens the golf mode.
     golf_format(o->format);
@@ -73,6 +75,8 @@ RunFn setup_play(CLI::App& sub) {
     if (others > 3) throw InputError("--bot/--human: a round has at most 4 players (you and 3 more)");
     if (o->format == "match" && others != 1)
       throw InputError("--format match: match play is between two (you and one --bot or --human)");
+    if (o->format == "skins" && others < 1)
+      throw InputError("--format skins: skins is played by 2 to 4 (you and at least one --bot or --human)");
     for (const std::string& h : o->humans)
       if (h.empty() || h.size() > 24) throw InputError("--human '" + h + "': a name of 1 to 24 characters");
     if (o->handicaps.size() > 1 + others)

@@ -84,7 +84,7 @@ std::string round_table(const GolfRound& round, const std::string& player) {
   std::string out = round.course().name + " — " + player + "\n";
   char line[200];
   std::snprintf(line, sizeof line, "%-6s %4s %8s %6s %8s %6s %10s %s\n", "hole", "par", "strokes", "putts", "fairway", "green",
-                "penalties", "");
+                "penalties", "note");
   out += line;
   int par = 0, strokes = 0, putts = 0, penalties = 0;
   for (const HoleCard& h : round.card()) {
@@ -95,7 +95,7 @@ std::string round_table(const GolfRound& round, const std::string& player) {
     // The fairway column: "hit", or the side the tee shot missed on; "-" on a par 3 (none).
     const char* fairway = h.tee_shot == TeeShot::None ? "-" : to_string(h.tee_shot);
     std::snprintf(line, sizeof line, "%-6d %4d %8d %6d %8s %6s %10d %s\n", h.number, h.par, h.strokes, h.putts, fairway,
-                  h.green_in_regulation ? "hit" : "miss", h.penalties, h.picked_up ? "(picked up)" : h.conceded ? "(conceded)" : "");
+                  h.green_in_regulation ? "hit" : "miss", h.penalties, h.picked_up ? "picked up" : h.conceded ? "conceded" : "");
     out += line;
   }
   const BallStriking b = ball_striking(round);

@@ -137,31 +137,32 @@ cp "$SWEETSPOT_ROOT/assets/materials.toml" "$assets_copy/materials.toml"
 sed -i '0,/^layer_drag = /s/^layer_drag = .*/layer_drag = 0.5/' "$assets_copy/materials.toml"
 expect_bad "a turf layer beyond its range" "materials.toml:|layer_drag|0.5|0.1" -- shot golf/driver
 cp "$SWEETSPOT_ROOT/assets/materials.toml" "$assets_copy/materials.toml"
+# with_broken FILE SED_EXPR expect_bad-args...: FILE of the assets copy broken by SED_EXPR for
+# one expect_bad, then restored.
+with_broken() {
+  local file="$1" expr="$2"; shift 2
+  sed -i "$expr" "$assets_copy/$file"
+  expect_bad "$@"
+  cp "$SWEETSPOT_ROOT/assets/$file" "$assets_copy/$file"
+}
 # sports.toml's names are checked against the other assets at their own line.
-sed -i '0,/^rules = "golf"/s//rules = "baseball"/' "$assets_copy/sports.toml"
-expect_bad "golf played by baseball's rules" "sports.toml:|rules|does not go with impactor 'club'" -- round links --calm
-cp "$SWEETSPOT_ROOT/assets/sports.toml" "$assets_copy/sports.toml"
-sed -i '0,/^ball = "tour"/s//ball = "nope"/' "$assets_copy/sports.toml"
-expect_bad "a sport's unknown ball" "sports.toml:7|ball|unknown ball 'nope'|tour, mlb" -- flight --sport golf --ball-speed 100mph --launch-angle 10deg --spin 2000rpm
-cp "$SWEETSPOT_ROOT/assets/sports.toml" "$assets_copy/sports.toml"
-sed -i '0,/^default_world = "golf_hole"/s//default_world = "ballpark"/' "$assets_copy/sports.toml"
-expect_bad "golf's world a ballpark" "sports.toml:|default_world|a baseball world" -- shot golf/driver
-cp "$SWEETSPOT_ROOT/assets/sports.toml" "$assets_copy/sports.toml"
-sed -i '0,/"club_speed", "ball_speed"/s//"nope", "ball_speed"/' "$assets_copy/sports.toml"
-expect_bad "an unknown launch-monitor row" "sports.toml:|report|unknown launch-monitor metric 'nope'" -- shot golf/driver
-cp "$SWEETSPOT_ROOT/assets/sports.toml" "$assets_copy/sports.toml"
+with_broken sports.toml '0,/^rules = "golf"/s//rules = "baseball"/' \
+  "golf played by baseball's rules" "sports.toml:|rules|does not go with impactor 'club'" -- round links --calm
+with_broken sports.toml '0,/^ball = "tour"/s//ball = "nope"/' \
+  "a sport's unknown ball" "sports.toml:7|ball|unknown ball 'nope'|tour, mlb" -- flight --sport golf --ball-speed 100mph --launch-angle 10deg --spin 2000rpm
+with_broken sports.toml '0,/^default_world = "golf_hole"/s//default_world = "ballpark"/' \
+  "golf's world a ballpark" "sports.toml:|default_world|a baseball world" -- shot golf/driver
+with_broken sports.toml '0,/"club_speed", "ball_speed"/s//"nope", "ball_speed"/' \
+  "an unknown launch-monitor row" "sports.toml:|report|unknown launch-monitor metric 'nope'" -- shot golf/driver
 # A pitcher whose every pitch type is thrown 0 % of the time has nothing to throw.
-sed -i 's/^usage = .*/usage = "0%"/' "$assets_copy/pitches.toml"
-expect_bad "no pitch type thrown" "pitches.toml:|usage|at least one must be thrown" -- derby --mode at-bat
-cp "$SWEETSPOT_ROOT/assets/pitches.toml" "$assets_copy/pitches.toml"
+with_broken pitches.toml 's/^usage = .*/usage = "0%"/' \
+  "no pitch type thrown" "pitches.toml:|usage|at least one must be thrown" -- derby --mode at-bat
 # A club's face size is checked as written, at face_size's line; a message names its club once.
-sed -i '0,/face_size = \["110mm", "56mm"\]/s//face_size = ["0mm", "56mm"]/' "$assets_copy/equipment/clubs.toml"
-expect_bad "a face of no width" "clubs.toml:|face_size[0] (width)|[0.01, 0.2] m" -- shot golf/driver
-cp "$SWEETSPOT_ROOT/assets/equipment/clubs.toml" "$assets_copy/equipment/clubs.toml"
-sed -i '0,/inertia = \["2843g/s//inertia = ["-2843g/' "$assets_copy/equipment/clubs.toml"
-expect_bad "a head of negative inertia" "clubs.toml:|club 'driver'.inertia|positive definite" -- shot golf/driver
+with_broken equipment/clubs.toml '0,/face_size = \["110mm", "56mm"\]/s//face_size = ["0mm", "56mm"]/' \
+  "a face of no width" "clubs.toml:|face_size[0] (width)|[0.01, 0.2] m" -- shot golf/driver
+with_broken equipment/clubs.toml '0,/inertia = \["2843g/s//inertia = ["-2843g/' \
+  "a head of negative inertia" "clubs.toml:|club 'driver'.inertia|positive definite" -- shot golf/driver
 grep -qF "club 'driver': club 'driver'" "$tmp/err" && fail "the club named twice: $(cat "$tmp/err")"
-cp "$SWEETSPOT_ROOT/assets/equipment/clubs.toml" "$assets_copy/equipment/clubs.toml"
 unset SWEETSPOT_ASSETS
 rm -rf "$assets_copy"
 sed 's/^number = 1$/number = 1.5/' "$SWEETSPOT_ROOT/assets/courses/links.toml" > "$tmp/course.toml"

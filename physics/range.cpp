@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "physics/error.hpp"
+#include "physics/math.hpp"
 
 namespace sweetspot {
 namespace {
@@ -34,7 +35,7 @@ struct Shown {
   std::string_view unit;
 };
 Shown shown_unit(std::string_view si_unit) {
-  if (si_unit == "rad") return {180.0 / 3.14159265358979323846, "deg"};
+  if (si_unit == "rad") return {rad_to_deg(1.0), "deg"};
   return {1.0, si_unit};
 }
 

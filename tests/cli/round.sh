@@ -305,5 +305,15 @@ for p in j["players"]:
 assert lodged >= int(sys.argv[1]), "lodged %d" % lodged'
 "$bin" round "$plot_dir/tree.toml" --calm --swings "$plot_dir/tree_swing.toml" --bot amateur --json | python3 -c "$check_card" 1 || fail "a ball lodged in a tree"
 "$bin" round national --format match --bot scratch --bot amateur --handicap 0 --handicap 14 --seed 48 --json | python3 -c "$check_card" 0 || fail "match card: putts and strokes"
+# Into a 20 mph wind the tour bot's stock club for National's 169 yd par 3 drops into the water
+# short of the green: he takes more club up the bag, never a wedge laid up 80 yd short.
+for seed in 11 40 56; do
+  "$bin" round national --bot tour --seed "$seed" --json | python3 -c '
+import json, sys
+h = json.load(sys.stdin)["holes"][2]
+first = h["shots"][0]
+assert h["par"] == 3 and first["club"] not in ("pw", "sw", "lw", "9-iron"), first["club"]
+assert first["carry_m"] > 0.8 * 154.7, first["carry_m"]' || fail "seed $seed: a wedge off a long par 3 into the wind"
+done
 rm -rf "$plot_dir"
 echo "round: ok"

@@ -383,12 +383,30 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   // A ball waiting to be hit: the club behind it at address, in the golfer's hands.
   if (m.impactor && !impactor_ && address_ && !m.impactor_is_bat) {
     const ImpactorPlacement& club = *address_;
+    const Vec3 target = aim_ ? *aim_ : Vec3(club.orientation * Vec3::UnitX());
+    ImpactorPlacement held = club;
+    if (backswing_ > 0.0) {
+      // Wound back along the arc the downswing comes down: the strike's pose run backwards
+      // from the ball to the top. The speed only sets how far round the top lies (a full
+      // swing's ~4 rad at a tour driver's 50 m/s; a putt's backstroke at 2 m/s).
+      Vec3 along(target.x(), 0.0, target.z());
+      along = along.norm() > 1e-9 ? along.normalized() : Vec3::UnitX();
+      const bool putter = m.input.impactor_mesh == "putter_head";
+      ImpactorPlacement through = club;
+      through.velocity = (putter ? 2.0 : 50.0) * along;
+      const SwingShape& shape = swing_shape(m.input.impactor_mesh);
+      // The downswing speeds up evenly from the top, so the arc from the ball is a share
+      // 1 − (1 − τ)² of the whole at a share τ of its time: wound back by the share
+      // `backswing_` of the arc (the meter's power), τ = 1 − √(1 − backswing_).
+      const double tau = 1.0 - std::sqrt(1.0 - backswing_);
+      held = swing_pose(through, launch - m.input.ball_radius * along, club.orientation * head_frame_shaft_axis(),
+                        -tau * shape.downswing, shape);
+    }
     Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
-    model.block<3, 3>(0, 0) = club.orientation.normalized().toRotationMatrix().cast<float>();
-    model.block<3, 1>(0, 3) = club.position.cast<float>();
+    model.block<3, 3>(0, 0) = held.orientation.normalized().toRotationMatrix().cast<float>();
+    model.block<3, 1>(0, 3) = held.position.cast<float>();
     scene.meshes.push_back({m.impactor.get(), model, false});
-    add_golfer(scene, m.input.impactor_mesh, club, club, aim_ ? *aim_ : Vec3(club.orientation * Vec3::UnitX()),
-               ground_at(launch.x(), launch.z()));
+    add_golfer(scene, m.input.impactor_mesh, held, club, target, ground_at(launch.x(), launch.z()));
   }
   // The ball: true size close up, never smaller than ball_min_radius_px on screen.
   const Vec3 ball = have_shot ? at.position : launch;

@@ -113,6 +113,10 @@ class ShotScene {
   /// The club at address behind a ball that waits to be hit (nothing: none): drawn with the
   /// golfer holding it, square to the shot. A shot with its own club (set_shot) shows that.
   void set_address(const std::optional<ImpactorPlacement>& club) { address_ = club; }
+  /// How far the golfer at address has wound his backswing, 0 (at the ball) to 1 (the top):
+  /// the meter's marker as it climbs and comes back down, so the club follows the player's
+  /// clicks. The club moves up the arc its downswing comes down (swing_pose.hpp).
+  void set_backswing(double fraction) { backswing_ = fraction < 0.0 ? 0.0 : fraction > 1.0 ? 1.0 : fraction; }
   /// The distance (m from the ball) the player means to play, e.g. his club's carry: the
   /// golf stripes' numbers nearest it are written first, so where the far stripes crowd
   /// together the one that matters is the one shown. Nothing: nearest the ball first.
@@ -151,6 +155,7 @@ class ShotScene {
   std::optional<ImpactorPlacement> impactor_;
   std::optional<Vec3> aim_;
   std::optional<ImpactorPlacement> address_;
+  double backswing_ = 0.0;
   std::vector<GroundArrow> arrows_;
   std::optional<double> focus_;
 };

@@ -520,6 +520,10 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       std::optional<ImpactorPlacement> club;
       if (addressing) club = club_at_address(play_->ball_centre(), play_->aim_direction(), assets_.equipment().ball("tour").radius);
       scene_->set_address(club);
+      // The player's backswing follows the meter's marker up and back down (a full swing at
+      // 100 % is the top); at rest or between clicks, at the ball.
+      const auto& meter = play_->meter();
+      scene_->set_backswing(addressing && meter && stage == GolfPlay::Stage::Swinging ? meter->position(in.now) : 0.0);
       const HoleWind wind = play_->round().wind();
       scene_->set_wind(wind.speed * Vec3(std::cos(wind.toward), 0.0, std::sin(wind.toward)));
     }

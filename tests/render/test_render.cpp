@@ -531,3 +531,39 @@ TEST_CASE("the address camera comes out in front of a tree, goes round it, or ov
     CHECK(c.forward().x() > 0.0);  // still facing down the line
   }
 }
+
+TEST_CASE("at address the golfer winds his club back up its arc as the meter climbs, and back down", "[render][golfer]") {
+  OffscreenContext context;
+  ShotSceneInput input;
+  input.assets = &test::assets();
+  input.world = &test_world("test_range.obj");
+  input.impactor_mesh = "driver_head";
+  ShotScene scene(input);
+  const double r = input.ball_radius;
+  const Vec3 ball(0.0, scene.ground_height(0.0, 0.0).value_or(0.0) + r, 0.0);
+  scene.set_shot(ball_at_rest(ball), std::nullopt);
+  const ImpactorPlacement address = club_at_address(ball, Vec3::UnitX(), r);
+  scene.set_address(address);
+  const Camera cam = scene.camera(CameraKind::Behind, 0.0, 640, 360);
+  // The club head is the mesh drawn just before the ball (the last one).
+  const auto head_at = [&](double fraction) {
+    scene.set_backswing(fraction);
+    const Scene s = scene.build(cam, 0.0, 640, 360);
+    REQUIRE(s.meshes.size() >= 2);
+    const Eigen::Vector3f p = s.meshes[s.meshes.size() - 2].model.block<3, 1>(0, 3);
+    return Vec3(p.cast<double>());
+  };
+  const Vec3 at_ball = head_at(0.0), half = head_at(0.5), top = head_at(1.0);
+  CHECK((at_ball - address.position).norm() < 1e-6);  // no backswing: the club at address
+  // Half way round the arc the head has gone back (away from the target, -x) and up; at the
+  // top, past vertical, it is over the golfer's shoulders pointing at the target (+x), as a
+  // full swing's club lies at the top, well over a metre above the ball.
+  INFO("ball " << ball.transpose() << " half " << half.transpose() << " top " << top.transpose());
+  CHECK(half.x() < at_ball.x() - 0.3);
+  CHECK(half.y() > at_ball.y() + 1.0);
+  CHECK(top.x() > half.x() + 1.0);
+  CHECK(top.y() > ball.y() + 1.2);
+  // Coming down, the marker's fall takes it back the same way: at 0 it is at the ball again.
+  CHECK((head_at(0.5) - half).norm() < 1e-9);
+  CHECK((head_at(0.0) - at_ball).norm() < 1e-9);
+}

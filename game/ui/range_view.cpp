@@ -166,6 +166,9 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
     scene_->set_address(club_at_address(ball, Vec3::UnitX(), radius));
     addressed_ = true;
   }
+  // The backswing follows the meter's marker, as on the course (game/ui/golf_view.cpp).
+  const auto& meter = play_->meter();
+  scene_->set_backswing(address && meter && play_->stage() == RangePlay::Stage::Swinging ? meter->position(in.now) : 0.0);
   const double t = address ? 0.0 : flying ? std::clamp(in.now - play_->struck_at(), 0.0, end) : end;
   if (w > 0 && h > 0) {
     fit_renderer(renderer, w, h, in.render_scale);

@@ -68,11 +68,6 @@ void solve_into(Delivery& d, const char* who) {
   d.impact = solve_impact(d.impact_input);
 }
 
-/// The impact with duration when the ball has a contact layer and the model asks for it;
-/// the textbook's friction law is an instantaneous impulse by definition.
-bool uses_duration(const BallSpec& ball, const ImpactMaterial& m) {
-  return ball.compliance.stiffness > 0.0 && m.model == ImpactModel::Compliant && m.friction != FrictionModel::Textbook;
-}
 
 void solve_compliant_into(Delivery& d, CompliantImpactInput& in, const char* who) {
   refuse_miss(d, who);
@@ -404,6 +399,10 @@ Delivery deliver_baseball(const BallSpec& ball, const BatSpec& bat, const BatSwi
   dl.impactor_speed = batb.point_velocity(contact).norm();
   dl.smash_factor = dl.launch.velocity.norm() / dl.impactor_speed;
   return dl;
+}
+
+bool uses_duration(const BallSpec& ball, const ImpactMaterial& m) {
+  return ball.compliance.stiffness > 0.0 && m.model == ImpactModel::Compliant && m.friction != FrictionModel::Textbook;
 }
 
 }  // namespace sweetspot

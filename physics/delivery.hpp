@@ -176,6 +176,11 @@ struct Delivery {
   double smash_factor = 0;          ///< ball speed / impactor_speed
 };
 
+/// Whether a strike of this ball with this material is solved with duration (the compliant
+/// contact: the ball has a contact layer and the model asks for it) rather than as an
+/// instantaneous impulse; the textbook's friction law is instantaneous by definition.
+bool uses_duration(const BallSpec& ball, const ImpactMaterial& m);
+
 /// Golf: ball at rest on the tee at the world origin (centre at y = radius). Throws
 /// InputError naming the field and range on invalid input. `material` is the club face's
 /// material after any scenario override.

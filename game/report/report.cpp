@@ -184,7 +184,6 @@ std::string csv_header(const SportProfile& sport, UnitSystem units) {
 }
 
 std::string csv_row(const ShotResult& r, const SportProfile& sport, UnitSystem units) {
-  check_metric_ids(sport);
   const DisplayUnits u = display_units(sport, units);
   std::string out;
   bool first = true;

@@ -103,9 +103,7 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
     i.contact_time = d.contact_time;
     // e_t is the rigid solve's input: the contact with duration makes its own tangential
     // rebound from the ball's shear, so a set e_t would otherwise change nothing unseen.
-    const bool with_duration = s.ball.compliance.stiffness > 0.0 && s.material.model == ImpactModel::Compliant &&
-                               s.material.friction != FrictionModel::Textbook;
-    if (s.spec.impact.e_t && with_duration)
+    if (s.spec.impact.e_t && uses_duration(s.ball, s.material))
       r.warnings.emplace_back("impact.e_t acts in the rigid model only (impact.model=rigid); the compliant contact's "
                               "tangential rebound comes from the ball's shear (balls.toml), so it is unused here");
   }

@@ -59,6 +59,9 @@ constexpr double kSettle = 1.2;
 class GolfView final : public ModeView {
  public:
   const ShotScene* clip_scene() const override;
+  /// The last stroke's scene as it was struck, shot set (nothing when its world or club mesh
+  /// cannot be loaded again): the replay's and F10's clip.
+  std::unique_ptr<ShotScene> stroke_scene() const;
   GolfView(const Assets& a, std::unique_ptr<GolfPlay> m, const GolfViewOptions& o, std::ostream& out)
       : assets_(a), play_(std::move(m)), options_(o), out_(out) {
     units_.imperial = o.imperial;
@@ -403,17 +406,23 @@ Camera GolfView::flyover_camera(double progress) const {
   return c;
 }
 
-const ShotScene* GolfView::clip_scene() const {
+std::unique_ptr<ShotScene> GolfView::stroke_scene() const {
+  std::unique_ptr<ShotScene> scene;
+  try {
+    scene = std::make_unique<ShotScene>(*stroke_input_);  // its club, tee, markers and target line
+  } catch (const std::exception&) {
+    return nullptr;  // the stroke's world or club mesh cannot be loaded again
+  }
   const ShotResult& shot = play_->last_shot();
-  if (!stroke_input_ || shot.trajectory.samples.size() < 2) return nullptr;  // nothing played yet
+  scene->set_shot(shot.trajectory, impactor_placement(shot));
+  return scene;
+}
+
+const ShotScene* GolfView::clip_scene() const {
+  if (!stroke_input_ || play_->last_shot().trajectory.samples.size() < 2) return nullptr;  // nothing played yet
   if (!clip_ || clip_struck_ != play_->struck_at()) {
-    try {
-      clip_ = std::make_unique<ShotScene>(*stroke_input_);
-    } catch (const std::exception&) {
-      return nullptr;  // the stroke's world or club mesh cannot be loaded again
-    }
-    clip_->set_shot(shot.trajectory, impactor_placement(shot));
-    clip_->set_target_line(aim_line(shot.aim));
+    clip_ = stroke_scene();
+    if (!clip_) return nullptr;
     clip_struck_ = play_->struck_at();
   }
   return clip_.get();
@@ -428,13 +437,9 @@ bool GolfView::can_replay() const {
 
 void GolfView::start_replay(double now) {
   Replay r;
-  try {
-    r.scene = std::make_unique<ShotScene>(*stroke_input_);
-  } catch (const std::exception&) {
-    return;  // the stroke's world or club mesh cannot be loaded again: no replay
-  }
+  r.scene = stroke_scene();
+  if (!r.scene) return;  // no replay
   const ShotResult& shot = play_->last_shot();
-  r.scene->set_shot(shot.trajectory, impactor_placement(shot));
   ClipTiming timing;
   timing.start = -r.scene->pre_roll();
   timing.end = duration(shot.trajectory);

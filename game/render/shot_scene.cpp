@@ -264,7 +264,22 @@ Camera ShotScene::camera(CameraKind kind, double t, int width, int height, const
   if (kind == CameraKind::Top && impl_->input.world != nullptr)
     for (const Vec3& p : impl_->input.world->fence_line) f.points.push_back(p);
   // Follow sits close to the ball and may dip to grass height; 0.3 m keeps it off the blades.
-  return keep_above_ground(frame_shot(kind, f, width, height, window), kind == CameraKind::Follow ? 0.3 : 1.0);
+  if (kind != CameraKind::Follow) return keep_above_ground(frame_shot(kind, f, width, height, window), 1.0);
+  return keep_clear_of_trees(keep_above_ground(frame_shot(kind, f, width, height, window), 0.3), f.ball);
+}
+
+Camera ShotScene::keep_clear_of_trees(Camera c, const Vec3& subject) const {
+  const WorldAsset* w = impl_->input.world;
+  if (w == nullptr) return c;
+  // The eye's room among the leaves: wider than the follow camera's 0.1 m near plane, so the
+  // crown's faces never cut through the view.
+  constexpr double kRoom = 0.4;  // m
+  const Terrain& terrain = *w->world;
+  SurfaceContact hit;
+  if (!terrain.may_touch(subject, c.eye, kRoom) || !terrain.sweep(subject, c.eye, kRoom, &hit, nullptr)) return c;
+  if (terrain.material(hit.material).kind != SurfaceKind::Tree) return c;
+  c.eye = subject + hit.fraction * (c.eye - subject);
+  return c;
 }
 
 double ShotScene::pre_roll() const { return swing_pre_roll(impactor_, impl_->input.impactor_mesh); }

@@ -140,6 +140,10 @@ class ShotScene {
   /// world's, or the surrounding plane's), the target kept: a mouse orbit or a framing
   /// never looks from under the turf.
   Camera keep_above_ground(Camera c, double clearance = 1.0) const;
+  /// `c` with its eye brought in toward `subject` (the ball), if needed, to stand in front of
+  /// the first tree between them: a camera that follows the ball under a canopy looks at it,
+  /// not at the inside of a crown. Only trees: ground between them is keep_above_ground's.
+  Camera keep_clear_of_trees(Camera c, const Vec3& subject) const;
   /// Everything to draw at time t (s; clamped to the shot) seen by `camera`. A negative t
   /// is the pre-roll: the ball waits at launch and the club or bat comes down its swing.
   Scene build(const Camera& camera, double t, int width, int height) const;

@@ -42,6 +42,11 @@ struct MeterBar {
 };
 MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optional<MeterClock>& last, bool putting,
                         double window_ms, int w, int h, double now);
+/// The words over a full swing's meter: the power as the marker climbs, the accuracy's cue
+/// on its way back, and `before` until the first click.
+std::string full_swing_caption(const std::optional<MeterClock>& meter, double now, const std::string& before);
+/// `text` over the bar on a dark band, so the view behind never runs through it.
+void draw_meter_caption(const MeterBar& bar, const std::string& text);
 /// The meter, bottom centre; on a putt the flat-green distances along it.
 void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h, double now);
 /// Ball data at launch, carry once the ball has landed (as a launch monitor shows them).

@@ -38,6 +38,10 @@ std::string GolfUnits::speed(double mps) const {
 
 namespace {
 
+// The words around the meter sit on a dark band so the view behind (a green's slope arrows,
+// sand, sky) never runs through them.
+constexpr ImU32 kBand = IM_COL32(15, 20, 25, 170);
+
 constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
 
 const char* lie_words(const std::string& lie) {
@@ -226,9 +230,6 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   const double shown = bar.shown;
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   char label[256];
-  // The words around the bar sit on a dark band so the view behind (a green's slope arrows,
-  // sand, sky) never runs through them.
-  constexpr ImU32 kBand = IM_COL32(15, 20, 25, 170);
   if (putting) {
     // The putt preview: how far each power rolls on a flat green of this speed.
     dl->AddRectFilled(ImVec2(x0 - 4, y0 + bh + 2), ImVec2(x0 + bar.bw + 4, y0 + bh + 24), kBand, 4.0f);
@@ -269,17 +270,14 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         std::snprintf(label, sizeof label, "putt: %s, %.0f %% rolls that far on flat green%s   Space: putt", cup,
                       100.0 * cup_p, last);
     }
-  } else if (meter && meter->phase() == MeterClock::Phase::Downswing) {
-    // The power is set: the marker on its way back is the accuracy's, not a power.
-    std::snprintf(label, sizeof label, "power %.0f %%, now the accuracy: Space at the mark   Esc: cancel", 100.0 * meter->power());
-  } else if (meter) {
-    std::snprintf(label, sizeof label, "power %.0f %%   Esc: cancel", 100.0 * meter->position(now));
-  } else if (play.swing_undone()) {
+  } else if (!meter && play.swing_undone()) {
     // Said where the player was looking when it happened, not only in the panel.
     std::snprintf(label, sizeof label, "%s", play.message().c_str());
   } else {
-    std::snprintf(label, sizeof label, "%s: Space to swing (difficulty %s: perfect within %.0f ms)", play.club().c_str(),
+    char before[160];
+    std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms)", play.club().c_str(),
                   to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty));
+    std::snprintf(label, sizeof label, "%s", full_swing_caption(meter, now, before).c_str());
   }
   // The caddie's part swing (his club, under full power): a mark on the bar where his power
   // is, as the putt's cup is marked, so "Caddie: a part swing, 36 % power" has a target.
@@ -289,9 +287,25 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       dl->AddTriangleFilled(ImVec2(x - 6, y0 - 10), ImVec2(x + 6, y0 - 10), ImVec2(x, y0), IM_COL32(120, 220, 255, 255));
     }
   }
-  const ImVec2 size = ImGui::CalcTextSize(label);
-  dl->AddRectFilled(ImVec2(x0 - 4, y0 - 28), ImVec2(x0 + size.x + 4, y0 - 24 + size.y), kBand, 4.0f);
-  dl->AddText(ImVec2(x0, y0 - 26), IM_COL32(255, 255, 255, 255), label);
+  draw_meter_caption(bar, label);
+}
+
+std::string full_swing_caption(const std::optional<MeterClock>& meter, double now, const std::string& before) {
+  if (!meter) return before;
+  char label[96];
+  if (meter->phase() == MeterClock::Phase::Downswing)
+    // The power is set: the marker on its way back is the accuracy's, not a power.
+    std::snprintf(label, sizeof label, "power %.0f %%, now the accuracy: Space at the mark   Esc: cancel", 100.0 * meter->power());
+  else
+    std::snprintf(label, sizeof label, "power %.0f %%   Esc: cancel", 100.0 * meter->position(now));
+  return label;
+}
+
+void draw_meter_caption(const MeterBar& bar, const std::string& text) {
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  dl->AddRectFilled(ImVec2(bar.x0 - 4, bar.y0 - 28), ImVec2(bar.x0 + size.x + 4, bar.y0 - 24 + size.y), kBand, 4.0f);
+  dl->AddText(ImVec2(bar.x0, bar.y0 - 26), IM_COL32(255, 255, 255, 255), text.c_str());
 }
 
 void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree) {

@@ -631,9 +631,12 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     if (addressing && camera_ == 3) draw_map_marks(*play_, units_, cam, w, h);
   }
   draw_golf_hud(*play_, units_, camera_, settling, t);
-  if (!saved_note_.empty() && saved_note_at_ < 0.0) saved_note_at_ = in.now;
-  if (!saved_note_.empty() && in.now - saved_note_at_ > kNoteShown) saved_note_.clear();
-  if (!saved_note_.empty() && addressing) {
+  // Shown over the course as the ball flies too (S pressed mid-flight is answered at once);
+  // its time starts when it is first seen, so a note behind a card is not spent unread.
+  const bool note_shows = addressing || flying || settling;
+  if (!saved_note_.empty() && note_shows && saved_note_at_ < 0.0) saved_note_at_ = in.now;
+  if (!saved_note_.empty() && saved_note_at_ >= 0.0 && in.now - saved_note_at_ > kNoteShown) saved_note_.clear();
+  if (!saved_note_.empty() && note_shows) {
     ImGui::SetNextWindowPos(ImVec2(10, static_cast<float>(h) - 40), ImGuiCond_Always);
     ImGui::Begin("saved", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::TextUnformatted(saved_note_.c_str());

@@ -421,6 +421,14 @@ void begin_column(const char* id, const Rect& r) {
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   ImGui::Begin(id, nullptr, kColumnFlags);
+  // Every slider and combo as wide as the column less its longest label ("attack direction"),
+  // where ImGui's default (65 % of the column) cut it at 340 px.
+  ImGui::PushItemWidth(-(ImGui::CalcTextSize("attack direction").x + ImGui::GetStyle().ItemInnerSpacing.x + 4.0f));
+}
+
+void end_column() {
+  ImGui::PopItemWidth();
+  ImGui::End();
 }
 
 bool section(const char* title, bool open_at_start) {
@@ -463,12 +471,12 @@ bool draw_panels(PanelContext& ctx, const PanelLayout& layout) {
       begin_column("##left", layout.left);
       if (section("Shot", true)) changed |= shot_section(ctx);
       if (section("Tuning", true)) changed |= tuning_section(ctx);
-      ImGui::End();
+      end_column();
       begin_column("##right", layout.right);
       if (section("Replay", true)) replay_section(ctx);
       if (section("Launch monitor", true)) monitor_section(ctx);
       if (section("Trajectory", true)) draw_trajectory_plots(ctx.lab.result().trajectory, ctx.replay.time);
-      ImGui::End();
+      end_column();
       break;
     case LayoutKind::Sidebar:
       begin_column("##sidebar", layout.right);
@@ -477,7 +485,7 @@ bool draw_panels(PanelContext& ctx, const PanelLayout& layout) {
       if (section("Shot", true)) changed |= shot_section(ctx);
       if (section("Tuning", false)) changed |= tuning_section(ctx);
       if (section("Trajectory", false)) draw_trajectory_plots(ctx.lab.result().trajectory, ctx.replay.time);
-      ImGui::End();
+      end_column();
       break;
   }
   return changed;

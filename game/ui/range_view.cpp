@@ -80,8 +80,10 @@ void RangeView::draw_panel(int w) {
   ImGui::SetNextWindowSize(ImVec2(470, 0), ImGuiCond_Always);
   ImGui::Begin("Practice range", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::Text("Bag gapping: %d shots a club (%s speed)", play_->shots_per_club(), play_->skill().name.c_str());
-  ImGui::Text("Club: %s   shot %d of %d", play_->club().c_str(), std::min(play_->shots_with_club() + 1, play_->shots_per_club()),
-              play_->shots_per_club());
+  if (play_->shots_with_club() < play_->shots_per_club())
+    ImGui::Text("Club: %s   shot %d of %d", play_->club().c_str(), play_->shots_with_club() + 1, play_->shots_per_club());
+  else  // back to a club already gapped: its row keeps counting, it is not shot 5 of 5 again
+    ImGui::Text("Club: %s   %d shots, done (more add to its row)", play_->club().c_str(), play_->shots_with_club());
   if (ImGui::BeginTable("bag", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
     // "spread": the carries' standard deviation about their mean; "side rms": how far from the
     // target line the balls land, the root mean square (a one-sided miss is part of it).
@@ -187,11 +189,9 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
   draw_panel(w);
   if (hit) draw_launch_panel(play_->last_shot(), units_, w, t);  // the last ball's numbers, its carry once it lands
   if (play_->stage() != RangePlay::Stage::Flying) {
-    draw_meter_bar(play_->meter(), play_->last_click(), false, perfect_window_ms(MeterDifficulty::Standard), w, h, in.now);
-    char label[96];
-    std::snprintf(label, sizeof label, "%s: Space to swing", play_->club().c_str());
-    ImGui::GetForegroundDrawList()->AddText(ImVec2(0.5f * static_cast<float>(w) - 280.0f, static_cast<float>(h) - 106.0f),
-                                            IM_COL32(255, 255, 255, 255), label);
+    const MeterBar bar =
+        draw_meter_bar(play_->meter(), play_->last_click(), false, perfect_window_ms(MeterDifficulty::Standard), w, h, in.now);
+    draw_meter_caption(bar, full_swing_caption(play_->meter(), in.now, play_->club() + ": Space to swing"));
   }
 }
 

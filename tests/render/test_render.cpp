@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "game/content/world_asset.hpp"
 #include "game/render/camera.hpp"
 #include "game/render/image.hpp"
 #include "game/render/offscreen_context.hpp"
@@ -529,6 +530,71 @@ TEST_CASE("the address camera comes out in front of a tree, goes round it, or ov
     CHECK(in_view(c, ball));
     CHECK(in_view(c, head));
     CHECK(c.forward().x() > 0.0);  // still facing down the line
+  }
+}
+
+TEST_CASE("the follow camera stands in front of a tree between it and the ball, not in its crown", "[render][camera]") {
+  // Flat turf and, when asked, a crown's face: a wall 60 m wide and tall across the flight
+  // half way between the ball and where the chase camera would stand behind it.
+  const auto world_with_wall = [](std::optional<double> wall_x) {
+    WorldDescription d;
+    d.name = "canopy";
+    SurfaceMaterial tree = default_fairway();
+    tree.name = "tree";
+    tree.kind = SurfaceKind::Tree;
+    d.materials = {default_fairway(), tree};
+    WorldMesh turf;
+    turf.material = 0;
+    turf.vertices = {Vec3(-50, 0, -50), Vec3(300, 0, -50), Vec3(300, 0, 50), Vec3(-50, 0, 50)};
+    turf.indices = {0, 2, 1, 0, 3, 2};
+    d.meshes = {turf};
+    if (wall_x) {
+      WorldMesh crown;
+      crown.material = 1;
+      const double x = *wall_x;
+      crown.vertices = {Vec3(x, 0, -30), Vec3(x, 0, 30), Vec3(x, 60, 30), Vec3(x, 60, -30)};
+      crown.indices = {0, 1, 2, 0, 2, 3, 0, 2, 1, 0, 3, 2};
+      d.meshes.push_back(crown);
+    }
+    d.bounds_min = Vec3(-50, -5, -50);
+    d.bounds_max = Vec3(300, 100, 50);
+    auto a = std::make_unique<WorldAsset>();
+    a->name = "canopy";
+    a->sport = "golf";
+    a->world = std::make_unique<World>(d);
+    return a;
+  };
+  OffscreenContext context;
+  SyntheticShotSpec spec;
+  spec.lateral = 0.0;
+  const ShotTrajectory shot = synthetic_shot(spec);
+  const double t = 0.6;  // s: climbing, ~20 m out
+  const auto follow = [&](const WorldAsset& world) {
+    ShotSceneInput input;
+    input.assets = &test::assets();
+    input.world = &world;
+    ShotScene scene(input);
+    scene.set_shot(shot, std::nullopt);
+    return scene.camera(CameraKind::Follow, t, 640, 400);
+  };
+  const auto open = world_with_wall(std::nullopt);
+  const Camera free = follow(*open);
+  const Vec3 ball = sample_at(shot, t).position;
+  REQUIRE(free.eye.x() < ball.x() - 2.0);  // the chase view stands behind the ball
+  SECTION("a crown between them: the eye in front of it, looking the same way") {
+    const double wall = 0.5 * (free.eye.x() + ball.x());
+    const auto canopy = world_with_wall(wall);
+    const Camera c = follow(*canopy);
+    CHECK(c.eye.x() > wall + 0.3);
+    CHECK(c.eye.x() < ball.x());
+    SurfaceContact hit;
+    CHECK_FALSE(canopy->world->sweep(ball, c.eye, 0.1, &hit, nullptr));
+    CHECK((c.target - free.target).norm() < 1e-9);
+  }
+  SECTION("the crown behind the camera: unchanged") {
+    const auto canopy = world_with_wall(free.eye.x() - 3.0);
+    const Camera c = follow(*canopy);
+    CHECK((c.eye - free.eye).norm() < 1e-12);
   }
 }
 

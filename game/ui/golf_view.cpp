@@ -637,9 +637,16 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   if (!saved_note_.empty() && note_shows && saved_note_at_ < 0.0) saved_note_at_ = in.now;
   if (!saved_note_.empty() && saved_note_at_ >= 0.0 && in.now - saved_note_at_ > kNoteShown) saved_note_.clear();
   if (!saved_note_.empty() && note_shows) {
-    ImGui::SetNextWindowPos(ImVec2(10, static_cast<float>(h) - 40), ImGuiCond_Always);
+    // Top, between the play panel (430 px) and the launch monitor (250 px from the right):
+    // clear of the trail's legend and the meter at the bottom.
+    constexpr float kLeft = 440.0f, kRightPanel = 260.0f;
+    const float room = std::max(200.0f, static_cast<float>(w) - kLeft - kRightPanel);
+    ImGui::SetNextWindowPos(ImVec2(kLeft, 10), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(room, 400));
     ImGui::Begin("saved", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::PushTextWrapPos(room - 16.0f);  // window-local
     ImGui::TextUnformatted(saved_note_.c_str());
+    ImGui::PopTextWrapPos();
     ImGui::End();
   }
   if (flying || settling) draw_launch_panel(play_->last_shot(), units_, w, flying ? t : end, play_->last_hit_tree());

@@ -24,7 +24,7 @@ enum class IntentKind : unsigned char {
   CaddiePlays,  ///< golf: the caddie's bot plays this stroke
   Concede,      ///< golf, match play: give up the hole
   Pitch,        ///< batting: call for the next pitch
-  BatUp,        ///< batting: the bat's height a centimetre up
+  BatUp,        ///< batting: the bat's height a step up (BattingCage::kBatStep)
   BatDown,
   TogglePower,  ///< batting: power / contact swing
   ToggleSide,   ///< batting: right- / left-handed

@@ -113,9 +113,15 @@ float draw_stats(const BattingCage& c, int w, int h) {
   // events, fair balls only, so a long foul is not the session's longest hit.
   int n = 0, contact = 0, fair = 0, hard = 0, hr = 0;
   double ev = 0.0, la = 0.0, longest = 0.0;
-  // Only what the player has been told: a ball still in the air counts from its call.
+  // Only what the player has been told (a ball still in the air counts from its call), and
+  // only his own swings: the pro's (B) are his to show, not the player's record.
+  int pro = 0;
   for (std::size_t i = 0; i < c.swings_told(); ++i) {
     const SwingRecord& s = c.swings()[i];
+    if (s.by_pro) {
+      ++pro;
+      continue;
+    }
     ++n;
     if (!s.result.contact) continue;
     ++contact;
@@ -128,32 +134,35 @@ float draw_stats(const BattingCage& c, int w, int h) {
     // As far as the call said: to the glove on a catch, where it came down otherwise.
     longest = std::max(longest, c.carries_as_played()[i]);
   }
-  ImGui::Text("Swings %d, contact %d, fair %d, home runs %d", n, contact, fair, hr);
-  if (n > 0) {
+  ImGui::Text("Your swings %d, contact %d, fair %d, home runs %d", n, contact, fair, hr);
+  if (pro > 0) ImGui::TextDisabled("(and %d by the pro, B: not in your figures)", pro);
+  if (c.swings_told() > 0) {
     // Statcast's bat tracking: the last swing told, and the told swings' squared-up and blast
     // counts (the same swings as the line above).
     const SwingRecord& last = c.swings()[c.swings_told() - 1];
     const BatTracking& t = last.result.tracking;
     int squared = 0, blasts = 0;
     for (std::size_t i = 0; i < c.swings_told(); ++i) {
+      if (c.swings()[i].by_pro) continue;
       squared += c.swings()[i].result.tracking.is_squared_up;
       blasts += c.swings()[i].result.tracking.blast;
     }
+    const char* whose = last.by_pro ? "The pro's bat" : "Bat";
     // The attack angle and direction are the bat's where it meets the ball; a miss meets it
     // nowhere (an early bat has turned past 90 deg of pull by the time the ball arrives), so a
     // miss shows what every swing has: its speed and length.
     const bool met = last.result.contact;
     if (met)
-      ImGui::Text("Bat %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", mps_to_mph(t.bat_speed_mps),
+      ImGui::Text("%s %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", whose, mps_to_mph(t.bat_speed_mps),
                   t.attack_angle_deg, t.attack_direction_deg >= 0.0 ? "oppo" : "pull", std::abs(t.attack_direction_deg),
                   m_to_ft(t.swing_length_m));
     else
-      ImGui::Text("Bat %.1f mph, %.1f ft swing (a miss)", mps_to_mph(t.bat_speed_mps), m_to_ft(t.swing_length_m));
+      ImGui::Text("%s %.1f mph, %.1f ft swing (a miss)", whose, mps_to_mph(t.bat_speed_mps), m_to_ft(t.swing_length_m));
     // Squared up is Statcast's 80 % line: the last swing's share, rounded down so that 79.7 %
     // does not read as 80 % beside a count that (rightly) leaves it out.
     if (met)
       ImGui::Text("Last swing: %.0f %% of its best exit speed", std::floor(100.0 * t.squared_up));
-    ImGui::Text("Squared up (80 %%+) %d of %d swings, blasts %d", squared, n, blasts);
+    if (n > 0) ImGui::Text("Squared up (80 %%+) %d of %d swings, blasts %d", squared, n, blasts);
   }
   if (fair > 0) {
     ImGui::Text("Fair balls: exit velocity %.1f mph, launch %.1f deg", ev / fair, la / fair);

@@ -15,13 +15,13 @@ namespace {
 constexpr std::string_view kSwingingStrike = "Swinging strike";
 }  // namespace
 
-std::string miss_call(const SwingResult& r, double timing_ms) {
+std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m) {
   // Why the bat missed: early or late, the ball past the end of the bat; or above or below it
   // where they crossed (off time the crossing moves: early over the ball, late under it).
   constexpr double kReach = 0.066;  // m, the bat's and the ball's radii together (95 %)
   const char* when = timing_ms >= 0 ? "late" : "early";
   char text[160];
-  const double under = r.crossing_undercut, miss = std::abs(under) - kReach;
+  const double under = r.crossing_undercut + beyond_m, miss = std::abs(under) - kReach;
   if (r.through)
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", when, std::abs(timing_ms),
                   timing_ms >= 0 ? "not around yet" : "already through the zone");
@@ -124,7 +124,7 @@ void BattingCage::advance(double t) {
     // His bat meets the pitch at his timing: at that instant of mode time, whatever the
     // frame rate.
     const double contact = released_at_ + std::max(0.0, pitch_.flight_time + 1e-3 * bot_plan_.timing_ms) / kPitchTimeScale;
-    if (t >= contact) swing(bot_plan_, contact, bot_plan_.timing_ms);
+    if (t >= contact) swing(bot_plan_, contact, bot_plan_.timing_ms / kPitchTimeScale, 0.0, true);
   }
   if (stage_ == Stage::Pitching && pitch_clock(t) > pitch_.flight_time + kTakenAfter) {
     last_ = SwingRecord{};
@@ -156,7 +156,7 @@ void BattingCage::advance(double t) {
   }
 }
 
-void BattingCage::swing(const SwingInput& s, double t, double pressed_ms) {
+void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double beyond_m, bool by_pro) {
   bot_armed_ = false;
   swung_at_ = t;
   last_ = SwingRecord{};
@@ -164,6 +164,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms) {
   last_.pitch = pitch_;
   last_.timing_ms = s.timing_ms;
   last_.undercut = s.undercut;
+  last_.by_pro = by_pro;
   last_.result = swing_at(assets_, pitch_, s, batter_skill("pro").bat_speed, kBat);
   played_ = as_played(last_.result.shot.trajectory, last_.result.play);
   last_.call_text = to_string(last_.result.outcome);
@@ -182,7 +183,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms) {
     batted_at_ = t;
     stage_ = Stage::Batted;
   } else {
-    call_text_ = miss_call(last_.result, pressed_ms);
+    call_text_ = miss_call(last_.result, pressed_ms, beyond_m);
     stage_ = Stage::Called;
   }
   if (live_) {
@@ -209,7 +210,7 @@ void BattingCage::apply(const Intent& in) {
   switch (in.kind) {
     case IntentKind::BatUp:
     case IntentKind::BatDown:
-      bat_height_ += in.kind == IntentKind::BatUp ? 0.01 : -0.01;
+      bat_height_ += in.kind == IntentKind::BatUp ? kBatStep : -kBatStep;
       bat_height_ = std::clamp(bat_height_, kZoneLow - 0.3, kZoneHigh + 0.3);
       break;
     case IntentKind::TogglePower: power_ = !power_; break;
@@ -230,7 +231,9 @@ void BattingCage::apply(const Intent& in) {
     case IntentKind::Pitch:
     case IntentKind::Swing:
       if (in.kind == IntentKind::Swing && stage_ == Stage::Called && t - taken_at_ < kLateSwing) {
-        // A swing pressed just after the pitch went by: too late, and not a call for the next.
+        // A swing pressed just after the pitch went by: too late, and not a call for the next;
+        // said beside the call, so the press is not lost without a word.
+        if (call_text_.find("too late") == std::string::npos) call_text_ += "   (your swing came too late: the pitch was by)";
         break;
       }
       if (stage_ != Stage::Pitching) {
@@ -243,16 +246,18 @@ void BattingCage::apply(const Intent& in) {
       } else if (in.kind == IntentKind::Swing) {
         SwingInput s;
         // The swing's timing as pressed; the physics takes it within its range (past ±150 ms
-        // the bat is round or not yet started either way), the call says it as it was.
+        // the bat is round or not yet started either way), the call says it as it was, in the
+        // player's own time (the pitch plays slowed: 100 ms of pitch time took him 200).
         const double timing_ms = 1000.0 * (pitch_clock(t) - pitch_.flight_time);
         s.timing_ms = std::clamp(timing_ms, SwingInput::kTiming.min, SwingInput::kTiming.max);
-        s.undercut = std::clamp(pitch_.plate.y() - bat_height_, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
+        const double undercut = pitch_.plate.y() - bat_height_;
+        s.undercut = std::clamp(undercut, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
         s.power = power_;
         s.left_handed = lefty_;
         // His body meets the pitch where it is pitched (contact_lead_for); the key's timing is
         // against that moment.
         s.contact_lead = contact_lead_for(inside_by(pitch_.plate, lefty_));
-        swing(s, t, timing_ms);
+        swing(s, t, timing_ms / kPitchTimeScale, undercut - s.undercut, false);
       }
       break;
     case IntentKind::BotSwings:

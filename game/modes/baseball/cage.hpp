@@ -18,7 +18,9 @@ namespace sweetspot {
 
 /// The call for a swing that missed, in a hitter's words: early or late by how much and why
 /// (through the zone, past the end of the bat), or how far over or under the ball the bat went.
-std::string miss_call(const SwingResult& result, double timing_ms);
+/// `timing_ms`: the press's timing as the player felt it; `beyond_m`: how much farther under
+/// (+) or over the ball the bat was set than the swing's range let the physics take.
+std::string miss_call(const SwingResult& result, double timing_ms, double beyond_m = 0.0);
 
 class BattingCage {
  public:
@@ -32,6 +34,10 @@ class BattingCage {
   static constexpr double kZoneLow = StrikeZone::kLow, kZoneHigh = StrikeZone::kHigh, kPlateHalf = StrikeZone::kHalfWidth;
   /// After the pitch crosses the plate it is taken (called) once this much pitch time more has passed.
   static constexpr double kTakenAfter = 0.15;  // s
+  /// m the bat's height moves each Up or Down: a fifth of the zone in five presses, and
+  /// under the contact's reach (the bat's and the ball's radii, 6.6 cm) so a step never
+  /// jumps from over the ball to under it.
+  static constexpr double kBatStep = 0.025;
   /// s after a pitch goes by that Space is still his swing, too late, not a call for the next
   /// pitch (a press a beat late would otherwise throw one he is not ready for; P still calls).
   static constexpr double kLateSwing = 0.5;
@@ -84,9 +90,10 @@ class BattingCage {
  private:
   void apply(const Intent& in);
   void advance(double t);
-  /// `pressed_ms`: the swing's timing as the key gave it, which the call reports (s holds it
-  /// within the physics' range).
-  void swing(const SwingInput& s, double t, double pressed_ms);
+  /// `pressed_ms`: the swing's timing as the key gave it in the player's time, which the call
+  /// reports (s holds it within the physics' range, in pitch time); `beyond_m`: the bat's
+  /// height past the undercut range s holds (miss_call). `by_pro`: B's swing.
+  void swing(const SwingInput& s, double t, double pressed_ms, double beyond_m, bool by_pro);
   void next_pitch(double t);
   /// A fresh record: no swings, no count, no plate appearances, the next pitch on call.
   void start_record();

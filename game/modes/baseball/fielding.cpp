@@ -88,13 +88,42 @@ double spray(const Vec3& p) { return std::atan2(p.z(), p.x()); }
 bool fair_direction(const Vec3& p) { return p.x() > 0.0 && std::abs(spray(p)) <= kFoul; }
 
 // Fair or foul (MLB Rule definitions): beyond the bases, where it first lands; before them,
-// where it passes the bases' distance or comes to rest.
-bool is_fair(const ShotTrajectory& t) {
+// where it passes the bases' distance, is first touched by a fielder (`touched`: when and
+// where, if one reaches it on the ground) or comes to rest.
+bool is_fair(const ShotTrajectory& t, const std::optional<TrajectorySample>& touched = std::nullopt) {
   const Vec3& land = t.summary.landing_position;
   if (std::hypot(land.x(), land.z()) > kBaseLine) return fair_direction(land);
-  for (const TrajectorySample& s : t.samples)
+  for (const TrajectorySample& s : t.samples) {
+    if (touched && s.t >= touched->t) return fair_direction(touched->position);
     if (std::hypot(s.position.x(), s.position.z()) > kBaseLine) return fair_direction(s.position);
-  return fair_direction(t.summary.rest_position);
+  }
+  return fair_direction(touched ? touched->position : t.summary.rest_position);
+}
+
+// The first moment any fielder can get to the ball on the ground (after its first landing,
+// low enough to field), running flat out from his spot: where a chopper that would roll foul
+// is touched over fair ground, and so is fair. None when nobody reaches it before it stops.
+// An outfielder chasing a ball down runs a route; an infielder charges it straight.
+double route_efficiency(std::size_t fielder) { return fielder >= 6 ? kRouteEfficiency : 1.0; }
+
+struct GroundTouch {
+  TrajectorySample at;
+  std::size_t fielder = 0;
+};
+std::optional<GroundTouch> first_ground_touch(const ShotTrajectory& t, const std::array<Vec3, 9>& start,
+                                              const Defense& defense) {
+  std::optional<GroundTouch> first;
+  for (std::size_t i = 0; i < 9; ++i) {
+    for (const TrajectorySample& s : t.samples) {
+      if (first && s.t >= first->at.t) break;
+      if (s.t < t.summary.hang_time_s || s.position.y() > kCatchable) continue;
+      if (fielder_run_time(defense.ability[i], horizontal(start[i], s.position) / route_efficiency(i)) <= s.t) {
+        first = GroundTouch{s, i};
+        break;
+      }
+    }
+  }
+  return first;
 }
 
 // A foul ball in the field of play (not yet in the stands): within 60 ft of a foul line
@@ -164,11 +193,13 @@ const char* to_string(BattedOutcome o) {
   return "?";
 }
 
-bool is_fair_ball(const ShotResult& shot) {
+bool is_fair_ball(const ShotResult& shot, const Defense* defense, bool batter_left) {
   if (shot.end == ShotEnd::HomeRun) return true;
   // Into the stands: foul, unless it first came down fair beyond the bases (a bounce over
   // the fence, a ground-rule double) — is_fair decides from where it came down.
-  return is_fair(shot.trajectory);
+  if (defense == nullptr) return is_fair(shot.trajectory);
+  const auto touch = first_ground_touch(shot.trajectory, fielder_spots(batter_left), *defense);
+  return is_fair(shot.trajectory, touch ? std::optional<TrajectorySample>(touch->at) : std::nullopt);
 }
 
 BattedBallType batted_ball_type(double la) {
@@ -285,7 +316,7 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
     play.description = describe(play, land);
     return play;
   }
-  play.foul = !is_fair_ball(shot);
+  play.foul = !is_fair_ball(shot, &defense, batter_left);
   if (!play.foul && shot.end == ShotEnd::OutOfBounds) {
     // Fair, then over the fence or into the stands on a bounce: two bases (Rule 5.05(a)(6)).
     play.outcome = BattedOutcome::Double;
@@ -347,6 +378,9 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
     play.catch_probability = catch_probability(best_spare);
     play.goal[static_cast<std::size_t>(best)] = best_at;
     if (drawn(play.catch_probability)) {
+      // A ball touched in the air is fair or foul by where it is over when he touches it
+      // (Rule definitions: fair ball, foul ball), wherever it would have come down.
+      play.foul = !fair_direction(best_at);
       play.fielder = best;
       play.caught = true;
       play.fielded_at = best_at;
@@ -371,22 +405,14 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   double first_t = std::numeric_limits<double>::infinity();
   Vec3 first_p = t.summary.rest_position;
   std::size_t first_f = 0;
+  if (const auto touch = first_ground_touch(t, play.start, defense)) {
+    first_t = touch->at.t;
+    first_p = touch->at.position;
+    first_f = touch->fielder;
+  }
   for (std::size_t i = 0; i < 9; ++i) {
-    const FielderAbility& f = defense.ability[i];
-    const double route = i >= 6 ? kRouteEfficiency : 1.0;  // an outfielder chasing it down runs a route too
-    for (const TrajectorySample& s : t.samples) {
-      if (s.t < hang || s.position.y() > kCatchable) continue;
-      if (fielder_run_time(f, horizontal(play.start[i], s.position) / route) <= s.t) {
-        if (s.t < first_t) {
-          first_t = s.t;
-          first_p = s.position;
-          first_f = i;
-        }
-        break;
-      }
-    }
-    const double arrive =
-        std::max(t.summary.total_time_s, fielder_run_time(f, horizontal(play.start[i], t.summary.rest_position) / route));
+    const double run = horizontal(play.start[i], t.summary.rest_position) / route_efficiency(i);
+    const double arrive = std::max(t.summary.total_time_s, fielder_run_time(defense.ability[i], run));
     if (arrive < first_t) {
       first_t = arrive;
       first_p = t.summary.rest_position;

@@ -86,9 +86,10 @@ struct FieldingPlay {
 };
 
 /// Fair or foul (MLB Rule definitions): beyond the bases, where it first lands; before them,
-/// where it passes the bases or comes to rest; into the stands, by where it came down (a fair
-/// ball bounced into them is a ground-rule double, field_play).
-bool is_fair_ball(const ShotResult& shot);
+/// where it passes the bases, is first touched by a fielder of `defense` (standing at his spot
+/// for a batter on that side; none: untouched) or comes to rest; into the stands, by where it
+/// came down (a fair ball bounced into them is a ground-rule double, field_play).
+bool is_fair_ball(const ShotResult& shot, const Defense* defense = nullptr, bool batter_left = false);
 
 /// s: how far the defence's real time for a throw and tag runs from what a runner or coach
 /// can judge at the moment he goes: the throw's line and hop, the catch and the tag (ESTIMATE:

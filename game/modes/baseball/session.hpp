@@ -19,6 +19,7 @@ struct SwingRecord {
   double timing_ms = 0.0;
   double undercut = 0.0;
   bool swung = true;
+  bool by_pro = false;  ///< the cage's B: the pro bot swung this one for the player
   SwingResult result;
   std::string call_text;  ///< at-bat: "ball", "called_strike", "swinging_strike", "foul", or the outcome
 };

@@ -38,16 +38,19 @@ TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any
       }
       REQUIRE(cage.swings().size() == 1);
       CHECK(cage.swings().back().timing_ms == Approx(late_ms).margin(1e-6));
+      CHECK_FALSE(cage.swings().back().by_pro);
+      // The call gives the press's error as the player lived it: the pitch plays at half
+      // speed, so 20 ms of pitch time early was his key 40 ms early.
       // 20 ms early the bat has turned ~53° past square: the ball crosses its line past the
       // end, and the call says so.
       if (late_ms < -10.0 && late_ms > -30.0) {
         CHECK_FALSE(cage.swings().back().result.contact);
-        CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 20 ms, past the end of the bat"));
+        CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 40 ms, past the end of the bat"));
       }
       // 40 ms early the bat has turned past a right angle: it was through the zone.
       if (late_ms < -30.0) {
         CHECK_FALSE(cage.swings().back().result.contact);
-        CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 40 ms, the bat already through the zone"));
+        CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 80 ms, the bat already through the zone"));
       }
     }
   }
@@ -127,6 +130,7 @@ TEST_CASE("B between pitches calls for one and the pro swings at it, at the same
     double now = 1.0;
     while (cage.swings().empty() && now < 10.0) cage.update({}, now += dt);
     REQUIRE(cage.swings().size() == 1);
+    CHECK(cage.swings().back().by_pro);  // his, not the player's: the HUD's figures leave it out
     timings.push_back(cage.swings().back().timing_ms);
     // His bat met the ball at his timing's instant, not at the frame that saw it.
     const double contact = 1.0 + (kWindupTime + cage.pitch().flight_time + 1e-3 * timings.back()) / BattingCage::kPitchTimeScale;
@@ -143,6 +147,12 @@ TEST_CASE("a miss is called in a hitter's words, never '0 cm'", "[modes][basebal
   CHECK(miss_call(r, -3.0) == "Swinging strike: the bat passed 1 mm over the ball");
   r.crossing_undercut = 0.066 + 0.031;
   CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 3 cm under the ball");
+  // The bat set 14 cm under the ball, past the 8 cm the swing's physics takes: the call gives
+  // the 14 cm (less the reach), not the 8 cm the physics swung at.
+  r.crossing_undercut = 0.08;
+  CHECK(miss_call(r, 3.0, 0.06) == "Swinging strike: the bat passed 7 cm under the ball");
+  r.crossing_undercut = -0.08;
+  CHECK(miss_call(r, 3.0, -0.10) == "Swinging strike: the bat passed 11 cm over the ball");
   r.crossing_undercut = 0.0;
   r.past_end = true;
   CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, past the end of the bat (its end already round past the ball)");
@@ -176,12 +186,12 @@ TEST_CASE("a swing pressed during the windup is refused in words; strike three s
     now = arrive + BattingCage::kTakenAfter / BattingCage::kPitchTimeScale + 0.5;
     cage.update({}, now);
     if (cage.at_bats().pa == 0) {
-      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 300 ms"));
+      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 600 ms"));  // 300 ms of pitch time
       CHECK_THAT(cage.call_text(), Catch::Matchers::Contains(")"));  // the count follows
     }
   }
   REQUIRE(cage.at_bats().strikeouts == 1);
-  CHECK_THAT(cage.call_text(), Catch::Matchers::StartsWith("Strikeout swinging: early by 300 ms"));
+  CHECK_THAT(cage.call_text(), Catch::Matchers::StartsWith("Strikeout swinging: early by 600 ms"));
 }
 
 TEST_CASE("Space pressed a beat after a pitch went by is a late swing, not a call for the next pitch", "[modes][baseball]") {
@@ -192,6 +202,9 @@ TEST_CASE("Space pressed a beat after a pitch went by is a late swing, not a cal
   cage.update({at(IntentKind::Swing, by + 0.2)}, by + 0.21);
   CHECK(cage.stage() == BattingCage::Stage::Called);
   CHECK(cage.swings().empty());
+  // Not lost without a word: the call says the swing came too late.
+  CHECK_THAT(cage.call_text(), Catch::Matchers::StartsWith("Called strike") || Catch::Matchers::StartsWith("Ball"));
+  CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("too late"));
   // Once he has had time to see the call, Space asks for the next pitch again.
   cage.update({at(IntentKind::Swing, by + 0.2 + BattingCage::kLateSwing)}, by + 0.3 + BattingCage::kLateSwing);
   CHECK(cage.stage() == BattingCage::Stage::Pitching);

@@ -153,6 +153,46 @@ TEST_CASE("fielding: a grounder deep in the hole is an infield hit; the same bal
   CHECK((who == "SS" || who == "3B"));
 }
 
+// Fair or foul before the bases (Rule definitions, "fair ball"): a chopper that lands in
+// front of the plate over fair ground and would roll across the first-base line to stop foul
+// is fair once a fielder touches it over fair ground, foul only if it rolls foul untouched.
+TEST_CASE("a chopper a fielder reaches over fair ground is fair, though it would have rolled foul", "[baseball][fielding]") {
+  ShotResult shot;
+  shot.end = ShotEnd::Rest;
+  ShotTrajectory& t = shot.trajectory;
+  const Vec3 bat(0.0, 0.9, 0.0), land(3.0, 0.037, 0.5), rest(14.0, 0.037, 17.0);  // rest: past the line (z > x)
+  const double hang = 0.5, end = 8.0;  // s: a slow roller
+  for (double at = 0.0; at <= end + 1e-9; at += 0.02) {
+    TrajectorySample q;
+    q.t = at;
+    if (at < hang) {
+      q.position = bat + (land - bat) * (at / hang);
+      q.phase = Phase::Flight;
+    } else {
+      const double u = (at - hang) / (end - hang);
+      q.position = land + (rest - land) * (u * (2.0 - u));  // slowing to a stop
+      q.phase = Phase::Roll;
+    }
+    t.samples.push_back(q);
+  }
+  t.summary.hang_time_s = hang;
+  t.summary.total_time_s = end;
+  t.summary.landing_position = land;
+  t.summary.rest_position = rest;
+  t.summary.carry_m = std::hypot(land.x(), land.z());
+  t.summary.total_m = std::hypot(rest.x(), rest.z());
+  REQUIRE(rest.z() > rest.x());                         // it stops over foul ground
+  REQUIRE(std::hypot(rest.x(), rest.z()) < 27.43);      // short of the bases
+  const Defense defense = league_defense();
+  CHECK_FALSE(is_fair_ball(shot));              // untouched: foul
+  CHECK(is_fair_ball(shot, &defense, false));   // the pitcher, catcher or first baseman gets to it first
+  const FieldingPlay p = field_play(shot, aero(), Environment{}, defense, false, 8.23, nullptr);
+  CHECK_FALSE(p.foul);
+  CHECK(p.outcome != BattedOutcome::Foul);
+  REQUIRE(p.fielder >= 0);
+  CHECK(p.fielded_at.z() < p.fielded_at.x());  // where he had it: fair ground
+}
+
 // The cage draws the batted ball as the play went: a catch ends its path in the glove, so a
 // fly caught at the track does not go on to bounce off the wall behind the fielder.
 TEST_CASE("as_played: a caught fly ends in the glove, a fielded ball where he picks it up, a home run goes on", "[baseball][fielding]") {

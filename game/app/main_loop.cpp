@@ -30,7 +30,9 @@ enum class MenuChoice { None, Resume, Restart, NextMode, Quit };
 
 MenuChoice draw_pause_menu(const ModeView& view, int w, int h) {
   MenuChoice choice = MenuChoice::None;
-  ImGui::SetNextWindowPos(ImVec2(0.5f * static_cast<float>(w), 0.4f * static_cast<float>(h)), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  // At the right, half way down: clear of the centre, where a mode shows what the player
+  // paused to read (a final scorecard), and under the launch monitor's panel at the top.
+  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(w) - 12.0f, 0.58f * static_cast<float>(h)), ImGuiCond_Always, ImVec2(1.0f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_Always);
   ImGui::Begin("Paused", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::Text("%s", view.title());

@@ -87,17 +87,35 @@ std::string round_table(const GolfRound& round, const std::string& player) {
                 "penalties", "note");
   out += line;
   int par = 0, strokes = 0, putts = 0, penalties = 0;
+  // A card of more than nine holes adds each nine, as a printed card does: "out" after the
+  // 9th, "in" for the rest, then the total.
+  const bool nines = round.card().size() > 9;
+  struct Nine {
+    int par = 0, strokes = 0, putts = 0, penalties = 0;
+  } nine;
+  const auto nine_line = [&](const char* name) {
+    std::snprintf(line, sizeof line, "%-6s %4d %8d %6d %8s %6s %10d\n", name, nine.par, nine.strokes, nine.putts, "", "",
+                  nine.penalties);
+    out += line;
+    nine = Nine{};
+  };
   for (const HoleCard& h : round.card()) {
     par += h.par;
     strokes += h.strokes;
     putts += h.putts;
     penalties += h.penalties;
+    nine.par += h.par;
+    nine.strokes += h.strokes;
+    nine.putts += h.putts;
+    nine.penalties += h.penalties;
     // The fairway column: "hit", or the side the tee shot missed on; "-" on a par 3 (none).
     const char* fairway = h.tee_shot == TeeShot::None ? "-" : to_string(h.tee_shot);
     std::snprintf(line, sizeof line, "%-6d %4d %8d %6d %8s %6s %10d %s\n", h.number, h.par, h.strokes, h.putts, fairway,
                   h.green_in_regulation ? "hit" : "miss", h.penalties, h.picked_up ? "picked up" : h.conceded ? "conceded" : "");
     out += line;
+    if (nines && h.number == 9) nine_line("out");
   }
+  if (nines) nine_line("in");
   const BallStriking b = ball_striking(round);
   const std::string fairways = std::to_string(b.fairways_hit) + "/" + std::to_string(b.fairways);
   const std::string greens = std::to_string(b.greens) + "/" + std::to_string(listed_holes(round).size());

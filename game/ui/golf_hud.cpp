@@ -131,7 +131,12 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     const bool allows = std::abs(rad_to_deg(play.aim())) >= 0.5 && std::abs(cross) >= kCrossNoted && (cross > 0.0) == (play.aim() < 0.0);
     ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left",
                 allows ? (cross > 0.0 ? " (the wind drifts it right)" : " (the wind drifts it left)") : "");
-    if (play.human_turn()) {
+    if (play.human_turn() && club == "putter" && r.lie() == "green") {
+      // On the green the keys a putt needs, in one line: the panel stays clear of the golfer
+      // the putting view frames under it.
+      ImGui::TextDisabled("Left/Right aim   Space: putt (2 clicks)   B: caddie");
+      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole");
+    } else if (play.human_turn()) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
       ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
       ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save  L latency", camera_words(camera_mode));
@@ -379,6 +384,29 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
     if (s.skins) ImGui::TableSetupColumn("Skin");
     ImGui::TableHeadersRow();
     int par = 0;
+    // A card past nine holes adds each nine, as a printed card does: "Out" under the 9th,
+    // "In" under the last, each player's strokes (putts) over the holes he scored.
+    const auto nine_row = [&](const char* label, std::size_t from, std::size_t to) {
+      int nine_par = 0;
+      for (std::size_t h = from; h < to; ++h) nine_par += g.course().holes[h].par;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(label);
+      ImGui::TableNextColumn();
+      ImGui::Text("%d", nine_par);
+      ImGui::TableNextColumn();
+      for (std::size_t p = 0; p < n; ++p) {
+        ImGui::TableNextColumn();
+        int strokes = 0, putts = 0;
+        for (std::size_t h = from; h < to; ++h) {
+          if (!s.players[p].scored[h]) continue;
+          strokes += s.players[p].gross[h];
+          putts += s.players[p].putts[h];
+        }
+        ImGui::Text("%d (%d)", strokes, putts);
+      }
+      if (s.match || s.skins) ImGui::TableNextColumn();
+    };
     for (std::size_t h = 0; h < s.holes; ++h) {
       const CourseHole& ch = g.course().holes[h];
       par += ch.par;
@@ -413,7 +441,9 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
         if (win < 0) ImGui::TextUnformatted("carried");
         else ImGui::Text("%s x%d", g.players()[static_cast<std::size_t>(win)].name.c_str(), s.skins->value[h]);
       }
+      if (s.holes > 9 && h == 8) nine_row("Out", 0, 9);
     }
+    if (s.holes > 9) nine_row("In", 9, s.holes);
     // The sum rows: strokes (with par), putts, fairways hit and greens in regulation, to par,
     // net, points.
     auto sum_row = [&](const char* label, const char* par_text, auto cell) {
@@ -430,7 +460,7 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
       if (s.match || s.skins) ImGui::TableNextColumn();
     };
     const std::string par_text = std::to_string(par);
-    sum_row("Strokes", par_text.c_str(), [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
+    sum_row("Total", par_text.c_str(), [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
     sum_row("Putts", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
     sum_row("Fairways", "", [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
     sum_row("Greens", "", [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(ps.greens); });

@@ -163,7 +163,7 @@ class GolfView final : public ModeView {
   }
   static constexpr double kNoteShown = 8.0;  // s a note (round saved, latency) stays on screen
   std::optional<LatencyCalibration> calibration_;
-  double space_quiet_until_ = -1.0;  // Space ignored until then: the calibration just ended
+  TapQuiet after_taps_;  // the calibration's taps that run on past its end
   int done_frames_ = 0;
 };
 
@@ -205,7 +205,7 @@ std::vector<KeyPress> GolfView::calibration_keys(const std::vector<KeyPress>& ke
       continue;
     }
     // A tap or two past the last beat belongs to the calibration's rhythm, not to a swing.
-    if (!calibration_ && k.key == GLFW_KEY_SPACE && k.time < space_quiet_until_) continue;
+    if (!calibration_ && k.key == GLFW_KEY_SPACE && after_taps_.swallow(k.time)) continue;
     if (!calibration_) rest.push_back(k);
   }
   if (calibration_ && calibration_->done(now)) {
@@ -228,7 +228,7 @@ std::vector<KeyPress> GolfView::calibration_keys(const std::vector<KeyPress>& ke
       note("Calibration: too few taps in time with the beat; nothing changed (L to try again)");
     }
     calibration_.reset();
-    space_quiet_until_ = now + 3.0 * LatencyCalibration::kPeriod;
+    after_taps_.start(now);
   }
   return rest;
 }

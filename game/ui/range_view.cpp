@@ -45,7 +45,8 @@ class RangeView final : public ModeView {
   }
 
  private:
-  void draw_panel(int w);
+  /// `in_air`: the last ball has not landed yet; its carry stays out of the table until it has.
+  void draw_panel(int w, bool in_air);
   void save_bag();
 
   const Assets& assets_;
@@ -74,8 +75,9 @@ void RangeView::save_bag() {
   }
 }
 
-void RangeView::draw_panel(int w) {
-  const Bag bag = play_->session().bag("you");
+void RangeView::draw_panel(int w, bool in_air) {
+  const std::size_t shots = play_->session().shots().size();
+  const Bag bag = play_->session().bag("you", in_air && shots > 0 ? shots - 1 : shots);
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(470, 0), ImGuiCond_Always);
   ImGui::Begin("Practice range", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
@@ -186,7 +188,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
     renderer.blit_to(0, w, h);
     for (const double d : RangePlay::targets()) draw_cup_and_flag(cam, Vec3(d, 0.0, 0.0), w, h);
   }
-  draw_panel(w);
+  draw_panel(w, flying && t < play_->last_shot().trajectory.summary.hang_time_s);
   if (hit) draw_launch_panel(play_->last_shot(), units_, w, t);  // the last ball's numbers, its carry once it lands
   if (play_->stage() != RangePlay::Stage::Flying) {
     const MeterBar bar =

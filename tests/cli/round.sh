@@ -67,6 +67,16 @@ assert j["fairways"] == sum(h["par"] > 3 for h in j["holes"])
 assert j["fairways_hit"] == sum(h["fairway"] == "hit" for h in j["holes"])
 assert j["greens_in_regulation"] == sum(h["green_in_regulation"] for h in j["holes"])
 total = [l.split() for l in open(sys.argv[2]) if l.startswith("total")][0]
+# Each nine adds up, and the two nines make the total (par, strokes, putts, penalties).
+rows = {l.split()[0]: l.split() for l in open(sys.argv[2]) if l.split() and l.split()[0] in ("out", "in")}
+holes = {h["number"]: h for h in j["holes"]}
+for name, nine in (("out", range(1, 10)), ("in", range(10, 19))):
+    r = rows[name]
+    assert int(r[1]) == sum(holes[n]["par"] for n in nine), (name, r)
+    assert int(r[2]) == sum(holes[n]["strokes"] for n in nine), (name, r)
+    assert int(r[3]) == sum(holes[n]["putts"] for n in nine), (name, r)
+for k in (1, 2, 3):
+    assert int(rows["out"][k]) + int(rows["in"][k]) == int(total[k]), (k, rows, total)
 assert total[4] == "%d/%d" % (j["fairways_hit"], j["fairways"]), total
 assert total[5] == "%d/%d" % (j["greens_in_regulation"], len(j["holes"])), total
 PY

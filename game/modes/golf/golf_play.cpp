@@ -365,7 +365,10 @@ void GolfPlay::apply(const Intent& in) {
         case IntentKind::CaddieClub: choose_club(); break;
         case IntentKind::Swing: {
           const double length = assets_.equipment().club(club()).length;
-          meter_.emplace(MeterClock::tempo_for(length, putting), putting, perfect_window_ms(setup_.difficulty));
+          // A putt the preview reaches: the marker slowed for a short one (putt_tempo).
+          const double tempo = putting && putt_plays_as_ > 0.0 ? MeterClock::putt_tempo(power_for_roll(putt_plays_as_))
+                                                               : MeterClock::tempo_for(length, putting);
+          meter_.emplace(tempo, putting, perfect_window_ms(setup_.difficulty));
           swing_undone_ = false;
           meter_->click(t);
           stage_ = Stage::Swinging;

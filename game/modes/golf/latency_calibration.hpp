@@ -47,4 +47,24 @@ class LatencyCalibration {
   std::vector<bool> tapped_ = std::vector<bool>(kBeats, false);
 };
 
+/// After a calibration ends, Space taps still coming in its rhythm (a player who started
+/// late taps on past the last beat) are taps, not a swing: each one within kQuiet of the
+/// calibration's end or of the tap before it is swallowed, and the quiet runs on from it.
+class TapQuiet {
+ public:
+  /// Three beats: long enough that a tap a beat or two late is caught, short enough that a
+  /// deliberate swing after the dialog is not refused for long.
+  static constexpr double kQuiet = 3.0 * LatencyCalibration::kPeriod;  // s
+  void start(double now) { until_ = now + kQuiet; }
+  /// Whether a Space at `t` is such a tap (and so no swing).
+  bool swallow(double t) {
+    if (t >= until_) return false;
+    until_ = t + kQuiet;
+    return true;
+  }
+
+ private:
+  double until_ = -1.0;
+};
+
 }  // namespace sweetspot

@@ -36,6 +36,12 @@ double MeterClock::tempo_for(double club_length, bool putter) {
   return putter ? 1.2 : 0.9 * club_length / kDriverLength;
 }
 
+double MeterClock::putt_tempo(double cup_power) {
+  const double usual = tempo_for(0.0, true);
+  if (!(cup_power > 0.0)) return usual;
+  return std::max(usual, kLeastToCup / cup_power);
+}
+
 double MeterClock::position(double t) const {
   switch (phase_) {
     case Phase::Idle: return 0.0;

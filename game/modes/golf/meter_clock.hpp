@@ -60,6 +60,12 @@ class MeterClock {
   /// Seconds for 0 -> 100 % with `club_length` m (the driver's 0.9 s; shorter clubs swing
   /// quicker in proportion, the putter's stroke 1.2 s).
   static double tempo_for(double club_length, bool putter);
+  /// The putter's stroke for a putt whose cup is at `cup_power` on the meter: 1.2 s for
+  /// 0 -> 100 %, slowed so the marker takes at least kLeastToCup to reach the cup's power. A
+  /// tap-in at 8 % is then a press 0.6 s long, not a flick of 96 ms where 24 ms is a quarter
+  /// of the distance; a 20 ft putt (~55 %) keeps the usual tempo.
+  static double putt_tempo(double cup_power);
+  static constexpr double kLeastToCup = 0.6;  // s
 
  private:
   static constexpr double kTop = 1.1, kBottom = -0.15, kDownFactor = 1.5, kHoldAtTop = 0.2;

@@ -37,14 +37,15 @@ const RangeShot& RangeSession::hit(const std::string& club, const MeterInput& me
   return shots_.back();
 }
 
-Bag RangeSession::bag(const std::string& player) const {
+Bag RangeSession::bag(const std::string& player, std::size_t first) const {
   Bag b;
   b.player = player;
   b.skill = skill_.name;
+  const std::size_t n_shots = std::min(first, shots_.size());
   for (const std::string& club : golf_bag()) {
     std::vector<const RangeShot*> mine;
-    for (const RangeShot& s : shots_)
-      if (s.club == club) mine.push_back(&s);
+    for (std::size_t i = 0; i < n_shots; ++i)
+      if (shots_[i].club == club) mine.push_back(&shots_[i]);
     if (mine.empty()) continue;
     const double n = static_cast<double>(mine.size());
     BagClub c;

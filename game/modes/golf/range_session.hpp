@@ -4,6 +4,7 @@
 // rings then use. A bot of a skill hits them headless; the window's player hits them by hand.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,9 @@ class RangeSession {
   const RangeShot& hit(const std::string& club, const MeterInput& meter, ShotResult* shot = nullptr);
   const std::vector<RangeShot>& shots() const { return shots_; }
   /// Per club hit, longest first: mean carry and total, their spreads (sample standard
-  /// deviation; 0 for a single shot), the shot count.
-  Bag bag(const std::string& player) const;
+  /// deviation; 0 for a single shot), the shot count. Of the first `first` shots only: a
+  /// view leaves out the ball still in the air, whose carry it has not shown yet.
+  Bag bag(const std::string& player, std::size_t first = std::numeric_limits<std::size_t>::max()) const;
 
  private:
   const Assets* assets_;  // a pointer: a session is assignable (a new session)

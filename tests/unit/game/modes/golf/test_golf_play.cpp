@@ -289,6 +289,11 @@ TEST_CASE("putting preview: the flat-green roll grows with power and inverts", "
   }
   // A full putter stroke on this stimp-10.5 green rolls a long lag (10-30 m), not 12-15 m.
   CHECK(play.flat_roll(1.0) > 10.0);
+  // The putt's meter runs at the tempo its cup's power asks for (MeterClock::putt_tempo).
+  const double cup = play.power_for_roll(play.putt_plays_as());
+  play.update({at(IntentKind::Swing, t + 1.0)}, t + 1.0);
+  REQUIRE(play.meter());
+  CHECK(play.meter()->position(t + 1.6) == Approx(0.6 / MeterClock::putt_tempo(cup)).margin(1e-12));
 }
 
 TEST_CASE("putting preview from off the green: the slower grass first makes the putt play longer", "[modes][golf]") {
@@ -348,6 +353,19 @@ TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power fo
   CHECK(pitch.caddie_plan()->club == pitch.club());
   CHECK(pitch.caddie_plan()->meter.power < 0.9);
   CHECK(pitch.caddie_plan()->meter.power > 0.1);
+}
+
+TEST_CASE("taps that run on past the calibration's last beat are taps, not a swing", "[modes][golf]") {
+  TapQuiet quiet;
+  CHECK_FALSE(quiet.swallow(1.0));  // before any calibration, Space is a swing
+  quiet.start(10.0);
+  // A player who started three beats late taps on at the beat's period: every one swallowed,
+  // far past the quiet's first end.
+  for (int k = 0; k < 4; ++k) CHECK(quiet.swallow(10.2 + k * LatencyCalibration::kPeriod));
+  const double last = 10.2 + 3 * LatencyCalibration::kPeriod;
+  CHECK(last > 10.0 + TapQuiet::kQuiet);
+  // Once he stops, a press after the quiet is his swing.
+  CHECK_FALSE(quiet.swallow(last + TapQuiet::kQuiet + 0.01));
 }
 
 TEST_CASE("latency calibration: the median tap offset, and the meter judges aimed clicks that much earlier", "[modes][golf]") {

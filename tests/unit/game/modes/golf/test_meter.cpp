@@ -89,3 +89,17 @@ TEST_CASE("the accuracy error opens the face late and closes it early; a putter 
   bad.power = 1.4;
   CHECK_THROWS_AS(validate_meter(bad), InputError);
 }
+
+TEST_CASE("a short putt's marker climbs slower: the cup's power is at least 0.6 s into the stroke", "[golf][meter]") {
+  const double usual = MeterClock::tempo_for(0.0, true);
+  // A 20 ft putt (cup at 57 %) keeps the putter's usual 1.2 s tempo.
+  CHECK(MeterClock::putt_tempo(0.57) == usual);
+  CHECK(MeterClock::putt_tempo(0.0) == usual);  // no cup to read: the usual
+  for (const double cup : {0.02, 0.08, 0.25, 0.45}) {
+    MeterClock m(MeterClock::putt_tempo(cup), true, 10.0);
+    m.click(1.0);
+    CHECK(m.position(1.0 + MeterClock::kLeastToCup) == Approx(cup).margin(1e-12));
+    // 2 % of the meter either side of a tap-in's 8 % is now 150 ms of the press, not 24 ms.
+    if (cup == 0.08) CHECK(m.position(1.15) - m.position(1.0) == Approx(0.02).margin(1e-12));
+  }
+}

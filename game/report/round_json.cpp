@@ -280,8 +280,25 @@ std::string group_table(const GolfGroup& g) {
   };
   // Each player's column: gross strokes, a '*' per stroke received, the putts in brackets, the
   // penalty strokes (out of bounds, water, unplayable) as "Np", so a 6 with one putt reads.
-  // The first column is as wide as the totals' labels ("strokes"), so each total's par sits
+  // The first column is as wide as the totals' labels ("fairways"), so each total's par sits
   // under "par".
+  // Past nine holes each nine is added up, as a printed card does: "out", then "in".
+  const auto nine_row = [&](const char* label, std::size_t from, std::size_t to) {
+    int nine_par = 0;
+    for (std::size_t h = from; h < to; ++h) nine_par += g.course().holes[h].par;
+    std::snprintf(cell, sizeof cell, "%-8s %3d    ", label, nine_par);
+    std::string line = cell;
+    for (std::size_t p = 0; p < n; ++p) {
+      int strokes = 0, putts = 0;
+      for (std::size_t h = from; h < to; ++h) {
+        if (!s.players[p].scored[h]) continue;
+        strokes += s.players[p].gross[h];
+        putts += s.players[p].putts[h];
+      }
+      line += "  " + pad(std::to_string(strokes) + " (" + std::to_string(putts) + ")", 14);
+    }
+    return line + "\n";
+  };
   std::string head = "hole     par  SI";
   for (const GolfPlayer& p : g.players()) head += "  " + pad(p.name.substr(0, 14), 14);
   if (s.format == GolfFormat::Match) head += "  match";
@@ -312,7 +329,9 @@ std::string group_table(const GolfGroup& g) {
       else line.append("  ").append(g.players()[static_cast<std::size_t>(w)].name).append(" x").append(std::to_string(s.skins->value[h]));
     }
     out += line + "\n";
+    if (s.holes > 9 && h == 8) out += nine_row("out", 0, 9);
   }
+  if (s.holes > 9) out += nine_row("in", 9, s.holes);
   auto sum_row = [&](const char* label, int par, auto value) {
     std::snprintf(cell, sizeof cell, "%-8s %3s    ", label, par >= 0 ? std::to_string(par).c_str() : "");
     std::string line = cell;
@@ -321,7 +340,7 @@ std::string group_table(const GolfGroup& g) {
   };
   int par = 0;
   for (std::size_t h = 0; h < s.holes; ++h) par += g.course().holes[h].par;
-  sum_row("strokes", par, [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
+  sum_row("total", par, [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
   sum_row("putts", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
   sum_row("fairways", -1, [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
   sum_row("greens", -1, [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(ps.greens); });

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "game/content/tree_crowns.hpp"
 #include "game/modes/golf/golf_play.hpp"
 #include "game/render/camera.hpp"
 #include "game/render/shot_scene.hpp"
@@ -62,7 +63,9 @@ void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h);
 std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes);
 /// The map's marks: the ball, the selected club's carry ring and the player's dispersion
 /// ellipse for it (from this round's shots with it, else their bag's measured spread).
-void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h);
+/// `crowns`: the hole's trees (game/content/tree_crowns), each drawn as a dark disc.
+void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h,
+                    const std::vector<TreeCrown>& crowns);
 /// The hole's wind as an arrow relative to the aim (up the screen = downrange).
 void draw_wind(const GolfPlay& play, const GolfUnits& units, int w);
 

@@ -109,10 +109,20 @@ std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes) {
   return out;
 }
 
-void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h) {
+void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h,
+                    const std::vector<TreeCrown>& crowns) {
   const GolfRound& r = play.round();
   if (r.finished()) return;
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  // The trees as a map shows them, a dark disc with a rim for each crown: seen from above a
+  // crown's shaded green reads as more rough. Under every other mark.
+  for (const TreeCrown& c : crowns) {
+    const auto at = cam.project(c.centre, w, h);
+    if (!at || at->x() < -50.0 || at->y() < -50.0 || at->x() > w + 50.0 || at->y() > h + 50.0) continue;
+    const float radius = static_cast<float>(std::max(2.0, c.radius / cam.metres_per_pixel(c.centre, h)));
+    dl->AddCircleFilled(px(*at), radius, IM_COL32(16, 52, 20, 235), 12);
+    dl->AddCircle(px(*at), radius, IM_COL32(8, 26, 10, 255), 12, 1.0f);
+  }
   const WorldAsset& world = *r.hole().world;
   const Vec3 ball = r.ball();
   const Vec3 aim = play.aim_direction();

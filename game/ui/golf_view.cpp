@@ -164,6 +164,8 @@ class GolfView final : public ModeView {
   static constexpr double kNoteShown = 8.0;  // s a note (round saved, latency) stays on screen
   std::optional<LatencyCalibration> calibration_;
   TapQuiet after_taps_;  // the calibration's taps that run on past its end
+  const WorldAsset* crowns_of_ = nullptr;  // the world crowns_ was read from
+  std::vector<TreeCrown> crowns_;          // its trees, for the map
   int done_frames_ = 0;
 };
 
@@ -628,7 +630,14 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     const GolfRound& r = play_->round();
     if (!r.finished() && !over) draw_cup_and_flag(cam, r.hole().pin, w, h);
     if (addressing) draw_aim(*play_, cam, w, h);
-    if (addressing && camera_ == 3) draw_map_marks(*play_, units_, cam, w, h);
+    if (addressing && camera_ == 3) {
+      const WorldAsset* world = r.hole().world;
+      if (world != crowns_of_) {  // read once per world: a course's holes share one
+        crowns_ = tree_crowns(world->description());
+        crowns_of_ = world;
+      }
+      draw_map_marks(*play_, units_, cam, w, h, crowns_);
+    }
   }
   draw_golf_hud(*play_, units_, camera_, settling, t);
   // Shown over the course as the ball flies too (S pressed mid-flight is answered at once);

@@ -128,6 +128,16 @@ for i, row in enumerate(rows):
         total += h["penalties"]
 assert total > 0, "no penalty in the round: the check saw nothing"
 assert "1p a penalty stroke" in open(sys.argv[1]).read()
+# The nines: "out" and "in" add each player's strokes and putts over holes 1-9 and 10-18.
+text = open(sys.argv[1]).read().splitlines()
+for name, nine in (("out", range(0, 9)), ("in", range(9, 18))):
+    row = [l for l in text if l.startswith(name + " ")][0]
+    cells = re.findall(r"(\d+) \((\d+)\)", row)
+    assert len(cells) == 2, row
+    for p, (strokes, putts) in enumerate(cells):
+        holes = j["players"][p]["holes"]
+        assert int(strokes) == sum(holes[i]["strokes"] for i in nine), (row, p)
+        assert int(putts) == sum(holes[i]["putts"] for i in nine), (row, p)
 PY
 
 # A script that runs out mid-round with no bot to play on is an error naming the file, not

@@ -316,7 +316,10 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
     play.description = describe(play, land);
     return play;
   }
-  play.foul = !is_fair_ball(shot, &defense, batter_left);
+  // Who first gets to it on the ground: the foul line's call before the bases, and the
+  // grounder's fielder below.
+  const std::optional<GroundTouch> touch = first_ground_touch(t, play.start, defense);
+  play.foul = !is_fair(t, touch ? std::optional<TrajectorySample>(touch->at) : std::nullopt);
   if (!play.foul && shot.end == ShotEnd::OutOfBounds) {
     // Fair, then over the fence or into the stands on a bounce: two bases (Rule 5.05(a)(6)).
     play.outcome = BattedOutcome::Double;
@@ -405,7 +408,7 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   double first_t = std::numeric_limits<double>::infinity();
   Vec3 first_p = t.summary.rest_position;
   std::size_t first_f = 0;
-  if (const auto touch = first_ground_touch(t, play.start, defense)) {
+  if (touch) {
     first_t = touch->at.t;
     first_p = touch->at.position;
     first_f = touch->fielder;

@@ -72,7 +72,10 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
   const double now = flight_t;
   const GolfGroup& g = play.group();
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Always);
+  // Narrower on the green, where the putting view stands the golfer's head near the top left
+  // and the panel's lines are short.
+  const bool on_green = !g.finished() && play.round().lie() == "green";
+  ImGui::SetNextWindowSize(ImVec2(on_green ? 365.0f : 420.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Play", nullptr, kFixed);
   const GolfPlay::Stage stage = play.stage();
   const bool in_air = stage == GolfPlay::Stage::Flying;

@@ -74,7 +74,9 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   // Narrower on the green, where the putting view stands the golfer's head near the top left
   // and the panel's lines are short.
-  const bool on_green = !g.finished() && play.round().lie() == "green";
+  const bool on_green = !g.finished() &&
+                        (play.stage() == GolfPlay::Stage::Aiming || play.stage() == GolfPlay::Stage::Swinging) &&
+                        play.round().lie() == "green";
   ImGui::SetNextWindowSize(ImVec2(on_green ? 365.0f : 420.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Play", nullptr, kFixed);
   const GolfPlay::Stage stage = play.stage();

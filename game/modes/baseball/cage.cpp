@@ -55,6 +55,9 @@ void BattingCage::next_pitch(double t) {
   movement_ = statcast_movement(assets_, pitch_);
   released_at_ = t + kWindupTime / kPitchTimeScale;
   stage_ = Stage::Pitching;
+  // A ball still in the air when the next pitch is called: its outcome is settled, and the
+  // figures count it now rather than after the next swing.
+  told_ = true;
   call_text_.clear();
   outcome_text_.clear();
   bot_armed_ = false;

@@ -429,36 +429,45 @@ TEST_CASE("sun shadows: the flag and the club shade the turf and nothing gets br
   if (auto_renderer.software()) CHECK(render_shot_rgba(synthetic_shot(), r) == off);
 }
 
+namespace {
+// A tree's face as a wall from `from` to `to` at ground level, `tall` m high, both faces
+// solid: a trunk round a golfer, or the side of a crown across a ball's flight.
+struct TreeWall {
+  Vec3 from, to;
+  double tall = 6.0;
+};
+// Flat turf from x = -50 m to `reach` (and 50 m either side) with those walls on it.
+WorldDescription turf_and_tree_walls(double reach, const std::vector<TreeWall>& walls) {
+  WorldDescription d;
+  d.name = "trees";
+  SurfaceMaterial tree = default_fairway();
+  tree.name = "tree";
+  tree.kind = SurfaceKind::Tree;
+  d.materials = {default_fairway(), tree};
+  WorldMesh turf;
+  turf.material = 0;
+  turf.vertices = {Vec3(-50, 0, -50), Vec3(reach, 0, -50), Vec3(reach, 0, 50), Vec3(-50, 0, 50)};
+  turf.indices = {0, 2, 1, 0, 3, 2};
+  d.meshes = {turf};
+  for (const TreeWall& w : walls) {
+    WorldMesh face;
+    face.material = 1;
+    const Vec3 up(0, w.tall, 0);
+    face.vertices = {w.from, w.to, w.to + up, w.from + up};
+    face.indices = {0, 1, 2, 0, 2, 3, 0, 2, 1, 0, 3, 2};
+    d.meshes.push_back(face);
+  }
+  d.bounds_min = Vec3(-50, -5, -50);
+  d.bounds_max = Vec3(reach, 100, 50);
+  return d;
+}
+}  // namespace
+
 TEST_CASE("the address camera comes out in front of a tree, goes round it, or over the golfer when hemmed in", "[render][camera]") {
   // Flat turf and trees' trunks: walls 6 m tall (both faces), each from `from` to `to` at
   // ground level, round a golfer addressing a ball at the origin toward +x, the camera 9 m
   // behind him.
-  struct Wall {
-    Vec3 from, to;
-  };
-  const auto world_with = [](const std::vector<Wall>& walls) {
-    WorldDescription d;
-    d.name = "trees";
-    SurfaceMaterial tree = default_fairway();
-    tree.name = "tree";
-    tree.kind = SurfaceKind::Tree;
-    d.materials = {default_fairway(), tree};
-    WorldMesh turf;
-    turf.material = 0;
-    turf.vertices = {Vec3(-50, 0, -50), Vec3(50, 0, -50), Vec3(50, 0, 50), Vec3(-50, 0, 50)};
-    turf.indices = {0, 2, 1, 0, 3, 2};
-    d.meshes = {turf};
-    for (const Wall& w : walls) {
-      WorldMesh trunk;
-      trunk.material = 1;
-      trunk.vertices = {w.from, w.to, w.to + Vec3(0, 6, 0), w.from + Vec3(0, 6, 0)};
-      trunk.indices = {0, 1, 2, 0, 2, 3, 0, 2, 1, 0, 3, 2};
-      d.meshes.push_back(trunk);
-    }
-    d.bounds_min = Vec3(-50, -5, -50);
-    d.bounds_max = Vec3(50, 100, 50);
-    return d;
-  };
+  const auto world_with = [](const std::vector<TreeWall>& walls) { return turf_and_tree_walls(50.0, walls); };
   const Vec3 ball(0.0, 0.021, 0.0), head = ball + Vec3(0.0, 1.7, 0.0);
   const Camera behind = full_shot_address_camera(ball, Vec3::UnitX());
   // Within the image (vertically, and across at the window's 16:10): the angle off the view's
@@ -475,13 +484,13 @@ TEST_CASE("the address camera comes out in front of a tree, goes round it, or ov
     return !w.sweep(head, c.eye, 0.1, &hit, nullptr);
   };
   SECTION("nothing in the way: unchanged") {
-    const World open(world_with({Wall{Vec3(-30, 0, -2), Vec3(-30, 0, 2)}}));
+    const World open(world_with({TreeWall{Vec3(-30, 0, -2), Vec3(-30, 0, 2)}}));
     const Camera c = clear_view_of(behind, ball, open);
     CHECK((c.eye - behind.eye).norm() < 1e-12);
     CHECK((c.target - behind.target).norm() < 1e-12);
   }
   SECTION("a trunk 6 m back: in front of it, still looking down his line") {
-    const World w(world_with({Wall{Vec3(-6, 0, -2), Vec3(-6, 0, 2)}}));
+    const World w(world_with({TreeWall{Vec3(-6, 0, -2), Vec3(-6, 0, 2)}}));
     const Camera c = clear_view_of(behind, ball, w);
     CHECK(clear(w, c));
     CHECK(c.eye.x() > -6.0);
@@ -494,7 +503,7 @@ TEST_CASE("the address camera comes out in front of a tree, goes round it, or ov
     CHECK(in_view(c, head));
   }
   SECTION("a trunk 2 m back: swung round him as little as clears it, the golfer and the ball framed as before") {
-    const World w(world_with({Wall{Vec3(-2, 0, -2), Vec3(-2, 0, 2)}}));
+    const World w(world_with({TreeWall{Vec3(-2, 0, -2), Vec3(-2, 0, 2)}}));
     const Camera c = clear_view_of(behind, ball, w);
     CHECK(clear(w, c));
     CHECK((c.eye - head).norm() >= 3.0);
@@ -511,8 +520,8 @@ TEST_CASE("the address camera comes out in front of a tree, goes round it, or ov
     }
   }
   SECTION("trees 6 m round him, open ahead: in front of the trees behind, down his line") {
-    const World w(world_with({Wall{Vec3(-6, 0, -6), Vec3(-6, 0, 6)}, Wall{Vec3(-6, 0, 6), Vec3(6, 0, 6)},
-                              Wall{Vec3(-6, 0, -6), Vec3(6, 0, -6)}}));
+    const World w(world_with({TreeWall{Vec3(-6, 0, -6), Vec3(-6, 0, 6)}, TreeWall{Vec3(-6, 0, 6), Vec3(6, 0, 6)},
+                              TreeWall{Vec3(-6, 0, -6), Vec3(6, 0, -6)}}));
     const Camera c = clear_view_of(behind, ball, w);
     CHECK(clear(w, c));
     CHECK((c.eye - head).norm() >= 3.0);
@@ -522,8 +531,8 @@ TEST_CASE("the address camera comes out in front of a tree, goes round it, or ov
     CHECK(in_view(c, head));
   }
   SECTION("hemmed in 2 m round: over his head, looking down past him at the ball") {
-    const World w(world_with({Wall{Vec3(-2, 0, -2), Vec3(-2, 0, 2)}, Wall{Vec3(-2, 0, 2), Vec3(2, 0, 2)},
-                              Wall{Vec3(-2, 0, -2), Vec3(2, 0, -2)}}));
+    const World w(world_with({TreeWall{Vec3(-2, 0, -2), Vec3(-2, 0, 2)}, TreeWall{Vec3(-2, 0, 2), Vec3(2, 0, 2)},
+                              TreeWall{Vec3(-2, 0, -2), Vec3(2, 0, -2)}}));
     const Camera c = clear_view_of(behind, ball, w);
     CHECK(c.eye.x() > -2.0);
     CHECK(c.eye.y() > head.y() + 2.0);
@@ -537,31 +546,12 @@ TEST_CASE("the follow camera stands in front of a tree between it and the ball, 
   // Flat turf and, when asked, a crown's face: a wall 60 m wide and tall across the flight
   // half way between the ball and where the chase camera would stand behind it.
   const auto world_with_wall = [](std::optional<double> wall_x) {
-    WorldDescription d;
-    d.name = "canopy";
-    SurfaceMaterial tree = default_fairway();
-    tree.name = "tree";
-    tree.kind = SurfaceKind::Tree;
-    d.materials = {default_fairway(), tree};
-    WorldMesh turf;
-    turf.material = 0;
-    turf.vertices = {Vec3(-50, 0, -50), Vec3(300, 0, -50), Vec3(300, 0, 50), Vec3(-50, 0, 50)};
-    turf.indices = {0, 2, 1, 0, 3, 2};
-    d.meshes = {turf};
-    if (wall_x) {
-      WorldMesh crown;
-      crown.material = 1;
-      const double x = *wall_x;
-      crown.vertices = {Vec3(x, 0, -30), Vec3(x, 0, 30), Vec3(x, 60, 30), Vec3(x, 60, -30)};
-      crown.indices = {0, 1, 2, 0, 2, 3, 0, 2, 1, 0, 3, 2};
-      d.meshes.push_back(crown);
-    }
-    d.bounds_min = Vec3(-50, -5, -50);
-    d.bounds_max = Vec3(300, 100, 50);
+    std::vector<TreeWall> walls;
+    if (wall_x) walls.push_back(TreeWall{Vec3(*wall_x, 0, -30), Vec3(*wall_x, 0, 30), 60.0});
     auto a = std::make_unique<WorldAsset>();
     a->name = "canopy";
     a->sport = "golf";
-    a->world = std::make_unique<World>(d);
+    a->world = std::make_unique<World>(turf_and_tree_walls(300.0, walls));
     return a;
   };
   OffscreenContext context;

@@ -100,9 +100,6 @@ bool is_fair(const ShotTrajectory& t, const std::optional<TrajectorySample>& tou
   return fair_direction(touched ? touched->position : t.summary.rest_position);
 }
 
-// The first moment any fielder can get to the ball on the ground (after its first landing,
-// low enough to field), running flat out from his spot: where a chopper that would roll foul
-// is touched over fair ground, and so is fair. None when nobody reaches it before it stops.
 // An outfielder chasing a ball down runs a route; an infielder charges it straight.
 double route_efficiency(std::size_t fielder) { return fielder >= 6 ? kRouteEfficiency : 1.0; }
 
@@ -110,6 +107,9 @@ struct GroundTouch {
   TrajectorySample at;
   std::size_t fielder = 0;
 };
+// The first moment any fielder can get to the ball on the ground (after its first landing,
+// low enough to field), running flat out from his spot: where a chopper that would roll foul
+// is touched over fair ground, and so is fair. None when nobody reaches it before it stops.
 std::optional<GroundTouch> first_ground_touch(const ShotTrajectory& t, const std::array<Vec3, 9>& start,
                                               const Defense& defense) {
   std::optional<GroundTouch> first;

@@ -378,8 +378,9 @@ void monitor_section(PanelContext& c) {
       }
       ImGui::TextUnformatted(text->c_str());
       const double shown = display_value(ref->name, ref->value[0], u);
-      // As the shot's own column reads: whole numbers from 100 up (2686 rpm, not 2686.0).
-      const bool whole = std::abs(shown) >= 100.0;
+      // As the shot's own column reads: spin in whole rpm (2686, not 2686.0), speeds and
+      // distances to a tenth.
+      const bool whole = std::abs(shown) >= 1000.0;
       ImGui::TableNextColumn();
       ImGui::Text(whole ? "%.0f" : "%.1f", shown);
       ImGui::TableNextColumn();

@@ -43,6 +43,9 @@ struct Scene {
   MeshData figures;         ///< lit, world frame, rebuilt each frame: the people
   MeshData ground_overlay;  ///< unlit, depth-tested: rings and stripes lying on the ground
   MeshData top_overlay;     ///< unlit, drawn over everything: trail, pins, labels
+  /// px (x0, y0, x1, y1), y down: where the labels (and the trail's key) were placed, so
+  /// words the window draws over the image can keep clear of them.
+  std::vector<Eigen::Vector4f> label_boxes;
 };
 
 }  // namespace sweetspot

@@ -629,6 +629,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     }
   }
 
+  for (const Eigen::Vector4d& b : taken) scene.label_boxes.push_back(b.cast<float>());
   return scene;
 }
 

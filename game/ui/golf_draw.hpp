@@ -63,9 +63,10 @@ void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h);
 std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes);
 /// The map's marks: the ball, the selected club's carry ring and the player's dispersion
 /// ellipse for it (from this round's shots with it, else their bag's measured spread).
-/// `crowns`: the hole's trees (game/content/tree_crowns), each drawn as a dark disc.
+/// `crowns`: the hole's trees (game/content/tree_crowns), each drawn as a dark disc;
+/// `clear_of`: the image's own labels (Scene::label_boxes), which the marks' words step aside from.
 void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h,
-                    const std::vector<TreeCrown>& crowns);
+                    const std::vector<TreeCrown>& crowns, const std::vector<Eigen::Vector4f>& clear_of);
 /// The hole's wind as an arrow relative to the aim (up the screen = downrange).
 void draw_wind(const GolfPlay& play, const GolfUnits& units, int w);
 

@@ -110,7 +110,7 @@ std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes) {
 }
 
 void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h,
-                    const std::vector<TreeCrown>& crowns) {
+                    const std::vector<TreeCrown>& crowns, const std::vector<Eigen::Vector4f>& clear_of) {
   const GolfRound& r = play.round();
   if (r.finished()) return;
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
@@ -157,8 +157,10 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
     const Vec3 p = ball + along * aim + across * side;
     return Vec3(p.x(), ground_y(world, p.x(), p.z(), ball.y()) + 0.3, p.z());
   };
-  // Labels already drawn (their boxes, px), so a later one steps aside instead of over them.
+  // Labels already drawn (their boxes, px), so a later one steps aside instead of over them:
+  // the image's own (the distance stripes' numbers) first.
   std::vector<std::pair<ImVec2, ImVec2>> taken;
+  for (const Eigen::Vector4f& b : clear_of) taken.emplace_back(ImVec2(b[0], b[1]), ImVec2(b[2], b[3]));
   const auto place = [&](ImVec2 at, const std::string& text, ImVec2 dot) {
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     const auto overlaps = [&](ImVec2 a) {
@@ -166,11 +168,23 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
         if (a.x < hi.x && a.x + size.x > lo.x && a.y < hi.y && a.y + size.y > lo.y) return true;
       return false;
     };
-    // Right of its mark, else left of it, else below it.
-    if (overlaps(at)) at = ImVec2(dot.x - size.x - 6.0f, at.y);
-    if (overlaps(at)) at = ImVec2(dot.x - 0.5f * size.x, dot.y + 8.0f);
-    taken.emplace_back(at, ImVec2(at.x + size.x, at.y + size.y));
-    return at;
+    // Right of its mark, else left of it, else below or above it, else a line further down
+    // each time: the first place clear of every label already there.
+    const ImVec2 tries[] = {at,
+                            ImVec2(dot.x - size.x - 6.0f, at.y),
+                            ImVec2(dot.x - 0.5f * size.x, dot.y + 8.0f),
+                            ImVec2(dot.x - 0.5f * size.x, dot.y - 8.0f - size.y),
+                            ImVec2(dot.x + 6.0f, dot.y + 8.0f + size.y),
+                            ImVec2(dot.x + 6.0f, dot.y + 8.0f + 2.0f * size.y),
+                            ImVec2(dot.x + 6.0f, dot.y - 8.0f - 2.0f * size.y)};
+    ImVec2 chosen = at;
+    for (const ImVec2& t : tries)
+      if (!overlaps(t)) {
+        chosen = t;
+        break;
+      }
+    taken.emplace_back(chosen, ImVec2(chosen.x + size.x, chosen.y + size.y));
+    return chosen;
   };
   // The carry ring: a circle of the carry around the ball.
   if (carry > 1.0) {

@@ -636,7 +636,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
         crowns_ = tree_crowns(world->description());
         crowns_of_ = world;
       }
-      draw_map_marks(*play_, units_, cam, w, h, crowns_);
+      draw_map_marks(*play_, units_, cam, w, h, crowns_, view.label_boxes);
     }
   }
   draw_golf_hud(*play_, units_, camera_, settling, t);

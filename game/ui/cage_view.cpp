@@ -147,21 +147,24 @@ float draw_stats(const BattingCage& c, int w, int h) {
       squared += c.swings()[i].result.tracking.is_squared_up;
       blasts += c.swings()[i].result.tracking.blast;
     }
-    const char* whose = last.by_pro ? "The pro's bat" : "Bat";
+    const char* whose = last.by_pro ? "Pro's bat" : "Bat";
     // The attack angle and direction are the bat's where it meets the ball; a miss meets it
     // nowhere (an early bat has turned past 90 deg of pull by the time the ball arrives), so a
     // miss shows what every swing has: its speed and length.
     const bool met = last.result.contact;
     if (met)
+      // Rounded before printing: no "-0 deg" for an attack a hair below level.
       ImGui::Text("%s %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", whose, mps_to_mph(t.bat_speed_mps),
-                  t.attack_angle_deg, t.attack_direction_deg >= 0.0 ? "oppo" : "pull", std::abs(t.attack_direction_deg),
-                  m_to_ft(t.swing_length_m));
+                  std::round(t.attack_angle_deg) + 0.0, t.attack_direction_deg >= 0.0 ? "oppo" : "pull",
+                  std::abs(t.attack_direction_deg), m_to_ft(t.swing_length_m));
     else
       ImGui::Text("%s %.1f mph, %.1f ft swing (a miss)", whose, mps_to_mph(t.bat_speed_mps), m_to_ft(t.swing_length_m));
     // Squared up is Statcast's 80 % line: the last swing's share, rounded down so that 79.7 %
     // does not read as 80 % beside a count that (rightly) leaves it out.
     if (met)
-      ImGui::Text("Last swing: %.0f %% of its best exit speed", std::floor(100.0 * t.squared_up));
+      // Held at 100 %: the best exit speed is the most a swing of that speed can give.
+      ImGui::Text("%s: %.0f %% of its best exit speed", last.by_pro ? "The pro's swing" : "Last swing",
+                  std::min(100.0, std::floor(100.0 * t.squared_up)));
     if (n > 0) ImGui::Text("Squared up (80 %%+) %d of %d swings, blasts %d", squared, n, blasts);
   }
   if (fair > 0) {

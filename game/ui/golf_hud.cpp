@@ -139,7 +139,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     if (play.human_turn() && club == "putter" && r.lie() == "green") {
       // On the green the keys a putt needs, in one line: the panel stays clear of the golfer
       // the putting view frames under it.
-      ImGui::TextDisabled("Left/Right aim   Space: putt (2 clicks)   B: caddie");
+      ImGui::TextDisabled("Left/Right: aim   Space: putt   B: caddie");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole");
     } else if (play.human_turn()) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");

@@ -101,7 +101,9 @@ void RangeView::draw_panel(int w, bool in_air) {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(units_.distance(c.carry).c_str());
       ImGui::TableNextColumn();
-      ImGui::Text("± %s", units_.distance(c.carry_sd).c_str());
+      // One ball has no spread yet: a dash, not "± 0 yd".
+      if (c.shots > 1) ImGui::Text("± %s", units_.distance(c.carry_sd).c_str());
+      else ImGui::TextUnformatted("-");
       ImGui::TableNextColumn();
       ImGui::Text("± %s", units_.distance(c.side_sd).c_str());
       ImGui::TableNextColumn();

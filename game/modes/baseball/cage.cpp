@@ -22,14 +22,18 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m) {
   const char* when = timing_ms >= 0 ? "late" : "early";
   char text[160];
   const double under = r.crossing_undercut + beyond_m, miss = std::abs(under) - kReach;
+  // Past the end and off height too (a crossing there has a height; a bat through the zone
+  // crossed nowhere): the height said as well, so the next swing mends both.
+  char height[48] = "";
+  if (miss >= 0.01) std::snprintf(height, sizeof height, ", and %.0f cm %s it", 100.0 * miss, under > 0.0 ? "under" : "over");
   if (r.through)
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", when, std::abs(timing_ms),
                   timing_ms >= 0 ? "not around yet" : "already through the zone");
   else if (r.past_end)
     // The turned bat's end does not reach the ball's line: said as the hitter sees it, the end
     // still coming round (late) or already round past the ball (early), over a middle pitch too.
-    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat (%s)", when, std::abs(timing_ms),
-                  timing_ms >= 0 ? "its end not yet round to the ball" : "its end already round past the ball");
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat (%s)%s", when, std::abs(timing_ms),
+                  timing_ms >= 0 ? "its end not yet round to the ball" : "its end already round past the ball", height);
   else if (miss > 0.0 && miss < 0.0095)  // under a centimetre it reads in millimetres, never "0 cm"
     std::snprintf(text, sizeof text, "Swinging strike: the bat passed %.0f mm %s the ball", std::max(1.0, std::round(1000.0 * miss)),
                   under > 0.0 ? "under" : "over");
@@ -55,6 +59,7 @@ void BattingCage::next_pitch(double t) {
   movement_ = statcast_movement(assets_, pitch_);
   released_at_ = t + kWindupTime / kPitchTimeScale;
   stage_ = Stage::Pitching;
+  swung_too_soon_ = false;
   // A ball still in the air when the next pitch is called: its outcome is settled, and the
   // figures count it now rather than after the next swing.
   told_ = true;
@@ -143,6 +148,8 @@ void BattingCage::advance(double t) {
       count_pitch(hits_batter(pitch_.plate, lefty_, r) ? PitchResult::HitByPitch
                   : strike                              ? PitchResult::CalledStrike
                                                         : PitchResult::Ball);
+    // His Space in the windup swung at nothing: said beside the call it became.
+    if (swung_too_soon_) call_text_ += "   (your swing came too soon: before the pitch)";
   }
   if (stage_ == Stage::Batted) {
     // The call comes when the play is made: a fielder has the ball (a catch, a hit fielded
@@ -195,6 +202,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
                 : o == BattedOutcome::Foul ? (last_.result.foul_tip ? PitchResult::FoulTip : PitchResult::Foul)
                                            : PitchResult::InPlay);
   }
+  if (by_pro) call_text_ = "The pro: " + call_text_;  // his swing, not the player's
   if (stage_ == Stage::Batted) {
     // While the ball flies the call is its launch, as a broadcast shows it; the outcome when it lands.
     outcome_text_ = call_text_;
@@ -202,8 +210,9 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     // ball's centre: what to change next swing (Statcast's pop-ups leave above 50 deg).
     const double la = rad_to_deg(last_.result.shot.launch.vertical_angle);
     const char* side = la > 50.0 ? ", under the ball" : la < -20.0 ? ", on top of the ball" : "";
-    std::snprintf(text, sizeof text, "%.0f mph off the bat, %.0f deg, %s%s", mps_to_mph(last_.result.shot.launch.ball_speed), la,
-                  contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip), side);
+    std::snprintf(text, sizeof text, "%s%.0f mph off the bat, %.0f deg, %s%s", by_pro ? "The pro: " : "",
+                  mps_to_mph(last_.result.shot.launch.ball_speed), la, contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip),
+                  side);
     call_text_ = text;
   }
 }
@@ -246,6 +255,7 @@ void BattingCage::apply(const Intent& in) {
         // He holds until the ball is on its way: a key pressed during the windup swings at
         // nothing, and says so.
         call_text_ = "Too soon: swing once the pitcher lets the ball go";
+        swung_too_soon_ = true;
       } else if (in.kind == IntentKind::Swing) {
         SwingInput s;
         // The swing's timing as pressed; the physics takes it within its range (past ±150 ms

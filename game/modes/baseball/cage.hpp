@@ -40,7 +40,7 @@ class BattingCage {
   static constexpr double kBatStep = 0.025;
   /// s after a pitch goes by that Space is still his swing, too late, not a call for the next
   /// pitch (a press a beat late would otherwise throw one he is not ready for; P still calls).
-  static constexpr double kLateSwing = 0.5;
+  static constexpr double kLateSwing = 1.2;
   /// The pitcher's delivery before the release, in pitch time (figures.hpp kWindupTime): a
   /// pitch called at mode time t leaves his hand at t + kWindupTime / kPitchTimeScale.
 
@@ -124,6 +124,8 @@ class BattingCage {
   AtBats at_bats_before_;
   /// B asked the pro to swing at this pitch: he does when it reaches his timing.
   bool bot_armed_ = false;
+  /// Space was pressed in this pitch's windup (a swing at nothing): its call says so.
+  bool swung_too_soon_ = false;
   SwingInput bot_plan_;
   bool live_ = false;
   Pitcher pitcher_;

@@ -131,6 +131,7 @@ TEST_CASE("B between pitches calls for one and the pro swings at it, at the same
     while (cage.swings().empty() && now < 10.0) cage.update({}, now += dt);
     REQUIRE(cage.swings().size() == 1);
     CHECK(cage.swings().back().by_pro);  // his, not the player's: the HUD's figures leave it out
+    CHECK_THAT(cage.call_text(), Catch::Matchers::StartsWith("The pro: "));
     timings.push_back(cage.swings().back().timing_ms);
     // His bat met the ball at his timing's instant, not at the frame that saw it.
     const double contact = 1.0 + (kWindupTime + cage.pitch().flight_time + 1e-3 * timings.back()) / BattingCage::kPitchTimeScale;
@@ -153,8 +154,12 @@ TEST_CASE("a miss is called in a hitter's words, never '0 cm'", "[modes][basebal
   CHECK(miss_call(r, 3.0, 0.06) == "Swinging strike: the bat passed 7 cm under the ball");
   r.crossing_undercut = -0.08;
   CHECK(miss_call(r, 3.0, -0.10) == "Swinging strike: the bat passed 11 cm over the ball");
-  r.crossing_undercut = 0.0;
+  // Past the end and over the ball as well: both said.
+  r.crossing_undercut = -0.12;
   r.past_end = true;
+  CHECK(miss_call(r, -20.0) ==
+        "Swinging strike: early by 20 ms, past the end of the bat (its end already round past the ball), and 5 cm over it");
+  r.crossing_undercut = 0.0;
   CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, past the end of the bat (its end already round past the ball)");
   CHECK(miss_call(r, 17.0) == "Swinging strike: late by 17 ms, past the end of the bat (its end not yet round to the ball)");
   r.past_end = false;
@@ -175,6 +180,7 @@ TEST_CASE("a swing pressed during the windup is refused in words; strike three s
   now += (kWindupTime + cage.pitch().flight_time + BattingCage::kTakenAfter) / BattingCage::kPitchTimeScale + 0.01;
   cage.update({}, now);
   CHECK_THAT(cage.call_text(), !Catch::Matchers::Contains("Too soon"));  // the pitch's call replaces it
+  CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("(your swing came too soon: before the pitch)"));  // and keeps why
   // Swinging 300 ms early at every pitch until the plate appearance ends: strike three
   // swinging says how he missed, as strikes one and two did.
   int guard = 0;

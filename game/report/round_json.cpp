@@ -289,13 +289,8 @@ std::string group_table(const GolfGroup& g) {
     std::snprintf(cell, sizeof cell, "%-8s %3d    ", label, nine_par);
     std::string line = cell;
     for (std::size_t p = 0; p < n; ++p) {
-      int strokes = 0, putts = 0;
-      for (std::size_t h = from; h < to; ++h) {
-        if (!s.players[p].scored[h]) continue;
-        strokes += s.players[p].gross[h];
-        putts += s.players[p].putts[h];
-      }
-      line += "  " + pad(std::to_string(strokes) + " (" + std::to_string(putts) + ")", 14);
+      const PlayerStanding::Sum nine = s.players[p].sum(from, to);
+      line += "  " + pad(std::to_string(nine.strokes) + " (" + std::to_string(nine.putts) + ")", 14);
     }
     return line + "\n";
   };

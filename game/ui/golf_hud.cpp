@@ -402,13 +402,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
       ImGui::TableNextColumn();
       for (std::size_t p = 0; p < n; ++p) {
         ImGui::TableNextColumn();
-        int strokes = 0, putts = 0;
-        for (std::size_t h = from; h < to; ++h) {
-          if (!s.players[p].scored[h]) continue;
-          strokes += s.players[p].gross[h];
-          putts += s.players[p].putts[h];
-        }
-        ImGui::Text("%d (%d)", strokes, putts);
+        const PlayerStanding::Sum nine = s.players[p].sum(from, to);
+        ImGui::Text("%d (%d)", nine.strokes, nine.putts);
       }
       if (s.match || s.skins) ImGui::TableNextColumn();
     };

@@ -25,6 +25,20 @@ struct PlayerStanding {
   /// Fairways hit of the par 4s and 5s teed off, and greens in regulation of the holes played.
   int fairways_hit = 0, fairways = 0, greens_in_regulation = 0;
   int greens = 0;  ///< holes that count toward greens in regulation: those played, not conceded
+
+  /// Strokes and putts over holes [from, to) that have a score: a card's nine (Out, In).
+  struct Sum {
+    int strokes = 0, putts = 0;
+  };
+  Sum sum(std::size_t from, std::size_t to) const {
+    Sum out;
+    for (std::size_t h = from; h < to && h < scored.size(); ++h) {
+      if (!scored[h]) continue;
+      out.strokes += gross[h];
+      out.putts += putts[h];
+    }
+    return out;
+  }
 };
 
 struct Standings {

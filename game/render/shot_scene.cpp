@@ -490,11 +490,12 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   // Labels never overlap on screen: each claims its rectangle, and a label that would
   // cover an earlier one is left out (shot labels go first, so they win).
   std::vector<Eigen::Vector4d> taken;  // x0, y0, x1, y1 in pixels
+  // False when the label was left out.
   auto label = [&](const std::string& text, const Vec3& anchor, const Eigen::Vector3f& color) {
     const double h = px(anchor, m.style.label_height_px);
     Vec3 origin = anchor - 0.5 * text_width(text, h) * cam_right;
     auto at_px = camera.project(origin, width, height);
-    if (!at_px) return;
+    if (!at_px) return false;
     const double h_px = style_scale * m.style.label_height_px;
     const double w_px = text_width(text, h_px), pad = 3.0;
     // Slide a label that would stick out of the image back in horizontally.
@@ -507,13 +508,14 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     const Eigen::Vector4d r(at_px->x() - gap, at_px->y() - h_px - pad, at_px->x() + w_px + gap,
                             at_px->y() + text_descent(h_px) + pad);
     for (const auto& o : taken) {
-      if (r[0] < o[2] && o[0] < r[2] && r[1] < o[3] && o[1] < r[3]) return;
+      if (r[0] < o[2] && o[0] < r[2] && r[1] < o[3] && o[1] < r[3]) return false;
     }
     taken.push_back(r);
     // A dark drop shadow keeps light labels readable over sand, sky and light greens.
     const Vec3 shadow = origin + (cam_right - cam_up) * px(anchor, 1.5);
     append_text(scene.top_overlay, text, shadow, cam_right, cam_up, h, kShadowColor);
     append_text(scene.top_overlay, text, origin, cam_right, cam_up, h, color);
+    return true;
   };
   // The trail colours' key, bottom-left, claimed first so no label covers it.
   if (samples.size() >= 2 && m.style.legend) {
@@ -584,14 +586,17 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     const double h_px = style_scale * m.style.label_height_px, line_px = 1.6 * h_px;
     std::vector<Eigen::Vector3d> numbers;  // px: left, right, baseline of each number written
     // Nor over the flag: the game draws a far flag at least 40 px tall (game/ui/golf_marks),
-    // and a number behind its cloth reads as another ("1$0").
+    // and a number behind its cloth reads as another ("1$0"). The scene's own cloth flies
+    // with the wind, either side of the pole (and edge-on down a tail- or headwind, where a
+    // number beside the pole hides all of it): the pole and a cloth's length both sides.
+    double flag_reach_px = 0.0;  // from the pole to the box's edge
     if (on_hole) {
       const auto base = camera.project(*m.flag_position, width, height);
       const auto top = camera.project(*m.flag_position + Vec3(0.0, kFlagstickHeight, 0.0), width, height);
       if (base) {
         const double tall = std::max(40.0, top ? base->y() - top->y() : 0.0);
-        // The cloth flies right of the pole: a number left of the aim line still fits beside it.
-        taken.push_back(Eigen::Vector4d(base->x() + 2.0, base->y() - tall - 4.0, base->x() + 0.3 * tall + 4.0, base->y()));
+        flag_reach_px = 0.3 * tall + 4.0;
+        taken.push_back(Eigen::Vector4d(base->x() - flag_reach_px, base->y() - tall - 4.0, base->x() + flag_reach_px, base->y()));
       }
     }
     std::vector<std::pair<int, Vec3>> written;  // each stripe's number and where it sits
@@ -620,8 +625,15 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
         return box[0] < o[1] + h_px && o[0] < box[1] + h_px && std::abs(box[2] - o[2]) < line_px;
       });
       if (crowded) continue;
-      label(text, on_line + cam_up * px(on_line, 6.0) - cam_right * px(on_line, 0.5 * w_px / style_scale + 8.0), kWhite);
-      numbers.push_back(box);
+      // Just left of the aim line; where the flag stands there, left of the flag instead.
+      const double beside = 8.0 * style_scale;  // px from the line to the number
+      for (const double clear_px : {beside, beside + flag_reach_px}) {
+        if (clear_px > beside && flag_reach_px == 0.0) break;
+        if (label(text, on_line + cam_up * px(on_line, 6.0) - cam_right * px(on_line, (0.5 * w_px + clear_px) / style_scale), kWhite)) {
+          numbers.push_back(box - Eigen::Vector3d(clear_px - beside, clear_px - beside, 0.0));
+          break;
+        }
+      }
     }
   } else {
     for (const auto& [dist, at_wall] : m.fence_marks) {

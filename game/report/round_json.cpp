@@ -308,7 +308,7 @@ std::string group_table(const GolfGroup& g) {
       const HoleCard& c = g.round(static_cast<int>(p)).card()[h];
       char v[48];
       if (!ps.scored[h])  // a match's hole conceded (C) or left once conceded: no score
-        std::snprintf(v, sizeof v, "%s", c.conceded ? "C -" : "-");
+        std::snprintf(v, sizeof v, "%s", c.conceded ? "C" : "-");
       else
         std::snprintf(v, sizeof v, "%s%d%.*s (%d)", c.picked_up ? "PU " : "", ps.gross[h], std::min(ps.received[h], 6), "******",
                       ps.putts[h]);
@@ -335,11 +335,11 @@ std::string group_table(const GolfGroup& g) {
   };
   int par = 0;
   for (std::size_t h = 0; h < s.holes; ++h) par += g.course().holes[h].par;
-  sum_row("total", par, [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
+  sum_row("total", par, [&](const PlayerStanding& ps) { return ps.total_text(s.holes); });
   sum_row("putts", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
   sum_row("fairways", -1, [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
   sum_row("greens", -1, [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(ps.greens); });
-  sum_row("to par", -1, [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
+  sum_row("to par", -1, [](const PlayerStanding& ps) { return ps.holes_scored > 0 ? to_par_text(ps.total_strokes - ps.total_par) : std::string("-"); });
   sum_row("net", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
   if (s.format == GolfFormat::Stableford)
     sum_row("points", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_points); });
@@ -350,7 +350,7 @@ std::string group_table(const GolfGroup& g) {
   if (s.format == GolfFormat::Match) out += "result: " + s.match->result + "\n";
   else if (s.holes > 0) out += leaders_text(g, s) + "\n";
   out += std::string("(* a stroke received; putts in brackets; 1p a penalty stroke; PU picked up") +
-         (s.format == GolfFormat::Match ? "; C - a hole conceded, - one left unfinished: no score" : "") + ")\n";
+         (s.format == GolfFormat::Match ? "; C a hole conceded, - one left unfinished: no score, in no total" : "") + ")\n";
   return out;
 }
 

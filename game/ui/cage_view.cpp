@@ -85,8 +85,9 @@ float draw_stats(const BattingCage& c, int w, int h) {
   if (c.live()) {
     const BattingCage::AtBats& a = c.at_bats();
     ImGui::Text("Live at-bat: count %d-%d", c.count().balls, c.count().strikes);
-    ImGui::Text("PA %d: %d H (%d HR), %d K, %d BB, %d HBP, %d outs in play", a.pa, a.hits, a.home_runs, a.strikeouts, a.walks,
-                a.hit_by_pitch, a.outs - a.strikeouts);
+    const int in_play = a.outs - a.strikeouts;
+    ImGui::Text("PA %d: %d H (%d HR), %d K, %d BB, %d HBP, %d %s in play", a.pa, a.hits, a.home_runs, a.strikeouts, a.walks,
+                a.hit_by_pitch, in_play, in_play == 1 ? "out" : "outs");
   } else {
     ImGui::Text("Batting practice");
   }
@@ -169,7 +170,9 @@ float draw_stats(const BattingCage& c, int w, int h) {
   }
   if (fair > 0) {
     ImGui::Text("Fair balls: exit velocity %.1f mph, launch %.1f deg", ev / fair, la / fair);
-    ImGui::Text("Hard-hit %.0f %%, longest %.0f ft", 100.0 * hard / fair, m_to_ft(longest));
+    // The carry (Statcast's hit distance: to the first bounce or the glove), said as such:
+    // a grounder session's "longest 4 ft" is its longest carry.
+    ImGui::Text("Hard-hit %.0f %%, longest carry %.0f ft", 100.0 * hard / fair, m_to_ft(longest));
   }
   const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
   ImGui::End();
@@ -190,6 +193,11 @@ float draw_stats(const BattingCage& c, int w, int h) {
   dl->PushClipRect(ImVec2(x0, y0), ImVec2(x0 + size, y0 + size), true);
   dl->AddLine(home, px(Vec3(130, 0, 130)), IM_COL32(240, 240, 240, 255));
   dl->AddLine(home, px(Vec3(130, 0, -130)), IM_COL32(240, 240, 240, 255));
+  // The infield's 90 ft square (27.43 m a side, MLB Rule 2.01): a grounder fielded there
+  // reads as an infield ball, not a dot at home plate.
+  constexpr double kBaseLine = 27.43 / 1.41421356237;  // m along x and z from home to first
+  dl->AddQuad(home, px(Vec3(kBaseLine, 0, kBaseLine)), px(Vec3(2.0 * kBaseLine, 0, 0)), px(Vec3(kBaseLine, 0, -kBaseLine)),
+              IM_COL32(190, 150, 100, 255), 1.5f);
   for (std::size_t i = 0; i < c.swings_told(); ++i) {
     const SwingRecord& s = c.swings()[i];
     if (!s.result.contact) continue;

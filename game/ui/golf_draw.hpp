@@ -54,8 +54,10 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
 /// `hit_tree`: its first touch was a tree, so the carry reads as where it struck it.
 void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree = false);
 void draw_golf_card(const GolfPlay& play, int w, bool final);
-/// The cup and flagstick, never smaller than a few pixels however far.
-void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h);
+/// The cup and flagstick, never smaller than a few pixels however far. `scene_has_flag`: the
+/// 3-D scene draws this pin's own flag (a course's), so near enough only the cup is added.
+/// `label`, when not empty, is written beside the flag's cloth (a range's yardage).
+void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool scene_has_flag = true, const std::string& label = {});
 /// The aim line from the ball (to the cup's distance and a metre on for a putt).
 void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h);
 /// The green's slopes as arrows on the ground for the scene (ShotScene::set_ground_arrows),

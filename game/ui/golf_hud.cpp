@@ -140,13 +140,13 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       // On the green the keys a putt needs, in one line: the panel stays clear of the golfer
       // the putting view frames under it.
       ImGui::TextDisabled("Left/Right: aim   Space: putt   B: caddie");
-      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole");
+      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
     } else if (play.human_turn()) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
       ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
       ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save  L latency", camera_words(camera_mode));
       ImGui::TextDisabled("R: replay  Esc: cancel the swing or pause  Tab: next mode");
-      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole");
+      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
     } else {
       ImGui::TextDisabled("Enter: let them play now");
     }
@@ -426,7 +426,7 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
         if (s.format == GolfFormat::Stableford) std::snprintf(pts, sizeof pts, " %dpt", ps.points[h]);
         if (c.penalties > 0) std::snprintf(pen, sizeof pen, " %dp", c.penalties);
         if (!ps.scored[h])
-          ImGui::Text("-%s", c.conceded ? " C" : "");  // a match's hole conceded or left: no score
+          ImGui::TextUnformatted(c.conceded ? "C" : "-");  // a match's hole conceded or left: no score
         else
           ImGui::Text("%d%.*s (%d)%s%s%s", ps.gross[h], std::min(ps.received[h], 4), "****", ps.putts[h], pen, pts,
                       c.picked_up ? " PU" : "");
@@ -460,11 +460,11 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
       if (s.match || s.skins) ImGui::TableNextColumn();
     };
     const std::string par_text = std::to_string(par);
-    sum_row("Total", par_text.c_str(), [](const PlayerStanding& ps) { return std::to_string(ps.total_strokes); });
+    sum_row("Total", par_text.c_str(), [&](const PlayerStanding& ps) { return ps.total_text(s.holes); });
     sum_row("Putts", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
     sum_row("Fairways", "", [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
     sum_row("Greens", "", [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(ps.greens); });
-    sum_row("To par", "", [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
+    sum_row("To par", "", [](const PlayerStanding& ps) { return ps.holes_scored > 0 ? to_par_text(ps.total_strokes - ps.total_par) : std::string("-"); });
     sum_row("Net", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
     if (s.format == GolfFormat::Stableford)
       sum_row("Points", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_points); });
@@ -491,7 +491,7 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
   if (received) key = "* a stroke received (handicap); " + key;
   if (penalty) key += "; 1p a penalty stroke";
   if (picked_up) key += "; PU picked up";
-  if (conceded) key += "; C a hole conceded, - one left unfinished (no score)";
+  if (conceded) key += "; C a hole conceded, - one left unfinished: no score, in no total";
   if (restarted) key += "; R the hole was restarted from the menu (its first try not counted)";
   // Wrapped: with several marks the key runs past the card's 600 px.
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

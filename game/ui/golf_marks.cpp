@@ -51,7 +51,7 @@ std::vector<SlopeArrow> green_slopes(const WorldAsset& w, const Vec3& ball, cons
   return out;
 }
 
-void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
+void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool scene_has_flag, const std::string& label) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const auto base = cam.project(pin, w, h);
   if (!base) return;
@@ -72,7 +72,7 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
   // Near enough, the scene's own flagstick and wind-blown flag read on their own: a drawn
   // flag over them would show two flags, one of them pointing a way the wind does not blow.
   constexpr float kSceneFlagReadsPx = 24.0f;
-  if (top && b.y - px(*top).y >= kSceneFlagReadsPx) {
+  if (scene_has_flag && top && b.y - px(*top).y >= kSceneFlagReadsPx) {
     // Its cloth does; its 25 mm pole is under 2 px wide until ~15 m away at 800 lines and
     // drops out of the raster, leaving the cloth afloat over the cup: drawn 2 px wide then.
     constexpr float kPoleDiameterOverHeight = static_cast<float>(0.025 / kFlagstickHeight);  // assets/meshes/flag.obj
@@ -82,6 +82,11 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h) {
   dl->AddLine(b, t, IM_COL32(240, 240, 240, 255), 2.0f);
   const float fh = 0.3f * (b.y - t.y);
   dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));
+  if (!label.empty()) {
+    const ImVec2 at(t.x + 0.7f * fh + 3.0f, t.y);
+    dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 200), label.c_str());  // a shadow over light sky
+    dl->AddText(at, IM_COL32(255, 255, 255, 255), label.c_str());
+  }
 }
 
 void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h) {

@@ -186,9 +186,18 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   if (last_.result.contact) {
     const std::string words = last_.result.outcome == BattedOutcome::Foul ? (last_.result.foul_tip ? "Foul tip" : "Foul ball")
                                                                            : last_.result.play.description;
-    std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %.0f ft", words.c_str(),
-                  mps_to_mph(last_.result.shot.launch.ball_speed), rad_to_deg(last_.result.shot.launch.vertical_angle),
-                  m_to_ft(played_.summary.carry_m));  // to the glove on a catch, as the field's label
+    // How far: to the glove on a catch, where it came down otherwise (Statcast's hit
+    // distance, as the field's label); a ground ball's first hop a few feet out says nothing
+    // of it, so a fielded one says where he picked it up (the field's rest label).
+    const FieldingPlay& play = last_.result.play;
+    const double launch = last_.result.shot.launch.vertical_angle;
+    const bool grounder_fielded = batted_ball_type(launch) == BattedBallType::GroundBall && !play.caught && play.fielder >= 0 &&
+                                  !play.foul;
+    char how_far[48];
+    if (grounder_fielded) std::snprintf(how_far, sizeof how_far, "fielded at %.0f ft", m_to_ft(played_.summary.total_m));
+    else std::snprintf(how_far, sizeof how_far, "%.0f ft", m_to_ft(played_.summary.carry_m));
+    std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %s", words.c_str(), mps_to_mph(last_.result.shot.launch.ball_speed),
+                  rad_to_deg(launch), how_far);
     call_text_ = text;
     batted_at_ = t;
     stage_ = Stage::Batted;

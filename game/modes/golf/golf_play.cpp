@@ -151,6 +151,7 @@ std::optional<double> GolfPlay::tree_in_the_way(const std::string& club) const {
 }
 
 void GolfPlay::begin_turn(double t) {
+  concede_asked_ = false;  // a question asked on another turn is not this one's
   if (group_.finished()) return;
   player_ = group_.to_play();
   turn_at_ = t;
@@ -316,9 +317,8 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
     const double late = last_click_ ? last_click_->click_error_ms() : last_meter_->accuracy_ms;
     // The meter plays a swing whose last click never came at its latest (MeterInput::kAccuracy).
     const bool at_the_limit = std::abs(late) >= MeterInput::kAccuracy.max - 0.5;
-    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f %%, %s %.0f ms%s%s", who.name.c_str(), stroke_no,
-                  s.club.c_str(), 100.0 * last_meter_->power, std::abs(late) < 0.5 ? "on time" : late > 0 ? "Late" : "Early",
-                  std::abs(late), at_the_limit ? " (the meter's limit)" : "", rest.c_str());
+    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f\u00a0%%, %s%s%s", who.name.c_str(), stroke_no, s.club.c_str(),
+                  100.0 * last_meter_->power, timing_words(late).c_str(), at_the_limit ? " (the meter's limit)" : "", rest.c_str());
   } else {
     std::snprintf(msg, sizeof msg, "%s, stroke %d: %s%s%s", who.name.c_str(), stroke_no, s.club.c_str(),
                   who.human ? " (the caddie's swing)" : "", rest.c_str());
@@ -328,6 +328,10 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
 
 void GolfPlay::apply(const Intent& in) {
   const double t = in.time;
+  if (in.kind != IntentKind::Concede && concede_asked_) {
+    concede_asked_ = false;
+    if (in.kind != IntentKind::Swing) say("");  // the question answered no (a swing says its own)
+  }
   if (in.kind == IntentKind::Restart) {
     if (stage_ == Stage::RoundOver) new_round(t);
     else restart_hole(t);
@@ -376,7 +380,13 @@ void GolfPlay::apply(const Intent& in) {
           break;
         }
         case IntentKind::Concede:
-          if (group_.options().format == GolfFormat::Match) {
+          // Giving up a hole (and perhaps the match) takes a second press: H is a key a
+          // newcomer tries for help.
+          if (group_.options().format == GolfFormat::Match && !concede_asked_) {
+            concede_asked_ = true;
+            say("Concede hole " + std::to_string(group_.hole_index() + 1) + "? H again gives it up; any other key plays on");
+          } else if (group_.options().format == GolfFormat::Match) {
+            concede_asked_ = false;
             const std::size_t hole = group_.hole_index();
             group_.concede_hole();
             landed_at_ = t;

@@ -192,6 +192,7 @@ class GolfPlay {
   double struck_at_ = 0.0, landed_at_ = 0.0, turn_at_ = 0.0, flyover_at_ = 0.0;
   std::string message_;
   bool message_is_result_ = false;
+  bool concede_asked_ = false;  ///< H once in match play: a second H gives up the hole
   int cancelled_ = 0;
   bool swing_undone_ = false;
   std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green

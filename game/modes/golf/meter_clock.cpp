@@ -97,4 +97,9 @@ std::optional<MeterInput> MeterClock::result() const {
   return m;
 }
 
+std::string timing_words(double late_ms) {
+  if (std::abs(late_ms) < 0.5) return "on time";
+  return (late_ms > 0.0 ? "late " : "early ") + std::to_string(static_cast<long>(std::lround(std::abs(late_ms)))) + "\u00a0ms";
+}
+
 }  // namespace sweetspot

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "game/modes/golf/swing_meter.hpp"
@@ -25,6 +26,10 @@ double perfect_window_ms(MeterDifficulty d);
 const char* to_string(MeterDifficulty d);
 /// "easy", "standard", "pro"; InputError listing them.
 MeterDifficulty meter_difficulty(std::string_view name);
+/// A click's timing in a player's words: "on time", "late 8 ms", "early 40 ms"; the number
+/// and its unit joined by a no-break space (U+00A0, in the HUD font's Latin-1 range), as a
+/// panel wraps its lines at spaces and "late 8" over "ms" reads as two things.
+std::string timing_words(double late_ms);
 
 class MeterClock {
  public:

@@ -15,9 +15,12 @@ RangePlay::RangePlay(const Assets& assets, const GolferSkill& skill, int shots_p
 
 const std::string& RangePlay::club() const { return golf_bag()[club_]; }
 
-std::vector<double> RangePlay::targets() {
-  std::vector<double> out;
-  for (int yd = 50; yd <= 250; yd += 50) out.push_back(yd_to_m(yd));
+std::vector<Vec3> RangePlay::targets() {
+  // m left (-) or right (+) of the line: 4-7 deg apart as the tee's camera sees them, clear of
+  // the stripes' numbers just left of the line; the farthest on it.
+  constexpr double kOff[] = {-8.0, 10.0, -14.0, 14.0, 0.0};
+  std::vector<Vec3> out;
+  for (int k = 0; k < 5; ++k) out.emplace_back(yd_to_m(50.0 * (k + 1)), 0.0, kOff[k]);
   return out;
 }
 
@@ -55,15 +58,9 @@ void RangePlay::strike(const MeterInput& m, double t, bool caddie) {
   // The ball just hit, and how it was swung: the meter's own click error (as the golf
   // round's message gives it), or the skill's drawn one for B.
   const double late = caddie || !last_click_ ? m.accuracy_ms : last_click_->click_error_ms();
-  char timing[40];
-  if (std::abs(late) < 0.5) {
-    std::snprintf(timing, sizeof timing, "on time");
-  } else {
-    std::snprintf(timing, sizeof timing, "%s %.0f ms", late > 0.0 ? "late" : "early", std::abs(late));
-  }
   char msg[200];
-  std::snprintf(msg, sizeof msg, "Last ball: %s, shot %d of %d, power %.0f %%, %s%s", club.c_str(), shots_with_club(), per_club_,
-                100.0 * m.power, timing, caddie ? " (your skill's swing)" : "");
+  std::snprintf(msg, sizeof msg, "Last ball: %s, shot %d of %d, power %.0f\u00a0%%, %s%s", club.c_str(), shots_with_club(), per_club_,
+                100.0 * m.power, timing_words(late).c_str(), caddie ? " (your\u00a0skill's\u00a0swing)" : "");
   message_ = msg;
   // A club's shots done: the next club down the bag comes up.
   if (shots_with_club() >= per_club_ && club_ + 2 < golf_bag().size()) ++club_;

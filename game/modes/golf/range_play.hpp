@@ -12,6 +12,7 @@
 #include "game/modes/golf/meter_clock.hpp"
 #include "game/modes/golf/range_session.hpp"
 #include "game/modes/intent.hpp"
+#include "physics/math.hpp"
 
 namespace sweetspot {
 
@@ -39,8 +40,10 @@ class RangePlay {
   int shots_with_club() const;
   const std::string& message() const { return message_; }
   const GolferSkill& skill() const { return skill_; }
-  /// The targets' distances from the tee (m): flags every 50 yd out to 250 yd.
-  static std::vector<double> targets();
+  /// The target flags on the ground (m, the tee at the origin, +x down the range): every
+  /// 50 yd out to 250 yd, set off the line left and right in turn as a range's greens are,
+  /// so that from the tee each stands on its own instead of one pole in front of the next.
+  static std::vector<Vec3> targets();
 
  private:
   void apply(const Intent& in);

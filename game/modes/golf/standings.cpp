@@ -26,21 +26,24 @@ Standings standings(const GolfGroup& g) {
       ps.points.push_back(c.holed ? stableford_points(c.par, c.strokes - given[h]) : 0);
       const bool scored = c.holed || c.picked_up;
       ps.scored.push_back(scored);
-      ps.total_putts += c.putts;
       ps.tee_shot.push_back(c.tee_shot);
       ps.green_in_regulation.push_back(c.green_in_regulation);
-      if (c.tee_shot != TeeShot::None) {
-        ++ps.fairways;
-        if (c.tee_shot == TeeShot::Fairway) ++ps.fairways_hit;
-      }
-      // A hole this player conceded stays out of the green count as out of the fairways'.
-      if (!c.conceded) ++ps.greens;
-      if (c.green_in_regulation) ++ps.greens_in_regulation;
       ps.total_points += ps.points.back();
+      // A hole with no score (a match's, conceded or left unfinished) is in none of the
+      // totals: its putts, fairway and green as little as its strokes, so that every row of
+      // the card counts the same holes.
       if (scored) {
+        ++ps.holes_scored;
         ps.total_strokes += c.strokes;
+        ps.total_putts += c.putts;
         ps.total_net += c.strokes - given[h];
         ps.total_par += c.par;
+        if (c.tee_shot != TeeShot::None) {
+          ++ps.fairways;
+          if (c.tee_shot == TeeShot::Fairway) ++ps.fairways_hit;
+        }
+        ++ps.greens;
+        if (c.green_in_regulation) ++ps.greens_in_regulation;
       }
       if (c.conceded) conceded_by[h] = p;
     }

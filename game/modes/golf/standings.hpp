@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "game/modes/golf/golf_group.hpp"
@@ -20,11 +21,23 @@ struct PlayerStanding {
   std::vector<bool> scored;
   std::vector<TeeShot> tee_shot;   ///< per finished hole (None on a par 3)
   std::vector<bool> green_in_regulation;
+  /// Over the scored holes only (`scored`): strokes, putts and net; points over all.
   int total_strokes = 0, total_putts = 0, total_net = 0, total_points = 0;
-  int total_par = 0;  ///< the par of the scored holes
-  /// Fairways hit of the par 4s and 5s teed off, and greens in regulation of the holes played.
+  int total_par = 0;     ///< the par of the scored holes
+  int holes_scored = 0;  ///< how many of the finished holes have a score
+  /// Fairways hit of the scored par 4s and 5s, and greens in regulation of the scored holes.
   int fairways_hit = 0, fairways = 0, greens_in_regulation = 0;
-  int greens = 0;  ///< holes that count toward greens in regulation: those played, not conceded
+  int greens = 0;  ///< holes that count toward greens in regulation: the scored ones
+
+  /// The card's total: the strokes, and over how many holes when some have no score (a
+  /// match's conceded hole), so "5" does not stand against the par of two holes.
+  std::string total_text(std::size_t holes) const {
+    if (holes_scored == 0 && holes > 0) return "-";
+    std::string out = std::to_string(total_strokes);
+    if (static_cast<std::size_t>(holes_scored) < holes)
+      out += " in " + std::to_string(holes_scored) + (holes_scored == 1 ? " hole" : " holes");
+    return out;
+  }
 
   /// Strokes and putts over holes [from, to) that have a score: a card's nine (Out, In).
   struct Sum {

@@ -2,11 +2,15 @@
 // press against the pitch's arrival, whatever the frame rate.
 #include <catch2/catch.hpp>
 
+#include <cstdint>
+#include <cstdio>
 #include <set>
 #include <string>
 
 #include "game/modes/baseball/cage.hpp"
+#include "game/modes/baseball/fielding.hpp"
 #include "game/modes/baseball/figures.hpp"
+#include "physics/units.hpp"
 #include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
 
@@ -242,4 +246,42 @@ TEST_CASE("the cage tells each pitch's movement as Statcast reads it, the seam w
     cage.update({}, now);
   }
   CHECK(seen.size() >= 4);
+}
+
+TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where it came down", "[modes][baseball]") {
+  bool grounder = false, fly = false;
+  for (std::uint64_t seed = 1; seed <= 60 && !(grounder && fly); ++seed) {
+    BattingCage cage(test::assets(), seed);
+    // On time, the bat set 0 to 5 cm above the ball's middle by seed: flies and grounders.
+    for (std::uint64_t k = 0; k < seed % 3; ++k) cage.update({at(IntentKind::BatUp, 0.1 + 0.1 * k)}, 0.1 + 0.1 * k);
+    cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
+    const double on_time = 1.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
+    double now = 1.0;
+    while (now + 0.02 < on_time) cage.update({}, now += 0.02);
+    cage.update({at(IntentKind::Swing, on_time)}, now = on_time);
+    while (cage.swings().empty() && now < 10.0) cage.update({}, now += 0.02);
+    REQUIRE(cage.swings().size() == 1);
+    // The call while it flies is its launch; the outcome's once it is down.
+    const double until = now + 15.0;
+    while (cage.stage() == BattingCage::Stage::Batted && now < until) cage.update({}, now += 0.05);
+    const SwingResult& r = cage.swings().back().result;
+    if (!r.contact || r.outcome == BattedOutcome::Foul || r.outcome == BattedOutcome::HomeRun) continue;
+    const bool on_ground = batted_ball_type(r.shot.launch.vertical_angle) == BattedBallType::GroundBall;
+    const ShotTrajectory played = as_played(r.shot.trajectory, r.play);
+    char want[48];
+    if (on_ground && !r.play.caught && r.play.fielder >= 0) {
+      grounder = true;
+      std::snprintf(want, sizeof want, "fielded at %.0f ft", m_to_ft(played.summary.total_m));
+      INFO(cage.call_text());
+      CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith(want));
+      CHECK(played.summary.total_m > r.shot.trajectory.summary.carry_m);  // past its first hop
+    } else if (!on_ground) {
+      fly = true;
+      std::snprintf(want, sizeof want, ", %.0f ft", m_to_ft(played.summary.carry_m));
+      INFO(cage.call_text());
+      CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith(want));
+    }
+  }
+  CHECK(grounder);
+  CHECK(fly);
 }

@@ -499,3 +499,27 @@ TEST_CASE("a pitch's tree warning is the pitch's: a full wedge into the trees sa
   REQUIRE(play.round().first_touch_in_a_tree(play.round().simulate(full).trajectory.summary));
   CHECK_FALSE(play.tree_in_the_way(play.club()));
 }
+
+TEST_CASE("match play: H asks before it gives up the hole, another key answers no", "[modes][golf][formats]") {
+  GolfSetup s;
+  s.players = {{"You", "tour", true, 0, {}}, {"tour bot", "tour", false, 0, {}}};
+  s.options.format = GolfFormat::Match;
+  s.flyover = false;
+  GolfPlay play(test::assets(), first_hole(2), s);
+  REQUIRE(play.stage() == GolfPlay::Stage::Aiming);
+  REQUIRE(play.human_turn());
+  // One H asks; nothing is given up.
+  play.update({at(IntentKind::Concede, 1.0)}, 1.0);
+  CHECK(play.group().hole_index() == 0);
+  CHECK_FALSE(play.round().card().front().conceded);
+  CHECK(play.message().find("H again") != std::string::npos);
+  // Any other key answers no, and the next H asks again.
+  play.update({at(IntentKind::AimLeft, 1.5)}, 1.5);
+  CHECK(play.message().empty());
+  play.update({at(IntentKind::Concede, 2.0)}, 2.0);
+  CHECK(play.group().hole_index() == 0);
+  // H twice: the hole is given up and the match moves to the next one.
+  play.update({at(IntentKind::Concede, 2.5)}, 2.5);
+  CHECK(play.group().hole_index() == 1);
+  CHECK(play.group().round(0).card().front().conceded);
+}

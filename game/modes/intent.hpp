@@ -29,7 +29,7 @@ enum class IntentKind : unsigned char {
   TogglePower,  ///< batting: power / contact swing
   ToggleSide,   ///< batting: right- / left-handed
   BotSwings,    ///< batting: the pro bot swings at this pitch
-  ToggleLive,   ///< batting: batting practice / a live at-bat against the league's pitcher
+  ToggleLive,   ///< batting: batting practice / a live game against the league's pitcher
   Replay,       ///< the last shot again from its start
   Edit,         ///< Lab: set parameter `param` to `value` (SI)
   Choose,       ///< Lab: set choice `param` to `text` (a scenario, club, bat, model)

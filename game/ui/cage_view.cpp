@@ -84,7 +84,22 @@ float draw_stats(const BattingCage& c, int w, int h) {
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   if (c.live()) {
     const BattingCage::AtBats& a = c.at_bats();
-    ImGui::Text("Live at-bat: count %d-%d", c.count().balls, c.count().strikes);
+    if (const LiveInning::Board* b = c.board()) {
+      // The scoreboard: the inning, outs, runners and count; the line score; the last play's
+      // part for the runners (or the inning's line once the side is retired).
+      if (b->side_retired)
+        ImGui::Text("End of inning %d: inning %d next, bases empty", b->inning, b->inning + 1);
+      else
+        ImGui::Text("Inning %d, %d %s, %s, count %d-%d", b->inning, b->outs, b->outs == 1 ? "out" : "outs",
+                    runners_text(b->bases).c_str(), c.count().balls, c.count().strikes);
+      std::string line;
+      for (const int r : b->runs_by_inning) {
+        if (!line.empty()) line += ' ';
+        line += std::to_string(r);
+      }
+      ImGui::Text("Runs %d (by inning %s), hits %d, left on base %d", b->runs(), line.c_str(), b->hits, b->left_on_base);
+      if (!b->note.empty()) ImGui::TextWrapped("%s%s", b->side_retired ? "" : "Last play: ", b->note.c_str());
+    }
     const int in_play = a.outs - a.strikeouts;
     ImGui::Text("PA %d: %d H (%d HR), %d K, %d BB, %d HBP, %d %s in play", a.pa, a.hits, a.home_runs, a.strikeouts, a.walks,
                 a.hit_by_pitch, in_play, in_play == 1 ? "out" : "outs");
@@ -107,7 +122,7 @@ float draw_stats(const BattingCage& c, int w, int h) {
   ImGui::Text("Swing: %s, %s-handed", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right");
   ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height");
   ImGui::TextDisabled("C: power/contact  L: batter's side");
-  ImGui::TextDisabled("B: the pro swings  A: live at-bat / batting practice");
+  ImGui::TextDisabled("B: the pro swings  A: live game / batting practice");
   ImGui::TextDisabled("Esc: pause  Tab: next mode");
   ImGui::Separator();
   // Contact counts fouls (a foul is contact); the batted-ball figures are Statcast's batted-ball
@@ -198,6 +213,15 @@ float draw_stats(const BattingCage& c, int w, int h) {
   constexpr double kBaseLine = 27.43 / 1.41421356237;  // m along x and z from home to first
   dl->AddQuad(home, px(Vec3(kBaseLine, 0, kBaseLine)), px(Vec3(2.0 * kBaseLine, 0, 0)), px(Vec3(kBaseLine, 0, -kBaseLine)),
               IM_COL32(190, 150, 100, 255), 1.5f);
+  // A live game's runners: a base with a man on it filled.
+  if (const LiveInning::Board* b = c.board(); b && !b->side_retired)
+    for (int base = 1; base <= 3; ++base) {
+      const ImVec2 at = px(base_position(base));
+      const bool on = b->bases[static_cast<std::size_t>(base - 1)] >= 0;
+      const ImVec2 q[4] = {ImVec2(at.x, at.y - 5), ImVec2(at.x + 5, at.y), ImVec2(at.x, at.y + 5), ImVec2(at.x - 5, at.y)};
+      if (on) dl->AddConvexPolyFilled(q, 4, IM_COL32(250, 220, 60, 255));
+      else dl->AddPolyline(q, 4, IM_COL32(240, 240, 240, 255), ImDrawFlags_Closed, 1.0f);
+    }
   for (std::size_t i = 0; i < c.swings_told(); ++i) {
     const SwingRecord& s = c.swings()[i];
     if (!s.result.contact) continue;

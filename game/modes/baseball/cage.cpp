@@ -50,6 +50,7 @@ BattingCage::BattingCage(const Assets& assets, std::uint64_t seed)
       rng_(seed),
       bot_(assets, batter_skill("pro"), 5),
       pitcher_(league_average_pitcher(types_), seed ^ 0x9E3779B97F4A7C15ULL) {
+  seed_ = seed;
   call_ = derby_pitch(types_, rng_);
 }
 
@@ -79,6 +80,10 @@ void BattingCage::start_record() {
   told_ = true;
   stage_ = Stage::Ready;
   bot_armed_ = false;
+  // Live, the at-bats are a game from its first inning.
+  if (live_) game_.emplace(assets_, seed_);
+  else game_.reset();
+  board_before_ = LiveInning::Board{};
 }
 
 void BattingCage::count_pitch(PitchResult r) {
@@ -94,6 +99,19 @@ void BattingCage::count_pitch(PitchResult r) {
     return;
   }
   ++at_bats_.pa;
+  // The game's part: the runners, the outs, the runs (the plate appearance's last pitch, with
+  // its swing for a ball in play).
+  if (game_) {
+    PitchRecord last;
+    last.call = r;
+    last.swung = r == PitchResult::InPlay || r == PitchResult::SwingingStrike || r == PitchResult::FoulTip;
+    if (r == PitchResult::InPlay) last.result = last_.result;
+    game_->end_plate_appearance(end == PlateEnd::Strikeout    ? "strikeout"
+                                : end == PlateEnd::Walk       ? "walk"
+                                : end == PlateEnd::HitByPitch ? "hit_by_pitch"
+                                                              : to_string(last_.result.outcome),
+                                last);
+  }
   switch (end) {
     case PlateEnd::Strikeout:
       ++at_bats_.strikeouts;
@@ -181,6 +199,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   swings_.push_back(last_);
   carries_as_played_.push_back(played_.summary.carry_m);
   at_bats_before_ = at_bats_;
+  if (game_) board_before_ = game_->board();
   told_ = !last_.result.contact;
   char text[160];
   if (last_.result.contact) {
@@ -237,13 +256,13 @@ void BattingCage::apply(const Intent& in) {
     case IntentKind::TogglePower: power_ = !power_; break;
     case IntentKind::ToggleSide: lefty_ = !lefty_; break;
     case IntentKind::ToggleLive:
-      // Between pitches: batting practice, or a live at-bat from 0-0.
+      // Between pitches: batting practice, or a live game from its first inning at 0-0.
       if (stage_ == Stage::Pitching) break;
       live_ = !live_;
       // Each starts its own record: practice swings are not the at-bats' (and the other's
       // last pitch is not this one's).
       start_record();
-      call_text_ = live_ ? "Live at-bat against the league's pitcher" : "Batting practice";
+      call_text_ = live_ ? "Live game against the league's pitcher: you bat through the order" : "Batting practice";
       break;
     case IntentKind::Restart:
       // A fresh session: the record cleared, the next pitch on call.

@@ -1,15 +1,18 @@
 // The batting cage as a headless model (DESIGN §1, §9): batting-practice pitches on call, or
-// live at-bats against the league's pitcher (his arsenal and plan by count, balls, strikes,
-// fouls, walks, strikeouts, hit-by-pitch),
+// a live game against the league's pitcher (his arsenal and plan by count, balls, strikes,
+// fouls, walks, strikeouts, hit-by-pitch; the innings, outs, runners and runs: live_inning.hpp),
 // the swing judged from the moment its key went down against the pitch's arrival, the bat's
 // height, power or contact, the batter's side, the pro bot on request (B: at the pitch on its
 // way, or at the next one he calls for), and the session's record. A batted ball's outcome
 // is told when it comes down; while it flies, its launch. The window's view draws it; the tests drive it with scripted intents.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "game/modes/baseball/live_inning.hpp"
 #include "game/modes/baseball/pitcher.hpp"
 #include "game/modes/baseball/session.hpp"
 #include "game/modes/intent.hpp"
@@ -86,6 +89,12 @@ class BattingCage {
   };
   /// As the player has been told them: a ball in play counts from its call.
   const AtBats& at_bats() const { return told_ ? at_bats_ : at_bats_before_; }
+  /// Live: the game's scoreboard (innings, outs, runners, runs) as told, the ball in the air
+  /// not yet on it; none in batting practice.
+  const LiveInning::Board* board() const {
+    if (!game_) return nullptr;
+    return told_ ? &game_->board() : &board_before_;
+  }
 
  private:
   void apply(const Intent& in);
@@ -128,6 +137,9 @@ class BattingCage {
   bool swung_too_soon_ = false;
   SwingInput bot_plan_;
   bool live_ = false;
+  std::uint64_t seed_ = 0;  ///< the session's: a live game's teams and throws draw from it
+  std::optional<LiveInning> game_;  ///< live: the innings the at-bats make
+  LiveInning::Board board_before_;
   Pitcher pitcher_;
   Count count_;
   AtBats at_bats_;

@@ -1,0 +1,79 @@
+// The live game's scoreboard: walks force the runners round (Rule 5.05(b)(1)), three outs
+// retire the side and leave the runners on, the next inning opens with the bases empty, and a
+// ball in play moves the runners as a game's half-inning does.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "game/modes/baseball/cage.hpp"
+#include "game/modes/baseball/live_inning.hpp"
+#include "support/intent_at.hpp"
+#include "support/test_assets.hpp"
+
+using namespace sweetspot;
+using test::at;
+
+TEST_CASE("live game: four walks force in a run, three strikeouts retire the side, the next inning starts empty",
+          "[modes][baseball]") {
+  LiveInning g(test::assets(), 5);
+  PitchRecord ball;
+  ball.call = PitchResult::Ball;
+  PitchRecord strike;
+  strike.call = PitchResult::CalledStrike;
+  for (int k = 0; k < 3; ++k) g.end_plate_appearance("walk", ball);
+  CHECK(runners_text(g.board().bases) == "bases loaded");
+  CHECK(g.board().runs() == 0);
+  g.end_plate_appearance("walk", ball);
+  CHECK(g.board().runs() == 1);
+  CHECK(g.board().note == "1 run scores");
+  CHECK(runners_text(g.board().bases) == "bases loaded");
+  for (int k = 0; k < 2; ++k) g.end_plate_appearance("strikeout", strike);
+  CHECK(g.board().outs == 2);
+  CHECK_FALSE(g.board().side_retired);
+  g.end_plate_appearance("strikeout", strike);
+  CHECK(g.board().side_retired);
+  CHECK(g.board().left_on_base == 3);
+  CHECK(g.board().note == "Side retired: 1 run, 0 hits, 3 left on base");
+  // The next plate appearance opens inning 2: the bases empty, the line score a column on.
+  g.end_plate_appearance("hit_by_pitch", ball);
+  CHECK(g.board().inning == 2);
+  CHECK(g.board().outs == 0);
+  CHECK(runners_text(g.board().bases) == "runner on 1st");
+  CHECK(g.board().runs_by_inning == std::vector<int>{1, 0});
+}
+
+TEST_CASE("live game in the cage: the pro's balls in play move the runners, the score adds up", "[modes][baseball]") {
+  BattingCage cage(test::assets(), 17);
+  cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);
+  REQUIRE(cage.live());
+  REQUIRE(cage.board() != nullptr);
+  double now = 1.0;
+  int innings_done = 0, hits = 0, home_runs = 0;
+  while (innings_done < 3 && now < 4000.0) {
+    cage.update({at(IntentKind::BotSwings, now)}, now);
+    // Until the pitch is called and any ball in play has come down.
+    for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
+                                                      cage.stage() == BattingCage::Stage::Batted);)
+      cage.update({}, now += 0.05);
+    now += 0.5;
+    const LiveInning::Board& b = *cage.board();
+    CHECK(b.outs <= 3);
+    CHECK(b.hits == cage.at_bats().hits);
+    CHECK(b.runs_by_inning.size() == static_cast<std::size_t>(b.inning));
+    if (b.side_retired && b.inning > innings_done) {
+      innings_done = b.inning;
+      CHECK(b.outs == 3);
+    }
+    hits = b.hits;
+    home_runs = cage.at_bats().home_runs;
+  }
+  CHECK(innings_done == 3);
+  // Every run is a batter who reached (a hit, a walk, a hit-by-pitch, an error) and came round;
+  // the others were left on or put out on the bases.
+  const LiveInning::Board& b = *cage.board();
+  const int reached = cage.at_bats().pa - cage.at_bats().outs;
+  CHECK(b.runs() <= reached);
+  CHECK(b.runs() + b.left_on_base <= reached);
+  CHECK(b.runs() >= home_runs);
+  CHECK(hits > 0);
+}

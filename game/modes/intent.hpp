@@ -30,6 +30,7 @@ enum class IntentKind : unsigned char {
   ToggleSide,   ///< batting: right- / left-handed
   BotSwings,    ///< batting: the pro bot swings at this pitch
   ToggleLive,   ///< batting: batting practice / a live game against the league's pitcher
+  ToggleTiming, ///< batting: the bat's height set by hand (Up/Down), or read for you (timing only)
   Replay,       ///< the last shot again from its start
   Edit,         ///< Lab: set parameter `param` to `value` (SI)
   Choose,       ///< Lab: set choice `param` to `text` (a scenario, club, bat, model)

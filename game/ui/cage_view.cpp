@@ -28,7 +28,8 @@ Intents cage_intents(const std::vector<KeyPress>& keys) {
                                   {GLFW_KEY_C, IntentKind::TogglePower},
                                   {GLFW_KEY_L, IntentKind::ToggleSide},
                                   {GLFW_KEY_B, IntentKind::BotSwings},
-                                  {GLFW_KEY_A, IntentKind::ToggleLive}});
+                                  {GLFW_KEY_A, IntentKind::ToggleLive},
+                                  {GLFW_KEY_T, IntentKind::ToggleTiming}});
 }
 
 namespace {
@@ -72,7 +73,9 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
       dl->AddCircle(*centre, rad, col, 20, 2.5f);
     }
   }
-  // The bat's height: where the swing will meet the ball.
+  // The bat's height: where the swing will meet the ball (timing only: wherever the pitch is,
+  // so no line).
+  if (c.timing_only()) return;
   const auto l = pt(c.bat_height(), -half - 0.25), r = pt(c.bat_height(), half + 0.25);
   if (l && r) dl->AddLine(*l, *r, c.power() ? IM_COL32(255, 170, 40, 230) : IM_COL32(80, 200, 255, 230), 3.0f);
 }
@@ -108,6 +111,7 @@ float draw_stats(const BattingCage& c, int w, int h) {
   }
   if (c.stage() == Stage::Ready) {
     ImGui::TextUnformatted("Pitch: P or Space calls for one");
+    if (!c.timing_only() && c.swings().empty()) ImGui::TextUnformatted("New to it? T: just time the swing, the bat finds the height");
   } else if (c.stage() == Stage::Pitching) {
     ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
   } else {
@@ -119,8 +123,10 @@ float draw_stats(const BattingCage& c, int w, int h) {
                 mps_to_mph(c.call().type.speed), 12.0 * std::abs(m_to_ft(m.horizontal_break)), arm_side ? "arm side" : "glove side",
                 12.0 * std::abs(m_to_ft(m.induced_vertical_break)), m.induced_vertical_break >= 0.0 ? "rise" : "drop");
   }
-  ImGui::Text("Swing: %s, %s-handed", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right");
-  ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height");
+  ImGui::Text("Swing: %s, %s-handed, %s", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right",
+              c.timing_only() ? "timing only" : "bat height by hand");
+  if (c.timing_only()) ImGui::TextDisabled("P: pitch  Space: swing  T: set the bat's height yourself");
+  else ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height  T: timing only");
   ImGui::TextDisabled("C: power/contact  L: batter's side");
   ImGui::TextDisabled("B: the pro swings  A: live game / batting practice");
   ImGui::TextDisabled("Esc: pause  Tab: next mode");

@@ -287,23 +287,29 @@ std::vector<std::pair<Vec3, Eigen::Vector3f>> tee_markers(const CourseHole& h, c
 
 void GolfView::ensure_scene(const std::string& mesh) {
   const GolfRound& r = play_->round();
-  if (r.finished()) return;
+  // A stroke on show is on the hole it was struck on (hole_shown): the putt that holes out
+  // has already moved the round to the next tee, whose pin and tee it must not take.
+  const bool stroke = play_->after_stroke();
+  if (r.finished() && !stroke) return;
+  const std::size_t shown = play_->hole_shown();
+  const CourseHole& hole = play_->group().course().holes.at(shown);
   const EquipmentCatalog& eq = assets_.equipment();
-  const bool tee = r.teed() && r.lie() == "tee";
-  if (scene_ && scene_world_ == r.hole().world && scene_mesh_ == mesh && scene_tee_ == tee && scene_imperial_ == units_.imperial)
+  const bool tee = stroke ? play_->last_record().lie == "tee" : r.teed() && r.lie() == "tee";
+  if (scene_ && scene_hole_ == shown && scene_world_ == hole.world && scene_mesh_ == mesh && scene_tee_ == tee &&
+      scene_imperial_ == units_.imperial)
     return;
   ShotSceneInput in;
   in.assets = &assets_;
-  in.world = r.hole().world;
+  in.world = hole.world;
   in.distance_unit = units_.imperial ? "yd" : "m";
   in.ball_radius = eq.ball("tour").radius;
   in.tee = tee;
   in.impactor_mesh = mesh;
-  in.flag = r.hole().pin;
-  if (tee) in.tee_markers = tee_markers(r.hole(), play_->group().course().setup.tees);
+  in.flag = hole.pin;
+  if (tee) in.tee_markers = tee_markers(hole, play_->group().course().setup.tees);
   scene_ = std::make_unique<ShotScene>(in);
-  scene_hole_ = r.hole_index();
-  scene_world_ = r.hole().world;
+  scene_hole_ = shown;
+  scene_world_ = hole.world;
   scene_mesh_ = mesh;
   scene_tee_ = tee;
   scene_imperial_ = units_.imperial;
@@ -628,7 +634,9 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     renderer.draw(view, cam);
     renderer.blit_to(0, w, h);
     const GolfRound& r = play_->round();
-    if (!r.finished() && !over) draw_cup_and_flag(cam, r.hole().pin, w, h);
+    // The cup of the hole on show: a holing putt's until its ball has dropped and settled.
+    if (flying || settling) draw_cup_and_flag(cam, play_->group().course().holes.at(play_->hole_shown()).pin, w, h);
+    else if (!r.finished() && !over) draw_cup_and_flag(cam, r.hole().pin, w, h);
     if (addressing) draw_aim(*play_, cam, w, h);
     if (addressing && camera_ == 3) {
       const WorldAsset* world = r.hole().world;

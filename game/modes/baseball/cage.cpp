@@ -49,7 +49,8 @@ BattingCage::BattingCage(const Assets& assets, std::uint64_t seed)
       types_(load_pitch_types(assets)),
       rng_(seed),
       bot_(assets, batter_skill("pro"), 5),
-      pitcher_(league_average_pitcher(types_), seed ^ 0x9E3779B97F4A7C15ULL) {
+      pitcher_(league_average_pitcher(types_), seed ^ 0x9E3779B97F4A7C15ULL),
+      reader_(assets, batter_skill("pro"), seed ^ 0x5EED0F7EA0E5ULL) {
   seed_ = seed;
   call_ = derby_pitch(types_, rng_);
 }
@@ -255,6 +256,7 @@ void BattingCage::apply(const Intent& in) {
       break;
     case IntentKind::TogglePower: power_ = !power_; break;
     case IntentKind::ToggleSide: lefty_ = !lefty_; break;
+    case IntentKind::ToggleTiming: timing_only_ = !timing_only_; break;
     case IntentKind::ToggleLive:
       // Between pitches: batting practice, or a live game from its first inning at 0-0.
       if (stage_ == Stage::Pitching) break;
@@ -291,7 +293,9 @@ void BattingCage::apply(const Intent& in) {
         // player's own time (the pitch plays slowed: 100 ms of pitch time took him 200).
         const double timing_ms = 1000.0 * (pitch_clock(t) - pitch_.flight_time);
         s.timing_ms = std::clamp(timing_ms, SwingInput::kTiming.min, SwingInput::kTiming.max);
-        const double undercut = pitch_.plate.y() - bat_height_;
+        // Timing only: the pro's read of the pitch's height (a fly ball's in practice, a line
+        // drive's in a game), with his errors; else where the player set the bat.
+        const double undercut = timing_only_ ? reader_.plan(pitch_, !live_, lefty_).undercut : pitch_.plate.y() - bat_height_;
         s.undercut = std::clamp(undercut, SwingInput::kUndercut.min, SwingInput::kUndercut.max);
         s.power = power_;
         s.left_handed = lefty_;

@@ -69,6 +69,10 @@ class BattingCage {
   double swung_at() const { return swung_at_; }
   double bat_height() const { return bat_height_; }  ///< m above the ground where the bat meets the ball's path
   bool power() const { return power_; }
+  /// Timing only: the bat meets the pitch at the height a pro hitter reads it at (his read's
+  /// own errors included), and the player's key is the swing's timing alone. Off: Up/Down set
+  /// the height.
+  bool timing_only() const { return timing_only_; }
   bool left_handed() const { return lefty_; }
   const SwingRecord& last() const { return last_; }
   /// The last batted ball's path as the play went (as_played): a catch ends it in the glove.
@@ -136,11 +140,13 @@ class BattingCage {
   /// Space was pressed in this pitch's windup (a swing at nothing): its call says so.
   bool swung_too_soon_ = false;
   SwingInput bot_plan_;
+  bool timing_only_ = false;
   bool live_ = false;
   std::uint64_t seed_ = 0;  ///< the session's: a live game's teams and throws draw from it
   std::optional<LiveInning> game_;  ///< live: the innings the at-bats make
   LiveInning::Board board_before_;
   Pitcher pitcher_;
+  BotBatter reader_;  ///< the pro's eye that sets the bat's height when timing_only_
   Count count_;
   AtBats at_bats_;
 };

@@ -285,3 +285,26 @@ TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where i
   CHECK(grounder);
   CHECK(fly);
 }
+
+TEST_CASE("timing only: the bat finds the pitch's height as a pro reads it, the key times the swing", "[modes][baseball]") {
+  // The bat set 15 cm high: swung on time by hand it passes over nearly every pitch; with T
+  // the same keys meet nearly every one.
+  int met[2] = {0, 0};
+  for (const bool timing_only : {false, true}) {
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+      BattingCage cage(test::assets(), seed);
+      for (int k = 0; k < 6; ++k) cage.update({at(IntentKind::BatUp, 0.1 + 0.01 * k)}, 0.1 + 0.01 * k);
+      if (timing_only) cage.update({at(IntentKind::ToggleTiming, 0.2)}, 0.2);
+      REQUIRE(cage.timing_only() == timing_only);
+      cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
+      const double on_time = 1.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
+      double now = 1.0;
+      while (now + 0.02 < on_time) cage.update({}, now += 0.02);
+      cage.update({at(IntentKind::Swing, on_time)}, on_time);
+      REQUIRE(cage.swings().size() == 1);
+      met[timing_only] += cage.swings().back().result.contact;
+    }
+  }
+  CHECK(met[0] <= 2);
+  CHECK(met[1] >= 8);
+}

@@ -349,7 +349,7 @@ std::string group_table(const GolfGroup& g) {
   if (s.format == GolfFormat::Skins && s.skins->unwon > 0) out += std::to_string(s.skins->unwon) + (s.skins->unwon == 1 ? " skin" : " skins") + " carried, unwon\n";
   if (s.format == GolfFormat::Match) out += "result: " + s.match->result + "\n";
   else if (s.holes > 0) out += leaders_text(g, s) + "\n";
-  out += std::string("(* a stroke received; putts in brackets; 1p a penalty stroke; PU picked up") +
+  out += std::string("(SI the stroke index, the hole's rank by difficulty; * a stroke received; putts in brackets; 1p a penalty stroke; PU picked up") +
          (s.format == GolfFormat::Match ? "; C a hole conceded, - one left unfinished: no score, in no total" : "") + ")\n";
   return out;
 }

@@ -302,10 +302,13 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
 
 std::string full_swing_caption(const std::optional<MeterClock>& meter, double now, const std::string& before) {
   if (!meter) return before;
-  char label[96];
+  char label[128];
   if (meter->phase() == MeterClock::Phase::Downswing)
     // The power is set: the marker on its way back is the accuracy's, not a power.
-    std::snprintf(label, sizeof label, "power %.0f %%, now the accuracy: Space at the mark   Esc: cancel", 100.0 * meter->power());
+    // It comes back 1.5x as fast as it went up (MeterClock::kDownFactor): said, or the first
+    // accuracy click of a newcomer's round comes late.
+    std::snprintf(label, sizeof label, "power %.0f %%, accuracy next: Space at the mark, it comes back faster   Esc: cancel",
+                  100.0 * meter->power());
   else
     std::snprintf(label, sizeof label, "power %.0f %%   Esc: cancel", 100.0 * meter->position(now));
   return label;
@@ -367,6 +370,8 @@ void draw_wind(const GolfPlay& play, const GolfUnits& units, int w) {
                           ImVec2(tip.x - 10 * dx + 6 * dy, tip.y - 10 * dy - 6 * dx), IM_COL32(120, 200, 255, 255));
     std::snprintf(label, sizeof label, "wind %s", units.speed(wind.speed).c_str());
   }
+  // A dark shadow under it: the label stands over trees and sky alike.
+  dl->AddText(ImVec2(c.x - 29, c.y + 39), IM_COL32(0, 0, 0, 220), label);
   dl->AddText(ImVec2(c.x - 30, c.y + 38), IM_COL32(255, 255, 255, 255), label);
 }
 
@@ -487,7 +492,7 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
       conceded = conceded || c.conceded;
       penalty = penalty || c.penalties > 0;
     }
-  std::string key = "putts in brackets";
+  std::string key = "SI the stroke index (the hole's rank by difficulty, where handicap strokes fall); putts in brackets";
   if (received) key = "* a stroke received (handicap); " + key;
   if (penalty) key += "; 1p a penalty stroke";
   if (picked_up) key += "; PU picked up";

@@ -15,6 +15,20 @@ namespace {
 constexpr std::string_view kSwingingStrike = "Swinging strike";
 }  // namespace
 
+namespace {
+
+// A miss's distance in a batter's units (the cage says feet, mph and inches): tenths under an
+// inch, never "0.0 in"; whole inches past it.
+std::string inches(double m) {
+  const double in = m / 0.0254;
+  char text[24];
+  if (in < 0.95) std::snprintf(text, sizeof text, "%.1f in", std::max(0.1, std::round(10.0 * in) / 10.0));
+  else std::snprintf(text, sizeof text, "%.0f in", in);
+  return text;
+}
+
+}  // namespace
+
 std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m) {
   // Why the bat missed: early or late, the ball past the end of the bat; or above or below it
   // where they crossed (off time the crossing moves: early over the ball, late under it).
@@ -25,7 +39,7 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m) {
   // Past the end and off height too (a crossing there has a height; a bat through the zone
   // crossed nowhere): the height said as well, so the next swing mends both.
   char height[48] = "";
-  if (miss >= 0.01) std::snprintf(height, sizeof height, ", and %.0f cm %s it", 100.0 * miss, under > 0.0 ? "under" : "over");
+  if (miss >= 0.01) std::snprintf(height, sizeof height, ", and %s %s it", inches(miss).c_str(), under > 0.0 ? "under" : "over");
   if (r.through)
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", when, std::abs(timing_ms),
                   timing_ms >= 0 ? "not around yet" : "already through the zone");
@@ -34,11 +48,8 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m) {
     // still coming round (late) or already round past the ball (early), over a middle pitch too.
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat (%s)%s", when, std::abs(timing_ms),
                   timing_ms >= 0 ? "its end not yet round to the ball" : "its end already round past the ball", height);
-  else if (miss > 0.0 && miss < 0.0095)  // under a centimetre it reads in millimetres, never "0 cm"
-    std::snprintf(text, sizeof text, "Swinging strike: the bat passed %.0f mm %s the ball", std::max(1.0, std::round(1000.0 * miss)),
-                  under > 0.0 ? "under" : "over");
   else if (miss > 0.0)
-    std::snprintf(text, sizeof text, "Swinging strike: the bat passed %.0f cm %s the ball", 100.0 * miss, under > 0.0 ? "under" : "over");
+    std::snprintf(text, sizeof text, "Swinging strike: the bat passed %s %s the ball", inches(miss).c_str(), under > 0.0 ? "under" : "over");
   else
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms", when, std::abs(timing_ms));
   return text;

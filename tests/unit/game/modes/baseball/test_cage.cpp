@@ -144,25 +144,25 @@ TEST_CASE("B between pitches calls for one and the pro swings at it, at the same
   CHECK(timings[0] == timings[1]);
 }
 
-TEST_CASE("a miss is called in a hitter's words, never '0 cm'", "[modes][baseball]") {
+TEST_CASE("a miss is called in a hitter's words and inches, never '0 in'", "[modes][baseball]") {
   SwingResult r;
   r.crossing_undercut = 0.066 + 0.004;  // the bat 4 mm under the ball's edge
-  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 4 mm under the ball");
+  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 0.2 in under the ball");
   r.crossing_undercut = -(0.066 + 0.0002);
-  CHECK(miss_call(r, -3.0) == "Swinging strike: the bat passed 1 mm over the ball");
+  CHECK(miss_call(r, -3.0) == "Swinging strike: the bat passed 0.1 in over the ball");
   r.crossing_undercut = 0.066 + 0.031;
-  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 3 cm under the ball");
+  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 1 in under the ball");
   // The bat set 14 cm under the ball, past the 8 cm the swing's physics takes: the call gives
-  // the 14 cm (less the reach), not the 8 cm the physics swung at.
+  // the 14 cm (less the reach: 7.4 cm, 3 in), not the 8 cm the physics swung at.
   r.crossing_undercut = 0.08;
-  CHECK(miss_call(r, 3.0, 0.06) == "Swinging strike: the bat passed 7 cm under the ball");
+  CHECK(miss_call(r, 3.0, 0.06) == "Swinging strike: the bat passed 3 in under the ball");
   r.crossing_undercut = -0.08;
-  CHECK(miss_call(r, 3.0, -0.10) == "Swinging strike: the bat passed 11 cm over the ball");
+  CHECK(miss_call(r, 3.0, -0.10) == "Swinging strike: the bat passed 4 in over the ball");
   // Past the end and over the ball as well: both said.
   r.crossing_undercut = -0.12;
   r.past_end = true;
   CHECK(miss_call(r, -20.0) ==
-        "Swinging strike: early by 20 ms, past the end of the bat (its end already round past the ball), and 5 cm over it");
+        "Swinging strike: early by 20 ms, past the end of the bat (its end already round past the ball), and 2 in over it");
   r.crossing_undercut = 0.0;
   CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, past the end of the bat (its end already round past the ball)");
   CHECK(miss_call(r, 17.0) == "Swinging strike: late by 17 ms, past the end of the bat (its end not yet round to the ball)");

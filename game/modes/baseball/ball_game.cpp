@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 
-#include "game/content/resolve.hpp"
 #include "game/modes/baseball/aim.hpp"
 #include "game/modes/baseball/base_running.hpp"
 #include "physics/error.hpp"
@@ -15,20 +14,6 @@ namespace {
 
 constexpr double kBall = 0.0369;       // m, the baseball's radius (assets' "mlb")
 constexpr int kMaxExtra = 40;          // extra innings before a game still tied is stopped (MLB's longest: 26 innings)
-
-struct Env {
-  const AeroModel* aero;
-  Environment environment;
-};
-
-Env air(const Assets& assets) {
-  ShotSpec spec;
-  spec.sport = "baseball";
-  LaunchStrike ls;
-  spec.strike = ls;
-  const ResolvedShot r = resolve(spec, assets);
-  return {r.aero, r.spec.environment};
-}
 
 }  // namespace
 
@@ -193,7 +178,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
   std::vector<ScoreAfter> score_log;  // for the decisions
   GameSituation s;
   s.scheduled = o.innings;
-  const Env env = air(assets);
+  const HalfInning half_start = empty_half_inning(assets);
   Rng throws(o.seed * 0x9E3779B97F4A7C15ULL + 0x7468726F77ULL);  // the throws as they come (base_running.hpp)
   for (s.inning = 1; s.inning <= o.innings + kMaxExtra; ++s.inning) {
     for (int half = 0; half < 2; ++half) {
@@ -203,7 +188,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
       Team& bat = teams[half];
       Team& field = teams[1 - half];
       TeamBox& fbox = box[1 - half];
-      HalfInning h{env.aero, env.environment, {-1, -1, -1}, 0};
+      HalfInning h = half_start;
       // Runners whose runs are unearned (Rule 9.16): a batter who reached on an error, and
       // extra innings' placed runner.
       std::array<bool, 9> unearned{};

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include "game/content/resolve.hpp"
+
 namespace sweetspot {
 namespace {
 
@@ -269,6 +271,17 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
     outs_made = 1;
   }
   bases = nb;
+}
+
+HalfInning empty_half_inning(const Assets& assets) {
+  ShotSpec spec;
+  spec.sport = "baseball";
+  spec.strike = LaunchStrike{};
+  const ResolvedShot r = resolve(spec, assets);
+  HalfInning h;
+  h.aero = r.aero;
+  h.environment = r.spec.environment;
+  return h;
 }
 
 }  // namespace sweetspot

@@ -32,4 +32,8 @@ struct HalfInning {
                int& outs_made, std::string& description);
 };
 
+/// A half-inning's start: bases empty, no outs, in the sport's air (assets' baseball
+/// defaults), which the throws fly through.
+HalfInning empty_half_inning(const Assets& assets);
+
 }  // namespace sweetspot

@@ -13,9 +13,6 @@ namespace sweetspot {
 namespace {
 /// How miss_call begins every miss; strike three swinging keeps the rest of its words.
 constexpr std::string_view kSwingingStrike = "Swinging strike";
-}  // namespace
-
-namespace {
 
 // A miss's distance in a batter's units (the cage says feet, mph and inches): tenths under an
 // inch, never "0.0 in"; whole inches past it.

@@ -3,24 +3,11 @@
 #include <algorithm>
 #include <numeric>
 
-#include "game/content/resolve.hpp"
 #include "game/modes/baseball/fielding.hpp"
 
 namespace sweetspot {
 
 namespace {
-
-// The air the cage's balls fly in (the sport's defaults): the throws fly in it too.
-HalfInning empty_half(const Assets& assets) {
-  ShotSpec spec;
-  spec.sport = "baseball";
-  spec.strike = LaunchStrike{};
-  const ResolvedShot r = resolve(spec, assets);
-  HalfInning h;
-  h.aero = r.aero;
-  h.environment = r.spec.environment;
-  return h;
-}
 
 int runners_on(const Bases& b) { return static_cast<int>(std::count_if(b.begin(), b.end(), [](int r) { return r >= 0; })); }
 
@@ -33,7 +20,7 @@ int LiveInning::Board::runs() const { return std::accumulate(runs_by_inning.begi
 LiveInning::LiveInning(const Assets& assets, std::uint64_t seed)
     : batting_(assets, "You", batter_skill("pro"), seed * 2 + 1),
       fielding_(assets, "League", batter_skill("pro"), seed * 2 + 2),
-      half_(empty_half(assets)),
+      half_(empty_half_inning(assets)),
       throws_(seed * 0x9E3779B97F4A7C15ULL + 0x7468726F77ULL) {
   // The cage's balls are fielded by the league's defence (field_ball): its runners must be
   // thrown at by the same fielders.
@@ -82,8 +69,7 @@ void LiveInning::end_plate_appearance(const std::string& result, const PitchReco
     if (!note.empty()) note += between;
     note += words;
   };
-  // A home run's runs are its own call; the others' are said.
-  if (runs > 0 && result != "home_run") add(", ", plural(runs, "run scores", "runs score"));
+  if (runs > 0) add(", ", plural(runs, "run scores", "runs score"));
   if (half_.outs >= 3) {
     const int left = runners_on(half_.bases);
     board_.left_on_base += left;

@@ -330,7 +330,9 @@ std::string group_table(const GolfGroup& g) {
   auto sum_row = [&](const char* label, int par, auto value) {
     std::snprintf(cell, sizeof cell, "%-8s %3s    ", label, par >= 0 ? std::to_string(par).c_str() : "");
     std::string line = cell;
-    for (std::size_t p = 0; p < n; ++p) line += "  " + pad(value(s.players[p]), 14);
+    // No hole scored yet (a match's first hole conceded): no sums, not zeros.
+    for (std::size_t p = 0; p < n; ++p)
+      line += "  " + pad(s.players[p].holes_scored == 0 && s.holes > 0 ? std::string("-") : value(s.players[p]), 14);
     out += line + "\n";
   };
   int par = 0;
@@ -339,7 +341,7 @@ std::string group_table(const GolfGroup& g) {
   sum_row("putts", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
   sum_row("fairways", -1, [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
   sum_row("greens", -1, [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(ps.greens); });
-  sum_row("to par", -1, [](const PlayerStanding& ps) { return ps.holes_scored > 0 ? to_par_text(ps.total_strokes - ps.total_par) : std::string("-"); });
+  sum_row("to par", -1, [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
   sum_row("net", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
   if (s.format == GolfFormat::Stableford)
     sum_row("points", -1, [](const PlayerStanding& ps) { return std::to_string(ps.total_points); });

@@ -95,12 +95,16 @@ float draw_stats(const BattingCage& c, int w, int h) {
       else
         ImGui::Text("Inning %d, %d %s, %s, count %d-%d", b->inning, b->outs, b->outs == 1 ? "out" : "outs",
                     runners_text(b->bases).c_str(), c.count().balls, c.count().strikes);
-      std::string line;
-      for (const int r : b->runs_by_inning) {
-        if (!line.empty()) line += ' ';
-        line += std::to_string(r);
+      ImGui::Text("Runs %d, hits %d, left on base %d", b->runs(), b->hits, b->left_on_base);
+      if (b->runs_by_inning.size() > 1) {
+        // The line score, an inning a column as a scoreboard shows it.
+        std::string line;
+        for (const int r : b->runs_by_inning) {
+          if (!line.empty()) line += " | ";
+          line += std::to_string(r);
+        }
+        ImGui::Text("Line score: %s", line.c_str());
       }
-      ImGui::Text("Runs %d (by inning %s), hits %d, left on base %d", b->runs(), line.c_str(), b->hits, b->left_on_base);
       if (!b->note.empty()) ImGui::TextWrapped("%s%s", b->side_retired ? "" : "Last play: ", b->note.c_str());
     }
     const int in_play = a.outs - a.strikeouts;

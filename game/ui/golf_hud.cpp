@@ -160,7 +160,11 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       char extra[48] = "";
       if (s.format == GolfFormat::Stableford) std::snprintf(extra, sizeof extra, "  %d pts", ps.total_points);
       if (s.format == GolfFormat::Skins) std::snprintf(extra, sizeof extra, "  %d skin%s", s.skins->skins[p], s.skins->skins[p] == 1 ? "" : "s");
-      ImGui::Text("%-14s %3d (%s)%s", g.players()[p].name.c_str(), ps.total_strokes, to_par_text(ps.total_strokes - ps.total_par).c_str(), extra);
+      if (ps.holes_scored == 0)  // a match's only hole so far conceded: no score to stand on
+        ImGui::Text("%-14s   -%s", g.players()[p].name.c_str(), extra);
+      else
+        ImGui::Text("%-14s %3d (%s)%s", g.players()[p].name.c_str(), ps.total_strokes, to_par_text(ps.total_strokes - ps.total_par).c_str(),
+                    extra);
     }
     if (s.match) ImGui::Text("Match: %s", s.match->holes.back().status.c_str());
   } else if (g.options().format == GolfFormat::Match) {
@@ -460,7 +464,9 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
       ImGui::TableNextColumn();
       for (std::size_t p = 0; p < n; ++p) {
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(cell(s.players[p]).c_str());
+        // No hole scored yet (a match's first hole conceded): no sums, not zeros.
+        const PlayerStanding& ps = s.players[p];
+        ImGui::TextUnformatted(ps.holes_scored == 0 && s.holes > 0 ? "-" : cell(ps).c_str());
       }
       if (s.match || s.skins) ImGui::TableNextColumn();
     };
@@ -469,7 +475,7 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
     sum_row("Putts", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_putts); });
     sum_row("Fairways", "", [](const PlayerStanding& ps) { return std::to_string(ps.fairways_hit) + "/" + std::to_string(ps.fairways); });
     sum_row("Greens", "", [&](const PlayerStanding& ps) { return std::to_string(ps.greens_in_regulation) + "/" + std::to_string(ps.greens); });
-    sum_row("To par", "", [](const PlayerStanding& ps) { return ps.holes_scored > 0 ? to_par_text(ps.total_strokes - ps.total_par) : std::string("-"); });
+    sum_row("To par", "", [](const PlayerStanding& ps) { return to_par_text(ps.total_strokes - ps.total_par); });
     sum_row("Net", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_net); });
     if (s.format == GolfFormat::Stableford)
       sum_row("Points", "", [](const PlayerStanding& ps) { return std::to_string(ps.total_points); });

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string_view>
 
+#include "game/modes/baseball/aim.hpp"
 #include "game/modes/baseball/figures.hpp"
 #include "game/modes/replay.hpp"
 #include "physics/units.hpp"
@@ -76,6 +77,9 @@ void BattingCage::next_pitch(double t) {
   call_text_.clear();
   outcome_text_.clear();
   bot_armed_ = false;
+  pro_takes_ = false;
+  // A new batter's first pitch: the game's next inning opens here after a third out.
+  if (game_ && count_.balls == 0 && count_.strikes == 0) game_->next_batter();
 }
 
 void BattingCage::start_record() {
@@ -177,6 +181,7 @@ void BattingCage::advance(double t) {
                                                         : PitchResult::Ball);
     // His Space in the windup swung at nothing: said beside the call it became.
     if (swung_too_soon_) call_text_ += "   (your swing came too soon: before the pitch)";
+    if (pro_takes_) call_text_ = "The pro takes: " + call_text_;
   }
   if (stage_ == Stage::Batted) {
     // The call comes when the play is made: a fielder has the ball (a catch, a hit fielded
@@ -316,10 +321,23 @@ void BattingCage::apply(const Intent& in) {
     case IntentKind::BotSwings:
       // Between pitches B calls for one; the pro swings at it when it reaches him (advance),
       // unless it is already past him.
-      if (bot_armed_) break;
+      if (bot_armed_ || (pro_takes_ && stage_ == Stage::Pitching)) break;  // he has this pitch already
       if (stage_ != Stage::Pitching) next_pitch(t);
       else if (pitch_clock(t) > pitch_.flight_time) break;
-      bot_plan_ = bot_.plan(pitch_, true, lefty_);
+      if (live_) {
+        // Against live pitching he reads the pitch and may take it, as a game's hitter does.
+        if (!report_) report_ = scout(assets_, pitcher_.profile());
+        std::optional<Hitter>& h = live_pro_[lefty_ ? 1 : 0];
+        if (!h) h.emplace(batter_skill("pro"), lefty_, seed_ * 31 + (lefty_ ? 2 : 1), aim_inside(assets_, batter_skill("pro"), kBat));
+        const PitchRead read = h->read(pitch_, call_.type.type, *report_, count_);
+        if (!h->swings(read, count_)) {
+          pro_takes_ = true;
+          break;
+        }
+        bot_plan_ = h->swing(read, count_);
+      } else {
+        bot_plan_ = bot_.plan(pitch_, true, lefty_);
+      }
       bot_armed_ = true;
       break;
     default: break;

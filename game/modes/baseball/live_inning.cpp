@@ -27,16 +27,22 @@ LiveInning::LiveInning(const Assets& assets, std::uint64_t seed)
   fielding_.defense = league_defense();
 }
 
+void LiveInning::next_batter() {
+  board_.note.clear();
+  if (!board_.side_retired) return;
+  // The next inning: bases empty, no outs.
+  ++board_.inning;
+  board_.runs_by_inning.push_back(0);
+  board_.side_retired = false;
+  board_.outs = 0;
+  board_.bases = {-1, -1, -1};
+  half_.bases = {-1, -1, -1};
+  half_.outs = 0;
+  inning_hits_ = 0;
+}
+
 void LiveInning::end_plate_appearance(const std::string& result, const PitchRecord& last) {
-  if (board_.side_retired) {
-    // The next inning: bases empty, no outs.
-    ++board_.inning;
-    board_.runs_by_inning.push_back(0);
-    board_.side_retired = false;
-    half_.bases = {-1, -1, -1};
-    half_.outs = 0;
-    inning_hits_ = 0;
-  }
+  next_batter();  // a plate appearance ended without its first pitch told (the tests' scripts)
   PlateAppearance pa;
   pa.batter = batter_;
   pa.outs_before = half_.outs;

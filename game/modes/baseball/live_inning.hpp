@@ -25,13 +25,17 @@ class LiveInning {
     Bases bases{-1, -1, -1};        ///< the batting order's index of the runner on 1st, 2nd, 3rd; -1 empty
     std::vector<int> runs_by_inning{0};  ///< the line score, this inning last
     int hits = 0, left_on_base = 0;  ///< the game's
-    bool side_retired = false;       ///< the last plate appearance made the third out
+    bool side_retired = false;       ///< the last plate appearance made the third out; the next one's first pitch opens the next inning
     /// The last plate appearance's part for the runners in a scorer's words ("2 runs score",
     /// "runner out at 3rd"); with the side retired, the inning's line.
     std::string note;
     int runs() const;
   };
   const Board& board() const { return board_; }
+
+  /// The next plate appearance's first pitch: after a third out the next inning opens (the
+  /// bases empty, no outs), and the last play's note, read between batters, is cleared.
+  void next_batter();
 
   /// The plate appearance that just ended: `result` "strikeout", "walk", "hit_by_pitch" or a
   /// ball in play's BattedOutcome name ("out", "single", ..., "error"), `last` its last pitch

@@ -330,7 +330,8 @@ void GolfPlay::apply(const Intent& in) {
   const double t = in.time;
   if (in.kind != IntentKind::Concede && concede_asked_) {
     concede_asked_ = false;
-    if (in.kind != IntentKind::Swing) say("");  // the question answered no (a swing says its own)
+    // The question answered no (the key does its own work as well; a swing says its own).
+    if (in.kind != IntentKind::Swing) say("Hole not conceded: play on");
   }
   if (in.kind == IntentKind::Restart) {
     if (stage_ == Stage::RoundOver) new_round(t);

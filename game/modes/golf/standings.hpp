@@ -32,7 +32,6 @@ struct PlayerStanding {
   /// The card's total: the strokes, and over how many holes when some have no score (a
   /// match's conceded hole), so "5" does not stand against the par of two holes.
   std::string total_text(std::size_t holes) const {
-    if (holes_scored == 0 && holes > 0) return "-";
     std::string out = std::to_string(total_strokes);
     if (static_cast<std::size_t>(holes_scored) < holes)
       out += " in " + std::to_string(holes_scored) + (holes_scored == 1 ? " hole" : " holes");

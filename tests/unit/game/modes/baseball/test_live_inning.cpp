@@ -77,3 +77,31 @@ TEST_CASE("live game in the cage: the pro's balls in play move the runners, the 
   CHECK(b.runs() >= home_runs);
   CHECK(hits > 0);
 }
+
+TEST_CASE("live game: the pro bats against the league's pitcher as the game's hitters do, not as in batting practice",
+          "[modes][baseball]") {
+  // B in a live game: his read of each pitch, his take or swing, his errors against live
+  // pitching (hitter.hpp), so his line looks like a big-league hitter's (MLB 2024: AVG .243,
+  // K 22.6 %, HR 2.9 % of plate appearances), not batting practice's barrel after barrel.
+  BattingCage cage(test::assets(), 23);
+  cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);
+  double now = 1.0;
+  while (cage.at_bats().pa < 120 && now < 40000.0) {
+    cage.update({at(IntentKind::BotSwings, now)}, now);
+    for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
+                                                      cage.stage() == BattingCage::Stage::Batted);)
+      cage.update({}, now += 0.05);
+    now += 0.5;
+  }
+  const BattingCage::AtBats& a = cage.at_bats();
+  REQUIRE(a.pa >= 120);
+  const int ab = a.pa - a.walks - a.hit_by_pitch;
+  const double avg = static_cast<double>(a.hits) / ab, k = static_cast<double>(a.strikeouts) / a.pa,
+               hr = static_cast<double>(a.home_runs) / a.pa, bb = static_cast<double>(a.walks) / a.pa;
+  INFO("PA " << a.pa << ": AVG " << avg << ", K " << k << ", BB " << bb << ", HR/PA " << hr);
+  CHECK(avg >= 0.15);
+  CHECK(avg <= 0.36);
+  CHECK(k >= 0.10);
+  CHECK(bb >= 0.02);  // he takes balls: a batting-practice swing never walks
+  CHECK(hr <= 0.08);
+}

@@ -213,6 +213,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   swings_.push_back(last_);
   carries_as_played_.push_back(played_.summary.carry_m);
   at_bats_before_ = at_bats_;
+  count_before_ = count_;
   if (game_) board_before_ = game_->board();
   told_ = !last_.result.contact;
   char text[160];

@@ -88,7 +88,9 @@ class BattingCage {
   const std::string& call_text() const { return call_text_; }
   /// Live at-bats: the count, and the plate appearances so far.
   bool live() const { return live_; }
-  const Count& count() const { return count_; }
+  /// As told: while a ball in play is in the air, the count he swung at (the plate
+  /// appearance it ends is not yet told either).
+  const Count& count() const { return told_ ? count_ : count_before_; }
   struct AtBats {
     int pa = 0, strikeouts = 0, walks = 0, hit_by_pitch = 0, hits = 0, home_runs = 0, outs = 0;
   };
@@ -155,7 +157,7 @@ class BattingCage {
   LiveInning::Board board_before_;
   Pitcher pitcher_;
   BotBatter reader_;  ///< the pro's eye that sets the bat's height when timing_only_
-  Count count_;
+  Count count_, count_before_;
   AtBats at_bats_;
 };
 

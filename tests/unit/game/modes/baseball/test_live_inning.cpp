@@ -50,11 +50,18 @@ TEST_CASE("live game in the cage: the pro's balls in play move the runners, the 
   double now = 1.0;
   int innings_done = 0, hits = 0, home_runs = 0;
   while (innings_done < 3 && now < 4000.0) {
+    const Count before = cage.count();
     cage.update({at(IntentKind::BotSwings, now)}, now);
     // Until the pitch is called and any ball in play has come down.
     for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
-                                                      cage.stage() == BattingCage::Stage::Batted);)
+                                                      cage.stage() == BattingCage::Stage::Batted);) {
       cage.update({}, now += 0.05);
+      // While the ball is in the air nothing of its plate appearance is told: the count too.
+      if (cage.swings_told() < cage.swings().size()) {
+        CHECK(cage.count().balls == before.balls);
+        CHECK(cage.count().strikes == before.strikes);
+      }
+    }
     now += 0.5;
     const LiveInning::Board& b = *cage.board();
     CHECK(b.outs <= 3);

@@ -133,7 +133,7 @@ float draw_stats(const BattingCage& c, int w, int h) {
   else ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height  T: timing only");
   ImGui::TextDisabled("C: power/contact  L: batter's side");
   ImGui::TextDisabled("B: the pro swings  A: live game / batting practice");
-  ImGui::TextDisabled("Esc: pause  Tab: next mode");
+  ImGui::TextDisabled("H: hide this panel  Esc: pause  Tab: next mode");
   ImGui::Separator();
   // Contact counts fouls (a foul is contact); the batted-ball figures are Statcast's batted-ball
   // events, fair balls only, so a long foul is not the session's longest hit.
@@ -282,6 +282,10 @@ class CageView final : public ModeView {
     // As last drawn: a restart from the pause menu reaches the model through send().
     const Stage stage_before = drawn_stage_;
     cage_->update(cage_intents(in.keys), in.now);
+    // H hides the panel and the spray chart (and brings them back), as in the Lab: the view
+    // whole, for a screenshot or a clip.
+    for (const KeyPress& k : in.keys)
+      if (k.key == GLFW_KEY_H) panels_hidden_ = !panels_hidden_;
     drawn_stage_ = c.stage();
     // The scene holds the pitch while it flies and the batted ball after contact.
     if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) scene_->set_shot(c.pitch().trajectory, std::nullopt);
@@ -315,7 +319,17 @@ class CageView final : public ModeView {
       renderer.blit_to(0, w, h);
       if (!batted) draw_zone(c, cam, w, h);
     }
-    const float panel_bottom = draw_stats(c, w, h);
+    float panel_bottom = 0.0f;
+    if (!panels_hidden_) {
+      panel_bottom = draw_stats(c, w, h);
+    } else {
+      // One line says how to bring the panel back.
+      ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
+      ImGui::Begin("cage hidden", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
+      ImGui::TextDisabled("H: the panel");
+      panel_bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
+      ImGui::End();
+    }
     hud_bottom_ = panel_bottom;
     if (!c.call_text().empty()) {
       // The call in large type, in the sky right of the HUD panel (clear of the outfield
@@ -343,6 +357,7 @@ class CageView final : public ModeView {
   CageViewOptions options_;
   std::unique_ptr<ShotScene> scene_;
   int done_frames_ = 0;
+  bool panels_hidden_ = false;  ///< H: the HUD panel and the spray chart out of the way
   double hud_bottom_ = 0.0;  ///< px, the lowest the HUD panel and the call reached last frame
   Stage drawn_stage_ = Stage::Ready;  ///< the model's stage the last frame drew
 };

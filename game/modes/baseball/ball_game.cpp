@@ -156,8 +156,6 @@ void charge_pitcher(PitchingLine& p, const PlateAppearance& pa) {
   p.outs += pa.outs_made;
 }
 
-int runners_on(const Bases& b) { return static_cast<int>(std::count_if(b.begin(), b.end(), [](int r) { return r >= 0; })); }
-
 bool on(const Bases& b, int who) { return std::find(b.begin(), b.end(), who) != b.end(); }
 
 }  // namespace

@@ -273,6 +273,8 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   bases = nb;
 }
 
+int runners_on(const Bases& b) { return static_cast<int>(std::count_if(b.begin(), b.end(), [](int r) { return r >= 0; })); }
+
 HalfInning empty_half_inning(const Assets& assets) {
   ShotSpec spec;
   spec.sport = "baseball";

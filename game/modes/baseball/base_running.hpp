@@ -32,6 +32,9 @@ struct HalfInning {
                int& outs_made, std::string& description);
 };
 
+/// How many of the bases have a runner on them.
+int runners_on(const Bases& b);
+
 /// A half-inning's start: bases empty, no outs, in the sport's air (assets' baseball
 /// defaults), which the throws fly through.
 HalfInning empty_half_inning(const Assets& assets);

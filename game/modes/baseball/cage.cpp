@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <string_view>
 
-#include "game/modes/baseball/aim.hpp"
 #include "game/modes/baseball/figures.hpp"
 #include "game/modes/replay.hpp"
 #include "physics/units.hpp"
@@ -327,10 +326,9 @@ void BattingCage::apply(const Intent& in) {
       else if (pitch_clock(t) > pitch_.flight_time) break;
       if (live_) {
         // Against live pitching he reads the pitch and may take it, as a game's hitter does.
-        if (!report_) report_ = scout(assets_, pitcher_.profile());
         std::optional<Hitter>& h = live_pro_[lefty_ ? 1 : 0];
-        if (!h) h.emplace(batter_skill("pro"), lefty_, seed_ * 31 + (lefty_ ? 2 : 1), aim_inside(assets_, batter_skill("pro"), kBat));
-        const PitchRead read = h->read(pitch_, call_.type.type, *report_, count_);
+        if (!h) h.emplace(batter_skill("pro"), lefty_, seed_ * 31 + (lefty_ ? 2 : 1), game_->batting().lineup.front().aim_inside());
+        const PitchRead read = h->read(pitch_, call_.type.type, game_->report(), count_);
         if (!h->swings(read, count_)) {
           pro_takes_ = true;
           break;

@@ -146,10 +146,9 @@ class BattingCage {
   bool timing_only_ = false;
   /// B in a live game: the pro bats as the game's hitters do (hitter.hpp: his read of the
   /// pitch, his take-or-swing, his errors against live pitching), not his batting-practice
-  /// swing; one for each side of the plate, made at first use. The pitcher's report is what
-  /// he knows of the cage's pitcher.
+  /// swing; one for each side of the plate, made at first use with the game's aim and its
+  /// report of the league's pitcher (game_).
   std::optional<Hitter> live_pro_[2];
-  std::optional<ScoutingReport> report_;
   bool pro_takes_ = false;  ///< the pro let this pitch go: its call is his
   bool live_ = false;
   std::uint64_t seed_ = 0;  ///< the session's: a live game's teams and throws draw from it

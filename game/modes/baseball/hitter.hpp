@@ -63,6 +63,7 @@ class Hitter {
  public:
   /// `aim_inside`: where along his bat he aims (aim_inside() of his skill and bat).
   Hitter(const BatterSkill& skill, bool left_handed, std::uint64_t seed, double aim_inside);
+  double aim_inside() const { return aim_inside_; }  ///< m, where along his bat he aims
   /// His read of `pitch` of type `type` (its name) from `pitcher` as he sees it at the commit point.
   PitchRead read(const PitchFlight& pitch, const std::string& type, const ScoutingReport& pitcher, const Count& count);
   /// Whether he offers at the pitch as he read it.

@@ -32,6 +32,10 @@ class LiveInning {
     int runs() const;
   };
   const Board& board() const { return board_; }
+  /// The batting side (its hitters' aim along the bat), and what it knows of the pitcher it
+  /// faces: the league's, as the cage's.
+  const Team& batting() const { return batting_; }
+  const ScoutingReport& report() const { return fielding_.report; }
 
   /// The next plate appearance's first pitch: after a third out the next inning opens (the
   /// bases empty, no outs), and the last play's note, read between batters, is cleared.

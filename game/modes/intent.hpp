@@ -23,6 +23,7 @@ enum class IntentKind : unsigned char {
   CaddieClub,   ///< golf: the caddie's club for the distance
   CaddiePlays,  ///< golf: the caddie's bot plays this stroke
   Concede,      ///< golf, match play: give up the hole
+  ReadGreen,    ///< golf, a putt: the caddie's read of its line and pace (again: hide it)
   Pitch,        ///< batting: call for the next pitch
   BatUp,        ///< batting: the bat's height a step up (BattingCage::kBatStep)
   BatDown,

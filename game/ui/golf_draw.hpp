@@ -60,6 +60,12 @@ void draw_golf_card(const GolfPlay& play, int w, bool final);
 void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool scene_has_flag = true, const std::string& label = {});
 /// The aim line from the ball (to the cup's distance and a metre on for a putt).
 void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h);
+/// The caddie's read of the putt (GolfPlay::putt_read), dotted along the green where his
+/// putt rolls.
+void draw_putt_read(const GolfPlay& play, const Camera& cam, int w, int h);
+/// The read in a golfer's words: which way it breaks and where to aim, in cups and the
+/// player's units, and how hard ("uphill: hit it as 16 ft"). Empty without a read.
+std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& units);
 /// The green's slopes as arrows on the ground for the scene (ShotScene::set_ground_arrows),
 /// so the golfer and the meter are never drawn under them.
 std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes);

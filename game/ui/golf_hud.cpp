@@ -30,6 +30,35 @@ std::string GolfUnits::putt(double m) const {
   return b;
 }
 
+std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& units) {
+  // A break in the units a golfer reads a putt in (inches, centimetres) and in cups: the
+  // cup is 108 mm across (Rules of Golf, Definitions "Hole").
+  constexpr double kCup = 0.108;            // m
+  constexpr double kStraight = 0.25 * kCup; // m: inside a quarter of the cup he says "straight"
+  const double off = std::abs(read.aim_off);
+  char aim[96];
+  if (off < kStraight) {
+    std::snprintf(aim, sizeof aim, "straight: at the cup");
+  } else {
+    char by[24];
+    if (units.imperial && off < 0.9144) std::snprintf(by, sizeof by, "%.0f in", off / 0.0254);
+    else if (!units.imperial && off < 1.0) std::snprintf(by, sizeof by, "%.0f cm", 100.0 * off);
+    else std::snprintf(by, sizeof by, "%s", units.putt(off).c_str());
+    const double cups = std::max(0.5, std::round(2.0 * off / kCup) / 2.0);
+    // Aimed left of the cup the ball must curl back right: it breaks left to right.
+    std::snprintf(aim, sizeof aim, "breaks %s: aim %s %s (%g cup%s)", read.aim_off < 0.0 ? "left to right" : "right to left",
+                  by, read.aim_off < 0.0 ? "left" : "right", cups, cups > 1.0 ? "s" : "");
+  }
+  // His pace against the putt's length: uphill it must be struck as a longer putt on flat.
+  std::string pace;
+  if (read.plays_as > 0.0) {
+    const double margin = std::max(0.3, 0.08 * read.to_cup);  // m: within it the pace is the length's
+    const char* slope = read.plays_as > read.to_cup + margin ? "uphill" : read.plays_as < read.to_cup - margin ? "downhill" : "level";
+    pace = std::string(", ") + slope + ": hit it as " + units.putt(read.plays_as) + " (blue mark)";
+  }
+  return std::string(aim) + pace + (read.holes ? "" : "; his best line, it may not drop");
+}
+
 std::string GolfUnits::speed(double mps) const {
   char b[32];
   std::snprintf(b, sizeof b, imperial ? "%.0f mph" : "%.0f m/s", imperial ? mps_to_mph(mps) : mps);
@@ -133,13 +162,17 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     const HoleWind hw = r.wind();
     const double cross = hw.speed * std::sin(hw.toward - r.line_to_pin());  // m/s, + toward the right
     constexpr double kCrossNoted = 2.0;  // m/s (4.5 mph): moves a full shot's landing by metres
-    const bool allows = std::abs(rad_to_deg(play.aim())) >= 0.5 && std::abs(cross) >= kCrossNoted && (cross > 0.0) == (play.aim() < 0.0);
+    // Not on a putt: the wind barely moves a ball on the grass; its break is the green's.
+    const bool allows = club != "putter" && std::abs(rad_to_deg(play.aim())) >= 0.5 && std::abs(cross) >= kCrossNoted &&
+                        (cross > 0.0) == (play.aim() < 0.0);
     ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left",
                 allows ? (cross > 0.0 ? " (the wind drifts it right)" : " (the wind drifts it left)") : "");
+    if (const auto& read = play.putt_read(); read && play.human_turn())
+      ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());
     if (play.human_turn() && club == "putter" && r.lie() == "green") {
       // On the green the keys a putt needs, in one line: the panel stays clear of the golfer
       // the putting view frames under it.
-      ImGui::TextDisabled("Left/Right: aim   Space: putt   B: caddie");
+      ImGui::TextDisabled("Left/Right aim  Space putt  G read  B caddie");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
     } else if (play.human_turn()) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
@@ -293,13 +326,19 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
                   to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty));
     std::snprintf(label, sizeof label, "%s", full_swing_caption(meter, now, before).c_str());
   }
-  // The caddie's part swing (his club, under full power): a mark on the bar where his power
-  // is, as the putt's cup is marked, so "Caddie: a part swing, 36 % power" has a target.
+  // The caddie's part swing (his club, under full power), or his pace for a putt he read: a
+  // mark on the bar where his power is, as the putt's cup is marked, so "Caddie: a part
+  // swing, 36 % power" has a target.
+  std::optional<double> caddie_power;
   if (!putting) {
-    if (const auto& plan = play.caddie_plan(); plan && plan->club == play.club() && plan->meter.power < 0.97) {
-      const float x = at(plan->meter.power);
-      dl->AddTriangleFilled(ImVec2(x - 6, y0 - 10), ImVec2(x + 6, y0 - 10), ImVec2(x, y0), IM_COL32(120, 220, 255, 255));
-    }
+    if (const auto& plan = play.caddie_plan(); plan && plan->club == play.club() && plan->meter.power < 0.97)
+      caddie_power = plan->meter.power;
+  } else if (const auto& read = play.putt_read()) {
+    caddie_power = std::min(read->power, MeterBar::kHigh);
+  }
+  if (caddie_power) {
+    const float x = at(*caddie_power);
+    dl->AddTriangleFilled(ImVec2(x - 6, y0 - 10), ImVec2(x + 6, y0 - 10), ImVec2(x, y0), IM_COL32(120, 220, 255, 255));
   }
   draw_meter_caption(bar, label);
 }

@@ -98,6 +98,19 @@ void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h) {
   if (p0 && p1) dl->AddLine(px(*p0), px(*p1), IM_COL32(255, 255, 255, 170), 2.0f);
 }
 
+void draw_putt_read(const GolfPlay& play, const Camera& cam, int w, int h) {
+  const auto& read = play.putt_read();
+  if (!read || read.value().line.size() < 2) return;
+  // A dotted line a little above the grass (the ball's centre is 21 mm up), in the caddie's
+  // blue as his pace mark on the meter: every other 5 cm step drawn.
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const std::vector<Vec3>& line = read->line;
+  for (std::size_t k = 0; k + 1 < line.size(); k += 2) {
+    const auto a = cam.project(line[k], w, h), b = cam.project(line[k + 1], w, h);
+    if (a && b) dl->AddLine(px(*a), px(*b), IM_COL32(120, 220, 255, 230), 3.0f);
+  }
+}
+
 std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes) {
   std::vector<GroundArrow> out;
   for (const SlopeArrow& a : slopes) {

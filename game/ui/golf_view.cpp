@@ -35,6 +35,7 @@ Intents golf_intents(const std::vector<KeyPress>& keys) {
                                   {GLFW_KEY_C, IntentKind::CaddieClub},
                                   {GLFW_KEY_B, IntentKind::CaddiePlays},
                                   {GLFW_KEY_H, IntentKind::Concede},
+                                  {GLFW_KEY_G, IntentKind::ReadGreen},
                                   {GLFW_KEY_N, IntentKind::NewRound},
                                   {GLFW_KEY_ENTER, IntentKind::Continue},
                                   {GLFW_KEY_KP_ENTER, IntentKind::Continue}});
@@ -637,7 +638,10 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     // The cup of the hole on show: a holing putt's until its ball has dropped and settled.
     if (flying || settling) draw_cup_and_flag(cam, play_->group().course().holes.at(play_->hole_shown()).pin, w, h);
     else if (!r.finished() && !over) draw_cup_and_flag(cam, r.hole().pin, w, h);
-    if (addressing) draw_aim(*play_, cam, w, h);
+    if (addressing) {
+      draw_aim(*play_, cam, w, h);
+      draw_putt_read(*play_, cam, w, h);  // over the aim line it starts along
+    }
     if (addressing && camera_ == 3) {
       const WorldAsset* world = r.hole().world;
       if (world != crowns_of_) {  // read once per world: a course's holes share one

@@ -22,8 +22,6 @@ AlongAcross relative(const Vec3& from, double line, const Vec3& p) {
   return {dx * c + dz * s, -dx * s + dz * c};
 }
 
-/// The putt's aim point: this far past the cup (Pelz's 17 in, 0.43 m, holes the most).
-constexpr double kPuttPast = 0.43;
 /// How near the cup's centre (m across the line) a planned putt must cross: a quarter of
 /// the cup's 54 mm radius, so the player's own start-line error, not the plan, decides it.
 constexpr double kPuttCentred = 0.0135;
@@ -154,9 +152,9 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
   const Vec3 start = round.ball();
   // Roll deceleration for first guesses: a 10 ft Stimpmeter green, ~0.55 m/s².
   constexpr double kDecel = 0.55;
-  const double v_target = std::sqrt(2.0 * kDecel * kPuttPast);  // at the cup, to finish 0.43 m past
+  const double v_target = std::sqrt(2.0 * kDecel * GolfBot::kPuttPast);  // at the cup, to finish 0.43 m past
   const double full = full_swing_speed(skill_, assets_->equipment().club_info_of("putter"));
-  double power = std::clamp(std::sqrt(2.0 * kDecel * (d + kPuttPast)) / 1.6 / full, 0.02, 1.1);
+  double power = std::clamp(std::sqrt(2.0 * kDecel * (d + GolfBot::kPuttPast)) / 1.6 / full, 0.02, 1.1);
   double aim = 0.0;
   // The tried plan that holed nearest the centre: what the bot plays when the tries run out
   // before one is centred (the last correction is untried and may miss).
@@ -192,7 +190,7 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
     if (r.end == ShotEnd::Holed && !crossed && usable > 0) {
       const AlongAcross fell = relative(start, line, sm[usable - 1].position);
       if (sm[usable - 1].velocity.norm() < 0.5 * v_target) {  // died into the lip: firmer
-        power = std::clamp(power * std::sqrt((d + kPuttPast) / std::max(fell.along, 0.05)), 0.02, 1.1);
+        power = std::clamp(power * std::sqrt((d + GolfBot::kPuttPast) / std::max(fell.along, 0.05)), 0.02, 1.1);
         continue;
       }
       if (std::abs(fell.across) < kPuttCentred) return in;
@@ -206,7 +204,7 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
     }
     if (!crossed) {  // short: more speed, the line from where it stopped
       const AlongAcross at = relative(start, line, r.trajectory.summary.rest_position);
-      power = std::clamp(power * std::sqrt((d + kPuttPast) / std::max(std::max(reach, at.along), 0.05)), 0.02, 1.1);
+      power = std::clamp(power * std::sqrt((d + GolfBot::kPuttPast) / std::max(std::max(reach, at.along), 0.05)), 0.02, 1.1);
       if (at.along > 0.3 * d) aim = std::clamp(aim - std::atan2(at.across, at.along), -0.5, 0.5);
       continue;
     }

@@ -27,6 +27,10 @@ class GolfBot {
   /// all, when empty) carry as this skill's error-free full swings on flat fairway.
   GolfBot(const Assets& assets, const GolferSkill& skill, std::uint64_t seed, std::vector<Stock> bag = {});
 
+  /// A putt's pace: it aims to finish this far past the cup (Pelz's 17 in, 0.43 m, holes the
+  /// most).
+  static constexpr double kPuttPast = 0.43;  // m
+
   /// The stroke it means to play from where the round's ball lies: no errors.
   StrokeInput intend(const GolfRound& round) const;
   /// intend() with this skill's meter errors drawn from the bot's seeded generator.

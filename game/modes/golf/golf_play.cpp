@@ -103,6 +103,7 @@ double GolfPlay::flyover_progress(double now) const {
 void GolfPlay::choose_club() {
   const GolfRound& r = round();
   caddie_plan_.reset();
+  putt_read_.reset();
   if (r.finished()) return;
   // The caddie's club plays like the distance today: the wind, the lie, the ground; off the
   // green he points the aim where he would play (a dogleg's corner when the cup is out of
@@ -157,6 +158,39 @@ void GolfPlay::begin_turn(double t) {
   turn_at_ = t;
   choose_club();
   build_roll_table();
+}
+
+void GolfPlay::read_green() {
+  if (putt_read_) {
+    putt_read_.reset();
+    return;
+  }
+  const GolfRound& r = round();
+  if (r.lie() != "green") {
+    say("G reads a putt once the ball is on the green");
+    return;
+  }
+  const StrokeInput plan = caddie().intend(r);
+  if (plan.club != "putter") {  // a strip of rough between ball and cup: he would chip it
+    say("The caddie would not putt this one: he would play the " + plan.club);
+    return;
+  }
+  const ShotResult rolled = r.simulate(plan, true);
+  PuttRead read;
+  read.aim = plan.aim;
+  read.power = plan.meter.power;
+  read.to_cup = r.to_pin();
+  read.aim_off = read.to_cup * std::tan(plan.aim);
+  read.plays_as = std::max(0.0, flat_roll(plan.meter.power) - GolfBot::kPuttPast);
+  read.holes = rolled.end == ShotEnd::Holed;
+  // Every 5 cm or so of roll is plenty for a line drawn on the green.
+  const auto& samples = rolled.trajectory.samples;
+  for (const TrajectorySample& s : samples)
+    if (read.line.empty() || (s.position - read.line.back()).norm() >= 0.05) read.line.push_back(s.position);
+  if (!samples.empty()) read.line.push_back(samples.back().position);
+  club_ = bag_index("putter");
+  aim_ = plan.aim;
+  putt_read_ = std::move(read);
 }
 
 void GolfPlay::build_roll_table() {
@@ -289,6 +323,7 @@ void GolfPlay::land(double t) {
 }
 
 void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
+  putt_read_.reset();  // read from where the ball lay
   round_hole_ = group_.hole_index();
   shooter_ = player_;
   const GolfPlayer& who = player_info();
@@ -368,6 +403,7 @@ void GolfPlay::apply(const Intent& in) {
           if (club_ + 1 < golf_bag().size()) ++club_;
           break;
         case IntentKind::CaddieClub: choose_club(); break;
+        case IntentKind::ReadGreen: read_green(); break;
         case IntentKind::Swing: {
           const double length = assets_.equipment().club(club()).length;
           // A putt the preview reaches: the marker slowed for a short one (putt_tempo).

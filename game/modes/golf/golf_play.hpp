@@ -63,6 +63,19 @@ class GolfPlay {
   /// The caddie's stroke from here as he chose the club at the turn's start (C chooses
   /// again): its club and, for a part swing, its power. None on the green or once over.
   const std::optional<StrokeInput>& caddie_plan() const { return caddie_plan_; }
+  /// The caddie's read of a putt (G on the green): the line and pace he would putt it on,
+  /// error-free, rolled on the same green as the putt. It lines the player up along that line;
+  /// the pace (the blue mark) is still the player's to strike.
+  struct PuttRead {
+    double aim = 0.0;       ///< rad right of the line to the pin
+    double power = 0.0;     ///< the meter's power for his pace
+    double aim_off = 0.0;   ///< m right (+) or left (-) of the cup's centre the aim points, at the cup's distance
+    double plays_as = 0.0;  ///< m: the flat-green roll his pace gives (holes 0.43 m past on flat)
+    double to_cup = 0.0;    ///< m, the putt's length
+    bool holes = false;     ///< his putt, rolled, drops
+    std::vector<Vec3> line; ///< the ball's centre along his putt, to where it drops or stops
+  };
+  const std::optional<PuttRead>& putt_read() const { return putt_read_; }
   const std::string& club() const;
   double aim() const { return aim_; }              ///< rad right of the line to the pin
   const std::optional<MeterClock>& meter() const { return meter_; }
@@ -162,6 +175,8 @@ class GolfPlay {
   void new_round(double t);
   void restart_hole(double t);
   void build_roll_table();
+  /// G: the caddie reads the putt (or the read is hidden again).
+  void read_green();
   /// The HUD's message; `result`: it tells the last stroke's result (message_is_result()).
   void say(std::string text, bool result = false) {
     message_ = std::move(text);
@@ -197,6 +212,7 @@ class GolfPlay {
   bool swing_undone_ = false;
   std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green
   std::optional<StrokeInput> caddie_plan_;
+  std::optional<PuttRead> putt_read_;
   double putt_plays_as_ = 0.0;
   std::string putt_crosses_;
   /// A stroke of `club` along the aim at `power`, flown from where the ball lies: its carry

@@ -15,3 +15,21 @@ TEST_CASE("a ball a few inches from the cup reads in inches, never 0 ft", "[ui][
   CHECK(metres.putt(0.001) == "1 cm");
   CHECK(metres.putt(2.44) == "2.4 m");
 }
+
+TEST_CASE("the caddie's read in a golfer's words: the break in inches and cups, the pace for the slope", "[ui][golf]") {
+  const GolfUnits feet{true}, metres{false};
+  GolfPlay::PuttRead r;
+  r.to_cup = 4.0;
+  r.holes = true;
+  r.aim_off = -0.23;  // aimed left: it curls back right
+  r.plays_as = 4.9;
+  CHECK(putt_read_words(r, feet) == "breaks left to right: aim 9 in left (2 cups), uphill: hit it as 16 ft (blue mark)");
+  CHECK(putt_read_words(r, metres) == "breaks left to right: aim 23 cm left (2 cups), uphill: hit it as 4.9 m (blue mark)");
+  r.aim_off = 0.06;
+  r.plays_as = 3.2;
+  CHECK(putt_read_words(r, feet) == "breaks right to left: aim 2 in right (0.5 cup), downhill: hit it as 10 ft (blue mark)");
+  r.aim_off = 0.01;
+  r.plays_as = 4.1;
+  r.holes = false;
+  CHECK(putt_read_words(r, feet) == "straight: at the cup, level: hit it as 13 ft (blue mark); his best line, it may not drop");
+}

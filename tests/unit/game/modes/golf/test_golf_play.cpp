@@ -11,6 +11,7 @@
 #include "game/modes/golf/golf_play.hpp"
 #include "game/modes/golf/latency_calibration.hpp"
 #include "game/modes/replay.hpp"
+#include "physics/world.hpp"
 #include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
 
@@ -522,4 +523,103 @@ TEST_CASE("match play: H asks before it gives up the hole, another key answers n
   play.update({at(IntentKind::Concede, 2.5)}, 2.5);
   CHECK(play.group().hole_index() == 1);
   CHECK(play.group().round(0).card().front().conceded);
+}
+
+namespace {
+// The national course's hole `n` with its tee moved onto the green `dist` m from the cup in
+// direction `angle`: a round that starts with a putt. None when that spot is not green.
+std::optional<Course> putt_on(std::size_t n, double dist, double angle) {
+  Course c = load_course(test::assets(), "national");
+  c.holes = {c.holes.at(n)};
+  c.holes[0].number = 1;
+  const Vec3 pin = c.holes[0].pin;
+  SurfaceContact hit;
+  if (!ground_under(*c.holes[0].world->world, pin.x() + dist * std::cos(angle), pin.z() + dist * std::sin(angle), 400.0,
+                    420.0, &hit))
+    return std::nullopt;
+  if (c.holes[0].world->world->material(hit.material).kind != SurfaceKind::Green) return std::nullopt;
+  c.holes[0].tee = hit.point;
+  return c;
+}
+}  // namespace
+
+TEST_CASE("G: the caddie reads a putt: his line holes it, breaks the way the green falls, paced for the slope",
+          "[modes][golf][putting]") {
+  int read = 0, breaking = 0, uphill = 0, downhill = 0;
+  for (std::size_t n = 0; n < 18; ++n) {
+    for (int k = 0; k < 4; ++k) {
+      const std::optional<Course> course = putt_on(n, 4.0, kPi / 2.0 * k + 0.3);
+      if (!course) continue;
+      GolfPlay play(test::assets(), *course, solo("tour"));
+      REQUIRE(play.round().lie() == "green");
+      CHECK_FALSE(play.putt_read());
+      play.update({at(IntentKind::AimRight, 0.5), at(IntentKind::ReadGreen, 1.0)}, 1.0);
+      REQUIRE(play.putt_read());
+      const GolfPlay::PuttRead& r = *play.putt_read();
+      ++read;
+      // It lines the player up along his line and leaves the stroke to him: nothing struck.
+      CHECK(play.aim() == r.aim);
+      CHECK(play.club() == "putter");
+      CHECK(play.round().card().back().strokes == 0);
+      // His putt, struck at his pace along his line, drops; the drawn line runs from the ball
+      // into the cup.
+      StrokeInput putt;
+      putt.club = "putter";
+      putt.aim = play.aim();
+      putt.meter.power = r.power;
+      CHECK(play.round().simulate(putt).end == ShotEnd::Holed);
+      CHECK(r.holes);
+      REQUIRE(r.line.size() >= 2);
+      const Vec3 ball = play.round().ball(), pin = course->holes[0].pin;
+      CHECK(std::hypot(r.line.front().x() - ball.x(), r.line.front().z() - ball.z()) < 0.05);
+      CHECK(std::hypot(r.line.back().x() - pin.x(), r.line.back().z() - pin.z()) < 0.108);
+      // It breaks the way the green falls across the line, halfway to the cup: falling to the
+      // right, the ball curls right, so he aims left of the cup.
+      const Vec3 mid = 0.5 * (ball + pin);
+      SurfaceContact hit;
+      REQUIRE(ground_under(*course->holes[0].world->world, mid.x(), mid.z(), 400.0, 420.0, &hit));
+      const double line = play.round().line_to_pin();
+      const double fall_right = (hit.normal.x() * -std::sin(line) + hit.normal.z() * std::cos(line)) / hit.normal.y();
+      if (std::abs(fall_right) > 0.01 && std::abs(r.aim_off) > 0.05) {
+        ++breaking;
+        INFO("hole " << n + 1 << ": falls " << fall_right << " to the right, aim " << r.aim_off << " m right of the cup");
+        CHECK((fall_right > 0.0) == (r.aim_off < 0.0));
+      }
+      // Uphill he strikes it as a longer putt on flat, downhill as a shorter one.
+      const double rise = pin.y() - ball.y();
+      if (rise > 0.04) {
+        ++uphill;
+        CHECK(r.plays_as > r.to_cup);
+      } else if (rise < -0.04) {
+        ++downhill;
+        CHECK(r.plays_as < r.to_cup);
+      }
+      // G again hides it; a stroke played clears it.
+      play.update({at(IntentKind::ReadGreen, 1.5)}, 1.5);
+      CHECK_FALSE(play.putt_read());
+    }
+  }
+  INFO(read << " putts read: " << breaking << " breaking, " << uphill << " uphill, " << downhill << " downhill");
+  CHECK(read >= 60);
+  CHECK(breaking >= 20);
+  CHECK(uphill >= 8);
+  CHECK(downhill >= 8);
+}
+
+TEST_CASE("G off the green says where it reads, and a stroke clears the read", "[modes][golf][putting]") {
+  GolfPlay play(test::assets(), first_hole(), solo("tour"));
+  REQUIRE(play.round().lie() != "green");
+  play.update({at(IntentKind::ReadGreen, 1.0)}, 1.0);
+  CHECK_FALSE(play.putt_read());
+  CHECK(play.message() == "G reads a putt once the ball is on the green");
+  double t = 1.0;
+  while (play.round().lie() != "green" && play.stage() != GolfPlay::Stage::RoundOver) {
+    t += 1.0;
+    play.update({at(IntentKind::CaddiePlays, t), at(IntentKind::Continue, t + 0.1)}, t + 0.2);
+  }
+  REQUIRE(play.round().lie() == "green");
+  play.update({at(IntentKind::ReadGreen, t + 1.0)}, t + 1.0);
+  REQUIRE(play.putt_read());
+  play.update({at(IntentKind::CaddiePlays, t + 2.0)}, t + 2.0);
+  CHECK_FALSE(play.putt_read());
 }

@@ -81,7 +81,8 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
 }
 
 // The HUD panel at the top left; returns its bottom edge (px), where the call goes below it.
-float draw_stats(const BattingCage& c, int w, int h) {
+// `all_keys`: every key the cage takes, four lines; else the few a pitch needs, in one.
+float draw_stats(const BattingCage& c, int w, int h, bool all_keys) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(kStatsPanelRight - 10.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
@@ -129,11 +130,16 @@ float draw_stats(const BattingCage& c, int w, int h) {
   }
   ImGui::Text("Swing: %s, %s-handed, %s", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right",
               c.timing_only() ? "timing only" : "bat height by hand");
-  if (c.timing_only()) ImGui::TextDisabled("P: pitch  Space: swing  T: set the bat's height yourself");
-  else ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height  T: timing only");
-  ImGui::TextDisabled("C: power/contact  L: batter's side");
-  ImGui::TextDisabled("B: the pro swings  A: live game / batting practice");
-  ImGui::TextDisabled("H: hide this panel  Esc: pause  Tab: next mode");
+  if (!all_keys) {
+    // After the first few swings the keys a pitch needs, in one line (K: the rest).
+    ImGui::TextDisabled(c.timing_only() ? "P pitch  Space swing  B the pro  K keys" : "P pitch  Space swing  Up/Down bat  K keys");
+  } else {
+    if (c.timing_only()) ImGui::TextDisabled("P: pitch  Space: swing  T: set the bat's height yourself");
+    else ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height  T: timing only");
+    ImGui::TextDisabled("C: power/contact  L: batter's side");
+    ImGui::TextDisabled("B: the pro swings  A: live game / batting practice");
+    ImGui::TextDisabled("H: hide this panel  Esc: pause  Tab: next mode  K: fewer");
+  }
   ImGui::Separator();
   // Contact counts fouls (a foul is contact); the batted-ball figures are Statcast's batted-ball
   // events, fair balls only, so a long foul is not the session's longest hit.
@@ -286,6 +292,7 @@ class CageView final : public ModeView {
     // whole, for a screenshot or a clip.
     for (const KeyPress& k : in.keys)
       if (k.key == GLFW_KEY_H) panels_hidden_ = !panels_hidden_;
+      else if (k.key == GLFW_KEY_K) all_keys_ = !all_keys();
     drawn_stage_ = c.stage();
     // The scene holds the pitch while it flies and the batted ball after contact.
     if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) scene_->set_shot(c.pitch().trajectory, std::nullopt);
@@ -321,7 +328,7 @@ class CageView final : public ModeView {
     }
     float panel_bottom = 0.0f;
     if (!panels_hidden_) {
-      panel_bottom = draw_stats(c, w, h);
+      panel_bottom = draw_stats(c, w, h, all_keys());
     } else {
       // One line says how to bring the panel back.
       ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
@@ -358,6 +365,10 @@ class CageView final : public ModeView {
   std::unique_ptr<ShotScene> scene_;
   int done_frames_ = 0;
   bool panels_hidden_ = false;  ///< H: the HUD panel and the spray chart out of the way
+  /// Every key for the first few swings, then the few a pitch needs; K switches (held on).
+  std::optional<bool> all_keys_;
+  static constexpr std::size_t kSwingsWithAllKeys = 5;
+  bool all_keys() const { return all_keys_.value_or(cage_->swings().size() < kSwingsWithAllKeys); }
   double hud_bottom_ = 0.0;  ///< px, the lowest the HUD panel and the call reached last frame
   Stage drawn_stage_ = Stage::Ready;  ///< the model's stage the last frame drew
 };

@@ -31,7 +31,9 @@ struct SlopeArrow {
 std::vector<SlopeArrow> green_slopes(const WorldAsset& w, const Vec3& ball, const Vec3& pin);
 
 /// `flight_t`: seconds into the last stroke's flight (the HUD says in the air or running out).
-void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t);
+/// `all_keys`: every key the round takes, four lines; else the few a stroke needs, in one.
+void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t,
+                   bool all_keys = true);
 /// The meter bar, bottom centre: −15 % to 110 %, the accuracy mark as wide as the perfect
 /// window, the marker, and where the last swing's clicks landed.
 struct MeterBar {

@@ -97,7 +97,8 @@ const char* camera_words(int mode) {
 
 }  // namespace
 
-void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t) {
+void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t,
+                   bool all_keys) {
   const double now = flight_t;
   const GolfGroup& g = play.group();
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
@@ -174,12 +175,16 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       // the putting view frames under it.
       ImGui::TextDisabled("Left/Right aim  Space putt  G read  B caddie");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
-    } else if (play.human_turn()) {
+    } else if (play.human_turn() && all_keys) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
       ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
       ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save  L latency", camera_words(camera_mode));
-      ImGui::TextDisabled("R: replay  Esc: cancel the swing or pause  Tab: next mode");
+      ImGui::TextDisabled("R replay  Esc cancel or pause  Tab next mode  K fewer");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
+    } else if (play.human_turn()) {
+      // Past the first hole the keys a stroke needs, in one line: the panel keeps to the
+      // corner of the view (K brings the rest back).
+      ImGui::TextDisabled("Arrows club and aim  Space swing  B caddie  K keys");
     } else {
       ImGui::TextDisabled("Enter: let them play now");
     }

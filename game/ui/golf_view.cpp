@@ -168,6 +168,9 @@ class GolfView final : public ModeView {
   const WorldAsset* crowns_of_ = nullptr;  // the world crowns_ was read from
   std::vector<TreeCrown> crowns_;          // its trees, for the map
   int done_frames_ = 0;
+  // Every key on the first hole, then the few a stroke needs; K switches (held for the round).
+  std::optional<bool> all_keys_;
+  bool all_keys() const { return all_keys_.value_or(play_->group().hole_index() == 0); }
 };
 
 void GolfView::view_keys(const std::vector<KeyPress>& keys) {
@@ -186,6 +189,7 @@ void GolfView::view_keys(const std::vector<KeyPress>& keys) {
       case GLFW_KEY_3: camera_ = 3; break;
       case GLFW_KEY_4: camera_ = 4; break;
       case GLFW_KEY_U: units_.imperial = !units_.imperial; break;
+      case GLFW_KEY_K: all_keys_ = !all_keys(); break;
       case GLFW_KEY_S: save_round(); break;
       case GLFW_KEY_R:
         if (replay_) replay_.reset();
@@ -651,7 +655,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       draw_map_marks(*play_, units_, cam, w, h, crowns_, view.label_boxes);
     }
   }
-  draw_golf_hud(*play_, units_, camera_, settling, t);
+  draw_golf_hud(*play_, units_, camera_, settling, t, all_keys());
   // Shown over the course as the ball flies too (S pressed mid-flight is answered at once);
   // its time starts when it is first seen, so a note behind a card is not spent unread.
   const bool note_shows = addressing || flying || settling;

@@ -68,6 +68,9 @@ void draw_putt_read(const GolfPlay& play, const Camera& cam, int w, int h);
 /// The read in a golfer's words: which way it breaks and where to aim, in cups and the
 /// player's units, and how hard ("uphill: hit it as 16 ft"). Empty without a read.
 std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& units);
+/// A putt's break or aim beside the cup: inches (centimetres) inside a yard (a metre), then
+/// the putt's units.
+std::string break_length(double m, const GolfUnits& units);
 /// The green's slopes as arrows on the ground for the scene (ShotScene::set_ground_arrows),
 /// so the golfer and the meter are never drawn under them.
 std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes);

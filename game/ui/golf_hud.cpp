@@ -30,6 +30,14 @@ std::string GolfUnits::putt(double m) const {
   return b;
 }
 
+std::string break_length(double m, const GolfUnits& units) {
+  char by[24];
+  if (units.imperial && m < 0.9144) std::snprintf(by, sizeof by, "%.0f in", std::max(1.0, m / 0.0254));
+  else if (!units.imperial && m < 1.0) std::snprintf(by, sizeof by, "%.0f cm", std::max(1.0, 100.0 * m));
+  else std::snprintf(by, sizeof by, "%s", units.putt(m).c_str());
+  return by;
+}
+
 std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& units) {
   // A break in the units a golfer reads a putt in (inches, centimetres) and in cups: the
   // cup is 108 mm across (Rules of Golf, Definitions "Hole").
@@ -40,23 +48,21 @@ std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& uni
   if (off < kStraight) {
     std::snprintf(aim, sizeof aim, "straight: at the cup");
   } else {
-    char by[24];
-    if (units.imperial && off < 0.9144) std::snprintf(by, sizeof by, "%.0f in", off / 0.0254);
-    else if (!units.imperial && off < 1.0) std::snprintf(by, sizeof by, "%.0f cm", 100.0 * off);
-    else std::snprintf(by, sizeof by, "%s", units.putt(off).c_str());
+    const std::string by = break_length(off, units);
     const double cups = std::max(0.5, std::round(2.0 * off / kCup) / 2.0);
     // Aimed left of the cup the ball must curl back right: it breaks left to right.
     std::snprintf(aim, sizeof aim, "breaks %s: aim %s %s (%g cup%s)", read.aim_off < 0.0 ? "left to right" : "right to left",
-                  by, read.aim_off < 0.0 ? "left" : "right", cups, cups > 1.0 ? "s" : "");
+                  by.c_str(), read.aim_off < 0.0 ? "left" : "right", cups, cups > 1.0 ? "s" : "");
   }
   // His pace against the putt's length: uphill it must be struck as a longer putt on flat.
   std::string pace;
   if (read.plays_as > 0.0) {
     const double margin = std::max(0.3, 0.08 * read.to_cup);  // m: within it the pace is the length's
     const char* slope = read.plays_as > read.to_cup + margin ? "uphill" : read.plays_as < read.to_cup - margin ? "downhill" : "level";
-    pace = std::string(", ") + slope + ": hit it as " + units.putt(read.plays_as) + " (blue mark)";
+    pace = std::string(", ") + slope + ": hit it as " + units.putt(read.plays_as) +
+           (read.power >= MeterInput::kPower.max - 1e-9 ? " (beyond a full putt: the blue mark at the end)" : " (blue mark)");
   }
-  return std::string(aim) + pace + (read.holes ? "" : "; his best line, it may not drop");
+  return std::string(aim) + pace + (read.holes ? "" : "; the caddie's best line, it may not drop");
 }
 
 std::string GolfUnits::speed(double mps) const {
@@ -131,8 +137,10 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     // The result waits until the ball stops: the HUD still shows the stroke being played.
     ImGui::Separator();
     const bool landed = now >= play.last_shot().trajectory.summary.hang_time_s;
-    ImGui::Text("%s: the ball is %s", shooter.c_str(), landed ? "running out" : "in the air");
-    ImGui::TextDisabled("Enter: skip the flight");
+    // A putt never leaves the green: it rolls from the start.
+    const bool putt = play.last_shot().trajectory.summary.apex_m < 0.05;
+    ImGui::Text("%s: the ball is %s", shooter.c_str(), putt ? "rolling" : landed ? "running out" : "in the air");
+    ImGui::TextDisabled(putt ? "Enter: skip the roll" : "Enter: skip the flight");
   } else if (settling) {
     // The ball has stopped: its result, before the next player's view.
     ImGui::Separator();
@@ -166,14 +174,23 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     // Not on a putt: the wind barely moves a ball on the grass; its break is the green's.
     const bool allows = club != "putter" && std::abs(rad_to_deg(play.aim())) >= 0.5 && std::abs(cross) >= kCrossNoted &&
                         (cross > 0.0) == (play.aim() < 0.0);
-    ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left",
-                allows ? (cross > 0.0 ? " (the wind drifts it right)" : " (the wind drifts it left)") : "");
+    if (club == "putter" && r.lie() == "green") {
+      // On the green the aim in the read's words: how far beside the cup the line points.
+      const double off = r.to_pin() * std::tan(play.aim());
+      if (std::abs(off) < 0.005) ImGui::Text("Aim: at the cup");
+      else ImGui::Text("Aim: %s %s of the cup (%.1f deg)", break_length(std::abs(off), units).c_str(), off > 0.0 ? "right" : "left",
+                       std::abs(rad_to_deg(play.aim())));
+    } else {
+      ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left",
+                  allows ? (cross > 0.0 ? " (the wind drifts it right)" : " (the wind drifts it left)") : "");
+    }
     if (const auto& read = play.putt_read(); read && play.human_turn())
       ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());
     if (play.human_turn() && club == "putter" && r.lie() == "green") {
       // On the green the keys a putt needs, in one line: the panel stays clear of the golfer
       // the putting view frames under it.
       ImGui::TextDisabled("Left/Right aim  Space putt  G read  B caddie");
+      ImGui::TextDisabled("Arrows on the green point downhill, red steeper");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
     } else if (play.human_turn() && all_keys) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");

@@ -189,7 +189,11 @@ void GolfView::view_keys(const std::vector<KeyPress>& keys) {
       case GLFW_KEY_3: camera_ = 3; break;
       case GLFW_KEY_4: camera_ = 4; break;
       case GLFW_KEY_U: units_.imperial = !units_.imperial; break;
-      case GLFW_KEY_K: all_keys_ = !all_keys(); break;
+      case GLFW_KEY_K:
+        // On the green the panel keeps its one line of a putt's keys: K is not shown there,
+        // and switches nothing unseen for the holes after.
+        if (play_->round().finished() || play_->round().lie() != "green") all_keys_ = !all_keys();
+        break;
       case GLFW_KEY_S: save_round(); break;
       case GLFW_KEY_R:
         if (replay_) replay_.reset();

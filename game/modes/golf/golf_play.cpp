@@ -284,10 +284,12 @@ void GolfPlay::advance(double t) {
     // The meter's own ends wait for a click the player's lag still has on its way.
     meter_->update(t - setup_.input_latency);
     if (meter_->phase() == MeterClock::Phase::Abandoned) {
+      const bool meter_putting = meter_->putting();
       meter_.reset();
       stage_ = Stage::Aiming;
       ++cancelled_;
-      say("Swing abandoned, no stroke counted (Space: start, Space: power, Space: accuracy)");
+      say(meter_putting ? "Putt abandoned, no stroke counted (Space: start, Space: power)"
+                        : "Swing abandoned, no stroke counted (Space: start, Space: power, Space: accuracy)");
       swing_undone_ = true;
     } else if (const auto m = meter_->result()) {
       last_meter_ = *m;

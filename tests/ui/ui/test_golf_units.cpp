@@ -31,5 +31,14 @@ TEST_CASE("the caddie's read in a golfer's words: the break in inches and cups, 
   r.aim_off = 0.01;
   r.plays_as = 4.1;
   r.holes = false;
-  CHECK(putt_read_words(r, feet) == "straight: at the cup, level: hit it as 13 ft (blue mark); his best line, it may not drop");
+  CHECK(putt_read_words(r, feet) == "straight: at the cup, level: hit it as 13 ft (blue mark); the caddie's best line, it may not drop");
+  // Past the putter's full stroke the mark sits at the meter's end: said.
+  r.power = 1.1;
+  r.plays_as = 20.4;
+  r.to_cup = 17.0;
+  CHECK(putt_read_words(r, feet) ==
+        "straight: at the cup, uphill: hit it as 67 ft (beyond a full putt: the blue mark at the end); the caddie's best line, it may not drop");
+  CHECK(break_length(0.30, feet) == "12 in");
+  CHECK(break_length(1.20, feet) == "4 ft");
+  CHECK(break_length(0.30, metres) == "30 cm");
 }

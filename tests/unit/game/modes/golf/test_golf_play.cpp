@@ -606,7 +606,7 @@ TEST_CASE("G: the caddie reads a putt: his line holes it, breaks the way the gre
   CHECK(downhill >= 8);
 }
 
-TEST_CASE("G off the green says where it reads, and a stroke clears the read", "[modes][golf][putting]") {
+TEST_CASE("G off the green says where it reads; a putt abandoned says so; a stroke clears the read", "[modes][golf][putting]") {
   GolfPlay play(test::assets(), first_hole(), solo("tour"));
   REQUIRE(play.round().lie() != "green");
   play.update({at(IntentKind::ReadGreen, 1.0)}, 1.0);
@@ -620,6 +620,10 @@ TEST_CASE("G off the green says where it reads, and a stroke clears the read", "
   REQUIRE(play.round().lie() == "green");
   play.update({at(IntentKind::ReadGreen, t + 1.0)}, t + 1.0);
   REQUIRE(play.putt_read());
-  play.update({at(IntentKind::CaddiePlays, t + 2.0)}, t + 2.0);
+  // A putt left at the top of its meter is abandoned in a putt's words (two clicks, not three).
+  play.update({at(IntentKind::Swing, t + 1.5)}, t + 30.0);
+  CHECK(play.stage() == GolfPlay::Stage::Aiming);
+  CHECK(play.message() == "Putt abandoned, no stroke counted (Space: start, Space: power)");
+  play.update({at(IntentKind::CaddiePlays, t + 31.0)}, t + 31.0);
   CHECK_FALSE(play.putt_read());
 }

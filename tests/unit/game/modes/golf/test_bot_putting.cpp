@@ -10,30 +10,21 @@
 #include "game/modes/golf/round.hpp"
 #include "physics/units.hpp"
 #include "physics/world.hpp"
+#include "support/ball_on_green.hpp"
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
 
 namespace {
 
-const Course& national() {
-  static const Course c = load_course(test::assets(), "national");
-  return c;
-}
+using test::national;
 
 /// A one-hole round of the national course's hole `n` (0-based) with the ball on its green
 /// `dist` metres from the cup in direction `angle`; nullopt when that spot is not green.
 std::optional<GolfRound> on_green(std::size_t n, double dist, double angle, const GolferSkill& g) {
-  Course c = national();
-  c.holes = {national().holes[n]};
-  c.holes[0].number = 1;
-  const Vec3 pin = c.holes[0].pin;
-  SurfaceContact hit;
-  if (!ground_under(*c.holes[0].world->world, pin.x() + dist * std::cos(angle), pin.z() + dist * std::sin(angle), 400.0,
-                    420.0, &hit))
-    return std::nullopt;
-  c.holes[0].tee = hit.point;
-  GolfRound r(test::assets(), c, g);
+  const std::optional<Course> c = test::national_hole_from_green(n, dist, angle);
+  if (!c) return std::nullopt;
+  GolfRound r(test::assets(), *c, g);
   if (r.lie() != "green") return std::nullopt;
   return r;
 }

@@ -12,6 +12,7 @@
 #include "game/modes/golf/latency_calibration.hpp"
 #include "game/modes/replay.hpp"
 #include "physics/world.hpp"
+#include "support/ball_on_green.hpp"
 #include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
 
@@ -525,30 +526,13 @@ TEST_CASE("match play: H asks before it gives up the hole, another key answers n
   CHECK(play.group().round(0).card().front().conceded);
 }
 
-namespace {
-// The national course's hole `n` with its tee moved onto the green `dist` m from the cup in
-// direction `angle`: a round that starts with a putt. None when that spot is not green.
-std::optional<Course> putt_on(std::size_t n, double dist, double angle) {
-  Course c = load_course(test::assets(), "national");
-  c.holes = {c.holes.at(n)};
-  c.holes[0].number = 1;
-  const Vec3 pin = c.holes[0].pin;
-  SurfaceContact hit;
-  if (!ground_under(*c.holes[0].world->world, pin.x() + dist * std::cos(angle), pin.z() + dist * std::sin(angle), 400.0,
-                    420.0, &hit))
-    return std::nullopt;
-  if (c.holes[0].world->world->material(hit.material).kind != SurfaceKind::Green) return std::nullopt;
-  c.holes[0].tee = hit.point;
-  return c;
-}
-}  // namespace
 
 TEST_CASE("G: the caddie reads a putt: his line holes it, breaks the way the green falls, paced for the slope",
           "[modes][golf][putting]") {
   int read = 0, breaking = 0, uphill = 0, downhill = 0;
   for (std::size_t n = 0; n < 18; ++n) {
     for (int k = 0; k < 4; ++k) {
-      const std::optional<Course> course = putt_on(n, 4.0, kPi / 2.0 * k + 0.3);
+      const std::optional<Course> course = test::national_hole_from_green(n, 4.0, kPi / 2.0 * k + 0.3);
       if (!course) continue;
       GolfPlay play(test::assets(), *course, solo("tour"));
       REQUIRE(play.round().lie() == "green");

@@ -336,7 +336,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         std::snprintf(label, sizeof label, "putt: %s, beyond a putt: 110 %% rolls %s on flat green%s   Space: putt", cup,
                       units.putt(reach).c_str(), last);
       else
-        std::snprintf(label, sizeof label, "putt: %s, %.0f %% rolls that far on flat green%s   Space: putt", cup,
+        std::snprintf(label, sizeof label, "putt: %s; the white mark, %.0f %%, rolls that far on a flat green%s   Space: putt", cup,
                       100.0 * cup_p, last);
     }
   } else if (!meter && play.swing_undone()) {

@@ -47,6 +47,9 @@ struct FlightSummary {
   Vec3 rest_position = Vec3::Zero();
   EndReason end = EndReason::Rest;
   int bounces = 0;
+  /// It never left the ground (a putt; its skid's first instants are no flight): its apex
+  /// stays within 5 cm of the launch point.
+  bool rolled_only() const { return apex_m < 0.05; }
 };
 
 /// Work counters of one simulated shot (benchmarks, tests, the step budget).

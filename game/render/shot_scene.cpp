@@ -529,8 +529,8 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   if (have_shot) {
     const auto& s = trajectory_.summary;
     const double end_t = samples.back().t;
-    // A putt never leaves the ground (its skid's first instants are no flight): no carry.
-    const bool rolled_only = s.apex_m < 0.05;
+    // A putt never leaves the ground: no carry.
+    const bool rolled_only = s.rolled_only();
     // One unit on one trail: a chip that carries 16 m and runs out to 26 m reads in yards both
     // times, not "53 ft" beside "28 yd".
     const double scale = std::max(s.carry_m, s.total_m);

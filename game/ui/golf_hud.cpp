@@ -50,7 +50,7 @@ std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& uni
   } else {
     const std::string by = break_length(off, units);
     const double cups = std::max(0.5, std::round(2.0 * off / kCup) / 2.0);
-    // Aimed left of the cup the ball must curl back right: it breaks left to right.
+    // Aimed left of the cup the ball must come back right: it breaks left to right.
     std::snprintf(aim, sizeof aim, "breaks %s: aim %s %s (%g cup%s)", read.aim_off < 0.0 ? "left to right" : "right to left",
                   by.c_str(), read.aim_off < 0.0 ? "left" : "right", cups, cups > 1.0 ? "s" : "");
   }
@@ -138,7 +138,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     ImGui::Separator();
     const bool landed = now >= play.last_shot().trajectory.summary.hang_time_s;
     // A putt never leaves the green: it rolls from the start.
-    const bool putt = play.last_shot().trajectory.summary.apex_m < 0.05;
+    const bool putt = play.last_shot().trajectory.summary.rolled_only();
     ImGui::Text("%s: the ball is %s", shooter.c_str(), putt ? "rolling" : landed ? "running out" : "in the air");
     ImGui::TextDisabled(putt ? "Enter: skip the roll" : "Enter: skip the flight");
   } else if (settling) {
@@ -400,7 +400,7 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
   ImGui::Text("Spin        %.0f rpm", radps_to_rpm(r.launch.spin.total));
   const double axis = rad_to_deg(r.launch.spin.axis_rad);
   ImGui::Text("Spin axis   %.1f deg", std::abs(axis) < 0.05 ? 0.0 : axis);  // no "-0.0" for a putt
-  const bool putt = r.trajectory.summary.apex_m < 0.05;  // a putt never leaves the ground
+  const bool putt = r.trajectory.summary.rolled_only();
   if (putt && flight_t >= duration(r.trajectory)) {
     ImGui::Separator();
     ImGui::Text("Rolled      %s", units.putt(r.trajectory.summary.total_m).c_str());

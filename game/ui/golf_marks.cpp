@@ -15,10 +15,11 @@ namespace {
 
 ImVec2 px(const Eigen::Vector2d& p) { return ImVec2(static_cast<float>(p(0)), static_cast<float>(p(1))); }
 
-// A closed ring on the ground through `points`, projected; parts behind the camera skipped.
+// A line on the ground through `points`, projected; parts behind the camera skipped.
+// `dashed`: every other segment only.
 void ground_polyline(ImDrawList* dl, const Camera& cam, const std::vector<Vec3>& points, int w, int h, ImU32 colour,
-                     float thickness) {
-  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+                     float thickness, bool dashed = false) {
+  for (std::size_t k = 0; k + 1 < points.size(); k += dashed ? 2 : 1) {
     const auto a = cam.project(points[k], w, h), b = cam.project(points[k + 1], w, h);
     if (a && b) dl->AddLine(px(*a), px(*b), colour, thickness);
   }
@@ -100,15 +101,10 @@ void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h) {
 
 void draw_putt_read(const GolfPlay& play, const Camera& cam, int w, int h) {
   const auto& read = play.putt_read();
-  if (!read || read.value().line.size() < 2) return;
-  // A dotted line a little above the grass (the ball's centre is 21 mm up), in the caddie's
-  // blue as his pace mark on the meter: every other 5 cm step drawn.
-  ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  const std::vector<Vec3>& line = read->line;
-  for (std::size_t k = 0; k + 1 < line.size(); k += 2) {
-    const auto a = cam.project(line[k], w, h), b = cam.project(line[k + 1], w, h);
-    if (a && b) dl->AddLine(px(*a), px(*b), IM_COL32(120, 220, 255, 230), 3.0f);
-  }
+  if (!read) return;
+  // Dotted along the ball's centre (21 mm above the grass), in the caddie's blue as his pace
+  // mark on the meter: every other 5 cm step drawn.
+  ground_polyline(ImGui::GetBackgroundDrawList(), cam, read->line, w, h, IM_COL32(120, 220, 255, 230), 3.0f, true);
 }
 
 std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes) {

@@ -167,13 +167,6 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     // 29 yd with a 78 yd wedge is not a full swing).
     if (const auto& plan = play.caddie_plan(); plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn())
       ImGui::Text("Caddie: a part swing, %.0f %% power (blue mark)", 100.0 * plan->meter.power);
-    // An aim off the pin against a crosswind says why: the ball drifts back with the wind.
-    const HoleWind hw = r.wind();
-    const double cross = hw.speed * std::sin(hw.toward - r.line_to_pin());  // m/s, + toward the right
-    constexpr double kCrossNoted = 2.0;  // m/s (4.5 mph): moves a full shot's landing by metres
-    // Not on a putt: the wind barely moves a ball on the grass; its break is the green's.
-    const bool allows = club != "putter" && std::abs(rad_to_deg(play.aim())) >= 0.5 && std::abs(cross) >= kCrossNoted &&
-                        (cross > 0.0) == (play.aim() < 0.0);
     if (club == "putter" && r.lie() == "green") {
       // On the green the aim in the read's words: how far beside the cup the line points.
       const double off = r.to_pin() * std::tan(play.aim());
@@ -181,8 +174,17 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       else ImGui::Text("Aim: %s %s of the cup (%.1f deg)", break_length(std::abs(off), units).c_str(), off > 0.0 ? "right" : "left",
                        std::abs(rad_to_deg(play.aim())));
     } else {
-      ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), play.aim() >= 0 ? "right" : "left",
-                  allows ? (cross > 0.0 ? " (the wind drifts it right)" : " (the wind drifts it left)") : "");
+      // The caddie's aim off the pin says why; the player's own says nothing.
+      const bool right = play.aim() >= 0.0;
+      const char* why = "";
+      switch (play.aim_why()) {
+        case GolfPlay::AimWhy::Corner: why = " (the dogleg's corner)"; break;
+        case GolfPlay::AimWhy::WayOut: why = " (the way past the tree)"; break;
+        case GolfPlay::AimWhy::Wind: why = right ? " (the wind drifts it left)" : " (the wind drifts it right)"; break;
+        case GolfPlay::AimWhy::Line: why = " (where the caddie sees it finish nearest)"; break;
+        case GolfPlay::AimWhy::Pin: break;
+      }
+      ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), right ? "right" : "left", why);
     }
     if (const auto& read = play.putt_read(); read && play.human_turn())
       ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());
@@ -319,8 +321,12 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
     else
       std::snprintf(cup, sizeof cup, "cup %s, plays as %s of green (%s first)", units.putt(to_cup).c_str(),
                     units.putt(plays).c_str(), play.putt_crosses().c_str());
-    dl->AddTriangleFilled(ImVec2(at(cup_p) - 6, y0 - 10), ImVec2(at(cup_p) + 6, y0 - 10), ImVec2(at(cup_p), y0),
-                          IM_COL32(255, 255, 255, 255));
+    // The cup's mark in its own colour, through the bar (the caption, above it, names it):
+    // white is the bar's 100 % line and the last putt's power, blue the caddie's read.
+    const ImU32 kCupMark = IM_COL32(90, 225, 120, 255);
+    const float xc = at(std::min(cup_p, MeterBar::kHigh));
+    dl->AddLine(ImVec2(xc, y0 - 2), ImVec2(xc, y0 + bh + 2), kCupMark, 2.0f);
+    dl->AddTriangleFilled(ImVec2(xc - 6, y0 - 10), ImVec2(xc + 6, y0 - 10), ImVec2(xc, y0), kCupMark);
     if (meter) {
       std::snprintf(label, sizeof label, "putt: %.0f %% rolls %s on flat green (%s)   Esc: cancel", 100.0 * shown,
                     units.putt(play.flat_roll(shown)).c_str(), cup);
@@ -336,7 +342,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         std::snprintf(label, sizeof label, "putt: %s, beyond a putt: 110 %% rolls %s on flat green%s   Space: putt", cup,
                       units.putt(reach).c_str(), last);
       else
-        std::snprintf(label, sizeof label, "putt: %s; the white mark, %.0f %%, rolls that far on a flat green%s   Space: putt", cup,
+        std::snprintf(label, sizeof label, "putt: %s; the green cup mark, %.0f %%, rolls that far on a flat green%s   Space: putt", cup,
                       100.0 * cup_p, last);
     }
   } else if (!meter && play.swing_undone()) {

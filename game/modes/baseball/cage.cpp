@@ -26,7 +26,7 @@ std::string inches(double m) {
 
 }  // namespace
 
-std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m) {
+std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, bool height_read) {
   // Why the bat missed: early or late, the ball past the end of the bat; or above or below it
   // where they crossed (off time the crossing moves: early over the ball, late under it).
   constexpr double kReach = 0.066;  // m, the bat's and the ball's radii together (95 %)
@@ -35,8 +35,9 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m) {
   const double under = r.crossing_undercut + beyond_m, miss = std::abs(under) - kReach;
   // Past the end and off height too (a crossing there has a height; a bat through the zone
   // crossed nowhere): the height said as well, so the next swing mends both.
+  // With the height read for him (timing only) the height is not his to mend: not said.
   char height[48] = "";
-  if (miss >= 0.01) std::snprintf(height, sizeof height, ", and %s %s it", inches(miss).c_str(), under > 0.0 ? "under" : "over");
+  if (miss >= 0.01 && !height_read) std::snprintf(height, sizeof height, ", and %s %s it", inches(miss).c_str(), under > 0.0 ? "under" : "over");
   if (r.through)
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", when, std::abs(timing_ms),
                   timing_ms >= 0 ? "not around yet" : "already through the zone");
@@ -45,6 +46,11 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m) {
     // still coming round (late) or already round past the ball (early), over a middle pitch too.
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat (%s)%s", when, std::abs(timing_ms),
                   timing_ms >= 0 ? "its end not yet round to the ball" : "its end already round past the ball", height);
+  else if (miss > 0.0 && height_read)
+    // His timing is what he controls; where the bat crossed follows from it and the pro's read
+    // (early crosses over the ball, late under it).
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s %s the ball (timing only: the pro set its height)",
+                  when, std::abs(timing_ms), inches(miss).c_str(), under > 0.0 ? "under" : "over");
   else if (miss > 0.0)
     std::snprintf(text, sizeof text, "Swinging strike: the bat passed %s %s the ball", inches(miss).c_str(), under > 0.0 ? "under" : "over");
   else
@@ -235,7 +241,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     batted_at_ = t;
     stage_ = Stage::Batted;
   } else {
-    call_text_ = miss_call(last_.result, pressed_ms, beyond_m);
+    call_text_ = miss_call(last_.result, pressed_ms, beyond_m, timing_only_ && !by_pro);
     stage_ = Stage::Called;
   }
   if (live_) {

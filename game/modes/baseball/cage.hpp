@@ -24,7 +24,9 @@ namespace sweetspot {
 /// (through the zone, past the end of the bat), or how far over or under the ball the bat went.
 /// `timing_ms`: the press's timing as the player felt it; `beyond_m`: how much farther under
 /// (+) or over the ball the bat was set than the swing's range let the physics take.
-std::string miss_call(const SwingResult& result, double timing_ms, double beyond_m = 0.0);
+/// `height_read`: the bat's height was set for the player (timing only), so a miss is said
+/// by its timing, the height only as where the bat went.
+std::string miss_call(const SwingResult& result, double timing_ms, double beyond_m = 0.0, bool height_read = false);
 
 class BattingCage {
  public:

@@ -106,19 +106,40 @@ void GolfPlay::choose_club() {
   putt_read_.reset();
   if (r.finished()) return;
   // The caddie's club plays like the distance today: the wind, the lie, the ground; off the
-  // green he points the aim where he would play (a dogleg's corner when the cup is out of
-  // reach, the way out from behind a tree), on it at the cup: the player reads the putt.
+  // green he points the aim where he would play it (a dogleg's corner when the cup is out of
+  // reach, the way out from behind a tree, upwind of the pin in a crosswind, above it on a
+  // slope), on the green at the cup: the player reads the putt (G asks for his read).
   aim_ = 0.0;
   if (r.lie() == "green") {
     club_ = bag_index("putter");
   } else {
     const StrokeInput plan = caddie().intend(r);
     club_ = bag_index(plan.club);
-    // Behind a tree he points the way out as well: his club aimed at the flag (the aim is
-    // still 0 here) would strike it.
-    if (r.next_bend() || tree_in_the_way(plan.club)) aim_ = plan.aim;
     caddie_plan_ = plan;
+    // Asked before his aim is taken (at his power): whether his club aimed at the flag would
+    // strike a tree.
+    const bool tree_at_flag = tree_in_the_way(plan.club).has_value();
+    aim_ = plan.aim;
+    aim_why_ = aim_why_for(r, tree_at_flag);
   }
+}
+
+GolfPlay::AimWhy GolfPlay::aim_why_for(const GolfRound& r, bool tree_at_flag) const {
+  // Under half a degree the aim reads "at the pin" (the HUD's 0.0 deg): no reason to tell.
+  if (std::abs(aim_) < deg_to_rad(0.5)) return AimWhy::Pin;
+  if (r.next_bend()) return AimWhy::Corner;
+  if (tree_at_flag) return AimWhy::WayOut;
+  // The wind's part: a crosswind that carries the ball back toward the pin from the aim.
+  const HoleWind hw = r.wind();
+  const double cross = hw.speed * std::sin(hw.toward - r.line_to_pin());  // m/s, + toward the right
+  constexpr double kCrossNoted = 2.0;  // m/s (4.5 mph): moves a full shot's landing by metres
+  if (std::abs(cross) >= kCrossNoted && (cross > 0.0) == (aim_ < 0.0)) return AimWhy::Wind;
+  return AimWhy::Line;
+}
+
+GolfPlay::AimWhy GolfPlay::aim_why() const {
+  if (!caddie_plan_ || aim_ != caddie_plan_->aim) return AimWhy::Pin;
+  return aim_why_;
 }
 
 const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double power) const {

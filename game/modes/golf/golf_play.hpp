@@ -78,6 +78,12 @@ class GolfPlay {
   const std::optional<PuttRead>& putt_read() const { return putt_read_; }
   const std::string& club() const;
   double aim() const { return aim_; }              ///< rad right of the line to the pin
+  /// Why the aim points off the pin, as the caddie set it: the dogleg's corner, the way out
+  /// past a tree, the crosswind's drift held off, or his line (a slope, a bank, the curve:
+  /// where his tries finished nearest the pin).
+  /// Pin once the player has moved the aim: then it is his own, and no reason is told.
+  enum class AimWhy { Pin, Corner, WayOut, Wind, Line };
+  AimWhy aim_why() const;
   const std::optional<MeterClock>& meter() const { return meter_; }
   /// The last stroke's physics and the time it was struck (its flight runs from then).
   const ShotResult& last_shot() const { return last_; }
@@ -172,6 +178,9 @@ class GolfPlay {
   void strike(const StrokeInput& s, bool bot, double t);
   void begin_turn(double t);
   void choose_club();
+  /// Why the aim just taken from the caddie points off the pin (`tree_at_flag`: his club
+  /// aimed at the flag strikes a tree).
+  AimWhy aim_why_for(const GolfRound& r, bool tree_at_flag) const;
   void new_round(double t);
   void restart_hole(double t);
   void build_roll_table();
@@ -212,6 +221,7 @@ class GolfPlay {
   bool swing_undone_ = false;
   std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green
   std::optional<StrokeInput> caddie_plan_;
+  AimWhy aim_why_ = AimWhy::Pin;  ///< why the caddie's aim points off the pin (aim_why())
   std::optional<PuttRead> putt_read_;
   double putt_plays_as_ = 0.0;
   std::string putt_crosses_;

@@ -158,11 +158,14 @@ TEST_CASE("a miss is called in a hitter's words and inches, never '0 in'", "[mod
   CHECK(miss_call(r, 3.0, 0.06) == "Swinging strike: the bat passed 3 in under the ball");
   r.crossing_undercut = -0.08;
   CHECK(miss_call(r, 3.0, -0.10) == "Swinging strike: the bat passed 4 in over the ball");
+  // Timing only: the height was the pro's read, so the miss is said by the player's timing.
+  CHECK(miss_call(r, 23.4, -0.10, true) == "Swinging strike: late by 23 ms, the bat 4 in over the ball (timing only: the pro set its height)");
   // Past the end and over the ball as well: both said.
   r.crossing_undercut = -0.12;
   r.past_end = true;
   CHECK(miss_call(r, -20.0) ==
         "Swinging strike: early by 20 ms, past the end of the bat (its end already round past the ball), and 2 in over it");
+  CHECK(miss_call(r, -20.0, 0.0, true) == "Swinging strike: early by 20 ms, past the end of the bat (its end already round past the ball)");
   r.crossing_undercut = 0.0;
   CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, past the end of the bat (its end already round past the ball)");
   CHECK(miss_call(r, 17.0) == "Swinging strike: late by 17 ms, past the end of the bat (its end not yet round to the ball)");

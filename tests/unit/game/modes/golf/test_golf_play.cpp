@@ -447,14 +447,48 @@ TEST_CASE("the club's carry from here is the stroke's own physics: the hole's wi
   const Vec3 into = blowing.holes[0].tee - blowing.holes[0].pin;
   blowing.holes[0].wind_toward = std::atan2(into.z(), into.x());
   GolfPlay a(test::assets(), still, calm), b(test::assets(), blowing, windy);
+  // Along the aim the player is handed (the caddie's, off the pin where the ground asks).
   StrokeInput in;
   in.club = "5-iron";
+  in.aim = a.aim();
   const double calm_carry = a.carry_here("5-iron");
   CHECK(calm_carry == a.round().simulate(in).trajectory.summary.carry_m);
   CHECK(calm_carry > 100.0);
   CHECK(b.carry_here("5-iron") < calm_carry - 5.0);  // held up by the wind
+  in.aim = b.aim();
   CHECK(b.carry_here("5-iron") == b.round().simulate(in).trajectory.summary.carry_m);
   CHECK(a.carry_here("putter") == 0.0);
+}
+
+TEST_CASE("in a crosswind the caddie aims upwind of the pin, the same way on every tee, and says why", "[modes][golf]") {
+  // The links' first hole in a 7 m/s (16 mph) wind across the line, from either side: the
+  // player is handed the caddie's aim, upwind of the pin, and his stroke aimed there finishes
+  // nearer the pin's line than the same club aimed at the flag. Calm, the aim is the pin's.
+  for (const double side : {-1.0, 1.0}) {
+    Course c = first_hole();
+    const Vec3 line = c.holes[0].pin - c.holes[0].tee;
+    c.holes[0].wind_speed = 7.0;
+    c.holes[0].wind_toward = std::atan2(line.z(), line.x()) + side * kPi / 2.0;  // + side: toward the right
+    const GolfPlay play(test::assets(), c, solo("scratch"));
+    REQUIRE(play.caddie_plan());
+    INFO("wind toward the " << (side > 0 ? "right" : "left") << ": " << play.club() << " aimed " << play.aim() << " rad");
+    CHECK(play.aim() == play.caddie_plan()->aim);
+    CHECK(play.aim() * side < -0.01);  // upwind: left of the pin in a wind toward the right
+    CHECK(play.aim_why() == GolfPlay::AimWhy::Wind);
+    StrokeInput at_flag = *play.caddie_plan();
+    at_flag.aim = 0.0;
+    const GolfRound& r = play.round();
+    const auto off_line = [&](const StrokeInput& in) {
+      const Vec3 rest = r.simulate(in).trajectory.summary.rest_position - r.ball();
+      return std::abs(std::sin(std::atan2(rest.z(), rest.x()) - r.line_to_pin()) * std::hypot(rest.x(), rest.z()));
+    };
+    CHECK(off_line(*play.caddie_plan()) < 0.5 * off_line(at_flag));
+  }
+  Course calm = first_hole();
+  calm.holes[0].wind_speed = 0.0;
+  const GolfPlay still(test::assets(), calm, solo("scratch"));
+  CHECK(std::abs(still.aim()) < deg_to_rad(0.5));
+  CHECK(still.aim_why() == GolfPlay::AimWhy::Pin);
 }
 
 TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", "[modes][golf]") {

@@ -51,7 +51,7 @@ Camera batter_view(bool batter_left) {
   return c;
 }
 
-void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
+void draw_zone(const BattingCage& c, const Camera& cam, int w, int h, bool crossed) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const auto pt = [&](double y, double z) -> std::optional<ImVec2> {
     const auto p = cam.project(Vec3(0.0, y, z), w, h);
@@ -61,9 +61,10 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h) {
   const double lo = BattingCage::kZoneLow, hi = BattingCage::kZoneHigh, half = BattingCage::kPlateHalf;
   const auto a = pt(hi, -half), b = pt(hi, half), d = pt(lo, half), e = pt(lo, -half);
   if (a && b && d && e) dl->AddQuad(*a, *b, *d, *e, IM_COL32(255, 255, 255, 200), 2.0f);
-  // Where the pitch crossed the front of the plate, once it has (a taken pitch or a miss):
-  // the call's evidence, green in the zone, red outside, as big as the ball.
-  if (c.stage() == Stage::Called && !c.batted()) {
+  // Where the pitch crossed the front of the plate, once it has (a taken pitch or a miss;
+  // `crossed`: the ball shown is there): the call's evidence, green in the zone, red
+  // outside, as big as the ball.
+  if (c.stage() == Stage::Called && !c.batted() && crossed) {
     const Vec3& at = c.pitch().plate;
     const double r = c.ball_radius();
     const auto centre = pt(at.y(), at.z()), edge = pt(at.y(), at.z() + r);
@@ -313,7 +314,9 @@ class CageView final : public ModeView {
       const double flight_end = duration(c.played());
       // The ball holds at the plate, or where the batted ball stopped, while the people go on
       // (their clock: cage_people).
-      const double t = c.stage() == Stage::Pitching ? std::min(c.pitch_clock(in.now), c.pitch().flight_time)
+      // A missed pitch flies on to the plate (a swing through early does not stop it there).
+      const bool pitch_in_air = c.stage() == Stage::Pitching || (c.stage() == Stage::Called && !batted);
+      const double t = pitch_in_air ? std::min(c.pitch_clock(in.now), c.pitch().flight_time)
                        : batted ? (c.stage() == Stage::Batted ? std::clamp(in.now - c.batted_at(), 0.0, flight_end) : flight_end)
                                 : c.pitch().flight_time;
       // The batted ball framed below the HUD panel and the call under it (last frame's
@@ -324,7 +327,7 @@ class CageView final : public ModeView {
       const bool moving = c.stage() == Stage::Pitching || batted;
       renderer.draw(scene_->build(cam, moving ? cage_scene_time(c, in.now) : t, w, h), cam);
       renderer.blit_to(0, w, h);
-      if (!batted) draw_zone(c, cam, w, h);
+      if (!batted) draw_zone(c, cam, w, h, t >= c.pitch().flight_time);
     }
     float panel_bottom = 0.0f;
     if (!panels_hidden_) {

@@ -76,6 +76,9 @@ namespace {
 // The words around the meter sit on a dark band so the view behind (a green's slope arrows,
 // sand, sky) never runs through them.
 constexpr ImU32 kBand = IM_COL32(15, 20, 25, 170);
+// A run past the carry worth saying (m, 10 yd): a full iron's usual release on a fairway is
+// less, a drive's or a flyer's from the rough more.
+constexpr double kRunNoted = 9.144;
 
 constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
 
@@ -161,8 +164,12 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     else if (const std::optional<double> tree = play.tree_in_the_way(club))
       ImGui::Text("Club: %s (carry %s, a tree in the way at %s)", club.c_str(), units.distance(carry).c_str(),
                   units.distance(*tree).c_str());
-    else ImGui::Text("Club: %s (carry %s, plays %s here)", club.c_str(), units.distance(carry).c_str(),
-                     units.distance(play.carry_here(club)).c_str());
+    else if (const double here = play.carry_here(club), stops = play.stops_here(club); stops - here >= kRunNoted)
+      // A run worth counting (the rough's flyer, a firm fairway): where it stops as well, the
+      // distance the caddie chose it by.
+      ImGui::Text("Club: %s (carry %s; here %s, stops %s)", club.c_str(), units.distance(carry).c_str(),
+                  units.distance(here).c_str(), units.distance(stops).c_str());
+    else ImGui::Text("Club: %s (carry %s, plays %s here)", club.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing).
     if (const auto& plan = play.caddie_plan(); plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn())

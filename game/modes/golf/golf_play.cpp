@@ -153,13 +153,18 @@ const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double 
   in.aim = aim_;
   in.meter.power = power;
   const FlightSummary f = r.simulate(in).trajectory.summary;
-  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, r.first_touch_in_a_tree(f)};
+  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, r.first_touch_in_a_tree(f)};
   return *slot;
 }
 
 double GolfPlay::carry_here(const std::string& club) const {
   if (round().finished() || club == "putter") return 0.0;
   return flown_here(club, 1.0).carry;
+}
+
+double GolfPlay::stops_here(const std::string& club) const {
+  if (round().finished() || club == "putter") return 0.0;
+  return flown_here(club, 1.0).total;
 }
 
 std::optional<double> GolfPlay::tree_in_the_way(const std::string& club) const {

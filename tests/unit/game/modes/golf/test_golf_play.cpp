@@ -438,7 +438,7 @@ TEST_CASE("restart during the round's last flight restarts the last hole, not pa
 
 TEST_CASE("the club's carry from here is the stroke's own physics: the hole's wind and the lie", "[modes][golf]") {
   // The HUD shows each club's bag carry (calm, flat fairway) beside its carry from where the
-  // ball lies in this hole's wind: the caddie's club is picked by the second.
+  // ball lies in this hole's wind, and where that swing stops (the caddie picks by it).
   GolfSetup calm = solo("amateur"), windy = solo("amateur");
   calm.options.seed = windy.options.seed = 5;
   Course still = first_hole(), blowing = first_hole();
@@ -458,6 +458,12 @@ TEST_CASE("the club's carry from here is the stroke's own physics: the hole's wi
   in.aim = b.aim();
   CHECK(b.carry_here("5-iron") == b.round().simulate(in).trajectory.summary.carry_m);
   CHECK(a.carry_here("putter") == 0.0);
+  // Where the same swing stops, the distance the caddie picks by: past the carry on this
+  // fairway (the 5-iron runs ~15 m), and the stroke's own.
+  in.aim = a.aim();
+  CHECK(a.stops_here("5-iron") == a.round().simulate(in).trajectory.summary.total_m);
+  CHECK(a.stops_here("5-iron") > calm_carry + 5.0);
+  CHECK(a.stops_here("putter") == 0.0);
 }
 
 TEST_CASE("in a crosswind the caddie aims upwind of the pin, the same way on every tee, and says why", "[modes][golf]") {

@@ -146,10 +146,12 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys) {
   // events, fair balls only, so a long foul is not the session's longest hit.
   int n = 0, contact = 0, fair = 0, hard = 0, hr = 0;
   double ev = 0.0, la = 0.0, longest = 0.0;
-  // Only what the player has been told (a ball still in the air counts from its call), and
-  // only his own swings: the pro's (B) are his to show, not the player's record.
+  // The swing and the contact count as soon as they happen (the call above says "off the
+  // bat"); fair or foul and how far only once the play is called (a ball still in the air
+  // counts from its call). Only his own swings: the pro's (B) are his to show, not the
+  // player's record.
   int pro = 0;
-  for (std::size_t i = 0; i < c.swings_told(); ++i) {
+  for (std::size_t i = 0; i < c.swings().size(); ++i) {
     const SwingRecord& s = c.swings()[i];
     if (s.by_pro) {
       ++pro;
@@ -158,7 +160,7 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys) {
     ++n;
     if (!s.result.contact) continue;
     ++contact;
-    if (s.result.outcome == BattedOutcome::Foul) continue;
+    if (i >= c.swings_told() || s.result.outcome == BattedOutcome::Foul) continue;
     ++fair;
     ev += mps_to_mph(s.result.shot.launch.ball_speed);
     la += rad_to_deg(s.result.shot.launch.vertical_angle);
@@ -169,13 +171,13 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys) {
   }
   ImGui::Text("Your swings %d, contact %d, fair %d, home runs %d", n, contact, fair, hr);
   if (pro > 0) ImGui::TextDisabled("(and %d by the pro, B: not in your figures)", pro);
-  if (c.swings_told() > 0) {
-    // Statcast's bat tracking: the last swing told, and the told swings' squared-up and blast
-    // counts (the same swings as the line above).
-    const SwingRecord& last = c.swings()[c.swings_told() - 1];
+  if (!c.swings().empty()) {
+    // Statcast's bat tracking: the last swing (the bat's own figures, known at contact), and
+    // the swings' squared-up and blast counts (the same swings as the line above).
+    const SwingRecord& last = c.swings().back();
     const BatTracking& t = last.result.tracking;
     int squared = 0, blasts = 0;
-    for (std::size_t i = 0; i < c.swings_told(); ++i) {
+    for (std::size_t i = 0; i < c.swings().size(); ++i) {
       if (c.swings()[i].by_pro) continue;
       squared += c.swings()[i].result.tracking.is_squared_up;
       blasts += c.swings()[i].result.tracking.blast;

@@ -57,7 +57,9 @@ std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& uni
   // His pace against the putt's length: uphill it must be struck as a longer putt on flat.
   std::string pace;
   if (read.plays_as > 0.0) {
-    const double margin = std::max(0.3, 0.08 * read.to_cup);  // m: within it the pace is the length's
+    // m: within it the pace is the length's; at least the half foot the pace's words round to
+    // (a 2 ft putt struck as 3 ft is uphill).
+    const double margin = std::max(0.15, 0.08 * read.to_cup);
     const char* slope = read.plays_as > read.to_cup + margin ? "uphill" : read.plays_as < read.to_cup - margin ? "downhill" : "level";
     pace = std::string(", ") + slope + ": hit it as " + units.putt(read.plays_as) +
            (read.power >= MeterInput::kPower.max - 1e-9 ? " (beyond a full putt: the blue mark at the end)" : " (blue mark)");
@@ -169,7 +171,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       // distance the caddie chose it by.
       ImGui::Text("Club: %s (carry %s; here %s, stops %s)", club.c_str(), units.distance(carry).c_str(),
                   units.distance(here).c_str(), units.distance(stops).c_str());
-    else ImGui::Text("Club: %s (carry %s, plays %s here)", club.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
+    else ImGui::Text("Club: %s (carry %s; here %s)", club.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing).
     if (const auto& plan = play.caddie_plan(); plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn())
@@ -409,7 +411,9 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
   }
   ImGui::Text("Ball speed  %s", units.speed(r.launch.ball_speed).c_str());
   ImGui::Text("Launch      %.1f deg", rad_to_deg(r.launch.vertical_angle));
-  ImGui::Text("Direction   %.1f deg %s", std::abs(rad_to_deg(r.launch.horizontal_angle)), r.launch.horizontal_angle >= 0 ? "R" : "L");
+  // A start line that rounds to 0.0 has no side.
+  const double direction = std::round(10.0 * rad_to_deg(r.launch.horizontal_angle)) / 10.0;
+  ImGui::Text("Direction   %.1f deg%s", std::abs(direction), direction > 0.0 ? " R" : direction < 0.0 ? " L" : "");
   ImGui::Text("Spin        %.0f rpm", radps_to_rpm(r.launch.spin.total));
   const double axis = rad_to_deg(r.launch.spin.axis_rad);
   ImGui::Text("Spin axis   %.1f deg", std::abs(axis) < 0.05 ? 0.0 : axis);  // no "-0.0" for a putt

@@ -294,7 +294,14 @@ void BattingCage::apply(const Intent& in) {
       if (in.kind == IntentKind::Swing && stage_ == Stage::Called && t - taken_at_ < kLateSwing) {
         // A swing pressed just after the pitch went by: too late, and not a call for the next;
         // said beside the call, so the press is not lost without a word.
-        if (call_text_.find("too late") == std::string::npos) call_text_ += "   (your swing came too late: the pitch was by)";
+        // How late in the player's own time (the pitch plays slowed), as a swing's call says it:
+        // past the swing's reach the ball is in the catcher's glove, so the pitch was taken.
+        if (call_text_.find("too late") == std::string::npos) {
+          const double late_ms = 1000.0 * (t - released_at_ - pitch_.flight_time / kPitchTimeScale);
+          char late[96];
+          std::snprintf(late, sizeof late, "   (your swing came %.0f ms too late: the pitch was by)", late_ms);
+          call_text_ += late;
+        }
         break;
       }
       if (stage_ != Stage::Pitching) {

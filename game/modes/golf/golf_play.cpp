@@ -412,8 +412,11 @@ void GolfPlay::apply(const Intent& in) {
       break;
     case Stage::Aiming:
       if (!human_turn()) {
-        // A bot's turn: Enter lets it swing at once.
+        // A bot's turn: Enter lets it swing at once. A stroke's key is not lost without a
+        // word: whose turn it is, and how to hurry it.
         if (in.kind == IntentKind::Continue) turn_at_ = t - kBotAddress;
+        else if (in.kind == IntentKind::Swing || in.kind == IntentKind::CaddiePlays)
+          say(player_info().name + " is to play, not you (Enter: let him swing now)");
         break;
       }
       switch (in.kind) {

@@ -38,6 +38,14 @@ TEST_CASE("the caddie's read in a golfer's words: the break in inches and cups, 
   r.to_cup = 17.0;
   CHECK(putt_read_words(r, feet) ==
         "straight: at the cup, uphill: hit it as 67 ft (beyond a full putt: the blue mark at the end); the caddie's best line, it may not drop");
+  // A short putt's pace: half a foot more than its length is uphill, as its words show it.
+  r.power = 0.3;
+  r.holes = true;
+  r.to_cup = 0.61;
+  r.plays_as = 0.9;
+  CHECK(putt_read_words(r, feet) == "straight: at the cup, uphill: hit it as 3 ft (blue mark)");
+  r.plays_as = 0.66;
+  CHECK(putt_read_words(r, feet) == "straight: at the cup, level: hit it as 2 ft (blue mark)");
   CHECK(break_length(0.30, feet) == "12 in");
   CHECK(break_length(1.20, feet) == "4 ft");
   CHECK(break_length(0.30, metres) == "30 cm");

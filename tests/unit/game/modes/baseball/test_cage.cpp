@@ -218,6 +218,9 @@ TEST_CASE("Space pressed a beat after a pitch went by is a late swing, not a cal
   // Not lost without a word: the call says the swing came too late.
   CHECK_THAT(cage.call_text(), Catch::Matchers::StartsWith("Called strike") || Catch::Matchers::StartsWith("Ball"));
   CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("too late"));
+  // By how much in his own time: the 150 ms of pitch time it took to go by (300 ms slowed)
+  // and his 200 ms after that.
+  CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("came 500 ms too late"));
   // Once he has had time to see the call, Space asks for the next pitch again.
   cage.update({at(IntentKind::Swing, by + 0.2 + BattingCage::kLateSwing)}, by + 0.3 + BattingCage::kLateSwing);
   CHECK(cage.stage() == BattingCage::Stage::Pitching);

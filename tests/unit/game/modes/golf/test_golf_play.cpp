@@ -217,8 +217,11 @@ TEST_CASE("a bot takes its own turn, and a stroke's result is told once the ball
   CHECK(play.player() == 1);
   CHECK_FALSE(play.human_turn());
   const double turn = 3.0 + flight;
-  play.update({at(IntentKind::Swing, turn + 0.1)}, turn + 0.2);  // your key does nothing on its turn
+  // Your keys strike nothing on its turn, and are not dropped without a word.
+  play.update({at(IntentKind::Swing, turn + 0.1), at(IntentKind::CaddiePlays, turn + 0.15)}, turn + 0.2);
   CHECK(play.stage() == GolfPlay::Stage::Aiming);
+  CHECK(play.group().round(0).card().back().strokes == 1);
+  CHECK_THAT(play.message(), Catch::Matchers::Contains("is to play, not you"));
   play.update({}, turn + GolfPlay::kBotAddress + 0.01);
   CHECK(play.stage() == GolfPlay::Stage::Flying);
   CHECK(play.group().round(1).card().back().strokes == 1);

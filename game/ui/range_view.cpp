@@ -189,7 +189,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
     renderer.draw(scene_->build(cam, t, w, h), cam);
     renderer.blit_to(0, w, h);
     // The range's scene has no flag meshes: each flag drawn whole, with its distance.
-    for (const Vec3& p : RangePlay::targets()) draw_cup_and_flag(cam, p, w, h, false, units_.distance(p.x()));
+    for (const Vec3& p : RangePlay::targets(units_.imperial)) draw_cup_and_flag(cam, p, w, h, false, units_.distance(p.x()));
   }
   draw_panel(w, flying && t < play_->last_shot().trajectory.summary.hang_time_s);
   if (hit) draw_launch_panel(play_->last_shot(), units_, w, t);  // the last ball's numbers, its carry once it lands

@@ -15,12 +15,13 @@ RangePlay::RangePlay(const Assets& assets, const GolferSkill& skill, int shots_p
 
 const std::string& RangePlay::club() const { return golf_bag()[club_]; }
 
-std::vector<Vec3> RangePlay::targets() {
+std::vector<Vec3> RangePlay::targets(bool imperial) {
   // m left (-) or right (+) of the line: 4-7 deg apart as the tee's camera sees them, clear of
   // the stripes' numbers just left of the line; the farthest on it.
   constexpr double kOff[] = {-8.0, 10.0, -14.0, 14.0, 0.0};
   std::vector<Vec3> out;
-  for (int k = 0; k < 5; ++k) out.emplace_back(yd_to_m(50.0 * (k + 1)), 0.0, kOff[k]);
+  const double step = imperial ? yd_to_m(50.0) : 50.0;  // m
+  for (int k = 0; k < 5; ++k) out.emplace_back(step * (k + 1), 0.0, kOff[k]);
   return out;
 }
 

@@ -41,9 +41,10 @@ class RangePlay {
   const std::string& message() const { return message_; }
   const GolferSkill& skill() const { return skill_; }
   /// The target flags on the ground (m, the tee at the origin, +x down the range): every
-  /// 50 yd out to 250 yd, set off the line left and right in turn as a range's greens are,
-  /// so that from the tee each stands on its own instead of one pole in front of the next.
-  static std::vector<Vec3> targets();
+  /// 50 yd out to 250 yd (`imperial`), else every 50 m out to 250 m, as the ground's stripes
+  /// are marked; set off the line left and right in turn as a range's greens are, so that
+  /// from the tee each stands on its own instead of one pole in front of the next.
+  static std::vector<Vec3> targets(bool imperial = true);
 
  private:
   void apply(const Intent& in);

@@ -145,3 +145,14 @@ TEST_CASE("the range caddie's swings come from the session's seed", "[modes][gol
   CHECK(caddie_carries(3) == caddie_carries(3));
   CHECK(caddie_carries(3) != caddie_carries(4));
 }
+
+TEST_CASE("the range's flags stand every 50 yd, or every 50 m for a metric golfer, as the stripes are marked", "[modes][golf]") {
+  const std::vector<Vec3> yards = RangePlay::targets(true), metres = RangePlay::targets(false);
+  REQUIRE(yards.size() == 5);
+  REQUIRE(metres.size() == 5);
+  for (std::size_t k = 0; k < 5; ++k) {
+    CHECK(yards[k].x() == Approx(0.9144 * 50.0 * static_cast<double>(k + 1)));  // 1 yd = 0.9144 m exactly
+    CHECK(metres[k].x() == Approx(50.0 * static_cast<double>(k + 1)));
+    CHECK(metres[k].z() == yards[k].z());  // the same places off the line
+  }
+}

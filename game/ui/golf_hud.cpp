@@ -268,7 +268,8 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optio
   const float x0 = bar.x0, y0 = bar.y0, bw = bar.bw, bh = bar.bh;
   const auto at = [&](double f) { return bar.at(f); };
   ImDrawList* dl = ImGui::GetForegroundDrawList();
-  dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + bw, y0 + bh), IM_COL32(20, 24, 30, 220), 4.0f);
+  // Opaque: a yardage stripe or its number on the ground behind it would read as a mark.
+  dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + bw, y0 + bh), IM_COL32(20, 24, 30, 255), 4.0f);
   if (!putting) {
     // The accuracy mark, as wide as the difficulty's perfect window (at least a sliver).
     const double half = meter ? meter->window_fraction() : MeterClock(MeterClock::tempo_for(1.0, false), false, window_ms).window_fraction();

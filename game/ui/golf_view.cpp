@@ -645,7 +645,10 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     const GolfRound& r = play_->round();
     // The cup of the hole on show: a holing putt's until its ball has dropped and settled.
     if (flying || settling) draw_cup_and_flag(cam, play_->group().course().holes.at(play_->hole_shown()).pin, w, h);
-    else if (!r.finished() && !over) draw_cup_and_flag(cam, r.hole().pin, w, h);
+    // Addressing a far pin, the flag says how far it is: a stripe's "250" drawn beside a pin
+    // 395 yd away reads as the pin's.
+    else if (!r.finished() && !over)
+      draw_cup_and_flag(cam, r.hole().pin, w, h, true, addressing && r.lie() != "green" ? units_.distance(r.to_pin()) : std::string());
     if (addressing) {
       draw_aim(*play_, cam, w, h);
       draw_putt_read(*play_, cam, w, h);  // over the aim line it starts along

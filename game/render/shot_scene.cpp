@@ -525,6 +525,17 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     if (delivered && !m.impactor_is_bat) keys.push_back({kFaceColor, "face"});
     taken.push_back(append_legend(scene.top_overlay, keys, camera, width, height, style_scale));
   }
+  // A park's fence distances are its painted signs: placed before the shot's labels, so a
+  // ball caught at the wall is labelled beside the sign, never over it in its place.
+  if (!m.golf)
+    for (const auto& [dist, at_wall] : m.fence_marks) label(format_distance(dist, "ft"), at_wall + Vec3(0, 4.0, 0), kFenceLabelColor);
+  // A shot's label, where it claims its room: at `anchor`, else stepped up the screen a line
+  // at a time (a few tries) until clear of the labels already placed.
+  const auto shot_label = [&](const std::string& text, const Vec3& anchor, const Vec3& ground, const Eigen::Vector3f& color) {
+    constexpr int kTries = 4;
+    for (int k = 0; k < kTries; ++k)
+      if (label(text, anchor + cam_up * px(ground, 1.8 * m.style.label_height_px * k), color)) return;
+  };
   // Landing ring with the carry, rest pin with the total (golf yards, baseball feet).
   if (have_shot) {
     const auto& s = trajectory_.summary;
@@ -542,14 +553,14 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const Vec3 g(lp.x(), ground_at(lp.x(), lp.z()) + 0.05, lp.z());
       const double r = px(g, m.style.marker_radius_px);
       append_ring(scene.ground_overlay, g, 0.65 * r, r, kLandingColor);
-      label(shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), kLandingColor);
+      shot_label(shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), g, kLandingColor);
     }
     if (t >= end_t - 1e-9 && (s.rest_position - s.landing_position).norm() > 0.5) {
       const Vec3 rp = s.rest_position;
       const Vec3 g(rp.x(), ground_at(rp.x(), rp.z()), rp.z());
       const double h = px(g, 30.0);
       append_pin(scene.top_overlay, g, h, px(g, 2.5), cam_right, kRestColor);
-      label(shown(s.total_m), g + Vec3(0, h, 0) + cam_up * px(g, 6.0), kRestColor);
+      shot_label(shown(s.total_m), g + Vec3(0, h, 0) + cam_up * px(g, 6.0), g, kRestColor);
     }
   }
 
@@ -634,10 +645,6 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
           break;
         }
       }
-    }
-  } else {
-    for (const auto& [dist, at_wall] : m.fence_marks) {
-      label(format_distance(dist, "ft"), at_wall + Vec3(0, 4.0, 0), kFenceLabelColor);
     }
   }
 

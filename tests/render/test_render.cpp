@@ -282,6 +282,39 @@ TEST_CASE("a ballpark shows the fence distances where the foul lines and gaps me
   CHECK(count_fence_yellow(render_shot_rgba(shot, r)) < 20);
 }
 
+TEST_CASE("a fly caught at the wall is labelled beside the fence's sign, never in its place", "[render]") {
+  // A ball to dead centre landing a metre short of the 400 ft wall, seen from behind the
+  // plate: the sign's "400 ft" and the carry's label both stand, apart (the carry took the
+  // sign's place, and the sign then read as the carry).
+  OffscreenContext context;
+  ShotSceneInput in;
+  in.assets = &test::assets();
+  in.world = &test_world("test_park.obj");
+  in.distance_unit = "ft";
+  ShotScene scene(in);
+  SyntheticShotSpec spec;
+  spec.carry = 400.0 * 0.3048 - 1.0;
+  spec.apex = 30.0;
+  spec.lateral = 0.0;
+  spec.ball_radius = 0.0369;
+  ShotTrajectory shot = synthetic_shot(spec);
+  for (auto& p : shot.samples) p.position.y() += 0.9;  // contact above the plate
+  shot.summary.landing_position.y() += 0.9;
+  scene.set_shot(shot, std::nullopt);
+  const int w = 640, h = 360;
+  const double land = shot.summary.hang_time_s;
+  const Camera cam = scene.camera(CameraKind::Behind, land, w, h);
+  const Scene view = scene.build(cam, land, w, h);
+  // The legend, the five fence signs and the carry: every one placed, none over another.
+  REQUIRE(view.label_boxes.size() == 7);
+  for (std::size_t i = 0; i < view.label_boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < view.label_boxes.size(); ++j) {
+      const Eigen::Vector4f& a = view.label_boxes[i];
+      const Eigen::Vector4f& b = view.label_boxes[j];
+      CHECK_FALSE((a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]));
+    }
+}
+
 TEST_CASE("a missing or broken shader names the file and the compiler log", "[render]") {
   OffscreenContext context;
   const auto dir = std::filesystem::temp_directory_path() / "sweetspot_render_shader_test";

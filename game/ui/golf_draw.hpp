@@ -58,8 +58,11 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
 void draw_golf_card(const GolfPlay& play, int w, bool final);
 /// The cup and flagstick, never smaller than a few pixels however far. `scene_has_flag`: the
 /// 3-D scene draws this pin's own flag (a course's), so near enough only the cup is added.
-/// `label`, when not empty, is written beside the flag's cloth (a range's yardage).
-void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool scene_has_flag = true, const std::string& label = {});
+/// `label`, when not empty, is written beside the flag's cloth (a range's yardage, a far
+/// pin's distance), unless it would cover one of `clear_of` (the image's own labels,
+/// Scene::label_boxes: a shot's carry reads first).
+void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool scene_has_flag = true, const std::string& label = {},
+                       const std::vector<Eigen::Vector4f>& clear_of = {});
 /// The aim line from the ball (to the cup's distance and a metre on for a putt).
 void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h);
 /// The caddie's read of the putt (GolfPlay::putt_read), dotted along the green where his

@@ -52,7 +52,8 @@ std::vector<SlopeArrow> green_slopes(const WorldAsset& w, const Vec3& ball, cons
   return out;
 }
 
-void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool scene_has_flag, const std::string& label) {
+void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool scene_has_flag, const std::string& label,
+                       const std::vector<Eigen::Vector4f>& clear_of) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const auto base = cam.project(pin, w, h);
   if (!base) return;
@@ -85,6 +86,9 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool sc
   dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));
   if (!label.empty()) {
     const ImVec2 at(t.x + 0.7f * fh + 3.0f, t.y);
+    const ImVec2 size = ImGui::CalcTextSize(label.c_str());
+    for (const Eigen::Vector4f& o : clear_of)
+      if (at.x < o[2] && o[0] < at.x + size.x && at.y < o[3] && o[1] < at.y + size.y) return;
     dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 200), label.c_str());  // a shadow over light sky
     dl->AddText(at, IM_COL32(255, 255, 255, 255), label.c_str());
   }

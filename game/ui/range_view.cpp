@@ -186,10 +186,13 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
       // 250 yd just below the horizon.
       cam = full_shot_address_camera(Vec3::Zero(), Vec3::UnitX());
     }
-    renderer.draw(scene_->build(cam, t, w, h), cam);
+    const Scene view = scene_->build(cam, t, w, h);
+    renderer.draw(view, cam);
     renderer.blit_to(0, w, h);
-    // The range's scene has no flag meshes: each flag drawn whole, with its distance.
-    for (const Vec3& p : RangePlay::targets(units_.imperial)) draw_cup_and_flag(cam, p, w, h, false, units_.distance(p.x()));
+    // The range's scene has no flag meshes: each flag drawn whole, with its distance where
+    // it leaves the shot's own labels clear.
+    for (const Vec3& p : RangePlay::targets(units_.imperial))
+      draw_cup_and_flag(cam, p, w, h, false, units_.distance(p.x()), view.label_boxes);
   }
   draw_panel(w, flying && t < play_->last_shot().trajectory.summary.hang_time_s);
   if (hit) draw_launch_panel(play_->last_shot(), units_, w, t);  // the last ball's numbers, its carry once it lands

@@ -193,7 +193,8 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
         case GolfPlay::AimWhy::Line: why = " (where the caddie sees it finish nearest)"; break;
         case GolfPlay::AimWhy::Pin: break;
       }
-      ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), right ? "right" : "left", why);
+      if (std::abs(rad_to_deg(play.aim())) < 0.05) ImGui::Text("Aim: at the pin");  // "0.0 deg right" has no side
+      else ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), right ? "right" : "left", why);
     }
     if (const auto& read = play.putt_read(); read && play.human_turn())
       ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());

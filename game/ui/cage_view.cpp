@@ -83,7 +83,8 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h, bool cross
 
 // The HUD panel at the top left; returns its bottom edge (px), where the call goes below it.
 // `all_keys`: every key the cage takes, four lines; else the few a pitch needs, in one.
-float draw_stats(const BattingCage& c, int w, int h, bool all_keys) {
+// `now`: mode time, for whether the pitch has gone by.
+float draw_stats(const BattingCage& c, int w, int h, bool all_keys, double now) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(kStatsPanelRight - 10.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
@@ -118,7 +119,8 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys) {
   if (c.stage() == Stage::Ready) {
     ImGui::TextUnformatted("Pitch: P or Space calls for one");
     if (!c.timing_only() && c.swings().empty()) ImGui::TextUnformatted("New to it? T: just time the swing, the bat finds the height");
-  } else if (c.stage() == Stage::Pitching) {
+  } else if (c.stage() == Stage::Pitching || (c.stage() == Stage::Called && !c.batted() && c.pitch_clock(now) < c.pitch().flight_time)) {
+    // (A pitch swung through early is still on its way.)
     ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
   } else {
     // Once it has gone by, its shape as Statcast tells it: the run toward the pitcher's arm or
@@ -333,7 +335,7 @@ class CageView final : public ModeView {
     }
     float panel_bottom = 0.0f;
     if (!panels_hidden_) {
-      panel_bottom = draw_stats(c, w, h, all_keys());
+      panel_bottom = draw_stats(c, w, h, all_keys(), in.now);
     } else {
       // One line says how to bring the panel back.
       ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);

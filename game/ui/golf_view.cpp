@@ -648,8 +648,9 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     // Addressing a far pin, the flag says how far it is: a stripe's "250" drawn beside a pin
     // 395 yd away reads as the pin's.
     else if (!r.finished() && !over)
-      draw_cup_and_flag(cam, r.hole().pin, w, h, true, addressing && r.lie() != "green" ? units_.distance(r.to_pin()) : std::string(),
-                        view.label_boxes);
+      // (Not kept clear of the image's labels: their boxes hold the room beside this flag for
+      // it, and while addressing no shot is labelled.)
+      draw_cup_and_flag(cam, r.hole().pin, w, h, true, addressing && r.lie() != "green" ? units_.distance(r.to_pin()) : std::string());
     if (addressing) {
       draw_aim(*play_, cam, w, h);
       draw_putt_read(*play_, cam, w, h);  // over the aim line it starts along

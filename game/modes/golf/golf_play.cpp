@@ -129,11 +129,16 @@ GolfPlay::AimWhy GolfPlay::aim_why_for(const GolfRound& r, bool tree_at_flag) co
   if (std::abs(aim_) < deg_to_rad(0.5)) return AimWhy::Pin;
   if (r.next_bend()) return AimWhy::Corner;
   if (tree_at_flag) return AimWhy::WayOut;
-  // The wind's part: a crosswind that carries the ball back toward the pin from the aim.
+  // The wind's part: a crosswind that carries the ball back toward the pin from the aim, by
+  // no more than the air itself moves across while the ball is up (the ball drifts less than
+  // the air: a 23 deg aim with a 96 yd wedge is not the wind's).
   const HoleWind hw = r.wind();
   const double cross = hw.speed * std::sin(hw.toward - r.line_to_pin());  // m/s, + toward the right
   constexpr double kCrossNoted = 2.0;  // m/s (4.5 mph): moves a full shot's landing by metres
-  if (std::abs(cross) >= kCrossNoted && (cross > 0.0) == (aim_ < 0.0)) return AimWhy::Wind;
+  const double power = caddie_plan_ ? caddie_plan_->meter.power : 1.0;
+  const FlownHere& f = flown_here(club(), power);
+  const bool wind_can = f.carry > 0.0 && std::abs(aim_) <= std::atan2(std::abs(cross) * f.hang, f.carry);
+  if (std::abs(cross) >= kCrossNoted && (cross > 0.0) == (aim_ < 0.0) && wind_can) return AimWhy::Wind;
   return AimWhy::Line;
 }
 
@@ -153,7 +158,8 @@ const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double 
   in.aim = aim_;
   in.meter.power = power;
   const FlightSummary f = r.simulate(in).trajectory.summary;
-  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, r.first_touch_in_a_tree(f)};
+  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, f.hang_time_s,
+                   r.first_touch_in_a_tree(f)};
   return *slot;
 }
 

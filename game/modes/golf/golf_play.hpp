@@ -240,6 +240,7 @@ class GolfPlay {
     double power = 1.0;
     double carry = 0.0;
     double total = 0.0;
+    double hang = 0.0;  ///< s in the air
     bool in_tree = false;
   };
   /// The stroke flown (or the last answer for it, from `flown_` when it is the same stroke).

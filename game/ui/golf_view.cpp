@@ -630,11 +630,6 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
         cam = *address_view_;
       else if (camera_ == 1 && flying && address_view_)
         cam = blend_cameras(*address_view_, cam, ease_in_out(std::clamp((t - kHoldAddress) / kLeaveAddress, 0.0, 1.0)));
-      // Where the ball stopped, a tree or a bank between the chase camera and it would fill
-      // the view: the camera comes in, or round, as the address view does.
-      const WorldAsset* stopped_in = play_->group().course().holes.at(play_->hole_shown()).world;
-      if (camera_ == 1 && !putt && t >= end && stopped_in)
-        cam = clear_view_of(cam, play_->last_shot().trajectory.summary.rest_position, *stopped_in->world);
     } else if (addressing) {
       cam = camera_ == 2 ? high_camera() : camera_ == 3 ? map_camera() : camera_ == 4 ? green_camera(true) : address_camera();
       address_view_ = cam;

@@ -83,8 +83,8 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h, bool cross
 
 // The HUD panel at the top left; returns its bottom edge (px), where the call goes below it.
 // `all_keys`: every key the cage takes, four lines; else the few a pitch needs, in one.
-// `now`: mode time, for whether the pitch has gone by.
-float draw_stats(const BattingCage& c, int w, int h, bool all_keys, double now) {
+// `pitch_by`: the pitch has reached the plate (its shape is then told).
+float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_by) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(kStatsPanelRight - 10.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
@@ -119,7 +119,7 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, double now) 
   if (c.stage() == Stage::Ready) {
     ImGui::TextUnformatted("Pitch: P or Space calls for one");
     if (!c.timing_only() && c.swings().empty()) ImGui::TextUnformatted("New to it? T: just time the swing, the bat finds the height");
-  } else if (c.stage() == Stage::Pitching || (c.stage() == Stage::Called && !c.batted() && c.pitch_clock(now) < c.pitch().flight_time)) {
+  } else if (c.stage() == Stage::Pitching || (!c.batted() && !pitch_by)) {
     // (A pitch swung through early is still on its way.)
     ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
   } else {
@@ -312,6 +312,8 @@ class CageView final : public ModeView {
       sound_strike(crack);
     }
     const int w = in.width, h = in.height;
+    // Whether the pitch has reached the plate: a missed one flies on after the swing.
+    const bool pitch_by = c.pitch_clock(in.now) >= c.pitch().flight_time;
     if (w > 0 && h > 0) {
       fit_renderer(renderer, w, h, in.render_scale);
       const bool batted = c.batted();
@@ -331,11 +333,11 @@ class CageView final : public ModeView {
       const bool moving = c.stage() == Stage::Pitching || batted;
       renderer.draw(scene_->build(cam, moving ? cage_scene_time(c, in.now) : t, w, h), cam);
       renderer.blit_to(0, w, h);
-      if (!batted) draw_zone(c, cam, w, h, t >= c.pitch().flight_time);
+      if (!batted) draw_zone(c, cam, w, h, pitch_by);
     }
     float panel_bottom = 0.0f;
     if (!panels_hidden_) {
-      panel_bottom = draw_stats(c, w, h, all_keys(), in.now);
+      panel_bottom = draw_stats(c, w, h, all_keys(), pitch_by);
     } else {
       // One line says how to bring the panel back.
       ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);

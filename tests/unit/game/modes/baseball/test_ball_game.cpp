@@ -91,11 +91,11 @@ TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9
   // Rebuilt half-inning by half-inning from the plate appearances: no run is earned once the
   // outs and the errors that put batters aboard make three (or on the play whose out makes
   // them three), and the pitchers' earned runs are the plate appearances' own.
-  // Games are played seed by seed until two of them hold such a run (seeds 1 and 6 today):
-  // every game checks the sums, and the rule is seen to act without playing a dozen games
-  // under the sanitizers.
+  // Games are played seed by seed until one of them holds such a run (seed 1 today): every
+  // game checks the sums, and the rule is seen to act without playing a dozen games under
+  // the sanitizers (a game there takes ~20 s).
   int with_unearned = 0;
-  for (std::uint64_t seed = 1; seed <= 24 && with_unearned < 2; ++seed) {
+  for (std::uint64_t seed = 1; seed <= 24 && with_unearned < 1; ++seed) {
     GameOptions o;
     o.seed = seed;
     const GameRecord g = play_game(test::assets(), o);

@@ -97,7 +97,8 @@ std::string club_for_delivery(const Assets& assets, const OcClubData& c, double 
     for (const std::string& club : golf_bag()) {
       const ClubSpec& spec = eq.club(club);
       // A full swing's speed is no putting stroke, however little loft the device saw
-      // (the putter's reference stroke is a few mph; 2.5 x covers the longest putt).
+      // (the putter's reference is the game's full putting stroke, 13 mph; 2.5 x of it is
+      // still slower than any full swing and leaves a device's hardest putt its club).
       const ClubInfo& info = eq.club_info_of(club);
       if (info.kind == "putter" && c.speed_mph && *c.speed_mph > 2.5 * mps_to_mph(info.tour_speed)) continue;
       const double typical = spec.dynamic_loft + strike_tilt(spec, spec.strike_height);

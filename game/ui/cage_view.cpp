@@ -135,13 +135,13 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
               c.timing_only() ? "timing only" : "bat height by hand");
   if (!all_keys) {
     // After the first few swings the keys a pitch needs, in one line (K: the rest).
-    ImGui::TextDisabled(c.timing_only() ? "P pitch  Space swing  B the pro  K keys" : "P pitch  Space swing  Up/Down bat  K keys");
+    ImGui::TextDisabled(c.timing_only() ? "P pitch  Space swing  B the pro  K/F1 keys" : "P pitch  Space swing  Up/Down bat  K/F1 keys");
   } else {
     if (c.timing_only()) ImGui::TextDisabled("P: pitch  Space: swing  T: set the bat's height yourself");
     else ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height  T: timing only");
     ImGui::TextDisabled("C: power/contact  L: batter's side");
     ImGui::TextDisabled("B: the pro swings  A: live game / batting practice");
-    ImGui::TextDisabled("H: hide this panel  Esc: pause  Tab: next mode  K: fewer");
+    ImGui::TextDisabled("H: hide this panel  Esc: pause  Tab: next mode  K/F1: fewer");
   }
   ImGui::Separator();
   // Contact counts fouls (a foul is contact); the batted-ball figures are Statcast's batted-ball
@@ -297,7 +297,7 @@ class CageView final : public ModeView {
     // whole, for a screenshot or a clip.
     for (const KeyPress& k : in.keys)
       if (k.key == GLFW_KEY_H) panels_hidden_ = !panels_hidden_;
-      else if (k.key == GLFW_KEY_K) all_keys_ = !all_keys();
+      else if (k.key == GLFW_KEY_K || k.key == GLFW_KEY_F1) all_keys_ = !all_keys();  // F1: where a newcomer looks for help
     drawn_stage_ = c.stage();
     // The scene holds the pitch while it flies and the batted ball after contact.
     if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) scene_->set_shot(c.pitch().trajectory, std::nullopt);

@@ -22,6 +22,11 @@ struct GolfUnits {
   std::string distance(double m) const;  ///< "154 m" / "168 yd"
   std::string putt(double m) const;      ///< "2.4 m" / "8 ft"
   std::string speed(double mps) const;   ///< "5 m/s" / "11 mph"
+  /// A distance on the course: short of kNear in the putt's units ("56 ft"), else as
+  /// distance(); every label of a carry or a distance to the pin reads through it, so the
+  /// picture and the panels give one number in one unit.
+  std::string course(double m) const;
+  static constexpr double kNear = 20.0;  ///< m: ~22 yd, a chip's length, where golfers count feet
 };
 
 /// Downhill arrows on the green: where the ground tilts and how much (rise over run).

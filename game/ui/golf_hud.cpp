@@ -30,6 +30,8 @@ std::string GolfUnits::putt(double m) const {
   return b;
 }
 
+std::string GolfUnits::course(double m) const { return m < kNear ? putt(m) : distance(m); }
+
 std::string break_length(double m, const GolfUnits& units) {
   char by[24];
   if (units.imperial && m < 0.9144) std::snprintf(by, sizeof by, "%.0f in", std::max(1.0, m / 0.0254));
@@ -156,9 +158,8 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     ImGui::Text("%s to play%s", play.player_info().name.c_str(), play.human_turn() ? "" : play.player_info().human ? " (auto-putt)" : " (bot)");
     const HoleCard& card = r.card().back();
     ImGui::Text("Stroke %d   Lie: %s", card.strokes + 1, lie_words(r.lie()));
-    // Short of 20 m in the putt's units whatever the lie, as "At rest ... from the pin" reads.
-    const bool near = r.lie() == "green" || r.to_pin() < 20.0;
-    ImGui::Text("To the pin: %s", near ? units.putt(r.to_pin()).c_str() : units.distance(r.to_pin()).c_str());
+    // On the green in the putt's units however long the putt.
+    ImGui::Text("To the pin: %s", r.lie() == "green" ? units.putt(r.to_pin()).c_str() : units.course(r.to_pin()).c_str());
     const std::string& club = play.club();
     const GolfBot::Stock* stock = play.caddie().stock_of(club);
     const double carry = stock ? stock->carry : 0.0;
@@ -194,7 +195,8 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
         case GolfPlay::AimWhy::Pin: break;
       }
       if (std::abs(rad_to_deg(play.aim())) < 0.05) ImGui::Text("Aim: at the pin");  // "0.0 deg right" has no side
-      else ImGui::Text("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), right ? "right" : "left", why);
+      // Wrapped: the caddie's reason runs past the panel's width.
+      else ImGui::TextWrapped("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), right ? "right" : "left", why);
     }
     if (const auto& read = play.putt_read(); read && play.human_turn())
       ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());
@@ -208,12 +210,12 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
       ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
       ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save  L latency", camera_words(camera_mode));
-      ImGui::TextDisabled("R replay  Esc cancel or pause  Tab next mode  K fewer");
+      ImGui::TextDisabled("R replay  Esc cancel or pause  Tab next mode  K/F1 fewer");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
     } else if (play.human_turn()) {
       // Past the first hole the keys a stroke needs, in one line: the panel keeps to the
       // corner of the view (K brings the rest back).
-      ImGui::TextDisabled("Arrows club and aim  Space swing  B caddie  K keys");
+      ImGui::TextDisabled("Arrows club and aim  Space swing  B caddie  K/F1 keys");
     } else {
       ImGui::TextDisabled("Enter: let them play now");
     }
@@ -240,7 +242,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
   }
   const auto at_rest = [&](const StrokeRecord& last, const std::string& lie) {
     if (last.club.empty() || last.end != StrokeEnd::Rest) return;
-    const std::string away = last.to_pin_m < 20.0 ? units.putt(last.to_pin_m) : units.distance(last.to_pin_m);
+    const std::string away = units.course(last.to_pin_m);
     // A ball at rest and then holed by a conceded putt (a gimme): where it stopped, on the green.
     if (lie == "holed") ImGui::Text("At rest %s from the pin: conceded", away.c_str());
     else ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(lie));
@@ -315,17 +317,26 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   if (putting) {
     // The putt preview: how far each power rolls on a flat green of this speed.
     dl->AddRectFilled(ImVec2(x0 - 4, y0 + bh + 2), ImVec2(x0 + bar.bw + 4, y0 + bh + 24), kBand, 4.0f);
+    // A tick every 5 ft (2 m); every other one labelled where the last label leaves room: the
+    // roll grows with the square of the stroke, so the long putts' ticks crowd the bar's end.
     const double step = units.imperial ? 5.0 * 0.3048 : 2.0;
+    float free_from = x0 - 1e9f;
     for (double d = step; d < play.flat_roll(1.1); d += step) {
       const double p = play.power_for_roll(d);
       dl->AddLine(ImVec2(at(p), y0 + bh), ImVec2(at(p), y0 + bh + 6), IM_COL32(200, 200, 200, 200), 1.0f);
       const long n = std::lround(d / step);
-      if (n % 2 == 0) dl->AddText(ImVec2(at(p) - 8, y0 + bh + 7), IM_COL32(200, 200, 200, 220), units.putt(d).c_str());
+      const std::string text = units.putt(d);
+      const float left = at(p) - 8.0f;
+      if (n % 2 == 0 && left >= free_from) {
+        dl->AddText(ImVec2(left, y0 + bh + 7), IM_COL32(200, 200, 200, 220), text.c_str());
+        free_from = left + ImGui::CalcTextSize(text.c_str()).x + 8.0f;
+      }
     }
     const double to_cup = play.round().to_pin();
     // Off the green the mark is for the putt as it plays: the slower grass first.
     const double plays = play.putt_plays_as();
-    const double cup_p = play.power_for_roll(plays);
+    const double cup_p = play.cup_mark_power();
+    const double past = GolfBot::kPuttPast;
     char cup[96];
     if (play.putt_crosses().empty())
       std::snprintf(cup, sizeof cup, "cup %s", units.putt(to_cup).c_str());
@@ -342,19 +353,19 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       std::snprintf(label, sizeof label, "putt: %.0f %% rolls %s on flat green (%s)   Esc: cancel", 100.0 * shown,
                     units.putt(play.flat_roll(shown)).c_str(), cup);
     } else {
-      // Before the stroke the caption is always the cup's: the power that rolls that far on
-      // flat (the triangle); the last putt's power beside it, not in its place.
+      // Before the stroke the caption is always the cup's: the power that rolls the putt on
+      // flat and 17 in past (the triangle); the last putt's power beside it, not in its place.
       char last[40] = "";
       if (play.last_click() && play.last_click()->putting())
         std::snprintf(last, sizeof last, " (last putt %.0f %%)", 100.0 * play.last_click()->power());
       // Past the putter's longest stroke the mark sits at the bar's end: say so, not "110 %".
       const double reach = play.flat_roll(1.1);
-      if (plays > reach)
+      if (plays + past > reach)
         std::snprintf(label, sizeof label, "putt: %s, beyond a putt: 110 %% rolls %s on flat green%s   Space: putt", cup,
                       units.putt(reach).c_str(), last);
       else
-        std::snprintf(label, sizeof label, "putt: %s; the green cup mark, %.0f %%, rolls that far on a flat green%s   Space: putt", cup,
-                      100.0 * cup_p, last);
+        std::snprintf(label, sizeof label, "putt: %s; the green cup mark, %.0f %%, rolls %s past it on a flat green%s   Space: putt",
+                      cup, 100.0 * cup_p, break_length(past, units).c_str(), last);
     }
   } else if (!meter && play.swing_undone()) {
     // Said where the player was looking when it happened, not only in the panel.
@@ -425,9 +436,7 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
     ImGui::Text("Rolled      %s", units.putt(r.trajectory.summary.total_m).c_str());
   } else if (!putt && flight_t >= r.trajectory.summary.hang_time_s) {
     ImGui::Separator();
-    // Short of 20 m in the putt's units, as the landing's label in the picture reads.
-    const double carry = r.trajectory.summary.carry_m;
-    ImGui::Text(hit_tree ? "Hit a tree  %s" : "Carry       %s", carry < 20.0 ? units.putt(carry).c_str() : units.distance(carry).c_str());
+    ImGui::Text(hit_tree ? "Hit a tree  %s" : "Carry       %s", units.course(r.trajectory.summary.carry_m).c_str());
     ImGui::Text("Height      %s", units.putt(r.trajectory.summary.apex_m).c_str());
   }
   ImGui::End();

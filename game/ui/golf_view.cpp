@@ -190,6 +190,7 @@ void GolfView::view_keys(const std::vector<KeyPress>& keys) {
       case GLFW_KEY_4: camera_ = 4; break;
       case GLFW_KEY_U: units_.imperial = !units_.imperial; break;
       case GLFW_KEY_K:
+      case GLFW_KEY_F1:  // where a newcomer looks for help first
         // On the green the panel keeps its one line of a putt's keys: K is not shown there,
         // and switches nothing unseen for the holes after.
         if (play_->round().finished() || play_->round().lie() != "green") all_keys_ = !all_keys();

@@ -303,6 +303,8 @@ double GolfPlay::flat_roll(double power) const { return interpolate(roll_table_,
 
 double GolfPlay::power_for_roll(double distance) const { return interpolate(roll_table_, distance, false); }
 
+double GolfPlay::cup_mark_power() const { return power_for_roll(putt_plays_as_ + GolfBot::kPuttPast); }
+
 void GolfPlay::update(const Intents& intents, double now) {
   apply_in_time_order(intents, now, [this](double t) { advance(t); }, [this](const Intent& in) { apply(in); });
 }
@@ -444,7 +446,7 @@ void GolfPlay::apply(const Intent& in) {
         case IntentKind::Swing: {
           const double length = assets_.equipment().club(club()).length;
           // A putt the preview reaches: the marker slowed for a short one (putt_tempo).
-          const double tempo = putting && putt_plays_as_ > 0.0 ? MeterClock::putt_tempo(power_for_roll(putt_plays_as_))
+          const double tempo = putting && putt_plays_as_ > 0.0 ? MeterClock::putt_tempo(cup_mark_power())
                                                                : MeterClock::tempo_for(length, putting);
           meter_.emplace(tempo, putting, perfect_window_ms(setup_.difficulty));
           swing_undone_ = false;

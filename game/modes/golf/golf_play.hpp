@@ -147,6 +147,10 @@ class GolfPlay {
   /// of the line off the green (fringe, fairway, rough) counted as the length of green that
   /// takes as much out of a roll. On the green, the distance. 0 beyond kPuttGuideReach.
   double putt_plays_as() const { return putt_plays_as_; }
+  /// The power the preview marks at the cup: it rolls the putt as it plays and
+  /// GolfBot::kPuttPast on (Pelz's 17 in), so a ball stopped on the mark arrives at the cup
+  /// still rolling, as a holed putt must; the caddie paces his putts the same.
+  double cup_mark_power() const;
   /// The surface a putt from off the green meets first ("fairway"); empty on the green.
   const std::string& putt_crosses() const { return putt_crosses_; }
   /// The preview is offered this near the cup (m): past it nobody putts.

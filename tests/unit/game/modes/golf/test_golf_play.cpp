@@ -6,11 +6,13 @@
 #include <cmath>
 #include <initializer_list>
 #include <optional>
+#include <utility>
 
 #include "game/content/course_file.hpp"
 #include "game/modes/golf/golf_play.hpp"
 #include "game/modes/golf/latency_calibration.hpp"
 #include "game/modes/replay.hpp"
+#include "physics/units.hpp"
 #include "physics/world.hpp"
 #include "support/ball_on_green.hpp"
 #include "support/intent_at.hpp"
@@ -292,13 +294,55 @@ TEST_CASE("putting preview: the flat-green roll grows with power and inverts", "
     CHECK(play.power_for_roll(d) == Approx(p).margin(1e-6));
     last = d;
   }
-  // A full putter stroke on this stimp-10.5 green rolls a long lag (10-30 m), not 12-15 m.
-  CHECK(play.flat_roll(1.0) > 10.0);
+  // A full putter stroke on this stimp-10.5 green rolls a long lag, and the meter's 110 %
+  // reaches past the farthest putt the game reads (a 50 ft uphill putt was beyond it).
+  CHECK(play.flat_roll(1.0) > 30.0);
+  CHECK(play.flat_roll(MeterInput::kPower.max) > GolfPlay::kPuttGuideReach);
   // The putt's meter runs at the tempo its cup's power asks for (MeterClock::putt_tempo).
-  const double cup = play.power_for_roll(play.putt_plays_as());
+  const double cup = play.cup_mark_power();
   play.update({at(IntentKind::Swing, t + 1.0)}, t + 1.0);
   REQUIRE(play.meter());
   CHECK(play.meter()->position(t + 1.6) == Approx(0.6 / MeterClock::putt_tempo(cup)).margin(1e-12));
+}
+
+TEST_CASE("putting preview: a putt stopped on the green cup mark gets to the cup", "[modes][golf]") {
+  // From 1 to 8 m all round the cup on every green of the national course, a putt at the
+  // mark's power straight at the cup: the mark paces it GolfBot::kPuttPast on, so on these
+  // real greens' slopes most reach the hole (holed or past it) where a mark for the cup's
+  // own distance leaves half short ("never up, never in").
+  int spots = 0, reach = 0, reach_exact = 0, holed = 0;
+  for (std::size_t n = 0; n < test::national().holes.size(); ++n) {
+    for (double dist : {1.0, 2.0, 4.0, 8.0}) {
+      for (int k = 0; k < 4; ++k) {
+        const std::optional<Course> c = test::national_hole_from_green(n, dist, kPi / 2.0 * k + 0.3);
+        if (!c) continue;
+        GolfPlay play(test::assets(), *c, solo("tour"));
+        if (play.round().lie() != "green") continue;
+        ++spots;
+        const Vec3 from = play.round().ball(), pin = c->holes[0].pin;
+        const double to_cup = std::hypot(pin.x() - from.x(), pin.z() - from.z());
+        const auto gets_there = [&](double power) {
+          StrokeInput putt;
+          putt.club = "putter";
+          putt.meter.power = power;
+          const ShotResult r = play.round().simulate(putt);
+          const Vec3 rest = r.trajectory.summary.rest_position;
+          const double along = ((rest.x() - from.x()) * (pin.x() - from.x()) + (rest.z() - from.z()) * (pin.z() - from.z())) / to_cup;
+          return std::pair{r.end == ShotEnd::Holed, r.end == ShotEnd::Holed || along >= to_cup};
+        };
+        CHECK(play.flat_roll(play.cup_mark_power()) == Approx(play.putt_plays_as() + GolfBot::kPuttPast).margin(1e-6));
+        const auto [in, got] = gets_there(play.cup_mark_power());
+        holed += in;
+        reach += got;
+        reach_exact += gets_there(play.power_for_roll(play.putt_plays_as())).second;
+      }
+    }
+  }
+  INFO(spots << " putts: " << reach << " reach the cup at the mark (" << holed << " holed), " << reach_exact
+             << " at the cup's own distance");
+  REQUIRE(spots > 100);
+  CHECK(reach > 0.75 * spots);
+  CHECK(reach > reach_exact);
 }
 
 TEST_CASE("putting preview from off the green: the slower grass first makes the putt play longer", "[modes][golf]") {

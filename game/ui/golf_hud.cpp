@@ -189,6 +189,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       const char* why = "";
       switch (play.aim_why()) {
         case GolfPlay::AimWhy::Corner: why = " (the dogleg's corner)"; break;
+        case GolfPlay::AimWhy::Bend: why = " (down the fairway: the hole bends slightly)"; break;
         case GolfPlay::AimWhy::WayOut: why = " (the way past the tree)"; break;
         case GolfPlay::AimWhy::Wind: why = right ? " (the wind drifts it left)" : " (the wind drifts it right)"; break;
         case GolfPlay::AimWhy::Line: why = " (where the caddie sees it finish nearest)"; break;

@@ -127,7 +127,25 @@ void GolfPlay::choose_club() {
 GolfPlay::AimWhy GolfPlay::aim_why_for(const GolfRound& r, bool tree_at_flag) const {
   // Under half a degree the aim reads "at the pin" (the HUD's 0.0 deg): no reason to tell.
   if (std::abs(aim_) < deg_to_rad(0.5)) return AimWhy::Pin;
-  if (r.next_bend()) return AimWhy::Corner;
+  // The corner's, when the aim points to the bend's side of the pin and the bend lies at least
+  // half as far off the pin's line (a caddie cutting the corner aims inside it): a hole whose
+  // bend lies a degree off the line to the cup looks straight, and an aim there is the wind's
+  // or the tree's.
+  if (const std::optional<Vec3> bend = r.next_bend()) {
+    const Vec3& b = r.ball();
+    const double to_bend = std::remainder(std::atan2(bend->z() - b.z(), bend->x() - b.x()) - r.line_to_pin(), 2.0 * kPi);
+    if (to_bend * aim_ > 0.0 && std::abs(to_bend) >= 0.5 * std::abs(aim_)) {
+      // How far the line turns there: toward the next bend after it, or the pin.
+      Vec3 after = r.hole().pin;
+      const std::vector<Vec3>& bends = r.hole().bends;
+      const auto it = std::find(bends.begin(), bends.end(), *bend);
+      if (it != bends.end() && it + 1 != bends.end()) after = *(it + 1);
+      const double turn = std::remainder(std::atan2(after.z() - bend->z(), after.x() - bend->x()) -
+                                             std::atan2(bend->z() - b.z(), bend->x() - b.x()),
+                                         2.0 * kPi);
+      return std::abs(turn) >= kDoglegTurn ? AimWhy::Corner : AimWhy::Bend;
+    }
+  }
   if (tree_at_flag) return AimWhy::WayOut;
   // The wind's part: a crosswind that carries the ball back toward the pin from the aim, by
   // no more than the air itself moves across while the ball is up (the ball drifts less than

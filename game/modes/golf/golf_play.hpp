@@ -78,11 +78,15 @@ class GolfPlay {
   const std::optional<PuttRead>& putt_read() const { return putt_read_; }
   const std::string& club() const;
   double aim() const { return aim_; }              ///< rad right of the line to the pin
-  /// Why the aim points off the pin, as the caddie set it: the dogleg's corner, the way out
-  /// past a tree, the crosswind's drift held off, or his line (a slope, a bank, the curve:
-  /// where his tries finished nearest the pin).
-  /// Pin once the player has moved the aim: then it is his own, and no reason is told.
-  enum class AimWhy { Pin, Corner, WayOut, Wind, Line };
+  /// Why the aim points off the pin, as the caddie set it: the dogleg's corner, a bend in the
+  /// line too slight to call a dogleg (Bend), the way out past a tree, the crosswind's drift
+  /// held off, or his line (a slope, a bank, the curve: where his tries finished nearest the
+  /// pin). Pin once the player has moved the aim: then it is his own, and no reason is told.
+  enum class AimWhy { Pin, Corner, Bend, WayOut, Wind, Line };
+  /// A hole's line that turns by this much or more at a bend is a dogleg: a turn a player sees
+  /// from the tee (the fairway's edges leave the straight line by tens of metres at a drive's
+  /// length). The words a golfer uses, not a rule of the game.
+  static constexpr double kDoglegTurn = 0.26;  // rad (15 deg)
   AimWhy aim_why() const;
   const std::optional<MeterClock>& meter() const { return meter_; }
   /// The last stroke's physics and the time it was struck (its flight runs from then).

@@ -542,6 +542,44 @@ TEST_CASE("in a crosswind the caddie aims upwind of the pin, the same way on eve
   const GolfPlay still(test::assets(), calm, solo("scratch"));
   CHECK(std::abs(still.aim()) < deg_to_rad(0.5));
   CHECK(still.aim_why() == GolfPlay::AimWhy::Pin);
+  // A bend 1 m off the straight line (a hole that looks straight) leaves the crosswind's aim
+  // the wind's.
+  Course bent = first_hole();
+  CourseHole& h = bent.holes[0];
+  const Vec3 line = h.pin - h.tee;
+  const double along = std::atan2(line.z(), line.x());
+  Vec3 bend = h.tee + 0.55 * line;
+  bend.x() += std::cos(along + kPi / 2.0);
+  bend.z() += std::sin(along + kPi / 2.0);
+  h.bends = {bend};
+  h.wind_speed = 7.0;
+  h.wind_toward = along - kPi / 2.0;  // toward the left: the aim goes right, to the bend's side
+  const GolfPlay crossed(test::assets(), bent, solo("scratch"));
+  REQUIRE(crossed.round().next_bend());
+  CHECK(crossed.aim() > 0.01);
+  CHECK(crossed.aim_why() == GolfPlay::AimWhy::Wind);
+  // The National's 2nd from its tee, out of a scratch player's reach in calm air: the caddie
+  // plays to the bend, whose line turns 5 deg there (the hole looks straight: a bend, not a
+  // dogleg); turned 30 deg there (the pin swung round the bend), the dogleg's corner.
+  for (const double swing : {0.0, 25.0}) {
+    Course par5 = test::national();
+    par5.holes = {test::national().holes.at(1)};
+    CourseHole& p5 = par5.holes[0];
+    p5.number = 1;
+    p5.wind_speed = 0.0;
+    REQUIRE(p5.bends.size() == 1);
+    const Vec3 c = p5.bends[0];
+    const Vec3 leg = p5.pin - c;
+    const double turn = std::remainder(std::atan2(leg.z(), leg.x()) - std::atan2(c.z() - p5.tee.z(), c.x() - p5.tee.x()), 2.0 * kPi);
+    const double a = deg_to_rad(swing) * (turn > 0.0 ? 1.0 : -1.0);  // the way the line already turns
+    p5.pin.x() = c.x() + leg.x() * std::cos(a) - leg.z() * std::sin(a);
+    p5.pin.z() = c.z() + leg.x() * std::sin(a) + leg.z() * std::cos(a);
+    const GolfPlay play(test::assets(), par5, solo("scratch"));
+    INFO("pin swung " << swing << " deg round the bend: aim " << rad_to_deg(play.aim()) << " deg");
+    REQUIRE(play.round().next_bend());
+    CHECK(std::abs(play.aim()) > deg_to_rad(0.5));
+    CHECK(play.aim_why() == (swing > 0.0 ? GolfPlay::AimWhy::Corner : GolfPlay::AimWhy::Bend));
+  }
 }
 
 TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", "[modes][golf]") {

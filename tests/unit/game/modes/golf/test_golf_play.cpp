@@ -306,15 +306,15 @@ TEST_CASE("putting preview: the flat-green roll grows with power and inverts", "
 }
 
 TEST_CASE("putting preview: a putt stopped on the green cup mark gets to the cup", "[modes][golf]") {
-  // From 1 to 8 m all round the cup on every green of the national course, a putt at the
-  // mark's power straight at the cup: the mark paces it GolfBot::kPuttPast on, so on these
+  // From 1 to 8 m either side of the cup on every green of the national course, a putt at
+  // the mark's power straight at the cup: the mark paces it GolfBot::kPuttPast on, so on these
   // real greens' slopes most reach the hole (holed or past it) where a mark for the cup's
   // own distance leaves half short ("never up, never in").
   int spots = 0, reach = 0, reach_exact = 0, holed = 0;
   for (std::size_t n = 0; n < test::national().holes.size(); ++n) {
-    for (double dist : {1.0, 2.0, 4.0, 8.0}) {
-      for (int k = 0; k < 4; ++k) {
-        const std::optional<Course> c = test::national_hole_from_green(n, dist, kPi / 2.0 * k + 0.3);
+    for (double dist : {1.0, 2.5, 8.0}) {
+      for (int k = 0; k < 2; ++k) {
+        const std::optional<Course> c = test::national_hole_from_green(n, dist, kPi * k + 0.3);
         if (!c) continue;
         GolfPlay play(test::assets(), *c, solo("tour"));
         if (play.round().lie() != "green") continue;
@@ -340,7 +340,7 @@ TEST_CASE("putting preview: a putt stopped on the green cup mark gets to the cup
   }
   INFO(spots << " putts: " << reach << " reach the cup at the mark (" << holed << " holed), " << reach_exact
              << " at the cup's own distance");
-  REQUIRE(spots > 100);
+  REQUIRE(spots > 80);
   CHECK(reach > 0.75 * spots);
   CHECK(reach > reach_exact);
 }

@@ -334,6 +334,17 @@ class CageView final : public ModeView {
       renderer.draw(scene_->build(cam, moving ? cage_scene_time(c, in.now) : t, w, h), cam);
       renderer.blit_to(0, w, h);
       if (!batted) draw_zone(c, cam, w, h, pitch_by);
+      // The pitcher far off is a few pixels tall: his wind-up is told over the infield, filling
+      // to the release, and gone as the ball leaves his hand (the cue to start reading it).
+      if (const double clock = c.pitch_clock(in.now); c.stage() == Stage::Pitching && clock < 0.0) {
+        const float cx = 0.5f * static_cast<float>(w), y = 0.52f * static_cast<float>(h);
+        const float bottom = draw_banner("wind-up", cx, y, 1.2f);
+        const float half = 60.0f, fill = static_cast<float>(std::clamp(1.0 + clock / kWindupTime, 0.0, 1.0));
+        ImDrawList* dl = ImGui::GetForegroundDrawList();
+        dl->AddRectFilled(ImVec2(cx - half, bottom + 4.0f), ImVec2(cx + half, bottom + 10.0f), IM_COL32(0, 0, 0, 170), 2.0f);
+        dl->AddRectFilled(ImVec2(cx - half, bottom + 4.0f), ImVec2(cx - half + 2.0f * half * fill, bottom + 10.0f),
+                          IM_COL32(255, 220, 90, 230), 2.0f);
+      }
     }
     float panel_bottom = 0.0f;
     if (!panels_hidden_) {

@@ -74,7 +74,7 @@ void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h);
 /// putt rolls.
 void draw_putt_read(const GolfPlay& play, const Camera& cam, int w, int h);
 /// The read in a golfer's words: which way it breaks and where to aim, in cups and the
-/// player's units, and how hard ("uphill: hit it as 16 ft"). Empty without a read.
+/// player's units, and how hard ("uphill: play it as 16 ft on the flat"). Empty without a read.
 std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& units);
 /// A putt's break or aim beside the cup: inches (centimetres) inside a yard (a metre), then
 /// the putt's units.

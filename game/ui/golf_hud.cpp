@@ -40,11 +40,15 @@ std::string break_length(double m, const GolfUnits& units) {
   return by;
 }
 
+namespace {
+// A break in the units a golfer reads a putt in (inches, centimetres) and in cups: the cup is
+// 108 mm across (Rules of Golf, Definitions "Hole"). An aim inside a quarter of it is "at the
+// cup", in the caddie's read and on the aim line alike.
+constexpr double kCup = 0.108;             // m
+constexpr double kStraight = 0.25 * kCup;  // m
+}  // namespace
+
 std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& units) {
-  // A break in the units a golfer reads a putt in (inches, centimetres) and in cups: the
-  // cup is 108 mm across (Rules of Golf, Definitions "Hole").
-  constexpr double kCup = 0.108;            // m
-  constexpr double kStraight = 0.25 * kCup; // m: inside a quarter of the cup he says "straight"
   const double off = std::abs(read.aim_off);
   char aim[96];
   if (off < kStraight) {
@@ -63,7 +67,7 @@ std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& uni
     // (a 2 ft putt struck as 3 ft is uphill).
     const double margin = std::max(0.15, 0.08 * read.to_cup);
     const char* slope = read.plays_as > read.to_cup + margin ? "uphill" : read.plays_as < read.to_cup - margin ? "downhill" : "level";
-    pace = std::string(", ") + slope + ": hit it as " + units.putt(read.plays_as) +
+    pace = std::string(", ") + slope + ": play it as " + units.putt(read.plays_as) + " on the flat" +
            (read.power >= MeterInput::kPower.max - 1e-9 ? " (beyond a full putt: the blue mark at the end)" : " (blue mark)");
   }
   return std::string(aim) + pace + (read.holes ? "" : "; the caddie's best line, it may not drop");
@@ -180,7 +184,9 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     if (club == "putter" && r.lie() == "green") {
       // On the green the aim in the read's words: how far beside the cup the line points.
       const double off = r.to_pin() * std::tan(play.aim());
-      if (std::abs(off) < 0.005) ImGui::Text("Aim: at the cup");
+      const double deg = rad_to_deg(play.aim());
+      if (std::abs(deg) < 0.05) ImGui::Text("Aim: at the cup");
+      else if (std::abs(off) < kStraight) ImGui::Text("Aim: at the cup (%.1f deg %s)", std::abs(deg), off > 0.0 ? "right" : "left");
       else ImGui::Text("Aim: %s %s of the cup (%.1f deg)", break_length(std::abs(off), units).c_str(), off > 0.0 ? "right" : "left",
                        std::abs(rad_to_deg(play.aim())));
     } else {
@@ -192,6 +198,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
         case GolfPlay::AimWhy::Bend: why = " (down the fairway: the hole bends slightly)"; break;
         case GolfPlay::AimWhy::WayOut: why = " (the way past the tree)"; break;
         case GolfPlay::AimWhy::Wind: why = right ? " (the wind drifts it left)" : " (the wind drifts it right)"; break;
+        case GolfPlay::AimWhy::Slope: why = right ? " (the slope brings it back left)" : " (the slope brings it back right)"; break;
         case GolfPlay::AimWhy::Line: why = " (where the caddie sees it finish nearest)"; break;
         case GolfPlay::AimWhy::Pin: break;
       }
@@ -318,19 +325,21 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   if (putting) {
     // The putt preview: how far each power rolls on a flat green of this speed.
     dl->AddRectFilled(ImVec2(x0 - 4, y0 + bh + 2), ImVec2(x0 + bar.bw + 4, y0 + bh + 24), kBand, 4.0f);
-    // A tick every 5 ft (2 m); every other one labelled where the last label leaves room: the
-    // roll grows with the square of the stroke, so the long putts' ticks crowd the bar's end.
+    // A tick every 5 ft (2 m), each labelled where the last label leaves room: the roll grows
+    // with the square of the stroke, so the short putts' ticks stand apart and the long ones
+    // crowd the bar's end. Whole metres on the scale ("4 m": its ".0" says nothing).
     const double step = units.imperial ? 5.0 * 0.3048 : 2.0;
     float free_from = x0 - 1e9f;
     for (double d = step; d < play.flat_roll(1.1); d += step) {
       const double p = play.power_for_roll(d);
       dl->AddLine(ImVec2(at(p), y0 + bh), ImVec2(at(p), y0 + bh + 6), IM_COL32(200, 200, 200, 200), 1.0f);
-      const long n = std::lround(d / step);
-      const std::string text = units.putt(d);
+      char text[16];
+      if (units.imperial) std::snprintf(text, sizeof text, "%s", units.putt(d).c_str());
+      else std::snprintf(text, sizeof text, "%.0f m", d);
       const float left = at(p) - 8.0f;
-      if (n % 2 == 0 && left >= free_from) {
-        dl->AddText(ImVec2(left, y0 + bh + 7), IM_COL32(200, 200, 200, 220), text.c_str());
-        free_from = left + ImGui::CalcTextSize(text.c_str()).x + 8.0f;
+      if (left >= free_from) {
+        dl->AddText(ImVec2(left, y0 + bh + 7), IM_COL32(200, 200, 200, 220), text);
+        free_from = left + ImGui::CalcTextSize(text).x + 8.0f;
       }
     }
     const double to_cup = play.round().to_pin();

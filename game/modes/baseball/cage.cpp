@@ -42,10 +42,10 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, b
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s", when, std::abs(timing_ms),
                   timing_ms >= 0 ? "not around yet" : "already through the zone");
   else if (r.past_end)
-    // The turned bat's end does not reach the ball's line: said as the hitter sees it, the end
-    // still coming round (late) or already round past the ball (early), over a middle pitch too.
-    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, past the end of the bat (%s)%s", when, std::abs(timing_ms),
-                  timing_ms >= 0 ? "its end not yet round to the ball" : "its end already round past the ball", height);
+    // The turned bat's end does not reach the ball's line, early or late, over a middle pitch
+    // too: said as the hitter sees it, with what mends it.
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the ball went by past the end of the bat (%s)%s", when,
+                  std::abs(timing_ms), timing_ms >= 0 ? "start the swing sooner" : "wait a touch longer", height);
   else if (miss > 0.0 && height_read)
     // His timing is what he controls; where the bat crossed follows from it and the pro's read
     // (early crosses over the ball, late under it).

@@ -147,16 +147,31 @@ GolfPlay::AimWhy GolfPlay::aim_why_for(const GolfRound& r, bool tree_at_flag) co
     }
   }
   if (tree_at_flag) return AimWhy::WayOut;
-  // The wind's part: a crosswind that carries the ball back toward the pin from the aim, by
-  // no more than the air itself moves across while the ball is up (the ball drifts less than
-  // the air: a 23 deg aim with a 96 yd wedge is not the wind's).
+  // The wind's or the ground's part: the caddie's own stroke, flown along his aim, is brought
+  // back toward the pin's line in the air (the wind's drift) or after it lands (a slope's
+  // break). Whichever brings it back by at least half the aim's offset there is the reason: a
+  // 13 m chip aimed 8 deg off in a 5 m/s crosswind drifts ~0.3 m in the air, and its aim is
+  // the green's slope or the caddie's line, not the wind's.
+  const double power = caddie_plan_ ? caddie_plan_->meter.power : 1.0;
+  const FlownHere& f = flown_here(club(), power);
+  const double aim_line = r.line_to_pin() + aim_;
+  const Vec3 u(std::cos(aim_line), 0.0, std::sin(aim_line));
+  const double back = aim_ > 0.0 ? -1.0 : 1.0;  // makes the pin's side of the aim line positive
+  const auto along = [&](const Vec3& p) { return (p - r.ball()).dot(u); };
+  const auto toward_pin = [&](const Vec3& p) {  // m off the aim line, + toward the pin's side
+    const Vec3 d = p - r.ball();
+    return back * (u.x() * d.z() - u.z() * d.x());
+  };
+  const double tan_aim = std::tan(std::abs(aim_));
+  const double in_air = toward_pin(f.landing);
+  const double on_ground = toward_pin(f.rest) - in_air;
+  const bool air_does = f.carry > 0.0 && in_air >= 0.5 * along(f.landing) * tan_aim;
+  const bool ground_does = on_ground >= 0.5 * along(f.rest) * tan_aim;
   const HoleWind hw = r.wind();
   const double cross = hw.speed * std::sin(hw.toward - r.line_to_pin());  // m/s, + toward the right
   constexpr double kCrossNoted = 2.0;  // m/s (4.5 mph): moves a full shot's landing by metres
-  const double power = caddie_plan_ ? caddie_plan_->meter.power : 1.0;
-  const FlownHere& f = flown_here(club(), power);
-  const bool wind_can = f.carry > 0.0 && std::abs(aim_) <= std::atan2(std::abs(cross) * f.hang, f.carry);
-  if (std::abs(cross) >= kCrossNoted && (cross > 0.0) == (aim_ < 0.0) && wind_can) return AimWhy::Wind;
+  if (std::abs(cross) >= kCrossNoted && (cross > 0.0) == (aim_ < 0.0) && air_does && in_air >= on_ground) return AimWhy::Wind;
+  if (ground_does) return AimWhy::Slope;
   return AimWhy::Line;
 }
 
@@ -176,7 +191,7 @@ const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double 
   in.aim = aim_;
   in.meter.power = power;
   const FlightSummary f = r.simulate(in).trajectory.summary;
-  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, f.hang_time_s,
+  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, f.landing_position, f.rest_position,
                    r.first_touch_in_a_tree(f)};
   return *slot;
 }

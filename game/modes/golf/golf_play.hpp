@@ -82,7 +82,7 @@ class GolfPlay {
   /// line too slight to call a dogleg (Bend), the way out past a tree, the crosswind's drift
   /// held off, or his line (a slope, a bank, the curve: where his tries finished nearest the
   /// pin). Pin once the player has moved the aim: then it is his own, and no reason is told.
-  enum class AimWhy { Pin, Corner, Bend, WayOut, Wind, Line };
+  enum class AimWhy { Pin, Corner, Bend, WayOut, Wind, Slope, Line };
   /// A hole's line that turns by this much or more at a bend is a dogleg: a turn a player sees
   /// from the tee (the fairway's edges leave the straight line by tens of metres at a drive's
   /// length). The words a golfer uses, not a rule of the game.
@@ -248,7 +248,8 @@ class GolfPlay {
     double power = 1.0;
     double carry = 0.0;
     double total = 0.0;
-    double hang = 0.0;  ///< s in the air
+    Vec3 landing = Vec3::Zero();  ///< where it first comes down
+    Vec3 rest = Vec3::Zero();     ///< where it stops
     bool in_tree = false;
   };
   /// The stroke flown (or the last answer for it, from `flown_` when it is the same stroke).

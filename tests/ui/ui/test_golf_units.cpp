@@ -23,29 +23,29 @@ TEST_CASE("the caddie's read in a golfer's words: the break in inches and cups, 
   r.holes = true;
   r.aim_off = -0.23;  // aimed left: it curls back right
   r.plays_as = 4.9;
-  CHECK(putt_read_words(r, feet) == "breaks left to right: aim 9 in left (2 cups), uphill: hit it as 16 ft (blue mark)");
-  CHECK(putt_read_words(r, metres) == "breaks left to right: aim 23 cm left (2 cups), uphill: hit it as 4.9 m (blue mark)");
+  CHECK(putt_read_words(r, feet) == "breaks left to right: aim 9 in left (2 cups), uphill: play it as 16 ft on the flat (blue mark)");
+  CHECK(putt_read_words(r, metres) == "breaks left to right: aim 23 cm left (2 cups), uphill: play it as 4.9 m on the flat (blue mark)");
   r.aim_off = 0.06;
   r.plays_as = 3.2;
-  CHECK(putt_read_words(r, feet) == "breaks right to left: aim 2 in right (0.5 cup), downhill: hit it as 10 ft (blue mark)");
+  CHECK(putt_read_words(r, feet) == "breaks right to left: aim 2 in right (0.5 cup), downhill: play it as 10 ft on the flat (blue mark)");
   r.aim_off = 0.01;
   r.plays_as = 4.1;
   r.holes = false;
-  CHECK(putt_read_words(r, feet) == "straight: at the cup, level: hit it as 13 ft (blue mark); the caddie's best line, it may not drop");
+  CHECK(putt_read_words(r, feet) == "straight: at the cup, level: play it as 13 ft on the flat (blue mark); the caddie's best line, it may not drop");
   // Past the putter's full stroke the mark sits at the meter's end: said.
   r.power = 1.1;
   r.plays_as = 20.4;
   r.to_cup = 17.0;
   CHECK(putt_read_words(r, feet) ==
-        "straight: at the cup, uphill: hit it as 67 ft (beyond a full putt: the blue mark at the end); the caddie's best line, it may not drop");
+        "straight: at the cup, uphill: play it as 67 ft on the flat (beyond a full putt: the blue mark at the end); the caddie's best line, it may not drop");
   // A short putt's pace: half a foot more than its length is uphill, as its words show it.
   r.power = 0.3;
   r.holes = true;
   r.to_cup = 0.61;
   r.plays_as = 0.9;
-  CHECK(putt_read_words(r, feet) == "straight: at the cup, uphill: hit it as 3 ft (blue mark)");
+  CHECK(putt_read_words(r, feet) == "straight: at the cup, uphill: play it as 3 ft on the flat (blue mark)");
   r.plays_as = 0.66;
-  CHECK(putt_read_words(r, feet) == "straight: at the cup, level: hit it as 2 ft (blue mark)");
+  CHECK(putt_read_words(r, feet) == "straight: at the cup, level: play it as 2 ft on the flat (blue mark)");
   CHECK(break_length(0.30, feet) == "12 in");
   CHECK(break_length(1.20, feet) == "4 ft");
   CHECK(break_length(0.30, metres) == "30 cm");

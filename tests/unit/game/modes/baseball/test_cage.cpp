@@ -49,7 +49,7 @@ TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any
       // end, and the call says so.
       if (late_ms < -10.0 && late_ms > -30.0) {
         CHECK_FALSE(cage.swings().back().result.contact);
-        CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 40 ms, past the end of the bat"));
+        CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 40 ms, the ball went by past the end of the bat"));
       }
       // 40 ms early the bat has turned past a right angle: it was through the zone.
       if (late_ms < -30.0) {
@@ -164,11 +164,11 @@ TEST_CASE("a miss is called in a hitter's words and inches, never '0 in'", "[mod
   r.crossing_undercut = -0.12;
   r.past_end = true;
   CHECK(miss_call(r, -20.0) ==
-        "Swinging strike: early by 20 ms, past the end of the bat (its end already round past the ball), and 2 in over it");
-  CHECK(miss_call(r, -20.0, 0.0, true) == "Swinging strike: early by 20 ms, past the end of the bat (its end already round past the ball)");
+        "Swinging strike: early by 20 ms, the ball went by past the end of the bat (wait a touch longer), and 2 in over it");
+  CHECK(miss_call(r, -20.0, 0.0, true) == "Swinging strike: early by 20 ms, the ball went by past the end of the bat (wait a touch longer)");
   r.crossing_undercut = 0.0;
-  CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, past the end of the bat (its end already round past the ball)");
-  CHECK(miss_call(r, 17.0) == "Swinging strike: late by 17 ms, past the end of the bat (its end not yet round to the ball)");
+  CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, the ball went by past the end of the bat (wait a touch longer)");
+  CHECK(miss_call(r, 17.0) == "Swinging strike: late by 17 ms, the ball went by past the end of the bat (start the swing sooner)");
   r.past_end = false;
   r.through = true;
   CHECK(miss_call(r, 48.0) == "Swinging strike: late by 48 ms, the bat not around yet");

@@ -582,6 +582,36 @@ TEST_CASE("in a crosswind the caddie aims upwind of the pin, the same way on eve
   }
 }
 
+TEST_CASE("a chip's aim off the pin in a crosswind is not the wind's: the air moves it centimetres", "[modes][golf]") {
+  // The National's 10th from the rough 15 m from the cup in a 5 m/s (11 mph) wind across the
+  // line, from either side. The caddie's chip hangs ~1.5 s at ~10 m/s; the wind moves its
+  // landing by tens of centimetres, so any aim he takes off the pin is the green's or his
+  // line's, never "the wind drifts it".
+  for (const double side : {-1.0, 1.0}) {
+    Course course = load_course(test::assets(), "national");
+    course.holes = {course.holes[9]};
+    SurfaceContact hit;
+    REQUIRE(ground_under(*course.holes[0].world->world, 93.5, -407.7, 400.0, 420.0, &hit));
+    CourseHole& h = course.holes[0];
+    h.tee = hit.point;
+    const Vec3 line = h.pin - h.tee;
+    h.wind_speed = 5.0;
+    h.wind_toward = std::atan2(line.z(), line.x()) + side * kPi / 2.0;
+    const GolfPlay play(test::assets(), course, solo("amateur"));
+    REQUIRE(play.caddie_plan());
+    INFO("wind toward the " << (side > 0 ? "right" : "left") << ": " << play.club() << " at " << play.caddie_plan()->meter.power
+                            << " power aimed " << rad_to_deg(play.aim()) << " deg");
+    // The physics behind the claim: the same chip in calm air lands within 0.5 m of it.
+    Course calm = course;
+    calm.holes[0].wind_speed = 0.0;
+    const GolfPlay still(test::assets(), calm, solo("amateur"));
+    const Vec3 windy_landing = play.round().simulate(*play.caddie_plan()).trajectory.summary.landing_position;
+    const Vec3 calm_landing = still.round().simulate(*play.caddie_plan()).trajectory.summary.landing_position;
+    CHECK((windy_landing - calm_landing).norm() < 0.5);
+    CHECK(play.aim_why() != GolfPlay::AimWhy::Wind);
+  }
+}
+
 TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", "[modes][golf]") {
   // The National's 9th from the left rough ~225 m out: a tree ~15 m ahead on the line to the
   // flag (the bot's test, test_golf_round.cpp). The player is handed the caddie's club and

@@ -88,7 +88,11 @@ std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes);
 /// `clear_of`: the image's own labels (Scene::label_boxes), which the marks' words step aside from.
 void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& cam, int w, int h,
                     const std::vector<TreeCrown>& crowns, const std::vector<Eigen::Vector4f>& clear_of);
-/// The hole's wind as an arrow relative to the aim (up the screen = downrange).
-void draw_wind(const GolfPlay& play, const GolfUnits& units, int w);
+/// The hole's wind as an arrow turned as the view is: `screen_up` is the heading (rad, as a
+/// hole's line) of the ground direction that points up the screen (screen_up_heading).
+void draw_wind(const GolfPlay& play, const GolfUnits& units, int w, double screen_up);
+/// The heading of the ground direction up `cam`'s image: its forward along the ground for a
+/// view along it, its up for a view from above (both lie in the same vertical plane).
+double screen_up_heading(const Camera& cam);
 
 }  // namespace sweetspot

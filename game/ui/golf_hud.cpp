@@ -179,8 +179,12 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     else ImGui::Text("Club: %s (carry %s; here %s)", club.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing).
+    // Where that swing lands and stops: the club line's figures are the full swing's, which a
+    // part wedge from 80 yd flies well past.
     if (const auto& plan = play.caddie_plan(); plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn())
-      ImGui::Text("Caddie: a part swing, %.0f %% power (blue mark)", 100.0 * plan->meter.power);
+      ImGui::TextWrapped("Caddie: a part swing, %.0f %% power (blue mark): carries %s, stops %s", 100.0 * plan->meter.power,
+                         units.course(play.carry_here(club, plan->meter.power)).c_str(),
+                         units.course(play.stops_here(club, plan->meter.power)).c_str());
     if (club == "putter" && r.lie() == "green") {
       // On the green the aim in the read's words: how far beside the cup the line points.
       const double off = r.to_pin() * std::tan(play.aim());
@@ -452,7 +456,12 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
   ImGui::End();
 }
 
-void draw_wind(const GolfPlay& play, const GolfUnits& units, int w) {
+double screen_up_heading(const Camera& cam) {
+  const Vec3 up = cam.forward() + cam.true_up();
+  return std::atan2(up.z(), up.x());
+}
+
+void draw_wind(const GolfPlay& play, const GolfUnits& units, int w, double screen_up) {
   const GolfGroup& g = play.group();
   if (g.finished() || play.hole_shown() >= g.winds().size()) return;
   // The hole the header names: while a finished hole's card shows, its wind, not the next's.
@@ -464,8 +473,9 @@ void draw_wind(const GolfPlay& play, const GolfUnits& units, int w) {
   if (wind.speed < 0.5) {
     std::snprintf(label, sizeof label, "calm");
   } else {
-    // Up the screen is the aim (downrange); the arrow points where the wind blows.
-    const double rel = wind.toward - (play.round().finished() ? 0.0 : play.round().line_to_pin() + play.aim());
+    // Turned as the view is (behind the ball up the screen is the aim, on the map the hole's
+    // line); the arrow points where the wind blows.
+    const double rel = wind.toward - screen_up;
     const float dx = static_cast<float>(std::sin(rel)), dy = static_cast<float>(-std::cos(rel));
     const ImVec2 tip(c.x + 26 * dx, c.y + 26 * dy), tail(c.x - 26 * dx, c.y - 26 * dy);
     dl->AddLine(tail, tip, IM_COL32(120, 200, 255, 255), 3.0f);

@@ -196,14 +196,14 @@ const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double 
   return *slot;
 }
 
-double GolfPlay::carry_here(const std::string& club) const {
+double GolfPlay::carry_here(const std::string& club, double power) const {
   if (round().finished() || club == "putter") return 0.0;
-  return flown_here(club, 1.0).carry;
+  return flown_here(club, power).carry;
 }
 
-double GolfPlay::stops_here(const std::string& club) const {
+double GolfPlay::stops_here(const std::string& club, double power) const {
   if (round().finished() || club == "putter") return 0.0;
-  return flown_here(club, 1.0).total;
+  return flown_here(club, power).total;
 }
 
 std::optional<double> GolfPlay::tree_in_the_way(const std::string& club) const {

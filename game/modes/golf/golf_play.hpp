@@ -159,13 +159,13 @@ class GolfPlay {
   const std::string& putt_crosses() const { return putt_crosses_; }
   /// The preview is offered this near the cup (m): past it nobody putts.
   static constexpr double kPuttGuideReach = 40.0;
-  /// A full, square swing of `club` along the aim from where the ball lies, in this hole's
-  /// wind and off this lie: its carry (m), from the same physics as the stroke; the bag's
-  /// carries are calm air on flat fairway.
-  double carry_here(const std::string& club) const;
+  /// A square swing of `club` at `power` (full by default) along the aim from where the ball
+  /// lies, in this hole's wind and off this lie: its carry (m), from the same physics as the
+  /// stroke; the bag's carries are calm air on flat fairway.
+  double carry_here(const std::string& club, double power = 1.0) const;
   /// The same swing's distance to where it stops (m): the caddie picks a club by where it
   /// finishes, so a club that flies short of the pin and runs up to it is said both ways.
-  double stops_here(const std::string& club) const;
+  double stops_here(const std::string& club, double power = 1.0) const;
   /// Where the stroke the player would play with `club` along the aim (the caddie's part
   /// swing when he planned one with it, else a full swing) ends its flight against something
   /// standing above the ground, a tree: its carry (m) to it. None when it lands on the ground.

@@ -402,6 +402,15 @@ TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power fo
   CHECK(pitch.caddie_plan()->club == pitch.club());
   CHECK(pitch.caddie_plan()->meter.power < 0.9);
   CHECK(pitch.caddie_plan()->meter.power > 0.1);
+  // The panel's figures for that part swing are its own stroke's, and it stops nearer the cup
+  // than the full swing the club line gives.
+  const double power = pitch.caddie_plan()->meter.power;
+  const FlightSummary planned = pitch.round().simulate(*pitch.caddie_plan()).trajectory.summary;
+  CHECK(pitch.carry_here(pitch.club(), power) == planned.carry_m);
+  CHECK(pitch.stops_here(pitch.club(), power) == planned.total_m);
+  CHECK(pitch.carry_here(pitch.club()) > pitch.carry_here(pitch.club(), power) + 5.0);
+  CHECK(std::abs(pitch.stops_here(pitch.club(), power) - pitch.round().to_pin()) <
+        std::abs(pitch.stops_here(pitch.club()) - pitch.round().to_pin()));
 }
 
 TEST_CASE("taps that run on past the calibration's last beat are taps, not a swing", "[modes][golf]") {

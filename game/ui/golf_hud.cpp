@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <span>
 
 #include "game/modes/golf/standings.hpp"
 #include "game/modes/replay.hpp"
@@ -167,16 +168,18 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     const std::string& club = play.club();
     const GolfBot::Stock* stock = play.caddie().stock_of(club);
     const double carry = stock ? stock->carry : 0.0;
+    // The bag's carry (calm air, flat fairway) and this swing's from here: the wind, the lie.
+    const std::string name = club_name(club);
     if (club == "putter") ImGui::Text("Club: putter");
     else if (const std::optional<double> tree = play.tree_in_the_way(club))
-      ImGui::Text("Club: %s (carry %s, a tree in the way at %s)", club.c_str(), units.distance(carry).c_str(),
+      ImGui::Text("Club: %s (stock carry %s, a tree in the way at %s)", name.c_str(), units.distance(carry).c_str(),
                   units.distance(*tree).c_str());
     else if (const double here = play.carry_here(club), stops = play.stops_here(club); stops - here >= kRunNoted)
       // A run worth counting (the rough's flyer, a firm fairway): where it stops as well, the
       // distance the caddie chose it by.
-      ImGui::Text("Club: %s (carry %s; here %s, stops %s)", club.c_str(), units.distance(carry).c_str(),
+      ImGui::Text("Club: %s (stock carry %s; from here %s, stops %s)", name.c_str(), units.distance(carry).c_str(),
                   units.distance(here).c_str(), units.distance(stops).c_str());
-    else ImGui::Text("Club: %s (carry %s; here %s)", club.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
+    else ImGui::Text("Club: %s (stock carry %s; from here %s)", name.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing).
     // Where that swing lands and stops: the club line's figures are the full swing's, which a
@@ -214,9 +217,15 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());
     if (play.human_turn() && club == "putter" && r.lie() == "green") {
       // On the green the keys a putt needs, in one line: the panel stays clear of the golfer
-      // the putting view frames under it.
+      // the putting view frames under it; K/F1 adds the rest.
+      // (The putting view's panel is narrow: each line under ~45 characters.)
       ImGui::TextDisabled("Left/Right aim  Space putt  G read  B caddie");
-      ImGui::TextDisabled("Arrows on the green point downhill, red steeper");
+      ImGui::TextDisabled("Arrows: downhill, red steeper   K/F1 %s", all_keys ? "fewer" : "keys");
+      if (all_keys) {
+        ImGui::TextDisabled("M map  1-4 cameras (%s)  U units", camera_words(camera_mode));
+        ImGui::TextDisabled("S save  L latency  R replay  Esc pause");
+        ImGui::TextDisabled("Tab next mode");
+      }
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
     } else if (play.human_turn() && all_keys) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
@@ -329,21 +338,26 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   if (putting) {
     // The putt preview: how far each power rolls on a flat green of this speed.
     dl->AddRectFilled(ImVec2(x0 - 4, y0 + bh + 2), ImVec2(x0 + bar.bw + 4, y0 + bh + 24), kBand, 4.0f);
-    // A tick every 5 ft (2 m), each labelled where the last label leaves room: the roll grows
-    // with the square of the stroke, so the short putts' ticks stand apart and the long ones
-    // crowd the bar's end. Whole metres on the scale ("4 m": its ".0" says nothing).
+    // A tick every 5 ft (2 m); labels at the same round lengths on every green, spaced as the
+    // roll grows with the square of the stroke (the short putts' ticks stand apart, the long
+    // ones crowd the bar's end), each drawn where the last leaves room.
     const double step = units.imperial ? 5.0 * 0.3048 : 2.0;
+    static constexpr long kLabelledFt[] = {5, 10, 20, 30, 40, 60, 80, 100, 120};
+    static constexpr long kLabelledM[] = {2, 4, 6, 10, 14, 20, 30, 40};
     float free_from = x0 - 1e9f;
     for (double d = step; d < play.flat_roll(1.1); d += step) {
       const double p = play.power_for_roll(d);
       dl->AddLine(ImVec2(at(p), y0 + bh), ImVec2(at(p), y0 + bh + 6), IM_COL32(200, 200, 200, 200), 1.0f);
+      const long n = std::lround(d / step);
+      const long length = units.imperial ? 5 * n : 2 * n;
+      const auto& labelled = units.imperial ? std::span<const long>(kLabelledFt) : std::span<const long>(kLabelledM);
+      if (std::find(labelled.begin(), labelled.end(), length) == labelled.end()) continue;
       char text[16];
-      if (units.imperial) std::snprintf(text, sizeof text, "%s", units.putt(d).c_str());
-      else std::snprintf(text, sizeof text, "%.0f m", d);
+      std::snprintf(text, sizeof text, units.imperial ? "%ld ft" : "%ld m", length);
       const float left = at(p) - 8.0f;
       if (left >= free_from) {
         dl->AddText(ImVec2(left, y0 + bh + 7), IM_COL32(200, 200, 200, 220), text);
-        free_from = left + ImGui::CalcTextSize(text).x + 8.0f;
+        free_from = left + ImGui::CalcTextSize(text).x + 5.0f;
       }
     }
     const double to_cup = play.round().to_pin();
@@ -355,7 +369,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
     if (play.putt_crosses().empty())
       std::snprintf(cup, sizeof cup, "cup %s", units.putt(to_cup).c_str());
     else
-      std::snprintf(cup, sizeof cup, "cup %s, plays as %s of green (%s first)", units.putt(to_cup).c_str(),
+      std::snprintf(cup, sizeof cup, "cup %s, plays as %s (%s first)", units.putt(to_cup).c_str(),
                     units.putt(plays).c_str(), play.putt_crosses().c_str());
     // The cup's mark in its own colour, through the bar (the caption, above it, names it):
     // white is the bar's 100 % line and the last putt's power, blue the caddie's read.
@@ -377,16 +391,20 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       if (plays + past > reach)
         std::snprintf(label, sizeof label, "putt: %s, beyond a putt: 110 %% rolls %s on flat green%s   Space: putt", cup,
                       units.putt(reach).c_str(), last);
-      else
-        std::snprintf(label, sizeof label, "putt: %s; the green cup mark, %.0f %%, rolls %s past it on a flat green%s   Space: putt",
-                      cup, 100.0 * cup_p, break_length(past, units).c_str(), last);
+      else {
+        // The caddie's read is a second mark (blue): named, so the two are not taken for one.
+        char read[48] = "";
+        if (const auto& rd = play.putt_read()) std::snprintf(read, sizeof read, "; blue: the caddie's read, %.0f %%", 100.0 * rd->power);
+        std::snprintf(label, sizeof label, "putt: %s; green: the cup mark, %.0f %% (%s past on the flat)%s%s   Space: putt", cup,
+                      100.0 * cup_p, break_length(past, units).c_str(), read, last);
+      }
     }
   } else if (!meter && play.swing_undone()) {
     // Said where the player was looking when it happened, not only in the panel.
     std::snprintf(label, sizeof label, "%s", play.message().c_str());
   } else {
     char before[160];
-    std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms)", play.club().c_str(),
+    std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms)", club_name(play.club()).c_str(),
                   to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty));
     std::snprintf(label, sizeof label, "%s", full_swing_caption(meter, now, before).c_str());
   }

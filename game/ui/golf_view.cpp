@@ -191,9 +191,8 @@ void GolfView::view_keys(const std::vector<KeyPress>& keys) {
       case GLFW_KEY_U: units_.imperial = !units_.imperial; break;
       case GLFW_KEY_K:
       case GLFW_KEY_F1:  // where a newcomer looks for help first
-        // On the green the panel keeps its one line of a putt's keys: K is not shown there,
-        // and switches nothing unseen for the holes after.
-        if (play_->round().finished() || play_->round().lie() != "green") all_keys_ = !all_keys();
+        // On the green as off it: the panel's putt lines say which way K switches.
+        all_keys_ = !all_keys();
         break;
       case GLFW_KEY_S: save_round(); break;
       case GLFW_KEY_R:

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "game/modes/golf/golfer.hpp"
 #include "game/modes/replay.hpp"
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
@@ -83,9 +84,9 @@ void RangeView::draw_panel(int w, bool in_air) {
   ImGui::Begin("Practice range", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::Text("Bag gapping: %d shots a club (%s speed)", play_->shots_per_club(), play_->skill().name.c_str());
   if (play_->shots_with_club() < play_->shots_per_club())
-    ImGui::Text("Club: %s   shot %d of %d", play_->club().c_str(), play_->shots_with_club() + 1, play_->shots_per_club());
+    ImGui::Text("Club: %s   shot %d of %d", club_name(play_->club()).c_str(), play_->shots_with_club() + 1, play_->shots_per_club());
   else  // back to a club already gapped: its row keeps counting, it is not shot 5 of 5 again
-    ImGui::Text("Club: %s   %d shots, done (more add to its row)", play_->club().c_str(), play_->shots_with_club());
+    ImGui::Text("Club: %s   %d shots, done (more add to its row)", club_name(play_->club()).c_str(), play_->shots_with_club());
   if (ImGui::BeginTable("bag", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
     // "spread": the carries' standard deviation about their mean; "side rms": how far from the
     // target line the balls land, the root mean square (a one-sided miss is part of it).
@@ -95,7 +96,7 @@ void RangeView::draw_panel(int w, bool in_air) {
       const BagClub& c = bag.clubs[k];
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(c.club.c_str());
+      ImGui::TextUnformatted(club_name(c.club).c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%d", c.shots);
       ImGui::TableNextColumn();

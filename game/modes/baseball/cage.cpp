@@ -213,7 +213,8 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   last_.undercut = s.undercut;
   last_.by_pro = by_pro;
   last_.result = swing_at(assets_, pitch_, s, batter_skill("pro").bat_speed, kBat);
-  played_ = as_played(last_.result.shot.trajectory, last_.result.play);
+  played_ = last_.result.foul_tip ? into_the_mitt(last_.result.shot.trajectory)
+                                   : as_played(last_.result.shot.trajectory, last_.result.play);
   last_.call_text = to_string(last_.result.outcome);
   swings_.push_back(last_);
   carries_as_played_.push_back(played_.summary.carry_m);
@@ -258,7 +259,9 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     // ball's centre: what to change next swing (Statcast's pop-ups leave above 50 deg).
     const double la = rad_to_deg(last_.result.shot.launch.vertical_angle);
     const char* side = la > 50.0 ? ", under the ball" : la < -20.0 ? ", on top of the ball" : "";
-    std::snprintf(text, sizeof text, "%s%.0f mph off the bat, %.0f deg, %s%s", by_pro ? "The pro: " : "",
+    // Exit velocity to a tenth, as Statcast gives it: 94.6 mph rounded to "95" read as hard-hit
+    // (95 mph and up) where the session's figures count it as not.
+    std::snprintf(text, sizeof text, "%s%.1f mph off the bat, %.0f deg, %s%s", by_pro ? "The pro: " : "",
                   mps_to_mph(last_.result.shot.launch.ball_speed), la, contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip),
                   side);
     call_text_ = text;

@@ -535,6 +535,26 @@ ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
   return out;
 }
 
+ShotTrajectory into_the_mitt(const ShotTrajectory& t) {
+  if (t.samples.empty()) return t;
+  const double mitt = std::abs(kSpots[1].depth_ft) * 0.3048;  // m behind the plate: the catcher's spot
+  const Vec3& from = t.samples.front().position;
+  ShotTrajectory out = t;
+  out.samples.clear();
+  for (const TrajectorySample& s : t.samples) {
+    out.samples.push_back(s);
+    if (horizontal(from, s.position) >= mitt) break;
+  }
+  if (out.samples.size() == t.samples.size()) return t;  // it never got that far back
+  TrajectorySample held = out.samples.back();
+  held.phase = Phase::Rest;
+  out.samples.push_back(held);
+  out.summary.rest_position = out.summary.landing_position = held.position;
+  out.summary.total_time_s = out.summary.hang_time_s = held.t;
+  out.summary.total_m = out.summary.carry_m = horizontal(from, held.position);
+  return out;
+}
+
 BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const Environment& env, std::string* who) {
   const FieldingPlay p = field_play(shot, aero, env, league_defense(), false, kMeanSprint, nullptr);
   if (who) *who = p.fielder >= 0 ? kPositionNames[static_cast<std::size_t>(p.fielder)] : "";

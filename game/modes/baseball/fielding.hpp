@@ -143,6 +143,10 @@ BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const En
 /// foul no one fields, or a ball at rest before he gets there keeps the physics' whole path.
 ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play);
 
+/// A foul tip's path as the play went: into the catcher's mitt where it comes level with him
+/// behind the plate (the physics' flight on to the backstop was never played).
+ShotTrajectory into_the_mitt(const ShotTrajectory& t);
+
 /// The time a throw by `f` from `from` to base `base` takes, with the fielder's transfer.
 double throw_time(const FielderAbility& f, const AeroModel& aero, const Environment& env, const Vec3& from, int base);
 /// A fielder's arm (his throws, relays with his transfer) worked out once, for several throws.

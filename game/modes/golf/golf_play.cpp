@@ -176,7 +176,8 @@ GolfPlay::AimWhy GolfPlay::aim_why_for(const GolfRound& r, bool tree_at_flag) co
 }
 
 GolfPlay::AimWhy GolfPlay::aim_why() const {
-  if (!caddie_plan_ || aim_ != caddie_plan_->aim) return AimWhy::Pin;
+  // His reason is for his club and his line: another club or aim says nothing of it.
+  if (!caddie_plan_ || aim_ != caddie_plan_->aim || club() != caddie_plan_->club) return AimWhy::Pin;
   return aim_why_;
 }
 
@@ -237,7 +238,7 @@ void GolfPlay::read_green() {
   }
   const StrokeInput plan = caddie().intend(r);
   if (plan.club != "putter") {  // a strip of rough between ball and cup: he would chip it
-    say("The caddie would not putt this one: he would play the " + plan.club);
+    say("The caddie would not putt this one: he would play the " + club_name(plan.club));
     return;
   }
   const ShotResult rolled = r.simulate(plan, true);
@@ -421,10 +422,10 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
     const double late = last_click_ ? last_click_->click_error_ms() : last_meter_->accuracy_ms;
     // The meter plays a swing whose last click never came at its latest (MeterInput::kAccuracy).
     const bool at_the_limit = std::abs(late) >= MeterInput::kAccuracy.max - 0.5;
-    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f\u00a0%%, %s%s%s", who.name.c_str(), stroke_no, s.club.c_str(),
+    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f\u00a0%%, %s%s%s", who.name.c_str(), stroke_no, club_name(s.club).c_str(),
                   100.0 * last_meter_->power, timing_words(late).c_str(), at_the_limit ? " (the meter's limit)" : "", rest.c_str());
   } else {
-    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s%s%s", who.name.c_str(), stroke_no, s.club.c_str(),
+    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s%s%s", who.name.c_str(), stroke_no, club_name(s.club).c_str(),
                   who.human ? " (the caddie's swing)" : "", rest.c_str());
   }
   pending_message_ = msg;

@@ -105,4 +105,8 @@ double full_swing_speed(const GolferSkill& g, const ClubInfo& club);
 /// 9-iron, PW, SW, LW, putter, in order from longest to shortest.
 const std::vector<std::string>& golf_bag();
 
+/// A club of the bag in a golfer's words: the wedges by name ("pitching wedge" for "pw"), the
+/// others as the bag names them ("7-iron").
+std::string club_name(const std::string& club);
+
 }  // namespace sweetspot

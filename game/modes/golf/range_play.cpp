@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "game/modes/golf/golfer.hpp"
 #include "game/modes/replay.hpp"
 #include "physics/units.hpp"
 
@@ -60,7 +61,7 @@ void RangePlay::strike(const MeterInput& m, double t, bool caddie) {
   // round's message gives it), or the skill's drawn one for B.
   const double late = caddie || !last_click_ ? m.accuracy_ms : last_click_->click_error_ms();
   char msg[200];
-  std::snprintf(msg, sizeof msg, "Last ball: %s, shot %d of %d, power %.0f\u00a0%%, %s%s", club.c_str(), shots_with_club(), per_club_,
+  std::snprintf(msg, sizeof msg, "Last ball: %s, shot %d of %d, power %.0f\u00a0%%, %s%s", club_name(club).c_str(), shots_with_club(), per_club_,
                 100.0 * m.power, timing_words(late).c_str(), caddie ? " (your\u00a0skill's\u00a0swing)" : "");
   message_ = msg;
   // A club's shots done: the next club down the bag comes up.

@@ -241,3 +241,26 @@ TEST_CASE("as_played: a caught fly ends in the glove, a fielded ball where he pi
   CHECK(gone.outcome == BattedOutcome::HomeRun);
   CHECK(as_played(long_ball.trajectory, gone).samples.size() == long_ball.trajectory.samples.size());
 }
+
+TEST_CASE("a foul tip ends in the catcher's mitt, 4 ft behind the plate, not at the backstop", "[modes][baseball]") {
+  // A ball going straight back from the plate at 30 m/s, 1 m up, sampled every millisecond
+  // for 0.5 s (15 m: the backstop's distance).
+  ShotTrajectory back;
+  for (int i = 0; i <= 500; ++i) {
+    TrajectorySample s;
+    s.t = 0.001 * i;
+    s.position = Vec3(-30.0 * s.t, 1.0, 0.0);
+    back.samples.push_back(s);
+  }
+  back.summary.total_m = back.summary.carry_m = 15.0;
+  back.summary.total_time_s = 0.5;
+  const ShotTrajectory mitt = into_the_mitt(back);
+  CHECK(mitt.summary.total_m == Approx(4.0 * 0.3048).margin(0.03));  // the catcher's spot (fielding.cpp kSpots)
+  CHECK(mitt.summary.carry_m == mitt.summary.total_m);
+  CHECK(mitt.summary.total_time_s == Approx(4.0 * 0.3048 / 30.0).margin(0.002));
+  CHECK(mitt.samples.back().phase == Phase::Rest);
+  CHECK(mitt.samples.back().position.y() == 1.0);  // caught where it flew, at the mitt's height
+  // A ball that never got that far back is left as it was.
+  back.samples.resize(20);
+  CHECK(into_the_mitt(back).samples.size() == 20);
+}

@@ -545,6 +545,15 @@ TEST_CASE("in a crosswind the caddie aims upwind of the pin, the same way on eve
       return std::abs(std::sin(std::atan2(rest.z(), rest.x()) - r.line_to_pin()) * std::hypot(rest.x(), rest.z()));
     };
     CHECK(off_line(*play.caddie_plan()) < 0.5 * off_line(at_flag));
+    // His reason is his club's: another club on the same line says none; C brings his back.
+    GolfPlay changed(test::assets(), c, solo("scratch"));
+    changed.update({at(IntentKind::ClubDown, 1.0)}, 1.1);
+    REQUIRE(changed.club() != play.club());
+    CHECK(changed.aim() == play.aim());
+    CHECK(changed.aim_why() == GolfPlay::AimWhy::Pin);
+    changed.update({at(IntentKind::CaddieClub, 1.2)}, 1.3);
+    CHECK(changed.club() == play.club());
+    CHECK(changed.aim_why() == GolfPlay::AimWhy::Wind);
   }
   Course calm = first_hole();
   calm.holes[0].wind_speed = 0.0;

@@ -127,9 +127,11 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     // glove side and the rise or drop against a spinless ball (induced vertical break).
     const PitchMovement& m = c.movement();
     const bool arm_side = (m.horizontal_break < 0.0) != c.call().left_handed;
-    ImGui::Text("Pitch: %s %.0f mph, %.0f in %s, %.0f in %s", c.call().type.type.c_str(),
-                mps_to_mph(c.call().type.speed), 12.0 * std::abs(m_to_ft(m.horizontal_break)), arm_side ? "arm side" : "glove side",
-                12.0 * std::abs(m_to_ft(m.induced_vertical_break)), m.induced_vertical_break >= 0.0 ? "rise" : "drop");
+    // Said against the spinless ball ("2 in higher"): a slider's "2 in rise" read as a pitch
+    // that climbs, where it drops all the way, only less than gravity alone would drop it.
+    ImGui::TextWrapped("Pitch: %s %.0f mph, %.0f in %s, %.0f in %s than a spinless ball", c.call().type.type.c_str(),
+                       mps_to_mph(c.call().type.speed), 12.0 * std::abs(m_to_ft(m.horizontal_break)), arm_side ? "arm side" : "glove side",
+                       12.0 * std::abs(m_to_ft(m.induced_vertical_break)), m.induced_vertical_break >= 0.0 ? "higher" : "lower");
   }
   ImGui::Text("Swing: %s, %s-handed, %s", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right",
               c.timing_only() ? "timing only" : "bat height by hand");

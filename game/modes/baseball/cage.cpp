@@ -282,6 +282,13 @@ void BattingCage::apply(const Intent& in) {
     case IntentKind::ToggleLive:
       // Between pitches: batting practice, or a live game from its first inning at 0-0.
       if (stage_ == Stage::Pitching) break;
+      // A ball in play still in the air is called first (the switch would clear its record
+      // and its call unseen); the press is answered, not dropped.
+      if (stage_ == Stage::Batted && !told_) {
+        constexpr std::string_view kWait = "   (A: once this ball is called)";
+        if (!call_text_.ends_with(kWait)) call_text_ += kWait;
+        break;
+      }
       live_ = !live_;
       // Each starts its own record: practice swings are not the at-bats' (and the other's
       // last pitch is not this one's).

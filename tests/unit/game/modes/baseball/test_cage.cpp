@@ -314,3 +314,25 @@ TEST_CASE("timing only: the bat finds the pitch's height as a pro reads it, the 
   CHECK(met[0] <= 2);
   CHECK(met[1] >= 8);
 }
+
+TEST_CASE("A while a ball in play is in the air waits for its call: the session is not wiped unseen", "[modes][baseball]") {
+  int checked = 0;
+  for (std::uint64_t seed = 1; seed <= 12 && checked < 2; ++seed) {
+    BattingCage cage(test::assets(), seed);
+    double now = 1.0;
+    cage.update({at(IntentKind::BotSwings, now)}, now);
+    while (cage.stage() == BattingCage::Stage::Pitching && now < 20.0) cage.update({}, now += 0.01);
+    if (cage.stage() != BattingCage::Stage::Batted || cage.swings_told() == cage.swings().size()) continue;  // no ball in the air
+    ++checked;
+    cage.update({at(IntentKind::ToggleLive, now + 0.01)}, now + 0.02);
+    now += 0.02;
+    CHECK_FALSE(cage.live());
+    CHECK(cage.swings().size() == 1);
+    CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith("(A: once this ball is called)"));
+    while (cage.stage() == BattingCage::Stage::Batted && now < 60.0) cage.update({}, now += 0.02);
+    CHECK_THAT(cage.call_text(), !Catch::Matchers::Contains("(A: once"));  // the play's own call
+    cage.update({at(IntentKind::ToggleLive, now + 0.01)}, now + 0.02);
+    CHECK(cage.live());
+  }
+  CHECK(checked == 2);
+}

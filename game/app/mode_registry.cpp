@@ -78,7 +78,15 @@ ModeRegistry play_modes(const Assets& assets, const PlayOptions& o, std::ostream
          return make_range_view(*a, std::make_unique<RangePlay>(*a, golfer_skill(o.skill), 5, meter_difficulty(o.difficulty), o.seed),
                                 {o.bag.empty() ? std::string("sweetspot_bag.toml") : o.bag, !o.metric});
        }},
-      {"baseball", [a, o] { return make_cage_view(*a, std::make_unique<BattingCage>(*a, o.seed), {o.exit_when_done, o.pitches}); }},
+      {"baseball",
+       [a, o] {
+         // The batting cage's difficulty is the pitch's pace: its swing window in the player's time.
+         const MeterDifficulty d = meter_difficulty(o.difficulty);
+         const double scale = d == MeterDifficulty::Easy  ? BattingCage::kEasyPitchTimeScale
+                              : d == MeterDifficulty::Pro ? BattingCage::kProPitchTimeScale
+                                                          : BattingCage::kPitchTimeScale;
+         return make_cage_view(*a, std::make_unique<BattingCage>(*a, o.seed, scale), {o.exit_when_done, o.pitches});
+       }},
   };
 }
 

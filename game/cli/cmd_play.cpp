@@ -47,7 +47,7 @@ RunFn setup_play(CLI::App& sub) {
   window_only.push_back(sub.add_option("--handicap", o->handicaps, "golf: course handicaps 0..54, yours first, then each friend's (--human) and each bot's"));
   window_only.push_back(sub.add_option("--gimme", o->gimme, "golf: putts this close (m) are conceded, 0..3 (default 0.6 in match play, else off)"));
   window_only.push_back(sub.add_flag("--auto-putt", o->auto_putt, "golf: your putts are played for you, with your skill"));
-  window_only.push_back(sub.add_option("--difficulty", o->difficulty, "golf: the meter's perfect window: easy (25 ms), standard (10 ms, default), pro (0)"));
+  window_only.push_back(sub.add_option("--difficulty", o->difficulty, "golf: the meter's perfect window: easy (25 ms), standard (10 ms, default), pro (0); baseball: the pitch's pace, easy 0.3 of real time, standard 0.5, pro real time"));
   window_only.push_back(sub.add_flag("--no-flyover", [o](std::int64_t) { o->flyover = false; }, "golf: no flyover as a hole opens"));
   window_only.push_back(sub.add_option("--bag", o->bag, "golf: your measured bag (range --bag-out) for your caddie and map"));
   window_only.push_back(sub.add_option("--resume", o->resume, "golf: go on with a round saved with S"));

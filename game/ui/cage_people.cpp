@@ -28,6 +28,7 @@ const Eigen::Vector3f kWood{0.76f, 0.56f, 0.32f};
 struct Cast {
   enum class Clock { Held, Pitch, Batted } clock = Clock::Held;
   double held_now = 0.0, released_at = 0.0, batted_at = 0.0, swung_at = -1e9;
+  double scale = BattingCage::kPitchTimeScale;  // the pitch's pace against real time
   Stage stage = Stage::Ready;
   Vec3 release = Vec3::Zero();
   bool pitcher_left = false, batter_left = false, in_play = false, batted = false;
@@ -39,13 +40,13 @@ struct Cast {
 
   double mode_time(double t) const {
     switch (clock) {
-      case Clock::Pitch: return released_at + t / BattingCage::kPitchTimeScale;
+      case Clock::Pitch: return released_at + t / scale;
       case Clock::Batted: return batted_at + t;
       case Clock::Held: break;
     }
     return held_now;
   }
-  double pitch_clock(double now) const { return (now - released_at) * BattingCage::kPitchTimeScale; }
+  double pitch_clock(double now) const { return (now - released_at) * scale; }
 
   void draw(const PeopleFrame& frame, MeshData& out) const {
     const double now = mode_time(frame.t);
@@ -74,7 +75,7 @@ struct Cast {
     if (stage == Stage::Pitching) phase = 0.6 * std::clamp(pitch_clock(now) / std::max(flight_time, 1e-6), 0.0, 1.0);
     const bool swung_this_pitch = stage != Stage::Ready && pitch_clock(swung_at) >= 0.0;
     if (swung_this_pitch && now >= swung_at)
-      phase = 1.0 + 0.6 * std::clamp((now - swung_at) * BattingCage::kPitchTimeScale / 0.25, 0.0, 1.0);
+      phase = 1.0 + 0.6 * std::clamp((now - swung_at) * scale / 0.25, 0.0, 1.0);
     else if (swung_this_pitch && now >= swung_at - kSwingTime)
       phase = 1.0 - 0.4 * (swung_at - now) / kSwingTime;
     append_figure(out, batter_figure(phase, bat_height, batter_left), frame, kBatting, kWood);
@@ -112,7 +113,8 @@ PeopleFn cage_people(const BattingCage& c, double now) {
   Cast cast;
   cast.stage = c.stage();
   cast.held_now = now;
-  cast.released_at = now - c.pitch_clock(now) / BattingCage::kPitchTimeScale;
+  cast.scale = c.time_scale();
+  cast.released_at = now - c.pitch_clock(now) / cast.scale;
   cast.batted_at = c.batted_at();
   cast.swung_at = c.swung_at();
   cast.batted = c.batted();

@@ -7,6 +7,7 @@
 
 #include "game/modes/baseball/figures.hpp"
 #include "game/modes/replay.hpp"
+#include "physics/error.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -58,13 +59,16 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, b
   return text;
 }
 
-BattingCage::BattingCage(const Assets& assets, std::uint64_t seed)
+BattingCage::BattingCage(const Assets& assets, std::uint64_t seed, double time_scale)
     : assets_(assets),
+      time_scale_(time_scale),
       types_(load_pitch_types(assets)),
       rng_(seed),
       bot_(assets, batter_skill("pro"), 5),
       pitcher_(league_average_pitcher(types_), seed ^ 0x9E3779B97F4A7C15ULL),
       reader_(assets, batter_skill("pro"), seed ^ 0x5EED0F7EA0E5ULL) {
+  if (!(time_scale >= 0.1 && time_scale <= 1.0))
+    throw InputError("the cage's pitch time scale " + std::to_string(time_scale) + " is out of range (allowed: 0.1..1)");
   seed_ = seed;
   call_ = derby_pitch(types_, rng_);
 }
@@ -73,7 +77,7 @@ void BattingCage::next_pitch(double t) {
   call_ = live_ ? pitcher_.next(count_, lefty_).call : derby_pitch(types_, rng_);
   pitch_ = throw_pitch(assets_, call_);
   movement_ = statcast_movement(assets_, pitch_);
-  released_at_ = t + kWindupTime / kPitchTimeScale;
+  released_at_ = t + kWindupTime / time_scale_;
   stage_ = Stage::Pitching;
   swung_too_soon_ = false;
   // A ball still in the air when the next pitch is called: its outcome is settled, and the
@@ -167,8 +171,8 @@ void BattingCage::advance(double t) {
   if (bot_armed_ && stage_ == Stage::Pitching) {
     // His bat meets the pitch at his timing: at that instant of mode time, whatever the
     // frame rate.
-    const double contact = released_at_ + std::max(0.0, pitch_.flight_time + 1e-3 * bot_plan_.timing_ms) / kPitchTimeScale;
-    if (t >= contact) swing(bot_plan_, contact, bot_plan_.timing_ms / kPitchTimeScale, 0.0, true);
+    const double contact = released_at_ + std::max(0.0, pitch_.flight_time + 1e-3 * bot_plan_.timing_ms) / time_scale_;
+    if (t >= contact) swing(bot_plan_, contact, bot_plan_.timing_ms / time_scale_, 0.0, true);
   }
   if (stage_ == Stage::Pitching && pitch_clock(t) > pitch_.flight_time + kTakenAfter) {
     last_ = SwingRecord{};
@@ -307,7 +311,7 @@ void BattingCage::apply(const Intent& in) {
         // How late in the player's own time (the pitch plays slowed), as a swing's call says it:
         // past the swing's reach the ball is in the catcher's glove, so the pitch was taken.
         if (call_text_.find("too late") == std::string::npos) {
-          const double late_ms = 1000.0 * (t - released_at_ - pitch_.flight_time / kPitchTimeScale);
+          const double late_ms = 1000.0 * (t - released_at_ - pitch_.flight_time / time_scale_);
           char late[96];
           std::snprintf(late, sizeof late, "   (your swing came %.0f ms too late: the pitch was by)", late_ms);
           call_text_ += late;
@@ -338,7 +342,7 @@ void BattingCage::apply(const Intent& in) {
         // His body meets the pitch where it is pitched (contact_lead_for); the key's timing is
         // against that moment.
         s.contact_lead = contact_lead_for(inside_by(pitch_.plate, lefty_));
-        swing(s, t, timing_ms / kPitchTimeScale, undercut - s.undercut, false);
+        swing(s, t, timing_ms / time_scale_, undercut - s.undercut, false);
       }
       break;
     case IntentKind::BotSwings:

@@ -33,7 +33,11 @@ class BattingCage {
   enum class Stage { Ready, Pitching, Batted, Called };
 
   /// The pitch plays at this fraction of real time: 0.4 s is a hitter's lifetime, not a game's.
+  /// The standard cage's; `--difficulty easy` slows it further (the swing's window in the
+  /// player's time grows as 1/scale: about +-28 ms at 0.5, +-47 ms at 0.3) and `pro` plays it
+  /// in real time (+-14 ms, a hitter's own window).
   static constexpr double kPitchTimeScale = 0.5;
+  static constexpr double kEasyPitchTimeScale = 0.3, kProPitchTimeScale = 1.0;
   /// The cage's bat (bats.toml): what it swings, and what its crack rings like.
   static constexpr const char* kBat = kGameBat;
   /// The strike zone's bottom and top (ft 1.6 and 3.5, as in_zone) and the plate's half width, m.
@@ -50,7 +54,8 @@ class BattingCage {
   /// The pitcher's delivery before the release, in pitch time (figures.hpp kWindupTime): a
   /// pitch called at mode time t leaves his hand at t + kWindupTime / kPitchTimeScale.
 
-  explicit BattingCage(const Assets& assets, std::uint64_t seed = 11);
+  /// `time_scale`: the pitch's pace against real time, 0.1..1 (kPitchTimeScale by default).
+  explicit BattingCage(const Assets& assets, std::uint64_t seed = 11, double time_scale = kPitchTimeScale);
 
   void update(const Intents& intents, double now);
 
@@ -63,7 +68,9 @@ class BattingCage {
   /// m, the cage's ball (the league's).
   double ball_radius() const;
   /// Pitch time (s since release, slowed by kPitchTimeScale; negative in the wind-up) at mode time `t`.
-  double pitch_clock(double t) const { return (t - released_at_) * kPitchTimeScale; }
+  double pitch_clock(double t) const { return (t - released_at_) * time_scale_; }
+  /// The pitch's pace against real time (the constructor's).
+  double time_scale() const { return time_scale_; }
   /// The batted ball's flight runs from this mode time.
   double batted_at() const { return batted_at_; }
   /// The last swing met the ball and its flight is on show (in the air, or called after it).
@@ -119,6 +126,7 @@ class BattingCage {
   void count_pitch(PitchResult r);
 
   const Assets& assets_;
+  double time_scale_ = kPitchTimeScale;
   std::vector<PitchType> types_;
   Rng rng_;
   BotBatter bot_;

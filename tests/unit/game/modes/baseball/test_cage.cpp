@@ -10,6 +10,7 @@
 #include "game/modes/baseball/cage.hpp"
 #include "game/modes/baseball/fielding.hpp"
 #include "game/modes/baseball/figures.hpp"
+#include "physics/error.hpp"
 #include "physics/units.hpp"
 #include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
@@ -335,4 +336,37 @@ TEST_CASE("A while a ball in play is in the air waits for its call: the session 
     CHECK(cage.live());
   }
   CHECK(checked == 2);
+}
+
+TEST_CASE("the cage's difficulty is the pitch's pace: a key 40 ms early hits at easy, misses at standard", "[modes][baseball]") {
+  // Timing only (the pro's read sets the bat's height): 40 ms of the player's time early is
+  // 12 ms of pitch time at easy's 0.3 (inside the bat's ~14 ms window) and 20 ms at 0.5 (the
+  // ball goes by past the end of the bat).
+  int met[2] = {0, 0};
+  const double scales[2] = {BattingCage::kEasyPitchTimeScale, BattingCage::kPitchTimeScale};
+  for (int k = 0; k < 2; ++k) {
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+      BattingCage cage(test::assets(), seed, scales[k]);
+      cage.update({at(IntentKind::ToggleTiming, 0.1)}, 0.1);
+      double now = 1.0;
+      cage.update({at(IntentKind::Pitch, now)}, now);
+      const double arrive = now + (kWindupTime + cage.pitch().flight_time) / scales[k];
+      CHECK(cage.pitch_clock(arrive) == Approx(cage.pitch().flight_time));
+      const double key = arrive - 0.040;
+      bool sent = false;
+      while (cage.stage() == BattingCage::Stage::Pitching) {
+        now += 0.01;
+        Intents f;
+        if (!sent && key <= now) f.push_back(at(IntentKind::Swing, key)), sent = true;
+        cage.update(f, now);
+      }
+      REQUIRE(cage.swings().size() == 1);
+      CHECK(cage.swings().back().timing_ms == Approx(-40.0 * scales[k]).margin(1e-6));  // pitch time
+      met[k] += cage.swings().back().result.contact;
+    }
+  }
+  CHECK(met[0] >= 8);
+  CHECK(met[1] <= 1);
+  CHECK_THROWS_AS(BattingCage(test::assets(), 1, 0.05), InputError);
+  CHECK_THROWS_AS(BattingCage(test::assets(), 1, 1.5), InputError);
 }

@@ -181,9 +181,8 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
                   units.distance(here).c_str(), units.distance(stops).c_str());
     else ImGui::Text("Club: %s (stock carry %s; from here %s)", name.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
-    // 29 yd with a 78 yd wedge is not a full swing).
-    // Where that swing lands and stops: the club line's figures are the full swing's, which a
-    // part wedge from 80 yd flies well past.
+    // 29 yd with a 78 yd wedge is not a full swing), and where it lands and stops (the club
+    // line's figures are the full swing's, which a part wedge from 80 yd flies well past).
     if (const auto& plan = play.caddie_plan(); plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn())
       ImGui::TextWrapped("Caddie: a part swing, %.0f %% power (blue mark): carries %s, stops %s", 100.0 * plan->meter.power,
                          units.course(play.carry_here(club, plan->meter.power)).c_str(),
@@ -195,7 +194,7 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       if (std::abs(deg) < 0.05) ImGui::Text("Aim: at the cup");
       else if (std::abs(off) < kStraight) ImGui::Text("Aim: at the cup (%.1f deg %s)", std::abs(deg), off > 0.0 ? "right" : "left");
       else ImGui::Text("Aim: %s %s of the cup (%.1f deg)", break_length(std::abs(off), units).c_str(), off > 0.0 ? "right" : "left",
-                       std::abs(rad_to_deg(play.aim())));
+                       std::abs(deg));
     } else {
       // The caddie's aim off the pin says why; the player's own says nothing.
       const bool right = play.aim() >= 0.0;

@@ -52,7 +52,7 @@ class BattingCage {
   /// pitch (a press a beat late would otherwise throw one he is not ready for; P still calls).
   static constexpr double kLateSwing = 1.2;
   /// The pitcher's delivery before the release, in pitch time (figures.hpp kWindupTime): a
-  /// pitch called at mode time t leaves his hand at t + kWindupTime / kPitchTimeScale.
+  /// pitch called at mode time t leaves his hand at t + kWindupTime / time_scale().
 
   /// `time_scale`: the pitch's pace against real time, 0.1..1 (kPitchTimeScale by default).
   explicit BattingCage(const Assets& assets, std::uint64_t seed = 11, double time_scale = kPitchTimeScale);
@@ -67,7 +67,7 @@ class BattingCage {
   const PitchMovement& movement() const { return movement_; }
   /// m, the cage's ball (the league's).
   double ball_radius() const;
-  /// Pitch time (s since release, slowed by kPitchTimeScale; negative in the wind-up) at mode time `t`.
+  /// Pitch time (s since release, slowed by time_scale(); negative in the wind-up) at mode time `t`.
   double pitch_clock(double t) const { return (t - released_at_) * time_scale_; }
   /// The pitch's pace against real time (the constructor's).
   double time_scale() const { return time_scale_; }

@@ -537,7 +537,7 @@ ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
 
 ShotTrajectory into_the_mitt(const ShotTrajectory& t) {
   if (t.samples.empty()) return t;
-  const double mitt = std::abs(kSpots[1].depth_ft) * 0.3048;  // m behind the plate: the catcher's spot
+  const double mitt = ft_to_m(std::abs(kSpots[1].depth_ft));  // m behind the plate: the catcher's spot
   const Vec3& from = t.samples.front().position;
   ShotTrajectory out = t;
   out.samples.clear();

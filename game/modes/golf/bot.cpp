@@ -9,18 +9,13 @@
 #include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
-namespace {
-
-// Where the ball came to rest against the line it was aimed on: metres along and to the
-// right of the line from `from` toward direction `line` (rad right of +x).
-struct AlongAcross {
-  double along, across;
-};
 AlongAcross relative(const Vec3& from, double line, const Vec3& p) {
   const double dx = p.x() - from.x(), dz = p.z() - from.z();
   const double c = std::cos(line), s = std::sin(line);
   return {dx * c + dz * s, -dx * s + dz * c};
 }
+
+namespace {
 
 /// How near the cup's centre (m across the line) a planned putt must cross: a quarter of
 /// the cup's 54 mm radius, so the player's own start-line error, not the plan, decides it.

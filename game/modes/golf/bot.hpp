@@ -13,6 +13,13 @@
 
 namespace sweetspot {
 
+/// Where a ball lies against the line it was aimed on: metres along and to the right of the
+/// line from `from` toward direction `line` (rad right of +x).
+struct AlongAcross {
+  double along, across;
+};
+AlongAcross relative(const Vec3& from, double line, const Vec3& p);
+
 class GolfBot {
  public:
   /// A full swing's carry and total, per club of the bag: error-free on flat fairway, or as a

@@ -155,18 +155,13 @@ GolfPlay::AimWhy GolfPlay::aim_why_for(const GolfRound& r, bool tree_at_flag) co
   const double power = caddie_plan_ ? caddie_plan_->meter.power : 1.0;
   const FlownHere& f = flown_here(club(), power);
   const double aim_line = r.line_to_pin() + aim_;
-  const Vec3 u(std::cos(aim_line), 0.0, std::sin(aim_line));
-  const double back = aim_ > 0.0 ? -1.0 : 1.0;  // makes the pin's side of the aim line positive
-  const auto along = [&](const Vec3& p) { return (p - r.ball()).dot(u); };
-  const auto toward_pin = [&](const Vec3& p) {  // m off the aim line, + toward the pin's side
-    const Vec3 d = p - r.ball();
-    return back * (u.x() * d.z() - u.z() * d.x());
-  };
+  const AlongAcross land = relative(r.ball(), aim_line, f.landing), rest = relative(r.ball(), aim_line, f.rest);
+  const double back = aim_ > 0.0 ? -1.0 : 1.0;  // + toward the pin's side of the aim line
   const double tan_aim = std::tan(std::abs(aim_));
-  const double in_air = toward_pin(f.landing);
-  const double on_ground = toward_pin(f.rest) - in_air;
-  const bool air_does = f.carry > 0.0 && in_air >= 0.5 * along(f.landing) * tan_aim;
-  const bool ground_does = on_ground >= 0.5 * along(f.rest) * tan_aim;
+  const double in_air = back * land.across;
+  const double on_ground = back * rest.across - in_air;
+  const bool air_does = f.carry > 0.0 && in_air >= 0.5 * land.along * tan_aim;
+  const bool ground_does = on_ground >= 0.5 * rest.along * tan_aim;
   const HoleWind hw = r.wind();
   const double cross = hw.speed * std::sin(hw.toward - r.line_to_pin());  // m/s, + toward the right
   constexpr double kCrossNoted = 2.0;  // m/s (4.5 mph): moves a full shot's landing by metres

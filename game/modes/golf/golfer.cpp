@@ -64,7 +64,6 @@ const std::vector<std::string>& golf_bag() {
 
 std::string club_name(const std::string& club) {
   if (club == "pw") return "pitching wedge";
-  if (club == "gw") return "gap wedge";
   if (club == "sw") return "sand wedge";
   if (club == "lw") return "lob wedge";
   return club;

@@ -117,7 +117,10 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     ImGui::Text("Batting practice");
   }
   if (c.stage() == Stage::Ready) {
-    ImGui::TextUnformatted("Pitch: P or Space calls for one");
+    // The pace it comes at, so a player knows what --difficulty changed (easy 30 %, standard
+    // 50 %, pro real time: BattingCage::time_scale()).
+    if (c.time_scale() >= 1.0) ImGui::TextUnformatted("Pitch: P or Space calls for one, at real speed");
+    else ImGui::Text("Pitch: P or Space calls for one, at %.0f %% of real speed", 100.0 * c.time_scale());
     if (!c.timing_only() && c.swings().empty()) ImGui::TextUnformatted("New to it? T: just time the swing, the bat finds the height");
   } else if (c.stage() == Stage::Pitching || (!c.batted() && !pitch_by)) {
     // (A pitch swung through early is still on its way.)

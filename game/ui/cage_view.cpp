@@ -123,8 +123,11 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     else ImGui::Text("Pitch: P or Space calls for one, at %.0f %% of real speed", 100.0 * c.time_scale());
     if (!c.timing_only() && c.swings().empty()) ImGui::TextUnformatted("New to it? T: just time the swing, the bat finds the height");
   } else if (c.stage() == Stage::Pitching || (!c.batted() && !pitch_by)) {
-    // (A pitch swung through early is still on its way.)
-    ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
+    // (A pitch swung through early is still on its way.) In practice the pitch is called as
+    // a coach feeding a machine would; in a game the pitcher does not tell the hitter what is
+    // coming: named once it is by.
+    if (c.live()) ImGui::TextUnformatted("Pitch: on its way (named once it is by)");
+    else ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
   } else {
     // Once it has gone by, its shape as Statcast tells it: the run toward the pitcher's arm or
     // glove side and the rise or drop against a spinless ball (induced vertical break).
@@ -364,20 +367,27 @@ class CageView final : public ModeView {
     }
     hud_bottom_ = panel_bottom;
     if (!c.call_text().empty()) {
-      // The call in large type, in the sky right of the HUD panel (clear of the outfield
-      // wall's distance signs and the pitcher): on one line, else cut in two at a clause
-      // break; below the panel only when even two lines are too wide for the window.
-      constexpr float kCallScale = 1.6f;
+      // The call in large type, always in the sky right of the HUD panel (clear of the
+      // outfield wall's distance signs and the pitcher), where the eye learns to look: on one
+      // line, else cut in two at a clause break, in smaller type as long calls need; below
+      // the panel only in a window too narrow for even that.
       const float right = kStatsPanelRight + 16.0f, room = static_cast<float>(w) - right - 40.0f;
-      const auto width = [&](std::string_view t) { return banner_text_width(t, kCallScale); };
       const std::string& call = c.call_text();
       auto lines = std::pair<std::string, std::string>{call, std::string()};
-      if (width(call) > room) lines = split_in_two_lines(call, width);
-      const bool beside = std::max(width(lines.first), width(lines.second)) <= room;
-      if (!beside) lines = {call, std::string()};
+      bool beside = false;
+      float scale = 1.6f;
+      for (const float try_scale : {1.6f, 1.4f, 1.2f}) {
+        scale = try_scale;
+        const auto width = [&](std::string_view t) { return banner_text_width(t, scale); };
+        lines = {call, std::string()};
+        if (width(call) > room) lines = split_in_two_lines(call, width);
+        beside = std::max(width(lines.first), width(lines.second)) <= room;
+        if (beside) break;
+      }
+      if (!beside) lines = split_in_two_lines(call, [&](std::string_view t) { return banner_text_width(t, scale); });
       const float centre = beside ? 0.5f * (right + static_cast<float>(w)) : 0.5f * static_cast<float>(w);
-      float bottom = draw_banner(lines.first.c_str(), centre, beside ? 22.0f : panel_bottom + 14.0f, kCallScale);
-      if (!lines.second.empty()) bottom = draw_banner(lines.second.c_str(), centre, bottom + 10.0f, kCallScale);
+      float bottom = draw_banner(lines.first.c_str(), centre, beside ? 22.0f : panel_bottom + 14.0f, scale);
+      if (!lines.second.empty()) bottom = draw_banner(lines.second.c_str(), centre, bottom + 10.0f, scale);
       hud_bottom_ = std::max(hud_bottom_, static_cast<double>(bottom));
     }
     if (options_.pitches > 0 && static_cast<int>(c.swings().size()) >= options_.pitches && c.stage() == Stage::Called)

@@ -30,7 +30,7 @@ bool Team::to_the_bullpen(const MoundVisit& v, std::uint64_t seed) {
   const bool starter = pitchers_used == 1;
   bool done = v.runs_this_inning >= kBlowUpRuns;
   if (v.inning_start)
-    done = done || (starter ? thrown >= kStarterPitches || v.inning > kStarterInnings
+    done = done || (starter ? thrown >= kStarterPitches || (v.inning > kStarterInnings && thrown >= kStarterCruising)
                             : thrown > 0 && (v.outs_recorded >= 3 || thrown >= kRelieverPitches));
   else if (starter)
     done = done || thrown >= kStarterLimit || (thrown >= kStarterPitches - 15 && v.runners >= 2);

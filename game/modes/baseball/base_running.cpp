@@ -10,10 +10,15 @@
 namespace sweetspot {
 namespace {
 
-// A runner's lead and secondary lead when the ball is hit, by base (ESTIMATES of Statcast's
-// lead distances: ~10-12 ft off first at the pitch, more off second, where no one holds him
-// on): off first and third ~11 ft, off second ~18 ft.
-constexpr std::array<double, 3> kLead{3.4, 5.5, 3.4};  // m
+// A runner's lead when the ball is hit. Off first and third: his primary lead at the pitcher's
+// first move (Statcast's lead distance, ~10-12 ft off first; C. Moeller's coaching: three
+// yard-long steps, 10-12 ft) and the secondary lead he shuffles out while the pitch is on its
+// way, two shuffles landing as the ball reaches the hitting zone (coaching's universal rule;
+// ESTIMATE of a shuffle: a yard, as the lead's steps), so ~17 ft at contact. Off second no one
+// holds him on and he walks his lead out instead of holding it (ESTIMATE: ~18 ft at contact,
+// Moeller's 15-18 ft lead off second).
+constexpr double kSecondaryLead = 2.0 * 0.914;  // m
+constexpr std::array<double, 3> kLead{3.4 + kSecondaryLead, 5.5, 3.4 + kSecondaryLead};  // m
 constexpr double kRead = 0.3;          // s a runner takes to read a ball on the ground, or a catch (ESTIMATE)
 // A ball in the air that no fielder could reach (Statcast's catch probability under kPlainHit)
 // is read as a hit: the runners go once they have read it, kReadAir after contact, instead of

@@ -242,6 +242,10 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   const Range on_bat = bat_contact_range(bat, ball);
   out.past_end = !through && s.impact_from_tip < on_bat.min;
   out.through = through;
+  // Past the end the ball crosses the axis's extension, up to metres out along its flight
+  // where it descends across the swing plane: its height there says nothing of the bat. The
+  // height that mends the next swing is where he set the bat against the ball on time.
+  if (out.past_end) out.crossing_undercut = in.undercut;
   if (through || out.past_end) return out;
   s.impact_from_tip = std::min({s.impact_from_tip, kHandsFromTip, on_bat.max});
   Delivery d;

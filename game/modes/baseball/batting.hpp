@@ -170,7 +170,8 @@ struct SwingResult {
   double impact_from_tip = 0.0;
   /// Where the bat's axis crossed the ball's line (meet_ball): the ball's centre above it (m,
   /// + the bat passed under the ball), and whether that was past the end of the bat, farther
-  /// than the ball's edge reaches its end cap: why a swing missed.
+  /// than the ball's edge reaches its end cap: why a swing missed. Past the end the height is
+  /// the bat's set against the ball on time (the swing's undercut), not the axis's extension.
   double crossing_undercut = 0.0;
   bool past_end = false;
   /// The bat was through the zone (turned past a right angle, early) or not yet round (late)

@@ -34,8 +34,8 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, b
   const char* when = timing_ms >= 0 ? "late" : "early";
   char text[160];
   const double under = r.crossing_undercut + beyond_m, miss = std::abs(under) - kReach;
-  // Past the end and off height too (a crossing there has a height; a bat through the zone
-  // crossed nowhere): the height said as well, so the next swing mends both.
+  // Past the end and off height too (the height he set the bat against the ball; a bat
+  // through the zone crossed nowhere): the height said as well, so the next swing mends both.
   // With the height read for him (timing only) the height is not his to mend: not said.
   char height[48] = "";
   if (miss >= 0.01 && !height_read) std::snprintf(height, sizeof height, ", and %s %s it", inches(miss).c_str(), under > 0.0 ? "under" : "over");

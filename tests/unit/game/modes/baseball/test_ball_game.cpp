@@ -402,6 +402,9 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
           "[baseball][game][reference][statistics]") {
   // MLB 2023 (Baseball-Reference league pitching): starters 5.3 innings and ~88 pitches a
   // start, ~4.4 pitchers a team a game, and about 30 % of the runners relievers inherit score.
+  // Starts of 6 innings or more ~40 % (The Athletic, 2021-23), of 7 or more about half 2015's
+  // ~21 % by 2022 (Verducci, SI 2024; NL 2016: 21.4 %): a cruising starter goes on.
+  int six_plus = 0, seven_plus = 0;
   int starts = 0, starter_outs = 0, starter_pitches = 0, pitchers = 0, relieved_mid_inning = 0, inherited = 0, scored = 0;
   for (const GameRecord& g : league_games()) {
     CHECK(box_score_mismatch(g.away, g.home) == "");
@@ -410,6 +413,8 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
     for (const TeamBox* t : {&g.away, &g.home}) {
       ++starts;
       starter_outs += t->pitchers[0].outs;
+      six_plus += t->pitchers[0].outs >= 18;
+      seven_plus += t->pitchers[0].outs >= 21;
       starter_pitches += t->pitchers[0].pitches;
       pitchers += static_cast<int>(t->pitchers.size());
       relieved_mid_inning += t->pitchers[0].outs % 3 != 0;
@@ -441,6 +446,11 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
   CHECK(staff > 3.8);
   CHECK(staff < 5.0);
   CHECK(relieved_mid_inning >= starts / 5);
+  INFO(six_plus << " starts of 6+ innings, " << seven_plus << " of 7+ in " << starts);
+  CHECK(six_plus > starts * 30 / 100);
+  CHECK(six_plus < starts * 55 / 100);
+  CHECK(seven_plus > starts * 4 / 100);
+  CHECK(seven_plus < starts * 18 / 100);
   CHECK(inherited >= 40);
   CHECK(share > 0.18);
   CHECK(share < 0.42);

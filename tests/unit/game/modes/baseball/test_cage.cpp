@@ -175,6 +175,37 @@ TEST_CASE("a miss is called in a hitter's words and inches, never '0 in'", "[mod
   CHECK(miss_call(r, 48.0) == "Swinging strike: late by 48 ms, the bat not around yet");
 }
 
+TEST_CASE("a swing past the end with the bat set on the ball's line is not called over or under it", "[modes][baseball]") {
+  // Early, the turned bat's axis crosses the ball's line metres out toward the pitcher, where
+  // the ball is still well above the swing plane: a height read there (71 in in play) is not
+  // the bat's. Set on the ball's line, the call is timing alone.
+  PitchCall c;
+  c.type = pitch_type(load_pitch_types(test::assets()), "four-seam");
+  c.target_height = 0.5 * (StrikeZone::kLow + StrikeZone::kHigh);
+  const PitchFlight pitch = throw_pitch(test::assets(), c);
+  int past_end = 0;
+  for (double early_ms = 5.0; early_ms <= 40.0; early_ms += 1.0) {
+    CAPTURE(early_ms);
+    SwingInput s;
+    s.timing_ms = -early_ms;
+    s.undercut = 0.0;
+    const SwingResult r = swing_at(test::assets(), pitch, s, batter_skill("pro").bat_speed);
+    if (!r.past_end) continue;
+    ++past_end;
+    CHECK(r.crossing_undercut == 0.0);
+    CHECK_THAT(miss_call(r, -2.0 * early_ms), !Catch::Matchers::Contains(" it"));
+  }
+  // The case arises: some of these timings send the ball by past the end.
+  CHECK(past_end > 0);
+  // Set 80 mm over the ball's centre (0.6 in over its edge), the call says so past the end too.
+  SwingInput s;
+  s.timing_ms = -25.0;
+  s.undercut = SwingInput::kUndercut.min;
+  const SwingResult r = swing_at(test::assets(), pitch, s, batter_skill("pro").bat_speed);
+  REQUIRE(r.past_end);
+  CHECK_THAT(miss_call(r, -50.0), Catch::Matchers::EndsWith("and 0.6 in over it"));
+}
+
 TEST_CASE("a swing pressed during the windup is refused in words; strike three swinging keeps its miss", "[modes][baseball]") {
   BattingCage cage(test::assets(), 3);
   cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);

@@ -10,6 +10,7 @@
 
 #include "game/app/audio_out.hpp"
 #include "game/app/clip_recorder.hpp"
+#include "game/app/pause_menu.hpp"
 #include "game/app/resolution_scaler.hpp"
 #include "game/render/image.hpp"
 #include "game/render/renderer.hpp"
@@ -25,26 +26,6 @@ struct Slot {
   double left_at = 0.0;   // window time the mode was left (its clock stopped there)
   double last_now = 0.0;  // mode time of its last frame
 };
-
-enum class MenuChoice { None, Resume, Restart, NextMode, Quit };
-
-MenuChoice draw_pause_menu(const ModeView& view, int w, int h) {
-  MenuChoice choice = MenuChoice::None;
-  // At the right, half way down: clear of the centre, where a mode shows what the player
-  // paused to read (a final scorecard), and under the launch monitor's panel at the top.
-  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(w) - 12.0f, 0.58f * static_cast<float>(h)), ImGuiCond_Always, ImVec2(1.0f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_Always);
-  ImGui::Begin("Paused", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  ImGui::Text("%s", view.title());
-  ImGui::Separator();
-  const ImVec2 size(-1, 0);
-  if (ImGui::Button("Resume (Esc)", size)) choice = MenuChoice::Resume;
-  if (ImGui::Button((std::string(view.restart_label()) + " (R)").c_str(), size)) choice = MenuChoice::Restart;
-  if (ImGui::Button("Next mode (Tab)", size)) choice = MenuChoice::NextMode;
-  if (ImGui::Button("Quit (Q)", size)) choice = MenuChoice::Quit;
-  ImGui::End();
-  return choice;
-}
 
 }  // namespace
 
@@ -69,6 +50,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
   };
   activate(active, win.clock());
   bool paused = false, quit = false;
+  PauseMenu menu;
   double paused_at = 0.0;
   std::vector<KeyPress> carried;  // keys pressed after a Tab: the next mode's
   int shots = 0;                  // F12 screenshots taken
@@ -103,10 +85,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
         continue;
       }
       if (paused) {
-        if (k.key == GLFW_KEY_ESCAPE || k.key == GLFW_KEY_ENTER || k.key == GLFW_KEY_KP_ENTER) choice = MenuChoice::Resume;
-        else if (k.key == GLFW_KEY_R) choice = MenuChoice::Restart;
-        else if (k.key == GLFW_KEY_TAB) choice = MenuChoice::NextMode;
-        else if (k.key == GLFW_KEY_Q) choice = MenuChoice::Quit;
+        choice = menu.key(k.key, view.restart_loses());
         if (choice != MenuChoice::None) {
           carried.assign(keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, keys.end());
           break;
@@ -159,7 +138,9 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
       }
     }
     audio.collect();
-    if (paused && choice == MenuChoice::None) choice = draw_pause_menu(view, vi.width, vi.height);
+    if (paused && choice == MenuChoice::None)
+      choice = draw_pause_menu(menu, view.title(), view.restart_label(), view.restart_loses(), vi.width, vi.height);
+    if (choice != MenuChoice::None) menu.reset();
     win.render_ui();
 
     // What the frame decided, applied after the ImGui frame has ended.

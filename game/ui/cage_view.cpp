@@ -290,6 +290,12 @@ class CageView final : public ModeView {
   const char* title() const override { return "Batting cage"; }
   AmbienceSpec ambience() const override { return {Ambience::Ballpark, 0.0}; }
   const char* restart_label() const override { return "Restart session"; }
+  std::string restart_loses() const override {
+    const BattingCage& c = *cage_;
+    if (c.live() && c.at_bats().pa > 0) return "the live game's " + std::to_string(c.at_bats().pa) + " plate appearances so far";
+    const std::size_t n = c.swings().size();
+    return n == 0 ? std::string() : "this session's " + std::to_string(n) + (n == 1 ? " swing" : " swings");
+  }
   void send(const Intent& in) override { cage_->update({in}, in.time); }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 30; }
   void report(std::ostream& out) const override {

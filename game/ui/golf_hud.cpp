@@ -172,14 +172,14 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     const std::string name = club_name(club);
     if (club == "putter") ImGui::Text("Club: putter");
     else if (const std::optional<double> tree = play.tree_in_the_way(club))
-      ImGui::Text("Club: %s (stock carry %s, a tree in the way at %s)", name.c_str(), units.distance(carry).c_str(),
+      ImGui::TextWrapped("Club: %s (stock carry %s, a tree in the way at %s)", name.c_str(), units.distance(carry).c_str(),
                   units.distance(*tree).c_str());
     else if (const double here = play.carry_here(club), stops = play.stops_here(club); stops - here >= kRunNoted)
       // A run worth counting (the rough's flyer, a firm fairway): where it stops as well, the
       // distance the caddie chose it by.
-      ImGui::Text("Club: %s (stock carry %s; from here %s, stops %s)", name.c_str(), units.distance(carry).c_str(),
+      ImGui::TextWrapped("Club: %s (stock carry %s; from here %s, stops %s)", name.c_str(), units.distance(carry).c_str(),
                   units.distance(here).c_str(), units.distance(stops).c_str());
-    else ImGui::Text("Club: %s (stock carry %s; from here %s)", name.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
+    else ImGui::TextWrapped("Club: %s (stock carry %s; from here %s)", name.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing), and where it lands and stops (the club
     // line's figures are the full swing's, which a part wedge from 80 yd flies well past).

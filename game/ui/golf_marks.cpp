@@ -146,11 +146,12 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
   const Vec3 aim = play.aim_direction();
   const Vec3 side(-aim.z(), 0.0, aim.x());
   const std::string& club = play.club();
-  // The selected club's carry: the caddie's (the player's bag when they measured one).
+  // The selected club's full-swing carry from here (the wind, the lie: the panel's "from here"
+  // figure, so the ring and the panel agree); its spread the caddie's stock (the player's bag
+  // when they measured one).
   const GolfBot::Stock* stock = play.caddie().stock_of(club);
-  double carry = stock ? stock->carry : 0.0;
+  const double carry = club == "putter" ? r.to_pin() : play.carry_here(club);
   double spread = stock ? stock->spread : 0.0, side_spread = stock ? stock->side_spread : 0.0;
-  if (club == "putter") carry = r.to_pin();
   // The player's own dispersion with this club this round, when they have hit it twice with a
   // full swing (a part swing's carry is another club's: it would smear the spread).
   constexpr double kFullSwing = 0.9;

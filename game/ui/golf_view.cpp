@@ -74,6 +74,10 @@ class GolfView final : public ModeView {
   const char* restart_label() const override {
     return play_->stage() == GolfPlay::Stage::RoundOver ? "New round" : "Restart hole";
   }
+  std::string restart_loses() const override {
+    const int n = play_->strokes_a_restart_loses();
+    return n == 0 ? std::string() : "this hole's " + std::to_string(n) + (n == 1 ? " stroke" : " strokes");
+  }
   // A swing or a latency calibration under way: Esc takes it back instead of pausing.
   bool busy() const override { return play_->stage() == GolfPlay::Stage::Swinging || calibration_.has_value(); }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 10; }

@@ -6,6 +6,7 @@
 
 #include <initializer_list>
 #include <ostream>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -82,6 +83,9 @@ class ModeView {
   virtual bool busy() const { return false; }
   /// What the pause menu's restart does here ("Restart hole").
   virtual const char* restart_label() const { return "Restart"; }
+  /// What that restart throws away, in the player's words ("this hole's 3 strokes"); empty
+  /// when nothing is lost (the pause menu then restarts without asking).
+  virtual std::string restart_loses() const { return {}; }
   /// True once an automated run (--exit-when-done) has seen what it came for.
   virtual bool done() const { return false; }
   /// What the mode prints when the window closes (the swings of a batting session).

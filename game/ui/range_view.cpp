@@ -37,6 +37,10 @@ class RangeView final : public ModeView {
   const char* title() const override { return "Range"; }
   AmbienceSpec ambience() const override { return {Ambience::Course, 0.0}; }
   const char* restart_label() const override { return "New session"; }
+  std::string restart_loses() const override {
+    const std::size_t n = play_->session().shots().size();
+    return n == 0 ? std::string() : "this session's " + std::to_string(n) + (n == 1 ? " shot" : " shots");
+  }
   bool done() const override { return false; }
   void send(const Intent& in) override { play_->update({in}, in.time); }
   bool busy() const override { return play_->stage() == RangePlay::Stage::Swinging; }

@@ -565,6 +565,16 @@ void GolfPlay::new_round(double t) {
   flyover_at_ = t;
 }
 
+int GolfPlay::strokes_a_restart_loses() const {
+  const std::size_t hole = hole_shown();
+  if (stage_ == Stage::RoundOver || hole >= course_.holes.size()) return 0;
+  const auto& events = group_.events();
+  const std::size_t first = std::min(group_.hole_first_event(hole), events.size());
+  int n = 0;
+  for (std::size_t i = first; i < events.size(); ++i) n += events[i].kind != GolfEvent::Kind::ConcedeHole;
+  return n;
+}
+
 void GolfPlay::restart_hole(double t) {
   // The hole being played: during a flight, or on the card after it, the hole of the last
   // stroke (the group may already be on the next, or done).

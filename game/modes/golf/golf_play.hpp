@@ -138,6 +138,10 @@ class GolfPlay {
   /// How many times the hole at group index `hole` was started again from the pause menu
   /// this round: a mulligan the card shows (R), since the strokes it threw away are gone.
   int restarts(std::size_t hole) const { return hole < restarts_.size() ? restarts_[hole] : 0; }
+  /// The strokes (all players', conceded ones included) played on the hole a restart would
+  /// start again: what the pause menu's restart throws away. 0 once the round is over (a
+  /// new round keeps the finished card's result).
+  int strokes_a_restart_loses() const;
   /// The ball's centre where it lies (teed up on a tee).
   Vec3 ball_centre() const;
   /// World direction of the aim, horizontal unit.

@@ -183,7 +183,10 @@ TEST_CASE("restarting a hole puts the round back where the hole began", "[modes]
   t += 1.0;
   play.update({at(IntentKind::CaddiePlays, t), at(IntentKind::Continue, t + 0.1)}, t + 0.2);
   REQUIRE(play.round().card().back().strokes >= 1);
+  // What the pause menu says a restart loses: this hole's strokes, not the last one's.
+  CHECK(play.strokes_a_restart_loses() == play.round().card().back().strokes);
   play.update({at(IntentKind::Restart, t + 0.5)}, t + 0.6);
+  CHECK(play.strokes_a_restart_loses() == 0);
   CHECK(play.round().hole_index() == 1);
   CHECK(play.round().card().back().strokes == 0);
   CHECK(play.round().card().front().strokes == hole1);
@@ -484,6 +487,7 @@ TEST_CASE("restart during the round's last flight restarts the last hole, not pa
   }
   REQUIRE(play.group().finished());
   REQUIRE(play.stage() == GolfPlay::Stage::Flying);
+  CHECK(play.strokes_a_restart_loses() == play.round().card().back().strokes);
   play.update({at(IntentKind::Restart, t + 0.2)}, t + 0.2);
   CHECK(play.stage() == GolfPlay::Stage::Aiming);
   CHECK_FALSE(play.group().finished());

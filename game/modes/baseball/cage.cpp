@@ -265,9 +265,16 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     const char* side = la > 50.0 ? ", under the ball" : la < -20.0 ? ", on top of the ball" : "";
     // Exit velocity to a tenth, as Statcast gives it: 94.6 mph rounded to "95" read as hard-hit
     // (95 mph and up) where the session's figures count it as not.
-    std::snprintf(text, sizeof text, "%s%.1f mph off the bat, %.0f deg, %s%s", by_pro ? "The pro: " : "",
+    // And when he met it, as a miss's call says it, in his own time: early pulls the ball,
+    // late sends it the other way, so the next swing knows which way to move. Within half a
+    // 60 Hz frame (8 ms) no key press is finer: on time.
+    constexpr double kOnTimeMs = 8.0;
+    char when[32] = ", on time";
+    if (std::abs(pressed_ms) >= kOnTimeMs)
+      std::snprintf(when, sizeof when, ", %.0f ms %s", std::abs(pressed_ms), pressed_ms > 0.0 ? "late" : "early");
+    std::snprintf(text, sizeof text, "%s%.1f mph off the bat, %.0f deg, %s%s%s", by_pro ? "The pro: " : "",
                   mps_to_mph(last_.result.shot.launch.ball_speed), la, contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip),
-                  side);
+                  side, when);
     call_text_ = text;
   }
 }

@@ -299,6 +299,8 @@ TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where i
     cage.update({at(IntentKind::Swing, on_time)}, now = on_time);
     while (cage.swings().empty() && now < 10.0) cage.update({}, now += 0.02);
     REQUIRE(cage.swings().size() == 1);
+    // Met on time, and said so (a swing's timing is told on a hit as on a miss).
+    if (cage.stage() == BattingCage::Stage::Batted) CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith(", on time"));
     // The call while it flies is its launch; the outcome's once it is down.
     const double until = now + 15.0;
     while (cage.stage() == BattingCage::Stage::Batted && now < until) cage.update({}, now += 0.05);
@@ -394,6 +396,8 @@ TEST_CASE("the cage's difficulty is the pitch's pace: a key 40 ms early hits at 
       REQUIRE(cage.swings().size() == 1);
       CHECK(cage.swings().back().timing_ms == Approx(-40.0 * scales[k]).margin(1e-6));  // pitch time
       met[k] += cage.swings().back().result.contact;
+      // A hit says its timing in the player's time, as a miss does.
+      if (cage.swings().back().result.contact) CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith(", 40 ms early"));
     }
   }
   CHECK(met[0] >= 8);

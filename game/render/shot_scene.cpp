@@ -553,7 +553,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const Vec3 g(lp.x(), ground_at(lp.x(), lp.z()) + 0.05, lp.z());
       const double r = px(g, m.style.marker_radius_px);
       append_ring(scene.ground_overlay, g, 0.65 * r, r, kLandingColor);
-      shot_label(shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), g, kLandingColor);
+      if (carry_label_) shot_label(shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), g, kLandingColor);
     }
     if (t >= end_t - 1e-9 && (s.rest_position - s.landing_position).norm() > 0.5) {
       const Vec3 rp = s.rest_position;

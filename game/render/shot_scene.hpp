@@ -121,6 +121,10 @@ class ShotScene {
   /// golf stripes' numbers nearest it are written first, so where the far stripes crowd
   /// together the one that matters is the one shown. Nothing: nearest the ball first.
   void set_focus(const std::optional<double>& metres) { focus_ = metres; }
+  /// Whether the landing ring is labelled with the carry (on by default): a ground ball's
+  /// first hop a few feet out says nothing of it, and beside the label where it was fielded
+  /// it reads as a second distance for one ball.
+  void set_carry_label(bool shown) { carry_label_ = shown; }
   /// Arrows on the ground (none: none), e.g. a green's slopes while a putt is lined up.
   void set_ground_arrows(std::vector<GroundArrow> arrows) { arrows_ = std::move(arrows); }
   /// ShotSceneInput::wind, ::people and ::target_line, as play goes on.
@@ -162,6 +166,7 @@ class ShotScene {
   double backswing_ = 0.0;
   std::vector<GroundArrow> arrows_;
   std::optional<double> focus_;
+  bool carry_label_ = true;
 };
 
 }  // namespace sweetspot

@@ -81,6 +81,19 @@ void draw_zone(const BattingCage& c, const Camera& cam, int w, int h, bool cross
   if (l && r) dl->AddLine(*l, *r, c.power() ? IM_COL32(255, 170, 40, 230) : IM_COL32(80, 200, 255, 230), 3.0f);
 }
 
+// The spray chart's dots by outcome, with the key's words; any other ball in play is an out.
+struct SprayKey {
+  BattedOutcome outcome;
+  ImU32 colour;
+  const char* word;
+};
+constexpr std::array<SprayKey, 5> kSprayKey{{{BattedOutcome::HomeRun, IM_COL32(220, 40, 40, 255), "HR"},
+                                             {BattedOutcome::Triple, IM_COL32(250, 130, 0, 255), "3B"},
+                                             {BattedOutcome::Double, IM_COL32(235, 200, 100, 255), "2B"},
+                                             {BattedOutcome::Single, IM_COL32(40, 160, 140, 255), "1B"},
+                                             {BattedOutcome::Foul, IM_COL32(140, 200, 230, 255), "foul"}}};
+constexpr ImU32 kSprayOut = IM_COL32(150, 150, 150, 255);
+
 // The HUD panel at the top left; returns its bottom edge (px), where the call goes below it.
 // `all_keys`: every key the cage takes, four lines; else the few a pitch needs, in one.
 // `pitch_by`: the pitch has reached the plate (its shape is then told).
@@ -260,19 +273,21 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     const FieldingPlay& play = s.result.play;
     const bool in_air = f.carry_m > 40.0 || s.result.outcome == BattedOutcome::HomeRun;
     const Vec3 p = in_air ? f.landing_position : play.fielder >= 0 && !play.foul ? play.fielded_at : f.rest_position;
-    ImU32 col = IM_COL32(150, 150, 150, 255);
-    switch (s.result.outcome) {
-      case BattedOutcome::HomeRun: col = IM_COL32(220, 40, 40, 255); break;
-      case BattedOutcome::Triple: col = IM_COL32(250, 130, 0, 255); break;
-      case BattedOutcome::Double: col = IM_COL32(235, 200, 100, 255); break;
-      case BattedOutcome::Single: col = IM_COL32(40, 160, 140, 255); break;
-      case BattedOutcome::Foul: col = IM_COL32(140, 200, 230, 255); break;
-      default: break;
-    }
-    dl->AddCircleFilled(px(p), 4.0f, col);
+    const auto key = std::find_if(kSprayKey.begin(), kSprayKey.end(), [&](const SprayKey& k) { return k.outcome == s.result.outcome; });
+    dl->AddCircleFilled(px(p), 4.0f, key != kSprayKey.end() ? key->colour : kSprayOut);
   }
   dl->PopClipRect();
   dl->AddText(ImVec2(x0 + 6, y0 + 4), IM_COL32(255, 255, 255, 255), "spray chart");
+  // The key to the dots, under the title: each colour with its scorer's abbreviation.
+  float kx = x0 + 8.0f;
+  const float ky = y0 + 8.0f + ImGui::GetTextLineHeight();
+  const auto key_entry = [&](ImU32 colour, const char* word) {
+    dl->AddCircleFilled(ImVec2(kx + 3.0f, ky + 0.5f * ImGui::GetTextLineHeight()), 4.0f, colour);
+    dl->AddText(ImVec2(kx + 9.0f, ky), IM_COL32(255, 255, 255, 255), word);
+    kx += 14.0f + ImGui::CalcTextSize(word).x;
+  };
+  for (const SprayKey& k : kSprayKey) key_entry(k.colour, k.word);
+  key_entry(kSprayOut, "out");
   return bottom;
 }
 
@@ -314,11 +329,16 @@ class CageView final : public ModeView {
       else if (k.key == GLFW_KEY_K || k.key == GLFW_KEY_F1) all_keys_ = !all_keys();  // F1: where a newcomer looks for help
     drawn_stage_ = c.stage();
     // The scene holds the pitch while it flies and the batted ball after contact.
-    if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) scene_->set_shot(c.pitch().trajectory, std::nullopt);
+    if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) {
+      scene_->set_shot(c.pitch().trajectory, std::nullopt);
+      scene_->set_carry_label(true);
+    }
     // A fresh session (restart, or A between batting practice and live at-bats): no old trace.
     if (c.stage() == Stage::Ready && stage_before != Stage::Ready) scene_->set_shot(ShotTrajectory{}, std::nullopt);
     if (c.swings().size() != before && c.last().result.contact) {
       scene_->set_shot(c.played(), std::nullopt);
+      // A ground ball's distance is where it was fielded (the call's, the rest label's).
+      scene_->set_carry_label(batted_ball_type(c.last().result.shot.launch.vertical_angle) != BattedBallType::GroundBall);
       ImpactSoundInput crack;
       crack.contact_time = c.last().result.contact_time;
       crack.normal_impulse = c.last().result.normal_impulse;

@@ -313,6 +313,9 @@ TEST_CASE("a fly caught at the wall is labelled beside the fence's sign, never i
       const Eigen::Vector4f& b = view.label_boxes[j];
       CHECK_FALSE((a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]));
     }
+  // The cage leaves a ground ball's first-hop carry unlabelled: the rest is the same.
+  scene.set_carry_label(false);
+  CHECK(scene.build(cam, land, w, h).label_boxes.size() == 6);
 }
 
 TEST_CASE("a missing or broken shader names the file and the compiler log", "[render]") {

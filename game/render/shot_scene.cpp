@@ -560,7 +560,8 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const Vec3 g(rp.x(), ground_at(rp.x(), rp.z()), rp.z());
       const double h = px(g, 30.0);
       append_pin(scene.top_overlay, g, h, px(g, 2.5), cam_right, kRestColor);
-      shot_label(shown(s.total_m), g + Vec3(0, h, 0) + cam_up * px(g, 6.0), g, kRestColor);
+      const std::string text = rest_label_.value_or(shown(s.total_m));
+      if (!text.empty()) shot_label(text, g + Vec3(0, h, 0) + cam_up * px(g, 6.0), g, kRestColor);
     }
   }
 

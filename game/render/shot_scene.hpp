@@ -125,6 +125,9 @@ class ShotScene {
   /// first hop a few feet out says nothing of it, and beside the label where it was fielded
   /// it reads as a second distance for one ball.
   void set_carry_label(bool shown) { carry_label_ = shown; }
+  /// The rest pin's label: nothing = the total distance, as the carry's; "" = none; else the
+  /// text given (a putt's "6 ft to the cup": beside the cup the total reads as what is left).
+  void set_rest_label(std::optional<std::string> text) { rest_label_ = std::move(text); }
   /// Arrows on the ground (none: none), e.g. a green's slopes while a putt is lined up.
   void set_ground_arrows(std::vector<GroundArrow> arrows) { arrows_ = std::move(arrows); }
   /// ShotSceneInput::wind, ::people and ::target_line, as play goes on.
@@ -167,6 +170,7 @@ class ShotScene {
   std::vector<GroundArrow> arrows_;
   std::optional<double> focus_;
   bool carry_label_ = true;
+  std::optional<std::string> rest_label_;
 };
 
 }  // namespace sweetspot

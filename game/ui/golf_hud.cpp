@@ -265,6 +265,11 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     const std::string away = units.course(last.to_pin_m);
     // A ball at rest and then holed by a conceded putt (a gimme): where it stopped, on the green.
     if (lie == "holed") ImGui::Text("At rest %s from the pin: conceded", away.c_str());
+    else if (last.club == "putter" && last.lie == "green")
+      // A putt is judged by its pace: how far past the cup it ran, or how short it stopped,
+      // along its line (the rest of the distance is the line's miss).
+      ImGui::Text("At rest %s from the pin (%s %s), %s", away.c_str(), units.course(std::abs(last.past_m)).c_str(),
+                  last.past_m >= 0.0 ? "past" : "short", lie_words(lie));
     else ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(lie));
   };
   if (!play.message().empty() && !in_air) {
@@ -328,7 +333,10 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   if (!(stage == GolfPlay::Stage::Aiming || stage == GolfPlay::Stage::Swinging) || !play.human_turn()) return;
   const bool putting = play.club() == "putter";
   const auto& meter = play.meter();
-  const MeterBar bar = draw_meter_bar(meter, play.last_click(), putting, perfect_window_ms(play.setup().difficulty), w, h, now);
+  // The last clicks' marks: a putt's only for a putt on the same green by the same player.
+  const std::optional<MeterClock> marks =
+      play.last_click() && (!play.last_click()->putting() || play.last_click_here()) ? play.last_click() : std::nullopt;
+  const MeterBar bar = draw_meter_bar(meter, marks, putting, perfect_window_ms(play.setup().difficulty), w, h, now);
   const float x0 = bar.x0, y0 = bar.y0, bh = bar.bh;
   const auto at = [&](double f) { return bar.at(f); };
   const double shown = bar.shown;
@@ -383,7 +391,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       // Before the stroke the caption is always the cup's: the power that rolls the putt on
       // flat and 17 in past (the triangle); the last putt's power beside it, not in its place.
       char last[40] = "";
-      if (play.last_click() && play.last_click()->putting())
+      if (play.last_click() && play.last_click()->putting() && play.last_click_here())
         std::snprintf(last, sizeof last, " (last putt %.0f %%)", 100.0 * play.last_click()->power());
       // Past the putter's longest stroke the mark sits at the bar's end: say so, not "110 %".
       const double reach = play.flat_roll(1.1);

@@ -427,6 +427,16 @@ Camera GolfView::flyover_camera(double progress) const {
   return c;
 }
 
+namespace {
+// The rest pin's label: a putt's is what it leaves ("6 ft to the cup"; beside the cup its
+// length read as that), none once holed; any other stroke's is its total.
+std::optional<std::string> rest_label(const StrokeRecord& r, const GolfUnits& units) {
+  if (r.club != "putter") return std::nullopt;
+  if (r.end == StrokeEnd::Holed) return std::string();
+  return units.course(r.to_pin_m) + " to the cup";
+}
+}  // namespace
+
 std::unique_ptr<ShotScene> GolfView::stroke_scene() const {
   std::unique_ptr<ShotScene> scene;
   try {
@@ -436,6 +446,7 @@ std::unique_ptr<ShotScene> GolfView::stroke_scene() const {
   }
   const ShotResult& shot = play_->last_shot();
   scene->set_shot(shot.trajectory, impactor_placement(shot));
+  scene->set_rest_label(rest_label(play_->last_record(), units_));
   return scene;
 }
 
@@ -573,6 +584,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       // player's club, whose full finish a putt must not take.
       if (!play_->last_shot().impactor_mesh.empty()) ensure_scene(play_->last_shot().impactor_mesh);
       scene_->set_shot(play_->last_shot().trajectory, impactor_placement(play_->last_shot()));
+      scene_->set_rest_label(rest_label(play_->last_record(), units_));
       scene_->set_target_line(aim_line(play_->last_shot().aim));  // the high camera and the replay's side view
       sound_strike(play_->last_shot());
       rattle_due_ = play_->last_shot().end == ShotEnd::Holed;

@@ -45,15 +45,15 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, b
   else if (r.past_end)
     // The turned bat's end does not reach the ball's line, early or late, over a middle pitch
     // too: said as the hitter sees it, with what mends it.
-    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the ball went by past the end of the bat (%s)%s", when,
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the ball went past the end of the bat (%s)%s", when,
                   std::abs(timing_ms), timing_ms >= 0 ? "start the swing sooner" : "wait a touch longer", height);
   else if (miss > 0.0 && height_read)
     // His timing is what he controls; where the bat crossed follows from it and the pro's read
     // (early crosses over the ball, late under it).
-    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat %s %s the ball (timing only: the pro set its height)",
-                  when, std::abs(timing_ms), inches(miss).c_str(), under > 0.0 ? "under" : "over");
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat missed %s the ball by %s (timing only: the pro set its height)",
+                  when, std::abs(timing_ms), under > 0.0 ? "under" : "over", inches(miss).c_str());
   else if (miss > 0.0)
-    std::snprintf(text, sizeof text, "Swinging strike: the bat passed %s %s the ball", inches(miss).c_str(), under > 0.0 ? "under" : "over");
+    std::snprintf(text, sizeof text, "Swinging strike: the bat missed %s the ball by %s", under > 0.0 ? "under" : "over", inches(miss).c_str());
   else
     std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms", when, std::abs(timing_ms));
   return text;
@@ -235,10 +235,12 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     // of it, so a fielded one says where he picked it up (the field's rest label).
     const FieldingPlay& play = last_.result.play;
     const double launch = last_.result.shot.launch.vertical_angle;
-    const bool grounder_fielded = batted_ball_type(launch) == BattedBallType::GroundBall && !play.caught && play.fielder >= 0 &&
-                                  !play.foul;
+    const bool grounder = batted_ball_type(launch) == BattedBallType::GroundBall && !play.caught;
     char how_far[48];
-    if (grounder_fielded) std::snprintf(how_far, sizeof how_far, "fielded at %.0f ft", m_to_ft(played_.summary.total_m));
+    if (grounder && play.fielder >= 0 && !play.foul)
+      std::snprintf(how_far, sizeof how_far, "fielded at %.0f ft", m_to_ft(played_.summary.total_m));
+    else if (grounder)  // a foul grounder: where it was touched or stopped, as the field's label
+      std::snprintf(how_far, sizeof how_far, "%.0f ft", m_to_ft(played_.summary.total_m));
     else std::snprintf(how_far, sizeof how_far, "%.0f ft", m_to_ft(played_.summary.carry_m));
     std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %s", words.c_str(), mps_to_mph(last_.result.shot.launch.ball_speed),
                   rad_to_deg(launch), how_far);

@@ -357,6 +357,8 @@ void GolfPlay::advance(double t) {
     } else if (const auto m = meter_->result()) {
       last_meter_ = *m;
       last_click_ = *meter_;
+      last_click_by_ = player_;
+      last_click_hole_ = group_.hole_index();
       strike({club(), aim_, *m}, false, t);
     }
   }
@@ -518,6 +520,8 @@ void GolfPlay::apply(const Intent& in) {
         if (const auto m = meter_->result()) {
           last_meter_ = *m;
           last_click_ = *meter_;
+          last_click_by_ = player_;
+          last_click_hole_ = group_.hole_index();
           strike({club(), aim_, *m}, false, t);
         }
       } else if (in.kind == IntentKind::Cancel) {

@@ -101,6 +101,9 @@ class GolfPlay {
   const std::optional<MeterInput>& last_meter() const { return last_meter_; }
   /// The meter as the last human stroke left it: where the clicks landed (the view marks them).
   const std::optional<MeterClock>& last_click() const { return last_click_; }
+  /// The last human stroke was the player to play's own, on this hole: its putt's power is a
+  /// guide to this putt's (one on another green is another length).
+  bool last_click_here() const { return last_click_ && last_click_by_ == player_ && last_click_hole_ == group_.hole_index(); }
   /// What the last stroke did, in player words; set when the ball stops, not before.
   const std::string& message() const { return message_; }
   /// The message is the last stroke's result (last_record() is that stroke), not a note of
@@ -220,6 +223,8 @@ class GolfPlay {
   std::optional<MeterClock> meter_;
   std::optional<MeterInput> last_meter_;
   std::optional<MeterClock> last_click_;  ///< the meter as the last human stroke left it
+  int last_click_by_ = 0;                 ///< whose it was
+  std::size_t last_click_hole_ = 0;       ///< on which hole (group index)
   std::size_t round_hole_ = 0;            ///< the group's hole when the last stroke was struck
   ShotResult last_;
   StrokeRecord last_record_;

@@ -348,6 +348,11 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
   const bool on_this_green = rec.end == StrokeEnd::Rest && surface_at(ball_) == "green" && !on_another_green(ball_);
   if (h.strokes <= h.par - 2 && (rec.end == StrokeEnd::Holed || on_this_green)) h.green_in_regulation = true;
   rec.to_pin_m = rec.end == StrokeEnd::Holed ? 0.0 : std::hypot(hole().pin.x() - rec.rest.x(), hole().pin.z() - rec.rest.z());
+  if (rec.end != StrokeEnd::Holed) {
+    const double lx = hole().pin.x() - rec.start.x(), lz = hole().pin.z() - rec.start.z();
+    const double to_cup = std::hypot(lx, lz);
+    if (to_cup > 0.0) rec.past_m = ((rec.rest.x() - rec.start.x()) * lx + (rec.rest.z() - rec.start.z()) * lz) / to_cup - to_cup;
+  }
   h.shots.push_back(rec);
   if (shot != nullptr) *shot = std::move(r);
   if (rec.end == StrokeEnd::Holed) {

@@ -34,6 +34,9 @@ struct StrokeRecord {
   Vec3 rest = Vec3::Zero();   ///< m, where it came to rest (in the water or out of bounds: there)
   StrokeEnd end = StrokeEnd::Rest;
   double to_pin_m = 0.0;      ///< m from the rest position to the cup (0 when holed)
+  /// m the ball stopped beyond the cup along the line from where it was struck (a putt's
+  /// "2 ft past"), negative short of it; 0 when holed.
+  double past_m = 0.0;
   double carry_m = 0.0;       ///< m to the first landing
   double side_m = 0.0;        ///< m right (+) of the stroke's aim line at landing (TrackMan's Side)
   int penalty = 0;            ///< penalty strokes this shot incurred

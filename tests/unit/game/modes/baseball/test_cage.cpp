@@ -50,7 +50,7 @@ TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any
       // end, and the call says so.
       if (late_ms < -10.0 && late_ms > -30.0) {
         CHECK_FALSE(cage.swings().back().result.contact);
-        CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 40 ms, the ball went by past the end of the bat"));
+        CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("early by 40 ms, the ball went past the end of the bat"));
       }
       // 40 ms early the bat has turned past a right angle: it was through the zone.
       if (late_ms < -30.0) {
@@ -148,28 +148,28 @@ TEST_CASE("B between pitches calls for one and the pro swings at it, at the same
 TEST_CASE("a miss is called in a hitter's words and inches, never '0 in'", "[modes][baseball]") {
   SwingResult r;
   r.crossing_undercut = 0.066 + 0.004;  // the bat 4 mm under the ball's edge
-  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 0.2 in under the ball");
+  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat missed under the ball by 0.2 in");
   r.crossing_undercut = -(0.066 + 0.0002);
-  CHECK(miss_call(r, -3.0) == "Swinging strike: the bat passed 0.1 in over the ball");
+  CHECK(miss_call(r, -3.0) == "Swinging strike: the bat missed over the ball by 0.1 in");
   r.crossing_undercut = 0.066 + 0.031;
-  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat passed 1 in under the ball");
+  CHECK(miss_call(r, 3.0) == "Swinging strike: the bat missed under the ball by 1 in");
   // The bat set 14 cm under the ball, past the 8 cm the swing's physics takes: the call gives
   // the 14 cm (less the reach: 7.4 cm, 3 in), not the 8 cm the physics swung at.
   r.crossing_undercut = 0.08;
-  CHECK(miss_call(r, 3.0, 0.06) == "Swinging strike: the bat passed 3 in under the ball");
+  CHECK(miss_call(r, 3.0, 0.06) == "Swinging strike: the bat missed under the ball by 3 in");
   r.crossing_undercut = -0.08;
-  CHECK(miss_call(r, 3.0, -0.10) == "Swinging strike: the bat passed 4 in over the ball");
+  CHECK(miss_call(r, 3.0, -0.10) == "Swinging strike: the bat missed over the ball by 4 in");
   // Timing only: the height was the pro's read, so the miss is said by the player's timing.
-  CHECK(miss_call(r, 23.4, -0.10, true) == "Swinging strike: late by 23 ms, the bat 4 in over the ball (timing only: the pro set its height)");
+  CHECK(miss_call(r, 23.4, -0.10, true) == "Swinging strike: late by 23 ms, the bat missed over the ball by 4 in (timing only: the pro set its height)");
   // Past the end and over the ball as well: both said.
   r.crossing_undercut = -0.12;
   r.past_end = true;
   CHECK(miss_call(r, -20.0) ==
-        "Swinging strike: early by 20 ms, the ball went by past the end of the bat (wait a touch longer), and 2 in over it");
-  CHECK(miss_call(r, -20.0, 0.0, true) == "Swinging strike: early by 20 ms, the ball went by past the end of the bat (wait a touch longer)");
+        "Swinging strike: early by 20 ms, the ball went past the end of the bat (wait a touch longer), and 2 in over it");
+  CHECK(miss_call(r, -20.0, 0.0, true) == "Swinging strike: early by 20 ms, the ball went past the end of the bat (wait a touch longer)");
   r.crossing_undercut = 0.0;
-  CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, the ball went by past the end of the bat (wait a touch longer)");
-  CHECK(miss_call(r, 17.0) == "Swinging strike: late by 17 ms, the ball went by past the end of the bat (start the swing sooner)");
+  CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, the ball went past the end of the bat (wait a touch longer)");
+  CHECK(miss_call(r, 17.0) == "Swinging strike: late by 17 ms, the ball went past the end of the bat (start the swing sooner)");
   r.past_end = false;
   r.through = true;
   CHECK(miss_call(r, 48.0) == "Swinging strike: late by 48 ms, the bat not around yet");
@@ -286,9 +286,9 @@ TEST_CASE("the cage tells each pitch's movement as Statcast reads it, the seam w
   CHECK(seen.size() >= 4);
 }
 
-TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where it came down", "[modes][baseball]") {
-  bool grounder = false, fly = false;
-  for (std::uint64_t seed = 1; seed <= 60 && !(grounder && fly); ++seed) {
+TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where it came down, a foul grounder's where it stopped", "[modes][baseball]") {
+  bool grounder = false, fly = false, foul_grounder = false;
+  for (std::uint64_t seed = 1; seed <= 60 && !(grounder && fly && foul_grounder); ++seed) {
     BattingCage cage(test::assets(), seed);
     // On time, the bat set 0 to 5 cm above the ball's middle by seed: flies and grounders.
     for (std::uint64_t k = 0; k < seed % 3; ++k) cage.update({at(IntentKind::BatUp, 0.1 + 0.1 * k)}, 0.1 + 0.1 * k);
@@ -305,10 +305,17 @@ TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where i
     const double until = now + 15.0;
     while (cage.stage() == BattingCage::Stage::Batted && now < until) cage.update({}, now += 0.05);
     const SwingResult& r = cage.swings().back().result;
-    if (!r.contact || r.outcome == BattedOutcome::Foul || r.outcome == BattedOutcome::HomeRun) continue;
     const bool on_ground = batted_ball_type(r.shot.launch.vertical_angle) == BattedBallType::GroundBall;
     const ShotTrajectory played = as_played(r.shot.trajectory, r.play);
     char want[48];
+    if (r.contact && r.outcome == BattedOutcome::Foul && on_ground && !r.play.caught) {
+      // A foul grounder: where it was touched or stopped (the field's label), not its first hop.
+      foul_grounder = true;
+      std::snprintf(want, sizeof want, ", %.0f ft", m_to_ft(played.summary.total_m));
+      INFO(cage.call_text());
+      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains(want));
+    }
+    if (!r.contact || r.outcome == BattedOutcome::Foul || r.outcome == BattedOutcome::HomeRun) continue;
     if (on_ground && !r.play.caught && r.play.fielder >= 0) {
       grounder = true;
       std::snprintf(want, sizeof want, "fielded at %.0f ft", m_to_ft(played.summary.total_m));
@@ -324,6 +331,7 @@ TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where i
   }
   CHECK(grounder);
   CHECK(fly);
+  CHECK(foul_grounder);
 }
 
 TEST_CASE("timing only: the bat finds the pitch's height as a pro reads it, the key times the swing", "[modes][baseball]") {

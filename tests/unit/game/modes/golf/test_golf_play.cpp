@@ -113,6 +113,27 @@ TEST_CASE("a meter click's error is the key press time minus the mark, at 16, 33
   }
 }
 
+TEST_CASE("the last clicks are this hole's guide only on this hole", "[modes][golf]") {
+  // The meter marks the last putt's power as a guide to the next putt; one on another green
+  // is another length, so it is this player's on this hole or none.
+  GolfPlay play(test::assets(), first_hole(2), solo("scratch"));
+  play.update({at(IntentKind::Swing, 1.0), at(IntentKind::Swing, 1.8), at(IntentKind::Swing, 2.3)}, 2.4);
+  REQUIRE(play.last_click());
+  double t = 3.0;
+  play.update({at(IntentKind::Continue, t)}, t);
+  while (play.stage() != GolfPlay::Stage::Aiming && t < 20.0) play.update({}, t += 0.5);
+  REQUIRE(play.round().hole_index() == 0);
+  CHECK(play.last_click_here());
+  while (play.round().hole_index() == 0 && t < 200.0) {
+    t += 1.0;
+    play.update({at(IntentKind::CaddiePlays, t), at(IntentKind::Continue, t + 0.1)}, t + 0.2);
+    play.update({at(IntentKind::Continue, t + 0.3)}, t + 0.4);
+  }
+  REQUIRE(play.round().hole_index() == 1);
+  REQUIRE(play.last_click());  // the caddie's strokes leave the player's clicks as they were
+  CHECK_FALSE(play.last_click_here());
+}
+
 TEST_CASE("Esc cancels a swing in progress and no stroke is counted", "[modes][golf]") {
   GolfPlay play(test::assets(), first_hole(), golfer_skill("scratch"));
   play.update({at(IntentKind::Swing, 1.0)}, 1.2);

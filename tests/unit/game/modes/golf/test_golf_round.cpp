@@ -147,6 +147,27 @@ TEST_CASE("a putt lips out at too high a speed and drops at a lower one", "[golf
   CHECK(play.finished());
 }
 
+TEST_CASE("a putt left out is recorded as so far past the cup or short of it, along its line", "[golf][round][putting]") {
+  // Hole 1's green, 3 m short of the cup on its line: the caddie's putt holes; half its pace
+  // stops short, twice it runs past; the shortfall and the overshoot are measured along the
+  // line from the ball to the cup, so they never exceed the distance left.
+  const CourseHole& h = test::links().holes[0];
+  const auto tee = std::make_pair(h.pin.x() - 3.0, h.pin.z());
+  GolfBot caddie(test::assets(), golfer_skill("tour"), 1);
+  for (const double pace : {0.5, 2.0}) {
+    GolfRound round(test::assets(), one_hole(1, tee), golfer_skill("tour"));
+    StrokeInput in = caddie.intend(round);
+    in.meter.power = std::min(1.1, in.meter.power * pace);
+    const StrokeRecord r = round.play(in);
+    REQUIRE(r.end == StrokeEnd::Rest);
+    INFO("pace x" << pace << ": " << r.to_pin_m << " m from the cup, past " << r.past_m);
+    CHECK(std::abs(r.past_m) <= r.to_pin_m + 1e-9);
+    CHECK(std::abs(r.past_m) > 0.5 * r.to_pin_m);  // on its line: the pace's error, not the line's
+    if (pace < 1.0) CHECK(r.past_m < 0.0);
+    else CHECK(r.past_m > 0.0);
+  }
+}
+
 TEST_CASE("the lie is the surface under the ball and changes the strike", "[golf][round][lie]") {
   const CourseHole& h = test::links().holes[1];
   GolfRound fairway(test::assets(), one_hole(2, std::make_pair(150.0, -2.0)), golfer_skill("tour"));

@@ -10,6 +10,7 @@
 #include "game/modes/replay.hpp"
 #include "game/report/round_json.hpp"
 #include "game/ui/golf_draw.hpp"
+#include "game/ui/two_lines.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -448,9 +449,19 @@ std::string full_swing_caption(const std::optional<MeterClock>& meter, double no
 
 void draw_meter_caption(const MeterBar& bar, const std::string& text) {
   ImDrawList* dl = ImGui::GetForegroundDrawList();
-  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-  dl->AddRectFilled(ImVec2(bar.x0 - 4, bar.y0 - 28), ImVec2(bar.x0 + size.x + 4, bar.y0 - 24 + size.y), kBand, 4.0f);
-  dl->AddText(ImVec2(bar.x0, bar.y0 - 26), IM_COL32(255, 255, 255, 255), text.c_str());
+  // Within the window: moved left when it runs past the right edge, and cut in two at a
+  // clause break when it is wider than the window (a putt's caption in an 800 px window).
+  const float window = ImGui::GetIO().DisplaySize.x;
+  const auto width = [](std::string_view s) { return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x; };
+  std::pair<std::string, std::string> lines{text, ""};
+  if (width(text) > window - 16.0f) lines = split_in_two_lines(text, width);
+  const float line = ImGui::GetTextLineHeight();
+  const float wide = std::max(width(lines.first), width(lines.second));
+  const float x = std::max(8.0f, std::min(bar.x0, window - 8.0f - wide));
+  const float top = bar.y0 - 26.0f - (lines.second.empty() ? 0.0f : line);
+  dl->AddRectFilled(ImVec2(x - 4, top - 2), ImVec2(x + wide + 4, bar.y0 - 24 + line), kBand, 4.0f);
+  dl->AddText(ImVec2(x, top), IM_COL32(255, 255, 255, 255), lines.first.c_str());
+  if (!lines.second.empty()) dl->AddText(ImVec2(x, top + line), IM_COL32(255, 255, 255, 255), lines.second.c_str());
 }
 
 void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree) {

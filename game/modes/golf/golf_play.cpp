@@ -525,10 +525,11 @@ void GolfPlay::apply(const Intent& in) {
           strike({club(), aim_, *m}, false, t);
         }
       } else if (in.kind == IntentKind::Cancel) {
+        const bool putt = meter_ && meter_->putting();
         meter_.reset();
         stage_ = Stage::Aiming;
         ++cancelled_;
-        say("Swing cancelled, no stroke counted (Space: swing again)");
+        say(putt ? "Putt cancelled, no stroke counted (Space: putt again)" : "Swing cancelled, no stroke counted (Space: swing again)");
         swing_undone_ = true;
       }
       break;

@@ -134,6 +134,18 @@ TEST_CASE("the last clicks are this hole's guide only on this hole", "[modes][go
   CHECK_FALSE(play.last_click_here());
 }
 
+TEST_CASE("Esc during a putt says the putt was cancelled", "[modes][golf]") {
+  const std::optional<Course> c = test::national_hole_from_green(0, 2.5, 0.3);
+  REQUIRE(c);
+  GolfPlay play(test::assets(), *c, solo("tour"));
+  REQUIRE(play.club() == "putter");
+  play.update({at(IntentKind::Swing, 1.0)}, 1.2);
+  REQUIRE(play.stage() == GolfPlay::Stage::Swinging);
+  play.update({at(IntentKind::Cancel, 1.3)}, 1.4);
+  CHECK(play.message() == "Putt cancelled, no stroke counted (Space: putt again)");
+  CHECK(play.round().card().back().strokes == 0);
+}
+
 TEST_CASE("Esc cancels a swing in progress and no stroke is counted", "[modes][golf]") {
   GolfPlay play(test::assets(), first_hole(), golfer_skill("scratch"));
   play.update({at(IntentKind::Swing, 1.0)}, 1.2);
@@ -142,6 +154,7 @@ TEST_CASE("Esc cancels a swing in progress and no stroke is counted", "[modes][g
   CHECK(play.stage() == GolfPlay::Stage::Aiming);
   CHECK(play.cancelled() == 1);
   CHECK(play.swing_undone());  // the meter's caption says so until the next swing
+  CHECK(play.message() == "Swing cancelled, no stroke counted (Space: swing again)");
   CHECK(play.round().card().back().strokes == 0);
   CHECK(play.round().card().back().shots.empty());
   // Left alone long after, nothing finishes itself: the meter is gone.

@@ -76,6 +76,12 @@ void draw_putt_read(const GolfPlay& play, const Camera& cam, int w, int h);
 /// The read in a golfer's words: which way it breaks and where to aim, in cups and the
 /// player's units, and how hard ("uphill: play it as 16 ft on the flat"). Empty without a read.
 std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& units);
+/// Why a club's carry from here (m) differs from the bag's `stock`: the wind's share (`here`
+/// less the same swing's in still air, `calm`) and the ground's (the lie, a landing above or
+/// below the ball: the rest), each when it is worth naming (~3 yd) — ": wind +9 yd, lie and
+/// slope -12 yd"; "" when neither is. A bag the player measured on the range (`measured`)
+/// holds his own strikes as well: no ground's share then.
+std::string why_from_here(double stock, bool measured, double here, double calm, const GolfUnits& units);
 /// A putt's break or aim beside the cup: inches (centimetres) inside a yard (a metre), then
 /// the putt's units.
 std::string break_length(double m, const GolfUnits& units);

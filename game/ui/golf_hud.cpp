@@ -34,6 +34,21 @@ std::string GolfUnits::putt(double m) const {
 
 std::string GolfUnits::course(double m) const { return m < kNear ? putt(m) : distance(m); }
 
+// A share of the carry from here worth naming (m, ~3 yd): under it the wind's or the ground's
+// part is inside a good player's carry spread with one club (a few yards).
+constexpr double kShareNoted = 2.7;
+
+std::string why_from_here(double stock, bool measured, double here, double calm, const GolfUnits& units) {
+  std::string out;
+  const auto share = [&](const char* what, double d) {
+    if (std::abs(d) < kShareNoted) return;
+    out += (out.empty() ? ": " : ", ") + std::string(what) + (d >= 0.0 ? " +" : " -") + units.distance(std::abs(d));
+  };
+  share("wind", here - calm);
+  if (!measured) share("lie and slope", calm - stock);
+  return out;
+}
+
 std::string break_length(double m, const GolfUnits& units) {
   char by[24];
   if (units.imperial && m < 0.9144) std::snprintf(by, sizeof by, "%.0f in", std::max(1.0, m / 0.0254));
@@ -178,9 +193,12 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     else if (const double here = play.carry_here(club), stops = play.stops_here(club); stops - here >= kRunNoted)
       // A run worth counting (the rough's flyer, a firm fairway): where it stops as well, the
       // distance the caddie chose it by.
-      ImGui::TextWrapped("Club: %s (stock carry %s; from here %s, stops %s)", name.c_str(), units.distance(carry).c_str(),
-                  units.distance(here).c_str(), units.distance(stops).c_str());
-    else ImGui::TextWrapped("Club: %s (stock carry %s; from here %s)", name.c_str(), units.distance(carry).c_str(), units.distance(here).c_str());
+      ImGui::TextWrapped("Club: %s (stock carry %s; from here %s%s; stops %s)", name.c_str(), units.distance(carry).c_str(),
+                         units.distance(here).c_str(), why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units).c_str(),
+                         units.distance(stops).c_str());
+    else
+      ImGui::TextWrapped("Club: %s (stock carry %s; from here %s%s)", name.c_str(), units.distance(carry).c_str(), units.distance(here).c_str(),
+                         why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units).c_str());
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing), and where it lands and stops (the club
     // line's figures are the full swing's, which a part wedge from 80 yd flies well past).

@@ -187,14 +187,20 @@ const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double 
   in.aim = aim_;
   in.meter.power = power;
   const FlightSummary f = r.simulate(in).trajectory.summary;
-  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, f.landing_position, f.rest_position,
-                   r.first_touch_in_a_tree(f)};
+  const double calm = r.wind().speed > 0.0 ? r.simulate_calm(in).trajectory.summary.carry_m : f.carry_m;
+  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, calm, f.landing_position,
+                   f.rest_position, r.first_touch_in_a_tree(f)};
   return *slot;
 }
 
 double GolfPlay::carry_here(const std::string& club, double power) const {
   if (round().finished() || club == "putter") return 0.0;
   return flown_here(club, power).carry;
+}
+
+double GolfPlay::calm_carry_here(const std::string& club, double power) const {
+  if (round().finished() || club == "putter") return 0.0;
+  return flown_here(club, power).calm_carry;
 }
 
 double GolfPlay::stops_here(const std::string& club, double power) const {

@@ -173,6 +173,10 @@ class GolfPlay {
   /// The same swing's distance to where it stops (m): the caddie picks a club by where it
   /// finishes, so a club that flies short of the pin and runs up to it is said both ways.
   double stops_here(const std::string& club, double power = 1.0) const;
+  /// The same swing's carry from here in still air (m): the wind's share in carry_here() is
+  /// the difference, the rest of its difference from the bag's stock carry is the ground's
+  /// (the lie, and the landing above or below the ball).
+  double calm_carry_here(const std::string& club, double power = 1.0) const;
   /// Where the stroke the player would play with `club` along the aim (the caddie's part
   /// swing when he planned one with it, else a full swing) ends its flight against something
   /// standing above the ground, a tree: its carry (m) to it. None when it lands on the ground.
@@ -257,6 +261,7 @@ class GolfPlay {
     double power = 1.0;
     double carry = 0.0;
     double total = 0.0;
+    double calm_carry = 0.0;      ///< the same swing's in still air
     Vec3 landing = Vec3::Zero();  ///< where it first comes down
     Vec3 rest = Vec3::Zero();     ///< where it stops
     bool in_tree = false;

@@ -132,6 +132,12 @@ ShotResult GolfRound::simulate(const StrokeInput& in, bool record_samples) const
   return run_shot(resolve(s, *assets_), "hole " + std::to_string(hole().number), {true, record_samples});
 }
 
+ShotResult GolfRound::simulate_calm(const StrokeInput& in) const {
+  ShotSpec s = spec_for(in);
+  s.environment.wind_speed = 0.0;
+  return run_shot(resolve(s, *assets_), "hole " + std::to_string(hole().number), {true, false});
+}
+
 HoleCard GolfRound::new_card() const {
   HoleCard c;
   c.number = hole().number;

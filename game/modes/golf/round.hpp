@@ -128,6 +128,8 @@ class GolfRound {
   const std::vector<HoleWind>& winds() const { return winds_; }
   /// The shot without playing it (bots plan with it). Deterministic.
   ShotResult simulate(const StrokeInput& in, bool record_samples = false) const;
+  /// simulate() in still air: the hole's wind's share in a stroke is what it adds to this.
+  ShotResult simulate_calm(const StrokeInput& in) const;
   /// Where a ball at rest on a cart path (Rule 16.1b) or on another hole's green (Rule 13.1f)
   /// is moved to, free: the nearest spot of playable ground (not a path, water, out of bounds
   /// or a green), no nearer the hole; `spot` itself when none lies within kMaxRelief.

@@ -50,3 +50,15 @@ TEST_CASE("the caddie's read in a golfer's words: the break in inches and cups, 
   CHECK(break_length(1.20, feet) == "4 ft");
   CHECK(break_length(0.30, metres) == "30 cm");
 }
+
+TEST_CASE("the club line says why its carry from here is not the bag's: the wind's share and the ground's", "[ui][golf]") {
+  const GolfUnits yards{true};
+  // 200 m in the bag, 195 m in still air from this lie (5 m to the ground), 205 m with the wind.
+  CHECK(why_from_here(200.0, false, 205.0, 195.0, yards) == ": wind +11 yd, lie and slope -5 yd");
+  // Into the wind from a perfect lie: only the wind's share.
+  CHECK(why_from_here(200.0, false, 190.0, 200.5, yards) == ": wind -11 yd");
+  // Shares under ~3 yd are a good player's own spread: nothing said.
+  CHECK(why_from_here(200.0, false, 201.0, 199.0, yards).empty());
+  // A measured bag holds the player's own strikes: the ground's share is not claimed.
+  CHECK(why_from_here(200.0, true, 205.0, 195.0, yards) == ": wind +11 yd");
+}

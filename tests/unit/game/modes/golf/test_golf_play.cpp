@@ -551,6 +551,10 @@ TEST_CASE("the club's carry from here is the stroke's own physics: the hole's wi
   CHECK(b.carry_here("5-iron") < calm_carry - 5.0);  // held up by the wind
   in.aim = b.aim();
   CHECK(b.carry_here("5-iron") == b.round().simulate(in).trajectory.summary.carry_m);
+  // The wind's share, which the HUD names: the same swing from the same ball in still air.
+  CHECK(b.calm_carry_here("5-iron") == b.round().simulate_calm(in).trajectory.summary.carry_m);
+  CHECK(b.calm_carry_here("5-iron") > b.carry_here("5-iron") + 5.0);
+  CHECK(a.calm_carry_here("5-iron") == calm_carry);  // no wind, no share
   CHECK(a.carry_here("putter") == 0.0);
   // Where the same swing stops, the distance the caddie picks by: past the carry on this
   // fairway (the 5-iron runs ~15 m), and the stroke's own.

@@ -190,9 +190,11 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     else if (const std::optional<double> tree = play.tree_in_the_way(club))
       ImGui::TextWrapped("Club: %s (stock carry %s, a tree in the way at %s)", name.c_str(), units.distance(carry).c_str(),
                   units.distance(*tree).c_str());
-    else if (const double here = play.carry_here(club), stops = play.stops_here(club); stops - here >= kRunNoted)
-      // A run worth counting (the rough's flyer, a firm fairway): where it stops as well, the
-      // distance the caddie chose it by.
+    else if (const double here = play.carry_here(club), stops = play.stops_here(club);
+             stops - here >= kRunNoted || (here + kShareNoted < r.to_pin() && stops - here >= kShareNoted))
+      // A run worth counting (the rough's flyer, a firm fairway), or one that takes a ball
+      // landing short of the pin up toward it (a wedge that carries 65 yd of 76): where it
+      // stops as well, the distance the caddie chose it by.
       ImGui::TextWrapped("Club: %s (stock carry %s; from here %s%s; stops %s)", name.c_str(), units.distance(carry).c_str(),
                          units.distance(here).c_str(), why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units).c_str(),
                          units.distance(stops).c_str());

@@ -307,9 +307,18 @@ class CageView final : public ModeView {
   const char* restart_label() const override { return "Restart session"; }
   std::string restart_loses() const override {
     const BattingCage& c = *cage_;
-    if (c.live() && c.at_bats().pa > 0) return "the live game's " + std::to_string(c.at_bats().pa) + " plate appearances so far";
+    const int pa = c.at_bats().pa;
+    const Count& k = c.count();
+    // Live, the game so far: its plate appearances, or the one under way (a 2-0 count).
+    if (c.live() && pa > 0) return "the live game so far (" + std::to_string(pa) + (pa == 1 ? " plate appearance)" : " plate appearances)");
+    if (c.live() && (k.balls > 0 || k.strikes > 0 || !c.swings().empty()))
+      return "the live game's first plate appearance (" + std::to_string(k.balls) + "-" + std::to_string(k.strikes) + ")";
     const std::size_t n = c.swings().size();
-    return n == 0 ? std::string() : "this session's " + std::to_string(n) + (n == 1 ? " swing" : " swings");
+    if (n == 0) return {};
+    std::size_t pro = 0;
+    for (const SwingRecord& s : c.swings()) pro += s.by_pro;
+    return "this session's " + std::to_string(n) + (n == 1 ? " swing" : " swings") +
+           (pro > 0 ? " (" + std::to_string(pro) + " by the pro)" : std::string());
   }
   void send(const Intent& in) override { cage_->update({in}, in.time); }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 30; }

@@ -76,7 +76,10 @@ class GolfView final : public ModeView {
   }
   std::string restart_loses() const override {
     const int n = play_->strokes_a_restart_loses();
-    return n == 0 ? std::string() : "this hole's " + std::to_string(n) + (n == 1 ? " stroke" : " strokes");
+    if (n == 0) return {};
+    // With others in the group the count is everyone's: said so, not taken for the player's own.
+    const bool group = play_->group().players().size() > 1;
+    return "this hole's " + std::to_string(n) + (n == 1 ? " stroke" : " strokes") + (group ? " (the whole group's)" : "");
   }
   // A swing or a latency calibration under way: Esc takes it back instead of pausing.
   bool busy() const override { return play_->stage() == GolfPlay::Stage::Swinging || calibration_.has_value(); }

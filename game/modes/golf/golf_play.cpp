@@ -597,7 +597,9 @@ void GolfPlay::restart_hole(double t) {
   // The round is deterministic: the turns before this hole, replayed, leave it exactly where
   // it was when the hole began.
   restarts_.resize(course_.holes.size(), 0);
-  ++restarts_[hole];
+  // A restart before any stroke on the hole throws nothing away: no mulligan to mark.
+  const bool threw_away = strokes_a_restart_loses() > 0;
+  if (threw_away) ++restarts_[hole];
   const std::size_t first = std::min(group_.hole_first_event(hole), group_.events().size());
   std::vector<GolfEvent> before(group_.events().begin(), group_.events().begin() + static_cast<std::ptrdiff_t>(first));
   group_ = GolfGroup(assets_, course_, setup_.players, setup_.options);
@@ -609,7 +611,8 @@ void GolfPlay::restart_hole(double t) {
   landed_at_ = t;
   stage_ = Stage::Aiming;
   begin_turn(t);
-  say("Hole " + std::to_string(course_.holes[group_.hole_index()].number) + " restarted (the card marks it R)");
+  say("Hole " + std::to_string(course_.holes[group_.hole_index()].number) +
+      (threw_away ? " restarted (the card marks it R)" : " restarted"));
 }
 
 }  // namespace sweetspot

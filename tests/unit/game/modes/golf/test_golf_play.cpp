@@ -229,6 +229,10 @@ TEST_CASE("restarting a hole puts the round back where the hole began", "[modes]
   // The card says so (R): the strokes thrown away are gone, so a mulligan is not hidden.
   CHECK(play.restarts(1) == 1);
   CHECK(play.restarts(0) == 0);
+  // Restarted again before any stroke: nothing thrown away, no second mark.
+  play.update({at(IntentKind::Restart, t + 0.7)}, t + 0.8);
+  CHECK(play.restarts(1) == 1);
+  CHECK(play.message() == "Hole 2 restarted");
 }
 
 TEST_CASE("a bot takes its own turn, and a stroke's result is told once the ball stops", "[modes][golf]") {

@@ -92,6 +92,9 @@ class GolfView final : public ModeView {
       return;
     }
     play_->update({in}, in.time);
+    // A restart throws the stroke on screen away with the rest: the view goes to the ball at
+    // address at once, not on through the discarded flight's landing.
+    if (in.kind == IntentKind::Restart) flight_shown_ = false;
   }
   void frame(const ViewInput& in, Renderer& renderer) override;
   void report(std::ostream& out) const override {

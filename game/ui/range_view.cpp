@@ -46,7 +46,8 @@ class RangeView final : public ModeView {
   bool busy() const override { return play_->stage() == RangePlay::Stage::Swinging; }
   void frame(const ViewInput& in, Renderer& renderer) override;
   void report(std::ostream& out) const override {
-    out << "range: " << play_->session().shots().size() << " shots, " << play_->session().bag("you").clubs.size() << " clubs\n";
+    const std::size_t shots = play_->session().shots().size(), clubs = play_->session().bag("you").clubs.size();
+    out << "range: " << shots << (shots == 1 ? " shot, " : " shots, ") << clubs << (clubs == 1 ? " club\n" : " clubs\n");
   }
 
  private:

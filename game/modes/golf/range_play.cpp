@@ -75,6 +75,9 @@ void RangePlay::apply(const Intent& in) {
       session_ = RangeSession(assets_, skill_);
       club_ = 0;
       stage_ = Stage::Aiming;
+      // The last ball goes with the session: nothing struck yet, nothing to show.
+      last_ = ShotResult{};
+      struck_at_ = 0.0;
       meter_.reset();
       message_ = "A new session";
       return;

@@ -93,6 +93,12 @@ TEST_CASE("at the range the club keys and B work while the last ball flies and o
   for (int k = 0; k < 3; ++k) play.update({test::at(IntentKind::CaddiePlays, rest + 1.0 + 0.2 * k)}, rest + 1.1 + 0.2 * k);
   CHECK(play.stage() == RangePlay::Stage::Flying);
   CHECK(play.session().shots().size() == 5);
+  // A new session: no shots, and no last ball left to show.
+  play.update({test::at(IntentKind::Restart, rest + 2.0)}, rest + 2.1);
+  CHECK(play.session().shots().empty());
+  CHECK(play.struck_at() == 0.0);
+  CHECK(play.last_shot().trajectory.samples.empty());
+  CHECK(play.stage() == RangePlay::Stage::Aiming);
 }
 
 TEST_CASE("each golfer swings the driver as TrackMan measured golfers of that level: a slower drive spins more and rolls "

@@ -124,6 +124,7 @@ void RangeView::draw_panel(int w, bool in_air) {
   }
   ImGui::TextDisabled("Space: swing (3 clicks)  B: a swing with your skill's errors");
   ImGui::TextDisabled("Up/Down club  Enter: skip the flight  S: save the bag  U: units");
+  ImGui::TextDisabled("Esc: pause  Tab: next mode");
   if (!play_->message().empty()) ImGui::TextWrapped("%s", play_->message().c_str());
   if (!note_.empty()) ImGui::TextWrapped("%s", note_.c_str());
   ImGui::End();

@@ -190,17 +190,19 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
     else if (const std::optional<double> tree = play.tree_in_the_way(club))
       ImGui::TextWrapped("Club: %s (stock carry %s, a tree in the way at %s)", name.c_str(), units.distance(carry).c_str(),
                   units.distance(*tree).c_str());
-    else if (const double here = play.carry_here(club), stops = play.stops_here(club);
-             stops - here >= kRunNoted || (here + kShareNoted < r.to_pin() && stops - here >= kShareNoted))
+    else {
+      const double here = play.carry_here(club), stops = play.stops_here(club);
+      const std::string why = why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units);
       // A run worth counting (the rough's flyer, a firm fairway), or one that takes a ball
       // landing short of the pin up toward it (a wedge that carries 65 yd of 76): where it
       // stops as well, the distance the caddie chose it by.
-      ImGui::TextWrapped("Club: %s (stock carry %s; from here %s%s; stops %s)", name.c_str(), units.distance(carry).c_str(),
-                         units.distance(here).c_str(), why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units).c_str(),
-                         units.distance(stops).c_str());
-    else
-      ImGui::TextWrapped("Club: %s (stock carry %s; from here %s%s)", name.c_str(), units.distance(carry).c_str(), units.distance(here).c_str(),
-                         why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units).c_str());
+      if (stops - here >= kRunNoted || (here + kShareNoted < r.to_pin() && stops - here >= kShareNoted))
+        ImGui::TextWrapped("Club: %s (stock carry %s; from here %s%s; stops %s)", name.c_str(), units.distance(carry).c_str(),
+                           units.distance(here).c_str(), why.c_str(), units.distance(stops).c_str());
+      else
+        ImGui::TextWrapped("Club: %s (stock carry %s; from here %s%s)", name.c_str(), units.distance(carry).c_str(),
+                           units.distance(here).c_str(), why.c_str());
+    }
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing), and where it lands and stops (the club
     // line's figures are the full swing's, which a part wedge from 80 yd flies well past).
@@ -412,8 +414,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       // Before the stroke the caption is always the cup's: the power that rolls the putt on
       // flat and 17 in past (the triangle); the last putt's power beside it, not in its place.
       char last[40] = "";
-      if (play.last_click() && play.last_click()->putting() && play.last_click_here())
-        std::snprintf(last, sizeof last, " (last putt %.0f %%)", 100.0 * play.last_click()->power());
+      if (marks && marks->putting()) std::snprintf(last, sizeof last, " (last putt %.0f %%)", 100.0 * marks->power());
       // Past the putter's longest stroke the mark sits at the bar's end: say so, not "110 %".
       const double reach = play.flat_roll(1.1);
       if (plays + past > reach)

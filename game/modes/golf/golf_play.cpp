@@ -361,11 +361,7 @@ void GolfPlay::advance(double t) {
                         : "Swing abandoned, no stroke counted (Space: start, Space: power, Space: accuracy)");
       swing_undone_ = true;
     } else if (const auto m = meter_->result()) {
-      last_meter_ = *m;
-      last_click_ = *meter_;
-      last_click_by_ = player_;
-      last_click_hole_ = group_.hole_index();
-      strike({club(), aim_, *m}, false, t);
+      strike_from_meter(*m, t);
     }
   }
   if (stage_ == Stage::Aiming && !group_.finished() && group_.bot_turn() && t - turn_at_ >= kBotAddress) {
@@ -393,6 +389,14 @@ void GolfPlay::land(double t) {
     stage_ = Stage::Aiming;
     begin_turn(t);
   }
+}
+
+void GolfPlay::strike_from_meter(const MeterInput& m, double t) {
+  last_meter_ = m;
+  last_click_ = *meter_;
+  last_click_by_ = player_;
+  last_click_hole_ = group_.hole_index();
+  strike({club(), aim_, m}, false, t);
 }
 
 void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
@@ -523,13 +527,7 @@ void GolfPlay::apply(const Intent& in) {
       if (in.kind == IntentKind::Swing && meter_) {
         // The power and accuracy clicks answer what the player saw: take off the lag.
         meter_->click(std::max(t - setup_.input_latency, meter_->started()));
-        if (const auto m = meter_->result()) {
-          last_meter_ = *m;
-          last_click_ = *meter_;
-          last_click_by_ = player_;
-          last_click_hole_ = group_.hole_index();
-          strike({club(), aim_, *m}, false, t);
-        }
+        if (const auto m = meter_->result()) strike_from_meter(*m, t);
       } else if (in.kind == IntentKind::Cancel) {
         const bool putt = meter_ && meter_->putting();
         meter_.reset();

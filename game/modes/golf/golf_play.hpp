@@ -198,6 +198,9 @@ class GolfPlay {
   void advance(double t);
   void land(double t);
   void strike(const StrokeInput& s, bool bot, double t);
+  /// The player's own stroke as the meter gave it: its clicks kept (whose, on which hole) for
+  /// the view's marks, then struck.
+  void strike_from_meter(const MeterInput& m, double t);
   void begin_turn(double t);
   void choose_club();
   /// Why the aim just taken from the caddie points off the pin (`tree_at_flag`: his club

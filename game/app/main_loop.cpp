@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "game/app/audio_out.hpp"
 #include "game/app/clip_recorder.hpp"
@@ -26,6 +28,22 @@ struct Slot {
   double left_at = 0.0;   // window time the mode was left (its clock stopped there)
   double last_now = 0.0;  // mode time of its last frame
 };
+
+// A frame of its own while a mode is made on its first Tab (the golf course's worlds take
+// about a second): its name and a word, not the last mode's frame held still. Keys pressed
+// meanwhile are kept for the mode.
+void show_loading(GameWindow& win, const std::string& mode, std::vector<KeyPress>& keys) {
+  const FrameInput fin = win.begin_frame();
+  keys.insert(keys.end(), fin.keys.begin(), fin.keys.end());
+  const float w = static_cast<float>(win.framebuffer_width()), h = static_cast<float>(win.framebuffer_height());
+  ImGui::GetBackgroundDrawList()->AddRectFilled(ImVec2(0, 0), ImVec2(w, h), IM_COL32(20, 24, 28, 255));
+  ImGui::SetNextWindowPos(ImVec2(0.5f * w, 0.5f * h), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("##loading", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+  ImGui::Text("Loading %s ...", mode.c_str());
+  ImGui::End();
+  win.render_ui();
+  win.present();
+}
 
 }  // namespace
 
@@ -139,7 +157,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
     }
     audio.collect();
     if (paused && choice == MenuChoice::None)
-      choice = draw_pause_menu(menu, view.title(), view.restart_label(), view.restart_loses(), vi.width, vi.height);
+      choice = draw_pause_menu(menu, view.title(), view.restart_label(), view.restart_loses(), view.pause_menu_right(vi.width, vi.height), vi.height);
     if (choice != MenuChoice::None) menu.reset();
     win.render_ui();
 
@@ -168,7 +186,8 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
       slot.left_at = paused ? paused_at : wall;
       paused = false;
       active = *next;
-      activate(active, wall);
+      if (!slots[active].view) show_loading(win, modes[active].name, carried);
+      activate(active, win.clock());
     }
 
     const bool last = quit || win.should_close() || (o.frames > 0 && stats.frames + 1 >= o.frames) || slots[active].view->done();

@@ -28,12 +28,11 @@ MenuChoice PauseMenu::key(int glfw_key, const std::string& loses) {
   return c;
 }
 
-MenuChoice draw_pause_menu(PauseMenu& menu, const char* title, const char* restart_label, const std::string& loses, int w,
+MenuChoice draw_pause_menu(PauseMenu& menu, const char* title, const char* restart_label, const std::string& loses, float right,
                            int h) {
   MenuChoice choice = MenuChoice::None;
-  // At the right, half way down: clear of the centre, where a mode shows what the player
-  // paused to read (a final scorecard), and under the launch monitor's panel at the top.
-  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(w) - 12.0f, 0.58f * static_cast<float>(h)), ImGuiCond_Always, ImVec2(1.0f, 0.5f));
+  // Half way down: under a mode's launch monitor panel at the top.
+  ImGui::SetNextWindowPos(ImVec2(right, 0.58f * static_cast<float>(h)), ImGuiCond_Always, ImVec2(1.0f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_Always);
   ImGui::Begin("Paused", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::Text("%s", title);

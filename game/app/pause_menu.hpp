@@ -26,10 +26,10 @@ class PauseMenu {
   bool confirming_ = false;
 };
 
-/// Draws the menu (`title`: the mode's name; `restart_label`: "Restart hole") at the right of
-/// a `w` x `h` px window, with the question when a restart waits for R again; the button
-/// clicked, if any.
-MenuChoice draw_pause_menu(PauseMenu& menu, const char* title, const char* restart_label, const std::string& loses, int w,
+/// Draws the menu (`title`: the mode's name; `restart_label`: "Restart hole") with its right
+/// edge at `right` px, half way down a window `h` px high, with the question when a restart
+/// waits for R again; the button clicked, if any.
+MenuChoice draw_pause_menu(PauseMenu& menu, const char* title, const char* restart_label, const std::string& loses, float right,
                            int h);
 
 }  // namespace sweetspot

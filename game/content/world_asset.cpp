@@ -259,6 +259,7 @@ WorldAsset load_world_asset(const fs::path& root, const std::string& name_or_pat
   a.name = d.name;
   if (const std::string why = validate_world(d); !why.empty()) throw InputError(path.string() + ": " + why);
   a.world = std::make_unique<const World>(std::move(d));
+  a.trees = tree_crowns(a.description());
   if (a.pin) check_pin_on_green(a, pin_where);
   return a;
 }

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "game/content/tree_crowns.hpp"
 #include "physics/ground.hpp"
 #include "physics/world.hpp"
 
@@ -46,6 +47,7 @@ struct WorldAsset {
   /// baseball: foot of the outfield fence from the left-field pole to the right-field pole
   /// (xz used; y = the origin's). With home plate it closes fair territory inside the fence.
   std::vector<Vec3> fence_line;
+  std::vector<TreeCrown> trees;       ///< its trees' crowns (tree_crowns), read once at load
 
   const WorldDescription& description() const { return world->description(); }
 };

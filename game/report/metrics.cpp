@@ -297,9 +297,9 @@ std::vector<Metric> build() {
   m.push_back(text("grip", "Grip threshold mu", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!struck(r) || r.impact.mu_grip < 0.0) return std::nullopt;
     const std::string t = fixed(r.impact.mu_grip, 3);
-    // Short enough for the launch-monitor panel's column.
-    if (r.impact.mu_grip == 0.0) return t + " (friction does not matter)";
-    return t + (r.impact.mu >= r.impact.mu_grip ? " (grips: more mu, no change)" : " (slips: mu matters)");
+    // Short enough for the launch-monitor panel's column (the tuning panel says it whole).
+    if (r.impact.mu_grip == 0.0) return t + " (mu: no effect)";
+    return t + (r.impact.mu >= r.impact.mu_grip ? " (grips: no effect)" : " (slips: mu matters)");
   }));
   m.push_back(text("impulse", "Impulse n / t", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!struck(r)) return std::nullopt;

@@ -269,7 +269,7 @@ nlohmann::json group_json(const GolfGroup& g) {
   return j;
 }
 
-std::string group_table(const GolfGroup& g) {
+std::string group_table(const GolfGroup& g, const std::vector<int>& restarts) {
   const Standings s = standings(g);
   const std::size_t n = g.players().size();
   std::string out = g.course().name + " — " + to_string(s.format) + " play\n";
@@ -301,7 +301,8 @@ std::string group_table(const GolfGroup& g) {
   out += head + "\n";
   for (std::size_t h = 0; h < s.holes; ++h) {
     const CourseHole& ch = g.course().holes[h];
-    std::snprintf(cell, sizeof cell, "%4d     %3d %3d", ch.number, ch.par, ch.stroke_index);
+    const bool restarted = h < restarts.size() && restarts[h] > 0;
+    std::snprintf(cell, sizeof cell, "%4d%-5s%3d %3d", ch.number, restarted ? " R" : "", ch.par, ch.stroke_index);
     std::string line = cell;
     for (std::size_t p = 0; p < n; ++p) {
       const PlayerStanding& ps = s.players[p];
@@ -352,7 +353,9 @@ std::string group_table(const GolfGroup& g) {
   if (s.format == GolfFormat::Match) out += "result: " + s.match->result + "\n";
   else if (s.holes > 0) out += leaders_text(g, s) + "\n";
   out += std::string("(SI the stroke index, the hole's rank by difficulty; * a stroke received; putts in brackets; 1p a penalty stroke; PU picked up") +
-         (s.format == GolfFormat::Match ? "; C a hole conceded, - one left unfinished: no score, in no total" : "") + ")\n";
+         (s.format == GolfFormat::Match ? "; C a hole conceded, - one left unfinished: no score, in no total" : "") +
+         (std::any_of(restarts.begin(), restarts.end(), [](int r) { return r > 0; }) ? "; R the hole was restarted (its first try not counted)" : "") +
+         ")\n";
   return out;
 }
 

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,8 @@ std::string to_par_text(int diff);
 nlohmann::json group_json(const GolfGroup& group);
 /// The card a golfer checks by hand: per hole par, stroke index and every player's strokes
 /// (with the strokes received), putts and the format's column; then the sum rows and result.
-std::string group_table(const GolfGroup& group);
+/// `restarts`: per hole, how often it was restarted from the window's menu (an R beside the
+/// hole's number, as the window's card marks it); none from a headless round.
+std::string group_table(const GolfGroup& group, const std::vector<int>& restarts = {});
 
 }  // namespace sweetspot

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -165,34 +167,11 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     ImGui::TextDisabled("H: hide this panel  Esc: pause  Tab: next mode  K/F1: fewer");
   }
   ImGui::Separator();
-  // Contact counts fouls (a foul is contact); the batted-ball figures are Statcast's batted-ball
-  // events, fair balls only, so a long foul is not the session's longest hit.
-  int n = 0, contact = 0, fair = 0, hard = 0, hr = 0;
-  double ev = 0.0, la = 0.0, longest = 0.0;
   // The swing and the contact count as soon as they happen (the call above says "off the
-  // bat"); fair or foul and how far only once the play is called (a ball still in the air
-  // counts from its call). Only his own swings: the pro's (B) are his to show, not the
-  // player's record.
-  int pro = 0;
-  for (std::size_t i = 0; i < c.swings().size(); ++i) {
-    const SwingRecord& s = c.swings()[i];
-    if (s.by_pro) {
-      ++pro;
-      continue;
-    }
-    ++n;
-    if (!s.result.contact) continue;
-    ++contact;
-    if (i >= c.swings_told() || s.result.outcome == BattedOutcome::Foul) continue;
-    ++fair;
-    ev += mps_to_mph(s.result.shot.launch.ball_speed);
-    la += rad_to_deg(s.result.shot.launch.vertical_angle);
-    hard += s.result.hard_hit;
-    hr += s.result.outcome == BattedOutcome::HomeRun;
-    // As far as the call said: to the glove on a catch, where it came down otherwise.
-    longest = std::max(longest, c.carries_as_played()[i]);
-  }
-  ImGui::Text("Your swings %d, contact %d, fair %d, home runs %d", n, contact, fair, hr);
+  // bat"); fair or foul and how far only once the play is called.
+  const BattingCage::Figures fig = c.figures();
+  const int n = fig.swings, pro = fig.by_pro, fair = fig.fair;
+  ImGui::Text("Your swings %d, contact %d, fair %d, home runs %d", n, fig.contact, fair, fig.home_runs);
   if (pro > 0) ImGui::TextDisabled("(and %d by the pro, B: not in your figures)", pro);
   if (!c.swings().empty()) {
     // Statcast's bat tracking: the last swing (the bat's own figures, known at contact), and
@@ -226,10 +205,10 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     if (n > 0) ImGui::Text("Squared up (80 %%+) %d of %d swings, blasts %d", squared, n, blasts);
   }
   if (fair > 0) {
-    ImGui::Text("Fair balls: exit velocity %.1f mph, launch %.1f deg", ev / fair, la / fair);
+    ImGui::Text("Fair balls: exit velocity %.1f mph, launch %.1f deg", mps_to_mph(fig.mean_exit_speed), rad_to_deg(fig.mean_launch));
     // The carry (Statcast's hit distance: to the first bounce or the glove), said as such:
     // a grounder session's "longest 4 ft" is its longest carry.
-    ImGui::Text("Hard-hit %.0f %%, longest carry %.0f ft", 100.0 * hard / fair, m_to_ft(longest));
+    ImGui::Text("Hard-hit %.0f %%, longest carry %.0f ft", 100.0 * fig.hard_hit / fair, m_to_ft(fig.longest));
   }
   const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
   ImGui::End();
@@ -322,9 +301,7 @@ class CageView final : public ModeView {
   }
   void send(const Intent& in) override { cage_->update({in}, in.time); }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 30; }
-  void report(std::ostream& out) const override {
-    for (const SwingRecord& s : cage_->swings()) out << "swing: " << s.call_text << "\n";
-  }
+  void report(std::ostream& out) const override { cage_report(*cage_, out); }
   void frame(const ViewInput& in, Renderer& renderer) override {
     const BattingCage& c = *cage_;
     const std::size_t before = c.swings().size();
@@ -444,6 +421,37 @@ class CageView final : public ModeView {
 };
 
 }  // namespace
+
+void cage_report(const BattingCage& c, std::ostream& out) {
+  const BattingCage::Figures f = c.figures();
+  char line[200];
+  std::snprintf(line, sizeof line, "baseball: %d %s, contact %d, fair %d, home runs %d", f.swings, f.swings == 1 ? "swing" : "swings",
+                f.contact, f.fair, f.home_runs);
+  out << line;
+  if (f.by_pro > 0) out << " (and " << f.by_pro << " by the pro)";
+  out << "\n";
+  if (f.fair > 0) {
+    std::snprintf(line, sizeof line, "fair balls: exit velocity %.1f mph, launch %.1f deg, hard-hit %.0f %%, longest carry %.0f ft",
+                  mps_to_mph(f.mean_exit_speed), rad_to_deg(f.mean_launch), 100.0 * f.hard_hit / f.fair, m_to_ft(f.longest));
+    out << line << "\n";
+  }
+  if (c.live()) {
+    const BattingCage::AtBats& a = c.at_bats();
+    std::snprintf(line, sizeof line, "live game: PA %d: %d H (%d HR), %d K, %d BB, %d HBP", a.pa, a.hits, a.home_runs, a.strikeouts, a.walks,
+                  a.hit_by_pitch);
+    out << line;
+    if (const LiveInning::Board* b = c.board()) {
+      out << "; inning " << b->inning << ", " << b->outs << (b->outs == 1 ? " out" : " outs") << ", runs " << b->runs() << " (line score";
+      for (const int r : b->runs_by_inning) out << " " << r;
+      out << ")";
+    }
+    out << "\n";
+  }
+  for (std::size_t i = 0; i < c.swings_told(); ++i) {
+    const SwingRecord& s = c.swings()[i];
+    out << "swing: " << s.call_text << (s.said.empty() ? "" : "  ") << s.said << "\n";
+  }
+}
 
 std::unique_ptr<ModeView> make_cage_view(const Assets& assets, std::unique_ptr<BattingCage> model, const CageViewOptions& o) {
   return std::make_unique<CageView>(assets, std::move(model), o);

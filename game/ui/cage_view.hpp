@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <ostream>
 
 #include "game/modes/baseball/cage.hpp"
 #include "game/ui/mode_view.hpp"
@@ -18,6 +19,12 @@ struct CageViewOptions {
 /// Keys: P (or Space between pitches) a pitch, Space the swing, Up/Down the bat's height,
 /// C power/contact, L the batter's side, B the pro swings.
 Intents cage_intents(const std::vector<KeyPress>& keys);
+
+/// What the window prints of the cage as it closes (however it was reached: --mode baseball
+/// or Tab): the player's figures as the panel shows them, a live game's line, then every
+/// swing as "swing: CALL  WORDS" (CALL the record's code: "single", "foul_tip", ...; WORDS
+/// the call as the player was told it: "Strikeout on a foul tip").
+void cage_report(const BattingCage& cage, std::ostream& out);
 
 std::unique_ptr<ModeView> make_cage_view(const Assets& assets, std::unique_ptr<BattingCage> model, const CageViewOptions& o);
 

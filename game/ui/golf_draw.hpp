@@ -37,8 +37,9 @@ std::vector<SlopeArrow> green_slopes(const WorldAsset& w, const Vec3& ball, cons
 
 /// `flight_t`: seconds into the last stroke's flight (the HUD says in the air or running out).
 /// `all_keys`: every key the round takes, four lines; else the few a stroke needs, in one.
-void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t,
-                   bool all_keys = true);
+/// Returns the panel's box (x0, y0, x1, y1 px): the next frame's scene labels keep clear of it.
+Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t,
+                              bool all_keys = true);
 /// The meter bar, bottom centre: −15 % to 110 %, the accuracy mark as wide as the perfect
 /// window, the marker, and where the last swing's clicks landed.
 struct MeterBar {
@@ -64,8 +65,9 @@ void draw_golf_card(const GolfPlay& play, int w, bool final);
 /// The cup and flagstick, never smaller than a few pixels however far. `scene_has_flag`: the
 /// 3-D scene draws this pin's own flag (a course's), so near enough only the cup is added.
 /// `label`, when not empty, is written beside the flag's cloth (a range's yardage, a far
-/// pin's distance), unless it would cover one of `clear_of` (the image's own labels,
-/// Scene::label_boxes: a shot's carry reads first).
+/// pin's distance), or where that would cover one of `clear_of` (the image's own labels,
+/// Scene::label_boxes: a shot's carry reads first; a panel over the scene) beside the cup,
+/// else not at all.
 void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool scene_has_flag = true, const std::string& label = {},
                        const std::vector<Eigen::Vector4f>& clear_of = {});
 /// The aim line from the ball (to the cup's distance and a metre on for a putt).
@@ -80,7 +82,8 @@ std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& uni
 /// less the same swing's in still air, `calm`) and the ground's (the lie, a landing above or
 /// below the ball: the rest), each when it is worth naming (~3 yd) — ": wind +9 yd, lie and
 /// slope -12 yd"; "" when neither is. A bag the player measured on the range (`measured`)
-/// holds his own strikes as well: no ground's share then.
+/// holds his own strikes as well: no ground's share then. `calm` NaN (the still-air flight
+/// ends in a tree): the wind's and the ground's shares together, ": wind, lie and slope -10 yd".
 std::string why_from_here(double stock, bool measured, double here, double calm, const GolfUnits& units);
 /// A putt's break or aim beside the cup: inches (centimetres) inside a yard (a metre), then
 /// the putt's units.

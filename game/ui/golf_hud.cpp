@@ -44,6 +44,10 @@ std::string why_from_here(double stock, bool measured, double here, double calm,
     if (std::abs(d) < kShareNoted) return;
     out += (out.empty() ? ": " : ", ") + std::string(what) + (d >= 0.0 ? " +" : " -") + units.distance(std::abs(d));
   };
+  if (std::isnan(calm)) {  // no still-air flight to part them by: the two together
+    if (!measured) share("wind, lie and slope", here - stock);
+    return out;
+  }
   share("wind", here - calm);
   if (!measured) share("lie and slope", calm - stock);
   return out;
@@ -131,8 +135,8 @@ const char* camera_words(int mode) {
 
 }  // namespace
 
-void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t,
-                   bool all_keys) {
+Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode, bool settling, double flight_t,
+                              bool all_keys) {
   const double now = flight_t;
   const GolfGroup& g = play.group();
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
@@ -210,6 +214,9 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       ImGui::TextWrapped("Caddie: a part swing, %.0f %% power (blue mark): carries %s, stops %s", 100.0 * plan->meter.power,
                          units.course(play.carry_here(club, plan->meter.power)).c_str(),
                          units.course(play.stops_here(club, plan->meter.power)).c_str());
+    // His club is not the one the distance asks for: say why, or the player takes the longer.
+    if (const auto& plan = play.caddie_plan(); plan && plan->club == club && !play.caddie_passed_over().empty() && play.human_turn())
+      ImGui::TextWrapped("Caddie: not the %s: struck a little off, it finds the trees", club_name(play.caddie_passed_over()).c_str());
     if (club == "putter" && r.lie() == "green") {
       // On the green the aim in the read's words: how far beside the cup the line points.
       const double off = r.to_pin() * std::tan(play.aim());
@@ -308,7 +315,9 @@ void draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int camera_mode
       at_rest(mine->record, mine->rest_lie);
     }
   }
+  const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
   ImGui::End();
+  return {at.x, at.y, at.x + size.x, at.y + size.y};
 }
 
 MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optional<MeterClock>& last, bool putting,
@@ -556,12 +565,15 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
   ImGui::Begin(final ? "Final scorecard" : "Scorecard", nullptr, kFixed);
   const int cols = 3 + static_cast<int>(n) + (s.match || s.skins ? 1 : 0);
   if (ImGui::BeginTable("card", cols, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-    ImGui::TableSetupColumn("Hole");
-    ImGui::TableSetupColumn("Par");
-    ImGui::TableSetupColumn("SI");
-    for (const GolfPlayer& p : g.players()) ImGui::TableSetupColumn(p.name.c_str());
-    if (s.match) ImGui::TableSetupColumn("Match");
-    if (s.skins) ImGui::TableSetupColumn("Skin");
+    // The numbers and the match's words as wide as they are ("scratch bot 2 up (dormie)"
+    // read whole); the players share the rest.
+    const ImGuiTableColumnFlags fit = ImGuiTableColumnFlags_WidthFixed;
+    ImGui::TableSetupColumn("Hole", fit);
+    ImGui::TableSetupColumn("Par", fit);
+    ImGui::TableSetupColumn("SI", fit);
+    for (const GolfPlayer& p : g.players()) ImGui::TableSetupColumn(p.name.c_str(), ImGuiTableColumnFlags_WidthStretch);
+    if (s.match) ImGui::TableSetupColumn("Match", fit);
+    if (s.skins) ImGui::TableSetupColumn("Skin", fit);
     ImGui::TableHeadersRow();
     int par = 0;
     // A card past nine holes adds each nine, as a printed card does: "Out" under the 9th,

@@ -85,12 +85,19 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool sc
   const float fh = 0.3f * (b.y - t.y);
   dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));
   if (!label.empty()) {
-    const ImVec2 at(t.x + 0.7f * fh + 3.0f, t.y);
     const ImVec2 size = ImGui::CalcTextSize(label.c_str());
-    for (const Eigen::Vector4f& o : clear_of)
-      if (at.x < o[2] && o[0] < at.x + size.x && at.y < o[3] && o[1] < at.y + size.y) return;
-    dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 200), label.c_str());  // a shadow over light sky
-    dl->AddText(at, IM_COL32(255, 255, 255, 255), label.c_str());
+    const auto clear = [&](const ImVec2& at) {
+      for (const Eigen::Vector4f& o : clear_of)
+        if (at.x < o[2] && o[0] < at.x + size.x && at.y < o[3] && o[1] < at.y + size.y) return false;
+      return true;
+    };
+    // Beside the cloth; else beside the cup, under the flag (a flag just below the play panel).
+    for (const ImVec2 at : {ImVec2(t.x + 0.7f * fh + 3.0f, t.y), ImVec2(b.x + r + 3.0f, b.y - 0.5f * size.y)}) {
+      if (!clear(at)) continue;
+      dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 200), label.c_str());  // a shadow over light sky
+      dl->AddText(at, IM_COL32(255, 255, 255, 255), label.c_str());
+      break;
+    }
   }
 }
 

@@ -175,11 +175,10 @@ class GolfView final : public ModeView {
   static constexpr double kNoteShown = 8.0;  // s a note (round saved, latency) stays on screen
   std::optional<LatencyCalibration> calibration_;
   TapQuiet after_taps_;  // the calibration's taps that run on past its end
-  const WorldAsset* crowns_of_ = nullptr;  // the world crowns_ was read from
-  std::vector<TreeCrown> crowns_;          // its trees, for the map
   int done_frames_ = 0;
   // Every key on the first hole, then the few a stroke needs; K switches (held for the round).
   std::optional<bool> all_keys_;
+  Eigen::Vector4f hud_box_ = Eigen::Vector4f::Zero();  // the play panel, as last drawn (x0, y0, x1, y1 px)
   bool all_keys() const { return all_keys_.value_or(play_->group().hole_index() == 0); }
 };
 
@@ -671,22 +670,18 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     // 395 yd away reads as the pin's.
     else if (!r.finished() && !over)
       // (Not kept clear of the image's labels: their boxes hold the room beside this flag for
-      // it, and while addressing no shot is labelled.)
-      draw_cup_and_flag(cam, r.hole().pin, w, h, true, addressing && r.lie() != "green" ? units_.distance(r.to_pin()) : std::string());
+      // it, and while addressing no shot is labelled. Clear of the play panel, last frame's.)
+      draw_cup_and_flag(cam, r.hole().pin, w, h, true, addressing && r.lie() != "green" ? units_.distance(r.to_pin()) : std::string(),
+                        {hud_box_});
     if (addressing) {
       draw_aim(*play_, cam, w, h);
       draw_putt_read(*play_, cam, w, h);  // over the aim line it starts along
     }
     if (addressing && camera_ == 3) {
-      const WorldAsset* world = r.hole().world;
-      if (world != crowns_of_) {  // read once per world: a course's holes share one
-        crowns_ = tree_crowns(world->description());
-        crowns_of_ = world;
-      }
-      draw_map_marks(*play_, units_, cam, w, h, crowns_, view.label_boxes);
+      draw_map_marks(*play_, units_, cam, w, h, r.hole().world->trees, view.label_boxes);
     }
   }
-  draw_golf_hud(*play_, units_, camera_, settling, t, all_keys());
+  hud_box_ = draw_golf_hud(*play_, units_, camera_, settling, t, all_keys());
   // Shown over the course as the ball flies too (S pressed mid-flight is answered at once);
   // its time starts when it is first seen, so a note behind a card is not spent unread.
   const bool note_shows = addressing || flying || settling;
@@ -712,7 +707,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   if (stage == GolfPlay::Stage::HoleOver && !settling) draw_golf_card(*play_, w, false);
   if (stage == GolfPlay::Stage::RoundOver && !settling) {
     draw_golf_card(*play_, w, true);
-    if (done_frames_ == 0) out_ << group_table(play_->group());
+    if (done_frames_ == 0) out_ << group_table(play_->group(), play_->restarts());
     ++done_frames_;
   } else if (stage != GolfPlay::Stage::RoundOver) {
     done_frames_ = 0;

@@ -50,6 +50,10 @@ class LabView final : public ModeView {
   LabView(const Assets& assets, std::unique_ptr<LabModel> lab) : assets_(assets), lab_(std::move(lab)) { new_shot(); }
   const char* title() const override { return "Lab"; }
   const char* restart_label() const override { return "Run the shot again"; }
+  float pause_menu_right(int w, int h) const override {
+    const Rect view = lay_out_panels(static_cast<float>(w), static_cast<float>(h), panels_hidden_).view;
+    return view.x + view.w - 12.0f;
+  }
   void send(const Intent& in) override {
     lab_->update({in}, in.time);
     if (lab_->shot_serial() != serial_) new_shot();

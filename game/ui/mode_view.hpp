@@ -86,6 +86,10 @@ class ModeView {
   /// What that restart throws away, in the player's words ("this hole's 3 strokes"); empty
   /// when nothing is lost (the pause menu then restarts without asking).
   virtual std::string restart_loses() const { return {}; }
+  /// Where the pause menu's right edge goes in a `w` x `h` px window: at the right by
+  /// default, clear of the centre where a mode shows what the player paused to read; the lab
+  /// keeps it over its view, off the launch monitor's column.
+  virtual float pause_menu_right(int w, int /*h*/) const { return static_cast<float>(w) - 12.0f; }
   /// True once an automated run (--exit-when-done) has seen what it came for.
   virtual bool done() const { return false; }
   /// What the mode prints when the window closes (the swings of a batting session).

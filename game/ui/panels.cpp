@@ -220,7 +220,10 @@ bool shot_section(PanelContext& c) {
     changed |= slider(c, LabParam::PitchSpeed, "pitch speed");
     changed |= slider(c, LabParam::PitchSpin, "pitch spin", "%.0f");
     ImGui::Text("impact: %.1f in from tip, undercut %+.0f mm", b.swing.impact_from_tip / 0.0254, b.swing.undercut * 1000);
-    ImGui::TextDisabled("click the barrel: along = impact point, up = undercut");
+    // Wrapped: at the left column's 340 px the line ran off its edge.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("click the barrel: along = impact point, up = undercut");
+    ImGui::PopStyleColor();
   }
   changed |= impact_picker(c);
   return changed;
@@ -404,17 +407,20 @@ void replay_section(PanelContext& c) {
   float speed = static_cast<float>(c.replay.speed);
   ImGui::SetNextItemWidth(120);
   if (ImGui::SliderFloat("speed", &speed, 0.1f, 4.0f, "%.1fx")) c.replay.speed = speed;
-  ImGui::SameLine();
+  // The camera on a line of its own: beside the speed its label ran off the column.
   int cam = static_cast<int>(c.camera);
   const char* cams[] = {"behind", "side", "top", "follow"};
   ImGui::SetNextItemWidth(100);
   if (ImGui::Combo("camera (1-4)", &cam, cams, 4)) c.camera = static_cast<CameraKind>(cam);
+  ImGui::SameLine();
+  ImGui::TextDisabled("H: hide panels");
   float t = static_cast<float>(c.replay.time);
   ImGui::SetNextItemWidth(-1);
   if (ImGui::SliderFloat("##time", &t, static_cast<float>(-c.replay.pre_roll), static_cast<float>(end), "%.2f s"))
     c.replay.scrub(t, end);
   if (!c.lab.status().empty()) ImGui::TextWrapped("%s", c.lab.status().c_str());
   else if (!c.note.empty()) ImGui::TextWrapped("%s", c.note.c_str());
+  ImGui::TextDisabled("Space: hit again   Esc: pause   Tab: next mode");
 }
 
 constexpr ImGuiWindowFlags kColumnFlags =

@@ -44,8 +44,8 @@ ImU32 phase_colour(Phase p) {
   return IM_COL32_WHITE;
 }
 
-void draw_one(const ShotTrajectory& shot, PlotView view, double t, const char* label) {
-  const ImVec2 size(ImGui::GetContentRegionAvail().x, 110.0f);
+void draw_one(const ShotTrajectory& shot, PlotView view, double t, const char* label, float height) {
+  const ImVec2 size(ImGui::GetContentRegionAvail().x, height);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 28, 36, 255));
@@ -73,8 +73,11 @@ void draw_one(const ShotTrajectory& shot, PlotView view, double t, const char* l
 }  // namespace
 
 void draw_trajectory_plots(const ShotTrajectory& shot, double t) {
-  draw_one(shot, PlotView::Side, t, "side");
-  draw_one(shot, PlotView::Top, t, "top");
+  // Both plots in what is left of the column (a 1280x800 window's launch monitor leaves less
+  // than two full ones), each between a readable 40 px and 110.
+  const float each = std::clamp(0.5f * (ImGui::GetContentRegionAvail().y - ImGui::GetStyle().ItemSpacing.y), 40.0f, 110.0f);
+  draw_one(shot, PlotView::Side, t, "side", each);
+  draw_one(shot, PlotView::Top, t, "top", each);
 }
 
 }  // namespace sweetspot

@@ -219,7 +219,8 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   last_.result = swing_at(assets_, pitch_, s, batter_skill("pro").bat_speed, kBat);
   played_ = last_.result.foul_tip ? into_the_mitt(last_.result.shot.trajectory)
                                    : as_played(last_.result.shot.trajectory, last_.result.play);
-  last_.call_text = to_string(last_.result.outcome);
+  // A foul tip is its own call (into the catcher's mitt: a strike, the third one too).
+  last_.call_text = last_.result.foul_tip ? "foul_tip" : to_string(last_.result.outcome);
   swings_.push_back(last_);
   carries_as_played_.push_back(played_.summary.carry_m);
   at_bats_before_ = at_bats_;
@@ -279,6 +280,34 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
                   side, when);
     call_text_ = text;
   }
+  // What the call will say once the ball is down (a batted ball's outcome, counted), or says now.
+  swings_.back().said = stage_ == Stage::Batted ? outcome_text_ : call_text_;
+}
+
+BattingCage::Figures BattingCage::figures() const {
+  Figures f;
+  for (std::size_t i = 0; i < swings_.size(); ++i) {
+    const SwingRecord& s = swings_[i];
+    if (s.by_pro) {
+      ++f.by_pro;
+      continue;
+    }
+    ++f.swings;
+    if (!s.result.contact) continue;
+    ++f.contact;
+    if (i >= swings_told() || s.result.outcome == BattedOutcome::Foul) continue;
+    ++f.fair;
+    f.mean_exit_speed += s.result.shot.launch.ball_speed;
+    f.mean_launch += s.result.shot.launch.vertical_angle;
+    f.hard_hit += s.result.hard_hit;
+    f.home_runs += s.result.outcome == BattedOutcome::HomeRun;
+    f.longest = std::max(f.longest, carries_as_played_[i]);
+  }
+  if (f.fair > 0) {
+    f.mean_exit_speed /= f.fair;
+    f.mean_launch /= f.fair;
+  }
+  return f;
 }
 
 void BattingCage::apply(const Intent& in) {

@@ -95,6 +95,17 @@ class BattingCage {
   /// air (the HUD's session figures would otherwise give away a hit before its call).
   std::size_t swings_told() const { return swings_.size() - (told_ ? 0 : 1); }
   const std::string& call_text() const { return call_text_; }
+  /// The player's own swings as he has been told them (the pro's, B, only counted): the
+  /// panel's figures and the exit report's. Contact counts fouls (a foul is contact); the
+  /// batted-ball figures are Statcast's batted-ball events, fair balls only, so a long foul is
+  /// not the session's longest hit, each counted once its play is called.
+  struct Figures {
+    int swings = 0, by_pro = 0, contact = 0, fair = 0, hard_hit = 0, home_runs = 0;
+    double mean_exit_speed = 0.0;  ///< m/s, fair balls
+    double mean_launch = 0.0;      ///< rad, fair balls
+    double longest = 0.0;          ///< m, the longest fair ball as played (to the glove on a catch)
+  };
+  Figures figures() const;
   /// Live at-bats: the count, and the plate appearances so far.
   bool live() const { return live_; }
   /// As told: while a ball in play is in the air, the count he swung at (the plate

@@ -22,6 +22,7 @@ struct SwingRecord {
   bool by_pro = false;  ///< the cage's B: the pro bot swung this one for the player
   SwingResult result;
   std::string call_text;  ///< at-bat: "ball", "called_strike", "swinging_strike", "foul", or the outcome
+  std::string said;       ///< the cage: the call as the player was told it ("Strikeout on a foul tip")
 };
 
 struct SessionOptions {

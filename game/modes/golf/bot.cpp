@@ -63,6 +63,21 @@ constexpr double kWayOutStep = 0.2;
 constexpr int kWayOutLines = 5;
 constexpr std::size_t kWayOutClubStride = 2;
 
+/// Whether a tree stands where a flight from the ball that lands at `land`, or a miss of it,
+/// could first touch one: a crown nearer the ball than the landing (with its spread), not
+/// behind it. Where none does, no miss is flown to look (the links, an open fairway).
+bool trees_in_reach(const GolfRound& round, const Vec3& land) {
+  const Vec3& b = round.ball();
+  const double lx = land.x() - b.x(), lz = land.z() - b.z();
+  const double reach = std::hypot(lx, lz);
+  if (reach <= 0.0) return false;
+  for (const TreeCrown& c : round.hole().world->trees) {
+    const double cx = c.centre.x() - b.x(), cz = c.centre.z() - b.z();
+    if (std::hypot(cx, cz) <= reach + c.radius && (cx * lx + cz * lz) / reach >= -c.radius) return true;
+  }
+  return false;
+}
+
 /// How a lie plays for the next stroke: the short grass, then the rough (and anything else
 /// off the fairway), then sand.
 int lie_rank(const std::string& surface) {
@@ -212,7 +227,8 @@ StrokeInput GolfBot::putt(const GolfRound& round) const {
   return in;
 }
 
-StrokeInput GolfBot::intend(const GolfRound& round) const {
+StrokeInput GolfBot::intend(const GolfRound& round, std::string* passed_over) const {
+  if (passed_over != nullptr) passed_over->clear();
   if (round.lie() == "green" && putt_line_clear(round)) return putt(round);
   double d = round.to_pin();
   const bool teed = round.teed();
@@ -477,38 +493,53 @@ StrokeInput GolfBot::intend(const GolfRound& round) const {
       if (firmer && rank(*firmer) <= rank(best) && (!worse_ground_short(*firmer) || rank(short_of(*firmer)) <= rank(best))) best = *firmer;
     }
   }
-  // Blocked: the plan flies into a tree. A player takes the way out that leaves the best next
-  // shot: a line off to the side of it, or a club that flies under or over it, judged by how
-  // far from the cup it stops and on what, struck as this golfer strikes it: the mean over
-  // the plan and its misses either way of half and one standard deviation of the meter's
-  // timing, so a gap the ball only threads when struck perfectly is not taken.
-  if (best.in_tree) {
+  // Near trees: the plan, or the plan as this golfer may strike it, flies into one. A player
+  // takes the way out that leaves the best next shot: a line off to the side of it, or a club
+  // that flies under or over it, judged by how far from the cup it stops and on what, struck
+  // as this golfer strikes it: the mean over the plan and its misses either way of half and
+  // one standard deviation of the meter's timing, at the plan's own power, so neither a gap
+  // the ball only threads when struck perfectly nor a line held off a row of trees for the
+  // wind to bring back is taken. The misses are flown only where a tree stands in their way.
+  const double miss = skill_.accuracy_sd_ms;
+  const auto missed = [&](const Tried& planned, double f) {
+    return tune(planned.in.club, planned.in.meter.power, planned.in.aim, 1, f * miss);
+  };
+  const auto a_miss_in_a_tree = [&](const Tried& planned) {
+    if (!trees_in_reach(round, planned.land)) return false;
+    return missed(planned, -1.0).in_tree || missed(planned, 1.0).in_tree;
+  };
+  if (best.in_tree || a_miss_in_a_tree(best)) {
     const Vec3& pin = round.hole().pin;
     const auto cost = [&](const Tried& t) {
       if (t.lost) return round.to_pin() + kStrokeCost;  // stroke and distance, or a drop back
       const double to_cup = std::hypot(pin.x() - t.rest.x(), pin.z() - t.rest.z());
       return to_cup + lie_cost(round.surface_at(t.rest)) + (t.in_tree ? kTreeCost : 0.0);
     };
-    const double miss = skill_.accuracy_sd_ms;
-    // `planned`, struck perfectly, and its misses: the mean cost.
     const auto as_struck = [&](const Tried& planned) {
       double sum = cost(planned);
-      for (const double f : {-1.0, -0.5, 0.5, 1.0}) sum += cost(tune(planned.in.club, 1.0, planned.in.aim, 1, f * miss));
+      for (const double f : {-1.0, -0.5, 0.5, 1.0}) sum += cost(missed(planned, f));
       return sum / 5.0;
     };
-    // The plan itself, swung full (a part swing is tried again at full power).
-    double best_cost = as_struck(best.in.meter.power == 1.0 ? best : tune(best.in.club, 1.0, best.in.aim, 1));
+    double best_cost = as_struck(best);
+    const std::string before_trees = best.in.club;
+    // The plan's club at its power on lines about its own (at half the steps: a wind's line
+    // held a few degrees nearer the trees' side may be all that changes), then every other
+    // club down the bag swung full on lines about the hole's.
     const std::size_t planned = stock_index(best.in.club);
+    const double planned_power = best.in.meter.power, planned_aim = best.in.aim;
     for (std::size_t k = planned; k < stock_.size(); k += kWayOutClubStride) {
       if (!allowed(stock_[k])) continue;
-      for (int i = -kWayOutLines; i <= kWayOutLines; ++i) {
-        const double a = std::clamp(toward + kWayOutStep * i, StrokeInput::kAim.min, StrokeInput::kAim.max);
+      const bool own = k == planned;
+      for (int i = -kWayOutLines * (own ? 2 : 1); i <= kWayOutLines * (own ? 2 : 1); ++i) {
+        const double a = std::clamp(own ? planned_aim + 0.5 * kWayOutStep * i : toward + kWayOutStep * i, StrokeInput::kAim.min,
+                                    StrokeInput::kAim.max);
         // Struck perfectly it must already beat the best: only then are its misses tried.
-        const Tried t = tune(stock_[k].club, 1.0, a, 1);
+        const Tried t = tune(stock_[k].club, own ? planned_power : 1.0, a, 1);
         if (cost(t) >= best_cost) continue;
         if (const double c = as_struck(t); c < best_cost) best = t, best_cost = c;
       }
     }
+    if (passed_over != nullptr && best.in.club != before_trees) *passed_over = before_trees;
   }
   return best.in;
 }

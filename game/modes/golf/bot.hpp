@@ -38,8 +38,10 @@ class GolfBot {
   /// most).
   static constexpr double kPuttPast = 0.43;  // m
 
-  /// The stroke it means to play from where the round's ball lies: no errors.
-  StrokeInput intend(const GolfRound& round) const;
+  /// The stroke it means to play from where the round's ball lies: no errors. `passed_over`,
+  /// when given, is set to the club it would have played but for a tree in the way of it or
+  /// of its misses ("5-iron"), empty when the trees changed no club.
+  StrokeInput intend(const GolfRound& round, std::string* passed_over = nullptr) const;
   /// intend() with this skill's meter errors drawn from the bot's seeded generator.
   StrokeInput plan(const GolfRound& round);
   /// A full swing with this skill's meter errors drawn (the range).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "game/modes/replay.hpp"
 #include "game/rules/run_shot.hpp"
@@ -103,6 +104,7 @@ double GolfPlay::flyover_progress(double now) const {
 void GolfPlay::choose_club() {
   const GolfRound& r = round();
   caddie_plan_.reset();
+  caddie_passed_over_.clear();
   putt_read_.reset();
   if (r.finished()) return;
   // The caddie's club plays like the distance today: the wind, the lie, the ground; off the
@@ -113,7 +115,7 @@ void GolfPlay::choose_club() {
   if (r.lie() == "green") {
     club_ = bag_index("putter");
   } else {
-    const StrokeInput plan = caddie().intend(r);
+    const StrokeInput plan = caddie().intend(r, &caddie_passed_over_);
     club_ = bag_index(plan.club);
     caddie_plan_ = plan;
     // Asked before his aim is taken (at his power): whether his club aimed at the flag would
@@ -187,7 +189,11 @@ const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double 
   in.aim = aim_;
   in.meter.power = power;
   const FlightSummary f = r.simulate(in).trajectory.summary;
-  const double calm = r.wind().speed > 0.0 ? r.simulate_calm(in).trajectory.summary.carry_m : f.carry_m;
+  double calm = f.carry_m;
+  if (r.wind().speed > 0.0) {
+    const FlightSummary c = r.simulate_calm(in).trajectory.summary;
+    calm = r.first_touch_in_a_tree(c) ? std::numeric_limits<double>::quiet_NaN() : c.carry_m;
+  }
   slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, calm, f.landing_position,
                    f.rest_position, r.first_touch_in_a_tree(f)};
   return *slot;

@@ -63,6 +63,9 @@ class GolfPlay {
   /// The caddie's stroke from here as he chose the club at the turn's start (C chooses
   /// again): its club and, for a part swing, its power. None on the green or once over.
   const std::optional<StrokeInput>& caddie_plan() const { return caddie_plan_; }
+  /// The club the caddie would have given but for a tree in its way or in its misses' ("5-iron"
+  /// where he hands the 7-iron), empty when the trees changed no club.
+  const std::string& caddie_passed_over() const { return caddie_passed_over_; }
   /// The caddie's read of a putt (G on the green): the line and pace he would putt it on,
   /// error-free, rolled on the same green as the putt. It lines the player up along that line;
   /// the pace (the blue mark) is still the player's to strike.
@@ -141,6 +144,8 @@ class GolfPlay {
   /// How many times the hole at group index `hole` was started again from the pause menu
   /// this round: a mulligan the card shows (R), since the strokes it threw away are gone.
   int restarts(std::size_t hole) const { return hole < restarts_.size() ? restarts_[hole] : 0; }
+  /// restarts(hole) for every hole begun: the printed card's R marks (group_table).
+  const std::vector<int>& restarts() const { return restarts_; }
   /// The strokes (all players', conceded ones included) played on the hole a restart would
   /// start again: what the pause menu's restart throws away. 0 once the round is over (a
   /// new round keeps the finished card's result).
@@ -175,7 +180,9 @@ class GolfPlay {
   double stops_here(const std::string& club, double power = 1.0) const;
   /// The same swing's carry from here in still air (m): the wind's share in carry_here() is
   /// the difference, the rest of its difference from the bag's stock carry is the ground's
-  /// (the lie, and the landing above or below the ball).
+  /// (the lie, and the landing above or below the ball). NaN when the still-air flight ends
+  /// in a tree: held off a row of trees for the wind to bring back, it says nothing of the
+  /// wind's share.
   double calm_carry_here(const std::string& club, double power = 1.0) const;
   /// Where the stroke the player would play with `club` along the aim (the caddie's part
   /// swing when he planned one with it, else a full swing) ends its flight against something
@@ -248,6 +255,7 @@ class GolfPlay {
   bool swing_undone_ = false;
   std::vector<std::pair<double, double>> roll_table_;  ///< (power, metres) on the flat green
   std::optional<StrokeInput> caddie_plan_;
+  std::string caddie_passed_over_;
   AimWhy aim_why_ = AimWhy::Pin;  ///< why the caddie's aim points off the pin (aim_why())
   std::optional<PuttRead> putt_read_;
   double putt_plays_as_ = 0.0;
@@ -264,7 +272,7 @@ class GolfPlay {
     double power = 1.0;
     double carry = 0.0;
     double total = 0.0;
-    double calm_carry = 0.0;      ///< the same swing's in still air
+    double calm_carry = 0.0;      ///< the same swing's in still air (NaN: it ends in a tree)
     Vec3 landing = Vec3::Zero();  ///< where it first comes down
     Vec3 rest = Vec3::Zero();     ///< where it stops
     bool in_tree = false;

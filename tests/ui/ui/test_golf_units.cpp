@@ -1,6 +1,8 @@
 // The golf HUD's distances in player words.
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 #include "game/ui/golf_draw.hpp"
 
 using namespace sweetspot;
@@ -61,4 +63,9 @@ TEST_CASE("the club line says why its carry from here is not the bag's: the wind
   CHECK(why_from_here(200.0, false, 201.0, 199.0, yards).empty());
   // A measured bag holds the player's own strikes: the ground's share is not claimed.
   CHECK(why_from_here(200.0, true, 205.0, 195.0, yards) == ": wind +11 yd");
+  // Held out over trees for the wind to bring back, the still-air flight ends in them: no
+  // split of the two shares ("wind +143 yd, lie and slope -153 yd"), their sum.
+  const double in_trees = std::numeric_limits<double>::quiet_NaN();
+  CHECK(why_from_here(200.0, false, 190.0, in_trees, yards) == ": wind, lie and slope -11 yd");
+  CHECK(why_from_here(200.0, true, 190.0, in_trees, yards).empty());
 }

@@ -3,6 +3,7 @@
 // a restarted hole.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "game/modes/golf/golf_play.hpp"
 #include "game/modes/golf/latency_calibration.hpp"
 #include "game/modes/replay.hpp"
+#include "game/report/round_json.hpp"
 #include "physics/units.hpp"
 #include "physics/world.hpp"
 #include "support/ball_on_green.hpp"
@@ -233,6 +235,19 @@ TEST_CASE("restarting a hole puts the round back where the hole began", "[modes]
   play.update({at(IntentKind::Restart, t + 0.7)}, t + 0.8);
   CHECK(play.restarts(1) == 1);
   CHECK(play.message() == "Hole 2 restarted");
+  // And the printed card once the hole is played out, with its key (R beside the hole's
+  // number, as the window's card has it); a card without restarts has neither.
+  while (!play.group().finished()) {
+    t += 1.0;
+    play.update({at(IntentKind::CaddiePlays, t), at(IntentKind::Continue, t + 0.1)}, t + 0.2);
+    play.update({at(IntentKind::Continue, t + 0.3)}, t + 0.4);
+  }
+  const std::string card = group_table(play.group(), play.restarts());
+  INFO(card);
+  CHECK_THAT(card, Catch::Matchers::Contains("\n   2 R     " + std::to_string(play.group().course().holes[1].par) + " "));
+  CHECK_THAT(card, !Catch::Matchers::Contains("\n   1 R"));
+  CHECK_THAT(card, Catch::Matchers::Contains("R the hole was restarted"));
+  CHECK_THAT(group_table(play.group()), !Catch::Matchers::Contains("restarted") && !Catch::Matchers::Contains(" R "));
 }
 
 TEST_CASE("a bot takes its own turn, and a stroke's result is told once the ball stops", "[modes][golf]") {
@@ -698,6 +713,39 @@ TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", 
   // The HUD's carry from here is along that aim: clear of the tree, the stroke's own carry.
   CHECK_FALSE(play.tree_in_the_way(play.club()));
   CHECK(play.carry_here(play.club()) == play.round().simulate(in).trajectory.summary.carry_m);
+}
+
+TEST_CASE("beside a row of trees in a crosswind the caddie's line clears them when the swing is a little off", "[modes][golf]") {
+  // The window's `play --mode golf --bot none --seed 3`: the caddie's drive on the National's
+  // 1st stops in the right rough ~178 yd out, trees along the right and the wind (22 mph)
+  // blowing right to left. A line held out over the trees for the wind to bring back flies
+  // into them when the swing is a standard deviation of the meter's timing late or early.
+  GolfSetup setup = solo("scratch");
+  setup.options.seed = 3;
+  GolfPlay play(test::assets(), load_course(test::assets(), "national"), setup);
+  play.update({at(IntentKind::CaddiePlays, 1.0)}, 1.1);
+  REQUIRE(play.stage() == GolfPlay::Stage::Flying);
+  play.update({at(IntentKind::Continue, 1.2)}, 1.3);
+  REQUIRE(play.stage() == GolfPlay::Stage::Aiming);
+  REQUIRE(play.round().lie() == "rough");
+  REQUIRE(play.round().wind().speed > 5.0);
+  const std::optional<StrokeInput>& plan = play.caddie_plan();
+  REQUIRE(plan);
+  INFO(plan->club << " at " << plan->meter.power << " power, aimed " << plan->aim << " rad");
+  const double sd = golfer_skill("scratch").accuracy_sd_ms;
+  for (const double f : {0.0, -1.0, 1.0}) {
+    StrokeInput in = *plan;
+    in.meter.accuracy_ms = f * sd;
+    INFO("timing " << in.meter.accuracy_ms << " ms");
+    CHECK_FALSE(play.round().first_touch_in_a_tree(play.round().simulate(in).trajectory.summary));
+  }
+  // He hands a shorter club than the distance asks for, and says which he passed over: the
+  // stock club for the distance, whose plan or misses found the trees.
+  if (!play.caddie_passed_over().empty()) {
+    const auto& bag = golf_bag();
+    const auto at = [&](const std::string& c) { return std::find(bag.begin(), bag.end(), c) - bag.begin(); };
+    CHECK(at(play.caddie_passed_over()) < at(plan->club));
+  }
 }
 
 TEST_CASE("a pitch's tree warning is the pitch's: a full wedge into the trees says nothing of it", "[modes][golf]") {

@@ -36,11 +36,12 @@ void show_loading(GameWindow& win, const std::string& mode, std::vector<KeyPress
   const FrameInput fin = win.begin_frame();
   keys.insert(keys.end(), fin.keys.begin(), fin.keys.end());
   const float w = static_cast<float>(win.framebuffer_width()), h = static_cast<float>(win.framebuffer_height());
-  ImGui::GetBackgroundDrawList()->AddRectFilled(ImVec2(0, 0), ImVec2(w, h), IM_COL32(20, 24, 28, 255));
-  ImGui::SetNextWindowPos(ImVec2(0.5f * w, 0.5f * h), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::Begin("##loading", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
-  ImGui::Text("Loading %s ...", mode.c_str());
-  ImGui::End();
+  // Drawn on the background list: a new auto-sized window is not shown on its first frame.
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  dl->AddRectFilled(ImVec2(0, 0), ImVec2(w, h), IM_COL32(20, 24, 28, 255));
+  const std::string text = "Loading " + mode + " ...";
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  dl->AddText(ImVec2(0.5f * (w - size.x), 0.5f * (h - size.y)), IM_COL32(230, 230, 230, 255), text.c_str());
   win.render_ui();
   win.present();
 }

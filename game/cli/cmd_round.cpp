@@ -134,6 +134,8 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
       throw InputError(o.swings + ": the script ran out after its " + std::to_string(script.size()) +
                        " strokes, on hole " + std::to_string(group.hole_index() + 1) +
                        " (give more [[stroke]] entries, or a --bot to play on after it)");
+    } else if (group.hole_lost_for_next()) {
+      group.concede_hole();  // a match's hole he can no longer halve: picked up
     } else {
       group.play_bot();
     }

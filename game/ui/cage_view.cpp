@@ -184,7 +184,9 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
       squared += c.swings()[i].result.tracking.is_squared_up;
       blasts += c.swings()[i].result.tracking.blast;
     }
-    const char* whose = last.by_pro ? "Pro's bat" : "Bat";
+    // After a pitch taken, these are the swing before it: said so, not read as the take's.
+    const bool taken = !c.last().swung;
+    const char* whose = taken ? (last.by_pro ? "Pro's last swing: bat" : "Last swing: bat") : last.by_pro ? "Pro's bat" : "Bat";
     // The attack angle and direction are the bat's where it meets the ball; a miss meets it
     // nowhere (an early bat has turned past 90 deg of pull by the time the ball arrives), so a
     // miss shows what every swing has: its speed and length.
@@ -200,7 +202,7 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     // does not read as 80 % beside a count that (rightly) leaves it out.
     if (met)
       // Held at 100 %: the best exit speed is the most a swing of that speed can give.
-      ImGui::Text("%s: %.0f %% of its best exit speed", last.by_pro ? "The pro's swing" : "Last swing",
+      ImGui::Text("%s: %.0f %% of its best exit speed", last.by_pro ? (taken ? "The pro's last swing" : "The pro's swing") : "Last swing",
                   std::min(100.0, std::floor(100.0 * t.squared_up)));
     if (n > 0) ImGui::Text("Squared up (80 %%+) %d of %d swings, blasts %d", squared, n, blasts);
   }
@@ -447,9 +449,13 @@ void cage_report(const BattingCage& c, std::ostream& out) {
     }
     out << "\n";
   }
-  for (std::size_t i = 0; i < c.swings_told(); ++i) {
+  // Every swing the figures count; one whose ball was still in the air has not been called.
+  for (std::size_t i = 0; i < c.swings().size(); ++i) {
     const SwingRecord& s = c.swings()[i];
-    out << "swing: " << s.call_text << (s.said.empty() ? "" : "  ") << s.said << "\n";
+    out << "swing: " << s.call_text;
+    if (i >= c.swings_told()) out << "  (in the air as the window closed)";
+    else if (!s.said.empty()) out << "  " << s.said;
+    out << "\n";
   }
 }
 

@@ -23,7 +23,8 @@ Intents cage_intents(const std::vector<KeyPress>& keys);
 /// What the window prints of the cage as it closes (however it was reached: --mode baseball
 /// or Tab): the player's figures as the panel shows them, a live game's line, then every
 /// swing as "swing: CALL  WORDS" (CALL the record's code: "single", "foul_tip", ...; WORDS
-/// the call as the player was told it: "Strikeout on a foul tip").
+/// the call as the player was told it: "Strikeout on a foul tip"; a ball still in the air
+/// says so).
 void cage_report(const BattingCage& cage, std::ostream& out);
 
 std::unique_ptr<ModeView> make_cage_view(const Assets& assets, std::unique_ptr<BattingCage> model, const CageViewOptions& o);

@@ -190,10 +190,17 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     const double carry = stock ? stock->carry : 0.0;
     // The bag's carry (calm air, flat fairway) and this swing's from here: the wind, the lie.
     const std::string name = club_name(club);
+    const auto& plan = play.caddie_plan();
+    const bool part_swing = plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn();
     if (club == "putter") ImGui::Text("Club: putter");
     else if (const std::optional<double> tree = play.tree_in_the_way(club))
       ImGui::TextWrapped("Club: %s (stock carry %s, a tree in the way at %s)", name.c_str(), units.distance(carry).c_str(),
                   units.distance(*tree).c_str());
+    else if (part_swing)
+      // The caddie's part swing is told on its own line below: a full swing's run ("stops
+      // 99 yd") beside a 20 ft chip says nothing to the player.
+      ImGui::TextWrapped("Club: %s (stock carry %s; full from here %s)", name.c_str(), units.distance(carry).c_str(),
+                         units.distance(play.carry_here(club)).c_str());
     else {
       const double here = play.carry_here(club), stops = play.stops_here(club);
       const std::string why = why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units);
@@ -210,12 +217,12 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing), and where it lands and stops (the club
     // line's figures are the full swing's, which a part wedge from 80 yd flies well past).
-    if (const auto& plan = play.caddie_plan(); plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn())
+    if (part_swing)
       ImGui::TextWrapped("Caddie: a part swing, %.0f %% power (blue mark): carries %s, stops %s", 100.0 * plan->meter.power,
                          units.course(play.carry_here(club, plan->meter.power)).c_str(),
                          units.course(play.stops_here(club, plan->meter.power)).c_str());
     // His club is not the one the distance asks for: say why, or the player takes the longer.
-    if (const auto& plan = play.caddie_plan(); plan && plan->club == club && !play.caddie_passed_over().empty() && play.human_turn())
+    if (plan && plan->club == club && !play.caddie_passed_over().empty() && play.human_turn())
       ImGui::TextWrapped("Caddie: not the %s: struck a little off, it finds the trees", club_name(play.caddie_passed_over()).c_str());
     if (club == "putter" && r.lie() == "green") {
       // On the green the aim in the read's words: how far beside the cup the line points.

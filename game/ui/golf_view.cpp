@@ -98,8 +98,11 @@ class GolfView final : public ModeView {
   }
   void frame(const ViewInput& in, Renderer& renderer) override;
   void report(std::ostream& out) const override {
-    const GolfRound& r = play_->group().round(0);
-    out << "golf: hole " << std::min(play_->group().hole_index() + 1, r.course().holes.size()) << " of "
+    const GolfGroup& g = play_->group();
+    const GolfRound& r = g.round(0);
+    // Once the round is over, the holes it took (a match decided 2&1 on the 2nd of 3); else
+    // the hole being played.
+    out << "golf: hole " << (g.finished() ? g.hole_index() : std::min(g.hole_index() + 1, r.course().holes.size())) << " of "
         << r.course().holes.size() << ", " << r.total_strokes() << (r.total_strokes() == 1 ? " stroke, " : " strokes, ") << play_->cancelled()
         << (play_->cancelled() == 1 ? " swing" : " swings") << " cancelled, " << to_string(play_->stage()) << "\n";
   }
@@ -671,7 +674,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     else if (!r.finished() && !over)
       // (Not kept clear of the image's labels: their boxes hold the room beside this flag for
       // it, and while addressing no shot is labelled. Clear of the play panel, last frame's.)
-      draw_cup_and_flag(cam, r.hole().pin, w, h, true, addressing && r.lie() != "green" ? units_.distance(r.to_pin()) : std::string(),
+      draw_cup_and_flag(cam, r.hole().pin, w, h, true, addressing && r.lie() != "green" ? units_.course(r.to_pin()) : std::string(),
                         {hud_box_});
     if (addressing) {
       draw_aim(*play_, cam, w, h);

@@ -218,6 +218,10 @@ else:
     lead, decided = 0, None
     for k, h in enumerate(r["holes"]):
         a, b = nets[0][k], nets[1][k]
+        # A hole conceded (a bot that could no longer halve it picks up) is lost, whatever
+        # its strokes so far.
+        if j["players"][0]["holes"][k].get("conceded"): a = float("inf")
+        elif j["players"][1]["holes"][k].get("conceded"): b = float("inf")
         if decided is None: lead += (a < b) - (b < a)  # a decided match stands (Rule 3.2a(3))
         assert h["holes_up"] == lead, h
         if decided is None and abs(lead) > n - k - 1: decided = k + 1

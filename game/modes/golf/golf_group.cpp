@@ -90,6 +90,19 @@ void GolfGroup::concede_hole() {
   }
 }
 
+bool GolfGroup::hole_lost_for_next() const {
+  if (finished() || options_.format != GolfFormat::Match) return false;
+  const std::size_t p = static_cast<std::size_t>(next_), o = 1 - p;
+  const GolfRound& mine = rounds_[p];
+  const GolfRound& theirs = rounds_[o];
+  const std::size_t h = mine.hole_index();
+  // Not yet decided while the opponent is still playing the hole, or has conceded it.
+  if (theirs.hole_index() == h || h >= theirs.card().size() || theirs.card()[h].conceded) return false;
+  const int their_net = theirs.card()[h].strokes - strokes_received(static_cast<int>(o))[h];
+  const int best_mine = mine.card()[h].strokes + 1 - strokes_received(static_cast<int>(p))[h];
+  return best_mine > their_net;
+}
+
 void GolfGroup::after_turn(int player, std::size_t hole_before) {
   note_.clear();
   GolfRound& r = rounds_[static_cast<std::size_t>(player)];

@@ -90,6 +90,10 @@ class GolfGroup {
   const StrokeRecord& play_drawn(const StrokeInput& drawn, ShotResult* shot = nullptr) { return play_stroke(drawn, true, shot); }
   /// The player to play gives up the hole (match play only: InputError otherwise).
   void concede_hole();
+  /// Match play: the player to play can no longer halve the hole, his opponent having holed
+  /// out in fewer net strokes than his next stroke would make his score. A bot then gives the
+  /// hole up (concede_hole) instead of putting out, as match players pick up (Rule 3.2b(1)).
+  bool hole_lost_for_next() const;
 
   /// Every turn so far, in order: a round given these replays to this state.
   const std::vector<GolfEvent>& events() const { return events_; }

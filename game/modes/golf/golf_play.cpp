@@ -372,9 +372,21 @@ void GolfPlay::advance(double t) {
   }
   if (stage_ == Stage::Aiming && !group_.finished() && group_.bot_turn() && t - turn_at_ >= kBotAddress) {
     last_meter_.reset();
-    strike(group_.bot_stroke(), true, turn_at_ + kBotAddress);
+    // A match's hole the bot can no longer halve: he picks up, as match players do.
+    if (group_.hole_lost_for_next()) concede_hole(turn_at_ + kBotAddress);
+    else strike(group_.bot_stroke(), true, turn_at_ + kBotAddress);
   }
   if (stage_ == Stage::Flying && t - struck_at_ >= duration(last_.trajectory)) land(struck_at_ + duration(last_.trajectory));
+}
+
+void GolfPlay::concede_hole(double t) {
+  const std::size_t hole = group_.hole_index();
+  group_.concede_hole();
+  landed_at_ = t;
+  say(group_.note());
+  if (group_.finished()) stage_ = Stage::RoundOver;
+  else if (group_.hole_index() != hole) stage_ = Stage::HoleOver;
+  else begin_turn(t);
 }
 
 void GolfPlay::land(double t) {
@@ -510,13 +522,7 @@ void GolfPlay::apply(const Intent& in) {
             say("Concede hole " + std::to_string(group_.hole_index() + 1) + "? H again gives it up; any other key plays on");
           } else if (group_.options().format == GolfFormat::Match) {
             concede_asked_ = false;
-            const std::size_t hole = group_.hole_index();
-            group_.concede_hole();
-            landed_at_ = t;
-            say(group_.note());
-            if (group_.finished()) stage_ = Stage::RoundOver;
-            else if (group_.hole_index() != hole) stage_ = Stage::HoleOver;
-            else begin_turn(t);
+            concede_hole(t);
           }
           break;
         case IntentKind::CaddiePlays: {

@@ -204,6 +204,9 @@ class GolfPlay {
   void apply(const Intent& in);
   void advance(double t);
   void land(double t);
+  /// The player to play gives up the hole at `t` (H twice, or a bot that can no longer halve
+  /// it): the note said, on to the next turn, hole or the round's end.
+  void concede_hole(double t);
   void strike(const StrokeInput& s, bool bot, double t);
   /// The player's own stroke as the meter gave it: its clicks kept (whose, on which hole) for
   /// the view's marks, then struck.

@@ -57,6 +57,12 @@ TEST_CASE("the cage's exit report counts the player's swings and says each call 
     }
   }
   REQUIRE(struck_out_on_a_tip);
+  // And a ball hit square, still in the air as the window closes: counted, listed, not called.
+  cage.update({at(IntentKind::Pitch, now)}, now);
+  const double arrive = now + (kWindupTime + cage.pitch().flight_time) / cage.time_scale();
+  cage.update({at(IntentKind::ToggleTiming, now + 0.01)}, now + 0.01);
+  cage.update({at(IntentKind::Swing, arrive)}, arrive + 0.001);
+  const bool in_air = cage.stage() == BattingCage::Stage::Batted && cage.swings_told() < cage.swings().size();
   std::ostringstream out;
   cage_report(cage, out);
   const std::string report = out.str();
@@ -70,4 +76,6 @@ TEST_CASE("the cage's exit report counts the player's swings and says each call 
   std::size_t lines = 0;
   for (std::size_t at = report.find("\nswing: "); at != std::string::npos; at = report.find("\nswing: ", at + 1)) ++lines;
   CHECK(lines == cage.swings().size());
+  CHECK(in_air);  // timing only, on time: a pro's read of the height, squarely met
+  if (in_air) CHECK_THAT(report, Catch::Matchers::EndsWith("  (in the air as the window closed)\n"));
 }

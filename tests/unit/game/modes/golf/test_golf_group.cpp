@@ -197,6 +197,39 @@ TEST_CASE("a match decided with holes to play ends there; the card, the result a
   CHECK(again.hole_index() == g.hole_index());
 }
 
+TEST_CASE("match play: a player who can no longer halve the hole picks it up instead of putting out", "[modes][golf][formats]") {
+  // Tour against beginner, level: the beginner often lies more than the tour bot holed out in
+  // before he reaches the green. Played as `round` and the window play a bot's turn.
+  GolfOptions o;
+  o.format = GolfFormat::Match;
+  o.seed = 3;
+  GolfGroup g(test::assets(), load_course(test::assets(), "national"), {bot("tour", 0), bot("beginner", 0)}, o);
+  int turns = 0, conceded = 0;
+  while (!g.finished()) {
+    REQUIRE(++turns < 400);
+    const int p = g.to_play();
+    const std::size_t h = g.round(p).hole_index();
+    const GolfRound& other = g.round(1 - p);
+    // Lost: the opponent is done with the hole (holed, or picked up), in fewer strokes than
+    // this player's next one would make his.
+    const bool lost = other.hole_index() > h && !other.card()[h].conceded && other.card()[h].strokes < g.round(p).card()[h].strokes + 1;
+    CHECK(g.hole_lost_for_next() == lost);
+    if (g.hole_lost_for_next()) {
+      g.concede_hole();
+      ++conceded;
+      CHECK(g.round(p).card()[h].conceded);
+      CHECK(g.note() == g.players()[static_cast<std::size_t>(p)].name + " concedes hole " + std::to_string(g.course().holes[h].number));
+    } else {
+      g.play_bot();
+    }
+  }
+  CHECK(conceded > 0);
+  // The match's result stands on its holes: a conceded hole is the opponent's.
+  const Standings s = standings(g);
+  REQUIRE(s.match);
+  CHECK(s.match->result.find(" wins ") != std::string::npos);
+}
+
 TEST_CASE("gimmes and auto-putt: conceded putts count one stroke, auto-putts count what the physics holes", "[modes][golf][formats]") {
   GolfOptions o;
   o.gimme_m = 2.0;

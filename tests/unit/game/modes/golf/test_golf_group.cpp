@@ -203,7 +203,7 @@ TEST_CASE("match play: a player who can no longer halve the hole picks it up ins
   GolfOptions o;
   o.format = GolfFormat::Match;
   o.seed = 3;
-  GolfGroup g(test::assets(), load_course(test::assets(), "national"), {bot("tour", 0), bot("beginner", 0)}, o);
+  GolfGroup g(test::assets(), load_course(test::assets(), "national_3"), {bot("tour", 0), bot("beginner", 0)}, o);
   int turns = 0, conceded = 0;
   while (!g.finished()) {
     REQUIRE(++turns < 400);

@@ -43,9 +43,12 @@ Intents golf_intents(const std::vector<KeyPress>& keys) {
 
 namespace {
 
-/// The view of a stroke at address: behind ball `b` down the aim line `d` (unit, flat).
+/// The view of a stroke at address: behind ball `b` down the aim line `d` (unit, flat). A
+/// putt, and a chip from where golfers count feet (GolfUnits::kNear), take the putt's view:
+/// near, beside the golfer and looking down at the cup; the full shot's, 9 m back at his
+/// shoulders' height, stood him between the camera and a flag a few yards off.
 Camera address_camera_at(const Vec3& b, const Vec3& d, bool putt, double to_pin) {
-  return putt ? putt_address_camera(b, d, to_pin) : full_shot_address_camera(b, d);
+  return putt || to_pin <= GolfUnits::kNear ? putt_address_camera(b, d, to_pin) : full_shot_address_camera(b, d);
 }
 
 Vec3 flat_unit(const Vec3& from, const Vec3& to) {

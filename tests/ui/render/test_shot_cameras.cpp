@@ -4,6 +4,9 @@
 // point once Follow has turned to the landing area.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 #include "game/content/scenario.hpp"
 #include "game/render/camera.hpp"
 #include "game/render/shot_scene.hpp"
@@ -163,4 +166,34 @@ TEST_CASE("a putt's view holds the ball above the swing meter, the cup and the f
       }
     }
   }
+}
+
+TEST_CASE("a chip's view from beside the ball shows the flag clear of the golfer; the full shot's hid it", "[render][unit]") {
+  // A 20 ft chip aimed 11.4 deg right of the pin for the slope (play --mode golf --seed 8,
+  // hole 2, stroke 4). The golfer stands ~0.75 m left of the ball's line, his head ~1.6 m up;
+  // the golf view takes the putt's camera for such a chip (golf_view.cpp, address_camera_at).
+  const Vec3 ball(0.0, 0.021, 0.0);
+  const double off = deg_to_rad(11.4);
+  const Vec3 aim(std::cos(off), 0.0, std::sin(off));  // the aim: right of +x, the pin's line
+  const Vec3 right(-aim.z(), 0.0, aim.x());
+  const Vec3 pin = ball + 6.1 * Vec3::UnitX();
+  const Vec3 head = ball - 0.75 * right + Vec3(0.0, 1.6, 0.0), chest = ball - 0.75 * right + Vec3(0.0, 1.2, 0.0);
+  const int w = 1280, h = 800;
+  // Apart on the screen: the flag's pole from its cup to its top against his head and chest.
+  const auto clear = [&](const Camera& c) {
+    double nearest = 1e9;
+    for (const Vec3& body : {head, chest})
+      for (const double y : {0.0, 0.5 * kFlagstickHeight, kFlagstickHeight}) {
+        const auto a = c.project(body, w, h), b = c.project(Vec3(pin.x(), y, pin.z()), w, h);
+        REQUIRE(a);
+        REQUIRE(b);
+        nearest = std::min(nearest, (*a - *b).norm());
+      }
+    return nearest;
+  };
+  const Camera chip = putt_address_camera(ball, aim, 6.1);
+  CHECK(in_frame(chip, pin, w, h, 2.0));
+  CHECK(in_frame(chip, Vec3(pin.x(), kFlagstickHeight, pin.z()), w, h, 2.0));
+  CHECK(clear(chip) > 80.0);
+  CHECK(clear(full_shot_address_camera(ball, aim)) < 40.0);
 }

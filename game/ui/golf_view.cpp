@@ -46,7 +46,7 @@ namespace {
 /// The view of a stroke at address: behind ball `b` down the aim line `d` (unit, flat). A
 /// putt, and a chip from where golfers count feet (GolfUnits::kNear), take the putt's view:
 /// near, beside the golfer and looking down at the cup; the full shot's, 9 m back at his
-/// shoulders' height, stood him between the camera and a flag a few yards off.
+/// shoulders' height, would stand him between the camera and a flag a few yards off.
 Camera address_camera_at(const Vec3& b, const Vec3& d, bool putt, double to_pin) {
   return putt || to_pin <= GolfUnits::kNear ? putt_address_camera(b, d, to_pin) : full_shot_address_camera(b, d);
 }

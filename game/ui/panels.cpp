@@ -220,7 +220,7 @@ bool shot_section(PanelContext& c) {
     changed |= slider(c, LabParam::PitchSpeed, "pitch speed");
     changed |= slider(c, LabParam::PitchSpin, "pitch spin", "%.0f");
     ImGui::Text("impact: %.1f in from tip, undercut %+.0f mm", b.swing.impact_from_tip / 0.0254, b.swing.undercut * 1000);
-    // Wrapped: at the left column's 340 px the line ran off its edge.
+    // Wrapped: on one line it would run off the left column's 340 px.
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("click the barrel: along = impact point, up = undercut");
     ImGui::PopStyleColor();
@@ -407,7 +407,7 @@ void replay_section(PanelContext& c) {
   float speed = static_cast<float>(c.replay.speed);
   ImGui::SetNextItemWidth(120);
   if (ImGui::SliderFloat("speed", &speed, 0.1f, 4.0f, "%.1fx")) c.replay.speed = speed;
-  // The camera on a line of its own: beside the speed its label ran off the column.
+  // The camera on a line of its own: beside the speed its label would run off the column.
   int cam = static_cast<int>(c.camera);
   const char* cams[] = {"behind", "side", "top", "follow"};
   ImGui::SetNextItemWidth(100);

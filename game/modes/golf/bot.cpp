@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "physics/error.hpp"
 #include "game/rules/run_shot.hpp"
@@ -504,23 +505,27 @@ StrokeInput GolfBot::intend(const GolfRound& round, std::string* passed_over) co
   const auto missed = [&](const Tried& planned, double f) {
     return tune(planned.in.club, planned.in.meter.power, planned.in.aim, 1, f * miss);
   };
-  const auto a_miss_in_a_tree = [&](const Tried& planned) {
-    if (!trees_in_reach(round, planned.land)) return false;
-    return missed(planned, -1.0).in_tree || missed(planned, 1.0).in_tree;
-  };
-  if (best.in_tree || a_miss_in_a_tree(best)) {
+  // The plan's misses of one standard deviation either way, flown once: whether they find a
+  // tree, and then in the plan's own cost.
+  std::optional<std::pair<Tried, Tried>> wide;
+  if (!best.in_tree && trees_in_reach(round, best.land)) wide.emplace(missed(best, -1.0), missed(best, 1.0));
+  if (best.in_tree || (wide && (wide->first.in_tree || wide->second.in_tree))) {
     const Vec3& pin = round.hole().pin;
     const auto cost = [&](const Tried& t) {
       if (t.lost) return round.to_pin() + kStrokeCost;  // stroke and distance, or a drop back
       const double to_cup = std::hypot(pin.x() - t.rest.x(), pin.z() - t.rest.z());
       return to_cup + lie_cost(round.surface_at(t.rest)) + (t.in_tree ? kTreeCost : 0.0);
     };
-    const auto as_struck = [&](const Tried& planned) {
+    // `at_one_sd`: those misses when already flown.
+    const auto as_struck = [&](const Tried& planned, const std::pair<Tried, Tried>* at_one_sd = nullptr) {
       double sum = cost(planned);
-      for (const double f : {-1.0, -0.5, 0.5, 1.0}) sum += cost(missed(planned, f));
+      sum += cost(at_one_sd ? at_one_sd->first : missed(planned, -1.0));
+      sum += cost(missed(planned, -0.5));
+      sum += cost(missed(planned, 0.5));
+      sum += cost(at_one_sd ? at_one_sd->second : missed(planned, 1.0));
       return sum / 5.0;
     };
-    double best_cost = as_struck(best);
+    double best_cost = as_struck(best, wide ? &*wide : nullptr);
     const std::string before_trees = best.in.club;
     // The plan's club at its power on lines about its own (at half the steps: a wind's line
     // held a few degrees nearer the trees' side may be all that changes), then every other

@@ -1,6 +1,6 @@
 // What the window prints of the batting cage as it closes (cage_report): the player's figures
 // as the panel counts them, a live game's line, and every swing as it was called, a strikeout
-// on a foul tip as such (its record once said only "foul").
+// on a foul tip as such (its code "foul_tip", not "foul").
 #include <catch2/catch.hpp>
 
 #include <sstream>

@@ -26,6 +26,9 @@ struct GolfUnits {
   /// distance(); every label of a carry or a distance to the pin reads through it, so the
   /// picture and the panels give one number in one unit.
   std::string course(double m) const;
+  /// `m` in the unit course(`longest`) reads in: two figures of one sentence ("carries 43 ft,
+  /// stops 23 yd") in one unit, the longer one's.
+  std::string course(double m, double longest) const;
   static constexpr double kNear = 20.0;  ///< m: ~22 yd, a chip's length, where golfers count feet
 };
 
@@ -84,7 +87,13 @@ std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& uni
 /// slope -12 yd"; "" when neither is. A bag the player measured on the range (`measured`)
 /// holds his own strikes as well: no ground's share then. `calm` NaN (the still-air flight
 /// ends in a tree): the wind's and the ground's shares together, ": wind, lie and slope -10 yd".
-std::string why_from_here(double stock, bool measured, double here, double calm, const GolfUnits& units);
+/// `ground`: the ground's share in words, ground_share_words().
+std::string why_from_here(double stock, bool measured, double here, double calm, const GolfUnits& units,
+                          const char* ground = "lie and slope");
+/// The ground's share of a carry in a golfer's words: from a clean lie (tee, fairway, green)
+/// only the landing's height changes it, "uphill" (landing `rise` m above the ball) or
+/// "downhill"; from the rough or sand the lie and the slope together.
+const char* ground_share_words(const std::string& lie, double rise);
 /// A putt's break or aim beside the cup: inches (centimetres) inside a yard (a metre), then
 /// the putt's units.
 std::string break_length(double m, const GolfUnits& units);

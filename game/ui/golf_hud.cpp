@@ -33,24 +33,34 @@ std::string GolfUnits::putt(double m) const {
 }
 
 std::string GolfUnits::course(double m) const { return m < kNear ? putt(m) : distance(m); }
+std::string GolfUnits::course(double m, double longest) const { return longest < kNear ? putt(m) : distance(m); }
 
 // A share of the carry from here worth naming (m, ~3 yd): under it the wind's or the ground's
 // part is inside a good player's carry spread with one club (a few yards).
 constexpr double kShareNoted = 2.7;
 
-std::string why_from_here(double stock, bool measured, double here, double calm, const GolfUnits& units) {
+std::string why_from_here(double stock, bool measured, double here, double calm, const GolfUnits& units, const char* ground) {
   std::string out;
-  const auto share = [&](const char* what, double d) {
+  const auto share = [&](const std::string& what, double d) {
     if (std::abs(d) < kShareNoted) return;
-    out += (out.empty() ? ": " : ", ") + std::string(what) + (d >= 0.0 ? " +" : " -") + units.distance(std::abs(d));
+    out += (out.empty() ? ": " : ", ") + what + (d >= 0.0 ? " +" : " -") + units.distance(std::abs(d));
   };
   if (std::isnan(calm)) {  // no still-air flight to part them by: the two together
-    if (!measured) share("wind, lie and slope", here - stock);
+    if (!measured) share(std::string("wind, ") + ground, here - stock);
     return out;
   }
   share("wind", here - calm);
-  if (!measured) share("lie and slope", calm - stock);
+  if (!measured) share(ground, calm - stock);
   return out;
+}
+
+const char* ground_share_words(const std::string& lie, double rise) {
+  // Under a metre of rise a carry changes by less than kShareNoted: nothing to name it by.
+  constexpr double kRiseNoted = 1.0;  // m
+  const bool clean = lie == "tee" || lie == "fairway" || lie == "green";
+  if (clean && rise >= kRiseNoted) return "uphill";
+  if (clean && rise <= -kRiseNoted) return "downhill";
+  return "lie and slope";
 }
 
 std::string break_length(double m, const GolfUnits& units) {
@@ -203,7 +213,8 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
                          units.distance(play.carry_here(club)).c_str());
     else {
       const double here = play.carry_here(club), stops = play.stops_here(club);
-      const std::string why = why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units);
+      const std::string why = why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units,
+                                            ground_share_words(r.lie(), play.landing_rise_here(club)));
       // A run worth counting (the rough's flyer, a firm fairway), or one that takes a ball
       // landing short of the pin up toward it (a wedge that carries 65 yd of 76): where it
       // stops as well, the distance the caddie chose it by.
@@ -217,10 +228,12 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     // A part swing's feel: the power the caddie would give the club he chose (a pitch of
     // 29 yd with a 78 yd wedge is not a full swing), and where it lands and stops (the club
     // line's figures are the full swing's, which a part wedge from 80 yd flies well past).
-    if (part_swing)
+    if (part_swing) {
+      const double carries = play.carry_here(club, plan->meter.power), stops = play.stops_here(club, plan->meter.power);
+      const double longest = std::max(carries, stops);
       ImGui::TextWrapped("Caddie: a part swing, %.0f %% power (blue mark): carries %s, stops %s", 100.0 * plan->meter.power,
-                         units.course(play.carry_here(club, plan->meter.power)).c_str(),
-                         units.course(play.stops_here(club, plan->meter.power)).c_str());
+                         units.course(carries, longest).c_str(), units.course(stops, longest).c_str());
+    }
     // His club is not the one the distance asks for: say why, or the player takes the longer.
     if (plan && plan->club == club && !play.caddie_passed_over().empty() && play.human_turn())
       ImGui::TextWrapped("Caddie: not the %s: struck a little off, it finds the trees", club_name(play.caddie_passed_over()).c_str());
@@ -699,7 +712,7 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
     for (int p : s.leaders) names += (names.empty() ? "" : ", ") + g.players()[static_cast<std::size_t>(p)].name;
     ImGui::Text("%s: %s", s.leaders.size() > 1 ? "Tied" : "Winner", names.c_str());
   }
-  ImGui::TextDisabled(final ? "N: a new round   Tab: next mode   Esc: menu" : "Enter: next hole");
+  ImGui::TextDisabled(final ? "N: a new round   Tab: next mode   Esc: menu (Q there quits)" : "Enter: next hole");
   ImGui::End();
 }
 

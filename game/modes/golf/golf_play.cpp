@@ -209,6 +209,11 @@ double GolfPlay::calm_carry_here(const std::string& club, double power) const {
   return flown_here(club, power).calm_carry;
 }
 
+double GolfPlay::landing_rise_here(const std::string& club, double power) const {
+  if (round().finished() || club == "putter") return 0.0;
+  return flown_here(club, power).landing.y() - round().ball().y();
+}
+
 double GolfPlay::stops_here(const std::string& club, double power) const {
   if (round().finished() || club == "putter") return 0.0;
   return flown_here(club, power).total;
@@ -381,6 +386,7 @@ void GolfPlay::advance(double t) {
 
 void GolfPlay::concede_hole(double t) {
   const std::size_t hole = group_.hole_index();
+  round_hole_ = hole;  // the hole the card and header show once it is over: this one
   group_.concede_hole();
   landed_at_ = t;
   say(group_.note());
@@ -504,8 +510,11 @@ void GolfPlay::apply(const Intent& in) {
         case IntentKind::ReadGreen: read_green(); break;
         case IntentKind::Swing: {
           const double length = assets_.equipment().club(club()).length;
-          // A putt the preview reaches: the marker slowed for a short one (putt_tempo).
+          // A putt the preview reaches: the marker slowed for a short one (putt_tempo); the
+          // caddie's part swing with this club, slowed to its mark as well.
+          const bool part = !putting && caddie_plan_ && caddie_plan_->club == club() && caddie_plan_->meter.power < 1.0;
           const double tempo = putting && putt_plays_as_ > 0.0 ? MeterClock::putt_tempo(cup_mark_power())
+                               : part                          ? MeterClock::part_swing_tempo(length, caddie_plan_->meter.power)
                                                                : MeterClock::tempo_for(length, putting);
           meter_.emplace(tempo, putting, perfect_window_ms(setup_.difficulty));
           swing_undone_ = false;

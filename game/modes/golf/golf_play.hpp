@@ -184,6 +184,9 @@ class GolfPlay {
   /// in a tree: held off a row of trees for the wind to bring back, it says nothing of the
   /// wind's share.
   double calm_carry_here(const std::string& club, double power = 1.0) const;
+  /// How far above the ball (m, − below) the same stroke first lands: what makes a carry
+  /// from a clean lie differ from the bag's.
+  double landing_rise_here(const std::string& club, double power = 1.0) const;
   /// Where the stroke the player would play with `club` along the aim (the caddie's part
   /// swing when he planned one with it, else a full swing) ends its flight against something
   /// standing above the ground, a tree: its carry (m) to it. None when it lands on the ground.

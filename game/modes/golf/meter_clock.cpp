@@ -36,10 +36,18 @@ double MeterClock::tempo_for(double club_length, bool putter) {
   return putter ? 1.2 : 0.9 * club_length / kDriverLength;
 }
 
-double MeterClock::putt_tempo(double cup_power) {
-  const double usual = tempo_for(0.0, true);
-  if (!(cup_power > 0.0)) return usual;
-  return std::max(usual, kLeastToCup / cup_power);
+namespace {
+/// `usual`, or slower so that the marker takes kLeastToCup to climb to `mark_power`.
+double slowed_to_mark(double usual, double mark_power) {
+  if (!(mark_power > 0.0)) return usual;  // no mark to read: the usual
+  return std::max(usual, MeterClock::kLeastToCup / mark_power);
+}
+}  // namespace
+
+double MeterClock::putt_tempo(double cup_power) { return slowed_to_mark(tempo_for(0.0, true), cup_power); }
+
+double MeterClock::part_swing_tempo(double club_length, double mark_power) {
+  return slowed_to_mark(tempo_for(club_length, false), mark_power);
 }
 
 double MeterClock::position(double t) const {

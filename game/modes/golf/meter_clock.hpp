@@ -70,6 +70,12 @@ class MeterClock {
   /// tap-in at 8 % is then a press 0.6 s long, not a flick of 96 ms where 24 ms is a quarter
   /// of the distance; a 20 ft putt (~55 %) keeps the usual tempo.
   static double putt_tempo(double cup_power);
+  /// A part swing's tempo with `club_length` m when the caddie's power for it is
+  /// `mark_power`: the club's tempo, slowed as a putt's is so the marker takes at least
+  /// kLeastToCup to reach the mark. A 14 % chip with the lob wedge was a 98 ms press and a
+  /// 65 ms fall to the accuracy mark, quicker than a hand can judge; a 90 % swing keeps its
+  /// club's tempo.
+  static double part_swing_tempo(double club_length, double mark_power);
   static constexpr double kLeastToCup = 0.6;  // s
 
  private:

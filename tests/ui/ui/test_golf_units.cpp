@@ -68,4 +68,18 @@ TEST_CASE("the club line says why its carry from here is not the bag's: the wind
   const double in_trees = std::numeric_limits<double>::quiet_NaN();
   CHECK(why_from_here(200.0, false, 190.0, in_trees, yards) == ": wind, lie and slope -11 yd");
   CHECK(why_from_here(200.0, true, 190.0, in_trees, yards).empty());
+  // From the tee or the fairway only the landing's height moves the carry: said so.
+  CHECK(why_from_here(200.0, false, 190.0, 190.0, yards, ground_share_words("tee", 5.0)) == ": uphill -11 yd");
+  CHECK(why_from_here(200.0, false, 210.0, 210.0, yards, ground_share_words("fairway", -4.0)) == ": downhill +11 yd");
+  CHECK(std::string(ground_share_words("fairway", 0.3)) == "lie and slope");  // no rise to name
+  CHECK(std::string(ground_share_words("rough", 5.0)) == "lie and slope");    // the lie's share too
+}
+
+TEST_CASE("a part swing's carry and run read in one unit, the longer one's", "[ui][golf]") {
+  const GolfUnits yards{true}, metres{false};
+  // 13 m of carry and 21 m to rest: "carries 14 yd, stops 23 yd", not "carries 43 ft, stops 23 yd".
+  CHECK(yards.course(13.0, 21.0) == "14 yd");
+  CHECK(yards.course(21.0, 21.0) == "23 yd");
+  CHECK(yards.course(13.0, 15.0) == "43 ft");
+  CHECK(metres.course(13.0, 21.0) == "13 m");
 }

@@ -452,7 +452,7 @@ TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power fo
   GolfEvent e;
   e.stroke = *short_one;
   setup.resume = {e};
-  const GolfPlay pitch(test::assets(), course, setup);
+  GolfPlay pitch(test::assets(), course, setup);
   REQUIRE(pitch.caddie_plan());
   INFO(pitch.caddie_plan()->club << " at " << pitch.caddie_plan()->meter.power << " from " << pitch.round().to_pin() << " m");
   CHECK(pitch.caddie_plan()->club == pitch.club());
@@ -467,6 +467,13 @@ TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power fo
   CHECK(pitch.carry_here(pitch.club()) > pitch.carry_here(pitch.club(), power) + 5.0);
   CHECK(std::abs(pitch.stops_here(pitch.club(), power) - pitch.round().to_pin()) <
         std::abs(pitch.stops_here(pitch.club()) - pitch.round().to_pin()));
+  // Its meter climbs at the part swing's tempo, the mark at least 0.6 s into the swing
+  // (MeterClock::part_swing_tempo), not at the club's full-swing pace.
+  const double length = test::assets().equipment().club(pitch.club()).length;
+  pitch.update({at(IntentKind::Swing, 1.0)}, 1.0);
+  REQUIRE(pitch.meter());
+  CHECK(pitch.meter()->position(1.3) == Approx(0.3 / MeterClock::part_swing_tempo(length, power)).margin(1e-12));
+  CHECK(pitch.meter()->position(1.0 + MeterClock::kLeastToCup) <= power + 1e-12);
 }
 
 TEST_CASE("taps that run on past the calibration's last beat are taps, not a swing", "[modes][golf]") {
@@ -791,6 +798,28 @@ TEST_CASE("match play: H asks before it gives up the hole, another key answers n
   play.update({at(IntentKind::Concede, 2.5)}, 2.5);
   CHECK(play.group().hole_index() == 1);
   CHECK(play.group().round(0).card().front().conceded);
+}
+
+TEST_CASE("match play: a hole given up before a ball is struck on it is the hole the header shows", "[modes][golf][formats]") {
+  // Two friends at one keyboard: each hole given up at once, hole 1 and then hole 2 (the
+  // header showed hole 1 under "Bob concedes hole 2").
+  GolfSetup s;
+  s.players = {{"You", "tour", true, 0, {}}, {"Bob", "tour", true, 0, {}}};
+  s.options.format = GolfFormat::Match;
+  s.flyover = false;
+  GolfPlay play(test::assets(), first_hole(3), s);
+  REQUIRE(play.human_turn());
+  play.update({at(IntentKind::Concede, 1.0), at(IntentKind::Concede, 1.5)}, 1.5);
+  REQUIRE(play.group().hole_index() == 1);
+  CHECK(play.hole_shown() == 0);
+  play.update({at(IntentKind::Continue, 6.0)}, 6.0);
+  REQUIRE(play.stage() == GolfPlay::Stage::Aiming);
+  REQUIRE(play.human_turn());
+  CHECK(play.hole_shown() == 1);
+  play.update({at(IntentKind::Concede, 6.5), at(IntentKind::Concede, 7.0)}, 7.0);
+  REQUIRE(play.group().hole_index() == 2);
+  CHECK(play.stage() == GolfPlay::Stage::HoleOver);
+  CHECK(play.hole_shown() == 1);
 }
 
 

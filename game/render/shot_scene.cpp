@@ -601,6 +601,9 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     // and a number behind its cloth reads as another ("1$0"). The scene's own cloth flies
     // with the wind, either side of the pole (and edge-on down a tail- or headwind, where a
     // number beside the pole hides all of it): the pole and a cloth's length both sides.
+    // Right of the cloth the game writes how far the pin is ("505 yd", ImGui's 13 px font:
+    // ~7 px a glyph), and the number is kept off that too.
+    constexpr double kPinLabelPx = 56.0;
     double flag_reach_px = 0.0;  // from the pole to the box's edge
     if (on_hole) {
       const auto base = camera.project(*m.flag_position, width, height);
@@ -608,7 +611,8 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       if (base) {
         const double tall = std::max(40.0, top ? base->y() - top->y() : 0.0);
         flag_reach_px = 0.3 * tall + 4.0;
-        taken.push_back(Eigen::Vector4d(base->x() - flag_reach_px, base->y() - tall - 4.0, base->x() + flag_reach_px, base->y()));
+        taken.push_back(
+            Eigen::Vector4d(base->x() - flag_reach_px, base->y() - tall - 4.0, base->x() + flag_reach_px + kPinLabelPx, base->y()));
       }
     }
     std::vector<std::pair<int, Vec3>> written;  // each stripe's number and where it sits

@@ -90,14 +90,24 @@ bool fair_direction(const Vec3& p) { return p.x() > 0.0 && std::abs(spray(p)) <=
 // Fair or foul (MLB Rule definitions): beyond the bases, where it first lands; before them,
 // where it passes the bases' distance, is first touched by a fielder (`touched`: when and
 // where, if one reaches it on the ground) or comes to rest.
-bool is_fair(const ShotTrajectory& t, const std::optional<TrajectorySample>& touched = std::nullopt) {
+// The call and where and when the umpire can make it.
+struct FairCall {
+  bool fair = false;
+  double t = 0.0;  ///< s after contact
+  Vec3 at = Vec3::Zero();
+};
+FairCall fair_call(const ShotTrajectory& t, const std::optional<TrajectorySample>& touched = std::nullopt) {
   const Vec3& land = t.summary.landing_position;
-  if (std::hypot(land.x(), land.z()) > kBaseLine) return fair_direction(land);
+  if (std::hypot(land.x(), land.z()) > kBaseLine) return {fair_direction(land), t.summary.hang_time_s, land};
   for (const TrajectorySample& s : t.samples) {
-    if (touched && s.t >= touched->t) return fair_direction(touched->position);
-    if (std::hypot(s.position.x(), s.position.z()) > kBaseLine) return fair_direction(s.position);
+    if (touched && s.t >= touched->t) return {fair_direction(touched->position), touched->t, touched->position};
+    if (std::hypot(s.position.x(), s.position.z()) > kBaseLine) return {fair_direction(s.position), s.t, s.position};
   }
-  return fair_direction(touched ? touched->position : t.summary.rest_position);
+  if (touched) return {fair_direction(touched->position), touched->t, touched->position};
+  return {fair_direction(t.summary.rest_position), t.summary.total_time_s, t.summary.rest_position};
+}
+bool is_fair(const ShotTrajectory& t, const std::optional<TrajectorySample>& touched = std::nullopt) {
+  return fair_call(t, touched).fair;
 }
 
 // An outfielder chasing a ball down runs a route; an infielder charges it straight.
@@ -319,7 +329,12 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   // Who first gets to it on the ground: the foul line's call before the bases, and the
   // grounder's fielder below.
   const std::optional<GroundTouch> touch = first_ground_touch(t, play.start, defense);
-  play.foul = !is_fair(t, touch ? std::optional<TrajectorySample>(touch->at) : std::nullopt);
+  const FairCall call = fair_call(t, touch ? std::optional<TrajectorySample>(touch->at) : std::nullopt);
+  play.foul = !call.fair;
+  if (play.foul) {
+    play.called_time = call.t;
+    play.called_at = call.at;
+  }
   if (!play.foul && shot.end == ShotEnd::OutOfBounds) {
     // Fair, then over the fence or into the stands on a bounce: two bases (Rule 5.05(a)(6)).
     play.outcome = BattedOutcome::Double;
@@ -394,6 +409,7 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
         // Dropped: a fair ball puts the batter on by the error; a foul one is only a foul.
         play.outcome = play.foul ? BattedOutcome::Foul : BattedOutcome::Error;
         play.caught = false;
+        if (play.foul) play.called_time = best_t, play.called_at = best_at;
       }
       play.description = describe(play, land);
       return play;
@@ -508,24 +524,28 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
 ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
   // A home run or a ground-rule double has no fielder (-1).
   const bool fielded = play.caught || (play.fielder >= 0 && !play.foul);
-  if (!fielded || t.samples.empty() || play.fielded_time >= t.summary.total_time_s) return t;
+  // A foul no one caught is dead where it is called.
+  const bool called_foul = play.foul && !play.caught && play.called_time > 0.0;
+  const double end_t = fielded ? play.fielded_time : play.called_time;
+  const Vec3& end_at = fielded ? play.fielded_at : play.called_at;
+  if (!(fielded || called_foul) || t.samples.empty() || end_t >= t.summary.total_time_s) return t;
   ShotTrajectory out = t;
   out.samples.clear();
   for (const TrajectorySample& s : t.samples) {
-    if (s.t >= play.fielded_time) break;
+    if (s.t >= end_t) break;
     out.samples.push_back(s);
   }
-  // In the glove: the ball stays where he caught it or picked it up.
+  // In the glove: the ball stays where he caught it or picked it up (or where it was called).
   TrajectorySample held;
-  held.t = play.fielded_time;
-  held.position = play.fielded_at;
+  held.t = end_t;
+  held.position = end_at;
   held.phase = Phase::Rest;
   out.samples.push_back(held);
   if (out.samples.size() < 2) out.samples.insert(out.samples.begin(), t.samples.front());
-  out.summary.rest_position = play.fielded_at;
-  out.summary.total_time_s = play.fielded_time;
+  out.summary.rest_position = end_at;
+  out.summary.total_time_s = end_t;
   // Its distance is to where he had it: the label on the scene's rest pin.
-  out.summary.total_m = horizontal(t.samples.front().position, play.fielded_at);
+  out.summary.total_m = horizontal(t.samples.front().position, end_at);
   if (play.caught) {
     // Caught before it came down: the glove is its landing too (no ring where it never fell).
     out.summary.landing_position = play.fielded_at;

@@ -70,6 +70,11 @@ struct FieldingPlay {
   int fielder = -1;              ///< 0..8 (kPositionNames), -1 for none (a home run, a foul in the stands)
   bool caught = false;           ///< caught in the air: an out (fair or foul)
   bool foul = false;
+  /// A foul no one catches: when (s after contact) and where the umpire calls it (where it
+  /// first lands beyond the bases; before them, where it passes them, is touched or stops).
+  /// The ball is dead there (Rule 5.06(c)(5)): its roll on up the line is no play.
+  double called_time = 0.0;
+  Vec3 called_at = Vec3::Zero();
   double catch_probability = 0.0;///< the best fielder's chance on a ball in the air
   bool error = false;
   Vec3 fielded_at = Vec3::Zero();///< where the fielder has the ball
@@ -140,7 +145,8 @@ BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const En
 /// The batted ball's path as the play went: a ball caught in the air ends in the fielder's
 /// glove at the catch, a fair ball he fields on the ground where he picks it up (the physics'
 /// path past him, rolling to the wall or into the seats, was never played); a home run, a
-/// foul no one fields, or a ball at rest before he gets there keeps the physics' whole path.
+/// foul no one catches ends where it is called (FieldingPlay::called_at), and a ball at rest
+/// before he gets there keeps the physics' whole path.
 ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play);
 
 /// A foul tip's path as the play went: into the catcher's mitt where it comes level with him

@@ -242,6 +242,29 @@ TEST_CASE("as_played: a caught fly ends in the glove, a fielded ball where he pi
   CHECK(as_played(long_ball.trajectory, gone).samples.size() == long_ball.trajectory.samples.size());
 }
 
+TEST_CASE("as_played: a foul ground ball is dead where it is called, not after it rolls up the line", "[baseball][fielding]") {
+  // A topped ball outside the third-base line (65 mph, -12 deg, 50 deg off the mound's line):
+  // the physics rolls it on up the foul ground; the umpire calls it where it passes the bag,
+  // or where a fielder touches it, and the play ends there (Rule 5.06(c)(5)).
+  for (const double spray : {-50.0, 50.0, -60.0}) {
+    const ResolvedShot r = resolve(test::launch_spec("baseball", 65.0, -12.0, 1500.0, spray), test::assets());
+    const ShotResult shot = run_shot(r, "test", {true, true});
+    const FieldingPlay p = field_play(shot, *r.aero, r.spec.environment, league_defense(), false, 8.23, nullptr);
+    INFO("spray " << spray << ": rolled " << m_to_ft(shot.trajectory.summary.total_m) << " ft in " << shot.trajectory.summary.total_time_s
+                  << " s; called at " << m_to_ft(std::hypot(p.called_at.x(), p.called_at.z())) << " ft, " << p.called_time << " s");
+    REQUIRE(p.outcome == BattedOutcome::Foul);
+    REQUIRE_FALSE(p.caught);
+    REQUIRE(shot.trajectory.summary.total_m > ft_to_m(150.0));  // it rolls on a long way
+    const ShotTrajectory t = as_played(shot.trajectory, p);
+    CHECK(p.called_time > 0.0);
+    CHECK(t.summary.total_time_s == Approx(p.called_time));
+    CHECK(t.summary.total_time_s < shot.trajectory.summary.total_time_s - 1.0);
+    CHECK((t.samples.back().position - p.called_at).norm() < 1e-12);
+    // Called by the bag (90 ft) or before it, where a corner infielder touches it.
+    CHECK(t.summary.total_m <= ft_to_m(100.0));
+  }
+}
+
 TEST_CASE("a foul tip ends in the catcher's mitt, 4 ft behind the plate, not at the backstop", "[modes][baseball]") {
   // A ball going straight back from the plate at 30 m/s, 1 m up, sampled every millisecond
   // for 0.5 s (15 m: the backstop's distance).

@@ -404,7 +404,7 @@ class CageView final : public ModeView {
       if (!lines.second.empty()) bottom = draw_banner(lines.second.c_str(), centre, bottom + 10.0f, scale);
       hud_bottom_ = std::max(hud_bottom_, static_cast<double>(bottom));
     }
-    if (options_.pitches > 0 && static_cast<int>(c.swings().size()) >= options_.pitches && c.stage() == Stage::Called)
+    if (options_.pitches > 0 && c.pitches_done() >= options_.pitches && c.stage() == Stage::Called)
       ++done_frames_;
   }
 

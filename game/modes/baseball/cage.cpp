@@ -93,6 +93,7 @@ void BattingCage::next_pitch(double t) {
 
 void BattingCage::start_record() {
   swings_.clear();
+  pitches_done_ = 0;
   carries_as_played_.clear();
   last_ = SwingRecord{};
   call_text_.clear();
@@ -184,6 +185,7 @@ void BattingCage::advance(double t) {
     call_text_ = strike ? "Called strike" : "Ball";
     stage_ = Stage::Called;
     taken_at_ = t;
+    ++pitches_done_;
     if (live_)
       count_pitch(hits_batter(pitch_.plate, lefty_, r) ? PitchResult::HitByPitch
                   : strike                              ? PitchResult::CalledStrike
@@ -217,6 +219,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   last_.undercut = s.undercut;
   last_.by_pro = by_pro;
   last_.result = swing_at(assets_, pitch_, s, batter_skill("pro").bat_speed, kBat);
+  ++pitches_done_;
   played_ = last_.result.foul_tip ? into_the_mitt(last_.result.shot.trajectory)
                                    : as_played(last_.result.shot.trajectory, last_.result.play);
   // A foul tip is its own call (into the catcher's mitt: a strike, the third one too).

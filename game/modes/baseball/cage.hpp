@@ -88,6 +88,8 @@ class BattingCage {
   /// The last batted ball's path as the play went (as_played): a catch ends it in the glove.
   const ShotTrajectory& played() const { return played_; }
   const std::vector<SwingRecord>& swings() const { return swings_; }
+  /// Pitches that have been taken or swung at this session (play --pitches counts these).
+  int pitches_done() const { return pitches_done_; }
   /// m each swing's ball went as the play went (as_played's carry: to the glove on a catch),
   /// in swings() order.
   const std::vector<double>& carries_as_played() const { return carries_as_played_; }
@@ -147,6 +149,7 @@ class BattingCage {
   PitchMovement movement_;
   double released_at_ = 0.0, batted_at_ = 0.0, swung_at_ = -1e9;
   double taken_at_ = -1e9;  ///< when the last pitch went by untouched
+  int pitches_done_ = 0;
   double bat_height_ = 0.76;
   bool power_ = true, lefty_ = false;
   SwingRecord last_;

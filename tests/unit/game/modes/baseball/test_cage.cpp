@@ -68,6 +68,7 @@ TEST_CASE("a pitch left alone is called; the pro swings on request; restart clea
   CHECK(cage.stage() == BattingCage::Stage::Called);
   CHECK((cage.call_text() == "Ball" || cage.call_text() == "Called strike"));
   CHECK(cage.swings().empty());
+  CHECK(cage.pitches_done() == 1);  // a pitch taken is a pitch of the session (play --pitches)
   // Space: the next pitch; B during the wind-up asks the pro to swing at it: he does when it
   // reaches him (a second B changes nothing).
   cage.update({at(IntentKind::Swing, 5.0), at(IntentKind::BotSwings, 5.2)}, 5.3);
@@ -77,6 +78,7 @@ TEST_CASE("a pitch left alone is called; the pro swings on request; restart clea
   CHECK(cage.swings().empty());
   cage.update({}, arrive + 0.2);
   REQUIRE(cage.swings().size() == 1);
+  CHECK(cage.pitches_done() == 2);
   CHECK(cage.swings().back().result.contact);
   CHECK(std::abs(cage.swings().back().timing_ms) < 30.0);
   // While the batted ball flies the call is its launch; its outcome when it comes down.
@@ -90,6 +92,7 @@ TEST_CASE("a pitch left alone is called; the pro swings on request; restart clea
   CHECK_THAT(cage.call_text(), !Catch::Matchers::Contains("mph off the bat"));
   cage.update({at(IntentKind::Restart, 36.0)}, 36.0);
   CHECK(cage.swings().empty());
+  CHECK(cage.pitches_done() == 0);
   CHECK(cage.stage() == BattingCage::Stage::Ready);
 }
 
@@ -286,7 +289,7 @@ TEST_CASE("the cage tells each pitch's movement as Statcast reads it, the seam w
   CHECK(seen.size() >= 4);
 }
 
-TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where it came down, a foul grounder's where it stopped", "[modes][baseball]") {
+TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where it came down, a foul grounder's where it was called", "[modes][baseball]") {
   bool grounder = false, fly = false, foul_grounder = false;
   for (std::uint64_t seed = 1; seed <= 60 && !(grounder && fly && foul_grounder); ++seed) {
     BattingCage cage(test::assets(), seed);
@@ -309,7 +312,8 @@ TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where i
     const ShotTrajectory played = as_played(r.shot.trajectory, r.play);
     char want[48];
     if (r.contact && r.outcome == BattedOutcome::Foul && on_ground && !r.play.caught) {
-      // A foul grounder: where it was touched or stopped (the field's label), not its first hop.
+      // A foul grounder: where it was called, passing the bag, touched or stopped (the field's
+      // label), not its first hop nor its roll on up the line.
       foul_grounder = true;
       std::snprintf(want, sizeof want, ", %.0f ft", m_to_ft(played.summary.total_m));
       INFO(cage.call_text());

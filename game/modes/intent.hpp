@@ -37,6 +37,7 @@ enum class IntentKind : unsigned char {
   Choose,       ///< Lab: set choice `param` to `text` (a scenario, club, bat, model)
   Save,         ///< Lab: write the current shot as scenario TOML to `text`
   NewRound,     ///< golf: from the final card, a new round (N; Enter, pressed to skip flights, keeps the card)
+  TogglePace,   ///< batting: the next pitches' pace, standard -> easy -> pro -> standard (between pitches)
 };
 
 struct Intent {

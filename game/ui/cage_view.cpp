@@ -31,7 +31,8 @@ Intents cage_intents(const std::vector<KeyPress>& keys) {
                                   {GLFW_KEY_L, IntentKind::ToggleSide},
                                   {GLFW_KEY_B, IntentKind::BotSwings},
                                   {GLFW_KEY_A, IntentKind::ToggleLive},
-                                  {GLFW_KEY_T, IntentKind::ToggleTiming}});
+                                  {GLFW_KEY_T, IntentKind::ToggleTiming},
+                                  {GLFW_KEY_E, IntentKind::TogglePace}});
 }
 
 namespace {
@@ -137,6 +138,10 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     if (c.time_scale() >= 1.0) ImGui::TextUnformatted("Pitch: P or Space calls for one, at real speed");
     else ImGui::Text("Pitch: P or Space calls for one, at %.0f %% of real speed", 100.0 * c.time_scale());
     if (!c.timing_only() && c.swings().empty()) ImGui::TextUnformatted("New to it? T: just time the swing, the bat finds the height");
+    // Swings and no contact at a pace quicker than the easiest: where a slower pitch is.
+    const BattingCage::Figures so_far = c.figures();
+    if (so_far.swings >= 3 && so_far.contact == 0 && c.time_scale() > BattingCage::kEasyPitchTimeScale)
+      ImGui::TextUnformatted("Missing them? E: slower pitches");
   } else if (c.stage() == Stage::Pitching || (!c.batted() && !pitch_by)) {
     // (A pitch swung through early is still on its way.) In practice the pitch is called as
     // a coach feeding a machine would; in a game the pitcher does not tell the hitter what is
@@ -162,7 +167,7 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
   } else {
     if (c.timing_only()) ImGui::TextDisabled("P: pitch  Space: swing  T: set the bat's height yourself");
     else ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height  T: timing only");
-    ImGui::TextDisabled("C: power/contact  L: batter's side");
+    ImGui::TextDisabled("C: power/contact  L: batter's side  E: pitch pace");
     ImGui::TextDisabled("B: the pro swings  A: live game / batting practice");
     ImGui::TextDisabled("H: hide this panel  Esc: pause  Tab: next mode  K/F1: fewer");
   }

@@ -313,6 +313,19 @@ BattingCage::Figures BattingCage::figures() const {
   return f;
 }
 
+std::string BattingCage::pace_name(double time_scale) {
+  // A hitter's own window at game speed is about +-14 ms (the class comment): in the player's
+  // time it grows as 1 / scale.
+  constexpr double kWindowMs = 14.0;
+  const char* name = time_scale == kEasyPitchTimeScale ? "easy" : time_scale == kProPitchTimeScale ? "pro" : "standard";
+  char text[96];
+  if (time_scale >= 1.0) std::snprintf(text, sizeof text, "%s, real speed (hit within about %.0f ms)", name, kWindowMs);
+  else
+    std::snprintf(text, sizeof text, "%s, %.0f %% of real speed (hit within about %.0f ms)", name, 100.0 * time_scale,
+                  kWindowMs / time_scale);
+  return text;
+}
+
 void BattingCage::apply(const Intent& in) {
   const double t = in.time;
   switch (in.kind) {
@@ -324,6 +337,16 @@ void BattingCage::apply(const Intent& in) {
     case IntentKind::TogglePower: power_ = !power_; break;
     case IntentKind::ToggleSide: lefty_ = !lefty_; break;
     case IntentKind::ToggleTiming: timing_only_ = !timing_only_; break;
+    case IntentKind::TogglePace: {
+      // Between pitches (a pitch on its way or a ball still in the air keeps its clock): the
+      // next pace, and what it gives the swing's window in the player's own time.
+      if (stage_ == Stage::Pitching || (stage_ == Stage::Batted && !told_)) break;
+      time_scale_ = time_scale_ == kPitchTimeScale ? kEasyPitchTimeScale
+                    : time_scale_ == kEasyPitchTimeScale ? kProPitchTimeScale
+                                                         : kPitchTimeScale;
+      call_text_ = std::string("Pitch pace: ") + pace_name(time_scale_);
+      break;
+    }
     case IntentKind::ToggleLive:
       // Between pitches: batting practice, or a live game from its first inning at 0-0.
       if (stage_ == Stage::Pitching) break;

@@ -69,8 +69,10 @@ class BattingCage {
   double ball_radius() const;
   /// Pitch time (s since release, slowed by time_scale(); negative in the wind-up) at mode time `t`.
   double pitch_clock(double t) const { return (t - released_at_) * time_scale_; }
-  /// The pitch's pace against real time (the constructor's).
+  /// The pitch's pace against real time (the constructor's; E steps it between pitches).
   double time_scale() const { return time_scale_; }
+  /// A pace in the player's words: "easy, 30 % of real speed", "standard, ...", "pro, real speed".
+  static std::string pace_name(double time_scale);
   /// The batted ball's flight runs from this mode time.
   double batted_at() const { return batted_at_; }
   /// The last swing met the ball and its flight is on show (in the air, or called after it).

@@ -254,11 +254,15 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     const SwingRecord& s = c.swings()[i];
     if (!s.result.contact) continue;
     const FlightSummary& f = s.result.shot.trajectory.summary;
-    // Where it came down, or for a ball on the ground where a fielder picked it up (the
-    // physics' roll past him to the wall was never played).
+    // Where it came down, or for a ball on the ground where a fielder picked it up or caught
+    // it, or where a foul was called (the physics' roll past him, or up the line, was never
+    // played).
     const FieldingPlay& play = s.result.play;
     const bool in_air = f.carry_m > 40.0 || s.result.outcome == BattedOutcome::HomeRun;
-    const Vec3 p = in_air ? f.landing_position : play.fielder >= 0 && !play.foul ? play.fielded_at : f.rest_position;
+    const Vec3 p = in_air                                        ? f.landing_position
+                   : play.caught || (play.fielder >= 0 && !play.foul) ? play.fielded_at
+                   : play.foul && play.called_time > 0.0            ? play.called_at
+                                                                    : f.rest_position;
     const auto key = std::find_if(kSprayKey.begin(), kSprayKey.end(), [&](const SprayKey& k) { return k.outcome == s.result.outcome; });
     dl->AddCircleFilled(px(p), 4.0f, key != kSprayKey.end() ? key->colour : kSprayOut);
   }

@@ -198,11 +198,12 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     const bool met = last.result.contact;
     if (met)
       // Rounded before printing: no "-0 deg" for an attack a hair below level.
-      ImGui::Text("%s %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", whose, mps_to_mph(t.bat_speed_mps),
+      // Wrapped: "Pro's last swing: bat ... 7.3 ft swing" runs past the panel's width.
+      ImGui::TextWrapped("%s %.1f mph, attack %.0f deg, %s %.0f deg, %.1f ft swing", whose, mps_to_mph(t.bat_speed_mps),
                   std::round(t.attack_angle_deg) + 0.0, t.attack_direction_deg >= 0.0 ? "oppo" : "pull",
                   std::abs(t.attack_direction_deg), m_to_ft(t.swing_length_m));
     else
-      ImGui::Text("%s %.1f mph, %.1f ft swing (a miss)", whose, mps_to_mph(t.bat_speed_mps), m_to_ft(t.swing_length_m));
+      ImGui::TextWrapped("%s %.1f mph, %.1f ft swing (a miss)", whose, mps_to_mph(t.bat_speed_mps), m_to_ft(t.swing_length_m));
     // Squared up is Statcast's 80 % line: the last swing's share, rounded down so that 79.7 %
     // does not read as 80 % beside a count that (rightly) leaves it out.
     if (met)

@@ -66,7 +66,8 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
 void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree = false);
 void draw_golf_card(const GolfPlay& play, int w, bool final);
 /// The cup and flagstick, never smaller than a few pixels however far. `scene_has_flag`: the
-/// 3-D scene draws this pin's own flag (a course's), so near enough only the cup is added.
+/// 3-D scene draws this pin's own flag (a course's), so near enough only the cup (and the
+/// label) is added.
 /// `label`, when not empty, is written beside the flag's cloth (a range's yardage, a far
 /// pin's distance), or where that would cover one of `clear_of` (the image's own labels,
 /// Scene::label_boxes: a shot's carry reads first; a panel over the scene) beside the cup,

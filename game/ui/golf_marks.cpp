@@ -74,16 +74,18 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool sc
   // Near enough, the scene's own flagstick and wind-blown flag read on their own: a drawn
   // flag over them would show two flags, one of them pointing a way the wind does not blow.
   constexpr float kSceneFlagReadsPx = 24.0f;
+  const float fh = 0.3f * (b.y - t.y);
   if (scene_has_flag && top && b.y - px(*top).y >= kSceneFlagReadsPx) {
     // Its cloth does; its 25 mm pole is under 2 px wide until ~15 m away at 800 lines and
     // drops out of the raster, leaving the cloth afloat over the cup: drawn 2 px wide then.
     constexpr float kPoleDiameterOverHeight = static_cast<float>(0.025 / kFlagstickHeight);  // assets/meshes/flag.obj
     if ((b.y - px(*top).y) * kPoleDiameterOverHeight < 2.0f) dl->AddLine(b, px(*top), IM_COL32(240, 240, 240, 255), 2.0f);
-    return;
+    // Its label still says where the pin is: a cloth blown edge-on down the line is a pole
+    // alone at 100 yd.
+  } else {
+    dl->AddLine(b, t, IM_COL32(240, 240, 240, 255), 2.0f);
+    dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));
   }
-  dl->AddLine(b, t, IM_COL32(240, 240, 240, 255), 2.0f);
-  const float fh = 0.3f * (b.y - t.y);
-  dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));
   if (!label.empty()) {
     const ImVec2 size = ImGui::CalcTextSize(label.c_str());
     const auto clear = [&](const ImVec2& at) {

@@ -47,7 +47,9 @@ ImpactorPlacement swing_pose(const ImpactorPlacement& impact, const Vec3& contac
   } else {
     // Slowing evenly from omega to rest at the finish F, reached at t_f = 2F / omega:
     // theta(t) = omega t - omega^2 t^2 / (4F), theta'(0) = omega, theta(t_f) = F.
-    const double F = std::max(shape.finish, 0.0);
+    double F = std::max(shape.finish, 0.0);
+    if (shape.follow_per_backswing > 0.0)  // the backswing's arc: omega T / 2 (above)
+      F = std::min(F, shape.follow_per_backswing * omega * shape.downswing / 2.0);
     const double tf = 2.0 * F / omega, u = std::min(t, tf);
     theta = F > 0.0 ? omega * u - omega * omega * u * u / (4.0 * F) : 0.0;
   }

@@ -20,12 +20,18 @@ namespace sweetspot {
 /// After impact the impactor turns on round the same arc, slowing evenly to rest at the
 /// finish: `finish` rad past impact (ESTIMATE: ~170°, a golfer's club ends over his lead
 /// shoulder and a batter's bat wraps round behind him).
+/// A club's part swing finishes short: its follow-through runs `follow_per_backswing` times
+/// its backswing's arc (ESTIMATE 1.5: chipping instruction's "a follow-through as long as the
+/// backswing, or a little longer"), up to `finish` (0: always `finish`). A full swing's arc,
+/// ω·downswing/2, passes 2 rad from ~24 m/s (a 54 mph wedge): every full swing finishes
+/// over the shoulder, a 14 % chip at ~6 m/s about 0.75 rad past the ball.
 struct SwingShape {
   double radius = 1.5;     ///< m, contact to pivot
   double downswing = 0.25; ///< s, from rest at the top to impact
   double finish = 3.0;     ///< rad turned after impact, to rest
+  double follow_per_backswing = 0.0;
 };
-inline constexpr SwingShape kClubSwing{1.5, 0.25, 3.0};
+inline constexpr SwingShape kClubSwing{1.5, 0.25, 3.0, 1.5};
 inline constexpr SwingShape kBatSwing{1.2, 0.15, 3.0};
 /// A putting stroke: a pendulum from the shoulders (arms and a 34 in putter, ~1.1 m), its
 /// forward stroke ~0.3 s (tour putting tempo: a ~0.6 s backstroke, ~2:1), and a

@@ -79,3 +79,26 @@ TEST_CASE("after impact the club follows through on the same arc and comes to re
   const Vec3 m = (mid.position - pivot).normalized();
   CHECK(std::acos(std::clamp(a.dot(m), -1.0, 1.0)) > 0.7 * kClubSwing.finish);
 }
+
+TEST_CASE("a chip's follow-through is about as long as its backswing, a full swing's goes over the shoulder", "[render][unit]") {
+  ImpactorPlacement chip = driver_impact();
+  const Vec3 contact = Vec3(0, 0.0214, 0) - 0.0214 * chip.velocity.normalized();
+  const Vec3 shaft = chip.orientation * head_frame_shaft_axis();
+  const auto turned = [&](const ImpactorPlacement& impact, double t) {
+    const Vec3 vhat = impact.velocity.normalized();
+    const Vec3 pivot = contact + kClubSwing.radius * (shaft - shaft.dot(vhat) * vhat).normalized();
+    const Vec3 a = (impact.position - pivot).normalized(), b = (swing_pose(impact, contact, shaft, t, kClubSwing).position - pivot).normalized();
+    return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+  };
+  // A 14 % chip, ~6 m/s: wound back ~0.5 rad (the top of its downswing), through ~0.75 rad.
+  chip.velocity = chip.velocity.normalized() * 6.0;
+  const double back = turned(chip, -kClubSwing.downswing), through = turned(chip, 10.0);
+  CHECK(back == Approx(6.0 / kClubSwing.radius * kClubSwing.downswing / 2.0).epsilon(1e-6));
+  CHECK(through == Approx(kClubSwing.follow_per_backswing * back).epsilon(1e-6));
+  CHECK(through < 1.0);
+  // Every full swing, from a 54 mph wedge up, finishes at the full finish.
+  ImpactorPlacement wedge = driver_impact();
+  wedge.velocity = wedge.velocity.normalized() * 24.5;
+  CHECK(turned(wedge, 10.0) == Approx(kClubSwing.finish).margin(1e-6));
+  CHECK(turned(driver_impact(), 10.0) == Approx(kClubSwing.finish).margin(1e-6));
+}

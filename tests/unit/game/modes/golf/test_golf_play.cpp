@@ -776,12 +776,19 @@ TEST_CASE("a pitch's tree warning is the pitch's: a full wedge into the trees sa
   CHECK_FALSE(play.tree_in_the_way(play.club()));
 }
 
-TEST_CASE("match play: H asks before it gives up the hole, another key answers no", "[modes][golf][formats]") {
+namespace {
+/// A tour match between you and `other` (a human at the same keys, or a bot), no flyover.
+GolfSetup tour_match(const std::string& other, bool human) {
   GolfSetup s;
-  s.players = {{"You", "tour", true, 0, {}}, {"tour bot", "tour", false, 0, {}}};
+  s.players = {{"You", "tour", true, 0, {}}, {other, "tour", human, 0, {}}};
   s.options.format = GolfFormat::Match;
   s.flyover = false;
-  GolfPlay play(test::assets(), first_hole(2), s);
+  return s;
+}
+}  // namespace
+
+TEST_CASE("match play: H asks before it gives up the hole, another key answers no", "[modes][golf][formats]") {
+  GolfPlay play(test::assets(), first_hole(2), tour_match("tour bot", false));
   REQUIRE(play.stage() == GolfPlay::Stage::Aiming);
   REQUIRE(play.human_turn());
   // One H asks; nothing is given up.
@@ -803,11 +810,7 @@ TEST_CASE("match play: H asks before it gives up the hole, another key answers n
 TEST_CASE("match play: a hole given up before a ball is struck on it is the hole the header shows", "[modes][golf][formats]") {
   // Two friends at one keyboard: each hole given up at once, hole 1 and then hole 2 (the
   // header showed hole 1 under "Bob concedes hole 2").
-  GolfSetup s;
-  s.players = {{"You", "tour", true, 0, {}}, {"Bob", "tour", true, 0, {}}};
-  s.options.format = GolfFormat::Match;
-  s.flyover = false;
-  GolfPlay play(test::assets(), first_hole(3), s);
+  GolfPlay play(test::assets(), first_hole(3), tour_match("Bob", true));
   REQUIRE(play.human_turn());
   play.update({at(IntentKind::Concede, 1.0), at(IntentKind::Concede, 1.5)}, 1.5);
   REQUIRE(play.group().hole_index() == 1);

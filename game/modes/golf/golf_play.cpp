@@ -532,6 +532,12 @@ void GolfPlay::apply(const Intent& in) {
           } else if (group_.options().format == GolfFormat::Match) {
             concede_asked_ = false;
             concede_hole(t);
+          } else {
+            // Not a silent key: what H is, and why it does nothing here (the Rules of Golf
+            // allow a concession only in match play, Rule 3.2b).
+            const GolfFormat f = group_.options().format;
+            say("H concedes a hole in match play; in " + std::string(f == GolfFormat::Stroke ? "stroke play" : to_string(f)) +
+                " every hole is played out");
           }
           break;
         case IntentKind::CaddiePlays: {

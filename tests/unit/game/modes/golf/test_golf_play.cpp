@@ -807,6 +807,15 @@ TEST_CASE("match play: H asks before it gives up the hole, another key answers n
   CHECK(play.group().round(0).card().front().conceded);
 }
 
+TEST_CASE("in stroke play H says what it is for and gives up nothing", "[modes][golf][formats]") {
+  GolfPlay play(test::assets(), first_hole(2), solo("tour"));
+  REQUIRE(play.human_turn());
+  play.update({at(IntentKind::Concede, 1.0), at(IntentKind::Concede, 1.5)}, 1.5);
+  CHECK(play.group().hole_index() == 0);
+  CHECK_FALSE(play.round().card().front().conceded);
+  CHECK(play.message() == "H concedes a hole in match play; in stroke play every hole is played out");
+}
+
 TEST_CASE("match play: a hole given up before a ball is struck on it is the hole the header shows", "[modes][golf][formats]") {
   // Two friends at one keyboard: each hole given up at once, hole 1 and then hole 2 (the
   // header showed hole 1 under "Bob concedes hole 2").

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdarg>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -39,7 +40,20 @@ namespace {
 
 using Stage = BattingCage::Stage;
 
-constexpr float kStatsPanelRight = 450.0f;  // px: the HUD panel's right edge
+// px: the HUD panel's right edge, 450 px, or short of the pitcher in the image's middle in a
+// narrow window (at 800 px the panel hid his release).
+float stats_panel_right(int w) { return std::min(450.0f, 0.42f * static_cast<float>(w)); }
+
+// ImGui::TextDisabled that wraps at the panel's edge, as every line of the narrower panel must.
+void disabled_wrapped(const char* fmt, ...) IM_FMTARGS(1);
+void disabled_wrapped(const char* fmt, ...) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  va_list args;
+  va_start(args, fmt);
+  ImGui::TextWrappedV(fmt, args);
+  va_end(args);
+  ImGui::PopStyleColor();
+}
 
 // From behind the plate a little to the side away from the batter, so he stands at the
 // left (right for a left-hander) of the view and the pitcher's release is clear of him.
@@ -102,7 +116,7 @@ constexpr ImU32 kSprayOut = IM_COL32(150, 150, 150, 255);
 // `pitch_by`: the pitch has reached the plate (its shape is then told).
 float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_by) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(kStatsPanelRight - 10.0f, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(stats_panel_right(w) - 10.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   if (c.live()) {
     const BattingCage::AtBats& a = c.at_bats();
@@ -110,11 +124,11 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
       // The scoreboard: the inning, outs, runners and count; the line score; the last play's
       // part for the runners (or the inning's line once the side is retired).
       if (b->side_retired)
-        ImGui::Text("End of inning %d: inning %d next, bases empty", b->inning, b->inning + 1);
+        ImGui::TextWrapped("End of inning %d: inning %d next, bases empty", b->inning, b->inning + 1);
       else
-        ImGui::Text("Inning %d, %d %s, %s, count %d-%d", b->inning, b->outs, b->outs == 1 ? "out" : "outs",
+        ImGui::TextWrapped("Inning %d, %d %s, %s, count %d-%d", b->inning, b->outs, b->outs == 1 ? "out" : "outs",
                     runners_text(b->bases).c_str(), c.count().balls, c.count().strikes);
-      ImGui::Text("Runs %d, hits %d, left on base %d", b->runs(), b->hits, b->left_on_base);
+      ImGui::TextWrapped("Runs %d, hits %d, left on base %d", b->runs(), b->hits, b->left_on_base);
       if (b->runs_by_inning.size() > 1) {
         // The line score, an inning a column as a scoreboard shows it.
         std::string line;
@@ -122,32 +136,32 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
           if (!line.empty()) line += " | ";
           line += std::to_string(r);
         }
-        ImGui::Text("Line score: %s", line.c_str());
+        ImGui::TextWrapped("Line score: %s", line.c_str());
       }
       if (!b->note.empty()) ImGui::TextWrapped("%s%s", b->side_retired ? "" : "Last play: ", b->note.c_str());
     }
     const int in_play = a.outs - a.strikeouts;
-    ImGui::Text("PA %d: %d H (%d HR), %d K, %d BB, %d HBP, %d %s in play", a.pa, a.hits, a.home_runs, a.strikeouts, a.walks,
+    ImGui::TextWrapped("PA %d: %d H (%d HR), %d K, %d BB, %d HBP, %d %s in play", a.pa, a.hits, a.home_runs, a.strikeouts, a.walks,
                 a.hit_by_pitch, in_play, in_play == 1 ? "out" : "outs");
   } else {
-    ImGui::Text("Batting practice");
+    ImGui::TextWrapped("Batting practice");
   }
   if (c.stage() == Stage::Ready) {
     // The pace it comes at, so a player knows what --difficulty changed (easy 30 %, standard
     // 50 %, pro real time: BattingCage::time_scale()).
-    if (c.time_scale() >= 1.0) ImGui::TextUnformatted("Pitch: P or Space calls for one, at real speed");
-    else ImGui::Text("Pitch: P or Space calls for one, at %.0f %% of real speed", 100.0 * c.time_scale());
-    if (!c.timing_only() && c.swings().empty()) ImGui::TextUnformatted("New to it? T: just time the swing, the bat finds the height");
+    if (c.time_scale() >= 1.0) ImGui::TextWrapped("%s", "Pitch: P or Space calls for one, at real speed");
+    else ImGui::TextWrapped("Pitch: P or Space calls for one, at %.0f %% of real speed", 100.0 * c.time_scale());
+    if (!c.timing_only() && c.swings().empty()) ImGui::TextWrapped("%s", "New to it? T: just time the swing, the bat finds the height");
     // Swings and no contact at a pace quicker than the easiest: where a slower pitch is.
     const BattingCage::Figures so_far = c.figures();
     if (so_far.swings >= 3 && so_far.contact == 0 && c.time_scale() > BattingCage::kEasyPitchTimeScale)
-      ImGui::TextUnformatted("Missing them? E: slower pitches");
+      ImGui::TextWrapped("%s", "Missing them? E: slower pitches");
   } else if (c.stage() == Stage::Pitching || (!c.batted() && !pitch_by)) {
     // (A pitch swung through early is still on its way.) In practice the pitch is called as
     // a coach feeding a machine would; in a game the pitcher does not tell the hitter what is
     // coming: named once it is by.
-    if (c.live()) ImGui::TextUnformatted("Pitch: on its way (named once it is by)");
-    else ImGui::Text("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
+    if (c.live()) ImGui::TextWrapped("%s", "Pitch: on its way (named once it is by)");
+    else ImGui::TextWrapped("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
   } else {
     // Once it has gone by, its shape as Statcast tells it: the run toward the pitcher's arm or
     // glove side and the rise or drop against a spinless ball (induced vertical break).
@@ -159,25 +173,25 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
                        mps_to_mph(c.call().type.speed), 12.0 * std::abs(m_to_ft(m.horizontal_break)), arm_side ? "arm side" : "glove side",
                        12.0 * std::abs(m_to_ft(m.induced_vertical_break)), m.induced_vertical_break >= 0.0 ? "higher" : "lower");
   }
-  ImGui::Text("Swing: %s, %s-handed, %s", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right",
+  ImGui::TextWrapped("Swing: %s, %s-handed, %s", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right",
               c.timing_only() ? "timing only" : "bat height by hand");
   if (!all_keys) {
     // After the first few swings the keys a pitch needs, in one line (K: the rest).
-    ImGui::TextDisabled(c.timing_only() ? "P pitch  Space swing  B the pro  K/F1 keys" : "P pitch  Space swing  Up/Down bat  K/F1 keys");
+    disabled_wrapped(c.timing_only() ? "P pitch  Space swing  B the pro  K/F1 keys" : "P pitch  Space swing  Up/Down bat  K/F1 keys");
   } else {
-    if (c.timing_only()) ImGui::TextDisabled("P: pitch  Space: swing  T: set the bat's height yourself");
-    else ImGui::TextDisabled("P: pitch  Space: swing  Up/Down: bat height  T: timing only");
-    ImGui::TextDisabled("C: power/contact  L: batter's side  E: pitch pace");
-    ImGui::TextDisabled("B: the pro swings  A: live game / batting practice");
-    ImGui::TextDisabled("H: hide this panel  Esc: pause  Tab: next mode  K/F1: fewer");
+    if (c.timing_only()) disabled_wrapped("P: pitch  Space: swing  T: set the bat's height yourself");
+    else disabled_wrapped("P: pitch  Space: swing  Up/Down: bat height  T: timing only");
+    disabled_wrapped("C: power/contact  L: batter's side  E: pitch pace");
+    disabled_wrapped("B: the pro swings  A: live game / batting practice");
+    disabled_wrapped("H: hide this panel  Esc: pause  Tab: next mode  K/F1: fewer");
   }
   ImGui::Separator();
   // The swing and the contact count as soon as they happen (the call above says "off the
   // bat"); fair or foul and how far only once the play is called.
   const BattingCage::Figures fig = c.figures();
   const int n = fig.swings, pro = fig.by_pro, fair = fig.fair;
-  ImGui::Text("Your swings %d, contact %d, fair %d, home runs %d", n, fig.contact, fair, fig.home_runs);
-  if (pro > 0) ImGui::TextDisabled("(and %d by the pro, B: not in your figures)", pro);
+  ImGui::TextWrapped("Your swings %d, contact %d, fair %d, home runs %d", n, fig.contact, fair, fig.home_runs);
+  if (pro > 0) disabled_wrapped("(and %d by the pro, B: not in your figures)", pro);
   if (!c.swings().empty()) {
     // Statcast's bat tracking: the last swing (the bat's own figures, known at contact), and
     // the swings' squared-up and blast counts (the same swings as the line above).
@@ -208,15 +222,15 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     // does not read as 80 % beside a count that (rightly) leaves it out.
     if (met)
       // Held at 100 %: the best exit speed is the most a swing of that speed can give.
-      ImGui::Text("%s: %.0f %% of its best exit speed", last.by_pro ? (taken ? "The pro's last swing" : "The pro's swing") : "Last swing",
+      ImGui::TextWrapped("%s: %.0f %% of its best exit speed", last.by_pro ? (taken ? "The pro's last swing" : "The pro's swing") : "Last swing",
                   std::min(100.0, std::floor(100.0 * t.squared_up)));
-    if (n > 0) ImGui::Text("Squared up (80 %%+) %d of %d swings, blasts %d", squared, n, blasts);
+    if (n > 0) ImGui::TextWrapped("Squared up (80 %%+) %d of %d swings, blasts %d", squared, n, blasts);
   }
   if (fair > 0) {
-    ImGui::Text("Fair balls: exit velocity %.1f mph, launch %.1f deg", mps_to_mph(fig.mean_exit_speed), rad_to_deg(fig.mean_launch));
+    ImGui::TextWrapped("Fair balls: exit velocity %.1f mph, launch %.1f deg", mps_to_mph(fig.mean_exit_speed), rad_to_deg(fig.mean_launch));
     // The carry (Statcast's hit distance: to the first bounce or the glove), said as such:
     // a grounder session's "longest 4 ft" is its longest carry.
-    ImGui::Text("Hard-hit %.0f %%, longest carry %.0f ft", 100.0 * fig.hard_hit / fair, m_to_ft(fig.longest));
+    ImGui::TextWrapped("Hard-hit %.0f %%, longest carry %.0f ft", 100.0 * fig.hard_hit / fair, m_to_ft(fig.longest));
   }
   const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
   ImGui::End();
@@ -395,7 +409,7 @@ class CageView final : public ModeView {
       // outfield wall's distance signs and the pitcher), where the eye learns to look: on one
       // line, else cut in two at a clause break, in smaller type as long calls need; below
       // the panel only in a window too narrow for even that.
-      const float right = kStatsPanelRight + 16.0f, room = static_cast<float>(w) - right - 40.0f;
+      const float right = stats_panel_right(w) + 16.0f, room = static_cast<float>(w) - right - 40.0f;
       const std::string& call = c.call_text();
       auto lines = std::pair<std::string, std::string>{call, std::string()};
       bool beside = false;

@@ -635,7 +635,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const std::string text = std::to_string(k * 50);
       const auto seen = camera.project(on_line, width, height);
       // A stripe whose middle is out of the picture has no number: slid in to the image's
-      // edge, the side view's far stripes stood there in a column ("450 50 300 150").
+      // edge, the side view's far stripes would stand there in a column ("450 50 300 150").
       if (!seen || seen->x() < 0.0 || seen->x() > width || seen->y() < 0.0 || seen->y() > height) continue;
       const double w_px = text_width(text, h_px);
       const Eigen::Vector3d box(seen->x() - w_px - 8.0 * style_scale, seen->x(), seen->y());

@@ -29,7 +29,7 @@ struct SwingShape {
   double radius = 1.5;     ///< m, contact to pivot
   double downswing = 0.25; ///< s, from rest at the top to impact
   double finish = 3.0;     ///< rad turned after impact, to rest
-  double follow_per_backswing = 0.0;
+  double follow_per_backswing = 0.0;  ///< a part swing's follow-through over its backswing's arc (0: always `finish`)
 };
 inline constexpr SwingShape kClubSwing{1.5, 0.25, 3.0, 1.5};
 inline constexpr SwingShape kBatSwing{1.2, 0.15, 3.0};

@@ -4,9 +4,9 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cstdarg>
 #include <array>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <optional>
 #include <ostream>
@@ -41,7 +41,7 @@ namespace {
 using Stage = BattingCage::Stage;
 
 // px: the HUD panel's right edge, 450 px, or short of the pitcher in the image's middle in a
-// narrow window (at 800 px the panel hid his release).
+// narrow window (at 800 px a 450 px panel would hide his release).
 float stats_panel_right(int w) { return std::min(450.0f, 0.42f * static_cast<float>(w)); }
 
 // ImGui::TextDisabled that wraps at the panel's edge, as every line of the narrower panel must.
@@ -149,12 +149,13 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
   if (c.stage() == Stage::Ready) {
     // The pace it comes at, so a player knows what --difficulty changed (easy 30 %, standard
     // 50 %, pro real time: BattingCage::time_scale()).
-    if (c.time_scale() >= 1.0) ImGui::TextWrapped("%s", "Pitch: P or Space calls for one, at real speed");
-    else ImGui::TextWrapped("Pitch: P or Space calls for one, at %.0f %% of real speed", 100.0 * c.time_scale());
+    if (c.next_time_scale() >= 1.0) ImGui::TextWrapped("%s", "Pitch: P or Space calls for one, at real speed");
+    else ImGui::TextWrapped("Pitch: P or Space calls for one, at %.0f %% of real speed", 100.0 * c.next_time_scale());
     if (!c.timing_only() && c.swings().empty()) ImGui::TextWrapped("%s", "New to it? T: just time the swing, the bat finds the height");
-    // Swings and no contact at a pace quicker than the easiest: where a slower pitch is.
+    // Swings and no contact yet this session at a pace quicker than the easiest: where a
+    // slower pitch is.
     const BattingCage::Figures so_far = c.figures();
-    if (so_far.swings >= 3 && so_far.contact == 0 && c.time_scale() > BattingCage::kEasyPitchTimeScale)
+    if (so_far.swings >= 3 && so_far.contact == 0 && c.next_time_scale() > BattingCage::kEasyPitchTimeScale)
       ImGui::TextWrapped("%s", "Missing them? E: slower pitches");
   } else if (c.stage() == Stage::Pitching || (!c.batted() && !pitch_by)) {
     // (A pitch swung through early is still on its way.) In practice the pitch is called as
@@ -274,10 +275,7 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     // played).
     const FieldingPlay& play = s.result.play;
     const bool in_air = f.carry_m > 40.0 || s.result.outcome == BattedOutcome::HomeRun;
-    const Vec3 p = in_air                                        ? f.landing_position
-                   : play.caught || (play.fielder >= 0 && !play.foul) ? play.fielded_at
-                   : play.foul && play.called_time > 0.0            ? play.called_at
-                                                                    : f.rest_position;
+    const Vec3 p = in_air ? f.landing_position : play_rest_position(s.result.shot.trajectory, play);
     const auto key = std::find_if(kSprayKey.begin(), kSprayKey.end(), [&](const SprayKey& k) { return k.outcome == s.result.outcome; });
     dl->AddCircleFilled(px(p), 4.0f, key != kSprayKey.end() ? key->colour : kSprayOut);
   }

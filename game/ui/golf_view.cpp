@@ -590,7 +590,9 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     scene_->set_aim(std::nullopt);  // the shot's own line from where it was hit
     scene_->set_ground_arrows({});
     scene_->set_focus(std::nullopt);
-    if (!flight_shown_) {
+    if (!flight_shown_ && !play_->last_shot_on_hole_shown()) {
+      flight_shown_ = true;  // a hole given up unplayed: no stroke of it to show or sound
+    } else if (!flight_shown_) {
       // A bot may strike before his address was drawn: the scene still holds the last
       // player's club, whose full finish a putt must not take.
       if (!play_->last_shot().impactor_mesh.empty()) ensure_scene(play_->last_shot().impactor_mesh);

@@ -62,6 +62,7 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, b
 BattingCage::BattingCage(const Assets& assets, std::uint64_t seed, double time_scale)
     : assets_(assets),
       time_scale_(time_scale),
+      next_time_scale_(time_scale),
       types_(load_pitch_types(assets)),
       rng_(seed),
       bot_(assets, batter_skill("pro"), 5),
@@ -77,6 +78,7 @@ void BattingCage::next_pitch(double t) {
   call_ = live_ ? pitcher_.next(count_, lefty_).call : derby_pitch(types_, rng_);
   pitch_ = throw_pitch(assets_, call_);
   movement_ = statcast_movement(assets_, pitch_);
+  time_scale_ = next_time_scale_;
   released_at_ = t + kWindupTime / time_scale_;
   stage_ = Stage::Pitching;
   swung_too_soon_ = false;
@@ -317,11 +319,14 @@ std::string BattingCage::pace_name(double time_scale) {
   // A hitter's own window at game speed is about +-14 ms (the class comment): in the player's
   // time it grows as 1 / scale.
   constexpr double kWindowMs = 14.0;
-  const char* name = time_scale == kEasyPitchTimeScale ? "easy" : time_scale == kProPitchTimeScale ? "pro" : "standard";
+  const char* name = time_scale == kEasyPitchTimeScale ? "easy, "
+                     : time_scale == kProPitchTimeScale ? "pro, "
+                     : time_scale == kPitchTimeScale    ? "standard, "
+                                                        : "";  // a --difficulty of its own
   char text[96];
-  if (time_scale >= 1.0) std::snprintf(text, sizeof text, "%s, real speed (hit within about %.0f ms)", name, kWindowMs);
+  if (time_scale >= 1.0) std::snprintf(text, sizeof text, "%sreal speed (hit within about %.0f ms)", name, kWindowMs);
   else
-    std::snprintf(text, sizeof text, "%s, %.0f %% of real speed (hit within about %.0f ms)", name, 100.0 * time_scale,
+    std::snprintf(text, sizeof text, "%s%.0f %% of real speed (hit within about %.0f ms)", name, 100.0 * time_scale,
                   kWindowMs / time_scale);
   return text;
 }
@@ -338,13 +343,13 @@ void BattingCage::apply(const Intent& in) {
     case IntentKind::ToggleSide: lefty_ = !lefty_; break;
     case IntentKind::ToggleTiming: timing_only_ = !timing_only_; break;
     case IntentKind::TogglePace: {
-      // Between pitches (a pitch on its way or a ball still in the air keeps its clock): the
-      // next pace, and what it gives the swing's window in the player's own time.
-      if (stage_ == Stage::Pitching || (stage_ == Stage::Batted && !told_)) break;
-      time_scale_ = time_scale_ == kPitchTimeScale ? kEasyPitchTimeScale
-                    : time_scale_ == kEasyPitchTimeScale ? kProPitchTimeScale
-                                                         : kPitchTimeScale;
-      call_text_ = std::string("Pitch pace: ") + pace_name(time_scale_);
+      // The next pitch's pace (one thrown, or a ball still in the air, keeps the clock it
+      // runs on), and what it gives the swing's window in the player's own time; said once
+      // nothing else is being called.
+      next_time_scale_ = next_time_scale_ == kPitchTimeScale       ? kEasyPitchTimeScale
+                         : next_time_scale_ == kEasyPitchTimeScale ? kProPitchTimeScale
+                                                                   : kPitchTimeScale;
+      if (stage_ == Stage::Ready || (stage_ == Stage::Called && told_)) call_text_ = std::string("Pitch pace: ") + pace_name(next_time_scale_);
       break;
     }
     case IntentKind::ToggleLive:

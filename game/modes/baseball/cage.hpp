@@ -69,8 +69,10 @@ class BattingCage {
   double ball_radius() const;
   /// Pitch time (s since release, slowed by time_scale(); negative in the wind-up) at mode time `t`.
   double pitch_clock(double t) const { return (t - released_at_) * time_scale_; }
-  /// The pitch's pace against real time (the constructor's; E steps it between pitches).
+  /// The pitch's pace against real time (the constructor's; E steps it for the next pitch).
   double time_scale() const { return time_scale_; }
+  /// The pace the next pitch will come at (E's choice; time_scale() once it is thrown).
+  double next_time_scale() const { return next_time_scale_; }
   /// A pace in the player's words: "easy, 30 % of real speed", "standard, ...", "pro, real speed".
   static std::string pace_name(double time_scale);
   /// The batted ball's flight runs from this mode time.
@@ -142,6 +144,7 @@ class BattingCage {
 
   const Assets& assets_;
   double time_scale_ = kPitchTimeScale;
+  double next_time_scale_ = kPitchTimeScale;
   std::vector<PitchType> types_;
   Rng rng_;
   BotBatter bot_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "game/modes/baseball/throwing.hpp"
 #include "physics/units.hpp"
@@ -87,15 +88,15 @@ Vec3 heading(const Vec3& a, const Vec3& b, const Vec3& fallback) {
 double spray(const Vec3& p) { return std::atan2(p.z(), p.x()); }
 bool fair_direction(const Vec3& p) { return p.x() > 0.0 && std::abs(spray(p)) <= kFoul; }
 
-// Fair or foul (MLB Rule definitions): beyond the bases, where it first lands; before them,
-// where it passes the bases' distance, is first touched by a fielder (`touched`: when and
-// where, if one reaches it on the ground) or comes to rest.
 // The call and where and when the umpire can make it.
 struct FairCall {
   bool fair = false;
   double t = 0.0;  ///< s after contact
   Vec3 at = Vec3::Zero();
 };
+// Fair or foul (MLB Rule definitions): beyond the bases, where it first lands; before them,
+// where it passes the bases' distance, is first touched by a fielder (`touched`: when and
+// where, if one reaches it on the ground) or comes to rest.
 FairCall fair_call(const ShotTrajectory& t, const std::optional<TrajectorySample>& touched = std::nullopt) {
   const Vec3& land = t.summary.landing_position;
   if (std::hypot(land.x(), land.z()) > kBaseLine) return {fair_direction(land), t.summary.hang_time_s, land};
@@ -399,6 +400,7 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
       // A ball touched in the air is fair or foul by where it is over when he touches it
       // (Rule definitions: fair ball, foul ball), wherever it would have come down.
       play.foul = !fair_direction(best_at);
+      if (!play.foul) play.called_time = 0.0;  // caught over fair ground: no foul to call
       play.fielder = best;
       play.caught = true;
       play.fielded_at = best_at;
@@ -409,7 +411,10 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
         // Dropped: a fair ball puts the batter on by the error; a foul one is only a foul.
         play.outcome = play.foul ? BattedOutcome::Foul : BattedOutcome::Error;
         play.caught = false;
-        if (play.foul) play.called_time = best_t, play.called_at = best_at;
+        if (play.foul) {
+          play.called_time = best_t;
+          play.called_at = best_at;
+        }
       }
       play.description = describe(play, land);
       return play;
@@ -521,14 +526,28 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   return play;
 }
 
-ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
-  // A home run or a ground-rule double has no fielder (-1).
+namespace {
+// When and where the play ends the ball's path before the physics does: in a fielder's
+// glove, or where a foul no one caught is called (it is dead there). None: the whole path
+// (a home run or a ground-rule double has no fielder, -1; a ball at rest before he gets there).
+struct PlayEnd {
+  double t = 0.0;
+  Vec3 at = Vec3::Zero();
+};
+std::optional<PlayEnd> play_end(const ShotTrajectory& t, const FieldingPlay& play) {
   const bool fielded = play.caught || (play.fielder >= 0 && !play.foul);
-  // A foul no one caught is dead where it is called.
   const bool called_foul = play.foul && !play.caught && play.called_time > 0.0;
   const double end_t = fielded ? play.fielded_time : play.called_time;
-  const Vec3& end_at = fielded ? play.fielded_at : play.called_at;
-  if (!(fielded || called_foul) || t.samples.empty() || end_t >= t.summary.total_time_s) return t;
+  if (!(fielded || called_foul) || t.samples.empty() || end_t >= t.summary.total_time_s) return std::nullopt;
+  return PlayEnd{end_t, fielded ? play.fielded_at : play.called_at};
+}
+}  // namespace
+
+ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
+  const std::optional<PlayEnd> end = play_end(t, play);
+  if (!end) return t;
+  const double end_t = end->t;
+  const Vec3& end_at = end->at;
   ShotTrajectory out = t;
   out.samples.clear();
   for (const TrajectorySample& s : t.samples) {
@@ -546,13 +565,19 @@ ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play) {
   out.summary.total_time_s = end_t;
   // Its distance is to where he had it: the label on the scene's rest pin.
   out.summary.total_m = horizontal(t.samples.front().position, end_at);
-  if (play.caught) {
-    // Caught before it came down: the glove is its landing too (no ring where it never fell).
-    out.summary.landing_position = play.fielded_at;
+  if (play.caught || end_t < t.summary.hang_time_s) {
+    // Caught (or a foul fly touched and dropped) before it came down: the glove is its
+    // landing too (no ring where it never fell).
+    out.summary.landing_position = end_at;
     out.summary.carry_m = out.summary.total_m;
-    out.summary.hang_time_s = play.fielded_time;
+    out.summary.hang_time_s = end_t;
   }
   return out;
+}
+
+Vec3 play_rest_position(const ShotTrajectory& t, const FieldingPlay& play) {
+  const std::optional<PlayEnd> end = play_end(t, play);
+  return end ? end->at : t.summary.rest_position;
 }
 
 ShotTrajectory into_the_mitt(const ShotTrajectory& t) {

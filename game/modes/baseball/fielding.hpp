@@ -148,6 +148,8 @@ BattedOutcome field_ball(const ShotResult& shot, const AeroModel& aero, const En
 /// foul no one catches ends where it is called (FieldingPlay::called_at), and a ball at rest
 /// before he gets there keeps the physics' whole path.
 ShotTrajectory as_played(const ShotTrajectory& t, const FieldingPlay& play);
+/// as_played(t, play).summary.rest_position, without the copy: where the play left the ball.
+Vec3 play_rest_position(const ShotTrajectory& t, const FieldingPlay& play);
 
 /// A foul tip's path as the play went: into the catcher's mitt where it comes level with him
 /// behind the plate (the physics' flight on to the backstop was never played).

@@ -190,12 +190,14 @@ const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double 
   in.meter.power = power;
   const FlightSummary f = r.simulate(in).trajectory.summary;
   double calm = f.carry_m;
+  Vec3 calm_landing = f.landing_position;
   if (r.wind().speed > 0.0) {
     const FlightSummary c = r.simulate_calm(in).trajectory.summary;
     calm = r.first_touch_in_a_tree(c) ? std::numeric_limits<double>::quiet_NaN() : c.carry_m;
+    calm_landing = c.landing_position;
   }
   slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, calm, f.landing_position,
-                   f.rest_position, r.first_touch_in_a_tree(f)};
+                   f.rest_position, r.first_touch_in_a_tree(f), calm_landing};
   return *slot;
 }
 
@@ -211,7 +213,7 @@ double GolfPlay::calm_carry_here(const std::string& club, double power) const {
 
 double GolfPlay::landing_rise_here(const std::string& club, double power) const {
   if (round().finished() || club == "putter") return 0.0;
-  return flown_here(club, power).landing.y() - round().ball().y();
+  return flown_here(club, power).calm_landing.y() - round().ball().y();
 }
 
 double GolfPlay::stops_here(const std::string& club, double power) const {
@@ -386,7 +388,7 @@ void GolfPlay::advance(double t) {
 
 void GolfPlay::concede_hole(double t) {
   const std::size_t hole = group_.hole_index();
-  round_hole_ = hole;  // the hole the card and header show once it is over: this one
+  round_hole_ = hole;  // the hole the card and header show once it is over
   group_.concede_hole();
   landed_at_ = t;
   say(group_.note());
@@ -425,7 +427,8 @@ void GolfPlay::strike_from_meter(const MeterInput& m, double t) {
 
 void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   putt_read_.reset();  // read from where the ball lay
-  round_hole_ = group_.hole_index();
+  round_hole_ = struck_hole_ = group_.hole_index();
+  struck_any_ = true;
   shooter_ = player_;
   const GolfPlayer& who = player_info();
   const int stroke_no = round().card().back().strokes + 1;
@@ -535,9 +538,7 @@ void GolfPlay::apply(const Intent& in) {
           } else {
             // Not a silent key: what H is, and why it does nothing here (the Rules of Golf
             // allow a concession only in match play, Rule 3.2b).
-            const GolfFormat f = group_.options().format;
-            say("H concedes a hole in match play; in " + std::string(f == GolfFormat::Stroke ? "stroke play" : to_string(f)) +
-                " every hole is played out");
+            say("H concedes a hole, in match play only");
           }
           break;
         case IntentKind::CaddiePlays: {
@@ -595,6 +596,7 @@ void GolfPlay::new_round(double t) {
   meter_.reset();
   last_meter_.reset();
   last_click_.reset();
+  struck_any_ = false;
   say("");
   begin_turn(t);
   stage_ = setup_.flyover ? Stage::Flyover : Stage::Aiming;

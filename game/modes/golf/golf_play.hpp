@@ -137,8 +137,12 @@ class GolfPlay {
   double flyover_progress(double now) const;
 
   /// The hole on screen (the group's index): during a flight and on the card after it, the
-  /// hole of the last stroke, though the group may already be on the next.
+  /// hole of the last stroke (or the hole just conceded), though the group may already be on
+  /// the next.
   std::size_t hole_shown() const { return after_stroke() ? round_hole_ : group_.hole_index(); }
+  /// last_shot() was struck on hole_shown(): not so for a hole given up before a ball was
+  /// struck on it, whose card must not replay the previous hole's last stroke.
+  bool last_shot_on_hole_shown() const { return struck_any_ && struck_hole_ == hole_shown(); }
   /// A stroke is in the air, or its hole or round has just ended on it.
   bool after_stroke() const { return stage_ == Stage::Flying || stage_ == Stage::HoleOver || stage_ == Stage::RoundOver; }
   /// How many times the hole at group index `hole` was started again from the pause menu
@@ -184,8 +188,8 @@ class GolfPlay {
   /// in a tree: held off a row of trees for the wind to bring back, it says nothing of the
   /// wind's share.
   double calm_carry_here(const std::string& club, double power = 1.0) const;
-  /// How far above the ball (m, − below) the same stroke first lands: what makes a carry
-  /// from a clean lie differ from the bag's.
+  /// How far above the ball (m, − below) the same stroke in still air first lands: what
+  /// makes its carry from a clean lie differ from the bag's.
   double landing_rise_here(const std::string& club, double power = 1.0) const;
   /// Where the stroke the player would play with `club` along the aim (the caddie's part
   /// swing when he planned one with it, else a full swing) ends its flight against something
@@ -245,7 +249,9 @@ class GolfPlay {
   std::optional<MeterClock> last_click_;  ///< the meter as the last human stroke left it
   int last_click_by_ = 0;                 ///< whose it was
   std::size_t last_click_hole_ = 0;       ///< on which hole (group index)
-  std::size_t round_hole_ = 0;            ///< the group's hole when the last stroke was struck
+  std::size_t round_hole_ = 0;            ///< the group's hole when the last stroke was struck, or the hole conceded
+  std::size_t struck_hole_ = 0;           ///< the group's hole when last_ was struck
+  bool struck_any_ = false;               ///< last_ holds a stroke of this round
   ShotResult last_;
   StrokeRecord last_record_;
   std::string last_rest_lie_;
@@ -282,6 +288,7 @@ class GolfPlay {
     Vec3 landing = Vec3::Zero();  ///< where it first comes down
     Vec3 rest = Vec3::Zero();     ///< where it stops
     bool in_tree = false;
+    Vec3 calm_landing = Vec3::Zero();  ///< where the still-air flight first comes down
   };
   /// The stroke flown (or the last answer for it, from `flown_` when it is the same stroke).
   const FlownHere& flown_here(const std::string& club, double power) const;

@@ -72,9 +72,9 @@ class MeterClock {
   static double putt_tempo(double cup_power);
   /// A part swing's tempo with `club_length` m when the caddie's power for it is
   /// `mark_power`: the club's tempo, slowed as a putt's is so the marker takes at least
-  /// kLeastToCup to reach the mark. A 14 % chip with the lob wedge was a 98 ms press and a
-  /// 65 ms fall to the accuracy mark, quicker than a hand can judge; a 90 % swing keeps its
-  /// club's tempo.
+  /// kLeastToCup to reach the mark. A 14 % chip with the lob wedge is then a 0.6 s press and a
+  /// 0.4 s fall to the accuracy mark, not 98 and 65 ms at the club's tempo, quicker than a
+  /// hand can judge; a 90 % swing keeps its club's tempo.
   static double part_swing_tempo(double club_length, double mark_power);
   static constexpr double kLeastToCup = 0.6;  // s
 

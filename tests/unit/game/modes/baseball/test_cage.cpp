@@ -418,26 +418,33 @@ TEST_CASE("the cage's difficulty is the pitch's pace: a key 40 ms early hits at 
   CHECK_THROWS_AS(BattingCage(test::assets(), 1, 1.5), InputError);
 }
 
-TEST_CASE("E steps the pitch's pace between pitches: standard, easy, pro, standard; never mid-pitch", "[modes][baseball]") {
+TEST_CASE("E steps the next pitch's pace: standard, easy, pro, standard; a pitch thrown keeps its own", "[modes][baseball]") {
   BattingCage cage(test::assets());
-  REQUIRE(cage.time_scale() == BattingCage::kPitchTimeScale);
+  REQUIRE(cage.next_time_scale() == BattingCage::kPitchTimeScale);
   cage.update({at(IntentKind::TogglePace, 0.5)}, 0.5);
-  CHECK(cage.time_scale() == BattingCage::kEasyPitchTimeScale);
+  CHECK(cage.next_time_scale() == BattingCage::kEasyPitchTimeScale);
   CHECK(cage.call_text() == "Pitch pace: easy, 30 % of real speed (hit within about 47 ms)");
   cage.update({at(IntentKind::TogglePace, 0.6)}, 0.6);
-  CHECK(cage.time_scale() == BattingCage::kProPitchTimeScale);
+  CHECK(cage.next_time_scale() == BattingCage::kProPitchTimeScale);
   CHECK(cage.call_text() == "Pitch pace: pro, real speed (hit within about 14 ms)");
-  cage.update({at(IntentKind::TogglePace, 0.7)}, 0.7);
-  CHECK(cage.time_scale() == BattingCage::kPitchTimeScale);
-  // On its way, a pitch keeps the pace it was thrown at: E waits for the next.
-  cage.update({at(IntentKind::TogglePace, 0.8)}, 0.8);
-  REQUIRE(cage.time_scale() == BattingCage::kEasyPitchTimeScale);
+  cage.update({at(IntentKind::TogglePace, 0.7), at(IntentKind::TogglePace, 0.8)}, 0.8);
+  REQUIRE(cage.next_time_scale() == BattingCage::kEasyPitchTimeScale);
+  // Thrown at the easy pace, it arrives when that pace says, whatever E does on its way or
+  // just after a swing through it (the pitch is still drawn flying on its clock).
   cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
-  cage.update({}, 1.0 + kWindupTime / cage.time_scale() + 0.05);
-  REQUIRE(cage.stage() == BattingCage::Stage::Pitching);
-  cage.update({at(IntentKind::TogglePace, 1.0 + kWindupTime / cage.time_scale() + 0.1)}, 1.0 + kWindupTime / cage.time_scale() + 0.1);
+  REQUIRE(cage.time_scale() == BattingCage::kEasyPitchTimeScale);
+  const double released = 1.0 + kWindupTime / BattingCage::kEasyPitchTimeScale;
+  cage.update({at(IntentKind::TogglePace, released + 0.05)}, released + 0.05);
   CHECK(cage.time_scale() == BattingCage::kEasyPitchTimeScale);
-  // It arrives when the easy pace says: flight time over 0.3 after its release.
-  const double arrives = 1.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kEasyPitchTimeScale;
+  CHECK(cage.next_time_scale() == BattingCage::kProPitchTimeScale);
+  const double early_swing = released + 0.1;  // far too early: a miss, called at once
+  cage.update({at(IntentKind::Swing, early_swing)}, early_swing);
+  REQUIRE(cage.stage() == BattingCage::Stage::Called);
+  cage.update({at(IntentKind::TogglePace, early_swing + 0.05)}, early_swing + 0.05);
+  CHECK(cage.next_time_scale() == BattingCage::kPitchTimeScale);
+  const double arrives = released + cage.pitch().flight_time / BattingCage::kEasyPitchTimeScale;
   CHECK(cage.pitch_clock(arrives) == Approx(cage.pitch().flight_time).margin(1e-9));
+  // The next pitch comes at the pace chosen last.
+  cage.update({at(IntentKind::Pitch, arrives + 5.0)}, arrives + 5.0);
+  CHECK(cage.time_scale() == BattingCage::kPitchTimeScale);
 }

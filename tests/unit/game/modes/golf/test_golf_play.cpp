@@ -470,6 +470,7 @@ TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power fo
   // Its meter climbs at the part swing's tempo, the mark at least 0.6 s into the swing
   // (MeterClock::part_swing_tempo), not at the club's full-swing pace.
   const double length = test::assets().equipment().club(pitch.club()).length;
+  REQUIRE(MeterClock::part_swing_tempo(length, power) > MeterClock::tempo_for(length, false));  // slowed here
   pitch.update({at(IntentKind::Swing, 1.0)}, 1.0);
   REQUIRE(pitch.meter());
   CHECK(pitch.meter()->position(1.3) == Approx(0.3 / MeterClock::part_swing_tempo(length, power)).margin(1e-12));
@@ -813,7 +814,7 @@ TEST_CASE("in stroke play H says what it is for and gives up nothing", "[modes][
   play.update({at(IntentKind::Concede, 1.0), at(IntentKind::Concede, 1.5)}, 1.5);
   CHECK(play.group().hole_index() == 0);
   CHECK_FALSE(play.round().card().front().conceded);
-  CHECK(play.message() == "H concedes a hole in match play; in stroke play every hole is played out");
+  CHECK(play.message() == "H concedes a hole, in match play only");
 }
 
 TEST_CASE("match play: a hole given up before a ball is struck on it is the hole the header shows", "[modes][golf][formats]") {
@@ -832,6 +833,29 @@ TEST_CASE("match play: a hole given up before a ball is struck on it is the hole
   REQUIRE(play.group().hole_index() == 2);
   CHECK(play.stage() == GolfPlay::Stage::HoleOver);
   CHECK(play.hole_shown() == 1);
+  CHECK_FALSE(play.last_shot_on_hole_shown());  // nothing struck in this round to show
+}
+
+TEST_CASE("a hole given up unplayed does not show the previous hole's last stroke as its own", "[modes][golf][formats]") {
+  // You play hole 1 out with the caddie's strokes (Bob conceding it to you once you are on),
+  // then Bob gives up hole 2 before a ball is struck: the card of hole 2 has no stroke of it.
+  GolfPlay play(test::assets(), first_hole(3), tour_match("Bob", true));
+  double t = 1.0;
+  REQUIRE(play.human_turn());
+  play.update({at(IntentKind::CaddiePlays, t)}, t);
+  while (play.stage() != GolfPlay::Stage::Aiming && t < 60.0) play.update({at(IntentKind::Continue, t += 0.5)}, t);
+  REQUIRE(play.last_shot_on_hole_shown());  // the stroke just struck, on hole 1
+  while (play.group().hole_index() == 0 && t < 200.0) {
+    if (play.stage() == GolfPlay::Stage::Aiming && play.human_turn()) play.update({at(IntentKind::CaddiePlays, t += 0.5)}, t);
+    else play.update({at(IntentKind::Continue, t += 0.5)}, t);
+  }
+  REQUIRE(play.group().hole_index() == 1);
+  while (play.stage() != GolfPlay::Stage::Aiming && t < 300.0) play.update({at(IntentKind::Continue, t += 0.5)}, t);
+  REQUIRE(play.human_turn());
+  play.update({at(IntentKind::Concede, t + 0.5), at(IntentKind::Concede, t + 1.0)}, t + 1.0);
+  REQUIRE(play.stage() == GolfPlay::Stage::HoleOver);
+  CHECK(play.hole_shown() == 1);
+  CHECK_FALSE(play.last_shot_on_hole_shown());
 }
 
 

@@ -837,20 +837,23 @@ TEST_CASE("match play: a hole given up before a ball is struck on it is the hole
 }
 
 TEST_CASE("a hole given up unplayed does not show the previous hole's last stroke as its own", "[modes][golf][formats]") {
-  // You play hole 1 out with the caddie's strokes (Bob conceding it to you once you are on),
-  // then Bob gives up hole 2 before a ball is struck: the card of hole 2 has no stroke of it.
+  // Both play hole 1 out with the caddie's strokes, then Bob gives up hole 2 before a ball is
+  // struck on it: the card of hole 2 has no stroke of its own to show.
   GolfPlay play(test::assets(), first_hole(3), tour_match("Bob", true));
   double t = 1.0;
+  // One intent half a second on: Enter, or the caddie's stroke when it is a human's turn.
+  const auto step = [&](IntentKind kind) {
+    t += 0.5;
+    play.update({at(kind, t)}, t);
+  };
   REQUIRE(play.human_turn());
   play.update({at(IntentKind::CaddiePlays, t)}, t);
-  while (play.stage() != GolfPlay::Stage::Aiming && t < 60.0) play.update({at(IntentKind::Continue, t += 0.5)}, t);
+  while (play.stage() != GolfPlay::Stage::Aiming && t < 60.0) step(IntentKind::Continue);
   REQUIRE(play.last_shot_on_hole_shown());  // the stroke just struck, on hole 1
-  while (play.group().hole_index() == 0 && t < 200.0) {
-    if (play.stage() == GolfPlay::Stage::Aiming && play.human_turn()) play.update({at(IntentKind::CaddiePlays, t += 0.5)}, t);
-    else play.update({at(IntentKind::Continue, t += 0.5)}, t);
-  }
+  while (play.group().hole_index() == 0 && t < 200.0)
+    step(play.stage() == GolfPlay::Stage::Aiming && play.human_turn() ? IntentKind::CaddiePlays : IntentKind::Continue);
   REQUIRE(play.group().hole_index() == 1);
-  while (play.stage() != GolfPlay::Stage::Aiming && t < 300.0) play.update({at(IntentKind::Continue, t += 0.5)}, t);
+  while (play.stage() != GolfPlay::Stage::Aiming && t < 300.0) step(IntentKind::Continue);
   REQUIRE(play.human_turn());
   play.update({at(IntentKind::Concede, t + 0.5), at(IntentKind::Concede, t + 1.0)}, t + 1.0);
   REQUIRE(play.stage() == GolfPlay::Stage::HoleOver);

@@ -422,8 +422,7 @@ class CageView final : public ModeView {
       }
       if (!beside) lines = split_in_two_lines(call, [&](std::string_view t) { return banner_text_width(t, scale); });
       const float centre = beside ? 0.5f * (right + static_cast<float>(w)) : 0.5f * static_cast<float>(w);
-      float bottom = draw_banner(lines.first.c_str(), centre, beside ? 22.0f : panel_bottom + 14.0f, scale);
-      if (!lines.second.empty()) bottom = draw_banner(lines.second.c_str(), centre, bottom + 10.0f, scale);
+      const float bottom = draw_banner(lines.first.c_str(), centre, beside ? 22.0f : panel_bottom + 14.0f, scale, lines.second.c_str());
       hud_bottom_ = std::max(hud_bottom_, static_cast<double>(bottom));
     }
     if (options_.pitches > 0 && c.pitches_done() >= options_.pitches && c.stage() == Stage::Called)

@@ -63,7 +63,8 @@ void fit_renderer(Renderer& renderer, int w, int h, double scale);
 /// (the cage's call, the golf replay's label).
 void draw_banner(const char* text, int width, float y);
 /// The same box, `scale` times the font's size, centred on `centre_x` px; returns its bottom (px).
-float draw_banner(const char* text, float centre_x, float y, float scale);
+/// `second`, when not empty, is a second line in the same box (one message, not two).
+float draw_banner(const char* text, float centre_x, float y, float scale, const char* second = "");
 /// px the text of such a banner spans (without its box's padding).
 float banner_text_width(std::string_view text, float scale);
 /// px the banner's box reaches below its `y` (its text's line and the box's padding).

@@ -118,6 +118,7 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(stats_panel_right(w) - 10.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  const BattingCage::Figures fig = c.figures();
   if (c.live()) {
     const BattingCage::AtBats& a = c.at_bats();
     if (const LiveInning::Board* b = c.board()) {
@@ -154,8 +155,7 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     if (!c.timing_only() && c.swings().empty()) ImGui::TextWrapped("%s", "New to it? T: just time the swing, the bat finds the height");
     // Swings and no contact yet this session at a pace quicker than the easiest: where a
     // slower pitch is.
-    const BattingCage::Figures so_far = c.figures();
-    if (so_far.swings >= 3 && so_far.contact == 0 && c.next_time_scale() > BattingCage::kEasyPitchTimeScale)
+    if (fig.swings >= 3 && fig.contact == 0 && c.next_time_scale() > BattingCage::kEasyPitchTimeScale)
       ImGui::TextWrapped("%s", "Missing them? E: slower pitches");
   } else if (c.stage() == Stage::Pitching || (!c.batted() && !pitch_by)) {
     // (A pitch swung through early is still on its way.) In practice the pitch is called as
@@ -189,7 +189,6 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
   ImGui::Separator();
   // The swing and the contact count as soon as they happen (the call above says "off the
   // bat"); fair or foul and how far only once the play is called.
-  const BattingCage::Figures fig = c.figures();
   const int n = fig.swings, pro = fig.by_pro, fair = fig.fair;
   ImGui::TextWrapped("Your swings %d, contact %d, fair %d, home runs %d", n, fig.contact, fair, fig.home_runs);
   if (pro > 0) disabled_wrapped("(and %d by the pro, B: not in your figures)", pro);

@@ -32,7 +32,7 @@ std::string GolfUnits::putt(double m) const {
   return b;
 }
 
-std::string GolfUnits::course(double m) const { return m < kNear ? putt(m) : distance(m); }
+std::string GolfUnits::course(double m) const { return course(m, m); }
 std::string GolfUnits::course(double m, double longest) const { return longest < kNear ? putt(m) : distance(m); }
 
 // A share of the carry from here worth naming (m, ~3 yd): under it the wind's or the ground's

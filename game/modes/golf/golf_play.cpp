@@ -221,13 +221,15 @@ double GolfPlay::stops_here(const std::string& club, double power) const {
   return flown_here(club, power).total;
 }
 
+double GolfPlay::part_swing_power(const std::string& club) const {
+  return caddie_plan_ && caddie_plan_->club == club && caddie_plan_->meter.power < 1.0 ? caddie_plan_->meter.power : 1.0;
+}
+
 std::optional<double> GolfPlay::tree_in_the_way(const std::string& club) const {
   if (round().finished() || club == "putter") return std::nullopt;
   // A pitch the caddie means as a part swing is judged at its power: a full swing's flight
   // into a tree 60 yd off says nothing of a 25 % chip.
-  const double power =
-      caddie_plan_ && caddie_plan_->club == club && caddie_plan_->meter.power < 1.0 ? caddie_plan_->meter.power : 1.0;
-  const FlownHere& f = flown_here(club, power);
+  const FlownHere& f = flown_here(club, part_swing_power(club));
   return f.in_tree ? std::optional<double>(f.carry) : std::nullopt;
 }
 
@@ -427,8 +429,8 @@ void GolfPlay::strike_from_meter(const MeterInput& m, double t) {
 
 void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   putt_read_.reset();  // read from where the ball lay
-  round_hole_ = struck_hole_ = group_.hole_index();
-  struck_any_ = true;
+  round_hole_ = group_.hole_index();
+  struck_hole_ = round_hole_;
   shooter_ = player_;
   const GolfPlayer& who = player_info();
   const int stroke_no = round().card().back().strokes + 1;
@@ -515,9 +517,9 @@ void GolfPlay::apply(const Intent& in) {
           const double length = assets_.equipment().club(club()).length;
           // A putt the preview reaches: the marker slowed for a short one (putt_tempo); the
           // caddie's part swing with this club, slowed to its mark as well.
-          const bool part = !putting && caddie_plan_ && caddie_plan_->club == club() && caddie_plan_->meter.power < 1.0;
+          const double part = putting ? 1.0 : part_swing_power(club());
           const double tempo = putting && putt_plays_as_ > 0.0 ? MeterClock::putt_tempo(cup_mark_power())
-                               : part                          ? MeterClock::part_swing_tempo(length, caddie_plan_->meter.power)
+                               : part < 1.0                    ? MeterClock::part_swing_tempo(length, part)
                                                                : MeterClock::tempo_for(length, putting);
           meter_.emplace(tempo, putting, perfect_window_ms(setup_.difficulty));
           swing_undone_ = false;
@@ -596,7 +598,7 @@ void GolfPlay::new_round(double t) {
   meter_.reset();
   last_meter_.reset();
   last_click_.reset();
-  struck_any_ = false;
+  struck_hole_.reset();
   say("");
   begin_turn(t);
   stage_ = setup_.flyover ? Stage::Flyover : Stage::Aiming;

@@ -142,7 +142,7 @@ class GolfPlay {
   std::size_t hole_shown() const { return after_stroke() ? round_hole_ : group_.hole_index(); }
   /// last_shot() was struck on hole_shown(): not so for a hole given up before a ball was
   /// struck on it, whose card must not replay the previous hole's last stroke.
-  bool last_shot_on_hole_shown() const { return struck_any_ && struck_hole_ == hole_shown(); }
+  bool last_shot_on_hole_shown() const { return struck_hole_ == hole_shown(); }
   /// A stroke is in the air, or its hole or round has just ended on it.
   bool after_stroke() const { return stage_ == Stage::Flying || stage_ == Stage::HoleOver || stage_ == Stage::RoundOver; }
   /// How many times the hole at group index `hole` was started again from the pause menu
@@ -250,8 +250,7 @@ class GolfPlay {
   int last_click_by_ = 0;                 ///< whose it was
   std::size_t last_click_hole_ = 0;       ///< on which hole (group index)
   std::size_t round_hole_ = 0;            ///< the group's hole when the last stroke was struck, or the hole conceded
-  std::size_t struck_hole_ = 0;           ///< the group's hole when last_ was struck
-  bool struck_any_ = false;               ///< last_ holds a stroke of this round
+  std::optional<std::size_t> struck_hole_;  ///< the group's hole when last_ was struck; none before this round's first
   ShotResult last_;
   StrokeRecord last_record_;
   std::string last_rest_lie_;
@@ -292,6 +291,8 @@ class GolfPlay {
   };
   /// The stroke flown (or the last answer for it, from `flown_` when it is the same stroke).
   const FlownHere& flown_here(const std::string& club, double power) const;
+  /// The caddie's power for `club` when he planned a part swing with it, else 1 (a full swing).
+  double part_swing_power(const std::string& club) const;
   /// The last full swing asked for and the last part swing: the HUD asks of both each frame.
   mutable std::optional<FlownHere> flown_[2];
 };

@@ -348,7 +348,9 @@ GolfMap read_golf_map(const std::filesystem::path& path) {
   GolfMap map;
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": a directory, not a map (give an .osm or .osm.pbf file)");
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": no such file");
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(path.string() + (std::filesystem::exists(path, ec) ? ": not a regular file (give an .osm or .osm.pbf file)"
+                                                                        : ": no such file"));
   const std::string overpass = is_overpass_json(path) ? overpass_to_xml(path) : std::string();
   try {
     const osmium::io::File file = overpass.empty() ? osmium::io::File(path.string())

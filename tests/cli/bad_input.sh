@@ -174,6 +174,8 @@ expect_bad "a pin outside the world" "pin.toml:4|outside the world" -- shot golf
 expect_bad "a plot that is not a PNG" "name it FILE.png" -- derby --plot "$tmp/spray.jpg"
 # A face laid open to the swing's direction (90 deg of spin loft) grazes: no 0 mph "shot".
 expect_bad "an elevation raster that is not there" "$tmp/none.tif: no such file" -- course import "$SWEETSPOT_ROOT/assets/courses/sources/national.osm" -o "$tmp/course_out" --dem "$tmp/none.tif"
+expect_bad "a map that is not a file" "/dev/null: not a regular file|.osm" -- course import /dev/null -o "$tmp/course_out"
+expect_bad "a map that is not there" "$tmp/none.osm: no such file" -- course import "$tmp/none.osm" -o "$tmp/course_out"
 expect_bad "a gimme in a contest" "--gimme|not part of --mode ctp" -- round links --mode ctp --gimme 3
 expect_bad "a pin set for a long drive" "--pins|not part of --mode long-drive" -- round links --mode long-drive --pins 3
 expect_bad "a grazing strike" "the strike misses|1 deg out of its own plane" -- shot golf/driver --set club.name=lw --set swing.attack_angle=-30deg --set swing.dynamic_loft=60deg

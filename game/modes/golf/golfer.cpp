@@ -12,7 +12,7 @@ namespace sweetspot {
 const std::vector<GolferSkill>& golfer_skills() {
   constexpr double kClubs = std::numeric_limits<double>::quiet_NaN();  // the club's own (tour) delivery
   static const std::vector<GolferSkill> skills = {
-      {"tour", mph_to_mps(113.0), 12.0, 0.035, 0.06, 0.020, kClubs, kClubs, 0.08},
+      {"tour", mph_to_mps(113.0), 12.0, 0.035, 0.06, 0.020, kClubs, kClubs, 0.13},
       {"scratch", mph_to_mps(105.0), 18.0, 0.025, 0.08, 0.019, deg_to_rad(-0.9), deg_to_rad(13.0), 0.18},
       {"amateur", mph_to_mps(93.0), 25.0, 0.05, 0.08, 0.028, deg_to_rad(-1.8), deg_to_rad(15.1), 0.35},
       {"beginner", mph_to_mps(80.0), 55.0, 0.09, 0.11, 0.036, deg_to_rad(-2.3), deg_to_rad(16.5), 0.45},

@@ -34,10 +34,11 @@ struct GolferSkill {
   /// Extra power spread of a partial swing per unit of power it leaves out: a chip or a
   /// pitch is judged by feel (and struck fat or thin), and strays more the shorter the swing.
   /// scratch 0.18: its pitches from 25-50 yd finish ~20 ft away as Arccos's scratch golfers'
-  /// do (test_bot_putting.cpp). tour 0.08: its chips from the rough within 30 yd finish 8.0 ft
-  /// away on average and it gets up and down 61 % of the time (the day's cups, 12 calm
-  /// rounds), as PGA TOUR players do (2017: proximity from the rough 7'10" for the 75th of
-  /// the list, 6'3" to 8'6" from 1st to 150th; scrambling ~58-60 %). amateur 0.35, beginner
+  /// do (test_bot_putting.cpp). tour 0.13: its chips from the rough within 30 yd finish 7.8 ft
+  /// away on average and it gets up and down 65 % of the time (the day's cups, 40 calm
+  /// rounds, 280 chips; the test's 24 rounds 7.5 ft), as PGA TOUR players do (2017: proximity
+  /// from the rough 7'10" for the 75th of the list, 6'3" to 8'6" from 1st to 150th;
+  /// scrambling ~58-60 %). amateur 0.35, beginner
   /// 0.45: ESTIMATES spaced like the full-swing errors, checked through the rounds' scores and
   /// putts there. A partial swing is also aimed by eye, with the putts' start-line spread.
   double partial_feel_sd = 0.08;

@@ -215,6 +215,37 @@ TEST_CASE("a scratch bot's pitches from 25-50 yd finish about 20 ft away", "[gol
   CHECK(m_to_ft(to_pin / pitches) == Approx(20.0).margin(7.0));
 }
 
+TEST_CASE("a tour bot's chips from the rough within 30 yd finish as close as PGA TOUR players'", "[golf][bot][reference][statistics]") {
+  // PGA TOUR proximity to the hole around the green from the rough (ShotLink, 2017): 7'10"
+  // for the 75th player of the list, 6'3" for the 1st and 8'6" for the 150th. The tour bot
+  // plays the tour's average: its mean over 24 calm rounds of the day's cups (~150 chips, a
+  // standard error of ~0.5 ft) lies within the tour's own range.
+  Course national = load_course(test::assets(), "national");
+  CourseSetup day;
+  day.pin_set = CourseSetup::kDayPinSet;
+  set_up(national, day);
+  const GolferSkill& g = golfer_skill("tour");
+  double feet = 0.0;
+  int chips = 0;
+  for (int seed = 1; seed <= 24; ++seed) {
+    GolfRound round(test::assets(), national, g);
+    GolfBot bot(test::assets(), g, static_cast<std::uint64_t>(seed));
+    while (!round.finished()) {
+      const bool chip = round.lie() == "rough" && round.to_pin() < yd_to_m(30);
+      const StrokeInput in = bot.plan(round);
+      const StrokeRecord& r = round.play(in);
+      if (chip && in.club != "putter") {
+        feet += m_to_ft(r.to_pin_m);
+        ++chips;
+      }
+    }
+  }
+  INFO(chips << " tour chips from the rough within 30 yd finish " << feet / chips << " ft away on average");
+  REQUIRE(chips >= 100);
+  CHECK(feet / chips > 6.25);
+  CHECK(feet / chips < 8.5);
+}
+
 TEST_CASE("a putt rolls farther the harder it is struck, across an imported green's facets", "[golf][putting][crease]") {
   // The national course's first green from 9.4 m (where a tour bot's putt once stopped
   // 4 m out): its DEM facets meet at bends of a fraction of a degree whose normals repeat

@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
+#include <string>
 
 #include "game/content/course_file.hpp"
 #include "game/modes/golf/bot.hpp"
@@ -29,6 +31,28 @@ std::optional<GolfRound> on_green(std::size_t n, double dist, double angle, cons
   return r;
 }
 
+// The strokes other than putts a bot of skill `g` plays over calm rounds of `course` (seeds
+// 1..rounds) from where `counts(lie, m to the cup)` holds: their mean distance left, m, and
+// their number in `n`.
+double mean_left(const Course& course, const GolferSkill& g, int rounds,
+                 const std::function<bool(const std::string&, double)>& counts, int* n) {
+  double left = 0.0;
+  *n = 0;
+  for (int seed = 1; seed <= rounds; ++seed) {
+    GolfRound round(test::assets(), course, g);
+    GolfBot bot(test::assets(), g, static_cast<std::uint64_t>(seed));
+    while (!round.finished()) {
+      const bool counted = counts(round.lie(), round.to_pin());
+      const StrokeInput in = bot.plan(round);
+      const StrokeRecord& r = round.play(in);
+      if (counted && in.club != "putter") {
+        left += r.to_pin_m;
+        ++*n;
+      }
+    }
+  }
+  return *n > 0 ? left / *n : 0.0;
+}
 }  // namespace
 
 TEST_CASE("a bot's putt plan goes through the middle of the cup at pace, so a small miss still drops", "[golf][bot][putting]") {
@@ -194,25 +218,12 @@ TEST_CASE("a scratch bot's pitches from 25-50 yd finish about 20 ft away", "[gol
   // pitches and their misses are skewed (a thin one runs 60 ft past), so the average is
   // taken over 40 calm national rounds (~70 pitches; eight rounds' 13 moved it by 7 ft).
   const Course national = load_course(test::assets(), "national");
-  const GolferSkill& g = golfer_skill("scratch");
-  double to_pin = 0.0;
   int pitches = 0;
-  for (int seed = 1; seed <= 40; ++seed) {
-    GolfRound round(test::assets(), national, g);
-    GolfBot bot(test::assets(), g, static_cast<std::uint64_t>(seed));
-    while (!round.finished()) {
-      const double before = round.to_pin();
-      const StrokeInput in = bot.plan(round);
-      const StrokeRecord& r = round.play(in);
-      if (in.club != "putter" && before >= yd_to_m(25) && before < yd_to_m(50)) {
-        to_pin += r.to_pin_m;
-        ++pitches;
-      }
-    }
-  }
-  INFO(pitches << " scratch pitches from 25-50 yd finish " << m_to_ft(to_pin / pitches) << " ft away");
+  const double left = mean_left(national, golfer_skill("scratch"), 40,
+                                [](const std::string&, double d) { return d >= yd_to_m(25) && d < yd_to_m(50); }, &pitches);
+  INFO(pitches << " scratch pitches from 25-50 yd finish " << m_to_ft(left) << " ft away");
   REQUIRE(pitches >= 40);
-  CHECK(m_to_ft(to_pin / pitches) == Approx(20.0).margin(7.0));
+  CHECK(m_to_ft(left) == Approx(20.0).margin(7.0));
 }
 
 TEST_CASE("a tour bot's chips from the rough within 30 yd finish as close as PGA TOUR players'", "[golf][bot][reference][statistics]") {
@@ -224,26 +235,13 @@ TEST_CASE("a tour bot's chips from the rough within 30 yd finish as close as PGA
   CourseSetup day;
   day.pin_set = CourseSetup::kDayPinSet;
   set_up(national, day);
-  const GolferSkill& g = golfer_skill("tour");
-  double feet = 0.0;
   int chips = 0;
-  for (int seed = 1; seed <= 24; ++seed) {
-    GolfRound round(test::assets(), national, g);
-    GolfBot bot(test::assets(), g, static_cast<std::uint64_t>(seed));
-    while (!round.finished()) {
-      const bool chip = round.lie() == "rough" && round.to_pin() < yd_to_m(30);
-      const StrokeInput in = bot.plan(round);
-      const StrokeRecord& r = round.play(in);
-      if (chip && in.club != "putter") {
-        feet += m_to_ft(r.to_pin_m);
-        ++chips;
-      }
-    }
-  }
-  INFO(chips << " tour chips from the rough within 30 yd finish " << feet / chips << " ft away on average");
+  const double feet = m_to_ft(mean_left(national, golfer_skill("tour"), 24,
+                                        [](const std::string& lie, double d) { return lie == "rough" && d < yd_to_m(30); }, &chips));
+  INFO(chips << " tour chips from the rough within 30 yd finish " << feet << " ft away on average");
   REQUIRE(chips >= 100);
-  CHECK(feet / chips > 6.25);
-  CHECK(feet / chips < 8.5);
+  CHECK(feet > 6.25);
+  CHECK(feet < 8.5);
 }
 
 TEST_CASE("a putt rolls farther the harder it is struck, across an imported green's facets", "[golf][putting][crease]") {

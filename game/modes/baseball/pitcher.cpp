@@ -1,6 +1,7 @@
 #include "game/modes/baseball/pitcher.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "physics/units.hpp"
@@ -13,6 +14,45 @@ bool is_breaking(const PitchType& t) { return t.type == "slider" || t.type == "c
 
 constexpr double kBodyFromMiddle = 0.55;  // m, see hits_batter
 constexpr double kBodyLow = 0.3, kBodyHigh = 1.8;
+
+// His spots (Pitcher::next): in the zone, kEdgeInset inside the edges of a quarter, or its
+// heart kHeartShare of the time; a chase pitch kChaseOff past the top (fastballs, side spread
+// kHighSideSd) or the bottom (the rest, away by half the plate plus a half-normal kAwaySd).
+constexpr double kEdgeInset = 0.1, kHeartShare = 0.2, kChaseOff = 0.08, kHighSideSd = 0.12, kAwaySd = 0.15;  // m
+constexpr double kBallRadius = 0.0369;  // m
+
+bool chased_high(const PitchType& t) { return is_fastball(t) || t.type == "cutter"; }
+
+// Midpoint quantiles of |N(0, 1)|, x with erf(x / sqrt 2) = (i + 1/2) / n, by Newton's method.
+constexpr int kQuantiles = 40;
+const std::array<double, kQuantiles>& half_normal_quantiles() {
+  static const std::array<double, kQuantiles> q = [] {
+    std::array<double, kQuantiles> out{};
+    for (int i = 0; i < kQuantiles; ++i) {
+      const double p = (i + 0.5) / kQuantiles;
+      double x = 1.0;
+      for (int k = 0; k < 30; ++k) x -= (std::erf(x / std::sqrt(2.0)) - p) / (std::sqrt(2.0 / kPi) * std::exp(-0.5 * x * x));
+      out[static_cast<std::size_t>(i)] = x;
+    }
+    return out;
+  }();
+  return q;
+}
+
+// The count's odds times the type's odds against his mix's (both as he means them).
+double combine_odds(double intent, double type_share, double mix_share) {
+  if (intent <= 0.0 || intent >= 1.0) return intent;
+  const auto odds = [](double p) { return p / (1.0 - p); };
+  const double o = odds(intent) * odds(type_share) / odds(mix_share);
+  return o / (1.0 + o);
+}
+
+// The chance a ball aimed at `aim` (m) crosses within [lo, hi] when it misses by a normal `sd`.
+double within(double aim, double lo, double hi, double sd) {
+  if (sd <= 0.0) return aim >= lo && aim <= hi ? 1.0 : 0.0;
+  const auto cdf = [&](double x) { return 0.5 * std::erfc(-(x - aim) / (sd * std::sqrt(2.0))); };
+  return cdf(hi) - cdf(lo);
+}
 
 }  // namespace
 
@@ -38,19 +78,48 @@ double zone_intent(const Count& c) {
   return std::clamp(0.58 + 0.08 * lead, 0.35, 0.85);
 }
 
-double type_zone_intent(double intent, const PitchType& type, const std::vector<PitchType>& arsenal) {
+ZoneOdds zone_odds(const PitchType& type, double command_sd) {
+  const double r = kBallRadius, hw = StrikeZone::kHalfWidth;
+  const double lo = StrikeZone::kLow - r, hi = StrikeZone::kHigh + r;
+  const auto across = [&](double aim, double sd) { return within(aim, -hw - r, hw + r, sd); };
+  ZoneOdds z;
+  // Meant for the zone: a corner (its four alike by symmetry) or the heart.
+  const double corner = within(StrikeZone::kLow + kEdgeInset, lo, hi, command_sd) * across(hw - kEdgeInset, command_sd);
+  const double heart = within(0.5 * (StrikeZone::kLow + StrikeZone::kHigh), lo, hi, command_sd) * across(0.0, command_sd);
+  z.meant_in = kHeartShare * heart + (1.0 - kHeartShare) * corner;
+  // Meant to be chased: over the zone with a spread of side, or under it and away.
+  if (chased_high(type)) {
+    z.chased_in = within(StrikeZone::kHigh + kChaseOff, lo, hi, command_sd) * across(0.0, std::hypot(kHighSideSd, command_sd));
+  } else {
+    // The half-normal of his "away" by a midpoint sum over its quantiles.
+    double side = 0.0;
+    for (const double x : half_normal_quantiles()) side += across(0.5 * hw + kAwaySd * x, command_sd) / kQuantiles;
+    z.chased_in = within(StrikeZone::kLow - kChaseOff, lo, hi, command_sd) * side;
+  }
+  return z;
+}
+
+double meant_zone_share(const PitchType& t, double command_sd) {
+  // The share he must mean for the zone so that `zone_share` of the type crosses it, his
+  // command carrying some pitches meant for an edge out and some meant to be chased in.
+  const ZoneOdds z = zone_odds(t, command_sd);
+  if (z.meant_in - z.chased_in < 0.05) return t.zone_share;
+  return std::clamp((t.zone_share - z.chased_in) / (z.meant_in - z.chased_in), 0.02, 0.98);
+}
+
+double mix_zone_share(const std::vector<PitchType>& arsenal, double command_sd) {
   double usage = 0.0, share = 0.0;
   for (const PitchType& t : arsenal) {
     usage += t.usage;
-    share += t.usage * t.zone_share;
+    share += t.usage * meant_zone_share(t, command_sd);
   }
-  if (usage <= 0.0 || intent <= 0.0 || intent >= 1.0) return intent;
-  share /= usage;
-  // The count's odds times the type's odds against his mix's: the fastball he throws for the
-  // zone, the changeup he throws to be chased; at 3-0 every type still mostly for the zone.
-  const auto odds = [](double p) { return p / (1.0 - p); };
-  const double o = odds(intent) * odds(type.zone_share) / odds(share);
-  return o / (1.0 + o);
+  return usage > 0.0 ? share / usage : 0.5;
+}
+
+double type_zone_intent(double intent, const PitchType& type, const std::vector<PitchType>& arsenal, double command_sd) {
+  // The fastball he throws for the zone, the changeup he throws to be chased; at 3-0 every
+  // type still mostly for the zone.
+  return combine_odds(intent, meant_zone_share(type, command_sd), mix_zone_share(arsenal, command_sd));
 }
 
 bool hits_batter(const Vec3& p, bool left, double r) {
@@ -60,7 +129,10 @@ bool hits_batter(const Vec3& p, bool left, double r) {
   return body || hands;
 }
 
-Pitcher::Pitcher(PitcherProfile profile, std::uint64_t seed) : profile_(std::move(profile)), rng_(seed) {}
+Pitcher::Pitcher(PitcherProfile profile, std::uint64_t seed) : profile_(std::move(profile)), rng_(seed) {
+  for (const PitchType& t : profile_.arsenal) meant_.push_back(meant_zone_share(t, profile_.command_sd));
+  meant_mix_ = mix_zone_share(profile_.arsenal, profile_.command_sd);
+}
 
 const PitchType& Pitcher::choose_type(const Count& c) {
   // His mix, with more fastballs when he needs a strike and more breaking balls with two
@@ -95,25 +167,25 @@ PlannedPitch Pitcher::next(const Count& count, bool batter_left) {
   // Sides seen from the catcher, + toward first base; "away" from a right-handed batter is +.
   const double away = batter_left ? -1.0 : 1.0;
   const double mid = 0.5 * (StrikeZone::kLow + StrikeZone::kHigh);
-  out.in_zone_intent = rng_.uniform() < type_zone_intent(zone_intent(count), type, profile_.arsenal);
+  const std::size_t k = static_cast<std::size_t>(&type - profile_.arsenal.data());
+  out.in_zone_intent = rng_.uniform() < combine_odds(zone_intent(count), meant_[k], meant_mix_);
   if (out.in_zone_intent) {
     // A spot in the zone, nearer its edges than its middle: 0.1 m inside an edge of a
     // quarter he picks, or the heart of the zone one time in five (one in two with three
     // balls, when a walk costs more than a hit might).
-    const bool heart = rng_.uniform() < (count.balls == 3 ? 0.5 : 0.2);
-    const double s = heart ? 0.0 : (rng_.uniform() < 0.5 ? -1.0 : 1.0) * (StrikeZone::kHalfWidth - 0.1);
-    const double h = heart ? mid : (rng_.uniform() < 0.5 ? StrikeZone::kLow + 0.1 : StrikeZone::kHigh - 0.1);
+    const bool heart = rng_.uniform() < (count.balls == 3 ? 0.5 : kHeartShare);
+    const double s = heart ? 0.0 : (rng_.uniform() < 0.5 ? -1.0 : 1.0) * (StrikeZone::kHalfWidth - kEdgeInset);
+    const double h = heart ? mid : (rng_.uniform() < 0.5 ? StrikeZone::kLow + kEdgeInset : StrikeZone::kHigh - kEdgeInset);
     out.aim_side = s;
     out.aim_height = h;
   } else {
     // A chase: breaking balls and changeups down (and away), fastballs up, just off the edge.
-    const double off = 0.08;
-    if (is_fastball(type) || type.type == "cutter") {
-      out.aim_height = StrikeZone::kHigh + off;
-      out.aim_side = rng_.normal(0.12);
+    if (chased_high(type)) {
+      out.aim_height = StrikeZone::kHigh + kChaseOff;
+      out.aim_side = rng_.normal(kHighSideSd);
     } else {
-      out.aim_height = StrikeZone::kLow - off;
-      out.aim_side = away * (StrikeZone::kHalfWidth * 0.5 + std::abs(rng_.normal(0.15)));
+      out.aim_height = StrikeZone::kLow - kChaseOff;
+      out.aim_side = away * (StrikeZone::kHalfWidth * 0.5 + std::abs(rng_.normal(kAwaySd)));
     }
   }
   out.call.target_height = out.aim_height + rng_.normal(profile_.command_sd);

@@ -12,7 +12,6 @@
 namespace sweetspot {
 namespace {
 
-constexpr double kBall = 0.0369;       // m, the baseball's radius (assets' "mlb")
 constexpr int kMaxExtra = 40;          // extra innings before a game still tied is stopped (MLB's longest: 26 innings)
 
 }  // namespace
@@ -64,8 +63,8 @@ PlateAppearance plate_appearance(const Assets& assets, Hitter& batter, Team& fie
     rec.read = batter.read(rec.flight, rec.planned.call.type.type, field.report, count);
     rec.swung = batter.swings(rec.read, count);
     if (!rec.swung) {
-      if (hits_batter(rec.flight.plate, batter.left_handed(), kBall)) rec.call = PitchResult::HitByPitch;
-      else rec.call = StrikeZone::contains(rec.flight.plate, kBall) ? PitchResult::CalledStrike : PitchResult::Ball;
+      if (hits_batter(rec.flight.plate, batter.left_handed(), kBaseballRadius)) rec.call = PitchResult::HitByPitch;
+      else rec.call = StrikeZone::contains(rec.flight.plate, kBaseballRadius) ? PitchResult::CalledStrike : PitchResult::Ball;
     } else {
       rec.swing = batter.swing(rec.read, count);
       FieldingSetup setup{&field.defense, batter.skill().sprint_speed, &field.fielding_rng};
@@ -351,7 +350,7 @@ BattingRates batting_rates(const std::vector<PlateAppearance>& pas, int which) {
     else if (x != "walk" && x != "hit_by_pitch") ++ab;
     for (const PitchRecord& p : pa.pitches) {
       ++r.pitches;
-      const bool in = StrikeZone::contains(p.flight.plate, kBall);
+      const bool in = StrikeZone::contains(p.flight.plate, kBaseballRadius);
       zone += in;
       outside += !in;
       if (!p.swung) continue;

@@ -86,8 +86,7 @@ class Team {
   /// kRelieverPitches, and during an inning from kRelieverPitches with a man on; anyone who
   /// has let in kBlowUpRuns this inning goes. No more than kMaxPitchers pitch (a roster's 13,
   /// MLB Rule since 2022), the last one finishes. Over the tests' 100 games: starters 5.4
-  /// innings and 89 pitches, 48 % of starts six innings or more, 12 % seven or more (at 95
-  /// pitches before an inning: 5.5, 91, 51-55 %).
+  /// innings and 89 pitches, 48 % of starts six innings or more, 12 % seven or more.
   bool to_the_bullpen(const MoundVisit& visit, std::uint64_t seed);
   static constexpr int kStarterPitches = 90;
   static constexpr int kStarterInnings = 6;

@@ -73,10 +73,9 @@ PitchRead Hitter::read(const PitchFlight& pitch, const std::string& type, const 
 }
 
 bool Hitter::swings(const PitchRead& r, const Count& c) {
-  constexpr double kBall = 0.0369;  // m, the baseball's radius
   // Out of the zone as he sees it, the farther out the less often he offers; with two
   // strikes he protects the plate as if the zone were wider.
-  const double outside = std::max(0.0, StrikeZone::outside_by(r.seen, kBall) - (c.strikes == 2 ? kProtect : 0.0));
+  const double outside = std::max(0.0, StrikeZone::outside_by(r.seen, kBaseballRadius) - (c.strikes == 2 ? kProtect : 0.0));
   return rng_.uniform() < zone_swing_share(c) * std::exp(-outside / skill_.discipline);
 }
 

@@ -19,7 +19,6 @@ constexpr double kBodyLow = 0.3, kBodyHigh = 1.8;
 // heart kHeartShare of the time; a chase pitch kChaseOff past the top (fastballs, side spread
 // kHighSideSd) or the bottom (the rest, away by half the plate plus a half-normal kAwaySd).
 constexpr double kEdgeInset = 0.1, kHeartShare = 0.2, kChaseOff = 0.08, kHighSideSd = 0.12, kAwaySd = 0.15;  // m
-constexpr double kBallRadius = 0.0369;  // m
 
 bool chased_high(const PitchType& t) { return is_fastball(t) || t.type == "cutter"; }
 
@@ -54,32 +53,16 @@ double within(double aim, double lo, double hi, double sd) {
   return cdf(hi) - cdf(lo);
 }
 
-}  // namespace
 
-bool StrikeZone::contains(const Vec3& p, double r) { return outside_by(p, r) <= 0.0; }
-
-double StrikeZone::outside_by(const Vec3& p, double r) {
-  const double side = std::abs(p.z()) - (kHalfWidth + r);
-  const double height = std::max(kLow - r - p.y(), p.y() - (kHigh + r));
-  return std::max({side, height, 0.0});
-}
-
-PitcherProfile league_average_pitcher(const std::vector<PitchType>& types) {
-  PitcherProfile p;
-  p.arsenal = types;
-  return p;
-}
-
-double zone_intent(const Count& c) {
-  // Behind in the count he must throw strikes; ahead he can expand the zone.
-  if (c.balls == 3) return c.strikes == 0 ? 0.95 : 0.9;
-  if (c.strikes == 2 && c.balls <= 1) return 0.30;
-  const int lead = c.balls - c.strikes;  // > 0: the batter is ahead
-  return std::clamp(0.58 + 0.08 * lead, 0.35, 0.85);
-}
+// How often a pitch of a type crosses the zone through his command (m per axis): meant for
+// it (a corner or the heart, as Pitcher::next picks them) and meant to be chased (over the
+// top, or under and away).
+struct ZoneOdds {
+  double meant_in = 1.0, chased_in = 0.0;
+};
 
 ZoneOdds zone_odds(const PitchType& type, double command_sd) {
-  const double r = kBallRadius, hw = StrikeZone::kHalfWidth;
+  const double r = kBaseballRadius, hw = StrikeZone::kHalfWidth;
   const double lo = StrikeZone::kLow - r, hi = StrikeZone::kHigh + r;
   const auto across = [&](double aim, double sd) { return within(aim, -hw - r, hw + r, sd); };
   ZoneOdds z;
@@ -116,6 +99,30 @@ double mix_zone_share(const std::vector<PitchType>& arsenal, double command_sd) 
   return usage > 0.0 ? share / usage : 0.5;
 }
 
+}  // namespace
+
+bool StrikeZone::contains(const Vec3& p, double r) { return outside_by(p, r) <= 0.0; }
+
+double StrikeZone::outside_by(const Vec3& p, double r) {
+  const double side = std::abs(p.z()) - (kHalfWidth + r);
+  const double height = std::max(kLow - r - p.y(), p.y() - (kHigh + r));
+  return std::max({side, height, 0.0});
+}
+
+PitcherProfile league_average_pitcher(const std::vector<PitchType>& types) {
+  PitcherProfile p;
+  p.arsenal = types;
+  return p;
+}
+
+double zone_intent(const Count& c) {
+  // Behind in the count he must throw strikes; ahead he can expand the zone.
+  if (c.balls == 3) return c.strikes == 0 ? 0.95 : 0.9;
+  if (c.strikes == 2 && c.balls <= 1) return 0.30;
+  const int lead = c.balls - c.strikes;  // > 0: the batter is ahead
+  return std::clamp(0.58 + 0.08 * lead, 0.35, 0.85);
+}
+
 double type_zone_intent(double intent, const PitchType& type, const std::vector<PitchType>& arsenal, double command_sd) {
   // The fastball he throws for the zone, the changeup he throws to be chased; at 3-0 every
   // type still mostly for the zone.
@@ -134,7 +141,7 @@ Pitcher::Pitcher(PitcherProfile profile, std::uint64_t seed) : profile_(std::mov
   meant_mix_ = mix_zone_share(profile_.arsenal, profile_.command_sd);
 }
 
-const PitchType& Pitcher::choose_type(const Count& c) {
+std::size_t Pitcher::choose_type(const Count& c) {
   // His mix, with more fastballs when he needs a strike and more breaking balls with two
   // strikes (ESTIMATE of the pattern in Statcast's pitch mix by count).
   const bool behind = c.balls >= 2 && c.balls > c.strikes;
@@ -150,16 +157,17 @@ const PitchType& Pitcher::choose_type(const Count& c) {
   }
   double x = rng_.uniform() * total;
   for (std::size_t i = 0; i < w.size(); ++i) {
-    if (x < w[i]) return profile_.arsenal[i];
+    if (x < w[i]) return i;
     x -= w[i];
   }
-  return profile_.arsenal.back();
+  return profile_.arsenal.size() - 1;
 }
 
 PlannedPitch Pitcher::next(const Count& count, bool batter_left) {
   ++thrown_;
   PlannedPitch out;
-  const PitchType& type = choose_type(count);
+  const std::size_t k = choose_type(count);
+  const PitchType& type = profile_.arsenal[k];
   out.call.type = type;
   out.call.left_handed = profile_.left_handed;
   out.call.type.speed = std::clamp(type.speed + rng_.normal(profile_.speed_sd), PitchType::kSpeed.min, PitchType::kSpeed.max);
@@ -167,7 +175,6 @@ PlannedPitch Pitcher::next(const Count& count, bool batter_left) {
   // Sides seen from the catcher, + toward first base; "away" from a right-handed batter is +.
   const double away = batter_left ? -1.0 : 1.0;
   const double mid = 0.5 * (StrikeZone::kLow + StrikeZone::kHigh);
-  const std::size_t k = static_cast<std::size_t>(&type - profile_.arsenal.data());
   out.in_zone_intent = rng_.uniform() < combine_odds(zone_intent(count), meant_[k], meant_mix_);
   if (out.in_zone_intent) {
     // A spot in the zone, nearer its edges than its middle: 0.1 m inside an edge of a

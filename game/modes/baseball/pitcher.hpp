@@ -14,6 +14,10 @@
 
 namespace sweetspot {
 
+/// The baseball's radius (assets' "mlb"), m: the strike zone and the batter's body are judged
+/// against any part of the ball.
+inline constexpr double kBaseballRadius = 0.0369;
+
 /// The strike zone at the plate for the league's typical batter: 17 in wide (the plate),
 /// 1.6 to 3.5 ft high (MLB Rule 2.00 defines it by the batter's stance). Ball-centre limits
 /// for a ball of radius `r`: any part of the ball over any part of the zone.
@@ -59,12 +63,12 @@ class Pitcher {
   int pitches_thrown() const { return thrown_; }
 
  private:
-  const PitchType& choose_type(const Count& count);
+  std::size_t choose_type(const Count& count);  ///< index into the arsenal
 
   PitcherProfile profile_;
   Rng rng_;
   int thrown_ = 0;
-  std::vector<double> meant_;  ///< each type's zone share as he means it (meant_zone_share)
+  std::vector<double> meant_;  ///< each type's zone share as he means it, through his command
   double meant_mix_ = 0.5;     ///< his mix's
 };
 
@@ -76,21 +80,10 @@ double zone_intent(const Count& count);
 /// That intent for one type of his arsenal: the count's odds times the type's zone odds
 /// (PitchType::zone_share) over his mix's, usage-weighted: over his mix the intent is kept.
 /// With his command (`command_sd`, m), the share he means is the one that makes the type's
-/// zone_share cross the zone: zone_odds says how often a pitch meant for it, or meant to be
+/// zone_share cross the zone, given how often a pitch meant for it, or meant to be
 /// chased, does. 0: perfect command, the shares as published.
 double type_zone_intent(double intent, const PitchType& type, const std::vector<PitchType>& arsenal, double command_sd = 0.0);
 
-/// How often a pitch of `type` crosses the zone through a command of `command_sd` (m per
-/// axis): meant for it (a corner or the heart, as Pitcher::next picks them) and meant to be
-/// chased (over the top, or under and away).
-struct ZoneOdds {
-  double meant_in = 1.0, chased_in = 0.0;
-};
-ZoneOdds zone_odds(const PitchType& type, double command_sd);
-/// The zone share he means a type for so that its zone_share crosses it (2-98 %), and his
-/// mix's, usage-weighted.
-double meant_zone_share(const PitchType& type, double command_sd);
-double mix_zone_share(const std::vector<PitchType>& arsenal, double command_sd);
 
 /// A right-handed batter's hands in his stance, held at his back shoulder over the inner line
 /// of the box: m from the middle of the plate toward him, m up, and the reach of his fists and

@@ -40,9 +40,36 @@ const char* base_name(int base) {
   return kNames[static_cast<std::size_t>(std::clamp(base, 0, 4))];
 }
 
-double run_time(double speed, double distance) { return distance / std::max(speed, 1.0); }
+// A runner is not at his top speed when he starts: from v0 he closes on it as a sprinter
+// does, v(t) = v_max − (v_max − v0)·e^(−t/τ), and so covers d in d/v_max plus τ(1 − v0/v_max)
+// once he is up to speed. τ from the steal: MLB's average steal time from the first move is
+// 3.30 s from a 12 ft lead (Baseball Factory's scouting standard; coaches say 3.3-3.4 s); the
+// 78 ft at the league's 27 ft/s sprint speed (Statcast) take 2.89 s at top speed, so τ ≈ 0.4 s
+// (the slide's last steps inside it; at a base stealer's 28 ft/s it would be 0.5 s).
+constexpr double kSprintTau = 0.4;  // s
+// A runner on base is all but standing when the ball is hit: his secondary lead's shuffle
+// lands as the ball reaches the zone (off second his walking lead, at a walk), ~1 m/s toward
+// the next base (ESTIMATE); tagging up, or turned back to his base, he starts from rest.
+constexpr double kShuffleSpeed = 1.0;  // m/s
 
 }  // namespace
+
+double sprint_time(double top_speed, double distance, double start_speed) {
+  const double v = std::max(top_speed, 1.0);
+  if (distance <= 0.0) return 0.0;
+  const double lag = kSprintTau * (1.0 - std::clamp(start_speed, 0.0, v) / v);
+  // Newton's method from the bound d/v + lag, which x(t) approaches from above: x(t) is
+  // increasing and convex, so every step lands between the root and the last guess.
+  double t = distance / v + lag;
+  for (int i = 0; i < 8; ++i) {
+    const double fade = std::exp(-t / kSprintTau);
+    const double x = v * (t - lag * (1.0 - fade));
+    const double dx = v * (1.0 - lag / kSprintTau * fade);
+    if (dx <= 0.0) break;
+    t -= (x - distance) / dx;
+  }
+  return t;
+}
 
 void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const Team& fielding, Rng& throws,
                          std::vector<int>& scored, int& outs_made, std::string& description) {
@@ -68,16 +95,17 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   // The seconds by which the runner from `from`, starting `start` s after contact `lead` m off
   // his base, beats the ball to `to` (negative: the ball is there first).
   const auto spare = [&](int who, int from, int to, double start, double lead, double ready) {
+    const double from_speed = lead > 0.0 ? kShuffleSpeed : 0.0;  // off his lead, or tagging up from the bag
     const double dist = (to - from) * kBaseLine - lead;
-    const double runner = start + run_time(sprint(who), dist) + (to - from - 1) * kBaseRoundingTime;
-    double ahead = at_base(to, ready) - runner;
+    const double runner = start + sprint_time(sprint(who), dist, from_speed) + (to - from - 1) * kBaseRoundingTime;
+    double ahead = at_base(to, ready) + kTagTime - runner;
     // A fielder with the ball beside the base path tags him on the way (a ball hit in front
     // of him): the nearest point of his last leg to the fielder, who starts from where he has it.
     const Vec3 a = base_position(to - 1), b = base_position(to);
     const Vec3 leg = (b - a) / kBaseLine;
     const double along = std::clamp((p.fielded_at - a).dot(leg), 0.0, kBaseLine);
     const Vec3 meet = a + along * leg;
-    const double runner_there = start + run_time(sprint(who), (to - 1 - from) * kBaseLine + along - lead) +
+    const double runner_there = start + sprint_time(sprint(who), (to - 1 - from) * kBaseLine + along - lead, from_speed) +
                                 (to - from - 1) * kBaseRoundingTime;
     const double fielder_there = ready + fielder_run_time(f, apart(p.fielded_at, meet)) - f.reaction;
     return std::min(ahead, fielder_there - runner_there);
@@ -163,7 +191,7 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
       double off = kLead[static_cast<std::size_t>(b - 1)];
       if (p.catch_probability < kPlainHit && turns > kReadAir) off += sprint(who) * (turns - kReadAir);
       off = std::min(off, kBaseLine);
-      const double back = std::max(turns + kRead + run_time(sprint(who), off), caught);
+      const double back = std::max(turns + kRead + sprint_time(sprint(who), off, 0.0), caught);
       const double throw_there = at_base(b, caught);
       if (!safe(throw_there - back)) {
         put_out(b, b);
@@ -202,7 +230,7 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
   // A ground ball out: with a runner forced at second and fewer than two out, the lead
   // runner first, then the relay to first for two when it beats the batter.
   if (outs < 2 && bases[0] >= 0) {
-    const double runner = kRead + run_time(sprint(bases[0]), kBaseLine - kLead[0]);
+    const double runner = kRead + sprint_time(sprint(bases[0]), kBaseLine - kLead[0], kShuffleSpeed);
     const double at_second = at_base(2, p.ready_time);
     if (at_second < runner) {
       // The pivot at second: the second baseman when the shortstop or third baseman fields

@@ -32,6 +32,12 @@ struct HalfInning {
                int& outs_made, std::string& description);
 };
 
+/// Seconds a runner with top speed `top_speed` m/s takes over `distance` m starting at
+/// `start_speed` m/s: he closes on his top speed as a sprinter does, v(t) = v_max − (v_max −
+/// v0)·e^(−t/τ) (τ 0.4 s, from MLB's steal times), so once up to speed he trails a runner at
+/// top speed all the way by τ(1 − v0/v_max).
+double sprint_time(double top_speed, double distance, double start_speed);
+
 /// How many of the bases have a runner on them.
 int runners_on(const Bases& b);
 

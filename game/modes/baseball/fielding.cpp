@@ -513,7 +513,7 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   // throw as it comes (kThrowSpread) can still get him there.
   int reached = 1;
   for (int base = 2; base <= 3; ++base) {
-    const double spare = defence(base) - (to_first + (base - 1) * base_to_base);
+    const double spare = defence(base) + kTagTime - (to_first + (base - 1) * base_to_base);
     if (spare < kBatterExtraBaseMargin) break;
     if (rng && spare + rng->normal(kThrowSpread) < 0.0) {
       play.batter_out_at = base;

@@ -103,6 +103,11 @@ bool is_fair_ball(const ShotResult& shot, const Defense* defense = nullptr, bool
 /// estimate is out when the throw as it comes beats him.
 inline constexpr double kThrowSpread = 0.2;
 
+/// s from the throw in the glove at a base to the tag on a sliding runner: the glove sweeps
+/// from the catch down to his hand or foot, ~0.5 m at the ~4 m/s of a quick tag, and the
+/// fielder must see where he slides (ESTIMATE). A force play needs only the ball at the bag.
+inline constexpr double kTagTime = 0.15;
+
 /// Who takes a throw at `base` (1..3, 4 = home) on a ball `fielder` played (kPositionNames'
 /// index): the catcher at home; at third the third baseman, the shortstop when the third
 /// baseman fielded it; at second the second baseman on a ball to the left side (SS, 3B, LF)

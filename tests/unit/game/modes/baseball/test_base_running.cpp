@@ -50,7 +50,7 @@ TEST_CASE("a runner sent home on a single is thrown out now and then, never afte
   const Team batting(test::assets(), "home", batter_skill("pro"), 3);
   const Team fielding(test::assets(), "away", batter_skill("pro"), 4);
   // The fielder is slow to the ball: the runner from second is sent with a little to spare.
-  const PlateAppearance pa = single_to_right(4.4);
+  const PlateAppearance pa = single_to_right(4.6);
   int thrown_out = 0, scored_second = 0;
   for (std::uint64_t seed = 1; seed <= 200; ++seed) {
     for (int to_win : {0, 1}) {
@@ -79,4 +79,26 @@ TEST_CASE("a runner sent home on a single is thrown out now and then, never afte
   CHECK(thrown_out > 5);  // sent with ~0.3 s to spare: about one in fifteen (kThrowSpread 0.2 s)
   CHECK(thrown_out < 80);
   CHECK(scored_second + thrown_out == 200);  // he was sent every time
+}
+
+TEST_CASE("a runner reaches his top speed as a sprinter does: MLB's steal time from a stand", "[baseball][game][running]") {
+  const double ft = 0.3048, league = 27.0 * ft;  // Statcast's league-average sprint speed
+  // Baseball Factory's scouting standard: an average MLB steal of second takes 3.30 s from the
+  // runner's first move off a 12 ft lead (the slide included).
+  CHECK(sprint_time(league, 78.0 * ft, 0.0) == Approx(3.30).margin(0.05));
+  // Already at top speed he gains nothing more; from a stand he is slower, never faster.
+  CHECK(sprint_time(league, 20.0, league) == Approx(20.0 / league).epsilon(1e-12));
+  for (double d : {0.5, 3.0, 10.0, 27.432, 60.0}) {
+    CHECK(sprint_time(league, d, 0.0) > d / league);
+    CHECK(sprint_time(league, d, 0.0) > sprint_time(league, d, 1.0));
+    CHECK(sprint_time(league, d, 1.0) > sprint_time(league, d, 3.0));
+  }
+  // Once up to speed he trails a runner at top speed all the way by a fixed time (under a
+  // second: 90 ft from a stand at 27 ft/s is no slower than Statcast's 4.47 s home to first,
+  // which has the swing's finish in it as well).
+  const double lag = sprint_time(league, 100.0, 0.0) - 100.0 / league;
+  CHECK(sprint_time(league, 200.0, 0.0) - 200.0 / league == Approx(lag).margin(1e-9));
+  CHECK(lag > 0.2);
+  CHECK(sprint_time(league, 90.0 * ft, 0.0) < 4.47);
+  CHECK(sprint_time(league, 0.0, 0.0) == 0.0);
 }

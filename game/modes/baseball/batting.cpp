@@ -205,7 +205,8 @@ SwingResult swing_at(const Assets& assets, const PitchFlight& pitch, const Swing
   const BallSpec& ball = eq.ball("mlb");
   BatSwing s;
   check_range("swing.effort", in.effort, SwingInput::kEffort, "");
-  s.bat_speed = bat_speed * (in.power ? 1.0 : 0.92) * in.effort;
+  check_range("swing.speed_error", in.speed_error, SwingInput::kSpeedError, "m/s");
+  s.bat_speed = (bat_speed + in.speed_error) * (in.power ? 1.0 : 0.92) * in.effort;
   check_range("swing.contact_lead", in.contact_lead, SwingInput::kContactLead, "rad");
   check_range("swing.aim_inside", in.aim_inside, SwingInput::kAimInside, "m");
   // Turned past where he meant to meet it (+ late), from square: the bat met a pitch he meant

@@ -93,6 +93,8 @@ SwingInput Hitter::swing(const PitchRead& r, const Count& c) {
   s.reach_error = std::clamp(r.away_error, SwingInput::kReach.min, SwingInput::kReach.max);
   // He meets it where he sees it: an inside pitch out front.
   s.contact_lead = contact_lead_for(inside_by(r.seen, left_));
+  s.speed_error = std::clamp(rng_.normal(skill_.bat_speed_sd * skill_.bat_speed), SwingInput::kSpeedError.min,
+                             SwingInput::kSpeedError.max);
   return s;
 }
 

@@ -53,7 +53,6 @@ double within(double aim, double lo, double hi, double sd) {
   return cdf(hi) - cdf(lo);
 }
 
-
 // How often a pitch of a type crosses the zone through his command (m per axis): meant for
 // it (a corner or the heart, as Pitcher::next picks them) and meant to be chased (over the
 // top, or under and away).

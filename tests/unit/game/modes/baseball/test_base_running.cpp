@@ -5,6 +5,8 @@
 
 #include "game/content/resolve.hpp"
 #include "game/modes/baseball/base_running.hpp"
+#include "game/modes/baseball/batting.hpp"
+#include "physics/units.hpp"
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
@@ -82,10 +84,10 @@ TEST_CASE("a runner sent home on a single is thrown out now and then, never afte
 }
 
 TEST_CASE("a runner reaches his top speed as a sprinter does: MLB's steal time from a stand", "[baseball][game][running]") {
-  const double ft = 0.3048, league = 27.0 * ft;  // Statcast's league-average sprint speed
+  const double league = batter_skill("pro").sprint_speed;  // 27 ft/s: Statcast's league average
   // Baseball Factory's scouting standard: an average MLB steal of second takes 3.30 s from the
   // runner's first move off a 12 ft lead (the slide included).
-  CHECK(sprint_time(league, 78.0 * ft, 0.0) == Approx(3.30).margin(0.05));
+  CHECK(sprint_time(league, ft_to_m(78.0), 0.0) == Approx(3.30).margin(0.05));
   // Already at top speed he gains nothing more; from a stand he is slower, never faster.
   CHECK(sprint_time(league, 20.0, league) == Approx(20.0 / league).epsilon(1e-12));
   for (double d : {0.5, 3.0, 10.0, 27.432, 60.0}) {
@@ -99,6 +101,6 @@ TEST_CASE("a runner reaches his top speed as a sprinter does: MLB's steal time f
   const double lag = sprint_time(league, 100.0, 0.0) - 100.0 / league;
   CHECK(sprint_time(league, 200.0, 0.0) - 200.0 / league == Approx(lag).margin(1e-9));
   CHECK(lag > 0.2);
-  CHECK(sprint_time(league, 90.0 * ft, 0.0) < 4.47);
+  CHECK(sprint_time(league, ft_to_m(90.0), 0.0) < 4.47);
   CHECK(sprint_time(league, 0.0, 0.0) == 0.0);
 }

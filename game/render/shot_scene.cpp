@@ -275,10 +275,32 @@ Camera ShotScene::keep_clear_of_trees(Camera c, const Vec3& subject) const {
   // crown's faces never cut through the view.
   constexpr double kRoom = 0.4;  // m
   const Terrain& terrain = *w->world;
-  SurfaceContact hit;
-  if (!terrain.may_touch(subject, c.eye, kRoom) || !terrain.sweep(subject, c.eye, kRoom, &hit, nullptr)) return c;
-  if (terrain.material(hit.material).kind != SurfaceKind::Tree) return c;
-  c.eye = subject + hit.fraction * (c.eye - subject);
+  // The first tree on the sight line from the subject to `eye`, as the fraction of the way.
+  const auto tree_between = [&](const Vec3& eye) -> std::optional<double> {
+    SurfaceContact hit;
+    if (!terrain.may_touch(subject, eye, kRoom) || !terrain.sweep(subject, eye, kRoom, &hit, nullptr)) return std::nullopt;
+    if (terrain.material(hit.material).kind != SurfaceKind::Tree) return std::nullopt;
+    return hit.fraction;
+  };
+  const auto blocked = tree_between(c.eye);
+  if (!blocked) return c;
+  // Raised in 5 deg steps (small enough that the view turns, rather than jumps, as the ball
+  // runs past a tree): the eye keeps its distance and its bearing from the ball.
+  const Vec3 from_subject = c.eye - subject;
+  const double reach = from_subject.norm();
+  const double flat = std::hypot(from_subject.x(), from_subject.z());
+  if (reach > 1e-6 && flat > 1e-6) {
+    const Vec3 bearing(from_subject.x() / flat, 0.0, from_subject.z() / flat);
+    const double from = std::atan2(from_subject.y(), flat);
+    constexpr double kStep = deg_to_rad(5.0), kSteepest = deg_to_rad(80.0);
+    for (double e = std::max(from, 0.0) + kStep; e <= kSteepest + 1e-9; e += kStep) {
+      const Vec3 eye = subject + reach * (std::cos(e) * bearing + std::sin(e) * Vec3::UnitY());
+      if (tree_between(eye)) continue;
+      c.eye = eye;  // looking at the same place, from higher up
+      return c;
+    }
+  }
+  c.eye = subject + *blocked * (c.eye - subject);
   return c;
 }
 

@@ -147,9 +147,12 @@ class ShotScene {
   /// world's, or the surrounding plane's), the target kept: a mouse orbit or a framing
   /// never looks from under the turf.
   Camera keep_above_ground(Camera c, double clearance = 1.0) const;
-  /// `c` with its eye brought in toward `subject` (the ball), if needed, to stand in front of
-  /// the first tree between them: a camera that follows the ball under a canopy looks at it,
-  /// not at the inside of a crown. Only trees: ground between them is keep_above_ground's.
+  /// `c` with a clear view of `subject` (the ball) past the trees: where a crown stands between
+  /// them, the eye rises about the ball at the same distance, as a broadcast's tower camera
+  /// looks over the trees (the lowest clear view up to 80 deg down); where no height clears
+  /// it (a ball under a canopy), the eye comes in to stand in front of the first tree between
+  /// them, so it looks at the ball, not at the inside of a crown. Only trees: ground between
+  /// them is keep_above_ground's.
   Camera keep_clear_of_trees(Camera c, const Vec3& subject) const;
   /// Everything to draw at time t (s; clamped to the shot) seen by `camera`. A negative t
   /// is the pre-roll: the ball waits at launch and the club or bat comes down its swing.

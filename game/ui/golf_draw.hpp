@@ -32,10 +32,14 @@ struct GolfUnits {
   static constexpr double kNear = 20.0;  ///< m: ~22 yd, a chip's length, where golfers count feet
 };
 
-/// Downhill arrows on the green: where the ground tilts and how much (rise over run).
+/// Downhill arrows on the green: where the ground tilts and how much (rise over run), and
+/// the room the arrow has (m, the spacing of its neighbours: it is drawn shorter than that).
 struct SlopeArrow {
   Vec3 at, downhill;
+  double room = 1.0;
 };
+/// The green's slope where a golfer reads it: along the line from the ball to a little past
+/// the cup, as wide as a putt of that length can break, on a grid that grows with the putt.
 std::vector<SlopeArrow> green_slopes(const WorldAsset& w, const Vec3& ball, const Vec3& pin);
 
 /// `flight_t`: seconds into the last stroke's flight (the HUD says in the air or running out).

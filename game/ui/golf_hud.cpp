@@ -246,21 +246,29 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       else ImGui::Text("Aim: %s %s of the cup (%.1f deg)", break_length(std::abs(off), units).c_str(), off > 0.0 ? "right" : "left",
                        std::abs(deg));
     } else {
-      // The caddie's aim off the pin says why; the player's own says nothing.
+      // The caddie's aim off the pin says why; the player's own says nothing. Off the pin as a
+      // golfer picks a target: how far beside the flag the line passes (14 deg is 7 yd on a
+      // 29 yd pitch and 40 yd on a drive), the angle after it.
       const bool right = play.aim() >= 0.0;
       const char* why = "";
       switch (play.aim_why()) {
-        case GolfPlay::AimWhy::Corner: why = " (the dogleg's corner)"; break;
-        case GolfPlay::AimWhy::Bend: why = " (down the fairway: the hole bends slightly)"; break;
-        case GolfPlay::AimWhy::WayOut: why = " (the way past the tree)"; break;
-        case GolfPlay::AimWhy::Wind: why = right ? " (the wind drifts it left)" : " (the wind drifts it right)"; break;
-        case GolfPlay::AimWhy::Slope: why = right ? " (the slope brings it back left)" : " (the slope brings it back right)"; break;
-        case GolfPlay::AimWhy::Line: why = " (where the caddie sees it finish nearest)"; break;
+        case GolfPlay::AimWhy::Corner: why = "the dogleg's corner"; break;
+        case GolfPlay::AimWhy::Bend: why = "down the fairway: the hole bends slightly"; break;
+        case GolfPlay::AimWhy::WayOut: why = "the way past the tree"; break;
+        case GolfPlay::AimWhy::Wind: why = right ? "the wind drifts it left" : "the wind drifts it right"; break;
+        case GolfPlay::AimWhy::Slope: why = right ? "the slope brings it back left" : "the slope brings it back right"; break;
+        case GolfPlay::AimWhy::Line: why = "where the caddie sees it finish nearest"; break;
         case GolfPlay::AimWhy::Pin: break;
       }
-      if (std::abs(rad_to_deg(play.aim())) < 0.05) ImGui::Text("Aim: at the pin");  // "0.0 deg right" has no side
+      const double deg = std::abs(rad_to_deg(play.aim()));
+      constexpr double kBesideReads = 45.0;  // deg: wider than this the flag is not the target
+      const std::string side = right ? "right" : "left";
+      if (deg < 0.05) ImGui::Text("Aim: at the pin");  // "0.0 deg right" has no side
       // Wrapped: the caddie's reason runs past the panel's width.
-      else ImGui::TextWrapped("Aim: %.1f deg %s of the pin%s", std::abs(rad_to_deg(play.aim())), right ? "right" : "left", why);
+      else if (deg < kBesideReads)
+        ImGui::TextWrapped("Aim: %s %s of the pin (%.1f deg%s%s)", units.course(r.to_pin() * std::tan(deg_to_rad(deg))).c_str(),
+                           side.c_str(), deg, *why ? "; " : "", why);
+      else ImGui::TextWrapped("Aim: %.1f deg %s of the pin%s%s%s", deg, side.c_str(), *why ? " (" : "", why, *why ? ")" : "");
     }
     if (const auto& read = play.putt_read(); read && play.human_turn())
       ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());

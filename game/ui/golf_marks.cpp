@@ -37,16 +37,26 @@ double ground_y(const WorldAsset& world, double x, double z, double fallback) {
 
 std::vector<SlopeArrow> green_slopes(const WorldAsset& w, const Vec3& ball, const Vec3& pin) {
   std::vector<SlopeArrow> out;
-  const Vec3 mid = 0.5 * (ball + pin);
-  const double span = std::clamp(0.6 * std::hypot(pin.x() - ball.x(), pin.z() - ball.z()) + 3.0, 4.0, 14.0);
-  for (double dx = -span; dx <= span + 1e-9; dx += span / 5.0) {
-    for (double dz = -span; dz <= span + 1e-9; dz += span / 5.0) {
+  const double length = std::hypot(pin.x() - ball.x(), pin.z() - ball.z());
+  const Vec3 along = length > 1e-6 ? Vec3(Vec3(pin.x() - ball.x(), 0.0, pin.z() - ball.z()) / length) : Vec3(Vec3::UnitX());
+  const Vec3 across(-along.z(), 0.0, along.x());
+  // Six rows to the cup, never closer than 0.6 m (a putter head's length and a half) nor
+  // wider than 2.5 m; the rows run 2 m past the cup, where a missed putt stops and the slowing
+  // ball breaks most. Across, a quarter of the putt each side and a metre: a green's 1-3 %
+  // breaks a putt by well under that. Nothing behind the ball (the camera stands there, and
+  // the ball never rolls there), the first row half a step in front of it.
+  const double step = std::clamp(length / 6.0, 0.6, 2.5);
+  const double half_width = std::clamp(0.25 * length + 1.0, 1.2, 6.0);
+  const int columns = static_cast<int>(std::floor(half_width / step));
+  for (double a = 0.5 * step; a <= length + 2.0 + 1e-9; a += step) {
+    for (int c = -columns; c <= columns; ++c) {
+      const Vec3 p = ball + a * along + (c * step) * across;
       SurfaceContact hit;
-      if (!ground_under(*w.world, mid.x() + dx, mid.z() + dz, 400.0, 420.0, &hit)) continue;
+      if (!ground_under(*w.world, p.x(), p.z(), 400.0, 420.0, &hit)) continue;
       if (w.world->material(hit.material).kind != SurfaceKind::Green) continue;
       const Vec3& n = hit.normal;
       const Vec3 flat(n.x(), 0.0, n.z());
-      out.push_back({hit.point, flat / std::max(n.y(), 1e-6)});
+      out.push_back({hit.point, flat / std::max(n.y(), 1e-6), step});
     }
   }
   return out;
@@ -129,7 +139,8 @@ std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes) {
     if (s < 1e-4) continue;
     const Vec3 dir = a.downhill / s;
     const double steep = std::clamp(s / 0.04, 0.0, 1.0);
-    const double len_m = 0.4 + 0.8 * steep;
+    // Never longer than 80 % of its room, so neighbours never run into each other.
+    const double len_m = a.room * (0.35 + 0.45 * steep);
     const float red = static_cast<float>(steep);
     out.push_back({a.at - 0.5 * len_m * dir, a.at + 0.5 * len_m * dir, Eigen::Vector3f(1.0f, 1.0f - 0.75f * red, 1.0f - red)});
   }

@@ -232,7 +232,22 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   count_before_ = count_;
   if (game_) board_before_ = game_->board();
   told_ = !last_.result.contact;
-  char text[160];
+  char text[256];
+  // Where on the bat, and, when it went straight up or into the dirt, which side of the
+  // ball's centre; and when he met it, as a miss's call says it, in his own time: early pulls
+  // the ball, late sends it the other way. What to change next swing, said while the ball
+  // flies and kept in its call once it is down (a foul most of all: it is the swing to mend).
+  // Within half a 60 Hz frame (8 ms) no key press is finer: on time.
+  std::string how_met;
+  if (last_.result.contact) {
+    const double la = rad_to_deg(last_.result.shot.launch.vertical_angle);
+    const char* side = la > 50.0 ? ", under the ball" : la < -20.0 ? ", on top of the ball" : "";  // Statcast's pop-ups leave above 50 deg
+    constexpr double kOnTimeMs = 8.0;
+    char when[32] = ", on time";
+    if (std::abs(pressed_ms) >= kOnTimeMs)
+      std::snprintf(when, sizeof when, ", %.0f ms %s", std::abs(pressed_ms), pressed_ms > 0.0 ? "late" : "early");
+    how_met = std::string(contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip)) + side + when;
+  }
   if (last_.result.contact) {
     const std::string words = last_.result.outcome == BattedOutcome::Foul ? (last_.result.foul_tip ? "Foul tip" : "Foul ball")
                                                                            : last_.result.play.description;
@@ -248,8 +263,8 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     else if (grounder)  // a foul grounder: where it was touched or stopped, as the field's label
       std::snprintf(how_far, sizeof how_far, "%.0f ft", m_to_ft(played_.summary.total_m));
     else std::snprintf(how_far, sizeof how_far, "%.0f ft", m_to_ft(played_.summary.carry_m));
-    std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %s", words.c_str(), mps_to_mph(last_.result.shot.launch.ball_speed),
-                  rad_to_deg(launch), how_far);
+    std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %s; %s", words.c_str(), mps_to_mph(last_.result.shot.launch.ball_speed),
+                  rad_to_deg(launch), how_far, how_met.c_str());
     call_text_ = text;
     batted_at_ = t;
     stage_ = Stage::Batted;
@@ -267,22 +282,11 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   if (stage_ == Stage::Batted) {
     // While the ball flies the call is its launch, as a broadcast shows it; the outcome when it lands.
     outcome_text_ = call_text_;
-    // Where on the bat, and, when it went straight up or into the dirt, which side of the
-    // ball's centre: what to change next swing (Statcast's pop-ups leave above 50 deg).
-    const double la = rad_to_deg(last_.result.shot.launch.vertical_angle);
-    const char* side = la > 50.0 ? ", under the ball" : la < -20.0 ? ", on top of the ball" : "";
     // Exit velocity to a tenth, as Statcast gives it: 94.6 mph rounded to "95" read as hard-hit
     // (95 mph and up) where the session's figures count it as not.
-    // And when he met it, as a miss's call says it, in his own time: early pulls the ball,
-    // late sends it the other way, so the next swing knows which way to move. Within half a
-    // 60 Hz frame (8 ms) no key press is finer: on time.
-    constexpr double kOnTimeMs = 8.0;
-    char when[32] = ", on time";
-    if (std::abs(pressed_ms) >= kOnTimeMs)
-      std::snprintf(when, sizeof when, ", %.0f ms %s", std::abs(pressed_ms), pressed_ms > 0.0 ? "late" : "early");
-    std::snprintf(text, sizeof text, "%s%.1f mph off the bat, %.0f deg, %s%s%s", by_pro ? "The pro: " : "",
-                  mps_to_mph(last_.result.shot.launch.ball_speed), la, contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip),
-                  side, when);
+    const double la = rad_to_deg(last_.result.shot.launch.vertical_angle);
+    std::snprintf(text, sizeof text, "%s%.1f mph off the bat, %.0f deg, %s", by_pro ? "The pro: " : "",
+                  mps_to_mph(last_.result.shot.launch.ball_speed), la, how_met.c_str());
     call_text_ = text;
   }
   // What the call will say once the ball is down (a batted ball's outcome, counted), or says now.

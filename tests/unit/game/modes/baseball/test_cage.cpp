@@ -315,23 +315,27 @@ TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where i
       // A foul grounder: where it was called, passing the bag, touched or stopped (the field's
       // label), not its first hop nor its roll on up the line.
       foul_grounder = true;
-      std::snprintf(want, sizeof want, ", %.0f ft", m_to_ft(played.summary.total_m));
+      std::snprintf(want, sizeof want, ", %.0f ft; ", m_to_ft(played.summary.total_m));
       INFO(cage.call_text());
       CHECK_THAT(cage.call_text(), Catch::Matchers::Contains(want));
+      CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith(", on time"));  // and how he met it
     }
     if (!r.contact || r.outcome == BattedOutcome::Foul || r.outcome == BattedOutcome::HomeRun) continue;
     if (on_ground && !r.play.caught && r.play.fielder >= 0) {
       grounder = true;
-      std::snprintf(want, sizeof want, "fielded at %.0f ft", m_to_ft(played.summary.total_m));
+      std::snprintf(want, sizeof want, "fielded at %.0f ft; ", m_to_ft(played.summary.total_m));
       INFO(cage.call_text());
-      CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith(want));
+      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains(want));
       CHECK(played.summary.total_m > r.shot.trajectory.summary.carry_m);  // past its first hop
     } else if (!on_ground) {
       fly = true;
-      std::snprintf(want, sizeof want, ", %.0f ft", m_to_ft(played.summary.carry_m));
+      std::snprintf(want, sizeof want, ", %.0f ft; ", m_to_ft(played.summary.carry_m));
       INFO(cage.call_text());
-      CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith(want));
+      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains(want));
     }
+    // Once down, the call still says how he met it: where on the bat, and when.
+    INFO(cage.call_text());
+    CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith(", on time"));
   }
   CHECK(grounder);
   CHECK(fly);

@@ -179,14 +179,14 @@ std::string box_score_text(const GameRecord& g) {
     line(out, "%-10s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d   LOB %d\n", "Totals", sum.ab, sum.r, sum.h, sum.doubles,
          sum.triples, sum.hr, sum.rbi, sum.bb, sum.so, sum.hbp, sum.sf, t->left_on_base);
   }
-  line(out, "\nPitching           IP   H  R ER BB SO HR  Pitches-strikes\n");
+  line(out, "\nPitching           IP   H  R ER BB SO HR HBP  Pitches-strikes\n");
   for (const TeamBox* t : {&g.away, &g.home}) {
     for (std::size_t i = 0; i < t->pitchers.size(); ++i) {
       const PitchingLine& p = t->pitchers[i];
       std::string who = t->name + " " + pitcher_name(i);
       if (p.decision != Decision::None) who += std::string(" (") + to_string(p.decision) + ")";
-      line(out, "%-16s %2d.%d %3d %2d %2d %2d %2d %2d  %d-%d\n", who.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.er, p.bb,
-           p.so, p.hr, p.pitches, p.strikes);
+      line(out, "%-16s %2d.%d %3d %2d %2d %2d %2d %2d %3d  %d-%d\n", who.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.er, p.bb,
+           p.so, p.hr, p.hbp, p.pitches, p.strikes);
     }
   }
   // Inherited runners-scored, as a newspaper's box prints it under the pitching lines.

@@ -664,8 +664,19 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       if (!terrain.may_touch(camera.eye, p, kSight) || !terrain.sweep(camera.eye, p, kSight, &hit, nullptr)) return false;
       return terrain.material(hit.material).kind == SurfaceKind::Tree;
     };
+    // No gap between two numbers written: once a stripe's number is crowded out, none is
+    // written on its far side from one already there, so a "150" never stands just above a
+    // "50" as if they were neighbours.
+    std::vector<int> placed_k, crowded_out;
+    const auto past_a_gap = [&](int k) {
+      for (const int p : placed_k)
+        for (const int j : crowded_out)
+          if ((j - k) * (j - p) < 0) return true;  // j strictly between k and p
+      return false;
+    };
     for (const auto& [k, on_line] : written) {
       const std::string text = std::to_string(k * 50);
+      if (past_a_gap(k)) continue;
       const auto seen = camera.project(on_line, width, height);
       // A stripe whose middle is out of the picture has no number: slid in to the image's
       // edge, the side view's far stripes would stand there in a column ("450 50 300 150").
@@ -675,16 +686,24 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const bool crowded = std::any_of(numbers.begin(), numbers.end(), [&](const Eigen::Vector3d& o) {
         return box[0] < o[1] + h_px && o[0] < box[1] + h_px && std::abs(box[2] - o[2]) < line_px;
       });
-      if (crowded || behind_tree(on_line + Vec3(0.0, 0.5, 0.0))) continue;
+      if (crowded) {
+        crowded_out.push_back(k);
+        continue;
+      }
+      if (behind_tree(on_line + Vec3(0.0, 0.5, 0.0))) continue;
       // Just left of the aim line; where the flag stands there, left of the flag instead.
       const double beside = 8.0 * style_scale;  // px from the line to the number
+      bool placed = false;
       for (const double clear_px : {beside, beside + flag_reach_px}) {
         if (clear_px > beside && flag_reach_px == 0.0) break;
         if (label(text, on_line + cam_up * px(on_line, 6.0) - cam_right * px(on_line, (0.5 * w_px + clear_px) / style_scale), kWhite)) {
           numbers.push_back(box - Eigen::Vector3d(clear_px - beside, clear_px - beside, 0.0));
+          placed_k.push_back(k);
+          placed = true;
           break;
         }
       }
+      if (!placed) crowded_out.push_back(k);
     }
   }
 

@@ -270,7 +270,7 @@ Camera ShotScene::camera(CameraKind kind, double t, int width, int height, const
 
 Camera ShotScene::keep_clear_of_trees(Camera c, const Vec3& subject) const {
   const WorldAsset* w = impl_->input.world;
-  if (w == nullptr) return c;
+  if (w == nullptr || w->trees.empty()) return c;
   // The eye's room among the leaves: wider than the follow camera's 0.1 m near plane, so the
   // crown's faces never cut through the view.
   constexpr double kRoom = 0.4;  // m
@@ -657,7 +657,18 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     // (the numbers are drawn over the scene, the stripes in it): "250" written on a crown
     // reads as the distance to the tree. Tested half a metre over the ground the number marks.
     const auto behind_tree = [&](const Vec3& p) {
-      if (m.input.world == nullptr) return false;
+      if (m.input.world == nullptr || m.input.world->trees.empty()) return false;
+      // Only a crown whose footprint the sight line crosses (seen from above) can hide it:
+      // the world's sweep runs only then.
+      const Eigen::Vector2d a(camera.eye.x(), camera.eye.z()), b(p.x(), p.z());
+      const Eigen::Vector2d ab = b - a;
+      const double ab2 = std::max(ab.squaredNorm(), 1e-12);
+      const bool crosses = std::any_of(m.input.world->trees.begin(), m.input.world->trees.end(), [&](const TreeCrown& c) {
+        const Eigen::Vector2d q(c.centre.x(), c.centre.z());
+        const double u = std::clamp((q - a).dot(ab) / ab2, 0.0, 1.0);
+        return (a + u * ab - q).norm() <= c.radius;
+      });
+      if (!crosses) return false;
       const Terrain& terrain = *m.input.world->world;
       constexpr double kSight = 0.05;  // m: a sight line, not a ball
       SurfaceContact hit;

@@ -270,7 +270,7 @@ Camera ShotScene::camera(CameraKind kind, double t, int width, int height, const
 
 Camera ShotScene::keep_clear_of_trees(Camera c, const Vec3& subject) const {
   const WorldAsset* w = impl_->input.world;
-  if (w == nullptr || w->trees.empty()) return c;
+  if (w == nullptr) return c;
   // The eye's room among the leaves: wider than the follow camera's 0.1 m near plane, so the
   // crown's faces never cut through the view.
   constexpr double kRoom = 0.4;  // m

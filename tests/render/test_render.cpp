@@ -578,12 +578,13 @@ TEST_CASE("the address camera comes out in front of a tree, goes round it, or ov
   }
 }
 
-TEST_CASE("the follow camera stands in front of a tree between it and the ball, not in its crown", "[render][camera]") {
-  // Flat turf and, when asked, a crown's face: a wall 60 m wide and tall across the flight
-  // half way between the ball and where the chase camera would stand behind it.
-  const auto world_with_wall = [](std::optional<double> wall_x) {
+TEST_CASE("the follow camera looks over a tree between it and the ball, or stands in front of it, never in its crown",
+          "[render][camera]") {
+  // Flat turf and, when asked, a crown's face: a wall 60 m wide (and 60 m tall unless told)
+  // across the flight half way between the ball and where the chase camera would stand.
+  const auto world_with_wall = [](std::optional<double> wall_x, double tall = 60.0) {
     std::vector<TreeWall> walls;
-    if (wall_x) walls.push_back(TreeWall{Vec3(*wall_x, 0, -30), Vec3(*wall_x, 0, 30), 60.0});
+    if (wall_x) walls.push_back(TreeWall{Vec3(*wall_x, 0, -30), Vec3(*wall_x, 0, 30), tall});
     auto a = std::make_unique<WorldAsset>();
     a->name = "canopy";
     a->sport = "golf";
@@ -607,13 +608,28 @@ TEST_CASE("the follow camera stands in front of a tree between it and the ball, 
   const Camera free = follow(*open);
   const Vec3 ball = sample_at(shot, t).position;
   REQUIRE(free.eye.x() < ball.x() - 2.0);  // the chase view stands behind the ball
-  SECTION("a crown between them: the eye in front of it, looking the same way") {
+  SECTION("a crown between them: the eye clear of it, looking at the same place") {
     const double wall = 0.5 * (free.eye.x() + ball.x());
     const auto canopy = world_with_wall(wall);
     const Camera c = follow(*canopy);
     CHECK(c.eye.x() > wall + 0.3);
     CHECK(c.eye.x() < ball.x());
     SurfaceContact hit;
+    CHECK_FALSE(canopy->world->sweep(ball, c.eye, 0.1, &hit, nullptr));
+    CHECK((c.target - free.target).norm() < 1e-9);
+  }
+  SECTION("a low crown near the camera: it rises over it, as far from the ball, behind the crown") {
+    // Four fifths of the way back to the eye, and 1.6 m over the ball: above the chase view's
+    // sight line there, below a line the eye at its distance can see over.
+    const double wall = ball.x() - 0.8 * (ball.x() - free.eye.x());
+    const double top = ball.y() + 1.6;
+    const auto canopy = world_with_wall(wall, top);
+    SurfaceContact hit;
+    REQUIRE(canopy->world->sweep(ball, free.eye, 0.1, &hit, nullptr));  // the chase view is blocked
+    const Camera c = follow(*canopy);
+    CHECK(c.eye.y() > top);
+    CHECK(c.eye.x() < wall);  // still on the far side of the crown, not in front of it
+    CHECK((c.eye - ball).norm() == Approx((free.eye - ball).norm()).epsilon(1e-9));
     CHECK_FALSE(canopy->world->sweep(ball, c.eye, 0.1, &hit, nullptr));
     CHECK((c.target - free.target).norm() < 1e-9);
   }

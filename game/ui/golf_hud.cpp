@@ -95,9 +95,11 @@ std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& uni
   std::string pace;
   if (read.plays_as > 0.0) {
     // m: within it the pace is the length's; at least the half foot the pace's words round to
-    // (a 2 ft putt struck as 3 ft is uphill).
-    const double margin = std::max(0.15, 0.08 * read.to_cup);
-    const char* slope = read.plays_as > read.to_cup + margin ? "uphill" : read.plays_as < read.to_cup - margin ? "downhill" : "level";
+    // (a 2 ft putt struck as 3 ft is uphill). Within the wider margin, "slightly": a 53 ft
+    // putt played as 49 ft is not level to a golfer, nor is it a downhill putt.
+    const double margin = std::max(0.15, 0.03 * read.to_cup), wide = std::max(0.15, 0.08 * read.to_cup);
+    const double by = read.plays_as - read.to_cup;
+    const char* slope = by > wide ? "uphill" : by < -wide ? "downhill" : by > margin ? "slightly uphill" : by < -margin ? "slightly downhill" : "level";
     pace = std::string(", ") + slope + ": play it as " + units.putt(read.plays_as) + " on the flat" +
            (read.power >= MeterInput::kPower.max - 1e-9 ? " (beyond a full putt: the blue mark at the end)" : " (blue mark)");
   }

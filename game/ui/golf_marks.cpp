@@ -41,14 +41,16 @@ std::vector<SlopeArrow> green_slopes(const WorldAsset& w, const Vec3& ball, cons
   const Vec3 along = length > 1e-6 ? Vec3(Vec3(pin.x() - ball.x(), 0.0, pin.z() - ball.z()) / length) : Vec3(Vec3::UnitX());
   const Vec3 across(-along.z(), 0.0, along.x());
   // Six rows to the cup, never closer than 0.6 m (a putter head's length and a half) nor
-  // wider than 2.5 m; the rows run 2 m past the cup, where a missed putt stops and the slowing
-  // ball breaks most. Across, a quarter of the putt each side and a metre: a green's 1-3 %
-  // breaks a putt by well under that. Nothing behind the ball (the camera stands there, and
-  // the ball never rolls there), the first row half a step in front of it.
+  // wider than 2.5 m; the rows run past the cup as far as a missed putt of this length stops
+  // (a quarter of it and half a metre, at most 2 m), where the slowing ball breaks most, and
+  // no nearer the green camera behind the cup. Across, a quarter of the putt each side and a
+  // metre: a green's 1-3 % breaks a putt by well under that. Nothing behind the ball (the
+  // camera stands there, and the ball never rolls there), the first row half a step in front.
   const double step = std::clamp(length / 6.0, 0.6, 2.5);
   const double half_width = std::clamp(0.25 * length + 1.0, 1.2, 6.0);
+  const double past = std::min(2.0, 0.25 * length + 0.5);
   const int columns = static_cast<int>(std::floor(half_width / step));
-  for (double a = 0.5 * step; a <= length + 2.0 + 1e-9; a += step) {
+  for (double a = 0.5 * step; a <= length + past + 1e-9; a += step) {
     for (int c = -columns; c <= columns; ++c) {
       const Vec3 p = ball + a * along + (c * step) * across;
       SurfaceContact hit;
@@ -139,8 +141,10 @@ std::vector<GroundArrow> slope_arrows(const std::vector<SlopeArrow>& slopes) {
     if (s < 1e-4) continue;
     const Vec3 dir = a.downhill / s;
     const double steep = std::clamp(s / 0.04, 0.0, 1.0);
-    // Never longer than 80 % of its room, so neighbours never run into each other.
-    const double len_m = a.room * (0.35 + 0.45 * steep);
+    // Never longer than 80 % of its room, so neighbours never run into each other, nor than
+    // 1.2 m: on a long putt's wide grid the rows nearest the camera would fill the picture.
+    constexpr double kLongest = 1.2;  // m
+    const double len_m = std::min(kLongest, a.room * (0.35 + 0.45 * steep));
     const float red = static_cast<float>(steep);
     out.push_back({a.at - 0.5 * len_m * dir, a.at + 0.5 * len_m * dir, Eigen::Vector3f(1.0f, 1.0f - 0.75f * red, 1.0f - red)});
   }

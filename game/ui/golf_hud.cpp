@@ -263,11 +263,16 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
         case GolfPlay::AimWhy::Pin: break;
       }
       const double deg = std::abs(rad_to_deg(play.aim()));
-      constexpr double kBesideReads = 45.0;  // deg: wider than this the flag is not the target
+      // Beside the flag reads only where the flag is the target: within 45 deg of it, and
+      // within the club's reach (its full swing stops within 15 % of the pin); a drive on a
+      // par 5 is aimed at the fairway, and "278 yd left of the pin" says nothing.
+      constexpr double kBesideReads = 45.0;  // deg
+      constexpr double kReachShare = 1.15;
+      const bool flag_is_target = deg < kBesideReads && r.to_pin() <= kReachShare * play.stops_here(club);
       const std::string side = right ? "right" : "left";
       if (deg < 0.05) ImGui::Text("Aim: at the pin");  // "0.0 deg right" has no side
       // Wrapped: the caddie's reason runs past the panel's width.
-      else if (deg < kBesideReads)
+      else if (flag_is_target)
         ImGui::TextWrapped("Aim: %s %s of the pin (%.1f deg%s%s)", units.course(r.to_pin() * std::tan(deg_to_rad(deg))).c_str(),
                            side.c_str(), deg, *why ? "; " : "", why);
       else ImGui::TextWrapped("Aim: %.1f deg %s of the pin%s%s%s", deg, side.c_str(), *why ? " (" : "", why, *why ? ")" : "");

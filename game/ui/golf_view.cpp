@@ -349,7 +349,11 @@ Camera GolfView::green_camera(bool from_pin) const {
     const Vec3 ball = play_->ball_centre();
     const Vec3 d = flat_unit(ball, h.pin);
     const double dist = play_->round().to_pin();
-    c.eye = h.pin + std::clamp(0.3 * dist, 4.0, 25.0) * d + Vec3(0.0, std::clamp(0.15 * dist, 2.0, 20.0), 0.0);
+    // A little to the side of the line, as a broadcast's reverse angle stands: straight down
+    // it, the flagstick rising from the cup would cover the whole line to the ball.
+    const Vec3 side(-d.z(), 0.0, d.x());
+    c.eye = h.pin + std::clamp(0.3 * dist, 4.0, 25.0) * d + std::clamp(0.1 * dist, 0.8, 3.0) * side +
+            Vec3(0.0, std::clamp(0.15 * dist, 2.0, 20.0), 0.0);
     c.target = dist < 60.0 ? Vec3(0.5 * (ball + h.pin)) : h.pin;
     c.fov_y = deg_to_rad(45.0);
     return c;

@@ -269,13 +269,13 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       constexpr double kBesideReads = 45.0;  // deg
       constexpr double kReachShare = 1.15;
       const bool flag_is_target = deg < kBesideReads && r.to_pin() <= kReachShare * play.stops_here(club);
-      const std::string side = right ? "right" : "left";
+      const char* side = right ? "right" : "left";
       if (deg < 0.05) ImGui::Text("Aim: at the pin");  // "0.0 deg right" has no side
       // Wrapped: the caddie's reason runs past the panel's width.
       else if (flag_is_target)
         ImGui::TextWrapped("Aim: %s %s of the pin (%.1f deg%s%s)", units.course(r.to_pin() * std::tan(deg_to_rad(deg))).c_str(),
-                           side.c_str(), deg, *why ? "; " : "", why);
-      else ImGui::TextWrapped("Aim: %.1f deg %s of the pin%s%s%s", deg, side.c_str(), *why ? " (" : "", why, *why ? ")" : "");
+                           side, deg, *why ? "; " : "", why);
+      else ImGui::TextWrapped("Aim: %.1f deg %s of the pin%s%s%s", deg, side, *why ? " (" : "", why, *why ? ")" : "");
     }
     if (const auto& read = play.putt_read(); read && play.human_turn())
       ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());

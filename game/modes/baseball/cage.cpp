@@ -247,8 +247,6 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     if (std::abs(pressed_ms) >= kOnTimeMs)
       std::snprintf(when, sizeof when, ", %.0f ms %s", std::abs(pressed_ms), pressed_ms > 0.0 ? "late" : "early");
     how_met = std::string(contact_spot(assets_.equipment().bat(kBat), last_.result.impact_from_tip)) + side + when;
-  }
-  if (last_.result.contact) {
     const std::string words = last_.result.outcome == BattedOutcome::Foul ? (last_.result.foul_tip ? "Foul tip" : "Foul ball")
                                                                            : last_.result.play.description;
     // How far: to the glove on a catch, where it came down otherwise (Statcast's hit
@@ -264,7 +262,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
       std::snprintf(how_far, sizeof how_far, "%.0f ft", m_to_ft(played_.summary.total_m));
     else std::snprintf(how_far, sizeof how_far, "%.0f ft", m_to_ft(played_.summary.carry_m));
     std::snprintf(text, sizeof text, "%s  %.0f mph, %.0f deg, %s; %s", words.c_str(), mps_to_mph(last_.result.shot.launch.ball_speed),
-                  rad_to_deg(launch), how_far, how_met.c_str());
+                  la, how_far, how_met.c_str());
     call_text_ = text;
     batted_at_ = t;
     stage_ = Stage::Batted;

@@ -84,7 +84,6 @@ double zone_intent(const Count& count);
 /// chased, does. 0: perfect command, the shares as published.
 double type_zone_intent(double intent, const PitchType& type, const std::vector<PitchType>& arsenal, double command_sd = 0.0);
 
-
 /// A right-handed batter's hands in his stance, held at his back shoulder over the inner line
 /// of the box: m from the middle of the plate toward him, m up, and the reach of his fists and
 /// gloves about that point (ESTIMATES; the cage's figure holds the bat there, batter_figure).

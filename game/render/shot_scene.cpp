@@ -559,6 +559,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       if (label(text, anchor + cam_up * px(ground, 1.8 * m.style.label_height_px * k), color)) return;
   };
   // Landing ring with the carry, rest pin with the total (golf yards, baseball feet).
+  std::vector<Vec3> shot_labels_at;  // where on the ground the shot's own distances are written
   if (have_shot) {
     const auto& s = trajectory_.summary;
     const double end_t = samples.back().t;
@@ -575,7 +576,10 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const Vec3 g(lp.x(), ground_at(lp.x(), lp.z()) + 0.05, lp.z());
       const double r = px(g, m.style.marker_radius_px);
       append_ring(scene.ground_overlay, g, 0.65 * r, r, kLandingColor);
-      if (carry_label_) shot_label(shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), g, kLandingColor);
+      if (carry_label_) {
+        shot_label(shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), g, kLandingColor);
+        shot_labels_at.push_back(g);
+      }
     }
     if (t >= end_t - 1e-9 && (s.rest_position - s.landing_position).norm() > 0.5) {
       const Vec3 rp = s.rest_position;
@@ -583,7 +587,10 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const double h = px(g, 30.0);
       append_pin(scene.top_overlay, g, h, px(g, 2.5), cam_right, kRestColor);
       const std::string text = rest_label_.value_or(shown(s.total_m));
-      if (!text.empty()) shot_label(text, g + Vec3(0, h, 0) + cam_up * px(g, 6.0), g, kRestColor);
+      if (!text.empty()) {
+        shot_label(text, g + Vec3(0, h, 0) + cam_up * px(g, 6.0), g, kRestColor);
+        shot_labels_at.push_back(g);
+      }
     }
   }
 
@@ -685,9 +692,19 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
           if ((j - k) * (j - p) < 0) return true;  // j strictly between k and p
       return false;
     };
+    // The ball's own distance written within a few yards of a stripe says the distance there:
+    // "203 yd" over its pin stacked on a "200" reads as two answers. Within 15 % of the spacing
+    // and inside the stripe's width, the stripe keeps its line and gives up its number (the gap
+    // rule above does not count it: the ball's label stands in for it).
+    const auto beside_shot_label = [&](int k) {
+      return std::any_of(shot_labels_at.begin(), shot_labels_at.end(), [&](const Vec3& g) {
+        const Vec3 d = g - launch;
+        return std::abs(d.dot(aim) - k * stripe) < 0.15 * stripe && std::abs(d.dot(across)) < half;
+      });
+    };
     for (const auto& [k, on_line] : written) {
       const std::string text = std::to_string(k * 50);
-      if (past_a_gap(k)) continue;
+      if (past_a_gap(k) || beside_shot_label(k)) continue;
       const auto seen = camera.project(on_line, width, height);
       // A stripe whose middle is out of the picture has no number: slid in to the image's
       // edge, the side view's far stripes would stand there in a column ("450 50 300 150").

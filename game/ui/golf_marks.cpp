@@ -119,8 +119,13 @@ void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h) {
   const GolfRound& r = play.round();
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const Vec3 b = play.ball_centre();
-  const double len = r.lie() == "green" ? r.to_pin() + 1.0 : std::min(r.to_pin(), 250.0);
-  const auto p0 = cam.project(b, w, h), p1 = cam.project(b + len * play.aim_direction(), w, h);
+  // On the green the line runs a metre past the cup (the pace a putt should carry), except
+  // toward an eye standing beyond the cup on the line, where that metre would point at the
+  // viewer and fill the foreground.
+  const Vec3 aim = play.aim_direction();
+  const bool eye_past_cup = (cam.eye - b).dot(aim) > r.to_pin();
+  const double len = r.lie() != "green" ? std::min(r.to_pin(), 250.0) : r.to_pin() + (eye_past_cup ? 0.0 : 1.0);
+  const auto p0 = cam.project(b, w, h), p1 = cam.project(b + len * aim, w, h);
   if (p0 && p1) dl->AddLine(px(*p0), px(*p1), IM_COL32(255, 255, 255, 170), 2.0f);
 }
 

@@ -76,7 +76,33 @@ std::vector<MeshData> split_into_tiles(const MeshData& mesh, float tile) {
   return out;
 }
 
-MeshData cluster_vertices(const MeshData& mesh, float cell) {
+CellKey cell_of(const Eigen::Vector3f& position, float cell) {
+  return {static_cast<long>(std::floor(position.x() / cell)), static_cast<long>(std::floor(position.y() / cell)),
+          static_cast<long>(std::floor(position.z() / cell))};
+}
+
+SharedCells shared_cells(const MeshData& whole, float cell, std::function<bool(const Vertex&)> shares) {
+  SharedCells out;
+  out.cell = cell;
+  out.shares = std::move(shares);
+  if (!(cell > 0.0f)) return out;
+  std::map<CellKey, float> count;
+  for (const Vertex& v : whole.vertices) {
+    if (!out.shares(v)) continue;
+    auto [it, fresh] = out.at.try_emplace(cell_of(v.position, cell), Eigen::Vector3f::Zero(), Eigen::Vector3f::Zero());
+    it->second.first += v.position;
+    it->second.second += v.normal;
+    count[it->first] += 1.0f;
+  }
+  for (auto& [key, place] : out.at) {
+    place.first /= count[key];
+    const float n = place.second.norm();
+    place.second = n > 0.0f ? Eigen::Vector3f(place.second / n) : Eigen::Vector3f::UnitY();
+  }
+  return out;
+}
+
+MeshData cluster_vertices(const MeshData& mesh, float cell, const SharedCells* shared) {
   if (!(cell > 0.0f)) return mesh;
   // A vertex's cluster: its cell and its colour (quantised to 1/256).
   using Key = std::array<long, 6>;
@@ -85,12 +111,14 @@ MeshData cluster_vertices(const MeshData& mesh, float cell) {
   out.materials = mesh.materials;
   std::vector<std::uint32_t> cluster(mesh.vertices.size());
   std::vector<float> weight;
+  std::vector<const std::pair<Eigen::Vector3f, Eigen::Vector3f>*> anchor;  // per cluster: its shared place, if any
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     const Vertex& x = mesh.vertices[v];
+    const CellKey c = cell_of(x.position, cell);
     Key k{};
-    for (int a = 0; a < 3; ++a) {
-      k[static_cast<std::size_t>(a)] = static_cast<long>(std::floor(x.position[a] / cell));
-      k[static_cast<std::size_t>(3 + a)] = std::lround(x.color[a] * 256.0f);
+    for (std::size_t a = 0; a < 3; ++a) {
+      k[a] = c[a];
+      k[3 + a] = std::lround(x.color[static_cast<Eigen::Index>(a)] * 256.0f);
     }
     auto [it, fresh] = ids.try_emplace(k, static_cast<std::uint32_t>(out.vertices.size()));
     if (fresh) {
@@ -99,21 +127,35 @@ MeshData cluster_vertices(const MeshData& mesh, float cell) {
       first.normal.setZero();
       out.vertices.push_back(first);
       weight.push_back(0.0f);
+      const std::pair<Eigen::Vector3f, Eigen::Vector3f>* place = nullptr;
+      if (shared != nullptr && shared->cell == cell && shared->shares(x)) {
+        const auto found = shared->at.find(c);
+        if (found != shared->at.end()) place = &found->second;
+      }
+      anchor.push_back(place);
     }
-    Vertex& c = out.vertices[it->second];
-    c.position += x.position;
-    c.normal += x.normal;
+    Vertex& cv = out.vertices[it->second];
+    cv.position += x.position;
+    cv.normal += x.normal;
     weight[it->second] += 1.0f;
     cluster[v] = it->second;
   }
   for (std::size_t c = 0; c < out.vertices.size(); ++c) {
+    if (anchor[c] != nullptr) {
+      out.vertices[c].position = anchor[c]->first;
+      out.vertices[c].normal = anchor[c]->second;
+      continue;
+    }
     out.vertices[c].position /= weight[c];
     const float n = out.vertices[c].normal.norm();
     out.vertices[c].normal = n > 0.0f ? Eigen::Vector3f(out.vertices[c].normal / n) : Eigen::Vector3f::UnitY();
   }
+  // Surfaces that share a place keep a vertex each (their colours): a triangle with two
+  // corners at one place has no area left either.
+  const auto same = [&](std::uint32_t a, std::uint32_t b) { return a == b || out.vertices[a].position == out.vertices[b].position; };
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const std::uint32_t a = cluster[mesh.indices[3 * t]], b = cluster[mesh.indices[3 * t + 1]], c = cluster[mesh.indices[3 * t + 2]];
-    if (a == b || b == c || a == c) continue;
+    if (same(a, b) || same(b, c) || same(a, c)) continue;
     out.indices.insert(out.indices.end(), {a, b, c});
     if (!mesh.triangle_material.empty()) out.triangle_material.push_back(mesh.triangle_material[t]);
   }

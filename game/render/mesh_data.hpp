@@ -2,7 +2,10 @@
 // Plain data, float precision (what the GPU gets); positions in metres, world or mesh frame.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,11 +40,28 @@ struct MeshData {
 /// returned; together the tiles hold every triangle once, in order within a tile.
 std::vector<MeshData> split_into_tiles(const MeshData& mesh, float tile);
 
+/// A `cell` m cube of space, by its integer coordinates.
+using CellKey = std::array<long, 3>;
+CellKey cell_of(const Eigen::Vector3f& position, float cell);
+
+/// Where the surfaces that meet in a cell put their shared corners when a mesh is coarsened
+/// piece by piece: the mean position and normal, per cell, of the vertices of the whole mesh
+/// that `shares` picks (a course's ground: every surface that touches its neighbours). The
+/// tiles of one world and the surfaces of one tile (each its own copy of the corners along
+/// its edge) then move those corners to one place, and no crack opens between them.
+struct SharedCells {
+  float cell = 0.0f;  ///< m
+  std::function<bool(const Vertex&)> shares;
+  std::map<CellKey, std::pair<Eigen::Vector3f, Eigen::Vector3f>> at;  ///< position, unit normal
+};
+SharedCells shared_cells(const MeshData& whole, float cell, std::function<bool(const Vertex&)> shares);
+
 /// A coarser `mesh` for far away (vertex clustering: J. Rossignac & P. Borrel, "Multi-
 /// resolution 3D approximations for rendering complex scenes", 1993): the vertices of one
-/// `cell` m cube and one colour become their mean, and triangles left with two corners in
-/// one cluster go. Colours never merge, so a green keeps its edge against the rough, to
-/// within a cell.
-MeshData cluster_vertices(const MeshData& mesh, float cell);
+/// `cell` m cube and one colour become one, at their mean, and triangles left with two
+/// corners in one place go. Colours never merge, so a green keeps its edge against the
+/// rough, to within a cell. With `shared` (made with the same cell), a vertex it picks goes
+/// to its cell's shared place instead of its own colour's mean.
+MeshData cluster_vertices(const MeshData& mesh, float cell, const SharedCells* shared = nullptr);
 
 }  // namespace sweetspot

@@ -177,13 +177,22 @@ ShotScene::ShotScene(const ShotSceneInput& input, const SceneStyle& style) : imp
   double ground_min_y = 0.0;
   if (input.world != nullptr) {
     const WorldDescription& d = input.world->description();
-    for (MeshData& tile : split_into_tiles(world_mesh_data(d), kWorldTile)) {
+    const MeshData whole = world_mesh_data(d);
+    // The ground's surfaces (turf, sand, water, dirt: a textured look) meet edge to edge and
+    // tile to tile; coarsened apart, each would pull its copy of the shared corners toward its
+    // own middle and open a crack there, up to a cell wide, that a far view or the map shows
+    // as a grid of dark lines. Trees and walls stand on their own and keep their own means.
+    const auto ground = [](const Vertex& v) { return v.pattern != surface_look::kPlain && v.pattern != surface_look::kCloth; };
+    std::array<SharedCells, kFarLevels.size()> shared;
+    for (std::size_t l = 0; l < kFarLevels.size(); ++l) shared[l] = shared_cells(whole, kFarLevels[l].cell, ground);
+    for (MeshData& tile : split_into_tiles(whole, kWorldTile)) {
       Eigen::AlignedBox3f box;
       for (const Vertex& v : tile.vertices) box.extend(v.position);
       Impl::Tile w;
       w.mesh = std::make_unique<GpuMesh>(tile);
       w.box = box;
-      for (std::size_t l = 0; l < kFarLevels.size(); ++l) w.far[l] = std::make_unique<GpuMesh>(cluster_vertices(tile, kFarLevels[l].cell));
+      for (std::size_t l = 0; l < kFarLevels.size(); ++l)
+        w.far[l] = std::make_unique<GpuMesh>(cluster_vertices(tile, kFarLevels[l].cell, &shared[l]));
       m.world.push_back(std::move(w));
     }
     ground_min_y = 1e300;

@@ -1,7 +1,11 @@
 // A course's mesh for drawing: cut into ground tiles the renderer can leave out of view, and
 // coarsened by vertex clustering for far away (game/render/mesh_data.hpp).
 #include <cmath>
+#include <array>
+#include <map>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -91,4 +95,92 @@ TEST_CASE("far away, vertex clustering keeps the shape and the colours with far 
   }
   // Cells finer than the mesh change nothing.
   CHECK(cluster_vertices(fine, 0.1f).triangle_count() == fine.triangle_count());
+}
+
+namespace {
+
+// Two surfaces side by side as a world file gives them, each its own mesh with its own copy
+// of the corners along their common edge: green for x <= size/2, rough beyond; gently rolling
+// so the cells' means differ from the grid's points.
+MeshData two_surfaces(float size, float step) {
+  MeshData out;
+  for (int s = 0; s < 2; ++s) {
+    MeshData m;
+    m.materials = {s == 0 ? "green" : "rough"};
+    const int n = static_cast<int>(std::lround(0.5f * size / step));
+    const float x0 = s * 0.5f * size;
+    const int nz = static_cast<int>(std::lround(size / step));
+    for (int k = 0; k <= nz; ++k)
+      for (int i = 0; i <= n; ++i) {
+        Vertex v;
+        const float x = x0 + i * step, z = k * step;
+        v.position = Eigen::Vector3f(x, 2.0f * std::sin(0.05f * x) * std::cos(0.07f * z), z);
+        v.color = s == 0 ? Eigen::Vector3f(0.3f, 0.7f, 0.3f) : Eigen::Vector3f(0.2f, 0.4f, 0.2f);
+        v.pattern = 1.0f + s;
+        m.vertices.push_back(v);
+      }
+    const auto at = [&](int i, int k) { return static_cast<std::uint32_t>(k * (n + 1) + i); };
+    for (int k = 0; k < nz; ++k)
+      for (int i = 0; i < n; ++i) {
+        m.indices.insert(m.indices.end(), {at(i, k), at(i + 1, k), at(i + 1, k + 1), at(i, k), at(i + 1, k + 1), at(i, k + 1)});
+        m.triangle_material.insert(m.triangle_material.end(), {0, 0});
+      }
+    out.append(m);
+  }
+  return out;
+}
+
+// Edges (by their corners' places) that only one triangle uses, farther than `margin` from
+// the square's outer border: cracks inside the surface.
+int inner_open_edges(const std::vector<MeshData>& pieces, float size, float margin) {
+  using P = std::array<float, 3>;
+  std::map<std::pair<P, P>, int> uses;
+  const auto place = [](const Eigen::Vector3f& v) { return P{v.x(), v.y(), v.z()}; };
+  for (const MeshData& m : pieces)
+    for (std::size_t t = 0; t < m.triangle_count(); ++t)
+      for (int e = 0; e < 3; ++e) {
+        P a = place(m.vertices[m.indices[3 * t + static_cast<std::size_t>(e)]].position);
+        P b = place(m.vertices[m.indices[3 * t + static_cast<std::size_t>((e + 1) % 3)]].position);
+        if (b < a) std::swap(a, b);
+        ++uses[{a, b}];
+      }
+  int open = 0;
+  for (const auto& [edge, n] : uses) {
+    const float x = 0.5f * (edge.first[0] + edge.second[0]), z = 0.5f * (edge.first[2] + edge.second[2]);
+    const bool inner = x > margin && x < size - margin && z > margin && z < size - margin;
+    if (n == 1 && inner) ++open;
+  }
+  return open;
+}
+
+}  // namespace
+
+TEST_CASE("a world coarsened tile by tile keeps its surfaces and tiles joined", "[mesh_lod]") {
+  // The map's grid of dark lines: each tile and each surface clustered on its own moved its
+  // copy of a shared corner to its own mean, and the ground under the course showed through.
+  constexpr float kSize = 250.0f, kCell = 12.0f;
+  const MeshData whole = two_surfaces(kSize, 5.0f);
+  REQUIRE(inner_open_edges({whole}, kSize, 1.0f) == 0);  // the surfaces' copies coincide: joined
+  const auto tiles = split_into_tiles(whole, 100.0f);
+  REQUIRE(tiles.size() == 9);
+  const auto coarsen = [&](const SharedCells* shared) {
+    std::vector<MeshData> out;
+    for (const MeshData& t : tiles) out.push_back(cluster_vertices(t, kCell, shared));
+    return out;
+  };
+  // Alone, the tiles and the surfaces part along their edges (what the test catches).
+  CHECK(inner_open_edges(coarsen(nullptr), kSize, kCell) > 0);
+  // Sharing the ground's places, nothing opens inside the square.
+  const SharedCells shared = shared_cells(whole, kCell, [](const Vertex& v) { return v.pattern > 0.0f; });
+  const auto joined = coarsen(&shared);
+  CHECK(inner_open_edges(joined, kSize, kCell) == 0);
+  // Still coarse, and both colours kept.
+  std::size_t triangles = 0;
+  std::set<float> reds;
+  for (const MeshData& m : joined) {
+    triangles += m.triangle_count();
+    for (std::size_t t = 0; t < m.triangle_count(); ++t) reds.insert(m.vertices[m.indices[3 * t]].color.x());
+  }
+  CHECK(triangles * 4 < whole.triangle_count());  // (12 m cells over a 5 m mesh: ~5.8x at most)
+  CHECK(reds == std::set<float>{0.2f, 0.3f});
 }

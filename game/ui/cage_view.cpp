@@ -131,13 +131,25 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
                     runners_text(b->bases).c_str(), c.count().balls, c.count().strikes);
       ImGui::TextWrapped("Runs %d, hits %d, left on base %d", b->runs(), b->hits, b->left_on_base);
       if (b->runs_by_inning.size() > 1) {
-        // The line score, an inning a column as a scoreboard shows it.
-        std::string line;
-        for (const int r : b->runs_by_inning) {
-          if (!line.empty()) line += " | ";
-          line += std::to_string(r);
+        // The line score as a scoreboard shows it: an inning a column, its number over its
+        // runs, the total at the end (the HUD's font is monospaced, so the columns line up);
+        // past nine innings the last nine, as a scoreboard's extra-inning columns scroll.
+        std::string top = "Inning", runs = "Runs  ";
+        char cell[32];
+        constexpr std::size_t kColumns = 9;
+        const std::size_t n = b->runs_by_inning.size();
+        for (std::size_t i = n > kColumns ? n - kColumns : 0; i < n; ++i) {
+          std::snprintf(cell, sizeof cell, "%3zu", i + 1);
+          top += cell;
+          std::snprintf(cell, sizeof cell, "%3d", b->runs_by_inning[i]);
+          runs += cell;
         }
-        ImGui::TextWrapped("Line score: %s", line.c_str());
+        std::snprintf(cell, sizeof cell, "%5s", "R");
+        top += cell;
+        std::snprintf(cell, sizeof cell, "%5d", b->runs());
+        runs += cell;
+        ImGui::TextUnformatted(top.c_str());
+        ImGui::TextUnformatted(runs.c_str());
       }
       if (!b->note.empty()) ImGui::TextWrapped("%s%s", b->side_retired ? "" : "Last play: ", b->note.c_str());
     }
@@ -463,7 +475,7 @@ void cage_report(const BattingCage& c, std::ostream& out) {
                   a.hit_by_pitch);
     out << line;
     if (const LiveInning::Board* b = c.board()) {
-      out << "; inning " << b->inning << ", " << b->outs << (b->outs == 1 ? " out" : " outs") << ", runs " << b->runs() << " (line score";
+      out << "; inning " << b->inning << ", " << b->outs << (b->outs == 1 ? " out" : " outs") << ", runs " << b->runs() << " (by inning:";
       for (const int r : b->runs_by_inning) out << " " << r;
       out << ")";
     }

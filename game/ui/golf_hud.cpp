@@ -268,14 +268,24 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       // par 5 is aimed at the fairway, and "278 yd left of the pin" says nothing.
       constexpr double kBesideReads = 45.0;  // deg
       constexpr double kReachShare = 1.15;
-      const bool flag_is_target = deg < kBesideReads && r.to_pin() <= kReachShare * play.stops_here(club);
+      // Out past a tree or at a dogleg's corner the target is the gap or the corner, not a
+      // point beside the flag ("244 yd left of the pin" out of the trees): the angle, and what
+      // the club's full swing down that line leaves to the pin (the triangle of its stop, the
+      // pin and the ball).
+      const bool elsewhere = play.aim_why() == GolfPlay::AimWhy::WayOut || play.aim_why() == GolfPlay::AimWhy::Corner;
+      const double stops = play.stops_here(club);
+      const bool flag_is_target = !elsewhere && deg < kBesideReads && r.to_pin() <= kReachShare * stops;
       const char* side = right ? "right" : "left";
       if (deg < 0.05) ImGui::Text("Aim: at the pin");  // "0.0 deg right" has no side
       // Wrapped: the caddie's reason runs past the panel's width.
       else if (flag_is_target)
         ImGui::TextWrapped("Aim: %s %s of the pin (%.1f deg%s%s)", units.course(r.to_pin() * std::tan(deg_to_rad(deg))).c_str(),
                            side, deg, *why ? "; " : "", why);
-      else ImGui::TextWrapped("Aim: %.1f deg %s of the pin%s%s%s", deg, side, *why ? " (" : "", why, *why ? ")" : "");
+      else if (elsewhere) {
+        const double pin = r.to_pin(), a = deg_to_rad(deg);
+        const double leaves = std::sqrt(std::max(0.0, stops * stops + pin * pin - 2.0 * stops * pin * std::cos(a)));
+        ImGui::TextWrapped("Aim: %.1f deg %s of the pin (%s; leaves %s)", deg, side, why, units.course(leaves).c_str());
+      } else ImGui::TextWrapped("Aim: %.1f deg %s of the pin%s%s%s", deg, side, *why ? " (" : "", why, *why ? ")" : "");
     }
     if (const auto& read = play.putt_read(); read && play.human_turn())
       ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());
@@ -335,7 +345,17 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       // along its line (the rest of the distance is the line's miss).
       ImGui::Text("At rest %s from the pin (%s %s), %s", away.c_str(), units.course(std::abs(last.past_m)).c_str(),
                   last.past_m >= 0.0 ? "past" : "short", lie_words(lie));
-    else ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(lie));
+    else {
+      // Off the green a miss is read as a caddie reads it: long or short of the pin and to
+      // which side, each named only where it is at least a third of the miss (a ball 38 ft
+      // away, 36 of them short, is "short", not "short, left").
+      const double miss = std::max(last.to_pin_m, 1e-9);
+      std::string where;
+      if (std::abs(last.past_m) >= miss / 3.0) where = last.past_m >= 0.0 ? "long" : "short";
+      if (std::abs(last.right_m) >= miss / 3.0) where += std::string(where.empty() ? "" : ", ") + (last.right_m >= 0.0 ? "right" : "left");
+      if (where.empty()) ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(lie));
+      else ImGui::Text("At rest %s from the pin (%s), %s", away.c_str(), where.c_str(), lie_words(lie));
+    }
   };
   if (!play.message().empty() && !in_air) {
     ImGui::Separator();

@@ -32,7 +32,7 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, b
   // where they crossed (off time the crossing moves: early over the ball, late under it).
   constexpr double kReach = 0.066;  // m, the bat's and the ball's radii together (95 %)
   const char* when = timing_ms >= 0 ? "late" : "early";
-  char text[160];
+  char text[256];
   const double under = r.crossing_undercut + beyond_m, miss = std::abs(under) - kReach;
   // Past the end and off height too (the height he set the bat against the ball; a bat
   // through the zone crossed nowhere): the height said as well, so the next swing mends both.
@@ -45,13 +45,14 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, b
   else if (r.past_end)
     // The turned bat's end does not reach the ball's line, early or late, over a middle pitch
     // too: said as the hitter sees it, with what mends it.
-    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the ball went past the end of the bat (%s)%s", when,
-                  std::abs(timing_ms), timing_ms >= 0 ? "start the swing sooner" : "wait a touch longer", height);
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, %s: the ball went by past its end (%s)%s", when,
+                  std::abs(timing_ms), timing_ms >= 0 ? "the bat had not come around" : "the bat had turned too far",
+                  timing_ms >= 0 ? "start the swing sooner" : "wait a touch longer", height);
   else if (miss > 0.0 && height_read)
     // His timing is what he controls; where the bat crossed follows from it and the pro's read
-    // (early crosses over the ball, late under it).
-    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, the bat missed %s the ball by %s (timing only: the pro set its height)",
-                  when, std::abs(timing_ms), under > 0.0 ? "under" : "over", inches(miss).c_str());
+    // (early crosses over the ball, late under it): the height is said as the pro's.
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms; at the height the pro read, the bat passed %s %s the ball",
+                  when, std::abs(timing_ms), inches(miss).c_str(), under > 0.0 ? "under" : "over");
   else if (miss > 0.0)
     std::snprintf(text, sizeof text, "Swinging strike: the bat missed %s the ball by %s", under > 0.0 ? "under" : "over", inches(miss).c_str());
   else
@@ -113,7 +114,7 @@ void BattingCage::start_record() {
 
 void BattingCage::count_pitch(PitchResult r) {
   const PlateEnd end = apply_pitch(count_, r);
-  char text[160];
+  char text[256];
   if (end == PlateEnd::None) {
     static const char* kWords[] = {"Ball", "Called strike", "Swinging strike", "Foul", "Foul tip", "In play", "Hit by pitch"};
     std::snprintf(text, sizeof text, "%s   (%d-%d)", kWords[static_cast<int>(r)], count_.balls, count_.strikes);

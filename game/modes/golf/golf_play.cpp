@@ -445,7 +445,7 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   stage_ = Stage::Flying;
   club_ = bag_index(s.club);
   say("");
-  char msg[200];
+  char msg[320];
   const char* result = end_words(rec.end);
   const std::string rest = rec.unplayable ? std::string(": lodged in a tree, unplayable, one stroke (Rule 19.2)")
                           : rec.relief       ? std::string(": on the cart path, free relief (Rule 16.1)")
@@ -458,8 +458,11 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
     const double late = last_click_ ? last_click_->click_error_ms() : last_meter_->accuracy_ms;
     // The meter plays a swing whose last click never came at its latest (MeterInput::kAccuracy).
     const bool at_the_limit = std::abs(late) >= MeterInput::kAccuracy.max - 0.5;
-    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f\u00a0%%, %s%s%s", who.name.c_str(), stroke_no, club_name(s.club).c_str(),
-                  100.0 * last_meter_->power, timing_words(late).c_str(), at_the_limit ? " (the meter's limit)" : "", rest.c_str());
+    // At the limit the player never made the third click in time: said so, in his words.
+    const std::string timing = at_the_limit ? "no accuracy click in time, played as the latest swing (" + timing_words(late) + ")"
+                                            : timing_words(late);
+    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f\u00a0%%, %s%s", who.name.c_str(), stroke_no, club_name(s.club).c_str(),
+                  100.0 * last_meter_->power, timing.c_str(), rest.c_str());
   } else {
     std::snprintf(msg, sizeof msg, "%s, stroke %d: %s%s%s", who.name.c_str(), stroke_no, club_name(s.club).c_str(),
                   who.human ? " (the caddie's swing)" : "", rest.c_str());

@@ -357,7 +357,11 @@ const StrokeRecord& GolfRound::play_spec(const ShotSpec& spec, const std::string
   if (rec.end != StrokeEnd::Holed) {
     const double lx = hole().pin.x() - rec.start.x(), lz = hole().pin.z() - rec.start.z();
     const double to_cup = std::hypot(lx, lz);
-    if (to_cup > 0.0) rec.past_m = ((rec.rest.x() - rec.start.x()) * lx + (rec.rest.z() - rec.start.z()) * lz) / to_cup - to_cup;
+    if (to_cup > 0.0) {
+      const double ox = rec.rest.x() - rec.start.x(), oz = rec.rest.z() - rec.start.z();
+      rec.past_m = (ox * lx + oz * lz) / to_cup - to_cup;
+      rec.right_m = (lx * oz - lz * ox) / to_cup;  // facing +x, +z (south) is the right hand
+    }
   }
   h.shots.push_back(rec);
   if (shot != nullptr) *shot = std::move(r);

@@ -37,6 +37,8 @@ struct StrokeRecord {
   /// m the ball stopped beyond the cup along the line from where it was struck (a putt's
   /// "2 ft past"), negative short of it; 0 when holed.
   double past_m = 0.0;
+  /// m the ball stopped right (+) or left (-) of that line; 0 when holed.
+  double right_m = 0.0;
   double carry_m = 0.0;       ///< m to the first landing
   double side_m = 0.0;        ///< m right (+) of the stroke's aim line at landing (TrackMan's Side)
   int penalty = 0;            ///< penalty strokes this shot incurred

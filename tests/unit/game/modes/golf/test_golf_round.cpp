@@ -147,6 +147,26 @@ TEST_CASE("a putt lips out at too high a speed and drops at a lower one", "[golf
   CHECK(play.finished());
 }
 
+TEST_CASE("a stroke aimed off the pin is recorded on the side it was aimed", "[golf][round]") {
+  // The same putt from 3 m short of hole 1's cup aimed 10 deg right, then 10 deg left: it
+  // stops on that side of the line from the ball to the cup (the HUD's "short, right"), and
+  // its side and its pace together make up its distance from the cup.
+  const CourseHole& h = test::links().holes[0];
+  const auto tee = std::make_pair(h.pin.x() - 3.0, h.pin.z());
+  GolfBot caddie(test::assets(), golfer_skill("tour"), 1);
+  for (const double aim : {deg_to_rad(10.0), deg_to_rad(-10.0)}) {
+    GolfRound round(test::assets(), one_hole(1, tee), golfer_skill("tour"));
+    StrokeInput in = caddie.intend(round);
+    in.aim = aim;
+    const StrokeRecord r = round.play(in);
+    REQUIRE(r.end == StrokeEnd::Rest);
+    INFO("aim " << rad_to_deg(aim) << " deg: " << r.to_pin_m << " m from the cup, past " << r.past_m << ", right " << r.right_m);
+    CHECK(r.right_m * aim > 0.0);
+    CHECK(std::abs(r.right_m) > 0.3);
+    CHECK(std::hypot(r.past_m, r.right_m) == Approx(r.to_pin_m).epsilon(1e-6));
+  }
+}
+
 TEST_CASE("a putt left out is recorded as so far past the cup or short of it, along its line", "[golf][round][putting]") {
   // Hole 1's green, 3 m short of the cup on its line: the caddie's putt holes; half its pace
   // stops short, twice it runs past; the shortfall and the overshoot are measured along the

@@ -496,9 +496,43 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
     // Said where the player was looking when it happened, not only in the panel.
     std::snprintf(label, sizeof label, "%s", play.message().c_str());
   } else {
-    char before[160];
-    std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms)", club_name(play.club()).c_str(),
-                  to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty));
+    // The swing's distance scale, as the putt's: how far each power carries from here (ticks
+    // every 10 yd or m, labelled at round lengths where the last label leaves room), and the
+    // power that carries to the pin, a green mark as the putt's cup, when the club gets there.
+    const std::string& club = play.club();
+    const double longest = play.carry_at_power(club, MeterBar::kHigh);
+    const double unit = units.imperial ? 0.9144 : 1.0;
+    char pin_words[96] = "";
+    if (longest > 10.0 * unit) {
+      dl->AddRectFilled(ImVec2(x0 - 4, y0 + bh + 2), ImVec2(x0 + bar.bw + 4, y0 + bh + 24), kBand, 4.0f);
+      const long every = longest < 130.0 * unit ? 20 : 50;  // labels: a wedge's every 20, the longer clubs' every 50
+      float free_from = x0 - 1e9f;
+      for (long n = 10; n * unit < longest; n += 10) {
+        const double p = play.power_for_carry(club, n * unit);
+        if (p < 0.2) continue;  // below the table's first power the scale is a guess
+        dl->AddLine(ImVec2(at(p), y0 + bh), ImVec2(at(p), y0 + bh + 6), IM_COL32(200, 200, 200, 200), 1.0f);
+        if (n % every != 0) continue;
+        char text[16];
+        std::snprintf(text, sizeof text, units.imperial ? "%ld yd" : "%ld m", n);
+        const float left = at(p) - 8.0f, wide = ImGui::CalcTextSize(text).x;
+        if (left >= free_from && left + wide <= x0 + bar.bw + 4.0f) {  // within the band
+          dl->AddText(ImVec2(left, y0 + bh + 7), IM_COL32(200, 200, 200, 220), text);
+          free_from = left + wide + 5.0f;
+        }
+      }
+      const double to_pin = play.round().to_pin();
+      if (to_pin < longest && to_pin > play.carry_at_power(club, 0.2)) {
+        const double p = play.power_for_carry(club, to_pin);
+        const ImU32 kPinMark = IM_COL32(90, 225, 120, 255);
+        const float xp = at(p);
+        dl->AddLine(ImVec2(xp, y0 - 2), ImVec2(xp, y0 + bh + 2), kPinMark, 2.0f);
+        dl->AddTriangleFilled(ImVec2(xp - 6, y0 - 10), ImVec2(xp + 6, y0 - 10), ImVec2(xp, y0), kPinMark);
+        std::snprintf(pin_words, sizeof pin_words, "; green: carries the pin at %.0f %%", 100.0 * p);
+      }
+    }
+    char before[200];
+    std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms)%s", club_name(club).c_str(),
+                  to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty), pin_words);
     std::snprintf(label, sizeof label, "%s", full_swing_caption(meter, now, before).c_str());
   }
   // The caddie's part swing (his club, under full power), or his pace for a putt he read: a

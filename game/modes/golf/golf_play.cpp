@@ -355,6 +355,33 @@ double GolfPlay::power_for_roll(double distance) const { return interpolate(roll
 
 double GolfPlay::cup_mark_power() const { return power_for_roll(putt_plays_as_ + GolfBot::kPuttPast); }
 
+const std::vector<std::pair<double, double>>& GolfPlay::carry_table(const std::string& club) const {
+  static const std::vector<std::pair<double, double>> none;
+  const GolfRound& r = round();
+  if (r.finished() || club == "putter") return none;
+  if (carry_table_ && carry_table_->player == player_ && carry_table_->club == club && carry_table_->ball == r.ball() &&
+      carry_table_->hole == group_.hole_index())
+    return carry_table_->table;
+  CarryTable t{player_, club, r.ball(), group_.hole_index(), {}};
+  StrokeInput in;
+  in.club = club;
+  in.aim = aim_;
+  double longest = 0.0;
+  for (int k = 2; k <= 11; ++k) {
+    in.meter.power = std::min(0.1 * k, MeterInput::kPower.max);
+    longest = std::max(longest, r.simulate(in).trajectory.summary.carry_m);
+    t.table.emplace_back(in.meter.power, longest);
+  }
+  carry_table_ = std::move(t);
+  return carry_table_->table;
+}
+
+double GolfPlay::carry_at_power(const std::string& club, double power) const { return interpolate(carry_table(club), power, true); }
+
+double GolfPlay::power_for_carry(const std::string& club, double distance) const {
+  return interpolate(carry_table(club), distance, false);
+}
+
 void GolfPlay::update(const Intents& intents, double now) {
   apply_in_time_order(intents, now, [this](double t) { advance(t); }, [this](const Intent& in) { apply(in); });
 }

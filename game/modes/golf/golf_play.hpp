@@ -196,6 +196,15 @@ class GolfPlay {
   /// standing above the ground, a tree: its carry (m) to it. None when it lands on the ground.
   std::optional<double> tree_in_the_way(const std::string& club) const;
 
+  /// The meter's distance scale for a swing, as a putt's roll scale: `club`'s carry from here
+  /// (m) at `power`, and the power that carries `distance`, from carry_here at 20 %, 30 % ...
+  /// 110 % of the meter (the same physics as the stroke). The table is kept while the player,
+  /// club, ball and hole stay: an aim's step barely turns the wind against the line, and ten
+  /// flights per press of an arrow would stall the frame. Held at its longest past a tree
+  /// that stops the flight.
+  double carry_at_power(const std::string& club, double power) const;
+  double power_for_carry(const std::string& club, double distance) const;
+
   /// Aim steps: a degree for a full shot, a quarter of one for a putt.
   static constexpr double kAimStep = 0.017453292519943295;   // rad (1°)
   static constexpr double kPuttAimStep = 0.004363323129985824; // rad (0.25°)
@@ -295,6 +304,15 @@ class GolfPlay {
   double part_swing_power(const std::string& club) const;
   /// The last full swing asked for and the last part swing: the HUD asks of both each frame.
   mutable std::optional<FlownHere> flown_[2];
+  struct CarryTable {
+    int player = 0;
+    std::string club;
+    Vec3 ball = Vec3::Zero();
+    std::size_t hole = 0;
+    std::vector<std::pair<double, double>> table;  ///< (power, carry m), the carry never falling
+  };
+  const std::vector<std::pair<double, double>>& carry_table(const std::string& club) const;
+  mutable std::optional<CarryTable> carry_table_;
 };
 
 const char* to_string(GolfPlay::Stage s);

@@ -435,6 +435,36 @@ TEST_CASE("putting preview from off the green: the slower grass first makes the 
   CHECK(std::hypot(short_rest.x() - play.round().ball().x(), short_rest.z() - play.round().ball().z()) < rolled);
 }
 
+TEST_CASE("the meter's carry scale is the stroke's own carry at each power, and finds the pin's power", "[modes][golf]") {
+  // The scale under a swing's meter reads a table of the club's carry from here: at a power
+  // the table holds it is that stroke's carry, between them near it, and back from a carry to
+  // a power it lands within a metre of the same carry.
+  const Course course = first_hole();
+  GolfPlay tee(test::assets(), course, solo("scratch"));
+  const std::string club = "7-iron";
+  for (const double p : {0.5, 0.8, 1.0}) {
+    StrokeInput in;
+    in.club = club;
+    in.aim = tee.aim();
+    in.meter.power = p;
+    const double carry = tee.round().simulate(in).trajectory.summary.carry_m;
+    INFO("power " << p << ": carry " << carry << " m, the scale " << tee.carry_at_power(club, p) << " m");
+    CHECK(tee.carry_at_power(club, p) == Approx(carry).margin(1e-6));
+  }
+  for (const double p : {0.35, 0.65, 0.95}) {
+    StrokeInput in;
+    in.club = club;
+    in.aim = tee.aim();
+    in.meter.power = tee.power_for_carry(club, tee.carry_at_power(club, p));
+    CHECK(in.meter.power == Approx(p).margin(1e-6));
+    const double carry = tee.round().simulate(in).trajectory.summary.carry_m;
+    CHECK(carry == Approx(tee.carry_at_power(club, p)).margin(0.03 * carry));  // linear between the table's powers
+  }
+  // More power never carries less, and the putter has no scale.
+  for (double p = 0.2; p < 1.1; p += 0.05) CHECK(tee.carry_at_power(club, p + 0.05) >= tee.carry_at_power(club, p));
+  CHECK(tee.carry_at_power("putter", 1.0) == 0.0);
+}
+
 TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power for a pitch", "[modes][golf]") {
   const Course course = first_hole();
   GolfPlay tee(test::assets(), course, solo("scratch"));

@@ -287,6 +287,19 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
         ImGui::TextWrapped("Aim: %.1f deg %s of the pin (%s; leaves %s)", deg, side, why, units.course(leaves).c_str());
       } else ImGui::TextWrapped("Aim: %.1f deg %s of the pin%s%s%s", deg, side, *why ? " (" : "", why, *why ? ")" : "");
     }
+    if (play.human_turn() && club != "putter") {
+      // What the caddie sees on the line and the low view from behind the ball can hide: each
+      // stretch of water or sand from its near edge to its far one ("water 128-152 yd").
+      std::string said;
+      for (const GolfPlay::Hazard& hz : play.hazards_on_line(club)) {
+        const std::string near = units.course(hz.from, hz.to), far = units.course(hz.to);
+        const std::size_t cut = near.find(' ');
+        const bool one_unit = cut != std::string::npos && far.size() > cut && far.substr(far.find(' ')) == near.substr(cut);
+        said += std::string(said.empty() ? "" : ", ") + (hz.kind == "water" ? "water " : "sand ") +
+                (one_unit ? near.substr(0, cut) + "-" + far : near + " to " + far);
+      }
+      if (!said.empty()) ImGui::TextWrapped("On the line: %s", said.c_str());
+    }
     if (const auto& read = play.putt_read(); read && play.human_turn())
       ImGui::TextWrapped("Read: %s", putt_read_words(*read, units).c_str());
     if (play.human_turn() && club == "putter" && r.lie() == "green") {

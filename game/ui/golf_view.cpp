@@ -58,7 +58,7 @@ Vec3 flat_unit(const Vec3& from, const Vec3& to) {
 }
 
 /// The ball's rest is held on screen this long before the next player's view (s).
-constexpr double kSettle = 1.2;
+constexpr double kSettle = GolfPlay::kRestShown;
 
 class GolfView final : public ModeView {
  public:

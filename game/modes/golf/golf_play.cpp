@@ -376,6 +376,30 @@ const std::vector<std::pair<double, double>>& GolfPlay::carry_table(const std::s
   return carry_table_->table;
 }
 
+const std::vector<GolfPlay::Hazard>& GolfPlay::hazards_on_line(const std::string& club) const {
+  static const std::vector<Hazard> none;
+  const GolfRound& r = round();
+  if (r.finished() || club == "putter") return none;
+  if (hazards_ && hazards_->player == player_ && hazards_->club == club && hazards_->ball == r.ball() &&
+      hazards_->hole == group_.hole_index() && hazards_->aim == aim_)
+    return hazards_->hazards;
+  std::vector<Hazard> out;
+  // Out to past where it stops by what a miss of length runs on (10 %, at least 10 m), every
+  // 2 m; a gap under 5 m between two stretches of one kind is the same hazard (a sample
+  // landing on a bunker's lip).
+  constexpr double kStep = 2.0, kJoin = 5.0;
+  const double reach = std::min(r.to_pin() + 20.0, stops_here(club, part_swing_power(club)) * 1.1 + 10.0);
+  const Vec3 d = aim_direction(), b = r.ball();
+  for (double s = kStep; s <= reach; s += kStep) {
+    const std::string kind = r.surface_at(b + s * d);
+    if (kind != "water" && kind != "sand") continue;
+    if (!out.empty() && out.back().kind == kind && s - out.back().to <= kJoin) out.back().to = s;
+    else out.push_back({kind, s, s});
+  }
+  hazards_ = HazardsHere{player_, club, r.ball(), group_.hole_index(), aim_, std::move(out)};
+  return hazards_->hazards;
+}
+
 double GolfPlay::carry_at_power(const std::string& club, double power) const { return interpolate(carry_table(club), power, true); }
 
 double GolfPlay::power_for_carry(const std::string& club, double distance) const {

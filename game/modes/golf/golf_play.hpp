@@ -205,14 +205,28 @@ class GolfPlay {
   double carry_at_power(const std::string& club, double power) const;
   double power_for_carry(const std::string& club, double distance) const;
 
+  /// Water and bunkers the aim line crosses from the ball to a little past where the stroke
+  /// the player would play with `club` stops (the caddie's part swing, else a full one): each
+  /// stretch's kind ("water", "sand") and its near and far distance (m), nearest first. What a
+  /// caddie says before the shot, and what the low view from behind the ball hides.
+  struct Hazard {
+    std::string kind;
+    double from = 0.0, to = 0.0;
+  };
+  const std::vector<Hazard>& hazards_on_line(const std::string& club) const;
+
   /// Aim steps: a degree for a full shot, a quarter of one for a putt.
   static constexpr double kAimStep = 0.017453292519943295;   // rad (1°)
   static constexpr double kPuttAimStep = 0.004363323129985824; // rad (0.25°)
   /// A scorecard takes no Enter for this long after the ball stops: a press meant to skip a
   /// flight that had just ended does not skip the card too.
   static constexpr double kCardGrace = 0.5;  // s
-  /// A bot addresses the ball this long before it swings, so a player sees whose turn it is.
-  static constexpr double kBotAddress = 1.2;  // s
+  /// The last ball's rest stays on screen this long before the next player's view (the
+  /// window holds it; a turn's clock runs from the rest).
+  static constexpr double kRestShown = 1.2;  // s
+  /// A bot swings this long after its turn begins: the rest shown, then its address for
+  /// 1.2 s, so a player sees whose turn it is before the ball is in the air.
+  static constexpr double kBotAddress = kRestShown + 1.2;  // s
   /// The flyover's length: tee to green and back (TV golf's hole flyovers run 5-10 s).
   static constexpr double kFlyover = 6.0;  // s
 
@@ -313,6 +327,15 @@ class GolfPlay {
   };
   const std::vector<std::pair<double, double>>& carry_table(const std::string& club) const;
   mutable std::optional<CarryTable> carry_table_;
+  struct HazardsHere {
+    int player = 0;
+    std::string club;
+    Vec3 ball = Vec3::Zero();
+    std::size_t hole = 0;
+    double aim = 0.0;
+    std::vector<Hazard> hazards;
+  };
+  mutable std::optional<HazardsHere> hazards_;  ///< the last answer: the HUD asks each frame
 };
 
 const char* to_string(GolfPlay::Stage s);

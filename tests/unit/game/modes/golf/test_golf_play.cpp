@@ -465,6 +465,26 @@ TEST_CASE("the meter's carry scale is the stroke's own carry at each power, and 
   CHECK(tee.carry_at_power("putter", 1.0) == 0.0);
 }
 
+TEST_CASE("the caddie names the water on the line of the National's 3rd, where it lies", "[modes][golf]") {
+  // The par 3 plays over a pond short of its green: from the tee, along the aim, the hazards
+  // on the line hold a stretch of water inside the club's reach whose middle is water and
+  // whose ends, a step outside, are not; the putter's line has none.
+  Course c = test::national();
+  c.holes = {test::national().holes.at(2)};
+  GolfPlay tee(test::assets(), c, solo("scratch"));
+  const auto& hazards = tee.hazards_on_line(tee.club());
+  const auto water = std::find_if(hazards.begin(), hazards.end(), [](const GolfPlay::Hazard& h) { return h.kind == "water"; });
+  REQUIRE(water != hazards.end());
+  INFO("water " << water->from << "-" << water->to << " m; the pin " << tee.round().to_pin() << " m");
+  CHECK(water->from < water->to);
+  CHECK(water->to < tee.round().to_pin());
+  const Vec3 b = tee.round().ball(), d = tee.aim_direction();
+  CHECK(tee.round().surface_at(b + 0.5 * (water->from + water->to) * d) == "water");
+  CHECK(tee.round().surface_at(b + (water->from - 2.5) * d) != "water");
+  CHECK(tee.round().surface_at(b + (water->to + 2.5) * d) != "water");
+  CHECK(tee.hazards_on_line("putter").empty());
+}
+
 TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power for a pitch", "[modes][golf]") {
   const Course course = first_hole();
   GolfPlay tee(test::assets(), course, solo("scratch"));

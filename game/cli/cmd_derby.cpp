@@ -55,17 +55,17 @@ int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
         // An extra inning's half opens with its runner on second (MLB Rule 7.01(b)): say so,
         // or a run he scores comes from nowhere in the play-by-play.
         if (half != half_shown && pa.inning > o.innings && pa.bases_before[1] >= 0)
-          std::printf("%s %-2d %-6s #%d  %s\n", pa.bottom ? "bot" : "top", pa.inning, pa.bottom ? "home" : "away",
+          std::printf("%-6s %-2d %-6s #%d  %s\n", pa.bottom ? "bottom" : "top", pa.inning, pa.bottom ? "home" : "away",
                       pa.bases_before[1] + 1, "starts on 2nd (extra innings)");
         half_shown = half;
-        if (pa.pitching_change) std::printf("%s %-2d %s\n", pa.bottom ? "bot" : "top", pa.inning, pitching_change_text(pa).c_str());
+        if (pa.pitching_change) std::printf("%-6s %-2d %s\n", pa.bottom ? "bottom" : "top", pa.inning, pitching_change_text(pa).c_str());
         const std::string runs = pa.runs == 1 ? "1 run scores" : pa.runs > 1 ? std::to_string(pa.runs) + " runs score" : "";
         // The runs in their column; a description too long for it takes them after a comma
         // ("Grounded into a double play, 3B to 2B to 1B, 1 run scores").
         constexpr std::size_t kColumn = 32;
         const std::string play = pa.description.size() >= kColumn && !runs.empty() ? pa.description + "," : pa.description;
         char line[512];
-        std::snprintf(line, sizeof line, "%s %-2d %-6s #%d  %-*s %s", pa.bottom ? "bot" : "top", pa.inning,
+        std::snprintf(line, sizeof line, "%-6s %-2d %-6s #%d  %-*s %s", pa.bottom ? "bottom" : "top", pa.inning,
                       pa.bottom ? "home" : "away", pa.batter + 1, static_cast<int>(kColumn), play.c_str(), runs.c_str());
         std::string text = line;
         text.erase(text.find_last_not_of(' ') + 1);  // the padding is for the runs column only
@@ -79,7 +79,7 @@ int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
     all.insert(all.end(), std::make_move_iterator(game.plate_appearances.begin()),
                std::make_move_iterator(game.plate_appearances.end()));
   }
-  std::printf("\n%s", rates_text(batting_rates(all, 2), o.bot + " lineups against the league's pitcher").c_str());
+  std::printf("\n%s", rates_text(batting_rates(all, 2), "two " + o.bot + "-bot lineups against league-average pitching").c_str());
   return 0;
 }
 

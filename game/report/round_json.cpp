@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "game/modes/golf/standings.hpp"
+#include "game/rules/golf_scoring.hpp"
 
 namespace sweetspot {
 
@@ -111,7 +112,8 @@ std::string round_table(const GolfRound& round, const std::string& player) {
     // The fairway column: "hit", or the side the tee shot missed on; "-" on a par 3 (none).
     const char* fairway = h.tee_shot == TeeShot::None ? "-" : to_string(h.tee_shot);
     std::snprintf(line, sizeof line, "%-6d %4d %8d %6d %8s %6s %10d %s\n", h.number, h.par, h.strokes, h.putts, fairway,
-                  h.green_in_regulation ? "hit" : "miss", h.penalties, h.picked_up ? "picked up" : h.conceded ? "conceded" : "");
+                  h.green_in_regulation ? "hit" : "miss", h.penalties,
+                  h.picked_up ? "picked up" : h.conceded ? "conceded" : score_name(h.strokes, h.par).c_str());
     out += line;
     if (nines && h.number == 9) nine_line("out");
   }

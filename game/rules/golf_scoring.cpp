@@ -1,11 +1,31 @@
 #include "game/rules/golf_scoring.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "physics/error.hpp"
 
 namespace sweetspot {
+
+std::string score_name(int strokes, int par) {
+  if (strokes == 1) return "hole in one";
+  switch (strokes - par) {
+    case -3: return "albatross";
+    case -2: return "eagle";
+    case -1: return "birdie";
+    case 0: return "";
+    case 1: return "bogey";
+    case 2: return "double bogey";
+    case 3: return "triple bogey";
+    default: {
+      char text[16];
+      std::snprintf(text, sizeof text, "%+d", strokes - par);
+      return text;
+    }
+  }
+}
 
 const char* to_string(GolfFormat f) {
   switch (f) {

@@ -16,6 +16,10 @@ const char* to_string(GolfFormat f);
 /// "stroke", "match", "stableford", "skins"; InputError listing them otherwise.
 GolfFormat golf_format(std::string_view name);
 
+/// A hole's score in golfers' words: "hole in one", "albatross", "eagle", "birdie", "" for
+/// par, "bogey", "double bogey", "triple bogey", then "+4" and on.
+std::string score_name(int strokes, int par);
+
 /// Course handicaps: WHS Rule 6 allows up to 54; a plus handicap is not modelled.
 inline constexpr int kMaxHandicap = 54;
 

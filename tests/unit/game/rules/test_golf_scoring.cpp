@@ -97,3 +97,16 @@ TEST_CASE("a format by name, or the names allowed", "[rules][golf][formats]") {
     CHECK(std::string(e.what()).find("allowed: stroke, match, stableford, skins") != std::string::npos);
   }
 }
+
+TEST_CASE("a hole's score in golfers' words", "[rules][golf][formats]") {
+  CHECK(score_name(1, 3) == "hole in one");
+  CHECK(score_name(1, 4) == "hole in one");  // an ace on a par 4 is also an albatross; the ace is what is said
+  CHECK(score_name(2, 5) == "albatross");
+  CHECK(score_name(3, 5) == "eagle");
+  CHECK(score_name(3, 4) == "birdie");
+  CHECK(score_name(4, 4).empty());
+  CHECK(score_name(5, 4) == "bogey");
+  CHECK(score_name(6, 4) == "double bogey");
+  CHECK(score_name(7, 4) == "triple bogey");
+  CHECK(score_name(9, 4) == "+5");
+}

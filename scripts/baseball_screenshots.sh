@@ -30,7 +30,7 @@ for i in 1 2 3 4 5; do
   xdotool key space; sleep 2.59; xdotool key space; sleep 0.3; xdotool key F12; sleep 2.5
 done
 xdotool key F12
-xdotool key Escape; sleep 0.3; xdotool key q
+xdotool key Escape; sleep 0.3; xdotool key q; sleep 0.3; xdotool key q  # Q asks first when play would be lost
 for _ in \$(seq 1 50); do kill -0 \$pid 2>/dev/null || break; sleep 0.2; done
 wait \$pid
 D

@@ -19,7 +19,7 @@ for _ in \$(seq 1 150); do wid=\$(xdotool search --name Sweetspot 2>/dev/null | 
 sleep 1.5
 xdotool windowfocus --sync "\$wid" 2>/dev/null || true
 $2
-xdotool key Escape; sleep 0.3; xdotool key q
+xdotool key Escape; sleep 0.3; xdotool key q; sleep 0.3; xdotool key q  # Q asks first when play would be lost
 for _ in \$(seq 1 50); do kill -0 \$pid 2>/dev/null || break; sleep 0.2; done
 wait \$pid
 D

@@ -104,7 +104,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
         continue;
       }
       if (paused) {
-        choice = menu.key(k.key, view.restart_loses());
+        choice = menu.key(k.key, view.restart_loses(), view.quit_loses());
         if (choice != MenuChoice::None) {
           carried.assign(keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, keys.end());
           break;
@@ -158,7 +158,8 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
     }
     audio.collect();
     if (paused && choice == MenuChoice::None)
-      choice = draw_pause_menu(menu, view.title(), view.restart_label(), view.restart_loses(), view.pause_menu_right(vi.width, vi.height), vi.height);
+      choice = draw_pause_menu(menu, view.title(), view.restart_label(), view.restart_loses(), view.quit_loses(),
+                               view.pause_menu_right(vi.width, vi.height), vi.height);
     if (choice != MenuChoice::None) menu.reset();
     win.render_ui();
 

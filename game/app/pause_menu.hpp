@@ -1,7 +1,8 @@
-// The pause menu's choices and its keys. A restart that would throw play away (a hole's
-// strokes, a session's swings) asks first: R (or the button) once says what goes, R again
-// restarts, anything else keeps it. Esc then R is also how a player reaching for the replay
-// (R in play) would land here, so one press never loses a round.
+// The pause menu's choices and its keys. A restart or a quit that would throw play away (a
+// hole's strokes, a round not saved, a session's swings) asks first: R (or Q, or the button)
+// once says what goes, the same again does it, anything else keeps it. Esc then R is also how
+// a player reaching for the replay (R in play) would land here, so one press never loses a
+// round; Q beside Tab and Esc likewise.
 #pragma once
 
 #include <string>
@@ -12,24 +13,30 @@ enum class MenuChoice { None, Resume, Restart, NextMode, Quit };
 
 class PauseMenu {
  public:
-  /// A key pressed while paused (GLFW key code). `loses`: what a restart would throw away
-  /// (ModeView::restart_loses), empty when nothing.
-  MenuChoice key(int glfw_key, const std::string& loses);
+  /// A key pressed while paused (GLFW key code). `restart_loses` / `quit_loses`: what a
+  /// restart / a quit would throw away (ModeView::restart_loses, quit_loses), empty when
+  /// nothing.
+  MenuChoice key(int glfw_key, const std::string& restart_loses, const std::string& quit_loses = {});
   /// The restart button pressed (the same rule as R).
-  MenuChoice restart_pressed(const std::string& loses);
-  /// A restart has been asked for and waits for R again.
-  bool confirming() const { return confirming_; }
+  MenuChoice restart_pressed(const std::string& loses) { return ask(MenuChoice::Restart, loses); }
+  /// The quit button pressed (the same rule as Q).
+  MenuChoice quit_pressed(const std::string& loses) { return ask(MenuChoice::Quit, loses); }
+  /// A restart or a quit has been asked for and waits for its key again.
+  bool confirming() const { return asking_ != MenuChoice::None; }
+  /// Which: Restart or Quit (None when nothing is asked).
+  MenuChoice asking() const { return asking_; }
   /// The menu closed (resumed, restarted, left): a later pause starts unasked.
-  void reset() { confirming_ = false; }
+  void reset() { asking_ = MenuChoice::None; }
 
  private:
-  bool confirming_ = false;
+  MenuChoice ask(MenuChoice c, const std::string& loses);
+  MenuChoice asking_ = MenuChoice::None;
 };
 
 /// Draws the menu (`title`: the mode's name; `restart_label`: "Restart hole") with its right
 /// edge at `right` px, half way down a window `h` px high, with the question when a restart
-/// waits for R again; the button clicked, if any.
-MenuChoice draw_pause_menu(PauseMenu& menu, const char* title, const char* restart_label, const std::string& loses, float right,
-                           int h);
+/// or a quit waits for its key again; the button clicked, if any.
+MenuChoice draw_pause_menu(PauseMenu& menu, const char* title, const char* restart_label, const std::string& restart_loses,
+                           const std::string& quit_loses, float right, int h);
 
 }  // namespace sweetspot

@@ -84,6 +84,12 @@ class GolfView final : public ModeView {
     const bool group = play_->group().players().size() > 1;
     return "this hole's " + std::to_string(n) + (n == 1 ? " stroke" : " strokes") + (group ? " (the whole group's)" : "");
   }
+  // Quitting leaves the whole round, not the hole: unless it was just saved (S), it goes.
+  std::string quit_loses() const override {
+    const std::size_t turns = play_->group().events().size();
+    if (play_->stage() == GolfPlay::Stage::RoundOver || turns == 0 || saved_turns_ == turns) return {};
+    return "the round so far (S in play saves it; --resume goes on with it)";
+  }
   // A swing or a latency calibration under way: Esc takes it back instead of pausing.
   bool busy() const override { return play_->stage() == GolfPlay::Stage::Swinging || calibration_.has_value(); }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 10; }
@@ -171,6 +177,7 @@ class GolfView final : public ModeView {
   std::size_t slopes_for_ = 99;
   Vec3 slopes_ball_ = Vec3::Zero();
   std::vector<GroundArrow> slopes_;  // the green's slopes round the ball, as the scene draws them
+  std::size_t saved_turns_ = static_cast<std::size_t>(-1);  // the group's turns when last saved (none yet)
   std::string saved_note_;
   double saved_note_at_ = -1.0;  // mode time it was first shown; -1 until then
   // A note shown for kNoteShown s from its first frame.
@@ -282,6 +289,7 @@ void GolfView::save_round() {
                       json_text(round_save_json(g, std::filesystem::absolute(g.course().source).string())) + "\n",
                       OverInput::Allow);
     note("Round saved to " + options_.save_path + " (play --mode golf --resume FILE)");
+    saved_turns_ = g.events().size();
   } catch (const std::exception& e) {
     note(std::string("Not saved: ") + e.what());
   }

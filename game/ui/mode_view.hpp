@@ -87,6 +87,9 @@ class ModeView {
   /// What that restart throws away, in the player's words ("this hole's 3 strokes"); empty
   /// when nothing is lost (the pause menu then restarts without asking).
   virtual std::string restart_loses() const { return {}; }
+  /// What quitting throws away, likewise (the pause menu then asks before Q quits): by
+  /// default what a restart would.
+  virtual std::string quit_loses() const { return restart_loses(); }
   /// Where the pause menu's right edge goes in a `w` x `h` px window: at the right by
   /// default, clear of the centre where a mode shows what the player paused to read; the lab
   /// keeps it over its view, off the launch monitor's column.

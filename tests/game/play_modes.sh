@@ -3,7 +3,8 @@
 # swing is started in the golf game, Tab cycles through every mode three times and back
 # (each mode made on first use, none aborting), the swing is still in progress (the golf
 # clock stopped while away), Esc cancels it with no stroke and pauses, Esc resumes, the
-# caddie plays the tee shot, Tab goes round once more, Esc and Q quit with exit 0. The
+# caddie plays the tee shot, Tab goes round once more, Esc and Q ask (the round is not saved)
+# and Q again quits with exit 0. The
 # round's state is read from what the golf mode reports on exit.
 # $1 = sweetspot, $2 = check_screenshot.
 set -euo pipefail
@@ -33,7 +34,10 @@ xdotool key Escape; sleep 0.3                     # pauses
 xdotool key Escape; sleep 0.3                     # resumes
 xdotool key b; sleep 1.0                          # the caddie plays the tee shot
 for _ in $(seq 1 4); do xdotool key Tab; sleep 0.5; done   # once more around
-xdotool key Escape; sleep 0.3; xdotool key q      # pause, quit
+xdotool key Escape; sleep 0.3; xdotool key q      # pause, quit: the round is not saved, so it asks
+sleep 0.5
+kill -0 $pid 2>/dev/null || { echo "one Q quit a round that was not saved"; exit 1; }
+xdotool key q                                     # Q again: quit
 for _ in $(seq 1 50); do kill -0 $pid 2>/dev/null || break; sleep 0.2; done
 kill $pid 2>/dev/null && { echo "the window did not close on Quit"; exit 1; }
 wait $pid

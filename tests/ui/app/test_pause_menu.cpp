@@ -41,3 +41,26 @@ TEST_CASE("while a restart waits for R again, Esc keeps the play and the menu; o
   m.reset();
   CHECK(m.key(GLFW_KEY_R, loses) == MenuChoice::None);
 }
+
+TEST_CASE("a quit that loses play takes Q twice; one with nothing to lose takes it once", "[pause]") {
+  PauseMenu m;
+  CHECK(m.key(GLFW_KEY_Q, "this hole's 3 strokes", "") == MenuChoice::Quit);  // the round was saved: nothing to lose
+  const std::string round = "the round so far";
+  CHECK(m.key(GLFW_KEY_Q, "", round) == MenuChoice::None);
+  CHECK(m.asking() == MenuChoice::Quit);
+  CHECK(m.key(GLFW_KEY_ESCAPE, "", round) == MenuChoice::None);  // kept: the menu stays, the question goes
+  CHECK(!m.confirming());
+  CHECK(m.key(GLFW_KEY_Q, "", round) == MenuChoice::None);
+  CHECK(m.key(GLFW_KEY_Q, "", round) == MenuChoice::Quit);
+  CHECK(!m.confirming());
+  // A restart asked, then Q: the question turns to the quit, and R then asks the restart again.
+  CHECK(m.key(GLFW_KEY_R, "this hole's 3 strokes", round) == MenuChoice::None);
+  CHECK(m.key(GLFW_KEY_Q, "this hole's 3 strokes", round) == MenuChoice::None);
+  CHECK(m.asking() == MenuChoice::Quit);
+  CHECK(m.key(GLFW_KEY_R, "this hole's 3 strokes", round) == MenuChoice::None);
+  CHECK(m.asking() == MenuChoice::Restart);
+  // The button asks the same way.
+  m.reset();
+  CHECK(m.quit_pressed(round) == MenuChoice::None);
+  CHECK(m.quit_pressed(round) == MenuChoice::Quit);
+}

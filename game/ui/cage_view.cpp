@@ -18,6 +18,7 @@
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
 #include "game/ui/cage_people.hpp"
+#include "game/ui/pitch_words.hpp"
 #include "game/ui/two_lines.hpp"
 #include "physics/units.hpp"
 
@@ -185,6 +186,11 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     ImGui::TextWrapped("Pitch: %s %.0f mph, %.0f in %s, %.0f in %s than a spinless ball", c.call().type.type.c_str(),
                        mps_to_mph(c.call().type.speed), 12.0 * std::abs(m_to_ft(m.horizontal_break)), arm_side ? "arm side" : "glove side",
                        12.0 * std::abs(m_to_ft(m.induced_vertical_break)), m.induced_vertical_break >= 0.0 ? "higher" : "lower");
+    // The same in the batter's words: where it crossed for him and which way it moved.
+    const bool same_hand = c.call().left_handed == c.left_handed();
+    ImGui::TextWrapped("%s", pitch_for_batter(c.pitch().plate, c.ball_radius(), c.left_handed(), arm_side == same_hand,
+                                             12.0 * std::abs(m_to_ft(m.horizontal_break)))
+                                 .c_str());
   }
   ImGui::TextWrapped("Swing: %s, %s-handed, %s", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right",
               c.timing_only() ? "timing only" : "bat height by hand");

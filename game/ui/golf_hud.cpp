@@ -330,18 +330,36 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   }
   // Each player's score so far against par.
   const Standings s = standings(g);
-  if (s.holes > 0) {
+  // In a group, where each player is on this hole beside his score: the strokes played, how
+  // far from the pin and on what, or how he finished it; a bot's ball is then not lost from
+  // view when the camera has gone on to the next player.
+  const bool group = g.players().size() > 1 && !g.finished();
+  const std::size_t hole = g.hole_index();
+  const auto on_this_hole = [&](std::size_t p) -> std::string {
+    if (!group) return {};
+    const GolfRound& pr = g.round(static_cast<int>(p));
+    if (pr.card().size() <= hole) return {};
+    const HoleCard& c = pr.card()[hole];
+    if (pr.finished() || pr.hole_index() > hole)
+      return c.holed ? "   holed in " + std::to_string(c.strokes) : c.picked_up ? "   picked up" : "   conceded";
+    if (c.strokes == 0) return "   to tee off";
+    return "   " + std::to_string(c.strokes) + " played, " + (pr.lie() == "green" ? units.putt(pr.to_pin()) : units.course(pr.to_pin())) +
+           ", " + lie_words(pr.lie());
+  };
+  if (s.holes > 0 || group) {
     ImGui::Separator();
     for (std::size_t p = 0; p < g.players().size(); ++p) {
       const PlayerStanding& ps = s.players[p];
       char extra[48] = "";
       if (s.format == GolfFormat::Stableford) std::snprintf(extra, sizeof extra, "  %d pts", ps.total_points);
-      if (s.format == GolfFormat::Skins) std::snprintf(extra, sizeof extra, "  %d skin%s", s.skins->skins[p], s.skins->skins[p] == 1 ? "" : "s");
-      if (ps.holes_scored == 0)  // a match's only hole so far conceded: no score to stand on
-        ImGui::Text("%-14s   -%s", g.players()[p].name.c_str(), extra);
+      if (s.format == GolfFormat::Skins && s.skins)
+        std::snprintf(extra, sizeof extra, "  %d skin%s", s.skins->skins[p], s.skins->skins[p] == 1 ? "" : "s");
+      const std::string here = on_this_hole(p);
+      if (ps.holes_scored == 0)  // no hole scored yet (or a match's only one conceded): no score to stand on
+        ImGui::Text("%-14s   -%s%s", g.players()[p].name.c_str(), extra, here.c_str());
       else
-        ImGui::Text("%-14s %3d (%s)%s", g.players()[p].name.c_str(), ps.total_strokes, to_par_text(ps.total_strokes - ps.total_par).c_str(),
-                    extra);
+        ImGui::Text("%-14s %3d (%s)%s%s", g.players()[p].name.c_str(), ps.total_strokes, to_par_text(ps.total_strokes - ps.total_par).c_str(),
+                    extra, here.c_str());
     }
     if (s.match) ImGui::Text("Match: %s", s.match->holes.back().status.c_str());
   } else if (g.options().format == GolfFormat::Match) {

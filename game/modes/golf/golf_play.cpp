@@ -178,12 +178,15 @@ GolfPlay::AimWhy GolfPlay::aim_why() const {
   return aim_why_;
 }
 
+GolfPlay::StrokeKey GolfPlay::key_for(const std::string& club, bool along_aim) const {
+  return {player_, club, round().ball(), group_.hole_index(), along_aim ? aim_ : 0.0};
+}
+
 const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double power) const {
   const GolfRound& r = round();
   std::optional<FlownHere>& slot = flown_[power < 1.0 ? 1 : 0];
-  if (slot && slot->player == player_ && slot->club == club && slot->ball == r.ball() && slot->hole == group_.hole_index() &&
-      slot->aim == aim_ && slot->power == power)
-    return *slot;
+  const StrokeKey key = key_for(club);
+  if (slot && slot->key == key && slot->power == power) return *slot;
   StrokeInput in;
   in.club = club;
   in.aim = aim_;
@@ -196,7 +199,7 @@ const GolfPlay::FlownHere& GolfPlay::flown_here(const std::string& club, double 
     calm = r.first_touch_in_a_tree(c) ? std::numeric_limits<double>::quiet_NaN() : c.carry_m;
     calm_landing = c.landing_position;
   }
-  slot = FlownHere{player_, club, r.ball(), group_.hole_index(), aim_, power, f.carry_m, f.total_m, calm, f.landing_position,
+  slot = FlownHere{key, power, f.carry_m, f.total_m, calm, f.landing_position,
                    f.rest_position, r.first_touch_in_a_tree(f), calm_landing};
   return *slot;
 }
@@ -359,10 +362,9 @@ const std::vector<std::pair<double, double>>& GolfPlay::carry_table(const std::s
   static const std::vector<std::pair<double, double>> none;
   const GolfRound& r = round();
   if (r.finished() || club == "putter") return none;
-  if (carry_table_ && carry_table_->player == player_ && carry_table_->club == club && carry_table_->ball == r.ball() &&
-      carry_table_->hole == group_.hole_index())
-    return carry_table_->table;
-  CarryTable t{player_, club, r.ball(), group_.hole_index(), {}};
+  const StrokeKey key = key_for(club, false);
+  if (carry_table_ && carry_table_->key == key) return carry_table_->table;
+  CarryTable t{key, {}};
   StrokeInput in;
   in.club = club;
   in.aim = aim_;
@@ -380,9 +382,8 @@ const std::vector<GolfPlay::Hazard>& GolfPlay::hazards_on_line(const std::string
   static const std::vector<Hazard> none;
   const GolfRound& r = round();
   if (r.finished() || club == "putter") return none;
-  if (hazards_ && hazards_->player == player_ && hazards_->club == club && hazards_->ball == r.ball() &&
-      hazards_->hole == group_.hole_index() && hazards_->aim == aim_)
-    return hazards_->hazards;
+  const StrokeKey key = key_for(club);
+  if (hazards_ && hazards_->key == key) return hazards_->hazards;
   std::vector<Hazard> out;
   // Out to past where it stops by what a miss of length runs on (10 %, at least 10 m), every
   // 2 m; a gap under 5 m between two stretches of one kind is the same hazard (a sample
@@ -396,7 +397,7 @@ const std::vector<GolfPlay::Hazard>& GolfPlay::hazards_on_line(const std::string
     if (!out.empty() && out.back().kind == kind && s - out.back().to <= kJoin) out.back().to = s;
     else out.push_back({kind, s, s});
   }
-  hazards_ = HazardsHere{player_, club, r.ball(), group_.hole_index(), aim_, std::move(out)};
+  hazards_ = HazardsHere{key, std::move(out)};
   return hazards_->hazards;
 }
 

@@ -297,12 +297,23 @@ class GolfPlay {
   /// A stroke of `club` along the aim at `power`, flown from where the ball lies: its carry
   /// and whether a tree stopped it. Keyed by player too: players tee off from one spot with
   /// their own swings.
-  struct FlownHere {
+  /// What a kept answer about a stroke from here depends on: whose turn, which club, from
+  /// where, on which hole, along which aim.
+  struct StrokeKey {
     int player = 0;
     std::string club;
     Vec3 ball = Vec3::Zero();
     std::size_t hole = 0;
     double aim = 0.0;
+    bool operator==(const StrokeKey& o) const {
+      return player == o.player && club == o.club && ball == o.ball && hole == o.hole && aim == o.aim;
+    }
+  };
+  /// The key of `club`'s stroke now; `along_aim` false leaves the aim out (a table kept
+  /// whatever the aim).
+  StrokeKey key_for(const std::string& club, bool along_aim = true) const;
+  struct FlownHere {
+    StrokeKey key;
     double power = 1.0;
     double carry = 0.0;
     double total = 0.0;
@@ -319,20 +330,13 @@ class GolfPlay {
   /// The last full swing asked for and the last part swing: the HUD asks of both each frame.
   mutable std::optional<FlownHere> flown_[2];
   struct CarryTable {
-    int player = 0;
-    std::string club;
-    Vec3 ball = Vec3::Zero();
-    std::size_t hole = 0;
+    StrokeKey key;                                 ///< its aim left out
     std::vector<std::pair<double, double>> table;  ///< (power, carry m), the carry never falling
   };
   const std::vector<std::pair<double, double>>& carry_table(const std::string& club) const;
   mutable std::optional<CarryTable> carry_table_;
   struct HazardsHere {
-    int player = 0;
-    std::string club;
-    Vec3 ball = Vec3::Zero();
-    std::size_t hole = 0;
-    double aim = 0.0;
+    StrokeKey key;
     std::vector<Hazard> hazards;
   };
   mutable std::optional<HazardsHere> hazards_;  ///< the last answer: the HUD asks each frame

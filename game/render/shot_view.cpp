@@ -45,7 +45,12 @@ Camera full_shot_address_camera(const Vec3& ball, const Vec3& aim) {
 Camera putt_address_camera(const Vec3& ball, const Vec3& aim, double to_pin) {
   const Vec3 right(-aim.z(), 0.0, aim.x());
   Camera c;
-  c.eye = ball - 4.0 * aim + 0.4 * right + Vec3(0.0, 1.9, 0.0);
+  // High enough to see over the golfer: he stands ~0.75 m left of the line, his head ~1.6 m
+  // up. From 1.9 m the sight line over his head met the green ~25 m out and he hid most of
+  // the slope arrows left of the line; from 3.2 m it meets it ~8.5 m out (eye height x 4 m /
+  // (3.2 - 1.7)). Higher, a long putt's flag leaves the top of the frame while the ball is
+  // held above the meter.
+  c.eye = ball - 4.0 * aim + 0.6 * right + Vec3(0.0, 3.2, 0.0);
   c.target = ball + (std::min(to_pin, 12.0) + 0.5) * aim;
   c.target.y() = ball.y() - 0.2;
   c.fov_y = deg_to_rad(45.0);

@@ -35,8 +35,8 @@ ImpactorPlacement club_at_address(const Vec3& centre, const Vec3& aim, double ba
 Camera full_shot_address_camera(const Vec3& ball, const Vec3& aim);
 
 /// The view of a putt at `ball` toward `aim` (unit, horizontal) with the cup `to_pin` m
-/// away: 4 m behind and 0.4 m right of the line (aside of the golfer addressing it from
-/// the left), 1.9 m up, looking down the line toward the cup (up to 12.5 m ahead), tilted
+/// away: 4 m behind and 0.6 m right of the line (aside of the golfer addressing it from
+/// the left), 3.2 m up (over his head), looking down the line toward the cup (up to 12.5 m ahead), tilted
 /// down as far as it takes to hold the ball no lower than 55 % of the half-height below
 /// the image's centre, above the swing meter at the bottom of the window.
 Camera putt_address_camera(const Vec3& ball, const Vec3& aim, double to_pin);

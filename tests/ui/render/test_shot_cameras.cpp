@@ -197,3 +197,50 @@ TEST_CASE("a chip's view from beside the ball shows the flag clear of the golfer
   CHECK(clear(chip) > 80.0);
   CHECK(clear(full_shot_address_camera(ball, aim)) < 40.0);
 }
+
+TEST_CASE("a putt's view sees the green left of the line over the golfer's head", "[render][unit]") {
+  // The golfer addresses a putt from the left of its line: his legs and hips a box 0.55-0.95 m
+  // left of it up to 0.95 m, his trunk and head, bent over toward the ball, 0.45-0.9 m left
+  // from there to 1.7 m, each 0.15 m either side of the ball's station (ESTIMATES of the
+  // figure game/render/golfer_figure draws). Of the green left of the line 0.8-2.4 m out to
+  // the side and 2-9 m ahead (where the slope arrows lie), the share his boxes cover on the
+  // screen: from 1.9 m up the sight line over his head met the green ~25 m out and he
+  // covered 42 % of it.
+  const Vec3 ball(0.0, 0.021, 0.0), aim = Vec3::UnitX();
+  const Vec3 left(aim.z(), 0.0, -aim.x());
+  const int w = 1280, h = 800;
+  struct Box {
+    double side0, side1, up0, up1;
+  };
+  const Box boxes[] = {{0.55, 0.95, 0.0, 0.95}, {0.45, 0.9, 0.95, 1.7}};
+  const auto hidden_share = [&](const Camera& c) {
+    std::vector<Eigen::Vector4d> outlines;  // each box's outline on the screen: x0, y0, x1, y1
+    for (const Box& b : boxes) {
+      Eigen::Vector4d o(1e9, 1e9, -1e9, -1e9);
+      for (const double side : {b.side0, b.side1})
+        for (const double along : {-0.15, 0.15})
+          for (const double up : {b.up0, b.up1}) {
+            const auto p = c.project(ball + side * left + along * aim + Vec3(0.0, up, 0.0), w, h);
+            REQUIRE(p);
+            o = Eigen::Vector4d(std::min(o[0], p->x()), std::min(o[1], p->y()), std::max(o[2], p->x()), std::max(o[3], p->y()));
+          }
+      outlines.push_back(o);
+    }
+    int hidden = 0, seen = 0;
+    for (double side = 0.8; side <= 2.41; side += 0.4)
+      for (double ahead = 2.0; ahead <= 9.01; ahead += 1.0) {
+        const auto p = c.project(ball + ahead * aim + side * left, w, h);
+        if (!p || p->x() < 0 || p->x() > w || p->y() < 0 || p->y() > h) continue;
+        ++seen;
+        if (std::any_of(outlines.begin(), outlines.end(), [&](const Eigen::Vector4d& o) {
+              return p->x() > o[0] && p->x() < o[2] && p->y() > o[1] && p->y() < o[3];
+            }))
+          ++hidden;
+      }
+    REQUIRE(seen > 20);
+    return static_cast<double>(hidden) / seen;
+  };
+  const double share = hidden_share(putt_address_camera(ball, aim, 7.3));
+  INFO("hidden share " << share);
+  CHECK(share < 0.25);
+}

@@ -45,7 +45,7 @@ MenuChoice draw_pause_menu(PauseMenu& menu, const char* title, const char* resta
   } else if (menu.asking() == MenuChoice::Quit) {
     ImGui::TextWrapped("Quit: %s will be lost.", quit_loses.c_str());
     if (ImGui::Button("Quit (Q again)", size)) choice = menu.quit_pressed(quit_loses);
-    if (ImGui::Button("Keep playing (Esc)", size)) menu.reset();
+    if (ImGui::Button("Keep it (Esc)", size)) menu.reset();
   } else {
     if (ImGui::Button("Resume (Esc)", size)) choice = MenuChoice::Resume;
     if (ImGui::Button((std::string(restart_label) + " (R)").c_str(), size)) choice = menu.restart_pressed(restart_loses);

@@ -337,6 +337,8 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   const std::size_t hole = g.hole_index();
   const auto on_this_hole = [&](std::size_t p) -> std::string {
     if (!group) return {};
+    // The stroke in the air is told when it stops, not before (the model has played it).
+    if (in_air && static_cast<int>(p) == play.shooter()) return "   playing";
     const GolfRound& pr = g.round(static_cast<int>(p));
     if (pr.card().size() <= hole) return {};
     const HoleCard& c = pr.card()[hole];
@@ -344,7 +346,7 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       return c.holed ? "   holed in " + std::to_string(c.strokes) : c.picked_up ? "   picked up" : "   conceded";
     if (c.strokes == 0) return "   to tee off";
     return "   " + std::to_string(c.strokes) + " played, " + (pr.lie() == "green" ? units.putt(pr.to_pin()) : units.course(pr.to_pin())) +
-           ", " + lie_words(pr.lie());
+           " to go, " + lie_words(pr.lie());
   };
   if (s.holes > 0 || group) {
     ImGui::Separator();
@@ -523,13 +525,12 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
                       100.0 * cup_p, break_length(past, units).c_str(), read, last);
       }
     }
-  } else if (!meter && play.swing_undone()) {
-    // Said where the player was looking when it happened, not only in the panel.
-    std::snprintf(label, sizeof label, "%s", play.message().c_str());
   } else {
     // The swing's distance scale, as the putt's: how far each power carries from here (ticks
     // every 10 yd or m, labelled at round lengths where the last label leaves room), and the
-    // power that carries to the pin, a green mark as the putt's cup, when the club gets there.
+    // power whose stroke stops at the pin (a ball that runs on is aimed by where it
+    // finishes), a green mark as the putt's cup, when the club gets there. Kept while a
+    // swing that was abandoned is said in the caption.
     const std::string& club = play.club();
     const double longest = play.carry_at_power(club, MeterBar::kHigh);
     const double unit = units.imperial ? 0.9144 : 1.0;
@@ -552,19 +553,24 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         }
       }
       const double to_pin = play.round().to_pin();
-      if (to_pin < longest && to_pin > play.carry_at_power(club, 0.2)) {
-        const double p = play.power_for_carry(club, to_pin);
+      if (to_pin < play.stop_at_power(club, MeterBar::kHigh) && to_pin > play.stop_at_power(club, 0.2)) {
+        const double p = play.power_for_stop(club, to_pin);
         const ImU32 kPinMark = IM_COL32(90, 225, 120, 255);
         const float xp = at(p);
         dl->AddLine(ImVec2(xp, y0 - 2), ImVec2(xp, y0 + bh + 2), kPinMark, 2.0f);
         dl->AddTriangleFilled(ImVec2(xp - 6, y0 - 10), ImVec2(xp + 6, y0 - 10), ImVec2(xp, y0), kPinMark);
-        std::snprintf(pin_words, sizeof pin_words, "; green: carries the pin at %.0f %%", 100.0 * p);
+        std::snprintf(pin_words, sizeof pin_words, "; green: stops at the pin at %.0f %%", 100.0 * p);
       }
     }
-    char before[200];
-    std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms)%s", club_name(club).c_str(),
-                  to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty), pin_words);
-    std::snprintf(label, sizeof label, "%s", full_swing_caption(meter, now, before).c_str());
+    if (!meter && play.swing_undone()) {
+      // Said where the player was looking when it happened, not only in the panel.
+      std::snprintf(label, sizeof label, "%s", play.message().c_str());
+    } else {
+      char before[200];
+      std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms)%s", club_name(club).c_str(),
+                    to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty), pin_words);
+      std::snprintf(label, sizeof label, "%s", full_swing_caption(meter, now, before).c_str());
+    }
   }
   // The caddie's part swing (his club, under full power), or his pace for a putt he read: a
   // mark on the bar where his power is, as the putt's cup is marked, so "Caddie: a part

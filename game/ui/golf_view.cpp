@@ -88,7 +88,7 @@ class GolfView final : public ModeView {
   std::string quit_loses() const override {
     const std::size_t turns = play_->group().events().size();
     if (play_->stage() == GolfPlay::Stage::RoundOver || turns == 0 || saved_turns_ == turns) return {};
-    return "the round so far (S in play saves it; --resume goes on with it)";
+    return "the round so far (S in play saves it to finish later)";
   }
   // A swing or a latency calibration under way: Esc takes it back instead of pausing.
   bool busy() const override { return play_->stage() == GolfPlay::Stage::Swinging || calibration_.has_value(); }

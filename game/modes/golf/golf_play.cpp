@@ -358,24 +358,27 @@ double GolfPlay::power_for_roll(double distance) const { return interpolate(roll
 
 double GolfPlay::cup_mark_power() const { return power_for_roll(putt_plays_as_ + GolfBot::kPuttPast); }
 
-const std::vector<std::pair<double, double>>& GolfPlay::carry_table(const std::string& club) const {
-  static const std::vector<std::pair<double, double>> none;
+const GolfPlay::CarryTable& GolfPlay::carry_table(const std::string& club) const {
+  static const CarryTable none;
   const GolfRound& r = round();
   if (r.finished() || club == "putter") return none;
   const StrokeKey key = key_for(club, false);
-  if (carry_table_ && carry_table_->key == key) return carry_table_->table;
-  CarryTable t{key, {}};
+  if (carry_table_ && carry_table_->key == key) return *carry_table_;
+  CarryTable t{key, {}, {}};
   StrokeInput in;
   in.club = club;
   in.aim = aim_;
-  double longest = 0.0;
+  double longest = 0.0, farthest = 0.0;
   for (int k = 2; k <= 11; ++k) {
     in.meter.power = std::min(0.1 * k, MeterInput::kPower.max);
-    longest = std::max(longest, r.simulate(in).trajectory.summary.carry_m);
+    const FlightSummary f = r.simulate(in).trajectory.summary;
+    longest = std::max(longest, f.carry_m);
+    farthest = std::max(farthest, f.total_m);
     t.table.emplace_back(in.meter.power, longest);
+    t.stops.emplace_back(in.meter.power, farthest);
   }
   carry_table_ = std::move(t);
-  return carry_table_->table;
+  return *carry_table_;
 }
 
 const std::vector<GolfPlay::Hazard>& GolfPlay::hazards_on_line(const std::string& club) const {
@@ -401,10 +404,16 @@ const std::vector<GolfPlay::Hazard>& GolfPlay::hazards_on_line(const std::string
   return hazards_->hazards;
 }
 
-double GolfPlay::carry_at_power(const std::string& club, double power) const { return interpolate(carry_table(club), power, true); }
+double GolfPlay::carry_at_power(const std::string& club, double power) const { return interpolate(carry_table(club).table, power, true); }
 
 double GolfPlay::power_for_carry(const std::string& club, double distance) const {
-  return interpolate(carry_table(club), distance, false);
+  return interpolate(carry_table(club).table, distance, false);
+}
+
+double GolfPlay::stop_at_power(const std::string& club, double power) const { return interpolate(carry_table(club).stops, power, true); }
+
+double GolfPlay::power_for_stop(const std::string& club, double distance) const {
+  return interpolate(carry_table(club).stops, distance, false);
 }
 
 void GolfPlay::update(const Intents& intents, double now) {

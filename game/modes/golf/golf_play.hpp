@@ -204,6 +204,10 @@ class GolfPlay {
   /// that stops the flight.
   double carry_at_power(const std::string& club, double power) const;
   double power_for_carry(const std::string& club, double distance) const;
+  /// The same table's distance to where the stroke stops (m), and the power that stops it
+  /// `distance` away: a ball that runs on after landing is aimed by where it finishes.
+  double stop_at_power(const std::string& club, double power) const;
+  double power_for_stop(const std::string& club, double distance) const;
 
   /// Water and bunkers the aim line crosses from the ball to a little past where the stroke
   /// the player would play with `club` stops (the caddie's part swing, else a full one): each
@@ -332,8 +336,9 @@ class GolfPlay {
   struct CarryTable {
     StrokeKey key;                                 ///< its aim left out
     std::vector<std::pair<double, double>> table;  ///< (power, carry m), the carry never falling
+    std::vector<std::pair<double, double>> stops;  ///< (power, m to where it stops), never falling
   };
-  const std::vector<std::pair<double, double>>& carry_table(const std::string& club) const;
+  const CarryTable& carry_table(const std::string& club) const;
   mutable std::optional<CarryTable> carry_table_;
   struct HazardsHere {
     StrokeKey key;

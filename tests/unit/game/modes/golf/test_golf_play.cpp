@@ -460,6 +460,17 @@ TEST_CASE("the meter's carry scale is the stroke's own carry at each power, and 
     const double carry = tee.round().simulate(in).trajectory.summary.carry_m;
     CHECK(carry == Approx(tee.carry_at_power(club, p)).margin(0.03 * carry));  // linear between the table's powers
   }
+  // The pin's mark is by where the stroke stops: the power it gives stops there (to within
+  // the table's straight lines between its powers).
+  const double stop_p = tee.power_for_stop(club, tee.stop_at_power(club, 0.75));
+  CHECK(stop_p == Approx(0.75).margin(1e-6));
+  StrokeInput at_stop;
+  at_stop.club = club;
+  at_stop.aim = tee.aim();
+  at_stop.meter.power = stop_p;
+  const double total = tee.round().simulate(at_stop).trajectory.summary.total_m;
+  CHECK(total == Approx(tee.stop_at_power(club, 0.75)).margin(0.03 * total));
+  CHECK(tee.stop_at_power(club, 1.0) >= tee.carry_at_power(club, 1.0));
   // More power never carries less, and the putter has no scale.
   for (double p = 0.2; p < 1.1; p += 0.05) CHECK(tee.carry_at_power(club, p + 0.05) >= tee.carry_at_power(club, p));
   CHECK(tee.carry_at_power("putter", 1.0) == 0.0);

@@ -183,14 +183,13 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     const bool arm_side = (m.horizontal_break < 0.0) != c.call().left_handed;
     // Said against the spinless ball ("2 in higher"): a slider's "2 in rise" read as a pitch
     // that climbs, where it drops all the way, only less than gravity alone would drop it.
+    const double run_in = 12.0 * std::abs(m_to_ft(m.horizontal_break));
     ImGui::TextWrapped("Pitch: %s %.0f mph, %.0f in %s, %.0f in %s than a spinless ball", c.call().type.type.c_str(),
-                       mps_to_mph(c.call().type.speed), 12.0 * std::abs(m_to_ft(m.horizontal_break)), arm_side ? "arm side" : "glove side",
+                       mps_to_mph(c.call().type.speed), run_in, arm_side ? "arm side" : "glove side",
                        12.0 * std::abs(m_to_ft(m.induced_vertical_break)), m.induced_vertical_break >= 0.0 ? "higher" : "lower");
     // The same in the batter's words: where it crossed for him and which way it moved.
     const bool same_hand = c.call().left_handed == c.left_handed();
-    ImGui::TextWrapped("%s", pitch_for_batter(c.pitch().plate, c.ball_radius(), c.left_handed(), arm_side == same_hand,
-                                             12.0 * std::abs(m_to_ft(m.horizontal_break)))
-                                 .c_str());
+    ImGui::TextWrapped("%s", pitch_for_batter(c.pitch().plate, c.ball_radius(), c.left_handed(), arm_side == same_hand, run_in).c_str());
   }
   ImGui::TextWrapped("Swing: %s, %s-handed, %s", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right",
               c.timing_only() ? "timing only" : "bat height by hand");

@@ -117,6 +117,40 @@ namespace {
 // The words around the meter sit on a dark band so the view behind (a green's slope arrows,
 // sand, sky) never runs through them.
 constexpr ImU32 kBand = IM_COL32(15, 20, 25, 170);
+
+// The band under the meter that reads a power as a length (a putt's roll, a swing's carry):
+// a tick at each length's power, and its label where the last one leaves room and, when
+// `right` is given, inside the band's right edge.
+class MeterScale {
+ public:
+  MeterScale(ImDrawList* dl, const MeterBar& bar, float right = 1e9f) : dl_(dl), bar_(bar), right_(right) {
+    dl_->AddRectFilled(ImVec2(bar.x0 - 4, bar.y0 + bar.bh + 2), ImVec2(bar.x0 + bar.bw + 4, bar.y0 + bar.bh + 24), kBand, 4.0f);
+  }
+  void tick(double power, const char* label = nullptr) {
+    const float x = bar_.at(power), y = bar_.y0 + bar_.bh;
+    dl_->AddLine(ImVec2(x, y), ImVec2(x, y + 6), IM_COL32(200, 200, 200, 200), 1.0f);
+    if (label == nullptr) return;
+    const float left = x - 8.0f, wide = ImGui::CalcTextSize(label).x;
+    if (left < free_from_ || left + wide > right_) return;
+    dl_->AddText(ImVec2(left, y + 7), IM_COL32(200, 200, 200, 220), label);
+    free_from_ = left + wide + 5.0f;
+  }
+
+ private:
+  ImDrawList* dl_;
+  const MeterBar& bar_;
+  float right_;
+  float free_from_ = -1e9f;
+};
+
+// The power the player should strike for the target (a putt's cup, a swing's pin): a green
+// line through the bar under a triangle, the caption naming it.
+void target_mark(ImDrawList* dl, const MeterBar& bar, double power) {
+  const ImU32 kTarget = IM_COL32(90, 225, 120, 255);
+  const float x = bar.at(std::min(power, MeterBar::kHigh));
+  dl->AddLine(ImVec2(x, bar.y0 - 2), ImVec2(x, bar.y0 + bar.bh + 2), kTarget, 2.0f);
+  dl->AddTriangleFilled(ImVec2(x - 6, bar.y0 - 10), ImVec2(x + 6, bar.y0 - 10), ImVec2(x, bar.y0), kTarget);
+}
 // A run past the carry worth saying (m, 10 yd): a full iron's usual release on a fairway is
 // less, a drive's or a flyer's from the rough more.
 constexpr double kRunNoted = 9.144;
@@ -457,35 +491,28 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   const std::optional<MeterClock> marks =
       play.last_click() && (!play.last_click()->putting() || play.last_click_here()) ? play.last_click() : std::nullopt;
   const MeterBar bar = draw_meter_bar(meter, marks, putting, perfect_window_ms(play.setup().difficulty), w, h, now);
-  const float x0 = bar.x0, y0 = bar.y0, bh = bar.bh;
+  const float y0 = bar.y0;
   const auto at = [&](double f) { return bar.at(f); };
   const double shown = bar.shown;
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   char label[256];
   if (putting) {
     // The putt preview: how far each power rolls on a flat green of this speed.
-    dl->AddRectFilled(ImVec2(x0 - 4, y0 + bh + 2), ImVec2(x0 + bar.bw + 4, y0 + bh + 24), kBand, 4.0f);
     // A tick every 5 ft (2 m); labels at the same round lengths on every green, spaced as the
     // roll grows with the square of the stroke (the short putts' ticks stand apart, the long
     // ones crowd the bar's end), each drawn where the last leaves room.
+    MeterScale scale(dl, bar);
     const double step = units.imperial ? 5.0 * 0.3048 : 2.0;
     static constexpr long kLabelledFt[] = {5, 10, 20, 30, 40, 60, 80, 100, 120};
     static constexpr long kLabelledM[] = {2, 4, 6, 10, 14, 20, 30, 40};
-    float free_from = x0 - 1e9f;
     for (double d = step; d < play.flat_roll(1.1); d += step) {
-      const double p = play.power_for_roll(d);
-      dl->AddLine(ImVec2(at(p), y0 + bh), ImVec2(at(p), y0 + bh + 6), IM_COL32(200, 200, 200, 200), 1.0f);
       const long n = std::lround(d / step);
       const long length = units.imperial ? 5 * n : 2 * n;
       const auto& labelled = units.imperial ? std::span<const long>(kLabelledFt) : std::span<const long>(kLabelledM);
-      if (std::find(labelled.begin(), labelled.end(), length) == labelled.end()) continue;
       char text[16];
       std::snprintf(text, sizeof text, units.imperial ? "%ld ft" : "%ld m", length);
-      const float left = at(p) - 8.0f;
-      if (left >= free_from) {
-        dl->AddText(ImVec2(left, y0 + bh + 7), IM_COL32(200, 200, 200, 220), text);
-        free_from = left + ImGui::CalcTextSize(text).x + 5.0f;
-      }
+      const bool named = std::find(labelled.begin(), labelled.end(), length) != labelled.end();
+      scale.tick(play.power_for_roll(d), named ? text : nullptr);
     }
     const double to_cup = play.round().to_pin();
     // Off the green the mark is for the putt as it plays: the slower grass first.
@@ -500,10 +527,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
                     units.putt(plays).c_str(), play.putt_crosses().c_str());
     // The cup's mark in its own colour, through the bar (the caption, above it, names it):
     // white is the bar's 100 % line and the last putt's power, blue the caddie's read.
-    const ImU32 kCupMark = IM_COL32(90, 225, 120, 255);
-    const float xc = at(std::min(cup_p, MeterBar::kHigh));
-    dl->AddLine(ImVec2(xc, y0 - 2), ImVec2(xc, y0 + bh + 2), kCupMark, 2.0f);
-    dl->AddTriangleFilled(ImVec2(xc - 6, y0 - 10), ImVec2(xc + 6, y0 - 10), ImVec2(xc, y0), kCupMark);
+    target_mark(dl, bar, cup_p);
     if (meter) {
       std::snprintf(label, sizeof label, "putt: %.0f %% rolls %s on flat green (%s)   Esc: cancel", 100.0 * shown,
                     units.putt(play.flat_roll(shown)).c_str(), cup);
@@ -536,29 +560,19 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
     const double unit = units.imperial ? 0.9144 : 1.0;
     char pin_words[96] = "";
     if (longest > 10.0 * unit) {
-      dl->AddRectFilled(ImVec2(x0 - 4, y0 + bh + 2), ImVec2(x0 + bar.bw + 4, y0 + bh + 24), kBand, 4.0f);
+      MeterScale scale(dl, bar, bar.x0 + bar.bw + 4.0f);
       const long every = longest < 130.0 * unit ? 20 : 50;  // labels: a wedge's every 20, the longer clubs' every 50
-      float free_from = x0 - 1e9f;
       for (long n = 10; n * unit < longest; n += 10) {
         const double p = play.power_for_carry(club, n * unit);
         if (p < 0.2) continue;  // below the table's first power the scale is a guess
-        dl->AddLine(ImVec2(at(p), y0 + bh), ImVec2(at(p), y0 + bh + 6), IM_COL32(200, 200, 200, 200), 1.0f);
-        if (n % every != 0) continue;
         char text[16];
         std::snprintf(text, sizeof text, units.imperial ? "%ld yd" : "%ld m", n);
-        const float left = at(p) - 8.0f, wide = ImGui::CalcTextSize(text).x;
-        if (left >= free_from && left + wide <= x0 + bar.bw + 4.0f) {  // within the band
-          dl->AddText(ImVec2(left, y0 + bh + 7), IM_COL32(200, 200, 200, 220), text);
-          free_from = left + wide + 5.0f;
-        }
+        scale.tick(p, n % every == 0 ? text : nullptr);
       }
       const double to_pin = play.round().to_pin();
       if (to_pin < play.stop_at_power(club, MeterBar::kHigh) && to_pin > play.stop_at_power(club, 0.2)) {
         const double p = play.power_for_stop(club, to_pin);
-        const ImU32 kPinMark = IM_COL32(90, 225, 120, 255);
-        const float xp = at(p);
-        dl->AddLine(ImVec2(xp, y0 - 2), ImVec2(xp, y0 + bh + 2), kPinMark, 2.0f);
-        dl->AddTriangleFilled(ImVec2(xp - 6, y0 - 10), ImVec2(xp + 6, y0 - 10), ImVec2(xp, y0), kPinMark);
+        target_mark(dl, bar, p);
         std::snprintf(pin_words, sizeof pin_words, "; green: stops at the pin at %.0f %%", 100.0 * p);
       }
     }

@@ -454,7 +454,7 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optio
   dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + bw, y0 + bh), IM_COL32(20, 24, 30, 255), 4.0f);
   if (!putting) {
     // The accuracy mark, as wide as the difficulty's perfect window (at least a sliver).
-    const double half = meter ? meter->window_fraction() : MeterClock(MeterClock::tempo_for(1.0, false), false, window_ms).window_fraction();
+    const double half = meter ? meter->window_fraction() : MeterClock(MeterClock::tempo_for(false), false, window_ms).window_fraction();
     dl->AddRectFilled(ImVec2(at(-std::max(half, 0.006)), y0), ImVec2(at(std::max(half, 0.006)), y0 + bh), IM_COL32(60, 170, 80, 230));
   }
   dl->AddLine(ImVec2(at(1.0), y0 - 4), ImVec2(at(1.0), y0 + bh + 4), IM_COL32(250, 250, 250, 255), 2.0f);

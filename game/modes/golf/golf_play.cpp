@@ -578,13 +578,12 @@ void GolfPlay::apply(const Intent& in) {
         case IntentKind::CaddieClub: choose_club(); break;
         case IntentKind::ReadGreen: read_green(); break;
         case IntentKind::Swing: {
-          const double length = assets_.equipment().club(club()).length;
           // A putt the preview reaches: the marker slowed for a short one (putt_tempo); the
           // caddie's part swing with this club, slowed to its mark as well.
           const double part = putting ? 1.0 : part_swing_power(club());
           const double tempo = putting && putt_plays_as_ > 0.0 ? MeterClock::putt_tempo(cup_mark_power())
-                               : part < 1.0                    ? MeterClock::part_swing_tempo(length, part)
-                                                               : MeterClock::tempo_for(length, putting);
+                               : part < 1.0                    ? MeterClock::part_swing_tempo(part)
+                                                               : MeterClock::tempo_for(putting);
           meter_.emplace(tempo, putting, perfect_window_ms(setup_.difficulty));
           swing_undone_ = false;
           meter_->click(t);

@@ -32,9 +32,7 @@ MeterDifficulty meter_difficulty(std::string_view name) {
   throw InputError("difficulty '" + std::string(name) + "' is not one (allowed: easy, standard, pro)");
 }
 
-double MeterClock::tempo_for(double club_length, bool putter) {
-  return putter ? 1.2 : 0.9 * club_length / kDriverLength;
-}
+double MeterClock::tempo_for(bool putter) { return putter ? 1.2 : 0.9; }
 
 namespace {
 /// `usual`, or slower so that the marker takes kLeastToCup to climb to `mark_power`.
@@ -44,11 +42,9 @@ double slowed_to_mark(double usual, double mark_power) {
 }
 }  // namespace
 
-double MeterClock::putt_tempo(double cup_power) { return slowed_to_mark(tempo_for(0.0, true), cup_power); }
+double MeterClock::putt_tempo(double cup_power) { return slowed_to_mark(tempo_for(true), cup_power); }
 
-double MeterClock::part_swing_tempo(double club_length, double mark_power) {
-  return slowed_to_mark(tempo_for(club_length, false), mark_power);
-}
+double MeterClock::part_swing_tempo(double mark_power) { return slowed_to_mark(tempo_for(false), mark_power); }
 
 double MeterClock::position(double t) const {
   switch (phase_) {

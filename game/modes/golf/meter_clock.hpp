@@ -62,20 +62,23 @@ class MeterClock {
   /// The perfect window's half-width as a fraction of the meter (for drawing it).
   double window_fraction() const { return kDownFactor * (window_ms_ / 1000.0) / tempo_; }
 
-  /// Seconds for 0 -> 100 % with `club_length` m (the driver's 0.9 s; shorter clubs swing
-  /// quicker in proportion, the putter's stroke 1.2 s).
-  static double tempo_for(double club_length, bool putter);
+  /// Seconds for 0 -> 100 %: 0.9 s for every club, 1.2 s for the putter's stroke. A golfer
+  /// keeps one tempo through the bag (Novosel & Garrity, "Tour Tempo", 2004: tour players'
+  /// swings take the same time and the same 3:1 backswing-to-downswing ratio with a driver
+  /// as with a wedge), and a player times his clicks to the marker's pace, which a tempo
+  /// that changed with the club would throw off with every club change.
+  static double tempo_for(bool putter);
   /// The putter's stroke for a putt whose cup is at `cup_power` on the meter: 1.2 s for
   /// 0 -> 100 %, slowed so the marker takes at least kLeastToCup to reach the cup's power. A
   /// tap-in at 8 % is then a press 0.6 s long, not a flick of 96 ms where 24 ms is a quarter
   /// of the distance; a 20 ft putt (~55 %) keeps the usual tempo.
   static double putt_tempo(double cup_power);
-  /// A part swing's tempo with `club_length` m when the caddie's power for it is
-  /// `mark_power`: the club's tempo, slowed as a putt's is so the marker takes at least
+  /// A part swing's tempo when the caddie's power for it is `mark_power`: the full swing's
+  /// tempo, slowed as a putt's is so the marker takes at least
   /// kLeastToCup to reach the mark. A 14 % chip with the lob wedge is then a 0.6 s press and a
-  /// 0.4 s fall to the accuracy mark, not 98 and 65 ms at the club's tempo, quicker than a
-  /// hand can judge; a 90 % swing keeps its club's tempo.
-  static double part_swing_tempo(double club_length, double mark_power);
+  /// 0.4 s fall to the accuracy mark, not 126 and 84 ms at the full tempo, quicker than a
+  /// hand can judge; a 90 % swing keeps the full tempo.
+  static double part_swing_tempo(double mark_power);
   static constexpr double kLeastToCup = 0.6;  // s
 
  private:

@@ -12,8 +12,9 @@
 namespace sweetspot {
 
 
-/// The mapping, per ms of timing error at the driver's tempo (a shorter club's slower
-/// tempo shrinks it by its length ratio): the face turns 0.08°, the path 0.04° the other
+/// The mapping, per ms of timing error with the driver (a shorter club's by its length
+/// ratio: at the same body speed its head, and so its face's turning through impact, is
+/// slower in that ratio): the face turns 0.08°, the path 0.04° the other
 /// way, the strike moves 0.15 mm toward the heel when late (toe when early). Over-swing
 /// p > 1 multiplies the error by 1 + 4 (p − 1) and moves the strike down 30 mm × (p − 1)
 /// from the club's usual spot (a thin contact). These are the game's feel, not physics:
@@ -21,7 +22,7 @@ namespace sweetspot {
 inline constexpr double kFacePerMs = 0.0013962634;   // rad (0.08°)
 inline constexpr double kPathPerMs = -0.00069813170; // rad (−0.04°)
 inline constexpr double kHeelPerMs = 0.00015;        // m toward the heel per late ms
-inline constexpr double kDriverLength = 1.1557;      // m (45.5 in): the tempo reference
+inline constexpr double kDriverLength = 1.1557;      // m (45.5 in): the error's reference club
 
 /// The swing a meter result delivers with `club` (its ClubSpec and ClubInfo) for a golfer
 /// whose full swing with it is `full_speed` m/s. A putter takes the power only.

@@ -93,8 +93,8 @@ TEST_CASE("a meter click's error is the key press time minus the mark, at 16, 33
       CAPTURE(dt, late_ms);
       GolfPlay play(test::assets(), first_hole(), skill);
       FrameDriver f{play, dt};
-      // Start at an odd time, the power click 0.737 s later: neither on a frame boundary.
-      const double start = 0.1003, top = start + 0.737;
+      // Start at an odd time, the power click 0.883 s later (98 %): neither on a frame boundary.
+      const double start = 0.1003, top = start + 0.883;
       f.until(top + dt, {at(IntentKind::Swing, start), at(IntentKind::Swing, top)});
       REQUIRE(play.stage() == GolfPlay::Stage::Swinging);
       REQUIRE(play.meter()->phase() == MeterClock::Phase::Downswing);
@@ -108,11 +108,34 @@ TEST_CASE("a meter click's error is the key press time minus the mark, at 16, 33
       const double w = perfect_window_ms(MeterDifficulty::Standard);
       CHECK(play.last_meter()->accuracy_ms == Approx(std::copysign(std::max(0.0, std::abs(late_ms) - w), late_ms)).margin(1e-6));
       // The power is the marker's height at the second key press, not at a frame.
-      const double tempo = MeterClock::tempo_for(test::assets().equipment().club(play.club()).length, false);
-      CHECK(play.last_meter()->power == Approx(0.737 / tempo).margin(1e-9));
+      const double tempo = MeterClock::tempo_for(false);
+      CHECK(play.last_meter()->power == Approx(0.883 / tempo).margin(1e-9));
       CHECK(play.round().card().back().strokes == 1);
     }
   }
+}
+
+TEST_CASE("the meter climbs at one pace with every full-swing club", "[modes][golf]") {
+  // A player times his power click to the marker's pace; from the 1st tee (the caddie's
+  // 6-iron) the driver and the 8-iron, which cannot reach (a full swing), rise alike (Tour
+  // Tempo: one tempo through the bag).
+  std::vector<double> heights;
+  std::vector<std::string> clubs;
+  for (const bool longest : {true, false}) {
+    GolfPlay play(test::assets(), first_hole(), solo("scratch"));
+    std::vector<IntentKind> keys(longest ? 8 : 2, longest ? IntentKind::ClubUp : IntentKind::ClubDown);
+    Intents in;
+    for (const IntentKind k : keys) in.push_back(at(k, 0.5));
+    play.update(in, 0.5);
+    CAPTURE(play.club());
+    play.update({at(IntentKind::Swing, 1.0)}, 1.0);
+    REQUIRE(play.meter());
+    heights.push_back(play.meter()->position(1.45));
+    clubs.push_back(play.club());
+  }
+  CHECK(clubs == std::vector<std::string>{"driver", "8-iron"});
+  CHECK(heights[0] == Approx(0.45 / MeterClock::tempo_for(false)).margin(1e-12));
+  CHECK(heights[1] == heights[0]);
 }
 
 TEST_CASE("the last clicks are this hole's guide only on this hole", "[modes][golf]") {
@@ -530,11 +553,10 @@ TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power fo
         std::abs(pitch.stops_here(pitch.club()) - pitch.round().to_pin()));
   // Its meter climbs at the part swing's tempo, the mark at least 0.6 s into the swing
   // (MeterClock::part_swing_tempo), not at the club's full-swing pace.
-  const double length = test::assets().equipment().club(pitch.club()).length;
-  REQUIRE(MeterClock::part_swing_tempo(length, power) > MeterClock::tempo_for(length, false));  // slowed here
+  REQUIRE(MeterClock::part_swing_tempo(power) > MeterClock::tempo_for(false));  // slowed here
   pitch.update({at(IntentKind::Swing, 1.0)}, 1.0);
   REQUIRE(pitch.meter());
-  CHECK(pitch.meter()->position(1.3) == Approx(0.3 / MeterClock::part_swing_tempo(length, power)).margin(1e-12));
+  CHECK(pitch.meter()->position(1.3) == Approx(0.3 / MeterClock::part_swing_tempo(power)).margin(1e-12));
   CHECK(pitch.meter()->position(1.0 + MeterClock::kLeastToCup) <= power + 1e-12);
 }
 
@@ -576,7 +598,7 @@ TEST_CASE("latency calibration: the median tap offset, and the meter judges aime
   play.update({at(IntentKind::Swing, mark + 0.045)}, mark + 0.1);
   REQUIRE(play.last_meter());
   CHECK(play.last_meter()->accuracy_ms == Approx(0.0).margin(1e-6));
-  const double tempo = MeterClock::tempo_for(test::assets().equipment().club(play.club()).length, false);
+  const double tempo = MeterClock::tempo_for(false);
   CHECK(play.last_meter()->power == Approx(0.8 / tempo).margin(1e-9));
 }
 

@@ -91,7 +91,7 @@ TEST_CASE("the accuracy error opens the face late and closes it early; a putter 
 }
 
 TEST_CASE("a short putt's marker climbs slower: the cup's power is at least 0.6 s into the stroke", "[golf][meter]") {
-  const double usual = MeterClock::tempo_for(0.0, true);
+  const double usual = MeterClock::tempo_for(true);
   // A 20 ft putt (cup at 57 %) keeps the putter's usual 1.2 s tempo.
   CHECK(MeterClock::putt_tempo(0.57) == usual);
   CHECK(MeterClock::putt_tempo(0.0) == usual);  // no cup to read: the usual
@@ -105,17 +105,16 @@ TEST_CASE("a short putt's marker climbs slower: the cup's power is at least 0.6 
 }
 
 TEST_CASE("a short part swing's marker climbs slower: the caddie's mark is at least 0.6 s into the swing", "[golf][meter]") {
-  const double lw = 0.889;  // m (35 in), a lob wedge
-  const double usual = MeterClock::tempo_for(lw, false);
-  // A 90 % swing keeps the club's tempo (0.69 s to 100 %); with no mark, the usual.
-  CHECK(MeterClock::part_swing_tempo(lw, 0.9) == usual);
-  CHECK(MeterClock::part_swing_tempo(lw, 0.0) == usual);
+  const double usual = MeterClock::tempo_for(false);
+  // A 90 % swing keeps the full tempo (0.9 s to 100 %); with no mark, the usual.
+  CHECK(MeterClock::part_swing_tempo(0.9) == usual);
+  CHECK(MeterClock::part_swing_tempo(0.0) == usual);
   for (const double mark : {0.1, 0.14, 0.3, 0.5}) {
-    MeterClock m(MeterClock::part_swing_tempo(lw, mark), false, 10.0);
+    MeterClock m(MeterClock::part_swing_tempo(mark), false, 10.0);
     m.click(1.0);
     CHECK(m.position(1.0 + MeterClock::kLeastToCup) == Approx(mark).margin(1e-12));
     // Power clicked on the mark: the fall to the accuracy mark is as long again at 1.5x the
-    // climb's pace (0.4 s; the lob wedge's usual tempo gave a 14 % chip 65 ms).
+    // climb's pace (0.4 s; the full tempo gives a 14 % chip 84 ms).
     m.click(1.0 + MeterClock::kLeastToCup);
     CHECK(m.mark_time() - (1.0 + MeterClock::kLeastToCup) == Approx(MeterClock::kLeastToCup / 1.5).margin(1e-12));
   }

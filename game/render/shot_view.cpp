@@ -108,6 +108,37 @@ Camera clear_view_of(const Camera& c, const Vec3& ball, const Terrain& world) {
     out.fov_y = std::clamp(2.0 * half, rig.fov_y, std::max(rig.fov_y, kWidest));
     return out;
   };
+  // A swung rig looks `a` off his line, and the pin with it. Turned back toward the line
+  // about its own eye as far as keeps the golfer and the ball within kEdge of the image's
+  // half-width (at 16:10, the narrowest window the game opens), the lens widened for it up to
+  // kWidest: the player sees where he aims past the trees, the golfer at one side.
+  constexpr double kEdge = 0.85, kAspect = 1.6;
+  const Vec3 along(c.forward().x(), 0.0, c.forward().z());
+  auto toward_line = [&](const Camera& rig) {
+    const Vec3 f = rig.forward();
+    const double off = std::atan2(f.cross(along).y(), f.dot(along));
+    auto yawed = [&](double a) {
+      Camera out = rig;
+      out.target = rig.eye + Quat(Eigen::AngleAxisd(a, Vec3::UnitY())) * (rig.target - rig.eye);
+      return out;
+    };
+    // The lens (fov_y) that holds p within kEdge of the half-width, seen from `v`.
+    auto lens_for = [&](const Camera& v, const Vec3& p) {
+      const Vec3 d = p - v.eye;
+      const double across = std::atan2(std::abs(d.dot(v.right())), d.dot(v.forward()));
+      return 2.0 * std::atan(std::tan(std::min(across / kEdge, 0.49 * kPi)) / kAspect);
+    };
+    const int steps = static_cast<int>(std::ceil(std::abs(off) / deg_to_rad(1.0)));
+    for (int i = steps; i > 0; --i) {
+      Camera v = yawed(off * i / steps);
+      const double lens = std::max({v.fov_y, lens_for(v, ball), lens_for(v, head)});
+      if (lens <= std::max(v.fov_y, kWidest)) {
+        v.fov_y = lens;
+        return v;
+      }
+    }
+    return rig;
+  };
   const double own = clear_reach(c.eye);
   if (own >= (c.eye - head).norm()) return c;
   if (own >= kNearest) return brought_in(c, own);
@@ -115,8 +146,8 @@ Camera clear_view_of(const Camera& c, const Vec3& ball, const Terrain& world) {
     for (const double sign : {1.0, -1.0}) {
       const Camera turned = swung(sign * k * kStep);
       const double reach = clear_reach(turned.eye);
-      if (reach >= (turned.eye - head).norm()) return turned;
-      if (reach >= kNearest) return brought_in(turned, reach);
+      if (reach >= (turned.eye - head).norm()) return toward_line(turned);
+      if (reach >= kNearest) return toward_line(brought_in(turned, reach));
     }
   }
   // Hemmed in: over his head, looking down past him at the ball and the first metre of the

@@ -45,10 +45,10 @@ Camera putt_address_camera(const Vec3& ball, const Vec3& aim, double to_pin);
 /// `world` (a tree's trunk or crown, a bank) stands between its eye and his head: first
 /// brought forward along its own line to just in front of the first thing in the way,
 /// still looking down the line he aims along, while that leaves it 3 m or more from him;
-/// else swung round him (the eye and what it looks at together, 15° at a time up to
-/// side-on, the smallest turn first) to the first line that is clear for 3 m, brought in
-/// as far as that line needs, so he and the ball stay framed as they were and only the line
-/// turns; and where no line is, 2.5 m over his head, a metre or less behind, looking down
+/// else swung round him (15° at a time up to side-on, the smallest turn first) to the first
+/// line that is clear for 3 m, brought in as far as that line needs, and from there turned
+/// back toward his line, the lens widened up to 75°, as far as keeps him and the ball in the
+/// picture, so the player still sees where he aims; and where no line is, 2.5 m over his head, a metre or less behind, looking down
 /// past him at the ball. Unchanged when the line is clear.
 Camera clear_view_of(const Camera& c, const Vec3& ball, const Terrain& world);
 

@@ -560,11 +560,11 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   // ball caught at the wall is labelled beside the sign, never over it in its place.
   if (!m.golf)
     for (const auto& [dist, at_wall] : m.fence_marks) label(format_distance(dist, "ft"), at_wall + Vec3(0, 4.0, 0), kFenceLabelColor);
-  // A shot's label, where it claims its room: at `anchor`, else stepped up the screen a line
-  // at a time (a few tries) until clear of the labels already placed.
+  // A shot's label, where it claims its room: at `anchor`, else stepped a line at a time up
+  // and down the screen in turn (a few tries) until clear of the labels already placed, so
+  // it stays beside its mark rather than climbing away over the stands.
   const auto shot_label = [&](const std::string& text, const Vec3& anchor, const Vec3& ground, const Eigen::Vector3f& color) {
-    constexpr int kTries = 4;
-    for (int k = 0; k < kTries; ++k)
+    for (const int k : {0, 1, -1, 2, -2, 3})
       if (label(text, anchor + cam_up * px(ground, 1.8 * m.style.label_height_px * k), color)) return;
   };
   // Landing ring with the carry, rest pin with the total (golf yards, baseball feet).
@@ -586,7 +586,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const double r = px(g, m.style.marker_radius_px);
       append_ring(scene.ground_overlay, g, 0.65 * r, r, kLandingColor);
       if (carry_label_) {
-        shot_label(shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), g, kLandingColor);
+        shot_label(carry_words_.empty() ? shown(s.carry_m) : carry_words_ + " " + shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), g, kLandingColor);
         shot_labels_at.push_back(g);
       }
     }
@@ -595,7 +595,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const Vec3 g(rp.x(), ground_at(rp.x(), rp.z()), rp.z());
       const double h = px(g, 30.0);
       append_pin(scene.top_overlay, g, h, px(g, 2.5), cam_right, kRestColor);
-      const std::string text = rest_label_.value_or(shown(s.total_m));
+      const std::string text = rest_label_.value_or(rest_words_.empty() ? shown(s.total_m) : rest_words_ + " " + shown(s.total_m));
       if (!text.empty()) {
         shot_label(text, g + Vec3(0, h, 0) + cam_up * px(g, 6.0), g, kRestColor);
         shot_labels_at.push_back(g);

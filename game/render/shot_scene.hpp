@@ -125,6 +125,12 @@ class ShotScene {
   /// first hop a few feet out says nothing of it, and beside the label where it was fielded
   /// it reads as a second distance for one ball.
   void set_carry_label(bool shown) { carry_label_ = shown; }
+  /// Words before the carry's number ("landed 266 ft"): beside a second distance for the
+  /// same ball (where a batted ball was fielded) a bare number does not say which is which.
+  /// Empty (the default): the number alone, as a golf trail's ring reads.
+  void set_carry_words(std::string words) { carry_words_ = std::move(words); }
+  /// Words before the rest pin's number when no rest label is set ("fielded 266 ft").
+  void set_rest_words(std::string words) { rest_words_ = std::move(words); }
   /// The rest pin's label: nothing = the total distance, as the carry's; "" = none; else the
   /// text given (a putt's "6 ft to the cup": beside the cup the total reads as what is left).
   void set_rest_label(std::optional<std::string> text) { rest_label_ = std::move(text); }
@@ -173,6 +179,7 @@ class ShotScene {
   std::vector<GroundArrow> arrows_;
   std::optional<double> focus_;
   bool carry_label_ = true;
+  std::string carry_words_, rest_words_;
   std::optional<std::string> rest_label_;
 };
 

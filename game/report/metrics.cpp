@@ -288,13 +288,13 @@ std::vector<Metric> build() {
     if (!struck(r)) return std::nullopt;
     return std::string(to_string(r.impact.friction)) + ", " + to_string(r.impact.contact);
   }));
-  m.push_back(text("restitution", "Restitution e / e_t", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
+  m.push_back(text("restitution", "Restitution e / along the face e_t", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!struck(r)) return std::nullopt;
     return fixed(r.impact.e, 3) + " / " + fixed(r.impact.e_t, 3);
   }));
   m.push_back(plain("friction", "Friction mu", struck, [](const ShotResult& r) { return r.impact.mu; }, 3, "", "mu"));
   // The grip threshold, when the caller computed it: whether turning µ changes anything.
-  m.push_back(text("grip", "Grip threshold mu", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
+  m.push_back(text("grip", "Friction that grips mu", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!struck(r) || r.impact.mu_grip < 0.0) return std::nullopt;
     const std::string t = fixed(r.impact.mu_grip, 3);
     // Short enough for the launch-monitor panel's column (the tuning panel says it whole).

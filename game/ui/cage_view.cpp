@@ -358,13 +358,19 @@ class CageView final : public ModeView {
     if (c.stage() == Stage::Pitching && stage_before != Stage::Pitching) {
       scene_->set_shot(c.pitch().trajectory, std::nullopt);
       scene_->set_carry_label(true);
+      scene_->set_carry_words("");
+      scene_->set_rest_words("");
     }
     // A fresh session (restart, or A between batting practice and live at-bats): no old trace.
     if (c.stage() == Stage::Ready && stage_before != Stage::Ready) scene_->set_shot(ShotTrajectory{}, std::nullopt);
     if (c.swings().size() != before && c.last().result.contact) {
       scene_->set_shot(c.played(), std::nullopt);
-      // A ground ball's distance is where it was fielded (the call's, the rest label's).
+      // A ground ball's distance is where it was fielded (the call's, the rest label's). A
+      // ball that came down and was picked up has two distances, each said for what it is.
+      const FieldingPlay& play = c.last().result.play;
       scene_->set_carry_label(batted_ball_type(c.last().result.shot.launch.vertical_angle) != BattedBallType::GroundBall);
+      scene_->set_carry_words("landed");
+      scene_->set_rest_words(play.fielder >= 0 && !play.caught && !play.foul ? "fielded" : "");
       ImpactSoundInput crack;
       crack.contact_time = c.last().result.contact_time;
       crack.normal_impulse = c.last().result.normal_impulse;

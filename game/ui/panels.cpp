@@ -240,7 +240,7 @@ bool tuning_section(PanelContext& c) {
   }
   const ImpactSummary& im = s.result().impact;
   const ImpactMaterial& mat = s.resolved().material;
-  changed |= slider(c, LabParam::E, "e", "%.3f");
+  changed |= slider(c, LabParam::E, "e  restitution", "%.3f");
   if (s.e_replaces_law()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
     ImGui::TextWrapped("e is constant: it replaces the equipment's speed-dependent COR");
@@ -255,13 +255,13 @@ bool tuning_section(PanelContext& c) {
     changed = true;
   }
   if (mat.model == ImpactModel::Rigid || mat.friction == FrictionModel::Textbook)
-    changed |= slider(c, LabParam::Et, "e_t", "%.3f");
+    changed |= slider(c, LabParam::Et, "e_t  along the face", "%.3f");
   else {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("e_t %.3f (from the contact; rigid model to set it)", im.present ? im.e_t : 0.0);
+    ImGui::TextWrapped("e_t %.3f, restitution along the face (from the contact; the rigid model sets it)", im.present ? im.e_t : 0.0);
     ImGui::PopStyleColor();
   }
-  changed |= slider(c, LabParam::Mu, "mu", "%.3f");
+  changed |= slider(c, LabParam::Mu, "mu  face friction", "%.3f");
   if (im.present && im.mu_grip == 0.0) {
     ImGui::TextDisabled("friction does not change this launch");
   } else if (im.present && im.mu_grip > 0.0) {

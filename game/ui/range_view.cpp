@@ -93,14 +93,14 @@ void RangeView::draw_panel(int w, bool in_air) {
   else  // back to a club already gapped: its row keeps counting, it is not shot 5 of 5 again
     ImGui::Text("Club: %s   %d shots, done (more add to its row)", club_name(play_->club()).c_str(), play_->shots_with_club());
   if (ImGui::BeginTable("bag", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-    // "spread": the carries' standard deviation about their mean; "side rms": how far from the
+    // "spread": the carries' standard deviation about their mean; "off line": how far from the
     // target line the balls land, the root mean square (a one-sided miss is part of it).
     // The club's column as wide as the longest name in the bag ("pitching wedge" read whole);
     // the figures share the rest.
     float club_width = ImGui::CalcTextSize("club").x;
     for (const auto& c : bag.clubs) club_width = std::max(club_width, ImGui::CalcTextSize(club_name(c.club).c_str()).x);
     ImGui::TableSetupColumn("club", ImGuiTableColumnFlags_WidthFixed, club_width);
-    for (const char* c : {"shots", "carry", "spread", "side rms", "gap"}) ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthStretch);
+    for (const char* c : {"shots", "carry", "spread", "off line", "gap"}) ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableHeadersRow();
     for (std::size_t k = 0; k < bag.clubs.size(); ++k) {
       const BagClub& c = bag.clubs[k];

@@ -89,12 +89,6 @@ void line(std::string& out, const char* fmt, ...) {
 // A pitcher by his place in the staff's order: the starter "SP", the relievers "RP1", "RP2"...
 std::string pitcher_name(std::size_t i) { return i == 0 ? std::string("SP") : "RP" + std::to_string(i); }
 
-std::string ordinal(int n) {
-  const int teen = n % 100, last = n % 10;
-  const char* suffix = (teen >= 11 && teen <= 13) ? "th" : last == 1 ? "st" : last == 2 ? "nd" : last == 3 ? "rd" : "th";
-  return std::to_string(n) + suffix;
-}
-
 }  // namespace
 
 nlohmann::json bat_tracking_json(const BatTracking& t) {

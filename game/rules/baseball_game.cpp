@@ -56,6 +56,12 @@ void RunnerCharges::fielders_choice(int batter, int out_runner) {
 
 int RunnerCharges::charged(int runner) const { return pitcher_.at(static_cast<std::size_t>(runner)); }
 
+std::string ordinal(int n) {
+  const int teen = n % 100, last = n % 10;
+  const char* suffix = (teen >= 11 && teen <= 13) ? "th" : last == 1 ? "st" : last == 2 ? "nd" : last == 3 ? "rd" : "th";
+  return std::to_string(n) + suffix;
+}
+
 bool game_over(const GameSituation& s) {
   const bool last_or_later = s.inning >= s.scheduled;
   if (!last_or_later) return false;

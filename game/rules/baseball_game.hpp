@@ -41,6 +41,8 @@ struct GameSituation {
 /// Whether the game is over: after a half-inning ends (outs = 3) or at once when the home
 /// team takes the lead in the bottom of the last scheduled inning or later.
 bool game_over(const GameSituation& s);
+/// An inning as it is said: "1st", "2nd", "3rd", "4th", ..., "11th", "21st".
+std::string ordinal(int n);
 
 struct BattingLine {
   int pa = 0, ab = 0, r = 0, h = 0, doubles = 0, triples = 0, hr = 0, rbi = 0, bb = 0, so = 0, hbp = 0, sf = 0;

@@ -125,34 +125,41 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     if (const LiveInning::Board* b = c.board()) {
       // The scoreboard: the inning, outs, runners and count; the line score; the last play's
       // part for the runners (or the inning's line once the side is retired).
-      if (b->side_retired)
-        ImGui::TextWrapped("End of inning %d: inning %d next, bases empty", b->inning, b->inning + 1);
+      if (b->final)
+        ImGui::TextWrapped("%s. P: a new game", b->final_line.c_str());
+      else if (b->side_retired)
+        ImGui::TextWrapped("End of the %s: you bat in the top of the %s", ordinal(b->inning).c_str(), ordinal(b->inning + 1).c_str());
       else
-        ImGui::TextWrapped("Inning %d, %d %s, %s, count %d-%d", b->inning, b->outs, b->outs == 1 ? "out" : "outs",
+        ImGui::TextWrapped("Top of the %s, %d %s, %s, count %d-%d", ordinal(b->inning).c_str(), b->outs, b->outs == 1 ? "out" : "outs",
                     runners_text(b->bases).c_str(), c.count().balls, c.count().strikes);
-      ImGui::TextWrapped("Runs %d, hits %d, left on base %d", b->runs(), b->hits, b->left_on_base);
-      if (b->runs_by_inning.size() > 1) {
-        // The line score as a scoreboard shows it: an inning a column, its number over its
-        // runs, the total at the end (the HUD's font is monospaced, so the columns line up);
-        // past nine innings the last nine, as a scoreboard's extra-inning columns scroll.
-        std::string top = "Inning", runs = "Runs  ";
-        char cell[32];
-        constexpr std::size_t kColumns = 9;
-        const std::size_t n = b->runs_by_inning.size();
-        for (std::size_t i = n > kColumns ? n - kColumns : 0; i < n; ++i) {
-          std::snprintf(cell, sizeof cell, "%3zu", i + 1);
-          top += cell;
-          std::snprintf(cell, sizeof cell, "%3d", b->runs_by_inning[i]);
-          runs += cell;
-        }
-        std::snprintf(cell, sizeof cell, "%5s", "R");
+      // The line score as a scoreboard shows it: an inning a column, its number over each
+      // side's runs (a bottom half not played blank, an "x" where the home side did not need
+      // to bat), then runs and hits (the HUD's font is monospaced, so the columns line up);
+      // past nine innings the last nine, as a scoreboard's extra-inning columns scroll.
+      std::string top = "       ", ours = "You    ", theirs = "League ";
+      char cell[32];
+      constexpr std::size_t kColumns = 9;
+      const std::size_t n = b->runs_by_inning.size();
+      for (std::size_t i = n > kColumns ? n - kColumns : 0; i < n; ++i) {
+        std::snprintf(cell, sizeof cell, "%3zu", i + 1);
         top += cell;
-        std::snprintf(cell, sizeof cell, "%5d", b->runs());
-        runs += cell;
-        ImGui::TextUnformatted(top.c_str());
-        ImGui::TextUnformatted(runs.c_str());
+        std::snprintf(cell, sizeof cell, "%3d", b->runs_by_inning[i]);
+        ours += cell;
+        if (i < b->their_runs_by_inning.size()) std::snprintf(cell, sizeof cell, "%3d", b->their_runs_by_inning[i]);
+        else std::snprintf(cell, sizeof cell, "%3s", b->final ? "x" : "");
+        theirs += cell;
       }
+      std::snprintf(cell, sizeof cell, "%5s%4s", "R", "H");
+      top += cell;
+      std::snprintf(cell, sizeof cell, "%5d%4d", b->runs(), b->hits);
+      ours += cell;
+      std::snprintf(cell, sizeof cell, "%5d%4d", b->their_runs(), b->their_hits);
+      theirs += cell;
+      ImGui::TextUnformatted(top.c_str());
+      ImGui::TextUnformatted(ours.c_str());
+      ImGui::TextUnformatted(theirs.c_str());
       if (!b->note.empty()) ImGui::TextWrapped("%s%s", b->side_retired ? "" : "Last play: ", b->note.c_str());
+      if (!b->their_half.empty()) ImGui::TextWrapped("%s", b->their_half.c_str());
     }
     const int in_play = a.outs - a.strikeouts;
     ImGui::TextWrapped("PA %d: %d H (%d HR), %d K, %d BB, %d HBP, %d %s in play", a.pa, a.hits, a.home_runs, a.strikeouts, a.walks,
@@ -488,7 +495,10 @@ void cage_report(const BattingCage& c, std::ostream& out) {
     if (const LiveInning::Board* b = c.board()) {
       out << "; inning " << b->inning << ", " << b->outs << (b->outs == 1 ? " out" : " outs") << ", runs " << b->runs() << " (by inning:";
       for (const int r : b->runs_by_inning) out << " " << r;
+      out << "), League " << b->their_runs() << " (by inning:";
+      for (const int r : b->their_runs_by_inning) out << " " << r;
       out << ")";
+      if (b->final) out << "; " << b->final_line;
     }
     out << "\n";
   }

@@ -101,11 +101,6 @@ PlateAppearance plate_appearance(const Assets& assets, Hitter& batter, Team& fie
   }
 }
 
-namespace {
-
-// A walk-off other than a home run: the game ends when the winning run scores, so only the
-// runs up to it count (MLB Rule 5.08(b)), and a hit is worth only the bases the winning runner
-// took (Rule 9.06(f)). Runners reach home lead runner first.
 void walk_off_limit(PlateAppearance& pa, const GameSituation& s, std::vector<int>& scored) {
   const int needed = s.away_runs - s.home_runs + 1;
   if (needed <= 0 || static_cast<int>(scored.size()) < needed) return;
@@ -124,6 +119,8 @@ void walk_off_limit(PlateAppearance& pa, const GameSituation& s, std::vector<int
     }
   pa.rbi = std::min(pa.rbi, needed);
 }
+
+namespace {
 
 void credit_batter(BattingLine& l, const PlateAppearance& pa) {
   ++l.pa;

@@ -103,6 +103,11 @@ class Team {
 /// game's business). `result` and `description` are set for the batter's part.
 PlateAppearance plate_appearance(const Assets& assets, Hitter& batter, Team& fielding);
 
+/// A walk-off other than a home run: the game ends when the winning run scores, so only the
+/// runs up to it count (MLB Rule 5.08(b)), and a hit is worth only the bases the winning
+/// runner took (Rule 9.06(f)). Runners reach home lead runner first. `s` before the play.
+void walk_off_limit(PlateAppearance& pa, const GameSituation& s, std::vector<int>& scored);
+
 struct GameRecord {
   GameOptions options;
   std::vector<PlateAppearance> plate_appearances;

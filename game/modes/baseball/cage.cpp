@@ -90,6 +90,12 @@ void BattingCage::next_pitch(double t) {
   outcome_text_.clear();
   bot_armed_ = false;
   pro_takes_ = false;
+  // A game over: the next pitch opens a fresh one (the session's figures go on).
+  if (game_ && game_->board().final) {
+    game_.emplace(assets_, seed_ + static_cast<std::uint64_t>(++games_));
+    board_before_ = LiveInning::Board{};
+    count_ = Count{};
+  }
   // A new batter's first pitch: the game's next inning opens here after a third out.
   if (game_ && count_.balls == 0 && count_.strikes == 0) game_->next_batter();
 }
@@ -369,7 +375,7 @@ void BattingCage::apply(const Intent& in) {
       // Each starts its own record: practice swings are not the at-bats' (and the other's
       // last pitch is not this one's).
       start_record();
-      call_text_ = live_ ? "Live game against the league's pitcher: you bat through the order" : "Batting practice";
+      call_text_ = live_ ? "Live game: you bat for the visitors against the league, nine innings" : "Batting practice";
       break;
     case IntentKind::Restart:
       // A fresh session: the record cleared, the next pitch on call.

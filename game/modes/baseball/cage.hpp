@@ -182,6 +182,7 @@ class BattingCage {
   bool live_ = false;
   std::uint64_t seed_ = 0;  ///< the session's: a live game's teams and throws draw from it
   std::optional<LiveInning> game_;  ///< live: the innings the at-bats make
+  int games_ = 0;                   ///< live games finished this session
   LiveInning::Board board_before_;
   Pitcher pitcher_;
   BotBatter reader_;  ///< the pro's eye that sets the bat's height when timing_only_

@@ -112,3 +112,77 @@ TEST_CASE("live game: the pro bats against the league's pitcher as the game's hi
   CHECK(bb >= 0.02);  // he takes balls: a batting-practice swing never walks
   CHECK(hr <= 0.08);
 }
+
+TEST_CASE("live game: the league bats the bottom half; nine innings, no bottom of the 9th for a home side ahead, walk-offs, "
+          "a final line that adds up",
+          "[modes][baseball]") {
+  // The player's halves are scripted (walks force in runs, strikeouts make the outs) so his
+  // side scores 0, 1 a inning or 1 every other inning; the league's halves are the game's own
+  // plate appearances against his side's pitchers (Rule 7.01: MLB's end of a game).
+  PitchRecord ball;
+  ball.call = PitchResult::Ball;
+  PitchRecord strike;
+  strike.call = PitchResult::CalledStrike;
+  int home_wins = 0, away_wins = 0, walk_offs = 0, no_bottom_ninth = 0, extra = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    CAPTURE(seed);
+    LiveInning g(test::assets(), seed);
+    int guard = 0;
+    while (!g.board().final && ++guard < 2000) {
+      const int inning = g.board().side_retired ? g.board().inning + 1 : g.board().inning;
+      const bool score = seed % 3 == 1 || (seed % 3 == 2 && inning % 2 == 1);
+      // Four walks then three strikeouts: one run; three strikeouts: none (a placed runner
+      // from the 10th is stranded either way).
+      const int done = g.board().side_retired ? 0 : g.board().outs;
+      const bool walks_left = score && done == 0 && runners_text(g.board().bases) != "bases loaded";
+      if (walks_left || (score && done == 0 && g.board().runs_by_inning.back() == 0)) g.end_plate_appearance("walk", ball);
+      else g.end_plate_appearance("strikeout", strike);
+    }
+    const LiveInning::Board& b = g.board();
+    REQUIRE(b.final);
+    const int ours = b.runs(), theirs = b.their_runs();
+    CHECK(ours != theirs);
+    CHECK(b.inning >= LiveInning::kInnings);
+    CHECK(b.runs_by_inning.size() == static_cast<std::size_t>(b.inning));
+    // Extra innings only after a tie through nine.
+    if (b.inning > LiveInning::kInnings) {
+      ++extra;
+      int ours9 = 0, theirs9 = 0;
+      for (int i = 0; i < LiveInning::kInnings; ++i) ours9 += b.runs_by_inning[static_cast<std::size_t>(i)], theirs9 += b.their_runs_by_inning[static_cast<std::size_t>(i)];
+      CHECK(ours9 == theirs9);
+    }
+    const std::string winner = ours > theirs ? "You " : "League ";
+    CHECK(b.final_line.rfind("Final: " + winner + std::to_string(std::max(ours, theirs)) + ", ", 0) == 0);
+    if (theirs > ours) {
+      ++home_wins;
+      if (b.their_runs_by_inning.size() + 1 == static_cast<std::size_t>(b.inning)) {
+        // Ahead after the top of the last inning: the home side did not bat.
+        ++no_bottom_ninth;
+        CHECK(b.inning == LiveInning::kInnings);
+      } else {
+        // Won in its last half: a walk-off, which ends the moment the winning run scores, so
+        // the home side wins by one unless the last play was a home run.
+        REQUIRE(b.their_runs_by_inning.size() == static_cast<std::size_t>(b.inning));
+        ++walk_offs;
+        CHECK(b.their_half.ends_with(". Walk-off"));
+        if (b.their_half.find("Home run") == std::string::npos) CHECK(theirs - ours == 1);
+        // Behind or level before it.
+        CHECK(theirs - b.their_runs_by_inning.back() <= ours);
+      }
+    } else {
+      ++away_wins;
+      CHECK(b.their_runs_by_inning.size() == static_cast<std::size_t>(b.inning));
+    }
+    // Once over, nothing moves.
+    const int before = b.runs();
+    g.end_plate_appearance("walk", ball);
+    g.next_batter();
+    CHECK(g.board().runs() == before);
+    CHECK(g.board().final);
+  }
+  INFO("home wins " << home_wins << " (no bottom of the 9th " << no_bottom_ninth << ", walk-offs " << walk_offs << "), away wins "
+                    << away_wins << ", extra innings " << extra);
+  CHECK(home_wins > 0);
+  CHECK(away_wins > 0);
+  CHECK(no_bottom_ninth > 0);
+}

@@ -39,7 +39,6 @@ void LiveInning::next_batter() {
   ++board_.inning;
   board_.runs_by_inning.push_back(0);
   board_.side_retired = false;
-  board_.their_half.clear();
   board_.outs = 0;
   half_.bases = {-1, -1, -1};
   if (board_.inning > kInnings) half_.bases[1] = (batter_ + 8) % 9;
@@ -129,6 +128,7 @@ void LiveInning::play_their_half() {
 
 void LiveInning::end_plate_appearance(const std::string& result, const PitchRecord& last) {
   if (board_.final) return;
+  board_.their_half.clear();  // read through the next inning's first plate appearance
   next_batter();  // a plate appearance ended without its first pitch told (the tests' scripts)
   PlateAppearance pa;
   pa.batter = batter_;

@@ -35,7 +35,7 @@ class LiveInning {
     std::string note;
     /// The home side's line score (a column for each bottom half played), hits and the last
     /// bottom half in words ("Bottom of the 3rd: League 2 runs, 3 hits (Home run to LF, 2
-    /// runs)"), told with the side retired.
+    /// runs)"), told with the side retired and kept through the next plate appearance.
     std::vector<int> their_runs_by_inning;
     int their_hits = 0;
     std::string their_half;

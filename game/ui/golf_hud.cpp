@@ -569,11 +569,16 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         std::snprintf(text, sizeof text, units.imperial ? "%ld yd" : "%ld m", n);
         scale.tick(p, n % every == 0 ? text : nullptr);
       }
-      const double to_pin = play.round().to_pin();
-      if (to_pin < play.stop_at_power(club, MeterBar::kHigh) && to_pin > play.stop_at_power(club, 0.2)) {
-        const double p = play.power_for_stop(club, to_pin);
-        target_mark(dl, bar, p);
-        std::snprintf(pin_words, sizeof pin_words, "; green: stops at the pin at %.0f %%", 100.0 * p);
+      if (const auto pin = play.pin_power(club)) {
+        target_mark(dl, bar, pin->power);
+        // Where no power stops at the pin (the stop jumps across it), the nearest and where it
+        // stops: a mark that promised the pin would send the ball that far past or short.
+        const double miss = pin->stops - play.round().to_pin();
+        if (std::abs(miss) <= std::max(2.0, 0.04 * play.round().to_pin()))
+          std::snprintf(pin_words, sizeof pin_words, "; green: stops at the pin at %.0f %%", 100.0 * pin->power);
+        else
+          std::snprintf(pin_words, sizeof pin_words, "; green: nearest the pin, %.0f %% stops %s %s", 100.0 * pin->power,
+                        units.distance(std::abs(miss)).c_str(), miss > 0.0 ? "past" : "short");
       }
     }
     if (!meter && play.swing_undone()) {

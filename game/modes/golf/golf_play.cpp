@@ -416,6 +416,33 @@ double GolfPlay::power_for_stop(const std::string& club, double distance) const 
   return interpolate(carry_table(club).stops, distance, false);
 }
 
+std::optional<GolfPlay::PinPower> GolfPlay::pin_power(const std::string& club) const {
+  const GolfRound& r = round();
+  if (r.finished() || club == "putter") return std::nullopt;
+  const StrokeKey key = key_for(club);
+  if (pin_power_ && pin_power_->key == key) return pin_power_->answer;
+  const double to_pin = r.to_pin();
+  std::optional<PinPower> answer;
+  const auto& stops = carry_table(club).stops;
+  // The table's first power past the pin and the one before it bracket it.
+  for (std::size_t k = 1; k < stops.size() && !answer; ++k) {
+    if (stops[k - 1].second >= to_pin) break;  // its lowest power already runs past
+    if (stops[k].second < to_pin) continue;
+    StrokeInput in;
+    in.club = club;
+    in.aim = aim_;
+    PinPower lo{stops[k - 1].first, stops[k - 1].second}, hi{stops[k].first, stops[k].second};
+    while (hi.power - lo.power > kPinPowerStep) {
+      in.meter.power = 0.5 * (lo.power + hi.power);
+      const double stop = r.simulate(in).trajectory.summary.total_m;
+      (stop < to_pin ? lo : hi) = PinPower{in.meter.power, stop};
+    }
+    answer = std::abs(lo.stops - to_pin) < std::abs(hi.stops - to_pin) ? lo : hi;
+  }
+  pin_power_ = PinPowerHere{key, answer};
+  return answer;
+}
+
 void GolfPlay::update(const Intents& intents, double now) {
   apply_in_time_order(intents, now, [this](double t) { advance(t); }, [this](const Intent& in) { apply(in); });
 }

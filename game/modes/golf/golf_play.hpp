@@ -208,6 +208,18 @@ class GolfPlay {
   /// `distance` away: a ball that runs on after landing is aimed by where it finishes.
   double stop_at_power(const std::string& club, double power) const;
   double power_for_stop(const std::string& club, double distance) const;
+  /// The power whose stroke of `club` along the aim stops nearest the pin, found by flying
+  /// it: the table brackets the pin, bisection on the stroke itself narrows the bracket to
+  /// kPinPowerStep. Where the stop jumps across the pin (a pitch that lands short in the
+  /// rough and stops, and with a touch more lands on the green and runs on) no power stops
+  /// there, and `stops` says where the nearest one does. None when 20-110 % falls short of
+  /// the pin or every power runs past it. Kept for the player, club, ball, hole and aim.
+  struct PinPower {
+    double power = 0.0;
+    double stops = 0.0;  ///< m from the ball to where it stops
+  };
+  std::optional<PinPower> pin_power(const std::string& club) const;
+  static constexpr double kPinPowerStep = 0.004;
 
   /// Water and bunkers the aim line crosses from the ball to a little past where the stroke
   /// the player would play with `club` stops (the caddie's part swing, else a full one): each
@@ -345,6 +357,11 @@ class GolfPlay {
     std::vector<Hazard> hazards;
   };
   mutable std::optional<HazardsHere> hazards_;  ///< the last answer: the HUD asks each frame
+  struct PinPowerHere {
+    StrokeKey key;
+    std::optional<PinPower> answer;
+  };
+  mutable std::optional<PinPowerHere> pin_power_;  ///< the last answer: the HUD asks each frame
 };
 
 const char* to_string(GolfPlay::Stage s);

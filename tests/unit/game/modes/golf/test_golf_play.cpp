@@ -458,6 +458,42 @@ TEST_CASE("putting preview from off the green: the slower grass first makes the 
   CHECK(std::hypot(short_rest.x() - play.round().ball().x(), short_rest.z() - play.round().ball().z()) < rolled);
 }
 
+TEST_CASE("the meter's pin mark is a flown stroke's power, nearer the pin than the table's straight lines", "[modes][golf]") {
+  // The green mark under the swing meter: the power whose stroke stops nearest the pin,
+  // bracketed by the table and narrowed by flying the stroke itself. Where a pitch's stop
+  // jumps across the pin the table's straight line between two powers promised the pin
+  // and sent the ball yards past (a play-test: 65 % "stops at the pin", 64 % ran 7 yd past).
+  const Course course = first_hole();
+  GolfPlay tee(test::assets(), course, solo("scratch"));
+  const double to_pin = tee.round().to_pin();
+  int found = 0;
+  for (const char* club : {"5-iron", "6-iron", "7-iron", "8-iron"}) {
+    CAPTURE(club);
+    const auto pin = tee.pin_power(club);
+    if (!pin) continue;
+    ++found;
+    StrokeInput in;
+    in.club = club;
+    in.aim = tee.aim();
+    in.meter.power = pin->power;
+    CHECK(tee.round().simulate(in).trajectory.summary.total_m == Approx(pin->stops).margin(1e-9));
+    // Never farther from the pin than the table's own answer, flown.
+    in.meter.power = tee.power_for_stop(club, to_pin);
+    const double table_miss = std::abs(tee.round().simulate(in).trajectory.summary.total_m - to_pin);
+    CHECK(std::abs(pin->stops - to_pin) <= table_miss + 1e-9);
+    // A step of the search either side stops on the other side of the pin or farther from it.
+    for (const double step : {-GolfPlay::kPinPowerStep, GolfPlay::kPinPowerStep}) {
+      in.meter.power = pin->power + step;
+      const double stop = tee.round().simulate(in).trajectory.summary.total_m;
+      CHECK((std::abs(stop - to_pin) >= std::abs(pin->stops - to_pin) - 1.0 || (stop - to_pin) * (pin->stops - to_pin) <= 0.0));
+    }
+  }
+  CHECK(found >= 2);
+  // A lob wedge from the tee never gets there; the putter has no mark.
+  CHECK_FALSE(tee.pin_power("lw"));
+  CHECK_FALSE(tee.pin_power("putter"));
+}
+
 TEST_CASE("the meter's carry scale is the stroke's own carry at each power, and finds the pin's power", "[modes][golf]") {
   // The scale under a swing's meter reads a table of the club's carry from here: at a power
   // the table holds it is that stroke's carry, between them near it, and back from a carry to

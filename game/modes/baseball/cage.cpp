@@ -282,6 +282,11 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     count_pitch(!last_.result.contact     ? PitchResult::SwingingStrike
                 : o == BattedOutcome::Foul ? (last_.result.foul_tip ? PitchResult::FoulTip : PitchResult::Foul)
                                            : PitchResult::InPlay);
+    // The call as the game scored the play once its runners changed it (a ground out that
+    // became a double play), so the banner, the panel and the log say one thing.
+    const std::string& fielded = last_.result.play.description;
+    if (stage_ == Stage::Batted && game_ && !game_->board().scored_as.empty() && call_text_.starts_with(fielded))
+      call_text_ = game_->board().scored_as + call_text_.substr(fielded.size());
   }
   if (by_pro) call_text_ = "The pro: " + call_text_;  // his swing, not the player's
   if (stage_ == Stage::Batted) {

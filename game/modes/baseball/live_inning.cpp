@@ -128,6 +128,7 @@ void LiveInning::play_their_half() {
 
 void LiveInning::end_plate_appearance(const std::string& result, const PitchRecord& last) {
   if (board_.final) return;
+  board_.scored_as.clear();
   board_.their_half.clear();  // read through the next inning's first plate appearance
   next_batter();  // a plate appearance ended without its first pitch told (the tests' scripts)
   PlateAppearance pa;
@@ -151,6 +152,7 @@ void LiveInning::end_plate_appearance(const std::string& result, const PitchReco
     half_.advance(pa, batting_, fielding_, throws_, scored, outs_made, play);
     if (play == batted) play.clear();
   }
+  board_.scored_as = play;
   const bool hit = result == "single" || result == "double" || result == "triple" || result == "home_run";
   board_.hits += hit;
   inning_hits_ += hit;

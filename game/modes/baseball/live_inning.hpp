@@ -33,6 +33,10 @@ class LiveInning {
     /// The last plate appearance's part for the runners in a scorer's words ("2 runs score",
     /// "runner out at 3rd"); with the side retired, the inning's line.
     std::string note;
+    /// The last ball in play as the game scored it when its runners changed the fielders'
+    /// words ("Grounded into a double play, SS to 2B to 1B" for "Ground out, SS to 1B"), else
+    /// empty.
+    std::string scored_as;
     /// The home side's line score (a column for each bottom half played), hits and the last
     /// bottom half in words ("Bottom of the 3rd: League 2 runs, 3 hits (Home run to LF, 2
     /// runs)"), told with the side retired and kept through the next plate appearance.

@@ -48,7 +48,7 @@ TEST_CASE("live game in the cage: the pro's balls in play move the runners, the 
   REQUIRE(cage.live());
   REQUIRE(cage.board() != nullptr);
   double now = 1.0;
-  int innings_done = 0, hits = 0, home_runs = 0;
+  int innings_done = 0, hits = 0, home_runs = 0, rescored = 0;
   while (innings_done < 3 && now < 4000.0) {
     const Count before = cage.count();
     cage.update({at(IntentKind::BotSwings, now)}, now);
@@ -73,8 +73,14 @@ TEST_CASE("live game in the cage: the pro's balls in play move the runners, the 
     }
     hits = b.hits;
     home_runs = cage.at_bats().home_runs;
+    // A play the runners changed is called as the game scored it (the banner and the log).
+    if (!b.scored_as.empty() && !cage.swings().empty()) {
+      ++rescored;
+      CHECK_THAT(cage.swings().back().said, Catch::Matchers::StartsWith("The pro: " + b.scored_as));
+    }
   }
   CHECK(innings_done == 3);
+  CHECK(rescored >= 1);  // these three innings have a play whose runners changed its words
   // Every run is a batter who reached (a hit, a walk, a hit-by-pitch, an error) and came round;
   // the others were left on or put out on the bases.
   const LiveInning::Board& b = *cage.board();

@@ -510,6 +510,16 @@ void cage_report(const BattingCage& c, std::ostream& out) {
     else if (!s.said.empty()) out << "  " << s.said;
     out << "\n";
   }
+  // The record A left, kept: its figures and its swings, named for what they were.
+  if (const auto o = c.other_figures()) {
+    std::snprintf(line, sizeof line, "%s, kept: %d %s, contact %d, fair %d, home runs %d", c.live() ? "batting practice" : "live game",
+                  o->swings, o->swings == 1 ? "swing" : "swings", o->contact, o->fair, o->home_runs);
+    out << line;
+    if (o->by_pro > 0) out << " (and " << o->by_pro << " by the pro)";
+    out << "\n";
+    for (const SwingRecord& s : c.other_swings())
+      out << (c.live() ? "practice swing: " : "game swing: ") << s.call_text << (s.said.empty() ? "" : "  " + s.said) << "\n";
+  }
 }
 
 std::unique_ptr<ModeView> make_cage_view(const Assets& assets, std::unique_ptr<BattingCage> model, const CageViewOptions& o) {

@@ -303,10 +303,49 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   swings_.back().said = stage_ == Stage::Batted ? outcome_text_ : call_text_;
 }
 
-BattingCage::Figures BattingCage::figures() const {
+BattingCage::Figures BattingCage::figures() const { return figures_of(swings_, carries_as_played_, swings_told()); }
+
+std::optional<BattingCage::Figures> BattingCage::other_figures() const {
+  if (kept_.swings.empty()) return std::nullopt;
+  return figures_of(kept_.swings, kept_.carries, kept_.swings.size());
+}
+
+void BattingCage::Kept::clear() {
+  swings.clear();
+  carries.clear();
+  at_bats = AtBats{};
+  count = Count{};
+  game.reset();
+  games = 0;
+}
+
+void BattingCage::switch_record() {
+  Kept leaving{std::move(swings_), std::move(carries_as_played_), at_bats_, count_, std::nullopt, games_};
+  if (game_) leaving.game.emplace(std::move(*game_));
+  live_ = !live_;
+  start_record();
+  swings_ = std::move(kept_.swings);
+  carries_as_played_ = std::move(kept_.carries);
+  at_bats_ = kept_.at_bats;
+  count_ = kept_.count;
+  games_ = kept_.games;
+  if (kept_.game) {
+    game_.reset();
+    game_.emplace(std::move(*kept_.game));
+  }
+  kept_.swings = std::move(leaving.swings);
+  kept_.carries = std::move(leaving.carries);
+  kept_.at_bats = leaving.at_bats;
+  kept_.count = leaving.count;
+  kept_.games = leaving.games;
+  kept_.game.reset();
+  if (leaving.game) kept_.game.emplace(std::move(*leaving.game));
+}
+
+BattingCage::Figures BattingCage::figures_of(const std::vector<SwingRecord>& swings, const std::vector<double>& carries, std::size_t told) {
   Figures f;
-  for (std::size_t i = 0; i < swings_.size(); ++i) {
-    const SwingRecord& s = swings_[i];
+  for (std::size_t i = 0; i < swings.size(); ++i) {
+    const SwingRecord& s = swings[i];
     if (s.by_pro) {
       ++f.by_pro;
       continue;
@@ -314,13 +353,13 @@ BattingCage::Figures BattingCage::figures() const {
     ++f.swings;
     if (!s.result.contact) continue;
     ++f.contact;
-    if (i >= swings_told() || s.result.outcome == BattedOutcome::Foul) continue;
+    if (i >= told || s.result.outcome == BattedOutcome::Foul) continue;
     ++f.fair;
     f.mean_exit_speed += s.result.shot.launch.ball_speed;
     f.mean_launch += s.result.shot.launch.vertical_angle;
     f.hard_hit += s.result.hard_hit;
     f.home_runs += s.result.outcome == BattedOutcome::HomeRun;
-    f.longest = std::max(f.longest, carries_as_played_[i]);
+    f.longest = std::max(f.longest, carries[i]);
   }
   if (f.fair > 0) {
     f.mean_exit_speed /= f.fair;
@@ -376,14 +415,15 @@ void BattingCage::apply(const Intent& in) {
         if (!call_text_.ends_with(kWait)) call_text_ += kWait;
         break;
       }
-      live_ = !live_;
-      // Each starts its own record: practice swings are not the at-bats' (and the other's
-      // last pitch is not this one's).
-      start_record();
-      call_text_ = live_ ? "Live game: you bat for the visitors against the league, nine innings" : "Batting practice";
+      // Each keeps its own record: practice swings are not the at-bats' (and the other's
+      // last pitch is not this one's); the one left is kept for the way back.
+      switch_record();
+      call_text_ = live_ ? (at_bats_.pa > 0 ? "Back to the live game" : "Live game: you bat for the visitors against the league, nine innings")
+                         : (swings_.empty() ? "Batting practice" : "Back to batting practice");
       break;
     case IntentKind::Restart:
-      // A fresh session: the record cleared, the next pitch on call.
+      // A fresh session: both records cleared, the next pitch on call.
+      kept_.clear();
       start_record();
       break;
     case IntentKind::Pitch:

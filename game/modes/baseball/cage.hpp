@@ -112,6 +112,12 @@ class BattingCage {
     double longest = 0.0;          ///< m, the longest fair ball as played (to the glove on a catch)
   };
   Figures figures() const;
+  /// The other record's figures (batting practice's while live, the live game's while
+  /// practising): A keeps the record it leaves and gives it back on the way back, so a
+  /// switch loses no swings. None when the other record has no swing.
+  std::optional<Figures> other_figures() const;
+  /// The other record's swings as they were called, in order.
+  const std::vector<SwingRecord>& other_swings() const { return kept_.swings; }
   /// Live at-bats: the count, and the plate appearances so far.
   bool live() const { return live_; }
   /// As told: while a ball in play is in the air, the count he swung at (the plate
@@ -188,6 +194,21 @@ class BattingCage {
   BotBatter reader_;  ///< the pro's eye that sets the bat's height when timing_only_
   Count count_, count_before_;
   AtBats at_bats_;
+  /// The record A left (the other mode's), given back when A returns to it.
+  struct Kept {
+    std::vector<SwingRecord> swings;
+    std::vector<double> carries;
+    AtBats at_bats;
+    Count count;
+    std::optional<LiveInning> game;
+    int games = 0;
+    void clear();
+  };
+  Kept kept_;
+  /// `swings` with their carries as played, the first `told` of them called.
+  static Figures figures_of(const std::vector<SwingRecord>& swings, const std::vector<double>& carries, std::size_t told);
+  /// A between pitches: this record kept, the other given back (or a fresh one).
+  void switch_record();
 };
 
 }  // namespace sweetspot

@@ -452,3 +452,47 @@ TEST_CASE("E steps the next pitch's pace: standard, easy, pro, standard; a pitch
   cage.update({at(IntentKind::Pitch, arrives + 5.0)}, arrives + 5.0);
   CHECK(cage.time_scale() == BattingCage::kPitchTimeScale);
 }
+
+TEST_CASE("A keeps the record it leaves: batting practice's swings and the live game come back on the way back",
+          "[modes][baseball]") {
+  BattingCage cage(test::assets(), 9);
+  double now = 0.5;
+  // B pitches and lets the pro swing; on until the call.
+  const auto pro_swings = [&] {
+    cage.update({at(IntentKind::BotSwings, now)}, now);
+    for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
+                                                      cage.stage() == BattingCage::Stage::Batted);)
+      cage.update({}, now += 0.05);
+    now += 0.5;
+  };
+  for (int k = 0; k < 3; ++k) pro_swings();
+  const std::size_t practice = cage.swings().size();
+  REQUIRE(practice >= 1);
+  const std::string first_said = cage.swings().front().said;
+  cage.update({at(IntentKind::ToggleLive, now)}, now);
+  REQUIRE(cage.live());
+  CHECK(cage.swings().empty());  // the game's own record
+  REQUIRE(cage.other_figures());
+  CHECK(cage.other_figures()->by_pro == static_cast<int>(practice));
+  while (cage.at_bats().pa < 4) pro_swings();
+  const int pa = cage.at_bats().pa;
+  const int inning = cage.board()->inning, runs = cage.board()->runs();
+  const std::size_t game_swings = cage.swings().size();
+  cage.update({at(IntentKind::ToggleLive, now)}, now);
+  REQUIRE_FALSE(cage.live());
+  CHECK(cage.call_text() == "Back to batting practice");
+  REQUIRE(cage.swings().size() == practice);
+  CHECK(cage.swings().front().said == first_said);
+  CHECK(cage.board() == nullptr);
+  cage.update({at(IntentKind::ToggleLive, now + 0.1)}, now + 0.1);
+  REQUIRE(cage.live());
+  CHECK(cage.call_text() == "Back to the live game");
+  CHECK(cage.at_bats().pa == pa);
+  CHECK(cage.swings().size() == game_swings);
+  CHECK(cage.board()->inning == inning);
+  CHECK(cage.board()->runs() == runs);
+  // Restart clears both.
+  cage.update({at(IntentKind::Restart, now + 0.2)}, now + 0.2);
+  CHECK(cage.swings().empty());
+  CHECK_FALSE(cage.other_figures());
+}

@@ -426,6 +426,18 @@ StrokeInput GolfBot::intend(const GolfRound& round, std::string* passed_over) co
     const Tried t = tune(s.club, std::clamp(std::pow(d / s.carry, 0.8), 0.05, 1.0), best.in.aim, 3);
     if (!t.lost && std::abs(t.reach - d) < std::abs(best.reach - d)) best = t;
   }
+  // Going for the cup with a full swing that stops short of it: the next club up swung
+  // smooth to the distance, when it stops nearer ("take one more club": a full swing is
+  // never forced past 100 %, where its error grows, swing_meter.hpp).
+  constexpr double kShortForMore = 4.0;  // m: a fifth of a club's ~20 m gap
+  if (going_for_pin && !best.lost && best.in.meter.power >= 1.0 && d - best.reach > kShortForMore) {
+    const std::size_t k = stock_index(best.in.club);
+    if (k > 0 && allowed(stock_[k - 1])) {
+      const Stock& s = stock_[k - 1];
+      const Tried t = tune(s.club, std::clamp(std::pow(d / s.carry, 0.8), 0.05, 1.0), best.in.aim, 3);
+      if (!t.lost && std::abs(t.reach - d) < std::abs(best.reach - d)) best = t;
+    }
+  }
   // A plan that runs through the green into the rough behind it (a cup cut near the back, a
   // ball that releases): a player takes the club down, or this one a little softer, so that
   // it lands short and stops on the green; whichever of the three stops nearest the cup,

@@ -289,6 +289,7 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
       if (on) dl->AddConvexPolyFilled(q, 4, IM_COL32(250, 220, 60, 255));
       else dl->AddPolyline(q, 4, IM_COL32(240, 240, 240, 255), ImDrawFlags_Closed, 1.0f);
     }
+  bool pro_shown = false;
   for (std::size_t i = 0; i < c.swings_told(); ++i) {
     const SwingRecord& s = c.swings()[i];
     if (!s.result.contact) continue;
@@ -300,7 +301,11 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     const bool in_air = f.carry_m > 40.0 || s.result.outcome == BattedOutcome::HomeRun;
     const Vec3 p = in_air ? f.landing_position : play_rest_position(s.result.shot.trajectory, play);
     const auto key = std::find_if(kSprayKey.begin(), kSprayKey.end(), [&](const SprayKey& k) { return k.outcome == s.result.outcome; });
-    dl->AddCircleFilled(px(p), 4.0f, key != kSprayKey.end() ? key->colour : kSprayOut);
+    const ImU32 colour = key != kSprayKey.end() ? key->colour : kSprayOut;
+    // The pro's balls are not the player's figures: a ring, so his own dots stay his.
+    if (s.by_pro) dl->AddCircle(px(p), 4.0f, colour, 0, 1.5f);
+    else dl->AddCircleFilled(px(p), 4.0f, colour);
+    pro_shown = pro_shown || s.by_pro;
   }
   dl->PopClipRect();
   dl->AddText(ImVec2(x0 + 6, y0 + 4), IM_COL32(255, 255, 255, 255), "spray chart");
@@ -314,6 +319,11 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
   };
   for (const SprayKey& k : kSprayKey) key_entry(k.colour, k.word);
   key_entry(kSprayOut, "out");
+  if (pro_shown) {
+    const float ry = ky + ImGui::GetTextLineHeight() + 2.0f;
+    dl->AddCircle(ImVec2(x0 + 11.0f, ry + 0.5f * ImGui::GetTextLineHeight()), 4.0f, IM_COL32(255, 255, 255, 255), 0, 1.5f);
+    dl->AddText(ImVec2(x0 + 17.0f, ry), IM_COL32(255, 255, 255, 255), "the pro's");
+  }
   return bottom;
 }
 

@@ -391,11 +391,14 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       if (s.format == GolfFormat::Skins && s.skins)
         std::snprintf(extra, sizeof extra, "  %d skin%s", s.skins->skins[p], s.skins->skins[p] == 1 ? "" : "s");
       const std::string here = on_this_hole(p);
+      // Wrapped: a line that runs past the panel's edge ("3 ft to go, Gre") goes on below.
+      char row[192];
       if (ps.holes_scored == 0)  // no hole scored yet (or a match's only one conceded): no score to stand on
-        ImGui::Text("%-14s   -%s%s", g.players()[p].name.c_str(), extra, here.c_str());
+        std::snprintf(row, sizeof row, "%-14s   -%s%s", g.players()[p].name.c_str(), extra, here.c_str());
       else
-        ImGui::Text("%-14s %3d (%s)%s%s", g.players()[p].name.c_str(), ps.total_strokes, to_par_text(ps.total_strokes - ps.total_par).c_str(),
-                    extra, here.c_str());
+        std::snprintf(row, sizeof row, "%-14s %3d (%s)%s%s", g.players()[p].name.c_str(), ps.total_strokes,
+                      to_par_text(ps.total_strokes - ps.total_par).c_str(), extra, here.c_str());
+      ImGui::TextWrapped("%s", row);
     }
     if (s.match) ImGui::Text("Match: %s", s.match->holes.back().status.c_str());
   } else if (g.options().format == GolfFormat::Match) {
@@ -404,13 +407,15 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   }
   const auto at_rest = [&](const StrokeRecord& last, const std::string& lie) {
     if (last.club.empty() || last.end != StrokeEnd::Rest) return;
-    const std::string away = units.course(last.to_pin_m);
+    // On the green in the putt's units, as the group's lines say the putt to come ("66 ft to go").
+    const bool on_green = lie == "green" || lie == "holed";
+    const std::string away = on_green ? units.putt(last.to_pin_m) : units.course(last.to_pin_m);
     // A ball at rest and then holed by a conceded putt (a gimme): where it stopped, on the green.
     if (lie == "holed") ImGui::Text("At rest %s from the pin: conceded", away.c_str());
     else if (last.club == "putter" && last.lie == "green")
       // A putt is judged by its pace: how far past the cup it ran, or how short it stopped,
       // along its line (the rest of the distance is the line's miss).
-      ImGui::Text("At rest %s from the pin (%s %s), %s", away.c_str(), units.course(std::abs(last.past_m)).c_str(),
+      ImGui::Text("At rest %s from the pin (%s %s), %s", away.c_str(), units.putt(std::abs(last.past_m)).c_str(),
                   last.past_m >= 0.0 ? "past" : "short", lie_words(lie));
     else {
       // Off the green a miss is read as a caddie reads it: long or short of the pin and to
@@ -559,12 +564,31 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
     const double longest = play.carry_at_power(club, MeterBar::kHigh);
     const double unit = units.imperial ? 0.9144 : 1.0;
     char pin_words[96] = "";
+    const double to_pin = play.round().to_pin();
     if (longest > 10.0 * unit) {
       MeterScale scale(dl, bar, bar.x0 + bar.bw + 4.0f);
+      // Ticks every 10 yd (m), labelled every 20 for a wedge and 50 for the longer clubs.
+      // A chip's few yards sit in the bar's first tenth: short of the pin and some past it the
+      // scale steps as the player counts them, in the units the panel gives the pin (feet
+      // inside GolfUnits::kNear: every 10 ft, labelled every 20; under 50 yd every 5 yd,
+      // labelled every 10), so a 16 ft chip has a tick to aim by.
+      const bool feet = to_pin < GolfUnits::kNear;
+      const double fine_unit = feet ? (units.imperial ? 0.3048 : 1.0) : unit;
+      const long fine_step = feet ? (units.imperial ? 10 : 2) : 5, fine_every = 2 * fine_step;
+      const double fine_to = to_pin < 45.72 ? std::max(2.0 * to_pin, to_pin + 10.0) : 0.0;  // m; 45.72 m = 50 yd
+      const double first = 0.05;  // the table's lowest power: below it the scale is a guess
+      for (long n = fine_step; n * fine_unit < std::min(fine_to, longest); n += fine_step) {
+        const double p = play.power_for_carry(club, n * fine_unit);
+        if (p < first) continue;
+        char text[16];
+        std::snprintf(text, sizeof text, feet ? (units.imperial ? "%ld ft" : "%ld m") : (units.imperial ? "%ld yd" : "%ld m"), n);
+        scale.tick(p, n % fine_every == 0 ? text : nullptr);
+      }
       const long every = longest < 130.0 * unit ? 20 : 50;  // labels: a wedge's every 20, the longer clubs' every 50
       for (long n = 10; n * unit < longest; n += 10) {
+        if (n * unit < fine_to) continue;  // told finer above
         const double p = play.power_for_carry(club, n * unit);
-        if (p < 0.2) continue;  // below the table's first power the scale is a guess
+        if (p < first) continue;
         char text[16];
         std::snprintf(text, sizeof text, units.imperial ? "%ld yd" : "%ld m", n);
         scale.tick(p, n % every == 0 ? text : nullptr);
@@ -573,12 +597,12 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         target_mark(dl, bar, pin->power);
         // Where no power stops at the pin (the stop jumps across it), the nearest and where it
         // stops: a mark that promised the pin would send the ball that far past or short.
-        const double miss = pin->stops - play.round().to_pin();
-        if (std::abs(miss) <= std::max(2.0, 0.04 * play.round().to_pin()))
+        const double miss = pin->stops - to_pin;
+        if (std::abs(miss) <= std::max(2.0, 0.04 * to_pin))
           std::snprintf(pin_words, sizeof pin_words, "; green: stops at the pin at %.0f %%", 100.0 * pin->power);
         else
           std::snprintf(pin_words, sizeof pin_words, "; green: nearest the pin, %.0f %% stops %s %s", 100.0 * pin->power,
-                        units.distance(std::abs(miss)).c_str(), miss > 0.0 ? "past" : "short");
+                        units.course(std::abs(miss), to_pin).c_str(), miss > 0.0 ? "past" : "short");
       }
     }
     if (!meter && play.swing_undone()) {
@@ -661,7 +685,10 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
     ImGui::Text("Rolled      %s", units.putt(r.trajectory.summary.total_m).c_str());
   } else if (!putt && flight_t >= r.trajectory.summary.hang_time_s) {
     ImGui::Separator();
-    ImGui::Text(hit_tree ? "Hit a tree  %s" : "Carry       %s", units.course(r.trajectory.summary.carry_m).c_str());
+    // In the unit of the whole shot, as the landing ring's label: a chip that carries 11 m and
+    // runs to 25 m reads "Carry 12 yd" beside its "12 yd" ring, not "36 ft".
+    const FlightSummary& f = r.trajectory.summary;
+    ImGui::Text(hit_tree ? "Hit a tree  %s" : "Carry       %s", units.course(f.carry_m, std::max(f.carry_m, f.total_m)).c_str());
     ImGui::Text("Height      %s", units.putt(r.trajectory.summary.apex_m).c_str());
   }
   ImGui::End();

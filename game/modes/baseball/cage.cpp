@@ -27,7 +27,7 @@ std::string inches(double m) {
 
 }  // namespace
 
-std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, bool height_read) {
+std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, bool height_read, bool advise) {
   // Why the bat missed: early or late, the ball past the end of the bat; or above or below it
   // where they crossed (off time the crossing moves: early over the ball, late under it).
   constexpr double kReach = 0.066;  // m, the bat's and the ball's radii together (95 %)
@@ -45,9 +45,10 @@ std::string miss_call(const SwingResult& r, double timing_ms, double beyond_m, b
   else if (r.past_end)
     // The turned bat's end does not reach the ball's line, early or late, over a middle pitch
     // too: said as the hitter sees it, with what mends it.
-    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, %s: the ball went by past its end (%s)%s", when,
+    std::snprintf(text, sizeof text, "Swinging strike: %s by %.0f ms, %s: the ball went by past its end%s%s%s%s", when,
                   std::abs(timing_ms), timing_ms >= 0 ? "the bat had not come around" : "the bat had turned too far",
-                  timing_ms >= 0 ? "start the swing sooner" : "wait a touch longer", height);
+                  advise ? " (" : "", advise ? (timing_ms >= 0 ? "start the swing sooner" : "wait a touch longer") : "",
+                  advise ? ")" : "", height);
   else if (miss > 0.0 && height_read)
     // His timing is what he controls; where the bat crossed follows from it and the pro's read
     // (early crosses over the ball, late under it): the height is said as the pro's.
@@ -274,7 +275,7 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     batted_at_ = t;
     stage_ = Stage::Batted;
   } else {
-    call_text_ = miss_call(last_.result, pressed_ms, beyond_m, timing_only_ && !by_pro);
+    call_text_ = miss_call(last_.result, pressed_ms, beyond_m, timing_only_ && !by_pro, !by_pro);
     stage_ = Stage::Called;
   }
   if (live_) {
@@ -392,8 +393,18 @@ void BattingCage::apply(const Intent& in) {
       bat_height_ += in.kind == IntentKind::BatUp ? kBatStep : -kBatStep;
       bat_height_ = std::clamp(bat_height_, kZoneLow - 0.3, kZoneHigh + 0.3);
       break;
-    case IntentKind::TogglePower: power_ = !power_; break;
-    case IntentKind::ToggleSide: lefty_ = !lefty_; break;
+    case IntentKind::TogglePower:
+      // Said as the pace is (below), once nothing else is being called: the panel's one word
+      // changing is easy to miss, and the trade is the point of the key.
+      power_ = !power_;
+      if (stage_ == Stage::Ready || (stage_ == Stage::Called && told_))
+        call_text_ = power_ ? "Power swing: full bat speed" : "Contact swing: 92 % of the power swing's bat speed";
+      break;
+    case IntentKind::ToggleSide:
+      lefty_ = !lefty_;
+      if (stage_ == Stage::Ready || (stage_ == Stage::Called && told_))
+        call_text_ = lefty_ ? "Batting left-handed" : "Batting right-handed";
+      break;
     case IntentKind::ToggleTiming: timing_only_ = !timing_only_; break;
     case IntentKind::TogglePace: {
       // The next pitch's pace (one thrown, or a ball still in the air, keeps the clock it

@@ -25,8 +25,10 @@ namespace sweetspot {
 /// `timing_ms`: the press's timing as the player felt it; `beyond_m`: how much farther under
 /// (+) or over the ball the bat was set than the swing's range let the physics take.
 /// `height_read`: the bat's height was set for the player (timing only), so a miss is said
-/// by its timing, the height only as where the bat went.
-std::string miss_call(const SwingResult& result, double timing_ms, double beyond_m = 0.0, bool height_read = false);
+/// by its timing, the height only as where the bat went. `advise`: the swing was the player's,
+/// so the call says what mends it; the pro's own miss is told without advice.
+std::string miss_call(const SwingResult& result, double timing_ms, double beyond_m = 0.0, bool height_read = false,
+                      bool advise = true);
 
 class BattingCage {
  public:

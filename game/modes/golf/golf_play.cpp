@@ -369,8 +369,9 @@ const GolfPlay::CarryTable& GolfPlay::carry_table(const std::string& club) const
   in.club = club;
   in.aim = aim_;
   double longest = 0.0, farthest = 0.0;
-  for (int k = 2; k <= 11; ++k) {
-    in.meter.power = std::min(0.1 * k, MeterInput::kPower.max);
+  // Every 5 % up to 20 % (a chip's few yards are all down there), every 10 % above.
+  for (const double power : {0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1}) {
+    in.meter.power = std::min(power, MeterInput::kPower.max);
     const FlightSummary f = r.simulate(in).trajectory.summary;
     longest = std::max(longest, f.carry_m);
     farthest = std::max(farthest, f.total_m);

@@ -197,8 +197,8 @@ class GolfPlay {
   std::optional<double> tree_in_the_way(const std::string& club) const;
 
   /// The meter's distance scale for a swing, as a putt's roll scale: `club`'s carry from here
-  /// (m) at `power`, and the power that carries `distance`, from carry_here at 20 %, 30 % ...
-  /// 110 % of the meter (the same physics as the stroke). The table is kept while the player,
+  /// (m) at `power`, and the power that carries `distance`, from carry_here at 5 %, 10 %, 15 %,
+  /// 20 %, 30 % ... 110 % of the meter (the same physics as the stroke). The table is kept while the player,
   /// club, ball and hole stay: an aim's step barely turns the wind against the line, and ten
   /// flights per press of an arrow would stall the frame. Held at its longest past a tree
   /// that stops the flight.
@@ -212,7 +212,7 @@ class GolfPlay {
   /// it: the table brackets the pin, bisection on the stroke itself narrows the bracket to
   /// kPinPowerStep. Where the stop jumps across the pin (a pitch that lands short in the
   /// rough and stops, and with a touch more lands on the green and runs on) no power stops
-  /// there, and `stops` says where the nearest one does. None when 20-110 % falls short of
+  /// there, and `stops` says where the nearest one does. None when 5-110 % falls short of
   /// the pin or every power runs past it. Kept for the player, club, ball, hole and aim.
   struct PinPower {
     double power = 0.0;

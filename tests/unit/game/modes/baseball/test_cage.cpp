@@ -173,6 +173,8 @@ TEST_CASE("a miss is called in a hitter's words and inches, never '0 in'", "[mod
   r.crossing_undercut = 0.0;
   CHECK(miss_call(r, -14.2) == "Swinging strike: early by 14 ms, the bat had turned too far: the ball went by past its end (wait a touch longer)");
   CHECK(miss_call(r, 17.0) == "Swinging strike: late by 17 ms, the bat had not come around: the ball went by past its end (start the swing sooner)");
+  // The pro's own miss: told, not advised (the advice is the player's).
+  CHECK(miss_call(r, 17.0, 0.0, false, false) == "Swinging strike: late by 17 ms, the bat had not come around: the ball went by past its end");
   r.past_end = false;
   r.through = true;
   CHECK(miss_call(r, 48.0) == "Swinging strike: late by 48 ms, the bat not around yet");

@@ -54,14 +54,14 @@ struct GolferSkill {
 /// (TrackMan's published handicap averages put the scratch and 15-handicap male golfer near
 /// 105 and 93 mph). Errors: the timing spreads are set against published rates, over 24
 /// National rounds each (the day's cups, the seeds' wind; docs/courses.md). The tour bot's
-/// 12 ms scatters its drives ~±20 yd sideways: 61 % of fairways and 67 % of greens in
-/// regulation (PGA TOUR ~60 % and ~66 %). The scratch bot's 18 ms: 48 % of fairways, 50 % of
-/// greens, 75.5 strokes and 29.5 putts (calm: 48 %, 56 %, 75.1, 30.0), against Arccos's
+/// 12 ms scatters its drives ~±20 yd sideways: 60 % of fairways and 65 % of greens in
+/// regulation (PGA TOUR ~60 % and ~66 %). The scratch bot's 18 ms: 46 % of fairways, 56 % of
+/// greens, 75.1 strokes and 30.4 putts (calm: 47 %, 54 %, 75.5, 29.8), against Arccos's
 /// scratch golfers' 51 %, 56 % and ~76 (2.2 birdies, 4.6 bogeys and 0.7 doubles or worse a
 /// round; Golf Monthly, "Scratch vs 10 vs 20 handicap", 2023) and Shot Scope's 29.9 putts; at
 /// 20 ms (calm) 43 %, 50 %, 77.0. The amateur's 25 ms timing spread (with a part swing's 0.35
 /// feel): over 48 calm National rounds (`sweetspot round --bot amateur --calm`, seeds 1-48)
-/// 43.8 % of fairways, 21.5 % of greens, 89.3 strokes and 33.1 putts, where Arccos's golfers
+/// 43.8 % of fairways, 20.7 % of greens, 89.1 strokes and 32.8 putts, where Arccos's golfers
 /// of 12-20 hit 41-45 % and ~20-31 % (12 handicaps 31 %) and a 15 handicap averages ~85-93;
 /// at 36 ms he hit 30 % of fairways for 91.1 strokes (24 rounds: his misses cost little more
 /// in the rough than on the fairway), at 30 ms 38 %.

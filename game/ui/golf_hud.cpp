@@ -135,6 +135,13 @@ class MeterScale {
     dl_->AddText(ImVec2(left, y + 7), IM_COL32(200, 200, 200, 220), label);
     free_from_ = left + wide + 5.0f;
   }
+  /// What the lengths are (a carry, or where the ball stops), at the band's left end, under
+  /// the accuracy's stretch of the bar where no length is ticked.
+  void name(const char* what) {
+    const float y = bar_.y0 + bar_.bh;
+    dl_->AddText(ImVec2(bar_.x0, y + 7), IM_COL32(160, 160, 160, 220), what);
+    free_from_ = std::max(free_from_, bar_.x0 + ImGui::CalcTextSize(what).x + 5.0f);
+  }
 
  private:
   ImDrawList* dl_;
@@ -567,27 +574,32 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
     const double to_pin = play.round().to_pin();
     if (longest > 10.0 * unit) {
       MeterScale scale(dl, bar, bar.x0 + bar.bw + 4.0f);
-      // Ticks every 10 yd (m), labelled every 20 for a wedge and 50 for the longer clubs.
-      // A chip's few yards sit in the bar's first tenth: short of the pin and some past it the
-      // scale steps as the player counts them, in the units the panel gives the pin (feet
-      // inside GolfUnits::kNear: every 10 ft, labelled every 20; under 50 yd every 5 yd,
-      // labelled every 10), so a 16 ft chip has a tick to aim by.
+      // Ticks every 10 yd (m) of carry, labelled every 20 for a wedge and 50 for the longer
+      // clubs. Inside 50 yd the scale is where the ball stops, as the pin's mark is: a chip is
+      // played to where it finishes, and its carry is the lesser part of it. Short of the pin
+      // and some past it it steps as the player counts them, in the units the panel gives the
+      // pin (feet inside GolfUnits::kNear: every 10 ft, labelled every 20; under 50 yd every
+      // 5 yd, labelled every 10), so a 16 ft chip has a tick to aim by.
+      const bool by_stop = to_pin < 45.72;  // m: 50 yd
+      const auto power_for = [&](double m) { return by_stop ? play.power_for_stop(club, m) : play.power_for_carry(club, m); };
+      scale.name(by_stop ? "stops" : "carry");
+      const double reach = by_stop ? play.stop_at_power(club, MeterBar::kHigh) : longest;
       const bool feet = to_pin < GolfUnits::kNear;
       const double fine_unit = feet ? (units.imperial ? 0.3048 : 1.0) : unit;
       const long fine_step = feet ? (units.imperial ? 10 : 2) : 5, fine_every = 2 * fine_step;
-      const double fine_to = to_pin < 45.72 ? std::max(2.0 * to_pin, to_pin + 10.0) : 0.0;  // m; 45.72 m = 50 yd
+      const double fine_to = by_stop ? std::max(2.0 * to_pin, to_pin + 10.0) : 0.0;
       const double first = 0.05;  // the table's lowest power: below it the scale is a guess
-      for (long n = fine_step; n * fine_unit < std::min(fine_to, longest); n += fine_step) {
-        const double p = play.power_for_carry(club, n * fine_unit);
+      for (long n = fine_step; n * fine_unit < std::min(fine_to, reach); n += fine_step) {
+        const double p = power_for(n * fine_unit);
         if (p < first) continue;
         char text[16];
         std::snprintf(text, sizeof text, feet ? (units.imperial ? "%ld ft" : "%ld m") : (units.imperial ? "%ld yd" : "%ld m"), n);
         scale.tick(p, n % fine_every == 0 ? text : nullptr);
       }
       const long every = longest < 130.0 * unit ? 20 : 50;  // labels: a wedge's every 20, the longer clubs' every 50
-      for (long n = 10; n * unit < longest; n += 10) {
+      for (long n = 10; n * unit < reach; n += 10) {
         if (n * unit < fine_to) continue;  // told finer above
-        const double p = play.power_for_carry(club, n * unit);
+        const double p = power_for(n * unit);
         if (p < first) continue;
         char text[16];
         std::snprintf(text, sizeof text, units.imperial ? "%ld yd" : "%ld m", n);

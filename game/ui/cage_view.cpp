@@ -45,6 +45,13 @@ using Stage = BattingCage::Stage;
 // narrow window (at 800 px a 450 px panel would hide his release).
 float stats_panel_right(int w) { return std::min(450.0f, 0.42f * static_cast<float>(w)); }
 
+// px: the panel's left edge. It stands on the side away from the batter (a right-handed
+// batter stands left of the plate as the camera sees him, his head level with the panel's
+// middle lines), with the spray chart below it; the call's banner takes the sky on the other side.
+float stats_panel_left(bool batter_left, int w) {
+  return batter_left ? 10.0f : static_cast<float>(w) - stats_panel_right(w);
+}
+
 // ImGui::TextDisabled that wraps at the panel's edge, as every line of the narrower panel must.
 void disabled_wrapped(const char* fmt, ...) IM_FMTARGS(1);
 void disabled_wrapped(const char* fmt, ...) {
@@ -116,7 +123,7 @@ constexpr ImU32 kSprayOut = IM_COL32(150, 150, 150, 255);
 // `all_keys`: every key the cage takes, four lines; else the few a pitch needs, in one.
 // `pitch_by`: the pitch has reached the plate (its shape is then told).
 float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_by) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
+  ImGui::SetNextWindowPos(ImVec2(stats_panel_left(c.left_handed(), w), 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(stats_panel_right(w) - 10.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   const BattingCage::Figures fig = c.figures();
@@ -262,7 +269,9 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
   // The spray chart, bottom corner away from the batter (a right-handed batter stands left of
   // the plate as the camera sees him): home plate at the bottom, fair ground to ~150 m (490 ft)
   // down either line and ~200 m up the middle, so every fair ball in this park shows.
-  const float size = 220.0f, y0 = static_cast<float>(h) - size - 36.0f;
+  // Below the panel on its side: smaller in a short window rather than over the panel's lines.
+  const float size = std::max(120.0f, std::min(220.0f, static_cast<float>(h) - 36.0f - bottom - 8.0f));
+  const float y0 = static_cast<float>(h) - size - 36.0f;
   const float x0 = c.left_handed() ? 12.0f : static_cast<float>(w) - size - 12.0f;
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   // Opaque and framed: the field's own foul lines behind it must not read as the chart's.
@@ -434,7 +443,7 @@ class CageView final : public ModeView {
       panel_bottom = draw_stats(c, w, h, all_keys(), pitch_by);
     } else {
       // One line says how to bring the panel back.
-      ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
+      ImGui::SetNextWindowPos(ImVec2(stats_panel_left(c.left_handed(), w), 10), ImGuiCond_Always);
       ImGui::Begin("cage hidden", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
       ImGui::TextDisabled("H: the panel");
       panel_bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
@@ -442,11 +451,15 @@ class CageView final : public ModeView {
     }
     hud_bottom_ = panel_bottom;
     if (!c.call_text().empty()) {
-      // The call in large type, always in the sky right of the HUD panel (clear of the
+      // The call in large type, always in the sky beside the HUD panel (clear of the
       // outfield wall's distance signs and the pitcher), where the eye learns to look: on one
       // line, else cut in two at a clause break, in smaller type as long calls need; below
       // the panel only in a window too narrow for even that.
-      const float right = stats_panel_right(w) + 16.0f, room = static_cast<float>(w) - right - 40.0f;
+      // The free sky beside the panel: right of it for a left-handed batter, left of it else.
+      const float panel_w = stats_panel_right(w) - 10.0f;
+      const float free_from = c.left_handed() ? stats_panel_right(w) + 16.0f : 0.0f;
+      const float free_to = c.left_handed() ? static_cast<float>(w) : static_cast<float>(w) - panel_w - 26.0f;
+      const float room = free_to - free_from - 40.0f;
       const std::string& call = c.call_text();
       auto lines = std::pair<std::string, std::string>{call, std::string()};
       bool beside = false;
@@ -460,7 +473,7 @@ class CageView final : public ModeView {
         if (beside) break;
       }
       if (!beside) lines = split_in_two_lines(call, [&](std::string_view t) { return banner_text_width(t, scale); });
-      const float centre = beside ? 0.5f * (right + static_cast<float>(w)) : 0.5f * static_cast<float>(w);
+      const float centre = beside ? 0.5f * (free_from + free_to) : 0.5f * static_cast<float>(w);
       const float bottom = draw_banner(lines.first.c_str(), centre, beside ? 22.0f : panel_bottom + 14.0f, scale, lines.second.c_str());
       hud_bottom_ = std::max(hud_bottom_, static_cast<double>(bottom));
     }

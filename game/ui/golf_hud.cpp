@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "game/modes/golf/standings.hpp"
 #include "game/modes/replay.hpp"
@@ -119,35 +122,55 @@ namespace {
 constexpr ImU32 kBand = IM_COL32(15, 20, 25, 170);
 
 // The band under the meter that reads a power as a length (a putt's roll, a swing's carry):
-// a tick at each length's power, and its label where the last one leaves room and, when
-// `right` is given, inside the band's right edge.
+// a tick at each length's power, and its label where no label placed before it would overlap
+// and, when `right` is given, inside the band's right edge. Labels are placed in the order of
+// their `rank` (lowest first; by default left to right), so the ones that matter most (a
+// chip's lengths nearest the pin) are the ones kept where they crowd.
 class MeterScale {
  public:
   MeterScale(ImDrawList* dl, const MeterBar& bar, float right = 1e9f) : dl_(dl), bar_(bar), right_(right) {
     dl_->AddRectFilled(ImVec2(bar.x0 - 4, bar.y0 + bar.bh + 2), ImVec2(bar.x0 + bar.bw + 4, bar.y0 + bar.bh + 24), kBand, 4.0f);
   }
-  void tick(double power, const char* label = nullptr) {
+  MeterScale(const MeterScale&) = delete;
+  MeterScale& operator=(const MeterScale&) = delete;
+  ~MeterScale() {
+    std::stable_sort(labels_.begin(), labels_.end(), [](const Label& a, const Label& b) { return a.rank < b.rank; });
+    std::vector<std::pair<float, float>> taken = named_;
+    const float y = bar_.y0 + bar_.bh;
+    for (const Label& l : labels_) {
+      const float wide = ImGui::CalcTextSize(l.text.c_str()).x;
+      const float from = l.x - 8.0f, to = from + wide + 5.0f;
+      if (from + wide > right_) continue;
+      if (std::any_of(taken.begin(), taken.end(), [&](const auto& t) { return from < t.second && to > t.first; })) continue;
+      dl_->AddText(ImVec2(from, y + 7), IM_COL32(200, 200, 200, 220), l.text.c_str());
+      taken.emplace_back(from, to);
+    }
+  }
+  void tick(double power, const char* label = nullptr, double rank = std::numeric_limits<double>::quiet_NaN()) {
     const float x = bar_.at(power), y = bar_.y0 + bar_.bh;
     dl_->AddLine(ImVec2(x, y), ImVec2(x, y + 6), IM_COL32(200, 200, 200, 200), 1.0f);
     if (label == nullptr) return;
-    const float left = x - 8.0f, wide = ImGui::CalcTextSize(label).x;
-    if (left < free_from_ || left + wide > right_) return;
-    dl_->AddText(ImVec2(left, y + 7), IM_COL32(200, 200, 200, 220), label);
-    free_from_ = left + wide + 5.0f;
+    labels_.push_back({x, label, std::isnan(rank) ? static_cast<double>(labels_.size()) : rank});
   }
   /// What the lengths are (a carry, or where the ball stops), at the band's left end, under
   /// the accuracy's stretch of the bar where no length is ticked.
   void name(const char* what) {
     const float y = bar_.y0 + bar_.bh;
     dl_->AddText(ImVec2(bar_.x0, y + 7), IM_COL32(160, 160, 160, 220), what);
-    free_from_ = std::max(free_from_, bar_.x0 + ImGui::CalcTextSize(what).x + 5.0f);
+    named_.emplace_back(bar_.x0, bar_.x0 + ImGui::CalcTextSize(what).x + 5.0f);
   }
 
  private:
+  struct Label {
+    float x;
+    std::string text;
+    double rank;
+  };
   ImDrawList* dl_;
   const MeterBar& bar_;
   float right_;
-  float free_from_ = -1e9f;
+  std::vector<Label> labels_;
+  std::vector<std::pair<float, float>> named_;
 };
 
 // The power the player should strike for the target (a putt's cup, a swing's pin): a green
@@ -193,12 +216,12 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   const double now = flight_t;
   const GolfGroup& g = play.group();
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
-  // Narrower on the green, where the putting view stands the golfer's head near the top left
-  // and the panel's lines are short.
-  const bool on_green = !g.finished() &&
-                        (play.stage() == GolfPlay::Stage::Aiming || play.stage() == GolfPlay::Stage::Swinging) &&
-                        play.round().lie() == "green";
-  ImGui::SetNextWindowSize(ImVec2(on_green ? 365.0f : 420.0f, 0), ImGuiCond_Always);
+  // Narrower in the putting view (a putt, or a chip from where golfers count feet: the view
+  // address_camera_at takes for both), which stands the golfer's head just right of it.
+  const bool putting_view = !g.finished() &&
+                            (play.stage() == GolfPlay::Stage::Aiming || play.stage() == GolfPlay::Stage::Swinging) &&
+                            (play.round().lie() == "green" || play.round().to_pin() <= GolfUnits::kNear);
+  ImGui::SetNextWindowSize(ImVec2(putting_view ? 365.0f : 420.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Play", nullptr, kFixed);
   const GolfPlay::Stage stage = play.stage();
   const bool in_air = stage == GolfPlay::Stage::Flying;
@@ -594,7 +617,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         if (p < first) continue;
         char text[16];
         std::snprintf(text, sizeof text, feet ? (units.imperial ? "%ld ft" : "%ld m") : (units.imperial ? "%ld yd" : "%ld m"), n);
-        scale.tick(p, n % fine_every == 0 ? text : nullptr);
+        scale.tick(p, n % fine_every == 0 ? text : nullptr, std::abs(n * fine_unit - to_pin));
       }
       const long every = longest < 130.0 * unit ? 20 : 50;  // labels: a wedge's every 20, the longer clubs' every 50
       for (long n = 10; n * unit < reach; n += 10) {
@@ -603,7 +626,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         if (p < first) continue;
         char text[16];
         std::snprintf(text, sizeof text, units.imperial ? "%ld yd" : "%ld m", n);
-        scale.tick(p, n % every == 0 ? text : nullptr);
+        scale.tick(p, n % every == 0 ? text : nullptr, by_stop ? std::abs(n * unit - to_pin) : static_cast<double>(n));
       }
       if (const auto pin = play.pin_power(club)) {
         target_mark(dl, bar, pin->power);

@@ -356,7 +356,9 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       // stretch of water or sand from its near edge to its far one ("water 128-152 yd").
       std::string said;
       for (const GolfPlay::Hazard& hz : play.hazards_on_line(club)) {
-        const std::string near = units.course(hz.from, hz.to), far = units.course(hz.to);
+        // In the unit the pin is given in, as the rest of the shot's distances.
+        const double scale = std::max(hz.to, r.to_pin());
+        const std::string near = units.course(hz.from, scale), far = units.course(hz.to, scale);
         const std::size_t cut = near.find(' ');
         const bool one_unit = cut != std::string::npos && far.size() > cut && far.substr(far.find(' ')) == near.substr(cut);
         said += std::string(said.empty() ? "" : ", ") + (hz.kind == "water" ? "water " : "sand ") +
@@ -377,6 +379,14 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
         ImGui::TextDisabled("S save  L latency  R replay  Esc pause");
         ImGui::TextDisabled("Tab next mode");
       }
+      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
+    } else if (play.human_turn() && all_keys && putting_view) {
+      // A chip in the putting view: the narrow panel's lines, each under ~45 characters, and
+      // three of them, so the panel ends above the golfer's head (Tab and Esc are the pause
+      // menu's, L the full-swing view's keys).
+      ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
+      ImGui::TextDisabled("Space swing (3 clicks)  B caddie  M map");
+      ImGui::TextDisabled("1-4 cameras  U units  S save  R replay  K/F1");
       if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
     } else if (play.human_turn() && all_keys) {
       ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
@@ -626,7 +636,8 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         if (p < first) continue;
         char text[16];
         std::snprintf(text, sizeof text, units.imperial ? "%ld yd" : "%ld m", n);
-        scale.tick(p, n % every == 0 ? text : nullptr, by_stop ? std::abs(n * unit - to_pin) : static_cast<double>(n));
+        // Past a chip told in feet, ticks alone: one scale, one unit.
+        scale.tick(p, n % every == 0 && !feet ? text : nullptr, by_stop ? std::abs(n * unit - to_pin) : static_cast<double>(n));
       }
       if (const auto pin = play.pin_power(club)) {
         target_mark(dl, bar, pin->power);

@@ -4,6 +4,7 @@
 // Distances in the player's unit system, words a golfer uses.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,11 +54,22 @@ struct MeterBar {
   /// The meter's fractions the bar spans: 15 % past the accuracy mark to 110 % power.
   static constexpr double kLow = -0.15, kHigh = 1.1;
   float x0 = 0.0f, y0 = 0.0f, bw = 560.0f, bh = 26.0f;
+  /// The fractions this bar spans: kLow..kHigh, or for a chip zoomed to its top (zoomed_top).
+  double low = kLow, high = kHigh;
   double shown = 0.0;  ///< the marker's position now
-  float at(double f) const { return x0 + static_cast<float>((f - kLow) * (bw / (kHigh - kLow))); }
+  /// x of fraction `f`, held at the bar's ends.
+  float at(double f) const { return x0 + static_cast<float>((std::clamp(f, low, high) - low) * (bw / (high - low))); }
+  bool zoomed() const { return high < kHigh; }
 };
+/// `top`: the power at the bar's right end (kHigh; less zooms the bar on a chip's few per
+/// cent, the accuracy's stretch scaled with it so it keeps its share of the bar).
 MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optional<MeterClock>& last, bool putting,
-                        double window_ms, int w, int h, double now);
+                        double window_ms, int w, int h, double now, double top = MeterBar::kHigh);
+/// The bar's top for a swing whose pin mark is at `pin_power` (none: the pin beyond reach):
+/// the whole bar while the mark sits past MeterBar's middle, else zoomed so it sits near
+/// 60 % of the way along, in steps of 10 % of power (an aim's step does not jump the scale),
+/// never under 30 %.
+double zoomed_top(std::optional<double> pin_power);
 /// The words over a full swing's meter: the power as the marker climbs, the accuracy's cue
 /// on its way back, and `before` until the first click.
 std::string full_swing_caption(const std::optional<MeterClock>& meter, double now, const std::string& before);

@@ -147,6 +147,7 @@ class MeterScale {
     }
   }
   void tick(double power, const char* label = nullptr, double rank = std::numeric_limits<double>::quiet_NaN()) {
+    if (power > bar_.high + 1e-9) return;  // past a zoomed bar's end
     const float x = bar_.at(power), y = bar_.y0 + bar_.bh;
     dl_->AddLine(ImVec2(x, y), ImVec2(x, y + 6), IM_COL32(200, 200, 200, 200), 1.0f);
     if (label == nullptr) return;
@@ -487,9 +488,18 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   return {at.x, at.y, at.x + size.x, at.y + size.y};
 }
 
+double zoomed_top(std::optional<double> pin_power) {
+  constexpr double kMarkAt = 0.6, kLeast = 0.3;  // the mark's share of the zoomed bar; its least top
+  if (!pin_power || *pin_power > 0.5 * MeterBar::kHigh) return MeterBar::kHigh;
+  const double top = std::max(kLeast, std::ceil(10.0 * *pin_power / kMarkAt - 1e-9) / 10.0);
+  return top >= 1.0 ? MeterBar::kHigh : top;
+}
+
 MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optional<MeterClock>& last, bool putting,
-                        double window_ms, int w, int h, double now) {
+                        double window_ms, int w, int h, double now, double top) {
   MeterBar bar;
+  bar.high = top;
+  bar.low = MeterBar::kLow * top / MeterBar::kHigh;
   bar.x0 = 0.5f * (static_cast<float>(w) - bar.bw);
   bar.y0 = static_cast<float>(h) - 80.0f;
   const float x0 = bar.x0, y0 = bar.y0, bw = bar.bw, bh = bar.bh;
@@ -502,7 +512,13 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optio
     const double half = meter ? meter->window_fraction() : MeterClock(MeterClock::tempo_for(false), false, window_ms).window_fraction();
     dl->AddRectFilled(ImVec2(at(-std::max(half, 0.006)), y0), ImVec2(at(std::max(half, 0.006)), y0 + bh), IM_COL32(60, 170, 80, 230));
   }
-  dl->AddLine(ImVec2(at(1.0), y0 - 4), ImVec2(at(1.0), y0 + bh + 4), IM_COL32(250, 250, 250, 255), 2.0f);
+  if (!bar.zoomed()) dl->AddLine(ImVec2(at(1.0), y0 - 4), ImVec2(at(1.0), y0 + bh + 4), IM_COL32(250, 250, 250, 255), 2.0f);
+  else {
+    // A chip's zoomed bar: its end says what power it stands for, a marker past it stays there.
+    char end[16];
+    std::snprintf(end, sizeof end, "%.0f %%", 100.0 * bar.high);
+    dl->AddText(ImVec2(x0 + bw + 6.0f, y0 + 0.5f * (bh - ImGui::GetTextLineHeight())), IM_COL32(230, 230, 230, 255), end);
+  }
   if (meter) {
     const double p = meter->position(now);
     bar.shown = p;
@@ -535,7 +551,10 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   // The last clicks' marks: a putt's only for a putt on the same green by the same player.
   const std::optional<MeterClock> marks =
       play.last_click() && (!play.last_click()->putting() || play.last_click_here()) ? play.last_click() : std::nullopt;
-  const MeterBar bar = draw_meter_bar(meter, marks, putting, perfect_window_ms(play.setup().difficulty), w, h, now);
+  // A chip's bar zoomed on its few per cent, so its scale and its pin mark stand apart.
+  const std::optional<GolfPlay::PinPower> pin = putting ? std::nullopt : play.pin_power(play.club());
+  const double top = zoomed_top(pin ? std::optional<double>(pin->power) : std::nullopt);
+  const MeterBar bar = draw_meter_bar(meter, marks, putting, perfect_window_ms(play.setup().difficulty), w, h, now, top);
   const float y0 = bar.y0;
   const auto at = [&](double f) { return bar.at(f); };
   const double shown = bar.shown;
@@ -639,7 +658,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         // Past a chip told in feet, ticks alone: one scale, one unit.
         scale.tick(p, n % every == 0 && !feet ? text : nullptr, by_stop ? std::abs(n * unit - to_pin) : static_cast<double>(n));
       }
-      if (const auto pin = play.pin_power(club)) {
+      if (pin) {
         target_mark(dl, bar, pin->power);
         // Where no power stops at the pin (the stop jumps across it), the nearest and where it
         // stops: a mark that promised the pin would send the ball that far past or short.

@@ -83,3 +83,27 @@ TEST_CASE("a part swing's carry and run read in one unit, the longer one's", "[u
   CHECK(yards.course(13.0, 15.0) == "43 ft");
   CHECK(metres.course(13.0, 21.0) == "13 m");
 }
+
+TEST_CASE("a chip's meter bar zooms on its few per cent, with the pin's mark ~60 % of the way along", "[ui][golf]") {
+  // The whole bar while the pin's power is past half of it or beyond reach.
+  CHECK(zoomed_top(std::nullopt) == MeterBar::kHigh);
+  CHECK(zoomed_top(0.6) == MeterBar::kHigh);
+  CHECK(zoomed_top(0.55) == MeterBar::kHigh);
+  // A 22 % chip: the bar ends at 40 % (22 / 0.6 = 37 %, up to the next 10 %).
+  CHECK(zoomed_top(0.22) == Approx(0.4));
+  // Never narrower than 30 %, and a top at or past 100 % is the whole bar.
+  CHECK(zoomed_top(0.03) == Approx(0.3));
+  CHECK(zoomed_top(0.5) == Approx(0.9));  // 50 / 0.6 = 83 %
+  // An aim's small step does not move the top: it moves in 10 % steps.
+  CHECK(zoomed_top(0.200) == zoomed_top(0.205));
+  // The zoomed bar keeps the accuracy's share and holds what runs past its ends at them.
+  MeterBar bar;
+  bar.high = 0.4;
+  bar.low = MeterBar::kLow * bar.high / MeterBar::kHigh;
+  CHECK(bar.zoomed());
+  CHECK(bar.at(bar.low) == Approx(bar.x0));
+  CHECK(bar.at(0.0) == Approx(bar.x0 + bar.bw * 0.15f / 1.25f));
+  CHECK(bar.at(0.4) == Approx(bar.x0 + bar.bw));
+  CHECK(bar.at(1.0) == Approx(bar.x0 + bar.bw));  // a marker run past the end stays at it
+  CHECK(bar.at(-1.0) == Approx(bar.x0));
+}

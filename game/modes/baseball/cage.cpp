@@ -264,7 +264,14 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
     const double launch = last_.result.shot.launch.vertical_angle;
     const bool grounder = batted_ball_type(launch) == BattedBallType::GroundBall && !play.caught;
     char how_far[48];
-    if (grounder && play.fielder >= 0 && !play.foul)
+    // A foul back to the screen behind the plate is dead there (stop_at_backstop): every such
+    // ball would read the backstop's 60 ft, which says nothing of it.
+    const Vec3 end = played_.samples.empty() ? Vec3::Zero().eval() : played_.samples.back().position;
+    const bool to_backstop = last_.result.outcome == BattedOutcome::Foul && !play.caught && end.x() < 0.0 &&
+                             std::hypot(end.x(), end.z()) >= kFoulGround - 0.01;
+    if (to_backstop)
+      std::snprintf(how_far, sizeof how_far, "back to the screen");
+    else if (grounder && play.fielder >= 0 && !play.foul)
       std::snprintf(how_far, sizeof how_far, "fielded at %.0f ft", m_to_ft(played_.summary.total_m));
     else if (grounder)  // a foul grounder: where it was touched or stopped, as the field's label
       std::snprintf(how_far, sizeof how_far, "%.0f ft", m_to_ft(played_.summary.total_m));

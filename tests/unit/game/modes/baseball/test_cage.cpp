@@ -498,3 +498,36 @@ TEST_CASE("A keeps the record it leaves: batting practice's swings and the live 
   CHECK(cage.swings().empty());
   CHECK_FALSE(cage.other_figures());
 }
+
+TEST_CASE("a foul back to the screen is called so, not by the backstop's 60 ft", "[modes][baseball]") {
+  // A bat set under the ball's middle sends fouls back over the catcher, dead at the backstop
+  // (stop_at_backstop): each would read the same 60 ft.
+  int back = 0;
+  for (std::uint64_t seed = 1; seed <= 80 && back < 2; ++seed) {
+    BattingCage cage(test::assets(), seed);
+    const int down = 3 + static_cast<int>(seed % 3);
+    for (int k = 0; k < down; ++k) cage.update({at(IntentKind::BatDown, 0.1 + 0.1 * k)}, 0.1 + 0.1 * k);
+    cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
+    const double on_time = 1.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
+    double now = 1.0;
+    while (now + 0.02 < on_time) cage.update({}, now += 0.02);
+    cage.update({at(IntentKind::Swing, on_time)}, now = on_time);
+    while (cage.swings().empty() && now < 10.0) cage.update({}, now += 0.02);
+    const double until = now + 15.0;
+    while (cage.stage() == BattingCage::Stage::Batted && now < until) cage.update({}, now += 0.05);
+    REQUIRE(cage.swings().size() == 1);
+    const SwingResult& r = cage.swings().back().result;
+    if (!r.contact || r.outcome != BattedOutcome::Foul || r.play.caught) continue;
+    const ShotTrajectory played = as_played(r.shot.trajectory, r.play);
+    const Vec3& end = played.samples.back().position;
+    INFO(cage.call_text());
+    if (end.x() < 0.0 && std::hypot(end.x(), end.z()) >= kFoulGround - 0.01) {
+      ++back;
+      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains(", back to the screen; "));
+      CHECK_THAT(cage.call_text(), !Catch::Matchers::Contains("60 ft"));
+    } else {
+      CHECK_THAT(cage.call_text(), !Catch::Matchers::Contains("back to the screen"));
+    }
+  }
+  CHECK(back >= 1);
+}

@@ -18,6 +18,22 @@
 using namespace sweetspot;
 using test::at;
 
+namespace {
+
+// A pitch called at 1 s and swung at on time, at 50 frames a second, until the swing is
+// recorded: the mode's time then.
+double pitch_and_swing_on_time(BattingCage& cage) {
+  cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
+  const double on_time = 1.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
+  double now = 1.0;
+  while (now + 0.02 < on_time) cage.update({}, now += 0.02);
+  cage.update({at(IntentKind::Swing, on_time)}, now = on_time);
+  while (cage.swings().empty() && now < 10.0) cage.update({}, now += 0.02);
+  return now;
+}
+
+}  // namespace
+
 
 TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any frame rate", "[modes][baseball]") {
   for (const double dt : {0.016, 0.033, 0.066}) {
@@ -297,12 +313,7 @@ TEST_CASE("a fielded grounder's call says where he picked it up, a fly's where i
     BattingCage cage(test::assets(), seed);
     // On time, the bat set 0 to 5 cm above the ball's middle by seed: flies and grounders.
     for (std::uint64_t k = 0; k < seed % 3; ++k) cage.update({at(IntentKind::BatUp, 0.1 + 0.1 * k)}, 0.1 + 0.1 * k);
-    cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
-    const double on_time = 1.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
-    double now = 1.0;
-    while (now + 0.02 < on_time) cage.update({}, now += 0.02);
-    cage.update({at(IntentKind::Swing, on_time)}, now = on_time);
-    while (cage.swings().empty() && now < 10.0) cage.update({}, now += 0.02);
+    double now = pitch_and_swing_on_time(cage);
     REQUIRE(cage.swings().size() == 1);
     // Met on time, and said so (a swing's timing is told on a hit as on a miss).
     if (cage.stage() == BattingCage::Stage::Batted) CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith(", on time"));
@@ -507,12 +518,7 @@ TEST_CASE("a foul back to the screen is called so, not by the backstop's 60 ft",
     BattingCage cage(test::assets(), seed);
     const int down = 3 + static_cast<int>(seed % 3);
     for (int k = 0; k < down; ++k) cage.update({at(IntentKind::BatDown, 0.1 + 0.1 * k)}, 0.1 + 0.1 * k);
-    cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
-    const double on_time = 1.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
-    double now = 1.0;
-    while (now + 0.02 < on_time) cage.update({}, now += 0.02);
-    cage.update({at(IntentKind::Swing, on_time)}, now = on_time);
-    while (cage.swings().empty() && now < 10.0) cage.update({}, now += 0.02);
+    double now = pitch_and_swing_on_time(cage);
     const double until = now + 15.0;
     while (cage.stage() == BattingCage::Stage::Batted && now < until) cage.update({}, now += 0.05);
     REQUIRE(cage.swings().size() == 1);

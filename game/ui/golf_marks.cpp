@@ -194,12 +194,21 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
         sum2 += s.carry_m * s.carry_m;
         side2 += s.side_m * s.side_m;
       }
-  const char* source = spread > 0.0 ? "your bag" : "";
+  std::string whose = spread > 0.0 ? "your spread (your bag)" : "";
   if (n >= 2) {
     const double mean = sum / n;
     spread = std::sqrt(std::max(0.0, (sum2 - n * mean * mean) / (n - 1)));
     side_spread = std::sqrt(side2 / n);
-    source = "this round";
+    whose = "your spread (this round)";
+  } else if (spread <= 0.0) {
+    // Before the player's own: a golfer of his skill's, by the meter errors the bots of that
+    // skill make, so a newcomer's map has the ellipse too (and says whose it is).
+    if (const auto prior = play.skill_spread(club)) {
+      spread = prior->carry_sd;
+      side_spread = prior->side_sd;
+      const std::string& skill = play.skill().name;
+      whose = (std::string("aeiou").find(skill.empty() ? 'x' : skill[0]) != std::string::npos ? "an " : "a ") + skill + " golfer's spread";
+    }
   }
   auto on_ground = [&](double along, double across) {
     const Vec3 p = ball + along * aim + across * side;
@@ -258,7 +267,7 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
     }
     ground_polyline(dl, cam, ellipse, w, h, IM_COL32(120, 200, 255, 230), 2.0f);
     if (const auto lp = cam.project(on_ground(carry - 2.0 * spread, 0.0), w, h)) {
-      const std::string text = "your spread (" + std::string(source) + ")";
+      const std::string& text = whose;
       dl->AddText(place(ImVec2(px(*lp).x + 6, px(*lp).y + 4), text, px(*lp)), IM_COL32(120, 200, 255, 255), text.c_str());
     }
   }

@@ -444,6 +444,31 @@ std::optional<GolfPlay::PinPower> GolfPlay::pin_power(const std::string& club) c
   return answer;
 }
 
+std::optional<GolfPlay::Spread> GolfPlay::skill_spread(const std::string& club) const {
+  const GolfRound& r = round();
+  if (r.finished() || club == "putter") return std::nullopt;
+  const StrokeKey key = key_for(club);
+  if (skill_spread_ && skill_spread_->key == key) return skill_spread_->answer;
+  const GolferSkill& sk = skill();
+  StrokeInput in;
+  in.club = club;
+  in.aim = aim_;
+  const auto flown = [&](double power, double accuracy_ms) {
+    in.meter.power = std::clamp(power, 0.02, MeterInput::kPower.max);
+    in.meter.accuracy_ms = std::clamp(accuracy_ms, MeterInput::kAccuracy.min, MeterInput::kAccuracy.max);
+    return r.simulate(in);
+  };
+  // The bot's own draws (GolfBot): power x (1 + N(power_sd)), the third click N(accuracy_sd_ms).
+  const double long_carry = flown(1.0 + 2.0 * sk.power_sd, 0.0).trajectory.summary.carry_m;
+  const double short_carry = flown(1.0 - 2.0 * sk.power_sd, 0.0).trajectory.summary.carry_m;
+  const ShotResult late = flown(1.0, 2.0 * sk.accuracy_sd_ms), early = flown(1.0, -2.0 * sk.accuracy_sd_ms);
+  const double side = side_of_aim(late, late.trajectory.summary.landing_position) -
+                      side_of_aim(early, early.trajectory.summary.landing_position);
+  const Spread answer{0.25 * std::abs(long_carry - short_carry), 0.25 * std::abs(side)};
+  skill_spread_ = SpreadHere{key, answer};
+  return answer;
+}
+
 void GolfPlay::update(const Intents& intents, double now) {
   apply_in_time_order(intents, now, [this](double t) { advance(t); }, [this](const Intent& in) { apply(in); });
 }

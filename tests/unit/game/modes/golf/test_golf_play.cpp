@@ -13,6 +13,7 @@
 #include "game/modes/golf/golf_play.hpp"
 #include "game/modes/golf/latency_calibration.hpp"
 #include "game/modes/replay.hpp"
+#include "game/util/rng.hpp"
 #include "game/report/round_json.hpp"
 #include "physics/units.hpp"
 #include "physics/world.hpp"
@@ -1064,4 +1065,46 @@ TEST_CASE("G off the green says where it reads; a putt abandoned says so; a stro
   CHECK(play.message() == "Putt abandoned, no stroke counted (Space: start, Space: power)");
   play.update({at(IntentKind::CaddiePlays, t + 31.0)}, t + 31.0);
   CHECK_FALSE(play.putt_read());
+}
+
+TEST_CASE("the map's prior spread is what a golfer of the player's skill spreads the club by", "[modes][golf]") {
+  // Before the player's own swings give one, the map draws the dispersion of his skill's
+  // meter errors (GolferSkill: the power click's and the third click's spreads), flown from
+  // here. Against the same errors drawn: 48 drives with the skill's errors, the carry's and
+  // the landing side's standard deviations sit near the prior's (its straight lines through
+  // ±2 sd; a sample's sd of 48 is within ~±20 % at 2 sd).
+  const Course course = first_hole();
+  for (const char* skill : {"tour", "amateur"}) {
+    CAPTURE(skill);
+    GolfPlay tee(test::assets(), course, solo(skill));
+    const auto prior = tee.skill_spread("driver");
+    REQUIRE(prior);
+    CHECK(prior->carry_sd > 0.5);
+    CHECK(prior->side_sd > 1.0);
+    CHECK_FALSE(tee.skill_spread("putter"));
+    const GolferSkill& sk = golfer_skill(skill);
+    Rng rng(11);
+    double n = 0.0, c = 0.0, c2 = 0.0, s = 0.0, s2 = 0.0;
+    for (int k = 0; k < 48; ++k) {
+      StrokeInput in;
+      in.club = "driver";
+      in.aim = tee.aim();
+      in.meter.power = std::clamp(1.0 + rng.normal(sk.power_sd), 0.02, 1.1);
+      in.meter.accuracy_ms = std::clamp(rng.normal(sk.accuracy_sd_ms), -200.0, 200.0);
+      const ShotResult r = tee.round().simulate(in);
+      const double carry = r.trajectory.summary.carry_m, side = side_of_aim(r, r.trajectory.summary.landing_position);
+      n += 1.0;
+      c += carry;
+      c2 += carry * carry;
+      s += side;
+      s2 += side * side;
+    }
+    const double carry_sd = std::sqrt((c2 - c * c / n) / (n - 1.0)), side_sd = std::sqrt((s2 - s * s / n) / (n - 1.0));
+    INFO("drawn: carry sd " << carry_sd << " m, side sd " << side_sd << " m; prior " << prior->carry_sd << ", " << prior->side_sd);
+    CHECK(prior->carry_sd == Approx(carry_sd).epsilon(0.25));
+    CHECK(prior->side_sd == Approx(side_sd).epsilon(0.25));
+  }
+  // The better golfer's is the smaller.
+  GolfPlay tour(test::assets(), course, solo("tour")), amateur(test::assets(), course, solo("amateur"));
+  CHECK(tour.skill_spread("7-iron")->side_sd < amateur.skill_spread("7-iron")->side_sd);
 }

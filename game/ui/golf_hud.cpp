@@ -222,7 +222,7 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   const bool putting_view = !g.finished() &&
                             (play.stage() == GolfPlay::Stage::Aiming || play.stage() == GolfPlay::Stage::Swinging) &&
                             (play.round().lie() == "green" || play.round().to_pin() <= GolfUnits::kNear);
-  ImGui::SetNextWindowSize(ImVec2(putting_view ? 365.0f : 420.0f, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(putting_view ? 345.0f : 420.0f, 0), ImGuiCond_Always);
   ImGui::Begin("Play", nullptr, kFixed);
   const GolfPlay::Stage stage = play.stage();
   const bool in_air = stage == GolfPlay::Stage::Flying;
@@ -298,8 +298,14 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     if (part_swing) {
       const double carries = play.carry_here(club, plan->meter.power), stops = play.stops_here(club, plan->meter.power);
       const double longest = std::max(carries, stops);
-      ImGui::TextWrapped("Caddie: a part swing, %.0f %% power (blue mark): carries %s, stops %s", 100.0 * plan->meter.power,
-                         units.course(carries, longest).c_str(), units.course(stops, longest).c_str());
+      // Firmer than the pin's green mark (GolfBot::intend: where a short miss would finish on
+      // worse ground, he swings a power spread harder): said, or the two marks read as a
+      // contradiction.
+      const auto pin = play.pin_power(club);
+      const bool past = pin && plan->meter.power > pin->power + 0.01 && stops > r.to_pin() + 1.0;
+      ImGui::TextWrapped("Caddie: a part swing, %.0f %% power (blue mark): carries %s, stops %s%s", 100.0 * plan->meter.power,
+                         units.course(carries, longest).c_str(), units.course(stops, longest).c_str(),
+                         past ? ", past the pin: a short one still gets there" : "");
     }
     // His club is not the one the distance asks for: say why, or the player takes the longer.
     if (plan && plan->club == club && !play.caddie_passed_over().empty() && play.human_turn())
@@ -425,6 +431,10 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   };
   if (s.holes > 0 || group) {
     ImGui::Separator();
+    // The names' column as wide as the longest name: "You" beside "scratch bot" needs 11, and
+    // a fixed 14 pushed the narrow putting panel's rows onto a second line.
+    int name_w = 0;
+    for (const GolfPlayer& pl : g.players()) name_w = std::max(name_w, static_cast<int>(pl.name.size()));
     for (std::size_t p = 0; p < g.players().size(); ++p) {
       const PlayerStanding& ps = s.players[p];
       char extra[48] = "";
@@ -435,9 +445,9 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       // Wrapped: a line that runs past the panel's edge ("3 ft to go, Gre") goes on below.
       char row[192];
       if (ps.holes_scored == 0)  // no hole scored yet (or a match's only one conceded): no score to stand on
-        std::snprintf(row, sizeof row, "%-14s   -%s%s", g.players()[p].name.c_str(), extra, here.c_str());
+        std::snprintf(row, sizeof row, "%-*s   -%s%s", name_w, g.players()[p].name.c_str(), extra, here.c_str());
       else
-        std::snprintf(row, sizeof row, "%-14s %3d (%s)%s%s", g.players()[p].name.c_str(), ps.total_strokes,
+        std::snprintf(row, sizeof row, "%-*s %3d (%s)%s%s", name_w, g.players()[p].name.c_str(), ps.total_strokes,
                       to_par_text(ps.total_strokes - ps.total_par).c_str(), extra, here.c_str());
       ImGui::TextWrapped("%s", row);
     }
@@ -473,7 +483,10 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   if (!play.message().empty() && !in_air) {
     ImGui::Separator();
     ImGui::TextWrapped("%s", play.message().c_str());
-    if (play.message_is_result()) at_rest(play.last_record(), play.last_rest_lie());
+    // Where another player's ball stopped is in his row of the group's lines above: in the
+    // putting view, whose narrow panel must end above the golfer's head, not said twice.
+    const bool others_in_rows = putting_view && group && play.human_turn() && play.shooter() != play.player();
+    if (play.message_is_result() && !others_in_rows) at_rest(play.last_record(), play.last_rest_lie());
   }
   // On your turn, your own last stroke on this hole, when somebody else has played since.
   if (!in_air && play.human_turn() && play.shooter() != play.player()) {

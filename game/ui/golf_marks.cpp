@@ -178,8 +178,12 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
   // The selected club's full-swing carry from here (the wind, the lie: the panel's "from here"
   // figure, so the ring and the panel agree); its spread the caddie's stock (the player's bag
   // when they measured one).
-  const GolfBot::Stock* stock = play.caddie().stock_of(club);
-  const double carry = club == "putter" ? r.to_pin() : play.carry_here(club);
+  // The caddie's part swing with this club (a pitch, a chip) is drawn instead, with its own
+  // spread: a full swing's ring 77 yd out says nothing of a 37 yd pitch.
+  const auto& plan = play.caddie_plan();
+  const double part = club != "putter" && plan && plan->club == club && plan->meter.power < 0.97 ? plan->meter.power : 1.0;
+  const GolfBot::Stock* stock = part < 1.0 ? nullptr : play.caddie().stock_of(club);
+  const double carry = club == "putter" ? r.to_pin() : play.carry_here(club, part);
   double spread = stock ? stock->spread : 0.0, side_spread = stock ? stock->side_spread : 0.0;
   // The player's own dispersion with this club this round, when they have hit it twice with a
   // full swing (a part swing's carry is another club's: it would smear the spread).
@@ -188,7 +192,7 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
   double sum = 0.0, sum2 = 0.0, side2 = 0.0;
   for (const HoleCard& c : r.card())
     for (const StrokeRecord& s : c.shots)
-      if (s.club == club && !s.conceded && s.carry_m > 0.0 && s.power >= kFullSwing) {
+      if (part >= 1.0 && s.club == club && !s.conceded && s.carry_m > 0.0 && s.power >= kFullSwing) {
         ++n;
         sum += s.carry_m;
         sum2 += s.carry_m * s.carry_m;
@@ -203,11 +207,12 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
   } else if (spread <= 0.0) {
     // Before the player's own: a golfer of his skill's, by the meter errors the bots of that
     // skill make, so a newcomer's map has the ellipse too (and says whose it is).
-    if (const auto prior = play.skill_spread(club)) {
+    if (const auto prior = play.skill_spread(club, part)) {
       spread = prior->carry_sd;
       side_spread = prior->side_sd;
       const std::string& skill = play.skill().name;
       whose = (std::string("aeiou").find(skill.empty() ? 'x' : skill[0]) != std::string::npos ? "an " : "a ") + skill + " golfer's spread";
+      if (part < 1.0) whose += " (part swing)";
     }
   }
   auto on_ground = [&](double along, double across) {
@@ -254,7 +259,7 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
     if (const auto lp = cam.project(on_ground(carry, 0.0), w, h)) {
       // A putt's ring in the putt's units, as the panel says its distance ("putter 18 ft"); a
       // chip's as the launch monitor will say its carry.
-      const std::string text = club + " " + (club == "putter" ? units.putt(carry) : units.course(carry));
+      const std::string text = club + " " + (club == "putter" ? units.putt(carry) : units.course(carry)) + (part < 1.0 ? ", part swing" : "");
       dl->AddText(place(ImVec2(px(*lp).x + 6, px(*lp).y - 18), text, px(*lp)), IM_COL32(255, 230, 90, 255), text.c_str());
     }
   }

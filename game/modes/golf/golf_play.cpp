@@ -444,11 +444,11 @@ std::optional<GolfPlay::PinPower> GolfPlay::pin_power(const std::string& club) c
   return answer;
 }
 
-std::optional<GolfPlay::Spread> GolfPlay::skill_spread(const std::string& club) const {
+std::optional<GolfPlay::Spread> GolfPlay::skill_spread(const std::string& club, double power) const {
   const GolfRound& r = round();
   if (r.finished() || club == "putter") return std::nullopt;
   const StrokeKey key = key_for(club);
-  if (skill_spread_ && skill_spread_->key == key) return skill_spread_->answer;
+  if (skill_spread_ && skill_spread_->key == key && skill_spread_->power == power) return skill_spread_->answer;
   const GolferSkill& sk = skill();
   StrokeInput in;
   in.club = club;
@@ -458,14 +458,17 @@ std::optional<GolfPlay::Spread> GolfPlay::skill_spread(const std::string& club) 
     in.meter.accuracy_ms = std::clamp(accuracy_ms, MeterInput::kAccuracy.min, MeterInput::kAccuracy.max);
     return r.simulate(in);
   };
-  // The bot's own draws (GolfBot): power x (1 + N(power_sd)), the third click N(accuracy_sd_ms).
-  const double long_carry = flown(1.0 + 2.0 * sk.power_sd, 0.0).trajectory.summary.carry_m;
-  const double short_carry = flown(1.0 - 2.0 * sk.power_sd, 0.0).trajectory.summary.carry_m;
-  const ShotResult late = flown(1.0, 2.0 * sk.accuracy_sd_ms), early = flown(1.0, -2.0 * sk.accuracy_sd_ms);
+  // The bot's own draws (GolfBot::plan): power x (1 + N(sd)), sd the full swing's power_sd
+  // and partial_feel_sd per unit of power a part swing leaves out; the third click
+  // N(accuracy_sd_ms).
+  const double sd = sk.power_sd + sk.partial_feel_sd * (1.0 - std::min(power, 1.0));
+  const double long_carry = flown(power * (1.0 + 2.0 * sd), 0.0).trajectory.summary.carry_m;
+  const double short_carry = flown(power * (1.0 - 2.0 * sd), 0.0).trajectory.summary.carry_m;
+  const ShotResult late = flown(power, 2.0 * sk.accuracy_sd_ms), early = flown(power, -2.0 * sk.accuracy_sd_ms);
   const double side = side_of_aim(late, late.trajectory.summary.landing_position) -
                       side_of_aim(early, early.trajectory.summary.landing_position);
   const Spread answer{0.25 * std::abs(long_carry - short_carry), 0.25 * std::abs(side)};
-  skill_spread_ = SpreadHere{key, answer};
+  skill_spread_ = SpreadHere{key, power, answer};
   return answer;
 }
 

@@ -221,17 +221,18 @@ class GolfPlay {
   std::optional<PinPower> pin_power(const std::string& club) const;
   static constexpr double kPinPowerStep = 0.004;
 
-  /// What a golfer of the player's skill (GolferSkill's meter errors) spreads a full swing of
-  /// `club` from here by, one standard deviation each way (m): along the line, a quarter of
-  /// the carry between the power click's ±2 sd; across it, a quarter of the landing's side
-  /// between the third click's ±2 sd (four strokes flown: the wind and the lie in them). The map's prior
-  /// for the player's dispersion until his own swings with the club give one. None for the
-  /// putter. Kept for the player, club, ball, hole and aim.
+  /// What a golfer of the player's skill (GolferSkill's meter errors) spreads a swing of
+  /// `club` at `power` from here by, one standard deviation each way (m): along the line, a
+  /// quarter of the carry between the power click's ±2 sd (a part swing's wider, by its
+  /// partial_feel_sd, as the bots draw it); across it, a quarter of the landing's side between
+  /// the third click's ±2 sd (four strokes flown: the wind and the lie in them). The map's
+  /// prior for the player's dispersion until his own swings with the club give one. None for
+  /// the putter. Kept for the player, club, ball, hole, aim and power.
   struct Spread {
     double carry_sd = 0.0;
     double side_sd = 0.0;
   };
-  std::optional<Spread> skill_spread(const std::string& club) const;
+  std::optional<Spread> skill_spread(const std::string& club, double power = 1.0) const;
 
   /// Water and bunkers the aim line crosses from the ball to a little past where the stroke
   /// the player would play with `club` stops (the caddie's part swing, else a full one): each
@@ -376,6 +377,7 @@ class GolfPlay {
   mutable std::optional<PinPowerHere> pin_power_;  ///< the last answer: the HUD asks each frame
   struct SpreadHere {
     StrokeKey key;
+    double power = 1.0;
     Spread answer;
   };
   mutable std::optional<SpreadHere> skill_spread_;  ///< the last answer: the map asks each frame

@@ -711,9 +711,16 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
         return std::abs(d.dot(aim) - k * stripe) < 0.15 * stripe && std::abs(d.dot(across)) < half;
       });
     };
+    // Nor a stripe at the flag: its "50" just under a pin 53 yd away reads as the pin's
+    // distance, which the game writes beside the cloth. The same 15 % of the spacing.
+    const auto at_the_flag = [&](int k) {
+      if (!on_hole) return false;
+      const Vec3 d = *m.flag_position - launch;
+      return std::abs(d.dot(aim) - k * stripe) < 0.15 * stripe && std::abs(d.dot(across)) < half;
+    };
     for (const auto& [k, on_line] : written) {
       const std::string text = std::to_string(k * 50);
-      if (past_a_gap(k) || beside_shot_label(k)) continue;
+      if (past_a_gap(k) || beside_shot_label(k) || at_the_flag(k)) continue;
       const auto seen = camera.project(on_line, width, height);
       // A stripe whose middle is out of the picture has no number: slid in to the image's
       // edge, the side view's far stripes would stand there in a column ("450 50 300 150").

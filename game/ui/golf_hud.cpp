@@ -44,16 +44,22 @@ constexpr double kShareNoted = 2.7;
 
 std::string why_from_here(double stock, bool measured, double here, double calm, const GolfUnits& units, const char* ground) {
   std::string out;
-  const auto share = [&](const std::string& what, double d) {
-    if (std::abs(d) < kShareNoted) return;
+  const auto share = [&](const std::string& what, double d, double floor) {
+    if (std::abs(d) < floor) return;
     out += (out.empty() ? ": " : ", ") + what + (d >= 0.0 ? " +" : " -") + units.distance(std::abs(d));
   };
   if (std::isnan(calm)) {  // no still-air flight to part them by: the two together
-    if (!measured) share(std::string("wind, ") + ground, here - stock);
+    if (!measured) share(std::string("wind, ") + ground, here - stock, kShareNoted);
     return out;
   }
-  share("wind", here - calm);
-  if (!measured) share(ground, calm - stock);
+  const double wind = here - calm, ground_share = measured ? 0.0 : calm - stock;
+  // Once one share is named, the other is too from a whole unit up, so the line adds up
+  // ("stock 78 yd; from here 68 yd: wind -2 yd, lie and slope -6 yd", not the ground's alone).
+  const bool named = std::abs(wind) >= kShareNoted || std::abs(ground_share) >= kShareNoted;
+  const double unit = units.imperial ? 0.9144 : 1.0;
+  const double floor = named ? unit : kShareNoted;
+  share("wind", wind, floor);
+  if (!measured) share(ground, ground_share, floor);
   return out;
 }
 
@@ -687,9 +693,17 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       // Said where the player was looking when it happened, not only in the panel.
       std::snprintf(label, sizeof label, "%s", play.message().c_str());
     } else {
-      char before[200];
-      std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms)%s", club_name(club).c_str(),
-                    to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty), pin_words);
+      // The last swing's two marks (draw_meter_bar) are named, as the putt's last power is.
+      const char* last_marks = marks && !marks->putting() ? "; white, red: your last clicks" : "";
+      // A part swing's bar climbs slower (MeterClock::part_swing_tempo: the blue mark takes
+      // 0.6 s to reach): said before the swing, so the change of pace is not a surprise.
+      const auto& plan = play.caddie_plan();
+      const bool slowed = plan && plan->club == club && plan->meter.power < 0.97 &&
+                          MeterClock::part_swing_tempo(plan->meter.power) > MeterClock::tempo_for(false) + 1e-9;
+      char before[240];
+      std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms%s)%s%s", club_name(club).c_str(),
+                    to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty),
+                    slowed ? "; a part swing: the bar climbs slower" : "", pin_words, last_marks);
       std::snprintf(label, sizeof label, "%s", full_swing_caption(meter, now, before).c_str());
     }
   }

@@ -318,6 +318,28 @@ TEST_CASE("a fly caught at the wall is labelled beside the fence's sign, never i
   CHECK(scene.build(cam, land, w, h).label_boxes.size() == 6);
 }
 
+TEST_CASE("a distance stripe at the flag gives up its number: a '50' under a 53 yd pin reads as the pin's", "[render]") {
+  OffscreenContext context;
+  const double yd = 0.9144;
+  const auto boxes_with_flag_at = [&](double flag_yd) {
+    ShotSceneInput in;
+    in.assets = &test::assets();
+    in.world = &test_world("test_range.obj");
+    in.flag = Vec3(flag_yd * yd, 0.0, 0.0);
+    ShotScene scene(in);
+    SyntheticShotSpec spec;
+    spec.carry = 20.0;
+    spec.apex = 6.0;
+    spec.lateral = 0.0;
+    scene.set_shot(synthetic_shot(spec), std::nullopt);
+    const int w = 640, h = 360;
+    const Camera cam = scene.camera(CameraKind::Behind, 0.0, w, h);
+    return scene.build(cam, 0.0, w, h).label_boxes.size();
+  };
+  // Both pins leave one stripe (50 yd) to draw; 20 yd clear of the flag it keeps its number.
+  CHECK(boxes_with_flag_at(53.0) + 1 == boxes_with_flag_at(70.0));
+}
+
 TEST_CASE("a missing or broken shader names the file and the compiler log", "[render]") {
   OffscreenContext context;
   const auto dir = std::filesystem::temp_directory_path() / "sweetspot_render_shader_test";

@@ -59,6 +59,11 @@ TEST_CASE("the club line says why its carry from here is not the bag's: the wind
   CHECK(why_from_here(200.0, false, 205.0, 195.0, yards) == ": wind +11 yd, lie and slope -5 yd");
   // Into the wind from a perfect lie: only the wind's share.
   CHECK(why_from_here(200.0, false, 190.0, 200.5, yards) == ": wind -11 yd");
+  // Once one share is named the other is too from a yard up, so the figures add up: 78 yd in
+  // the bag, 6 yd to the lie, 2.4 yd to the wind, 68 from here.
+  const double yd = 0.9144;
+  CHECK(why_from_here(78 * yd, false, 69.6 * yd, 72 * yd, yards) == ": wind -2 yd, lie and slope -6 yd");
+  CHECK(why_from_here(78 * yd, false, 71.6 * yd, 72 * yd, yards) == ": lie and slope -6 yd");  // under a yard
   // Shares under ~3 yd are a good player's own spread: nothing said.
   CHECK(why_from_here(200.0, false, 201.0, 199.0, yards).empty());
   // A measured bag holds the player's own strikes: the ground's share is not claimed.

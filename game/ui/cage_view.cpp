@@ -125,7 +125,8 @@ constexpr ImU32 kSprayOut = IM_COL32(150, 150, 150, 255);
 float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_by) {
   ImGui::SetNextWindowPos(ImVec2(stats_panel_left(c.left_handed(), w), 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(stats_panel_right(w) - 10.0f, 0), ImGuiCond_Always);
-  ImGui::Begin("Batting cage", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  // Named for what is played in it (A switches): one window either way (the id after ###).
+  ImGui::Begin(c.live() ? "Live game###cage_stats" : "Batting practice###cage_stats", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   const BattingCage::Figures fig = c.figures();
   if (c.live()) {
     const BattingCage::AtBats& a = c.at_bats();
@@ -420,7 +421,13 @@ class CageView final : public ModeView {
       // The batted ball framed below the HUD panel and the call under it (last frame's
       // extent), so its apex never flies behind them.
       const FrameWindow below_hud{0.0, std::clamp((hud_bottom_ + 8.0) / h, 0.0, 0.5), 1.0, 1.0};
-      const Camera cam = batted ? scene_->camera(CameraKind::Behind, t, w, h, below_hud) : batter_view(c.left_handed());
+      // A ball that goes back over the plate (a foul to the screen) is seen from the side: from
+      // behind the plate its climb toward the eye reads as a deep fly to centre field.
+      const auto& flown = c.played().samples;
+      const bool back_over_plate = batted && !flown.empty() && flown.back().position.x() < 0.0;
+      const Camera cam = !batted ? batter_view(c.left_handed())
+                         : back_over_plate ? scene_->camera(CameraKind::Side, t, w, h, below_hud)
+                                           : scene_->camera(CameraKind::Behind, t, w, h, below_hud);
       scene_->set_people(cage_people(c, in.now));
       const bool moving = c.stage() == Stage::Pitching || batted;
       renderer.draw(scene_->build(cam, moving ? cage_scene_time(c, in.now) : t, w, h), cam);

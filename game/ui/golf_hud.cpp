@@ -457,7 +457,8 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
                       to_par_text(ps.total_strokes - ps.total_par).c_str(), extra, here.c_str());
       ImGui::TextWrapped("%s", row);
     }
-    if (s.match) ImGui::Text("Match: %s", s.match->holes.back().status.c_str());
+    // Before the first hole is decided the match has no status of its own yet.
+    if (s.match) ImGui::Text("Match: %s", s.match->holes.empty() ? "all square" : s.match->holes.back().status.c_str());
   } else if (g.options().format == GolfFormat::Match) {
     ImGui::Separator();
     ImGui::Text("Match: all square");

@@ -39,5 +39,26 @@ grep -Eq "^ +1 +3 +[0-9]+ +[0-9]+\*? \([0-9]+\)" "$work/log.txt" || { echo "no s
 grep -Eq "^putts " "$work/log.txt" || { echo "no putts row"; exit 1; }
 grep -q "ms per frame" "$work/log.txt"
 "$check" "$work/golf.png" 1280 800 40  # a green under a scorecard: few colours
+# Match play against a bot: the panel's match line before any hole is decided (it read the
+# last decided hole's status of an empty list and crashed on the first frame).
+cat > "$work/match.sh" <<'D'
+#!/usr/bin/env bash
+set -u
+bin="$1"; work="$2"
+"$bin" play --mode golf --seed 1 --course links --holes 1 --no-flyover --format match --bot scratch > "$work/match_log.txt" 2>&1 &
+pid=$!
+wid=""
+for _ in $(seq 1 150); do wid=$(xdotool search --name Sweetspot 2>/dev/null | head -1 || true); [ -n "$wid" ] && break; sleep 0.2; done
+[ -n "$wid" ] || { echo "no window"; kill $pid; exit 1; }
+sleep 3
+kill -0 $pid 2>/dev/null || { echo "match play: the window died"; exit 1; }
+xdotool windowfocus --sync "$wid" 2>/dev/null || true
+xdotool key Escape; sleep 0.3; xdotool key q; sleep 0.3; xdotool key q
+for _ in $(seq 1 50); do kill -0 $pid 2>/dev/null || break; sleep 0.2; done
+kill $pid 2>/dev/null && { echo "the match window did not quit"; exit 1; }
+wait $pid
+D
+chmod +x "$work/match.sh"
+xvfb-run -a -s "-screen 0 1280x800x24 -noreset" "$work/match.sh" "$bin" "$work" || { cat "$work/match_log.txt"; exit 1; }
 [ -n "${SWEETSPOT_GAME_ARTIFACTS:-}" ] && cp "$work/golf.png" "$SWEETSPOT_GAME_ARTIFACTS/" || true
 echo "play golf test passed"

@@ -132,6 +132,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
       vi.keys.push_back({k.key, k.time - slot.offset});
     }
     vi.now = (paused ? paused_at : wall) - slot.offset;
+    vi.paused = paused;
     vi.dt = std::max(0.0, vi.now - slot.last_now);
     slot.last_now = vi.now;
     vi.render_scale = o.dynamic_resolution ? resolution.scale() : 1.0;

@@ -348,7 +348,8 @@ class CageView final : public ModeView {
     in.ball_radius = assets.equipment().ball("mlb").radius;
     scene_ = std::make_unique<ShotScene>(in);
   }
-  const char* title() const override { return "Batting cage"; }
+  // As the panel is titled: what is being played in the cage.
+  const char* title() const override { return cage_->live() ? "Baseball: live game" : "Baseball: batting practice"; }
   AmbienceSpec ambience() const override { return {Ambience::Ballpark, 0.0}; }
   const char* restart_label() const override { return "Restart session"; }
   std::string restart_loses() const override {

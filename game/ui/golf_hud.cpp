@@ -702,9 +702,9 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       const bool slowed = plan && plan->club == club && plan->meter.power < 0.97 &&
                           MeterClock::part_swing_tempo(plan->meter.power) > MeterClock::tempo_for(false) + 1e-9;
       char before[240];
-      std::snprintf(before, sizeof before, "%s: Space to swing (difficulty %s: perfect within %.0f ms%s)%s%s", club_name(club).c_str(),
+      std::snprintf(before, sizeof before, "%s: Space to swing (%s: perfect within %.0f ms%s)%s%s", club_name(club).c_str(),
                     to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty),
-                    slowed ? "; a part swing: the bar climbs slower" : "", pin_words, last_marks);
+                    slowed ? "; part swing: a slower bar" : "", pin_words, last_marks);
       std::snprintf(label, sizeof label, "%s", full_swing_caption(meter, now, before).c_str());
     }
   }

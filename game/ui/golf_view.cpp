@@ -721,7 +721,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     ImGui::End();
   }
   if (flying || settling) draw_launch_panel(play_->last_shot(), units_, w, flying ? t : end, play_->last_hit_tree());
-  else draw_wind(*play_, units_, w, screen_up_heading(cam));
+  else if (!in.paused) draw_wind(*play_, units_, w, screen_up_heading(cam));  // the menu stands there
   if (!settling) draw_golf_meter(*play_, units_, w, h, in.now);
   if (calibration_) draw_calibration(w, h, in.now);
   if (stage == GolfPlay::Stage::HoleOver && !settling) draw_golf_card(*play_, w, false);

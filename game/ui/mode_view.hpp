@@ -53,6 +53,9 @@ struct ViewInput {
   /// (dynamic resolution: the loop lowers it when frames run over budget). HUD and panels
   /// stay at full resolution.
   double render_scale = 1.0;
+  /// The pause menu is up: overlays drawn over every window (the foreground draw list) that
+  /// stand where the menu does are left out, so they do not cover its buttons.
+  bool paused = false;
 };
 
 /// Sizes `renderer` for a w x h view at `scale` (each side rounded, at least 16 px); the

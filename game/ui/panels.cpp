@@ -265,10 +265,12 @@ bool tuning_section(PanelContext& c) {
   if (im.present && im.mu_grip == 0.0) {
     ImGui::TextDisabled("friction does not change this launch");
   } else if (im.present && im.mu_grip > 0.0) {
-    // Green: the contact grips, the slider changes nothing above the threshold; amber: it slips.
+    // Green: the contact grips from the start, the slider changes nothing above the threshold;
+    // amber: the ball slides along the face first (it may still grip before it leaves, which
+    // the monitor's "contact" says), and how far it slides is mu's.
     const bool grips = mat.mu >= im.mu_grip;
     ImGui::TextColored(grips ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : ImVec4(1.0f, 0.75f, 0.3f, 1.0f),
-                       grips ? "grip: mu above %.3f changes nothing" : "slip: mu changes the launch up to %.3f",
+                       grips ? "grip: mu above %.3f changes nothing" : "slides: mu matters up to %.3f",
                        im.mu_grip);
   }
   int model = static_cast<int>(mat.friction);
@@ -345,6 +347,12 @@ void monitor_section(PanelContext& c) {
   for (const std::string& id : sport.report)
     if (const Metric* m = find_metric(id)) label_width = std::max(label_width, ImGui::CalcTextSize(std::string(m->label).c_str()).x);
   const float number_width = ImGui::CalcTextSize("-0000.0").x;
+  // But never so wide that the shot's own value is cut ("162." for 162.4 mph): a longer label
+  // ("Restitution e / along the face e_t") wraps onto a second line instead.
+  const float pad = 2.0f * ImGui::GetStyle().CellPadding.x;
+  const float shot_width = ImGui::CalcTextSize("0000.0 mph").x;
+  label_width = std::max(ImGui::CalcTextSize("Landing angle").x,
+                         std::min(label_width, ImGui::GetContentRegionAvail().x - 2.0f * number_width - shot_width - 4.0f * pad));
   if (ImGui::BeginTable("monitor", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, label_width);
     ImGui::TableSetupColumn("shot", ImGuiTableColumnFlags_WidthStretch);
@@ -359,7 +367,7 @@ void monitor_section(PanelContext& c) {
       if (!text) continue;
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(std::string(m->label).c_str());
+      ImGui::TextWrapped("%s", std::string(m->label).c_str());
       ImGui::TableNextColumn();
       const auto got = m->number(r, u);
       const Expectation* ref = nullptr;
@@ -479,7 +487,7 @@ bool draw_panels(PanelContext& ctx, const PanelLayout& layout) {
     case LayoutKind::Wide:
       begin_column("##left", layout.left);
       if (section("Shot", true)) changed |= shot_section(ctx);
-      if (section("Tuning", true)) changed |= tuning_section(ctx);
+      if (section("Tuning (Ctrl+click a slider to type)###Tuning", true)) changed |= tuning_section(ctx);
       end_column();
       begin_column("##right", layout.right);
       if (section("Replay", true)) replay_section(ctx);
@@ -492,7 +500,7 @@ bool draw_panels(PanelContext& ctx, const PanelLayout& layout) {
       if (section("Replay", true)) replay_section(ctx);
       if (section("Launch monitor", true)) monitor_section(ctx);
       if (section("Shot", true)) changed |= shot_section(ctx);
-      if (section("Tuning", false)) changed |= tuning_section(ctx);
+      if (section("Tuning (Ctrl+click a slider to type)###Tuning", false)) changed |= tuning_section(ctx);
       if (section("Trajectory", false)) draw_trajectory_plots(ctx.lab.result().trajectory, ctx.replay.time);
       end_column();
       break;

@@ -81,7 +81,9 @@ void GolfGroup::concede_hole() {
   events_.push_back({p, GolfEvent::Kind::ConcedeHole, {}, false});
   after_turn(p, hole);
   const std::string& who = players_[static_cast<std::size_t>(p)].name;
-  note_ = who + (who == "You" ? " concede hole " : " concedes hole ") + std::to_string(course_.holes[hole].number);
+  const std::string decided = note_;  // the hole's result, when the opponent had holed out
+  note_ = who + (who == "You" ? " concede hole " : " concedes hole ") + std::to_string(course_.holes[hole].number) +
+          (decided.empty() ? "" : ". " + decided);
   // The hole is decided: the opponent need not hole out (Rule 3.2b(1)).
   GolfRound& other = rounds_[static_cast<std::size_t>(1 - p)];
   if (other.hole_index() == hole) {
@@ -141,8 +143,7 @@ std::vector<int> GolfGroup::honour_order() const {
   return order;
 }
 
-bool GolfGroup::match_decided() const {
-  if (options_.format != GolfFormat::Match || hole_ == 0) return false;
+MatchResult GolfGroup::match_so_far() const {
   // The holes the whole group has finished (a player may have holed out on the next).
   std::vector<int> nets[2] = {net(0), net(1)};
   std::vector<int> conceded_by(hole_, -1);
@@ -151,8 +152,26 @@ bool GolfGroup::match_decided() const {
     for (std::size_t h = 0; h < hole_; ++h)
       if (round(p).card()[h].conceded) conceded_by[h] = p;
   }
-  return score_match(nets[0], nets[1], conceded_by, static_cast<int>(course_.holes.size()), players_[0].name, players_[1].name)
-             .decided_after >= 0;
+  return score_match(nets[0], nets[1], conceded_by, static_cast<int>(course_.holes.size()), players_[0].name, players_[1].name);
+}
+
+bool GolfGroup::match_decided() const {
+  if (options_.format != GolfFormat::Match || hole_ == 0) return false;
+  return match_so_far().decided_after >= 0;
+}
+
+std::string GolfGroup::match_hole_words(std::size_t hole) const {
+  const MatchResult m = match_so_far();
+  if (hole >= m.holes.size()) return {};
+  const MatchHole& mh = m.holes[hole];
+  const std::string number = std::to_string(course_.holes[hole].number);
+  std::string won;
+  if (mh.winner < 0) won = "Hole " + number + " halved";
+  else {
+    const std::string& name = players_[static_cast<std::size_t>(mh.winner)].name;
+    won = name + (name == "You" ? " win hole " : " wins hole ") + number;
+  }
+  return won + ": " + mh.status;
 }
 
 void GolfGroup::choose_next() {
@@ -163,6 +182,12 @@ void GolfGroup::choose_next() {
     ++hole_;
     hole_first_events_.push_back(events_.size());
     if (hole_ < n) order_ = honour_order();
+  }
+  // A match's hole just finished: who won it, and where the match stands ("Hole 2 halved:
+  // scratch bot 1 up"), or the strokes alone would leave the player to work it out.
+  if (options_.format == GolfFormat::Match && hole_ != hole_before && hole_before < n) {
+    const std::string words = match_hole_words(hole_before);
+    if (!words.empty()) note_ += (note_.empty() ? "" : ". ") + words;
   }
   // A match can only be decided as a hole ends.
   if (hole_ >= n || (hole_ != hole_before && match_decided())) {

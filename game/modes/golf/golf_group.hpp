@@ -66,6 +66,10 @@ class GolfGroup {
   bool finished() const { return next_ < 0; }
   /// Match play: one side leads by more holes than remain after the holes finished.
   bool match_decided() const;
+  /// Match play: who won hole `hole` (an index into the holes the group has finished) and
+  /// where the match then stood, "Hole 2 halved: scratch bot 1 up", "You win hole 3: all
+  /// square"; empty for a hole not yet finished.
+  std::string match_hole_words(std::size_t hole) const;
   std::size_t hole_index() const { return hole_; }  ///< the hole the group is on; once finished, the holes played
   const Course& course() const { return course_; }
   const std::vector<GolfPlayer>& players() const { return players_; }
@@ -116,6 +120,8 @@ class GolfGroup {
   const std::string& note() const { return note_; }
 
  private:
+  /// The match over the holes the whole group has finished.
+  MatchResult match_so_far() const;
   const StrokeRecord& play_stroke(const StrokeInput& in, bool drawn, ShotResult* shot);
   void after_turn(int player, std::size_t hole_before);
   void choose_next();

@@ -63,7 +63,8 @@ GolfPlay::GolfPlay(const Assets& assets, Course course, GolfSetup setup)
   begin_turn(0.0);
   if (group_.finished()) {
     stage_ = Stage::RoundOver;  // a saved round that was already over: its final card
-  } else if (setup_.flyover) {
+  } else if (setup_.flyover && group_.events().size() <= group_.hole_first_event(group_.hole_index())) {
+    // A round resumed in the middle of a hole goes on from the ball: its flyover was seen.
     stage_ = Stage::Flyover;
     flyover_at_ = 0.0;
   }

@@ -183,6 +183,15 @@ TEST_CASE("a match decided with holes to play ends there; the card, the result a
   CHECK(s.holes == static_cast<std::size_t>(s.match->decided_after) + 1);
   CHECK(s.holes < 18);
   CHECK(s.match->result.find(" wins ") != std::string::npos);
+  // Each hole's words name its winner (or a half) and end on the match's status after it.
+  for (std::size_t h = 0; h < s.match->holes.size(); ++h) {
+    const MatchHole& mh = s.match->holes[h];
+    const std::string words = g.match_hole_words(h), number = std::to_string(g.course().holes[h].number);
+    CHECK(words.starts_with(mh.winner < 0 ? "Hole " + number + " halved: "
+                                          : g.players()[static_cast<std::size_t>(mh.winner)].name + " wins hole " + number + ": "));
+    CHECK(words.ends_with(": " + mh.status));
+  }
+  CHECK(g.match_hole_words(s.match->holes.size()).empty());
   CHECK(s.match->result.find('&') != std::string::npos);
   for (int p = 0; p < 2; ++p) {
     CHECK(s.players[static_cast<std::size_t>(p)].gross.size() == s.holes);
@@ -218,9 +227,15 @@ TEST_CASE("match play: a player who can no longer halve the hole picks it up ins
       g.concede_hole();
       ++conceded;
       CHECK(g.round(p).card()[h].conceded);
-      CHECK(g.note() == g.players()[static_cast<std::size_t>(p)].name + " concedes hole " + std::to_string(g.course().holes[h].number));
+      // The opponent had holed out: conceding ends the hole, and the note says who won it.
+      const std::string number = std::to_string(g.course().holes[h].number);
+      CHECK(g.note().starts_with(g.players()[static_cast<std::size_t>(p)].name + " concedes hole " + number + ". " +
+                                 g.players()[static_cast<std::size_t>(1 - p)].name + " wins hole " + number + ": "));
     } else {
+      const std::size_t group_hole = g.hole_index();
       g.play_bot();
+      // The turn that finishes a hole tells its result and the match's standing.
+      if (g.hole_index() > group_hole) CHECK(g.note().ends_with(g.match_hole_words(group_hole)));
     }
   }
   CHECK(conceded > 0);
@@ -228,6 +243,15 @@ TEST_CASE("match play: a player who can no longer halve the hole picks it up ins
   const Standings s = standings(g);
   REQUIRE(s.match);
   CHECK(s.match->result.find(" wins ") != std::string::npos);
+  // Each hole's words name its winner (or a half) and end on the match's status after it.
+  for (std::size_t h = 0; h < s.match->holes.size(); ++h) {
+    const MatchHole& mh = s.match->holes[h];
+    const std::string words = g.match_hole_words(h), number = std::to_string(g.course().holes[h].number);
+    CHECK(words.starts_with(mh.winner < 0 ? "Hole " + number + " halved: "
+                                          : g.players()[static_cast<std::size_t>(mh.winner)].name + " wins hole " + number + ": "));
+    CHECK(words.ends_with(": " + mh.status));
+  }
+  CHECK(g.match_hole_words(s.match->holes.size()).empty());
 }
 
 TEST_CASE("gimmes and auto-putt: conceded putts count one stroke, auto-putts count what the physics holes", "[modes][golf][formats]") {

@@ -650,6 +650,14 @@ TEST_CASE("the window's round resumes from a save's turns, a finished one on its
   CHECK(resumed.group().to_play() == played.to_play());
   CHECK(resumed.player() == played.to_play());
   for (int p = 0; p < 2; ++p) CHECK((resumed.group().round(p).ball() - played.round(p).ball()).norm() == 0.0);
+  // Resumed in the middle of a hole, play goes on from the ball: no flyover of a hole begun.
+  setup.flyover = true;
+  REQUIRE(played.hole_index() == 0);
+  CHECK(GolfPlay(test::assets(), first_hole(2), setup).stage() == GolfPlay::Stage::Aiming);
+  // Resumed at a hole's first stroke (here the round's start), its flyover is shown.
+  setup.resume.clear();
+  CHECK(GolfPlay(test::assets(), first_hole(2), setup).stage() == GolfPlay::Stage::Flyover);
+  setup.flyover = false;
   while (!played.finished()) played.play_bot();
   setup.resume = played.events();
   setup.flyover = true;

@@ -299,7 +299,7 @@ std::vector<Metric> build() {
     const std::string t = fixed(r.impact.mu_grip, 3);
     // Short enough for the launch-monitor panel's column (the tuning panel says it whole).
     if (r.impact.mu_grip == 0.0) return t + " (mu: no effect)";
-    return t + (r.impact.mu >= r.impact.mu_grip ? " (grips: no effect)" : " (slides first: mu matters)");
+    return t + (r.impact.mu >= r.impact.mu_grip ? " (grips: no effect)" : " (slides: mu matters)");
   }));
   m.push_back(text("impulse", "Impulse n / t", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!struck(r)) return std::nullopt;

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <optional>
 #include <ostream>
@@ -20,6 +19,7 @@
 #include "game/ui/cage_people.hpp"
 #include "game/ui/pitch_words.hpp"
 #include "game/ui/two_lines.hpp"
+#include "game/ui/wrapped_text.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -50,17 +50,6 @@ float stats_panel_right(int w) { return std::min(450.0f, 0.42f * static_cast<flo
 // middle lines), with the spray chart below it; the call's banner takes the sky on the other side.
 float stats_panel_left(bool batter_left, int w) {
   return batter_left ? 10.0f : static_cast<float>(w) - stats_panel_right(w);
-}
-
-// ImGui::TextDisabled that wraps at the panel's edge, as every line of the narrower panel must.
-void disabled_wrapped(const char* fmt, ...) IM_FMTARGS(1);
-void disabled_wrapped(const char* fmt, ...) {
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  va_list args;
-  va_start(args, fmt);
-  ImGui::TextWrappedV(fmt, args);
-  va_end(args);
-  ImGui::PopStyleColor();
 }
 
 // From behind the plate a little to the side away from the batter, so he stands at the

@@ -14,6 +14,7 @@
 #include "game/report/round_json.hpp"
 #include "game/ui/golf_draw.hpp"
 #include "game/ui/two_lines.hpp"
+#include "game/ui/wrapped_text.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -228,7 +229,10 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   const bool putting_view = !g.finished() &&
                             (play.stage() == GolfPlay::Stage::Aiming || play.stage() == GolfPlay::Stage::Swinging) &&
                             (play.round().lie() == "green" || play.round().to_pin() <= GolfUnits::kNear);
-  ImGui::SetNextWindowSize(ImVec2(putting_view ? 345.0f : 420.0f, 0), ImGuiCond_Always);
+  // In a small window (the game allows 640 px) at most 42 % of its width, so the golfer and
+  // the hole stay in view; its lines wrap instead.
+  const float most = std::max(280.0f, 0.42f * ImGui::GetIO().DisplaySize.x);
+  ImGui::SetNextWindowSize(ImVec2(std::min(putting_view ? 345.0f : 420.0f, most), 0), ImGuiCond_Always);
   ImGui::Begin("Play", nullptr, kFixed);
   const GolfPlay::Stage stage = play.stage();
   const bool in_air = stage == GolfPlay::Stage::Flying;
@@ -255,7 +259,7 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     // A putt never leaves the green: it rolls from the start.
     const bool putt = play.last_shot().trajectory.summary.rolled_only();
     ImGui::Text("%s: the ball is %s", shooter.c_str(), putt ? "rolling" : landed ? "running out" : "in the air");
-    ImGui::TextDisabled(putt ? "Enter: skip the roll" : "Enter: skip the flight");
+    disabled_wrapped(putt ? "Enter: skip the roll" : "Enter: skip the flight");
   } else if (settling) {
     // The ball has stopped: its result, before the next player's view.
     ImGui::Separator();
@@ -385,34 +389,34 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       // On the green the keys a putt needs, in one line: the panel stays clear of the golfer
       // the putting view frames under it; K/F1 adds the rest.
       // (The putting view's panel is narrow: each line under ~45 characters.)
-      ImGui::TextDisabled("Left/Right aim  Space putt  G read  B caddie");
-      ImGui::TextDisabled("Arrows: downhill, red steeper   K/F1 %s", all_keys ? "fewer" : "keys");
+      disabled_wrapped("Left/Right aim  Space putt  G read  B caddie");
+      disabled_wrapped("Arrows: downhill, red steeper   K/F1 %s", all_keys ? "fewer" : "keys");
       if (all_keys) {
-        ImGui::TextDisabled("M map  1-4 cameras (%s)  U units", camera_words(camera_mode));
-        ImGui::TextDisabled("S save  L latency  R replay  Esc pause");
-        ImGui::TextDisabled("Tab next mode");
+        disabled_wrapped("M map  1-4 cameras (%s)  U units", camera_words(camera_mode));
+        disabled_wrapped("S save  L latency  R replay  Esc pause");
+        disabled_wrapped("Tab next mode");
       }
-      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
+      if (g.options().format == GolfFormat::Match) disabled_wrapped("H: concede the hole (asks first)");
     } else if (play.human_turn() && all_keys && putting_view) {
       // A chip in the putting view: the narrow panel's lines, each under ~45 characters, and
       // three of them, so the panel ends above the golfer's head (Tab and Esc are the pause
       // menu's, L the full-swing view's keys).
-      ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
-      ImGui::TextDisabled("Space swing (3 clicks)  B caddie  M map");
-      ImGui::TextDisabled("1-4 cameras  U units  S save  R replay  K/F1");
-      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
+      disabled_wrapped("Up/Down club  Left/Right aim  C caddie's club");
+      disabled_wrapped("Space swing (3 clicks)  B caddie  M map");
+      disabled_wrapped("1-4 cameras  U units  S save  R replay  K/F1");
+      if (g.options().format == GolfFormat::Match) disabled_wrapped("H: concede the hole (asks first)");
     } else if (play.human_turn() && all_keys) {
-      ImGui::TextDisabled("Up/Down club  Left/Right aim  C caddie's club");
-      ImGui::TextDisabled("Space: swing (3 clicks; putts 2)  B: caddie plays");
-      ImGui::TextDisabled("M map  1-4 cameras (%s)  U units  S save  L latency", camera_words(camera_mode));
-      ImGui::TextDisabled("R replay  Esc cancel or pause  Tab next mode  K/F1 fewer");
-      if (g.options().format == GolfFormat::Match) ImGui::TextDisabled("H: concede the hole (asks first)");
+      disabled_wrapped("Up/Down club  Left/Right aim  C caddie's club");
+      disabled_wrapped("Space: swing (3 clicks; putts 2)  B: caddie plays");
+      disabled_wrapped("M map  1-4 cameras (%s)  U units  S save  L latency", camera_words(camera_mode));
+      disabled_wrapped("R replay  Esc cancel or pause  Tab next mode  K/F1 fewer");
+      if (g.options().format == GolfFormat::Match) disabled_wrapped("H: concede the hole (asks first)");
     } else if (play.human_turn()) {
       // Past the first hole the keys a stroke needs, in one line: the panel keeps to the
       // corner of the view (K brings the rest back).
-      ImGui::TextDisabled("Arrows club and aim  Space swing  B caddie  K/F1 keys");
+      disabled_wrapped("Arrows club and aim  Space swing  B caddie  K/F1 keys");
     } else {
-      ImGui::TextDisabled("Enter: let them play now");
+      disabled_wrapped("Enter: let them play now");
     }
   }
   // Each player's score so far against par.

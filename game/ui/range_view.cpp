@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "game/modes/golf/golfer.hpp"
@@ -85,25 +86,38 @@ void RangeView::draw_panel(int w, bool in_air) {
   const std::size_t shots = play_->session().shots().size();
   const Bag bag = play_->session().bag("you", in_air && shots > 0 ? shots - 1 : shots);
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(470, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(520, 0), ImGuiCond_Always);
   ImGui::Begin("Practice range", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::Text("Bag gapping: %d shots a club (%s speed)", play_->shots_per_club(), play_->skill().name.c_str());
   if (play_->shots_with_club() < play_->shots_per_club())
     ImGui::Text("Club: %s   shot %d of %d", club_name(play_->club()).c_str(), play_->shots_with_club() + 1, play_->shots_per_club());
   else  // back to a club already gapped: its row keeps counting, it is not shot 5 of 5 again
     ImGui::Text("Club: %s   %d shots, done (more add to its row)", club_name(play_->club()).c_str(), play_->shots_with_club());
-  if (ImGui::BeginTable("bag", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-    // "spread": the carries' standard deviation about their mean; "off line": how far from the
-    // target line the balls land, the root mean square (a one-sided miss is part of it).
-    // The club's column as wide as the longest name in the bag ("pitching wedge" read whole);
-    // the figures share the rest.
+  const std::size_t counted = in_air && shots > 0 ? shots - 1 : shots;
+  if (ImGui::BeginTable("bag", 7, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    // What a golfer gaps a bag by: carry and total, how far the carries spread, and which way
+    // the club misses ("6 L ± 9": the landings' mean left or right of the target line, and
+    // their standard deviation about it). The club's column as wide as the longest name in
+    // the bag ("pitching wedge" read whole); the figures share the rest.
     float club_width = ImGui::CalcTextSize("club").x;
     for (const auto& c : bag.clubs) club_width = std::max(club_width, ImGui::CalcTextSize(club_name(c.club).c_str()).x);
     ImGui::TableSetupColumn("club", ImGuiTableColumnFlags_WidthFixed, club_width);
-    for (const char* c : {"shots", "carry", "spread", "off line", "gap"}) ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("shots", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("shots").x);
+    for (const char* c : {"carry", "total", "spread", "side", "gap"}) ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableHeadersRow();
+    const double unit = units_.imperial ? 0.9144 : 1.0;
     for (std::size_t k = 0; k < bag.clubs.size(); ++k) {
       const BagClub& c = bag.clubs[k];
+      double side_sum = 0.0, side2 = 0.0;
+      int n = 0;
+      for (std::size_t i = 0; i < counted; ++i)
+        if (const RangeShot& s = play_->session().shots()[i]; s.club == c.club) {
+          side_sum += s.side;
+          side2 += s.side * s.side;
+          ++n;
+        }
+      const double mean_side = n > 0 ? side_sum / n : 0.0;
+      const double side_sd = n > 1 ? std::sqrt(std::max(0.0, (side2 - n * mean_side * mean_side) / (n - 1))) : 0.0;
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(club_name(c.club).c_str());
@@ -112,16 +126,23 @@ void RangeView::draw_panel(int w, bool in_air) {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(units_.distance(c.carry).c_str());
       ImGui::TableNextColumn();
+      ImGui::TextUnformatted(units_.distance(c.total).c_str());
+      ImGui::TableNextColumn();
       // One ball has no spread yet: a dash, not "± 0 yd".
       if (c.shots > 1) ImGui::Text("± %s", units_.distance(c.carry_sd).c_str());
       else ImGui::TextUnformatted("-");
       ImGui::TableNextColumn();
-      ImGui::Text("± %s", units_.distance(c.side_sd).c_str());
+      const long by = std::lround(std::abs(mean_side) / unit);
+      const std::string way = by == 0 ? "on line" : std::to_string(by) + (mean_side < 0.0 ? " L" : " R");
+      if (n > 1) ImGui::Text("%s ± %ld", way.c_str(), std::lround(side_sd / unit));
+      else ImGui::TextUnformatted(way.c_str());
       ImGui::TableNextColumn();
       if (k + 1 < bag.clubs.size()) ImGui::TextUnformatted(units_.distance(c.carry - bag.clubs[k + 1].carry).c_str());
     }
     ImGui::EndTable();
   }
+  ImGui::TextDisabled("spread: the carries' standard deviation; side: where it lands");
+  ImGui::TextDisabled("  on average, left (L) or right (R) of the line, ± its standard deviation");
   ImGui::TextDisabled("Space: swing (3 clicks)  B: a swing with your skill's errors");
   ImGui::TextDisabled("Up/Down club  Enter: skip the flight  S: save the bag  U: units");
   ImGui::TextDisabled("Esc: pause  Tab: next mode");

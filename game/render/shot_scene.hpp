@@ -125,6 +125,9 @@ class ShotScene {
   /// first hop a few feet out says nothing of it, and beside the label where it was fielded
   /// it reads as a second distance for one ball.
   void set_carry_label(bool shown) { carry_label_ = shown; }
+  /// Whether the golf stripes carry their numbers (on by default): a range whose flags say
+  /// their distances would show each twice, the numbers crowding the target area.
+  void set_stripe_numbers(bool shown) { stripe_numbers_ = shown; }
   /// Words before the carry's number ("landed 266 ft"): beside a second distance for the
   /// same ball (where a batted ball was fielded) a bare number does not say which is which.
   /// Empty (the default): the number alone, as a golf trail's ring reads.
@@ -179,6 +182,7 @@ class ShotScene {
   std::vector<GroundArrow> arrows_;
   std::optional<double> focus_;
   bool carry_label_ = true;
+  bool stripe_numbers_ = true;
   std::string carry_words_, rest_words_;
   std::optional<std::string> rest_label_;
 };

@@ -13,6 +13,7 @@
 #include "game/render/shot_scene.hpp"
 #include "game/render/shot_view.hpp"
 #include "game/ui/golf_draw.hpp"
+#include "game/ui/wrapped_text.hpp"
 #include "game/util/atomic_file.hpp"
 #include "physics/units.hpp"
 
@@ -141,8 +142,8 @@ void RangeView::draw_panel(int w, bool in_air) {
     }
     ImGui::EndTable();
   }
-  ImGui::TextDisabled("spread: the carries' standard deviation; side: where it lands");
-  ImGui::TextDisabled("  on average, left (L) or right (R) of the line, ± its standard deviation");
+  disabled_wrapped("spread: the carries' standard deviation; side: where it lands on average, left (L) or right (R) of the "
+                   "line, ± its standard deviation");
   ImGui::TextDisabled("Space: swing (3 clicks)  B: a swing with your skill's errors");
   ImGui::TextDisabled("Up/Down club  Enter: skip the flight  S: save the bag  U: units");
   ImGui::TextDisabled("Esc: pause  Tab: next mode");
@@ -172,6 +173,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
     si.tee = true;
     si.impactor_mesh = mesh;
     scene_ = std::make_unique<ShotScene>(si);
+    scene_->set_stripe_numbers(false);  // the flags say the distances (drawn below)
     scene_mesh_ = mesh;
     scene_imperial_ = units_.imperial;
     addressed_ = false;

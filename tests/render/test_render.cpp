@@ -321,12 +321,13 @@ TEST_CASE("a fly caught at the wall is labelled beside the fence's sign, never i
 TEST_CASE("a distance stripe at the flag gives up its number: a '50' under a 53 yd pin reads as the pin's", "[render]") {
   OffscreenContext context;
   const double yd = 0.9144;
-  const auto boxes_with_flag_at = [&](double flag_yd) {
+  const auto boxes_with_flag_at = [&](double flag_yd, bool numbers = true) {
     ShotSceneInput in;
     in.assets = &test::assets();
     in.world = &test_world("test_range.obj");
     in.flag = Vec3(flag_yd * yd, 0.0, 0.0);
     ShotScene scene(in);
+    scene.set_stripe_numbers(numbers);
     SyntheticShotSpec spec;
     spec.carry = 20.0;
     spec.apex = 6.0;
@@ -338,6 +339,8 @@ TEST_CASE("a distance stripe at the flag gives up its number: a '50' under a 53 
   };
   // Both pins leave one stripe (50 yd) to draw; 20 yd clear of the flag it keeps its number.
   CHECK(boxes_with_flag_at(53.0) + 1 == boxes_with_flag_at(70.0));
+  // A range, whose flags say their distances, turns the numbers off: none is written.
+  CHECK(boxes_with_flag_at(70.0, false) == boxes_with_flag_at(53.0));
 }
 
 TEST_CASE("a missing or broken shader names the file and the compiler log", "[render]") {

@@ -28,6 +28,19 @@ void play_out(GolfGroup& g) {
   }
 }
 
+// Each hole's words name its winner (or a half) and end on the match's status after it; a
+// hole not finished has none.
+void check_match_hole_words(const GolfGroup& g, const Standings& s) {
+  for (std::size_t h = 0; h < s.match->holes.size(); ++h) {
+    const MatchHole& mh = s.match->holes[h];
+    const std::string words = g.match_hole_words(h), number = std::to_string(g.course().holes[h].number);
+    CHECK(words.starts_with(mh.winner < 0 ? "Hole " + number + " halved: "
+                                          : g.players()[static_cast<std::size_t>(mh.winner)].name + " wins hole " + number + ": "));
+    CHECK(words.ends_with(": " + mh.status));
+  }
+  CHECK(g.match_hole_words(s.match->holes.size()).empty());
+}
+
 }  // namespace
 
 TEST_CASE("a 3-player stableford round: points from net strokes by Rule 21.1b, strokes by stroke index", "[modes][golf][formats]") {
@@ -183,15 +196,7 @@ TEST_CASE("a match decided with holes to play ends there; the card, the result a
   CHECK(s.holes == static_cast<std::size_t>(s.match->decided_after) + 1);
   CHECK(s.holes < 18);
   CHECK(s.match->result.find(" wins ") != std::string::npos);
-  // Each hole's words name its winner (or a half) and end on the match's status after it.
-  for (std::size_t h = 0; h < s.match->holes.size(); ++h) {
-    const MatchHole& mh = s.match->holes[h];
-    const std::string words = g.match_hole_words(h), number = std::to_string(g.course().holes[h].number);
-    CHECK(words.starts_with(mh.winner < 0 ? "Hole " + number + " halved: "
-                                          : g.players()[static_cast<std::size_t>(mh.winner)].name + " wins hole " + number + ": "));
-    CHECK(words.ends_with(": " + mh.status));
-  }
-  CHECK(g.match_hole_words(s.match->holes.size()).empty());
+  check_match_hole_words(g, s);
   CHECK(s.match->result.find('&') != std::string::npos);
   for (int p = 0; p < 2; ++p) {
     CHECK(s.players[static_cast<std::size_t>(p)].gross.size() == s.holes);
@@ -243,15 +248,7 @@ TEST_CASE("match play: a player who can no longer halve the hole picks it up ins
   const Standings s = standings(g);
   REQUIRE(s.match);
   CHECK(s.match->result.find(" wins ") != std::string::npos);
-  // Each hole's words name its winner (or a half) and end on the match's status after it.
-  for (std::size_t h = 0; h < s.match->holes.size(); ++h) {
-    const MatchHole& mh = s.match->holes[h];
-    const std::string words = g.match_hole_words(h), number = std::to_string(g.course().holes[h].number);
-    CHECK(words.starts_with(mh.winner < 0 ? "Hole " + number + " halved: "
-                                          : g.players()[static_cast<std::size_t>(mh.winner)].name + " wins hole " + number + ": "));
-    CHECK(words.ends_with(": " + mh.status));
-  }
-  CHECK(g.match_hole_words(s.match->holes.size()).empty());
+  check_match_hole_words(g, s);
 }
 
 TEST_CASE("gimmes and auto-putt: conceded putts count one stroke, auto-putts count what the physics holes", "[modes][golf][formats]") {

@@ -246,8 +246,14 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
                   setup.tees.empty() ? "own" : setup.tees.c_str(), setup.pin_set);
     else
       ImGui::Text("%s   %s play", g.course().name.c_str(), to_string(g.options().format));
-    ImGui::Text("Hole %d   Par %d   %s   Index %d", hole.number, hole.par, units.distance(hole.length()).c_str(),
-                hole.stroke_index);
+    // A gimme's reach, rounded down (0.6 m is "23 in", not the "2 ft" a 0.62 m putt also reads).
+    char gimme[40] = "";
+    if (const double m = g.options().gimme_m; m > 0.0) {
+      if (units.imperial) std::snprintf(gimme, sizeof gimme, "   gimme %.0f in", std::floor(m / 0.0254 + 1e-9));
+      else std::snprintf(gimme, sizeof gimme, "   gimme %.0f cm", std::floor(100.0 * m + 1e-9));
+    }
+    ImGui::Text("Hole %d   Par %d   %s   Index %d%s", hole.number, hole.par, units.distance(hole.length()).c_str(),
+                hole.stroke_index, gimme);
   }
   if (stage == GolfPlay::Stage::Flyover) {
     ImGui::Separator();

@@ -718,8 +718,8 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const Vec3 d = *m.flag_position - launch;
       return std::abs(d.dot(aim) - k * stripe) < 0.15 * stripe && std::abs(d.dot(across)) < half;
     };
+    if (!stripe_numbers_) written.clear();  // the stripes drawn above, without their numbers
     for (const auto& [k, on_line] : written) {
-      if (!stripe_numbers_) break;
       const std::string text = std::to_string(k * 50);
       if (past_a_gap(k) || beside_shot_label(k) || at_the_flag(k)) continue;
       const auto seen = camera.project(on_line, width, height);

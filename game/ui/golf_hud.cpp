@@ -283,8 +283,8 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     const double carry = stock ? stock->carry : 0.0;
     // The bag's carry (calm air, flat fairway) and this swing's from here: the wind, the lie.
     const std::string name = club_name(club);
-    const auto& plan = play.caddie_plan();
-    const bool part_swing = plan && plan->club == club && plan->meter.power < 0.97 && play.human_turn();
+    const std::optional<double> part = play.caddie_part_swing(club);
+    const bool part_swing = part && play.human_turn();
     if (club == "putter") ImGui::Text("Club: putter");
     else if (const std::optional<double> tree = play.tree_in_the_way(club))
       ImGui::TextWrapped("Club: %s (stock carry %s, a tree in the way at %s)", name.c_str(), units.distance(carry).c_str(),
@@ -312,19 +312,19 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     // 29 yd with a 78 yd wedge is not a full swing), and where it lands and stops (the club
     // line's figures are the full swing's, which a part wedge from 80 yd flies well past).
     if (part_swing) {
-      const double carries = play.carry_here(club, plan->meter.power), stops = play.stops_here(club, plan->meter.power);
+      const double carries = play.carry_here(club, *part), stops = play.stops_here(club, *part);
       const double longest = std::max(carries, stops);
       // Firmer than the pin's green mark (GolfBot::intend: where a short miss would finish on
       // worse ground, he swings a power spread harder): said, or the two marks read as a
       // contradiction.
       const auto pin = play.pin_power(club);
-      const bool past = pin && plan->meter.power > pin->power + 0.01 && stops > r.to_pin() + 1.0;
-      ImGui::TextWrapped("Caddie: a part swing, %.0f %% power (blue mark): carries %s, stops %s%s", 100.0 * plan->meter.power,
+      const bool past = pin && *part > pin->power + 0.01 && stops > r.to_pin() + 1.0;
+      ImGui::TextWrapped("Caddie: a part swing, %.0f %% power (blue mark): carries %s, stops %s%s", 100.0 * *part,
                          units.course(carries, longest).c_str(), units.course(stops, longest).c_str(),
                          past ? ", past the pin: a short one still gets there" : "");
     }
     // His club is not the one the distance asks for: say why, or the player takes the longer.
-    if (plan && plan->club == club && !play.caddie_passed_over().empty() && play.human_turn())
+    if (const auto& plan = play.caddie_plan(); plan && plan->club == club && !play.caddie_passed_over().empty() && play.human_turn())
       ImGui::TextWrapped("Caddie: not the %s: struck a little off, it finds the trees", club_name(play.caddie_passed_over()).c_str());
     if (club == "putter" && r.lie() == "green") {
       // On the green the aim in the read's words: how far beside the cup the line points.
@@ -708,9 +708,8 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       const char* last_marks = marks && !marks->putting() ? "; white, red: your last clicks" : "";
       // A part swing's bar climbs slower (MeterClock::part_swing_tempo: the blue mark takes
       // 0.6 s to reach): said before the swing, so the change of pace is not a surprise.
-      const auto& plan = play.caddie_plan();
-      const bool slowed = plan && plan->club == club && plan->meter.power < 0.97 &&
-                          MeterClock::part_swing_tempo(plan->meter.power) > MeterClock::tempo_for(false) + 1e-9;
+      const std::optional<double> part = play.caddie_part_swing(club);
+      const bool slowed = part && MeterClock::part_swing_tempo(*part) > MeterClock::tempo_for(false) + 1e-9;
       char before[240];
       std::snprintf(before, sizeof before, "%s: Space to swing (%s: perfect within %.0f ms%s)%s%s", club_name(club).c_str(),
                     to_string(play.setup().difficulty), perfect_window_ms(play.setup().difficulty),
@@ -723,8 +722,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   // swing, 36 % power" has a target.
   std::optional<double> caddie_power;
   if (!putting) {
-    if (const auto& plan = play.caddie_plan(); plan && plan->club == play.club() && plan->meter.power < 0.97)
-      caddie_power = plan->meter.power;
+    caddie_power = play.caddie_part_swing(play.club());
   } else if (const auto& read = play.putt_read()) {
     caddie_power = std::min(read->power, MeterBar::kHigh);
   }

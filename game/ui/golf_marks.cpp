@@ -180,8 +180,7 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
   // when they measured one).
   // The caddie's part swing with this club (a pitch, a chip) is drawn instead, with its own
   // spread: a full swing's ring 77 yd out says nothing of a 37 yd pitch.
-  const auto& plan = play.caddie_plan();
-  const double part = club != "putter" && plan && plan->club == club && plan->meter.power < 0.97 ? plan->meter.power : 1.0;
+  const double part = club != "putter" ? play.caddie_part_swing(club).value_or(1.0) : 1.0;
   const GolfBot::Stock* stock = part < 1.0 ? nullptr : play.caddie().stock_of(club);
   const double carry = club == "putter" ? r.to_pin() : play.carry_here(club, part);
   double spread = stock ? stock->spread : 0.0, side_spread = stock ? stock->side_spread : 0.0;

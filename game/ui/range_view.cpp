@@ -84,8 +84,10 @@ void RangeView::save_bag() {
 }
 
 void RangeView::draw_panel(int w, bool in_air) {
+  // The ball still in the air is left out until it lands.
   const std::size_t shots = play_->session().shots().size();
-  const Bag bag = play_->session().bag("you", in_air && shots > 0 ? shots - 1 : shots);
+  const std::size_t counted = in_air && shots > 0 ? shots - 1 : shots;
+  const Bag bag = play_->session().bag("you", counted);
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(520, 0), ImGuiCond_Always);
   ImGui::Begin("Practice range", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
@@ -94,7 +96,6 @@ void RangeView::draw_panel(int w, bool in_air) {
     ImGui::Text("Club: %s   shot %d of %d", club_name(play_->club()).c_str(), play_->shots_with_club() + 1, play_->shots_per_club());
   else  // back to a club already gapped: its row keeps counting, it is not shot 5 of 5 again
     ImGui::Text("Club: %s   %d shots, done (more add to its row)", club_name(play_->club()).c_str(), play_->shots_with_club());
-  const std::size_t counted = in_air && shots > 0 ? shots - 1 : shots;
   if (ImGui::BeginTable("bag", 7, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
     // What a golfer gaps a bag by: carry and total, how far the carries spread, and which way
     // the club misses ("6 L ± 9": the landings' mean left or right of the target line, and
@@ -109,16 +110,7 @@ void RangeView::draw_panel(int w, bool in_air) {
     const double unit = units_.imperial ? 0.9144 : 1.0;
     for (std::size_t k = 0; k < bag.clubs.size(); ++k) {
       const BagClub& c = bag.clubs[k];
-      double side_sum = 0.0, side2 = 0.0;
-      int n = 0;
-      for (std::size_t i = 0; i < counted; ++i)
-        if (const RangeShot& s = play_->session().shots()[i]; s.club == c.club) {
-          side_sum += s.side;
-          side2 += s.side * s.side;
-          ++n;
-        }
-      const double mean_side = n > 0 ? side_sum / n : 0.0;
-      const double side_sd = n > 1 ? std::sqrt(std::max(0.0, (side2 - n * mean_side * mean_side) / (n - 1))) : 0.0;
+      const RangeSession::SideMiss miss = play_->session().side_miss(c.club, counted);
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(club_name(c.club).c_str());
@@ -133,9 +125,9 @@ void RangeView::draw_panel(int w, bool in_air) {
       if (c.shots > 1) ImGui::Text("± %s", units_.distance(c.carry_sd).c_str());
       else ImGui::TextUnformatted("-");
       ImGui::TableNextColumn();
-      const long by = std::lround(std::abs(mean_side) / unit);
-      const std::string way = by == 0 ? "on line" : std::to_string(by) + (mean_side < 0.0 ? " L" : " R");
-      if (n > 1) ImGui::Text("%s ± %ld", way.c_str(), std::lround(side_sd / unit));
+      const long by = std::lround(std::abs(miss.mean) / unit);
+      const std::string way = by == 0 ? "on line" : std::to_string(by) + (miss.mean < 0.0 ? " L" : " R");
+      if (miss.shots > 1) ImGui::Text("%s ± %ld", way.c_str(), std::lround(miss.sd / unit));
       else ImGui::TextUnformatted(way.c_str());
       ImGui::TableNextColumn();
       if (k + 1 < bag.clubs.size()) ImGui::TextUnformatted(units_.distance(c.carry - bag.clubs[k + 1].carry).c_str());

@@ -63,6 +63,14 @@ class GolfPlay {
   /// The caddie's stroke from here as he chose the club at the turn's start (C chooses
   /// again): its club and, for a part swing, its power. None on the green or once over.
   const std::optional<StrokeInput>& caddie_plan() const { return caddie_plan_; }
+  /// The power of the caddie's part swing when he plans one with `club` (under
+  /// kPartSwingShown of a full swing), else none: what the panel, the meter's blue mark and
+  /// the map's ring show as his part swing.
+  std::optional<double> caddie_part_swing(const std::string& club) const {
+    if (caddie_plan_ && caddie_plan_->club == club && caddie_plan_->meter.power < kPartSwingShown) return caddie_plan_->meter.power;
+    return std::nullopt;
+  }
+  static constexpr double kPartSwingShown = 0.97;
   /// The club the caddie would have given but for a tree in its way or in its misses' ("5-iron"
   /// where he hands the 7-iron), empty when the trees changed no club.
   const std::string& caddie_passed_over() const { return caddie_passed_over_; }

@@ -68,6 +68,21 @@ Bag RangeSession::bag(const std::string& player, std::size_t first) const {
   return b;
 }
 
+RangeSession::SideMiss RangeSession::side_miss(const std::string& club, std::size_t first) const {
+  SideMiss m;
+  double sum = 0.0, sum2 = 0.0;
+  for (std::size_t i = 0; i < std::min(first, shots_.size()); ++i)
+    if (shots_[i].club == club) {
+      sum += shots_[i].side;
+      sum2 += shots_[i].side * shots_[i].side;
+      ++m.shots;
+    }
+  if (m.shots == 0) return m;
+  m.mean = sum / m.shots;
+  if (m.shots > 1) m.sd = std::sqrt(std::max(0.0, (sum2 - m.shots * m.mean * m.mean) / (m.shots - 1)));
+  return m;
+}
+
 Bag gap_bag(const Assets& assets, const GolferSkill& skill, int shots, std::uint64_t seed) {
   if (shots < 1 || shots > 100) throw InputError("--shots " + std::to_string(shots) + " is out of range (allowed [1, 100])");
   RangeSession range(assets, skill);

@@ -30,6 +30,14 @@ class RangeSession {
   /// deviation; 0 for a single shot), the shot count. Of the first `first` shots only: a
   /// view leaves out the ball still in the air, whose carry it has not shown yet.
   Bag bag(const std::string& player, std::size_t first = std::numeric_limits<std::size_t>::max()) const;
+  /// Which way `club` misses, over the first `first` shots: the landings' mean side of the
+  /// target line (m, + right) and their sample standard deviation about it (0 under two).
+  struct SideMiss {
+    double mean = 0.0;
+    double sd = 0.0;
+    int shots = 0;
+  };
+  SideMiss side_miss(const std::string& club, std::size_t first = std::numeric_limits<std::size_t>::max()) const;
 
  private:
   const Assets* assets_;  // a pointer: a session is assignable (a new session)

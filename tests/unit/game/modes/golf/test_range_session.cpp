@@ -34,6 +34,18 @@ TEST_CASE("a bag-gapping session: per club mean and spread, longest first, the g
   const double a = range.shots()[0].carry, b = range.shots()[1].carry;
   CHECK(two.clubs[0].carry == Approx(0.5 * (a + b)));
   CHECK(two.clubs[0].carry_sd == Approx(std::abs(a - b) / std::sqrt(2.0)));
+  // Which way it misses: a late third click pushes right, an early one pulls left; the mean
+  // side and the spread about it are the shots', the first one alone has no spread.
+  range.hit("6-iron", MeterInput{1.0, 40.0});
+  range.hit("6-iron", MeterInput{1.0, -10.0});
+  const double l = range.shots()[2].side, m = range.shots()[3].side;
+  const RangeSession::SideMiss miss = range.side_miss("6-iron");
+  CHECK(miss.shots == 2);
+  CHECK(miss.mean == Approx(0.5 * (l + m)));
+  CHECK(miss.sd == Approx(std::abs(l - m) / std::sqrt(2.0)));
+  CHECK(range.side_miss("6-iron", 3).sd == 0.0);
+  CHECK(range.side_miss("6-iron", 3).mean == Approx(l));
+  CHECK(range.side_miss("driver").shots == 0);
   CHECK_THROWS_AS(range.hit("putter", MeterInput{}), InputError);
 }
 

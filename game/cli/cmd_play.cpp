@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "game/app/mode_registry.hpp"
 #include "game/app/play_app.hpp"
@@ -45,7 +46,8 @@ RunFn setup_play(CLI::App& sub) {
   window_only.push_back(sub.add_option("--format", o->format, "golf: stroke (default), match (one bot), stableford or skins"));
   window_only.push_back(sub.add_option("--human", o->humans, "golf: a friend at the same keys (hot seat), by name; repeat for up to 3"));
   window_only.push_back(sub.add_option("--handicap", o->handicaps, "golf: course handicaps 0..54, yours first, then each friend's (--human) and each bot's"));
-  window_only.push_back(sub.add_option("--gimme", o->gimme, "golf: putts this close (m) are conceded, 0..3 (default 0.6 in match play, else off)"));
+  window_only.push_back(sub.add_option("--gimme", o->gimme, "golf: putts this close (m) are conceded, 0..3 (default 0.6 in match play, else off)")
+      ->check(finite_range(GolfOptions::kGimme.min, GolfOptions::kGimme.max)));
   window_only.push_back(sub.add_flag("--auto-putt", o->auto_putt, "golf: your putts are played for you, with your skill"));
   window_only.push_back(sub.add_option("--difficulty", o->difficulty, "golf: the meter's perfect window: easy (25 ms), standard (10 ms, default), pro (0); baseball: the pitch's pace, easy 0.3 of real time, standard 0.5, pro real time"));
   window_only.push_back(sub.add_flag("--no-flyover", [o](std::int64_t) { o->flyover = false; }, "golf: no flyover as a hole opens"));
@@ -60,7 +62,13 @@ RunFn setup_play(CLI::App& sub) {
   window_only.push_back(sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(CLI::Range(1, 1000)));
   window_only.push_back(sub.add_option("--seed", o->seed, "the session's winds, bot and caddie swings and pitches, 1..2^64-1 (default: a fresh draw, printed)")
       ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max())));
-  return [o, window_only](const Assets& assets) -> int {
+  // The save holds the round's course, players, format and options: a flag that would set one
+  // of them again is refused with --resume, not silently dropped.
+  std::vector<const CLI::Option*> set_by_save;
+  for (const char* name : {"--course", "--holes", "--tees", "--pins", "--bot", "--format", "--human", "--handicap", "--gimme",
+                           "--auto-putt", "--bag"})
+    set_by_save.push_back(sub.get_option(name));
+  return [o, window_only, set_by_save](const Assets& assets) -> int {
     check_play_mode(assets, *o);  // first: an unknown mode is that, with or without a display
     if (!o->screenshot.empty()) check_png_output(o->screenshot, "--screenshot");  // before the frames run
     // The golf options are checked now, not when Tab first opens the golf mode.
@@ -84,7 +92,11 @@ RunFn setup_play(CLI::App& sub) {
                        " players (yours first, then each friend's and each bot's)");
     for (const int hc : o->handicaps)
       if (hc < 0 || hc > kMaxHandicap) throw InputError("--handicap " + std::to_string(hc) + " is out of range (allowed [0, 54])");
-    check_range("--gimme", o->gimme < 0.0 ? 0.0 : o->gimme, GolfOptions::kGimme, "m");
+    if (!o->resume.empty())
+      for (const CLI::Option* opt : set_by_save)
+        if (opt->count() > 0)
+          throw InputError("--resume: the saved round sets its course, players, format and options; " + opt->get_name() +
+                           " cannot change them");
     // The range writes the bag (S): there the file may not exist yet.
     if (!o->bag.empty() && (o->mode != "range" || std::filesystem::exists(o->bag))) load_bag(assets, o->bag, golfer_skill_names());
     if (!o->resume.empty()) resume_round(assets, read_round_save(o->resume));  // its turns replay, or it is named now

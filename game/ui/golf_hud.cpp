@@ -590,7 +590,16 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   const double shown = bar.shown;
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   char label[256];
-  if (putting) {
+  if (putting && !play.putt_guide()) {
+    // A putter chosen far from the cup: no roll table this far out, so no scale nor marks.
+    const std::string reach = units.imperial ? std::to_string(std::lround(GolfPlay::kPuttGuideReach / 0.3048)) + " ft"
+                                             : std::to_string(std::lround(GolfPlay::kPuttGuideReach)) + " m";
+    if (meter)
+      std::snprintf(label, sizeof label, "putt: %.0f %%   Esc: cancel", 100.0 * shown);
+    else
+      std::snprintf(label, sizeof label, "putt: cup %s, beyond the putt guide (inside %s)   Space: putt   Up/Down club",
+                    units.course(play.round().to_pin()).c_str(), reach.c_str());
+  } else if (putting) {
     // The putt preview: how far each power rolls on a flat green of this speed.
     // A tick every 5 ft (2 m); labels at the same round lengths on every green, spaced as the
     // roll grows with the square of the stroke (the short putts' ticks stand apart, the long

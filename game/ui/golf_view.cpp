@@ -563,11 +563,14 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   const bool flying = stage == GolfPlay::Stage::Flying;
   // The ball's rest stays on screen a moment before the next player's view.
   // (A hole's end shows its card at once: the card stands over the green it was played to.)
-  const bool settling = stage == GolfPlay::Stage::Aiming && flight_shown_ && in.now - play_->landed_at() < kSettle;
+  const bool settling = stage == GolfPlay::Stage::Aiming && flight_shown_ && play_->last_shot().trajectory.samples.size() >= 2 &&
+                        in.now - play_->landed_at() < kSettle;
   const bool addressing = !settling && (stage == GolfPlay::Stage::Aiming || stage == GolfPlay::Stage::Swinging);
   const bool flyover = stage == GolfPlay::Stage::Flyover;
   const bool over = !settling && (stage == GolfPlay::Stage::HoleOver || stage == GolfPlay::Stage::RoundOver);
   if (flying && flight_struck_ != play_->struck_at()) flight_shown_ = false;
+  // A round resumed already over has drawn no scene yet: its last green.
+  if (over && !scene_) ensure_scene(assets_.equipment().club_info_of("putter").mesh);
   if (addressing || flyover) {
     ensure_scene(assets_.equipment().club_info_of(play_->club()).mesh);
     if (scene_) {

@@ -104,6 +104,9 @@ expect_bad "a newline in a value" 'swing.speed=113mph\n' -- shot golf/driver --s
 expect_bad "usage error on one line" "--world|run with --help" -- flight --ball-speed 160mph --launch-angle 10deg --spin 2500rpm --world ""
 [ "$(wc -l < "$tmp/err")" = 1 ] || fail "a usage error takes $(wc -l < "$tmp/err") lines"
 expect_bad "play's game options headless" "--mode needs the game window" -- play --mode golf
+expect_bad "play: a negative gimme" "--gimme|-1" -- play --mode golf --gimme -1
+expect_bad "play: a resumed round's course set again" "--resume|--course cannot change" -- play --mode golf --resume "$tmp/none.json" --course links
+expect_bad "play: a resumed round's bots set again" "--resume|--bot cannot change" -- play --mode golf --resume "$tmp/none.json" --bot tour
 # A clip too large to draw is refused before anything is drawn or written, the image included.
 expect_bad "render: a clip of hours" "--video|pixels|lower --fps" -- render golf/driver -o "$tmp/big.png" --video "$tmp/big.mp4" --width 8192 --height 8192 --fps 240 --slow-motion 1000
 [ ! -e "$tmp/big.png" ] && [ ! -e "$tmp/big.mp4" ] || fail "render wrote part of a refused clip"

@@ -63,6 +63,8 @@ GolfPlay::GolfPlay(const Assets& assets, Course course, GolfSetup setup)
   begin_turn(0.0);
   if (group_.finished()) {
     stage_ = Stage::RoundOver;  // a saved round that was already over: its final card
+    // ... over the green of its last hole, which the header names.
+    round_hole_ = std::min(group_.hole_index(), course_.holes.size()) - 1;
   } else if (setup_.flyover && group_.events().size() <= group_.hole_first_event(group_.hole_index())) {
     // A round resumed in the middle of a hole goes on from the ball: its flyover was seen.
     stage_ = Stage::Flyover;
@@ -712,6 +714,7 @@ void GolfPlay::apply(const Intent& in) {
 void GolfPlay::new_round(double t) {
   group_ = GolfGroup(assets_, course_, setup_.players, setup_.options);
   last_record_ = StrokeRecord{};
+  last_ = ShotResult{};
   own_last_.clear();
   restarts_.clear();
   pending_message_.clear();
@@ -755,6 +758,8 @@ void GolfPlay::restart_hole(double t) {
   group_.replay(before);
   meter_.reset();
   last_record_ = StrokeRecord{};
+  last_ = ShotResult{};  // the strokes thrown away are not there to replay
+  struck_hole_.reset();
   own_last_.clear();
   pending_message_.clear();
   landed_at_ = t;

@@ -183,6 +183,9 @@ class GolfPlay {
   const std::string& putt_crosses() const { return putt_crosses_; }
   /// The preview is offered this near the cup (m): past it nobody putts.
   static constexpr double kPuttGuideReach = 40.0;
+  /// The putt preview (flat_roll and its marks) is offered for this turn: a human's, with the
+  /// ball within kPuttGuideReach of the cup.
+  bool putt_guide() const { return !roll_table_.empty(); }
   /// A square swing of `club` at `power` (full by default) along the aim from where the ball
   /// lies, in this hole's wind and off this lie: its carry (m), from the same physics as the
   /// stroke; the bag's carries are calm air on flat fairway.

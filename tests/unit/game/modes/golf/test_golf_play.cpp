@@ -252,6 +252,9 @@ TEST_CASE("restarting a hole puts the round back where the hole began", "[modes]
   CHECK(play.round().card().front().strokes == hole1);
   CHECK((play.round().ball() - tee).norm() == 0.0);
   CHECK(play.stage() == GolfPlay::Stage::Aiming);
+  // The stroke thrown away is not there to replay (R would show it on a hole begun again).
+  CHECK(play.last_shot().trajectory.samples.empty());
+  CHECK_FALSE(play.last_shot_on_hole_shown());
   // The card says so (R): the strokes thrown away are gone, so a mulligan is not hidden.
   CHECK(play.restarts(1) == 1);
   CHECK(play.restarts(0) == 0);
@@ -441,6 +444,7 @@ TEST_CASE("putting preview from off the green: the slower grass first makes the 
   const double to_cup = play.round().to_pin();
   // The preview is offered off the green too, and the putt plays longer than its distance:
   // fairway grass slows a roll more than the green.
+  CHECK(play.putt_guide());
   CHECK(play.flat_roll(1.0) > 10.0);
   CHECK(play.putt_crosses() == "fairway");
   CHECK(play.putt_plays_as() > to_cup * 1.05);
@@ -467,6 +471,7 @@ TEST_CASE("the meter's pin mark is a flown stroke's power, nearer the pin than t
   const Course course = first_hole();
   GolfPlay tee(test::assets(), course, solo("scratch"));
   const double to_pin = tee.round().to_pin();
+  CHECK_FALSE(tee.putt_guide());  // a putter chosen on the tee gets no roll scale: nobody putts 300 m
   int found = 0;
   for (const char* club : {"5-iron", "6-iron", "7-iron", "8-iron"}) {
     CAPTURE(club);
@@ -663,6 +668,7 @@ TEST_CASE("the window's round resumes from a save's turns, a finished one on its
   setup.flyover = true;
   GolfPlay over(test::assets(), first_hole(2), setup);
   CHECK(over.stage() == GolfPlay::Stage::RoundOver);
+  CHECK(over.hole_shown() == 1);  // the card stands over the last green, not the first tee
 }
 
 TEST_CASE("restart during the round's last flight restarts the last hole, not past the end", "[modes][golf]") {

@@ -308,13 +308,19 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
   }
   dl->PopClipRect();
   dl->AddText(ImVec2(x0 + 6, y0 + 4), IM_COL32(255, 255, 255, 255), "spray chart");
-  // The key to the dots, under the title: each colour with its scorer's abbreviation.
+  // The key to the dots, under the title: each colour with its scorer's abbreviation, on as
+  // many lines as the chart's width needs (a small window's chart is narrower than the key).
   float kx = x0 + 8.0f;
-  const float ky = y0 + 8.0f + ImGui::GetTextLineHeight();
+  float ky = y0 + 8.0f + ImGui::GetTextLineHeight();
   const auto key_entry = [&](ImU32 colour, const char* word) {
+    const float width = 9.0f + ImGui::CalcTextSize(word).x;
+    if (kx > x0 + 8.0f && kx + width > x0 + size - 4.0f) {
+      kx = x0 + 8.0f;
+      ky += ImGui::GetTextLineHeight() + 2.0f;
+    }
     dl->AddCircleFilled(ImVec2(kx + 3.0f, ky + 0.5f * ImGui::GetTextLineHeight()), 4.0f, colour);
     dl->AddText(ImVec2(kx + 9.0f, ky), IM_COL32(255, 255, 255, 255), word);
-    kx += 14.0f + ImGui::CalcTextSize(word).x;
+    kx += width + 5.0f;
   };
   for (const SprayKey& k : kSprayKey) key_entry(k.colour, k.word);
   key_entry(kSprayOut, "out");

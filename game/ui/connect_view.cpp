@@ -11,6 +11,7 @@
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
 #include "game/render/shot_view.hpp"
+#include "game/ui/wrapped_text.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -52,25 +53,25 @@ void draw_panel(const ConnectServer& server, const ConnectView& v, const std::st
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Always);
   ImGui::Begin("Launch monitor", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  ImGui::Text("Open Connect v1 on %s:%d", bind.c_str(), server.port());
+  ImGui::TextWrapped("Open Connect v1 on %s:%d", bind.c_str(), server.port());
   // While the last ball moves the panel shows that stroke; the next (hole, lie, distance,
   // club) once it stops, as a golfer reads the result when the ball comes to rest.
   const bool moving = v.last && v.last->result && v.replay.playing && v.replay.time < duration(v.last->result->trajectory);
   if (moving) {
-    ImGui::Text("The ball is %s   shots: %d", v.replay.time < v.last->result->trajectory.summary.hang_time_s ? "in the air" : "running out",
+    ImGui::TextWrapped("The ball is %s   shots: %d", v.replay.time < v.last->result->trajectory.summary.hang_time_s ? "in the air" : "running out",
                 server.shots());
   } else {
     ImGui::TextWrapped("%s", server.table().where().c_str());
-    ImGui::Text("Club expected: %s   shots: %d", server.table().club().c_str(), server.shots());
+    ImGui::TextWrapped("Club expected: %s   shots: %d", server.table().club().c_str(), server.shots());
   }
   if (!v.last) {
-    ImGui::TextDisabled("Point your launch monitor's GSPro connector here and hit a shot.");
+    disabled_wrapped("Point your launch monitor's GSPro connector here and hit a shot.");
   } else {
     const nlohmann::json& j = v.last->line;
     const nlohmann::json& L = j["launch"];
     const nlohmann::json& F = j["flight"];
     ImGui::Separator();
-    ImGui::Text("Shot %d (%s)  %s", j.value("shot_number", 0), j.value("device", std::string()).c_str(),
+    ImGui::TextWrapped("Shot %d (%s)  %s", j.value("shot_number", 0), j.value("device", std::string()).c_str(),
                 j.value("club", std::string()).c_str());
     const bool model = j.contains("model");
     const nlohmann::json* M = model ? &j["model"]["launch"] : nullptr;
@@ -97,25 +98,25 @@ void draw_panel(const ConnectServer& server, const ConnectView& v, const std::st
     const double side = j.value("side_m", F["lateral_m"].get<double>());
     const bool landed = !moving || v.replay.time >= v.last->result->trajectory.summary.hang_time_s;
     if (landed && moving)
-      ImGui::Text("Carry %.1f yd   %.1f yd %s", m_to_yd(F["carry_m"].get<double>()), std::abs(m_to_yd(side)), side >= 0 ? "right" : "left");
+      ImGui::TextWrapped("Carry %.1f yd   %.1f yd %s", m_to_yd(F["carry_m"].get<double>()), std::abs(m_to_yd(side)), side >= 0 ? "right" : "left");
     else if (landed)
-      ImGui::Text("Carry %.1f yd   total %.1f yd   %.1f yd %s", m_to_yd(F["carry_m"].get<double>()),
+      ImGui::TextWrapped("Carry %.1f yd   total %.1f yd   %.1f yd %s", m_to_yd(F["carry_m"].get<double>()),
                   m_to_yd(F["total_m"].get<double>()), std::abs(m_to_yd(side)), side >= 0 ? "right" : "left");
     if (j.contains("hole") && !moving) {
       const std::string end = j["end"].get<std::string>();
       const char* words = end == "holed" ? "In the hole!" : end == "water" ? "In the water: penalty stroke"
                           : end == "out_of_bounds" ? "Out of bounds: stroke and distance" : "at rest";
-      ImGui::Text("Hole %d, stroke %d: %s, %.0f yd to the pin", j["hole"].get<int>(), j["hole_strokes"].get<int>(), words,
+      ImGui::TextWrapped("Hole %d, stroke %d: %s, %.0f yd to the pin", j["hole"].get<int>(), j["hole_strokes"].get<int>(), words,
                   m_to_yd(j["to_pin_m"].get<double>()));
-      if (j.value("picked_up", false)) ImGui::Text("Picked up at 10 strokes.");
+      if (j.value("picked_up", false)) ImGui::TextWrapped("Picked up at 10 strokes.");
       if (j.contains("next_hole"))
-        ImGui::Text("Next: hole %d, %s, %.0f yd (told to the device)", j["next_hole"].get<int>(),
+        ImGui::TextWrapped("Next: hole %d, %s, %.0f yd (told to the device)", j["next_hole"].get<int>(),
                     j["next_club"].get<std::string>().c_str(), m_to_yd(j["next_to_pin_m"].get<double>()));
     }
     if (j.value("round_over", false) && !moving)
-      ImGui::Text("Round over: %d strokes (par %d). A new round starts.", j["round_strokes"].get<int>(), j["round_par"].get<int>());
+      ImGui::TextWrapped("Round over: %d strokes (par %d). A new round starts.", j["round_strokes"].get<int>(), j["round_par"].get<int>());
   }
-  ImGui::TextDisabled("Space: replay the last shot   Esc: pause");
+  disabled_wrapped("Space: replay the last shot   Esc: pause");
   ImGui::End();
 }
 

@@ -87,7 +87,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final);
 /// `label`, when not empty, is written beside the flag's cloth (a range's yardage, a far
 /// pin's distance), or where that would cover one of `clear_of` (the image's own labels,
 /// Scene::label_boxes: a shot's carry reads first; a panel over the scene) beside the cup,
-/// else not at all.
+/// else not at all. The drawn pole leaves gaps over `clear_of`, and its cloth gives way
+/// to a box it would cover.
 void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool scene_has_flag = true, const std::string& label = {},
                        const std::vector<Eigen::Vector4f>& clear_of = {});
 /// The aim line from the ball (to the cup's distance and a metre on for a putt).

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "game/ui/clear_of.hpp"
 #include "game/ui/golf_draw.hpp"
 #include "physics/units.hpp"
 
@@ -14,6 +15,13 @@ namespace sweetspot {
 namespace {
 
 ImVec2 px(const Eigen::Vector2d& p) { return ImVec2(static_cast<float>(p(0)), static_cast<float>(p(1))); }
+
+// A line from a to b with gaps where it crosses any of `boxes`: a flagstick drawn over the
+// image must not strike through the image's own labels.
+void line_clear_of(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, float thickness, const std::vector<Eigen::Vector4f>& boxes) {
+  const auto at = [&](float t) { return ImVec2(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)); };
+  for (const auto& [t0, t1] : parts_clear_of({a.x, a.y}, {b.x, b.y}, boxes)) dl->AddLine(at(t0), at(t1), colour, thickness);
+}
 
 // A line on the ground through `points`, projected; parts behind the camera skipped.
 // `dashed`: every other segment only.
@@ -91,20 +99,18 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool sc
     // Its cloth does; its 25 mm pole is under 2 px wide until ~15 m away at 800 lines and
     // drops out of the raster, leaving the cloth afloat over the cup: drawn 2 px wide then.
     constexpr float kPoleDiameterOverHeight = static_cast<float>(0.025 / kFlagstickHeight);  // assets/meshes/flag.obj
-    if ((b.y - px(*top).y) * kPoleDiameterOverHeight < 2.0f) dl->AddLine(b, px(*top), IM_COL32(240, 240, 240, 255), 2.0f);
+    if ((b.y - px(*top).y) * kPoleDiameterOverHeight < 2.0f) line_clear_of(dl, b, px(*top), IM_COL32(240, 240, 240, 255), 2.0f, clear_of);
     // Its label still says where the pin is: a cloth blown edge-on down the line is a pole
     // alone at 100 yd.
   } else {
-    dl->AddLine(b, t, IM_COL32(240, 240, 240, 255), 2.0f);
-    dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));
+    line_clear_of(dl, b, t, IM_COL32(240, 240, 240, 255), 2.0f, clear_of);
+    // The cloth gives way to a label it would cover; the pole's top still marks the pin.
+    if (!overlaps_any({t.x, t.y}, {t.x + 0.7f * fh, t.y + fh}, clear_of))
+      dl->AddTriangleFilled(t, ImVec2(t.x + 0.7f * fh, t.y + 0.5f * fh), ImVec2(t.x, t.y + fh), IM_COL32(230, 40, 40, 255));
   }
   if (!label.empty()) {
     const ImVec2 size = ImGui::CalcTextSize(label.c_str());
-    const auto clear = [&](const ImVec2& at) {
-      for (const Eigen::Vector4f& o : clear_of)
-        if (at.x < o[2] && o[0] < at.x + size.x && at.y < o[3] && o[1] < at.y + size.y) return false;
-      return true;
-    };
+    const auto clear = [&](const ImVec2& at) { return !overlaps_any({at.x, at.y}, {at.x + size.x, at.y + size.y}, clear_of); };
     // Beside the cloth; else beside the cup, under the flag (a flag just below the play panel).
     for (const ImVec2 at : {ImVec2(t.x + 0.7f * fh + 3.0f, t.y), ImVec2(b.x + r + 3.0f, b.y - 0.5f * size.y)}) {
       if (!clear(at)) continue;

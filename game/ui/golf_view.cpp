@@ -688,7 +688,8 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     renderer.blit_to(0, w, h);
     const GolfRound& r = play_->round();
     // The cup of the hole on show: a holing putt's until its ball has dropped and settled.
-    if (flying || settling) draw_cup_and_flag(cam, play_->group().course().holes.at(play_->hole_shown()).pin, w, h);
+    if (flying || settling)
+      draw_cup_and_flag(cam, play_->group().course().holes.at(play_->hole_shown()).pin, w, h, true, {}, view.label_boxes);
     // Addressing a far pin, the flag says how far it is: a stripe's "250" drawn beside a pin
     // 395 yd away reads as the pin's.
     else if (!r.finished() && !over)

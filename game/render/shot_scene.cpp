@@ -580,13 +580,15 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     const auto shown = [&](double metres) {
       return m.golf ? format_golf_distance(metres, m.input.distance_unit, scale) : format_distance(metres, m.input.distance_unit);
     };
+    std::string carry_text;  // as written at the landing ring, if it is
     if (s.hang_time_s > 0 && !rolled_only && t >= s.hang_time_s - 1e-9) {
       const Vec3 lp = s.landing_position;
       const Vec3 g(lp.x(), ground_at(lp.x(), lp.z()) + 0.05, lp.z());
       const double r = px(g, m.style.marker_radius_px);
       append_ring(scene.ground_overlay, g, 0.65 * r, r, kLandingColor);
       if (carry_label_) {
-        shot_label(carry_words_.empty() ? shown(s.carry_m) : carry_words_ + " " + shown(s.carry_m), g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), g, kLandingColor);
+        carry_text = carry_words_.empty() ? shown(s.carry_m) : carry_words_ + " " + shown(s.carry_m);
+        shot_label(carry_text, g + cam_up * px(g, 14.0) - cam_right * px(g, 40.0), g, kLandingColor);
         shot_labels_at.push_back(g);
       }
     }
@@ -596,7 +598,9 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       const double h = px(g, 30.0);
       append_pin(scene.top_overlay, g, h, px(g, 2.5), cam_right, kRestColor);
       const std::string text = rest_label_.value_or(rest_words_.empty() ? shown(s.total_m) : rest_words_ + " " + shown(s.total_m));
-      if (!text.empty()) {
+      // A ball that stopped within the last figure of its carry would read the same number
+      // twice, a few pixels apart: the ring's label says it.
+      if (!text.empty() && text != carry_text) {
         shot_label(text, g + Vec3(0, h, 0) + cam_up * px(g, 6.0), g, kRestColor);
         shot_labels_at.push_back(g);
       }

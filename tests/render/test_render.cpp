@@ -343,6 +343,35 @@ TEST_CASE("a distance stripe at the flag gives up its number: a '50' under a 53 
   CHECK(boxes_with_flag_at(70.0, false) == boxes_with_flag_at(53.0));
 }
 
+TEST_CASE("a ball that stops within its carry's last figure is labelled once, at the landing ring", "[render]") {
+  OffscreenContext context;
+  const auto boxes_with_rest_past_landing = [&](double past_m) {
+    ShotSceneInput in;
+    in.assets = &test::assets();
+    in.world = &test_world("test_range.obj");
+    ShotScene scene(in);
+    SyntheticShotSpec spec;
+    spec.carry = 100.2;
+    spec.apex = 25.0;
+    spec.lateral = 0.0;
+    ShotTrajectory shot = synthetic_shot(spec);
+    // The ball runs out `past_m` beyond where it landed, and stops there.
+    auto& s = shot.summary;
+    s.rest_position = s.landing_position + Vec3(past_m, 0.0, 0.0);
+    s.total_m = std::hypot(s.rest_position.x(), s.rest_position.z());
+    shot.samples.back().position = s.rest_position;
+    const int w = 640, h = 360;
+    const double end = shot.samples.back().t;
+    scene.set_shot(shot, std::nullopt);
+    const Camera cam = scene.camera(CameraKind::Behind, end, w, h);
+    return scene.build(cam, end, w, h).label_boxes.size();
+  };
+  // 100.2 m carried, 100.8 m at rest: both read "110 yd"; the rest pin stands without a
+  // second "110 yd" beside the first. Ten metres on, the rest has its own figure (both clear of the
+  // stripes, whose numbers give way beside a shot's label).
+  CHECK(boxes_with_rest_past_landing(0.6) + 1 == boxes_with_rest_past_landing(10.0));
+}
+
 TEST_CASE("a missing or broken shader names the file and the compiler log", "[render]") {
   OffscreenContext context;
   const auto dir = std::filesystem::temp_directory_path() / "sweetspot_render_shader_test";

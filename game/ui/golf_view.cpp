@@ -126,6 +126,9 @@ class GolfView final : public ModeView {
   /// Draws the replay at mode time `now`; false once it has run its course.
   bool draw_replay(const ViewInput& in, Renderer& renderer);
   Camera address_camera() const;
+  /// The address camera moved sideways, in a window so small that the play panel reaches
+  /// down over the golfer, until he stands clear of it (w x h px).
+  Camera golfer_clear_of_panel(const Camera& c, int w, int h) const;
   Camera high_camera() const;
   Camera map_camera() const;
   Camera green_camera(bool from_pin) const;
@@ -380,6 +383,30 @@ Camera GolfView::address_camera() const {
   // A tree (or a bank) between the golfer and the camera would fill the view.
   if (r.finished()) return c;
   return clear_view_of(c, ball, *r.hole().world->world);
+}
+
+Camera GolfView::golfer_clear_of_panel(const Camera& c, int w, int h) const {
+  if (hud_box_[2] <= 0.0f) return c;  // no panel drawn yet
+  // The golfer stands about a metre left of the ball's line, his head ~1.7 m up and his
+  // trail elbow ~0.4 m beyond that: his image's left edge and top.
+  const Vec3 ball = play_->ball_centre(), aim = play_->aim_direction();
+  const Vec3 left(aim.z(), 0.0, -aim.x());
+  const Vec3 head = ball + 1.0 * left + Vec3(0.0, 1.7, 0.0);
+  const auto at = c.project(head, w, h);
+  if (!at) return c;
+  const double mpp = c.metres_per_pixel(head, h);
+  const double body_left = (*at)(0) - 0.4 / mpp, top = (*at)(1) - 0.15 / mpp;
+  // Only a panel that reaches below his head covers him; beside or above him it does not.
+  if (hud_box_[3] <= top || hud_box_[2] <= body_left) return c;
+  const double shift_px = std::min(hud_box_[2] + 12.0 - body_left, 0.3 * w);
+  // Turned left about the eye, the whole picture slides right alike (the aim line still runs
+  // up to the flag), as a camera operator frames a golfer off centre.
+  const double focal_px = 0.5 * h / std::tan(0.5 * c.fov_y);
+  const double turn = std::atan2(shift_px, focal_px);
+  const Vec3 look = c.target - c.eye;
+  Camera turned = c;
+  turned.target = c.eye + Eigen::AngleAxisd(turn, Vec3::UnitY()) * look;
+  return turned;
 }
 
 Camera GolfView::high_camera() const {
@@ -675,7 +702,10 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       else if (camera_ == 1 && flying && address_view_)
         cam = blend_cameras(*address_view_, cam, ease_in_out(std::clamp((t - kHoldAddress) / kLeaveAddress, 0.0, 1.0)));
     } else if (addressing) {
-      cam = camera_ == 2 ? high_camera() : camera_ == 3 ? map_camera() : camera_ == 4 ? green_camera(true) : address_camera();
+      cam = camera_ == 2   ? high_camera()
+            : camera_ == 3 ? map_camera()
+            : camera_ == 4 ? green_camera(true)
+                           : golfer_clear_of_panel(address_camera(), w, h);
       address_view_ = cam;
     } else {
       cam = green_camera(false);

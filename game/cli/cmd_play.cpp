@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "game/app/mode_registry.hpp"
@@ -92,6 +93,10 @@ RunFn setup_play(CLI::App& sub) {
                        " players (yours first, then each friend's and each bot's)");
     for (const int hc : o->handicaps)
       if (hc < 0 || hc > kMaxHandicap) throw InputError("--handicap " + std::to_string(hc) + " is out of range (allowed [0, 54])");
+    // Where S and F12 write is checked now, not when the player presses them mid-round.
+    if (!o->save.empty()) check_output_path(o->save, "--save");
+    if (std::error_code ec; !o->shots_dir.empty() && !std::filesystem::is_directory(o->shots_dir, ec))
+      throw InputError("--shots-dir " + o->shots_dir + ": no such folder");
     if (!o->resume.empty())
       for (const CLI::Option* opt : set_by_save)
         if (opt->count() > 0)

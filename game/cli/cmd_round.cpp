@@ -85,6 +85,12 @@ GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
   if (!o.resume.empty()) return resume_round(assets, read_round_save(o.resume));
   Course course = load_course(assets, o.course);
   set_up(course, o.setup);
+  // Stopping after the last hole (or past it) would save a finished round as one to go on with.
+  if (o.stop_after > 0 && static_cast<std::size_t>(o.stop_after) >= course.holes.size())
+    throw InputError("--stop-after " + std::to_string(o.stop_after) + ": " + course.name +
+                     (course.holes.size() < 2 ? std::string(" has one hole: its round cannot stop part way")
+                                              : " has " + std::to_string(course.holes.size()) + " holes (allowed [1, " +
+                                                    std::to_string(course.holes.size() - 1) + "])"));
   if (o.calm)
     for (CourseHole& h : course.holes) {
       h.wind_speed = 0.0;
@@ -219,7 +225,7 @@ int play_contest(const Assets& assets, const RoundOptions& o) {
 
 RunFn setup_round(CLI::App& sub) {
   auto o = std::make_shared<RoundOptions>();
-  sub.add_option("course", o->course, "a course of assets/courses (default national: 18 holes; national_3 its first three; links a generated three), a .toml file, or a directory from course import");
+  auto* course_arg = sub.add_option("course", o->course, "a course of assets/courses (default national: 18 holes; national_3 its first three; links a generated three), a .toml file, or a directory from course import");
   sub.add_option("--bot", o->bots, "a bot player of this skill: tour, scratch, amateur or beginner; repeat for up to 4 players (default one tour bot)")
       ->check(checked_by([](const std::string& t) { golfer_skill(t); }, "SKILL"));
   sub.add_option("--bag", o->bag, "the first player's measured bag (range --bag-out): their caddie's carries");
@@ -244,7 +250,7 @@ RunFn setup_round(CLI::App& sub) {
       ->check(CLI::Range(1, 18));
   sub.add_option("--resume", o->resume, "go on with a round written by --save (its players, format and options)");
   sub.add_option("--plot", o->plot, "also write the session's dispersion (carry vs side per club) to FILE.png");
-  return [o, balls, pins](const Assets& assets) -> int {
+  return [o, balls, pins, course_arg](const Assets& assets) -> int {
     if (o->mode != "stroke" && o->mode != "ctp" && o->mode != "long-drive")
       throw InputError("--mode " + o->mode + ": unknown mode (allowed: stroke, ctp, long-drive)");
     if (!o->swings.empty() && o->mode != "stroke")
@@ -257,6 +263,8 @@ RunFn setup_round(CLI::App& sub) {
                                o->calm || o->gimme >= 0.0 || o->mode != "stroke" || !o->bag.empty()))
       throw InputError("--resume: the saved round sets its players, format and options; give none of --bot, --handicap, "
                        "--format, --gimme, --calm, --swings, --mode, --bag");
+    if (!o->resume.empty() && (course_arg->count() > 0 || !o->setup.tees.empty() || pins->count() > 0))
+      throw InputError("--resume: the saved round sets its course, tees and pins; give no COURSE, --tees or --pins");
     if (o->calm && !o->save.empty()) throw InputError("--calm: a saved round keeps the course's winds; not with --save");
     if (!o->swings.empty() && !o->save.empty()) throw InputError("--save: a scripted round is replayed from its file; not with --swings");
     if (o->stop_after < 0 || o->stop_after > 18)

@@ -73,11 +73,15 @@ BallStriking ball_striking(const GolfRound& round) {
 }  // namespace
 
 nlohmann::json round_json(const GolfRound& round, const std::string& player, std::uint64_t seed) {
-  int total = 0;
-  for (const HoleCard* h : listed_holes(round)) total += h->strokes;
+  // The totals are those of the holes listed: a round stopped after two holes is par for two.
+  int total = 0, par = 0;
+  for (const HoleCard* h : listed_holes(round)) {
+    total += h->strokes;
+    par += h->par;
+  }
   const BallStriking b = ball_striking(round);
   return {{"course", round.course().name}, {"player", player}, {"seed", seed}, {"holes", holes_json(round)},
-          {"total_strokes", total}, {"total_par", round.total_par()}, {"fairways_hit", b.fairways_hit},
+          {"total_strokes", total}, {"total_par", par}, {"fairways_hit", b.fairways_hit},
           {"fairways", b.fairways}, {"greens_in_regulation", b.greens}};
 }
 
@@ -100,7 +104,9 @@ std::string round_table(const GolfRound& round, const std::string& player) {
     out += line;
     nine = Nine{};
   };
-  for (const HoleCard& h : round.card()) {
+  // The holes played (a round stopped after a hole has a card for the next, begun and empty).
+  for (const HoleCard* hp : listed_holes(round)) {
+    const HoleCard& h = *hp;
     par += h.par;
     strokes += h.strokes;
     putts += h.putts;
@@ -260,7 +266,9 @@ nlohmann::json group_json(const GolfGroup& g) {
             {"auto_putt", g.options().auto_putt},
             {"holes_info", winds},
             {"players", players},
-            {"total_par", g.course().par()},
+            // The par of the holes listed, as each player's to_par: a round stopped early is not
+            // measured against the whole course.
+            {"total_par", players.empty() ? g.course().par() : players[0]["total_strokes"].get<int>() - players[0]["to_par"].get<int>()},
             {"result", result_json(g, s)}};
   if (g.players().size() == 1) {
     j["player"] = g.players()[0].name;

@@ -110,8 +110,10 @@ constexpr ImU32 kSprayOut = IM_COL32(150, 150, 150, 255);
 
 // The HUD panel at the top left; returns its bottom edge (px), where the call goes below it.
 // `all_keys`: every key the cage takes, four lines; else the few a pitch needs, in one.
-// `pitch_by`: the pitch has reached the plate (its shape is then told).
-float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_by) {
+// `pitch_by`: the pitch has reached the plate (its shape is then told). `chart`: the spray
+// chart below the panel (not while the pause menu stands there); `chart_x` gets its left and
+// right edges (px) when it is drawn.
+float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_by, bool chart, std::optional<std::pair<float, float>>* chart_x) {
   ImGui::SetNextWindowPos(ImVec2(stats_panel_left(c.left_handed(), w), 10), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(stats_panel_right(w) - 10.0f, 0), ImGuiCond_Always);
   // Named for what is played in it (A switches): one window either way (the id after ###).
@@ -255,14 +257,19 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
   }
   const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
   ImGui::End();
+  // No chart over the pause menu, nor over the panel's own last lines where the window is
+  // too short for it below them (K shortens the panel and makes the room).
+  constexpr float kLeastChart = 120.0f;  // px: the title, two lines of key and the infield
+  if (!chart || static_cast<float>(h) - 36.0f - bottom - 8.0f < kLeastChart) return bottom;
 
   // The spray chart, bottom corner away from the batter (a right-handed batter stands left of
   // the plate as the camera sees him): home plate at the bottom, fair ground to ~150 m (490 ft)
   // down either line and ~200 m up the middle, so every fair ball in this park shows.
   // Below the panel on its side: smaller in a short window rather than over the panel's lines.
-  const float size = std::max(120.0f, std::min(220.0f, static_cast<float>(h) - 36.0f - bottom - 8.0f));
+  const float size = std::min(220.0f, static_cast<float>(h) - 36.0f - bottom - 8.0f);
   const float y0 = static_cast<float>(h) - size - 36.0f;
   const float x0 = c.left_handed() ? 12.0f : static_cast<float>(w) - size - 12.0f;
+  *chart_x = std::pair{x0, x0 + size};
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   // Opaque and framed: the field's own foul lines behind it must not read as the chart's.
   dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + size, y0 + size), IM_COL32(40, 90, 45, 255), 6.0f);
@@ -442,8 +449,9 @@ class CageView final : public ModeView {
       }
     }
     float panel_bottom = 0.0f;
+    std::optional<std::pair<float, float>> chart_x;  // the spray chart's left and right edges, if drawn
     if (!panels_hidden_) {
-      panel_bottom = draw_stats(c, w, h, all_keys(), pitch_by);
+      panel_bottom = draw_stats(c, w, h, all_keys(), pitch_by, !in.paused, &chart_x);
     } else {
       // One line says how to bring the panel back.
       ImGui::SetNextWindowPos(ImVec2(stats_panel_left(c.left_handed(), w), 10), ImGuiCond_Always);
@@ -475,8 +483,19 @@ class CageView final : public ModeView {
         beside = std::max(width(lines.first), width(lines.second)) <= room;
         if (beside) break;
       }
+      // Below the panel, the call keeps off the spray chart there: it takes the width beside it.
+      float below_from = 0.0f, below_to = static_cast<float>(w);
+      if (!beside && chart_x) {
+        if (c.left_handed()) below_from = chart_x->second + 8.0f;
+        else below_to = chart_x->first - 8.0f;
+        for (const float try_scale : {1.6f, 1.4f, 1.2f, 1.0f}) {
+          scale = try_scale;
+          const auto two = split_in_two_lines(call, [&](std::string_view t) { return banner_text_width(t, scale); });
+          if (std::max(banner_text_width(two.first, scale), banner_text_width(two.second, scale)) <= below_to - below_from - 40.0f) break;
+        }
+      }
       if (!beside) lines = split_in_two_lines(call, [&](std::string_view t) { return banner_text_width(t, scale); });
-      const float centre = beside ? 0.5f * (free_from + free_to) : 0.5f * static_cast<float>(w);
+      const float centre = beside ? 0.5f * (free_from + free_to) : 0.5f * (below_from + below_to);
       const float bottom = draw_banner(lines.first.c_str(), centre, beside ? 22.0f : panel_bottom + 14.0f, scale, lines.second.c_str());
       hud_bottom_ = std::max(hud_bottom_, static_cast<double>(bottom));
     }

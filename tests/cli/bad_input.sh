@@ -105,6 +105,8 @@ expect_bad "usage error on one line" "--world|run with --help" -- flight --ball-
 [ "$(wc -l < "$tmp/err")" = 1 ] || fail "a usage error takes $(wc -l < "$tmp/err") lines"
 expect_bad "play's game options headless" "--mode needs the game window" -- play --mode golf
 expect_bad "play: a negative gimme" "--gimme|-1" -- play --mode golf --gimme -1
+expect_bad "play: a save into a missing folder" "--save|does not exist" -- play --mode golf --save "$tmp/no/such/r.json"
+expect_bad "play: screenshots into a missing folder" "--shots-dir|no such folder" -- play --shots-dir "$tmp/no/such"
 expect_bad "play: a resumed round's course set again" "--resume|--course cannot change" -- play --mode golf --resume "$tmp/none.json" --course links
 expect_bad "play: a resumed round's bots set again" "--resume|--bot cannot change" -- play --mode golf --resume "$tmp/none.json" --bot tour
 # A clip too large to draw is refused before anything is drawn or written, the image included.

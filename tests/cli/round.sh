@@ -241,6 +241,18 @@ done
 cmp -s "$tmp/whole.json" "$tmp/resumed.json" || fail "resumed round differs from the whole round"
 set +e; msg=$("$bin" round --resume "$tmp/r.save" --bot tour 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q -- "--resume" <<<"$msg" || fail "resume with --bot: $rc $msg"
+set +e; msg=$("$bin" round national_3 --resume "$tmp/r.save" 2>&1); rc=$?; set -e
+[ $rc -eq 2 ] && grep -q -- "give no COURSE" <<<"$msg" || fail "resume with a course named: $rc $msg"
+set +e; msg=$("$bin" round national_3 --stop-after 3 --save "$tmp/s3.save" 2>&1); rc=$?; set -e
+[ $rc -eq 2 ] && grep -q "allowed \[1, 2\]" <<<"$msg" && [ ! -e "$tmp/s3.save" ] || fail "stop after the last hole: $rc $msg"
+# A card stopped after a hole lists that hole alone, and its par and to-par are that hole's.
+"$bin" round national_3 --seed 2 --stop-after 1 --save "$tmp/one.save" > "$tmp/one.txt"
+[ "$(grep -c '^[0-9]' "$tmp/one.txt")" = 1 ] || fail "a card stopped after hole 1 lists $(grep -c '^[0-9]' "$tmp/one.txt") holes: $(cat "$tmp/one.txt")"
+awk '/^total/ {p=$2} END {exit !(p==4)}' "$tmp/one.txt" || fail "a card stopped after hole 1 totals par $(cat "$tmp/one.txt")"
+"$bin" round national_3 --seed 2 --stop-after 1 --save "$tmp/one.save" --json | python3 -c '
+import json, sys
+j = json.load(sys.stdin)
+assert j["total_par"] == sum(h["par"] for h in j["holes"]) == 4, j["total_par"]' || fail "a stopped round's JSON total_par"
 set +e; msg=$("$bin" round links --bot tour --format match 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q "two players" <<<"$msg" && grep -q -- "--format match" <<<"$msg" && ! grep -q -- "--human" <<<"$msg" \
   || fail "match of one (names round's own flags, not play's --human): $rc $msg"

@@ -22,7 +22,7 @@ namespace {
 
 Course play_course(const Assets& assets, const PlayOptions& o) {
   Course course = load_course(assets, o.course);
-  set_up(course, o.course_setup);
+  set_up(course, o.course_setup, "--tees", "--pins");
   if (o.holes > 0 && static_cast<std::size_t>(o.holes) < course.holes.size()) course.holes.resize(static_cast<std::size_t>(o.holes));
   return course;
 }

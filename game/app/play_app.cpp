@@ -87,7 +87,7 @@ LoopStats run_window(const Assets& assets, const PlayOptions& given, std::ostrea
     golfer_skill(o.skill);
   } else if (o.mode == "golf") {
     Course c = load_course(assets, o.course);
-    set_up(c, o.course_setup);  // a tee set the course lacks is named before the window opens
+    set_up(c, o.course_setup, "--tees", "--pins");  // a tee set the course lacks is named before the window opens
     golfer_skill(o.skill);
   } else if (o.mode == "baseball") {
     assets.world("ballpark");

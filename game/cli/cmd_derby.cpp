@@ -102,7 +102,7 @@ RunFn setup_derby(CLI::App& sub) {
     if (mode != "derby" && mode != "at-bat" && mode != "practice" && mode != "game")
       throw InputError("--mode " + mode + ": unknown mode (allowed: derby, at-bat, practice, game)");
     if (mode != "game" && (innings->count() > 0 || games->count() > 0))
-      throw InputError("--innings, --games: only a game has innings (--mode game)");
+      throw InputError(std::string(innings->count() > 0 ? "--innings" : "--games") + ": only a game has innings and games (--mode game)");
     if (mode == "game") return run_game(assets, *o, outs->count() + swings->count() > 0);
     const bool known = mode == "derby" || mode == "at-bat" || mode == "practice";
     if (known && outs->count() > 0 && mode != "derby")
@@ -138,11 +138,16 @@ RunFn setup_derby(CLI::App& sub) {
         std::printf("%-10s %5.1f mph  %-15s  ", s.call.type.type.c_str(), mps_to_mph(s.call.type.speed), "taken");
       // A fair ball's play in a scorer's words says where it went ("Double to RF").
       const bool fair = s.result.contact && s.result.outcome != BattedOutcome::Foul;
+      // In a derby every fair ball short of a home run is an out: called so, with what it
+      // would have been in a game beside it.
+      const BattedOutcome oc = s.result.outcome;
+      const bool derby_out = o->session.mode == "derby" && fair &&
+                             (oc == BattedOutcome::Single || oc == BattedOutcome::Double || oc == BattedOutcome::Triple || oc == BattedOutcome::Error);
+      const std::string play = !fair ? std::string() : derby_out ? "(in a game: " + s.result.play.description + ")" : s.result.play.description;
       if (s.result.contact)
         std::printf("EV %5.1f mph LA %+5.1f deg  %5.0f ft  %s%s%s%s\n", mps_to_mph(s.result.shot.launch.ball_speed),
                     rad_to_deg(s.result.shot.launch.vertical_angle), m_to_ft(s.result.shot.trajectory.summary.carry_m),
-                    s.call_text.c_str(), s.result.barrel ? " (barrel)" : "", fair ? "  " : "",
-                    fair ? s.result.play.description.c_str() : "");
+                    derby_out ? "out" : s.call_text.c_str(), s.result.barrel ? " (barrel)" : "", fair ? "  " : "", play.c_str());
       else
         std::printf("%s\n", s.call_text.c_str());
     }

@@ -73,11 +73,19 @@ RunFn setup_play(CLI::App& sub) {
     check_play_mode(assets, *o);  // first: an unknown mode is that, with or without a display
     if (!o->screenshot.empty()) check_png_output(o->screenshot, "--screenshot");  // before the frames run
     // The golf options are checked now, not when Tab first opens the golf mode.
-    golf_format(o->format);
-    meter_difficulty(o->difficulty);
-    golfer_skill(o->skill);
+    // Each refusal names the flag it came from.
+    const auto as_flag = [](const char* flag, const auto& check) {
+      try {
+        check();
+      } catch (const InputError& e) {
+        throw InputError(std::string(flag) + ": " + e.what());
+      }
+    };
+    as_flag("--format", [&] { golf_format(o->format); });
+    as_flag("--difficulty", [&] { meter_difficulty(o->difficulty); });
+    as_flag("--skill", [&] { golfer_skill(o->skill); });
     for (const std::string& b : o->bots)
-      if (b != "none") golfer_skill(b);
+      if (b != "none") as_flag("--bot", [&] { golfer_skill(b); });
     std::size_t others = o->humans.size();
     for (const std::string& b : o->bots) others += b != "none";
     if (o->bots.empty() && o->humans.empty()) others = 1;  // the default bot

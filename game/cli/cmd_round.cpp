@@ -84,7 +84,7 @@ void give_bag(const Assets& assets, const RoundOptions& o, std::vector<GolfPlaye
 GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
   if (!o.resume.empty()) return resume_round(assets, read_round_save(o.resume));
   Course course = load_course(assets, o.course);
-  set_up(course, o.setup);
+  set_up(course, o.setup, "--tees", "--pins");
   // Stopping after the last hole (or past it) would save a finished round as one to go on with.
   if (o.stop_after > 0 && static_cast<std::size_t>(o.stop_after) >= course.holes.size())
     throw InputError("--stop-after " + std::to_string(o.stop_after) + ": " + course.name +
@@ -167,7 +167,7 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
 // the tee, each a fresh one-hole round.
 int play_contest(const Assets& assets, const RoundOptions& o) {
   Course course = load_course(assets, o.course);
-  set_up(course, o.setup);
+  set_up(course, o.setup, "--tees", "--pins");
   const bool ctp = o.mode == "ctp";
   auto by_length = [](const CourseHole& a, const CourseHole& b) { return a.length() < b.length(); };
   const CourseHole hole = ctp ? *std::min_element(course.holes.begin(), course.holes.end(), by_length)

@@ -194,14 +194,14 @@ std::vector<std::string> tee_set_names(const Course& course) {
   return out;
 }
 
-void set_up(Course& course, const CourseSetup& setup) {
-  check_range("pin set", setup.pin_set, CourseSetup::kPinSet, "");
+void set_up(Course& course, const CourseSetup& setup, const char* tees_key, const char* pins_key) {
+  check_range(pins_key, setup.pin_set, CourseSetup::kPinSet, "");
   if (!setup.tees.empty()) {
     const std::vector<std::string> names = tee_set_names(course);
     if (std::find(names.begin(), names.end(), setup.tees) == names.end()) {
       std::string list;
       for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-      throw InputError("tees: course '" + course.name + "' has no tee set '" + setup.tees + "' (allowed: " +
+      throw InputError(std::string(tees_key) + ": course '" + course.name + "' has no tee set '" + setup.tees + "' (allowed: " +
                        (list.empty() ? std::string("none: its holes have one tee each") : list) + ")");
     }
   }

@@ -78,7 +78,9 @@ Course load_course(const Assets& assets, std::string_view name_or_path);
 
 /// Moves every hole's tee and cup as `setup` says. Throws InputError naming the tee set when
 /// no hole has it (listing those the course has); a hole without it keeps its own tee.
-void set_up(Course& course, const CourseSetup& setup);
+/// A refusal names the setting by `tees_key` and `pins_key` (a save file's keys by default;
+/// the command line passes its flags).
+void set_up(Course& course, const CourseSetup& setup, const char* tees_key = "tees", const char* pins_key = "pin set");
 /// The tee sets of any hole of `course`, in the order first met.
 std::vector<std::string> tee_set_names(const Course& course);
 

@@ -150,6 +150,7 @@ nlohmann::json wind_json(const HoleWind& w) {
 std::string leaders_text(const GolfGroup& g, const Standings& s) {
   std::string names;
   for (int p : s.leaders) names += (names.empty() ? "" : ", ") + g.players()[static_cast<std::size_t>(p)].name;
+  if (s.leaders.empty()) return "no skins won";
   return (s.leaders.size() > 1 ? "tied: " : g.finished() ? "winner: " : "leader: ") + names;
 }
 

@@ -16,6 +16,7 @@
 #include "game/modes/replay.hpp"
 #include "game/render/renderer.hpp"
 #include "game/render/shot_scene.hpp"
+#include "game/rules/baseball_game.hpp"
 #include "game/ui/cage_people.hpp"
 #include "game/ui/pitch_words.hpp"
 #include "game/ui/two_lines.hpp"
@@ -538,7 +539,12 @@ void cage_report(const BattingCage& c, std::ostream& out) {
                   a.hit_by_pitch);
     out << line;
     if (const LiveInning::Board* b = c.board()) {
-      out << "; inning " << b->inning << ", " << b->outs << (b->outs == 1 ? " out" : " outs") << ", runs " << b->runs() << " (by inning:";
+      // Where the game stands, as the scoreboard says it: a side retired is the inning's end.
+      if (b->final) out << "; runs " << b->runs() << " (by inning:";
+      else if (b->side_retired) out << "; end of the " << ordinal(b->inning) << ", runs " << b->runs() << " (by inning:";
+      else
+        out << "; top of the " << ordinal(b->inning) << ", " << b->outs << (b->outs == 1 ? " out" : " outs") << ", runs " << b->runs()
+            << " (by inning:";
       for (const int r : b->runs_by_inning) out << " " << r;
       out << "), League " << b->their_runs() << " (by inning:";
       for (const int r : b->their_runs_by_inning) out << " " << r;

@@ -972,7 +972,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
   else if (final && s.holes > 0 && n > 1) {
     std::string names;
     for (int p : s.leaders) names += (names.empty() ? "" : ", ") + g.players()[static_cast<std::size_t>(p)].name;
-    ImGui::Text("%s: %s", s.leaders.size() > 1 ? "Tied" : "Winner", names.c_str());
+    if (s.leaders.empty()) ImGui::TextUnformatted("No skins won: every hole carried");
+    else ImGui::Text("%s: %s", s.leaders.size() > 1 ? "Tied" : "Winner", names.c_str());
   }
   ImGui::TextDisabled(final ? "N: a new round   Tab: next mode   Esc: menu (Q there quits)" : "Enter: next hole");
   ImGui::End();

@@ -70,4 +70,7 @@ j = json.load(sys.stdin); assert j["mode"] == "at-bat" and j["result"] and j["ba
 "$bin" derby --mode at-bat --seed 3 | head -1 | grep -q '^0-0 ' || fail "at-bat: no count before the first pitch"
 "$bin" derby --bot pro --seed 2 | grep -E ' (home_run|double|single|triple|out)' | grep -vqE ' to (LF|CF|RF|P|C|1B|2B|3B|SS)' \
   && fail "a derby's fair ball without its direction"
+# In a derby a fair ball short of the fence is an out, whatever it would have been in a game.
+"$bin" derby --seed 3 | grep -qE 'ft  (single|double|triple)' && fail "a derby's hit called a hit, not an out"
+"$bin" derby --seed 3 | grep -qE 'ft  out  \(in a game: (Single|Double|Triple) ' || fail "a derby's out that was a hit does not say so"
 echo "derby: ok"

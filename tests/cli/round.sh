@@ -245,6 +245,9 @@ set +e; msg=$("$bin" round national_3 --resume "$tmp/r.save" 2>&1); rc=$?; set -
 [ $rc -eq 2 ] && grep -q -- "give no COURSE" <<<"$msg" || fail "resume with a course named: $rc $msg"
 set +e; msg=$("$bin" round national_3 --stop-after 3 --save "$tmp/s3.save" 2>&1); rc=$?; set -e
 [ $rc -eq 2 ] && grep -q "allowed \[1, 2\]" <<<"$msg" && [ ! -e "$tmp/s3.save" ] || fail "stop after the last hole: $rc $msg"
+# Skins with every hole so far carried names no leader, nor a tie of everyone.
+"$bin" round links --bot tour --bot tour --format skins --seed 2 --stop-after 1 --save "$tmp/sk.save" > "$tmp/sk.txt"
+grep -q "^no skins won$" "$tmp/sk.txt" && ! grep -q "^tied:" "$tmp/sk.txt" || fail "skins with none won: $(cat "$tmp/sk.txt")"
 # A card stopped after a hole lists that hole alone, and its par and to-par are that hole's.
 "$bin" round national_3 --seed 2 --stop-after 1 --save "$tmp/one.save" > "$tmp/one.txt"
 [ "$(grep -c '^[0-9]' "$tmp/one.txt")" = 1 ] || fail "a card stopped after hole 1 lists $(grep -c '^[0-9]' "$tmp/one.txt") holes: $(cat "$tmp/one.txt")"

@@ -29,7 +29,7 @@ const char* to_string(MeterDifficulty d) {
 MeterDifficulty meter_difficulty(std::string_view name) {
   for (MeterDifficulty d : {MeterDifficulty::Easy, MeterDifficulty::Standard, MeterDifficulty::Pro})
     if (name == to_string(d)) return d;
-  throw InputError("difficulty '" + std::string(name) + "' is not one (allowed: easy, standard, pro)");
+  throw InputError("unknown difficulty '" + std::string(name) + "' (allowed: easy, standard, pro)");
 }
 
 double MeterClock::tempo_for(bool putter) { return putter ? 1.2 : 0.9; }

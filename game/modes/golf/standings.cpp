@@ -82,8 +82,10 @@ Standings standings(const GolfGroup& g) {
     }
     return 0;
   };
+  // Skins where every hole carried has nobody at the top: no one leads with none won.
+  const bool none_won = s.format == GolfFormat::Skins && !s.ranking.empty() && score(s.ranking.front()) == 0;
   for (int p : s.ranking)
-    if (score(p) == score(s.ranking.front())) s.leaders.push_back(p);
+    if (!none_won && score(p) == score(s.ranking.front())) s.leaders.push_back(p);
   return s;
 }
 

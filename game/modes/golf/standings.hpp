@@ -62,7 +62,8 @@ struct Standings {
   /// Players by standing, best first: fewest net strokes (stroke), most points (stableford),
   /// most skins (skins), the match's winner (match). Ties keep the order of play.
   std::vector<int> ranking;
-  /// Those tied for the best standing (one player unless a tie; both in a level match).
+  /// Those tied for the best standing (one player unless a tie; both in a level match; none
+  /// in skins while no skin has been won).
   std::vector<int> leaders;
 };
 

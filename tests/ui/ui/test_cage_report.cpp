@@ -7,6 +7,7 @@
 #include <string>
 
 #include "game/modes/baseball/figures.hpp"
+#include "game/rules/baseball_game.hpp"
 #include "game/ui/cage_view.hpp"
 #include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
@@ -71,6 +72,10 @@ TEST_CASE("the cage's exit report counts the player's swings and says each call 
   CHECK_THAT(report, Catch::Matchers::StartsWith("baseball: " + std::to_string(f.swings) + " swings, contact " +
                                                   std::to_string(f.contact) + ", fair " + std::to_string(f.fair)));
   CHECK_THAT(report, Catch::Matchers::Contains("live game: PA " + std::to_string(cage.at_bats().pa) + ":"));
+  // Where the game stands, in the scoreboard's words: the half inning and its outs, or its end.
+  const LiveInning::Board& board = *cage.board();
+  CHECK_THAT(report, Catch::Matchers::Contains(board.side_retired ? "; end of the " + ordinal(board.inning) + ", runs "
+                                                                  : "; top of the " + ordinal(board.inning) + ", "));
   CHECK_THAT(report, Catch::Matchers::Contains("\nswing: foul_tip  Strikeout on a foul tip\n"));
   // One line a swing, each with its call.
   std::size_t lines = 0;

@@ -41,8 +41,8 @@ RunFn setup_connect(CLI::App& sub) {
   sub.add_option("--idle-timeout", o->idle, "drop a client silent this long, 1s..24h (some connectors never send a heartbeat)")
       ->capture_default_str();
   sub.add_option("--record", o->server.record, "append each shot message received to FILE (JSON lines; replay it with `sweetspot send`)");
-  sub.add_option("--max-shots", o->server.max_shots, "stop after N shots (replays, tests; 0 = never)")->check(CLI::Range(0, 100000000));
-  sub.add_option("--frames", o->frames, "window: run N frames then exit (automation)")->check(CLI::Range(1, 1000000));
+  sub.add_option("--max-shots", o->server.max_shots, "stop after N shots (replays, tests; 0 = never)")->check(int_range<int>(0, 100000000));
+  sub.add_option("--frames", o->frames, "window: run N frames then exit (automation)")->check(int_range<int>(1, 1000000));
   sub.add_option("--screenshot", o->screenshot, "window: save the last frame to FILE.png");
   return [o](const Assets& assets) -> int {
     // The course or range is checked before the port opens, so a typo is named by its flag

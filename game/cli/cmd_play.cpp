@@ -29,20 +29,20 @@ RunFn setup_play(CLI::App& sub) {
   auto o = std::make_shared<PlayOptions>();
   sub.add_option("scenario", o->scenario, "built-in scenario name or .toml path")->capture_default_str();
   sub.add_option("--set", o->overrides, "override a scenario key, e.g. swing.speed=105mph (repeatable)");
-  sub.add_option("--frames", o->frames, "run N frames then exit (automation)")->check(CLI::Range(1, 1000000));
+  sub.add_option("--frames", o->frames, "run N frames then exit (automation)")->check(int_range<int>(1, 1000000));
   sub.add_option("--screenshot", o->screenshot, "save the last frame to FILE.png (headless: the shot's image)");
-  sub.add_option("--width", o->width, "window width in px")->check(CLI::Range(640, 7680))->capture_default_str();
-  sub.add_option("--height", o->height, "window height in px")->check(CLI::Range(480, 4320))->capture_default_str();
+  sub.add_option("--width", o->width, "window width in px")->check(int_range<int>(640, 7680))->capture_default_str();
+  sub.add_option("--height", o->height, "window height in px")->check(int_range<int>(480, 4320))->capture_default_str();
   std::vector<const CLI::Option*> window_only;
   window_only.push_back(sub.add_option("--mode", o->mode, "lab (the shot and its tuning), golf (a round on --course), range (bag gapping) or baseball (the batting cage); Tab switches")
       ->capture_default_str());
   window_only.push_back(sub.add_option("--course", o->course, "golf: a course of assets/courses, a .toml, or a directory from course import")->capture_default_str());
   window_only.push_back(sub.add_option("--skill", o->skill, "golf: tour, scratch, amateur or beginner (swing speed; the bot opponent)")
       ->capture_default_str());
-  window_only.push_back(sub.add_option("--holes", o->holes, "golf: play only the first N holes")->check(CLI::Range(1, 18)));
+  window_only.push_back(sub.add_option("--holes", o->holes, "golf: play only the first N holes")->check(int_range<int>(1, 18)));
   window_only.push_back(sub.add_option("--tees", o->course_setup.tees, "golf: the tee set to play from, as the course names them (default: each hole's own tee)"));
   o->course_setup.pin_set = CourseSetup::kDayPinSet;
-  window_only.push_back(sub.add_option("--pins", o->course_setup.pin_set, "golf: the pin set, 0..9 (default 0, a mix: the holes take their sets in turn)")->check(CLI::Range(0, 9)));
+  window_only.push_back(sub.add_option("--pins", o->course_setup.pin_set, "golf: the pin set, 0..9 (default 0, a mix: the holes take their sets in turn)")->check(int_range<int>(0, 9)));
   window_only.push_back(sub.add_option("--bot", o->bots, "golf: a bot player of this skill, repeat for up to 3 (default one of --skill; none: alone)"));
   window_only.push_back(sub.add_option("--format", o->format, "golf: stroke (default), match (one bot), stableford or skins"));
   window_only.push_back(sub.add_option("--human", o->humans, "golf: a friend at the same keys (hot seat), by name; repeat for up to 3"));
@@ -60,9 +60,9 @@ RunFn setup_play(CLI::App& sub) {
   window_only.push_back(sub.add_flag("--mute", o->mute, "no impact sound (without an audio device the game is silent anyway)"));
   window_only.push_back(sub.add_option("--shots-dir", o->shots_dir, "where F12 writes its screenshots (default: here)"));
   window_only.push_back(sub.add_flag("--exit-when-done", o->exit_when_done, "golf, baseball: close once the round or the pitches are done (automation)"));
-  window_only.push_back(sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(CLI::Range(1, 1000)));
+  window_only.push_back(sub.add_option("--pitches", o->pitches, "baseball: pitches in the session")->check(int_range<int>(1, 1000)));
   window_only.push_back(sub.add_option("--seed", o->seed, "the session's winds, bot and caddie swings and pitches, 1..2^64-1 (default: a fresh draw, printed)")
-      ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max())));
+      ->check(int_range<std::uint64_t>(1, std::numeric_limits<std::uint64_t>::max())));
   // The save holds the round's course, players, format and options: a flag that would set one
   // of them again is refused with --resume, not silently dropped.
   std::vector<const CLI::Option*> set_by_save;

@@ -96,8 +96,8 @@ RunFn setup_render(CLI::App& sub) {
       sub.add_option("--slow-motion", o->slow,
                      "--video: play the strike (10 ms before to 40 ms after contact) this many times slower, 1..1000")
           ->capture_default_str();
-  sub.add_option("--width", o->width, "image width in pixels (16..8192)")->check(CLI::Range(16, 8192))->capture_default_str();
-  sub.add_option("--height", o->height, "image height in pixels (16..8192)")->check(CLI::Range(16, 8192))->capture_default_str();
+  sub.add_option("--width", o->width, "image width in pixels (16..8192)")->check(int_range<int>(16, 8192))->capture_default_str();
+  sub.add_option("--height", o->height, "image height in pixels (16..8192)")->check(int_range<int>(16, 8192))->capture_default_str();
   sub.add_option("--camera", o->camera, "behind, side, top or follow")->capture_default_str();
   sub.add_option("--at", o->at, "time since launch with its unit, e.g. 2.5s or 2500ms (default: the shot's end)");
   add_launch_flags(sub, o->launch, false);
@@ -110,7 +110,7 @@ RunFn setup_render(CLI::App& sub) {
   sub.add_option("--msaa", o->samples, "multisample count: 0 = auto (4 on a GPU, 1 on llvmpipe), 1, 2, 4, 8")
       ->capture_default_str()->check(CLI::IsMember({0, 1, 2, 4, 8}));
   sub.add_option("--course", o->course, "a course (name, .toml or a directory from course import): draw the overview of --hole");
-  sub.add_option("--hole", o->hole, "the hole to overview with --course, 1..18")->check(CLI::Range(1, 18));
+  sub.add_option("--hole", o->hole, "the hole to overview with --course, 1..18")->check(int_range<int>(1, 18));
   sub.add_option("--shadows", o->shadows, "sun shadows: auto (on with a GPU, off on llvmpipe for speed), on or off")
       ->capture_default_str()->check(CLI::IsMember({"auto", "on", "off"}));
   return [o, launch_only, fps, slow](const Assets& assets) -> int {

@@ -230,7 +230,7 @@ RunFn setup_round(CLI::App& sub) {
       ->check(checked_by([](const std::string& t) { golfer_skill(t); }, "SKILL"));
   sub.add_option("--bag", o->bag, "the first player's measured bag (range --bag-out): their caddie's carries");
   sub.add_option("--handicap", o->handicaps, "course handicap per player in order, 0..54 (default 0)")
-      ->check(CLI::Range(0, kMaxHandicap));
+      ->check(int_range<int>(0, kMaxHandicap));
   sub.add_option("--format", o->format, "stroke (default), match (two players), stableford or skins")
       ->check(checked_by([](const std::string& t) { golf_format(t); }, "FORMAT"));
   sub.add_option("--gimme", o->gimme, "putts this close (m) are conceded, 0..3 (default: 0.6 in match play, else off)")
@@ -238,7 +238,7 @@ RunFn setup_round(CLI::App& sub) {
   sub.add_option("--tees", o->setup.tees, "the tee set to play from, as the course names them (\"white\"; default: each hole's own tee)");
   o->setup.pin_set = CourseSetup::kDayPinSet;
   auto* pins = sub.add_option("--pins", o->setup.pin_set, "the pin set, 0..9: where the cups are today (default 0, a mix: the holes take their sets in turn; 1 each hole's own pin; a course from course import has up to 4)")
-      ->check(CLI::Range(0, 9));
+      ->check(int_range<int>(0, 9));
   sub.add_flag("--calm", o->calm, "no wind on any hole (default: the course's wind, else drawn from the seed)");
   sub.add_option("--seed", o->seed, "seed of the bot's swing errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
   sub.add_option("--swings", o->swings, "scripted meter inputs, one [[stroke]] per stroke (TOML)");
@@ -247,7 +247,7 @@ RunFn setup_round(CLI::App& sub) {
   sub.add_flag("--json", o->json, "print the DESIGN §9 JSON");
   sub.add_option("--save", o->save, "write the round (players, options, every turn) to FILE to resume later");
   sub.add_option("--stop-after", o->stop_after, "stop once the group has finished this many holes, 1..18 (with --save)")
-      ->check(CLI::Range(1, 18));
+      ->check(int_range<int>(1, 18));
   sub.add_option("--resume", o->resume, "go on with a round written by --save (its players, format and options)");
   sub.add_option("--plot", o->plot, "also write the session's dispersion (carry vs side per club) to FILE.png");
   return [o, balls, pins, course_arg](const Assets& assets) -> int {

@@ -74,7 +74,7 @@ RunFn setup_send(CLI::App& sub) {
   sub.add_option("file", o->file, "the session: JSON objects (JSON lines, `shot --gspro` output, a `connect --record` file)")
       ->required();
   sub.add_option("--host", o->host, "the server's address")->capture_default_str();
-  sub.add_option("--port", o->port, "the server's port, 1..65535")->check(CLI::Range(1, 65535))->capture_default_str();
+  sub.add_option("--port", o->port, "the server's port, 1..65535")->check(int_range<int>(1, 65535))->capture_default_str();
   sub.add_option("--timeout", o->timeout, "how long to wait for each reply, 10ms..60s")->capture_default_str();
   sub.add_option("--pause", o->pause, "time between shots, 0s..60s (a player's pace)")->capture_default_str();
   return [o](const Assets&) -> int {

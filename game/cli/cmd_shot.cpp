@@ -63,7 +63,7 @@ RunFn setup_shot(CLI::App& sub) {
   json->excludes(gspro)->excludes(csv);
   gspro->excludes(csv);
   auto* number = sub.add_option("--shot-number", o->shot_number, "--gspro: the message's ShotNumber, 1..1000000000 (default 1, or the session's next)")
-      ->check(CLI::Range(1, kMaxShotNumber));
+      ->check(int_range<int>(1, kMaxShotNumber));
   auto* session = sub.add_option("--session", o->session,
                                  "--gspro: append the message as one line to this JSON-lines file, numbered after its "
                                  "last shot (replay it with `sweetspot send`)");

@@ -39,7 +39,7 @@ RunFn setup_sweep(CLI::App& sub) {
   sub.add_option("--mu", o->mu, "friction grid A:B:N (0 <= A, B <= 2)")->required();
   sub.add_option("--csv", o->csv, "write the grid as CSV to FILE (atomically)");
   sub.add_option("--set", o->sets, "override a scenario key: key=value")->type_name("KEY=VALUE");
-  sub.add_option("--threads", o->threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  sub.add_option("--threads", o->threads, "worker threads (default: all cores)")->check(int_range<int>(1, 1024));
   sub.add_flag("--no-flight", o->no_flight, "launch numbers only, skip the flight (faster)");
   sub.add_option("--plot", o->plot,
                  "also write a PNG image to FILE (name it .png): heatmaps of ball speed, spin and carry over the grid with the grip boundary, "

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 
 #include <functional>
@@ -53,11 +54,28 @@ inline CLI::Validator finite_range(double lo, double hi) {
         double v = 0.0;
         const char* end = text.data() + text.size();
         const auto [p, ec] = std::from_chars(text.data(), end, v);
-        if (text.empty() || ec != std::errc() || p != end || !range.contains(v))  // contains: false for NaN
-          return "'" + text + "' is not a number in " + allowed;
+        if (text.empty() || ec != std::errc() || p != end || std::isnan(v)) return "'" + text + "' is not a number (allowed " + allowed + ")";
+        if (!range.contains(v)) return text + " is out of range (allowed " + allowed + ")";
         return {};
       },
       "NUMBER in " + allowed);
+}
+/// A whole-number flag within [lo, hi], refused in the words finite_range uses ("55 is out of
+/// range (allowed [0, 54])"); "2.5" or "abc" is not a whole number.
+template <class T>
+CLI::Validator int_range(T lo, T hi) {
+  const std::string allowed = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, allowed](std::string& text) -> std::string {
+        T v{};
+        const char* end = text.data() + text.size();
+        const auto [p, ec] = std::from_chars(text.data(), end, v);
+        if (ec == std::errc::result_out_of_range || (ec == std::errc() && p == end && (v < lo || v > hi)))
+          return text + " is out of range (allowed " + allowed + ")";
+        if (text.empty() || ec != std::errc() || p != end) return "'" + text + "' is not a whole number (allowed " + allowed + ")";
+        return {};
+      },
+      "INT in " + allowed);
 }
 /// A flag checked by the model's own lookup (a skill, a format): its InputError's message
 /// becomes the flag's error, so the one list of allowed values stays with the model.

@@ -42,7 +42,7 @@ expect_exit() {  # code, text the message must contain, args...
   echo "$msg" | grep -qi -- "$text" || fail "message lacks '$text' for: $* -- $msg"
 }
 expect_exit 2 "behind, side, top, follow" -o "$tmp/x.png" "${drive[@]}" --camera drone
-expect_exit 2 "not in range 16 to 8192" -o "$tmp/x.png" "${drive[@]}" --width 8
+expect_exit 2 "--width: 8 is out of range" -o "$tmp/x.png" "${drive[@]}" --width 8
 expect_exit 2 "outside the shot" -o "$tmp/x.png" "${drive[@]}" --at 99s
 expect_exit 2 "missing unit" -o "$tmp/x.png" "${drive[@]}" --at 2
 expect_exit 2 "--at" -o "$tmp/x.png" "${drive[@]}" --at 2mph

@@ -325,8 +325,9 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   const Impl& m = *impl_;
   Scene scene;
   auto ground_at = [&](double x, double z) { return ground_height(x, z).value_or(m.plane_y); };
-  // Decoration sizes are styled for 720 lines and scale with the image (not below half).
-  const double style_scale = std::max(0.5, height / 720.0);
+  // Decoration sizes are styled for 720 lines and scale with the image, but not below 3/4: the
+  // stroke font's digits run together under ~12 px ("400" read "4ΛΛ" at 480 lines).
+  const double style_scale = std::max(0.75, height / 720.0);
   auto px = [&](const Vec3& p, double pixels) { return style_scale * pixels * camera.metres_per_pixel(p, height); };
 
   // The sun's shadow map covers what the camera frames: the whole shot (and the park) from

@@ -33,6 +33,7 @@ nlohmann::json team_json(const TeamBox& t) {
   for (const PitchingLine& p : t.pitchers) {
     nlohmann::json one = pitching(p);
     one["decision"] = to_string(p.decision);  // "W", "L", "S" or ""
+    one["throws"] = p.left_handed ? "L" : "R";
     one["inherited_runners"] = p.inherited;
     one["inherited_scored"] = p.inherited_scored;
     pitchers.push_back(one);
@@ -173,13 +174,14 @@ std::string box_score_text(const GameRecord& g) {
     line(out, "%-10s %3d %2d %2d %2d %2d %2d %3d %2d %2d %3d %2d   LOB %d\n", "Totals", sum.ab, sum.r, sum.h, sum.doubles,
          sum.triples, sum.hr, sum.rbi, sum.bb, sum.so, sum.hbp, sum.sf, t->left_on_base);
   }
-  line(out, "\nPitching           IP   H  R ER BB SO HR HBP  Pitches-strikes\n");
+  // A left-hander is named so ("LHP"); "(L)" is the losing pitcher's decision.
+  line(out, "\nPitching             IP   H  R ER BB SO HR HBP  Pitches-strikes\n");
   for (const TeamBox* t : {&g.away, &g.home}) {
     for (std::size_t i = 0; i < t->pitchers.size(); ++i) {
       const PitchingLine& p = t->pitchers[i];
-      std::string who = t->name + " " + pitcher_name(i);
+      std::string who = t->name + " " + pitcher_name(i) + (p.left_handed ? " LHP" : "");
       if (p.decision != Decision::None) who += std::string(" (") + to_string(p.decision) + ")";
-      line(out, "%-16s %2d.%d %3d %2d %2d %2d %2d %2d %3d  %d-%d\n", who.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.er, p.bb,
+      line(out, "%-18s %2d.%d %3d %2d %2d %2d %2d %2d %3d  %d-%d\n", who.c_str(), p.outs / 3, p.outs % 3, p.h, p.r, p.er, p.bb,
            p.so, p.hr, p.hbp, p.pitches, p.strikes);
     }
   }

@@ -69,6 +69,7 @@ struct PitchingLine {
   /// and how many of his inherited runners scored (Rule 9.16(g): charged to the pitcher who
   /// let them on, not to him).
   int runners_at_entry = 0, inherited = 0, inherited_scored = 0;
+  bool left_handed = false;  ///< he throws left-handed (the box's T column)
   PitchingLine& operator+=(const PitchingLine& o);  ///< the counts; not the decision or the lead
 };
 

@@ -121,8 +121,11 @@ PeopleFn cage_people(const BattingCage& c, double now) {
   cast.clock = cast.batted ? Cast::Clock::Batted : c.stage() == Stage::Pitching ? Cast::Clock::Pitch : Cast::Clock::Held;
   const bool any_pitch = c.stage() != Stage::Ready || !c.swings().empty();
   const PitchType& type = c.call().type;
-  cast.release = any_pitch ? c.pitch().release : Vec3(kRubberToPlate - type.extension, type.release_height, type.release_side);
-  cast.pitcher_left = c.call().left_handed;
+  // The man on the mound: the next pitch's thrower, at his last release if it was his hand's.
+  cast.pitcher_left = c.stage() == Stage::Ready ? c.pitcher_left() : c.call().left_handed;
+  cast.release = any_pitch && cast.pitcher_left == c.call().left_handed
+                     ? c.pitch().release
+                     : Vec3(kRubberToPlate - type.extension, type.release_height, type.release_side);
   cast.batter_left = c.left_handed();
   cast.bat_height = c.bat_height();
   cast.flight_time = c.pitch().flight_time;

@@ -181,7 +181,8 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     // (A pitch swung through early is still on its way.) In practice the pitch is called as
     // a coach feeding a machine would; in a game the pitcher does not tell the hitter what is
     // coming: named once it is by.
-    if (c.live()) ImGui::TextWrapped("%s", "Pitch: on its way (named once it is by)");
+    if (c.live())
+      ImGui::TextWrapped("Pitch: from the %s-hander, on its way (named once it is by)", c.call().left_handed ? "left" : "right");
     else ImGui::TextWrapped("Pitch: %s %.0f mph", c.call().type.type.c_str(), mps_to_mph(c.call().type.speed));
   } else {
     // Once it has gone by, its shape as Statcast tells it: the run toward the pitcher's arm or
@@ -191,8 +192,8 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     // Said against the spinless ball ("2 in higher"): a slider's "2 in rise" read as a pitch
     // that climbs, where it drops all the way, only less than gravity alone would drop it.
     const double run_in = 12.0 * std::abs(m_to_ft(m.horizontal_break));
-    ImGui::TextWrapped("Pitch: %s %.0f mph, %.0f in %s, %.0f in %s than a spinless ball", c.call().type.type.c_str(),
-                       mps_to_mph(c.call().type.speed), run_in, arm_side ? "arm side" : "glove side",
+    ImGui::TextWrapped("Pitch: %s%s %.0f mph, %.0f in %s, %.0f in %s than a spinless ball", c.call().left_handed ? "left-hander's " : "",
+                       c.call().type.type.c_str(), mps_to_mph(c.call().type.speed), run_in, arm_side ? "arm side" : "glove side",
                        12.0 * std::abs(m_to_ft(m.induced_vertical_break)), m.induced_vertical_break >= 0.0 ? "higher" : "lower");
     // The same in the batter's words: where it crossed for him and which way it moved.
     const bool same_hand = c.call().left_handed == c.left_handed();
@@ -535,8 +536,8 @@ void cage_report(const BattingCage& c, std::ostream& out) {
   }
   if (c.live()) {
     const BattingCage::AtBats& a = c.at_bats();
-    std::snprintf(line, sizeof line, "live game: PA %d: %d H (%d HR), %d K, %d BB, %d HBP", a.pa, a.hits, a.home_runs, a.strikeouts, a.walks,
-                  a.hit_by_pitch);
+    std::snprintf(line, sizeof line, "live game: PA %d: %d H (%d HR), %d K, %d BB, %d HBP against a %s-hander", a.pa, a.hits,
+                  a.home_runs, a.strikeouts, a.walks, a.hit_by_pitch, c.pitcher_left() ? "left" : "right");
     out << line;
     if (const LiveInning::Board* b = c.board()) {
       // Where the game stands, as the scoreboard says it: a side retired is the inning's end.

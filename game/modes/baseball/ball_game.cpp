@@ -36,16 +36,26 @@ bool Team::to_the_bullpen(const MoundVisit& v, std::uint64_t seed) {
   else
     done = done || (thrown >= kRelieverPitches && v.runners >= 1) || thrown >= kRelieverPitches + 10;
   if (!done) return false;
-  pitcher = Pitcher(pitcher.profile(), seed);
+  const bool left = Rng(seed ^ 0x1EF7A4D5C0FFEE11ULL).uniform() < kLeftRelieverShare;
+  pitcher = Pitcher(league_average_pitcher(types_, left), seed);
+  report = left ? left_report_ : right_report_;
   ++pitchers_used;
   return true;
 }
 
+namespace {
+// The starter's hand, from the team's seed.
+bool starter_left(std::uint64_t seed) { return Rng(seed ^ 0x57A27E5C0FFEE22ULL).uniform() < kLeftStarterShare; }
+}  // namespace
+
 Team::Team(const Assets& assets, std::string team_name, const BatterSkill& skill, std::uint64_t seed)
     : name(std::move(team_name)),
-      pitcher(league_average_pitcher(load_pitch_types(assets)), seed ^ 0x9E3779B97F4A7C15ULL),
+      pitcher(league_average_pitcher(load_pitch_types(assets), starter_left(seed)), seed ^ 0x9E3779B97F4A7C15ULL),
       report(scout(assets, pitcher.profile())),
-      fielding_rng(seed ^ 0xF1E1D1C1B1A19181ULL) {
+      fielding_rng(seed ^ 0xF1E1D1C1B1A19181ULL),
+      types_(load_pitch_types(assets)),
+      right_report_(scout(assets, league_average_pitcher(types_, false))),
+      left_report_(scout(assets, league_average_pitcher(types_, true))) {
   Rng r(seed);
   const double aim = aim_inside(assets, skill, kGameBat);
   for (int i = 0; i < 9; ++i) lineup.emplace_back(skill, bats_left(i), r.next(), aim);
@@ -167,6 +177,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
     box[t].name = teams[t].name;
     box[t].batting.assign(9, BattingLine{});
     box[t].pitchers.assign(1, PitchingLine{});
+    box[t].pitchers.front().left_handed = teams[t].pitcher.profile().left_handed;
   }
   int next_up[2] = {0, 0};
   std::vector<ScoreAfter> score_log;  // for the decisions
@@ -211,6 +222,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
           fresh.lead_at_entry = s.bottom ? s.away_runs - s.home_runs : s.home_runs - s.away_runs;
           fresh.runners_at_entry = visit.runners;
           fresh.inherited = inning_start ? 0 : visit.runners;  // extra innings' runner is his own
+          fresh.left_handed = field.pitcher.profile().left_handed;
           fbox.pitchers.push_back(fresh);
           runs_on_watch = 0;
         }

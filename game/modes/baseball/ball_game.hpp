@@ -64,8 +64,8 @@ class Team {
   Team(const Assets& assets, std::string name, const BatterSkill& skill, std::uint64_t seed);
   std::string name;
   std::vector<Hitter> lineup;
-  Pitcher pitcher;         ///< the one on the mound
-  ScoutingReport report;   ///< of this team's pitchers, as the other team knows them
+  Pitcher pitcher;         ///< the one on the mound: the starter, or the last reliever in
+  ScoutingReport report;   ///< of the pitcher on the mound, as the other team knows him
   int pitchers_used = 1;
   /// The manager's look at his pitcher before a plate appearance.
   struct MoundVisit {
@@ -87,6 +87,8 @@ class Team {
   /// has let in kBlowUpRuns this inning goes. No more than kMaxPitchers pitch (a roster's 13,
   /// MLB Rule since 2022), the last one finishes. Over the tests' 100 games: starters 5.4
   /// innings and 89 pitches, 48 % of starts six innings or more, 12 % seven or more.
+  /// Each pitcher throws left-handed as the league's do (kLeftStarterShare,
+  /// kLeftRelieverShare), drawn from his seed; the report is then his.
   bool to_the_bullpen(const MoundVisit& visit, std::uint64_t seed);
   static constexpr int kStarterPitches = 90;
   static constexpr int kStarterInnings = 6;
@@ -97,6 +99,10 @@ class Team {
   static constexpr int kMaxPitchers = 13;
   Defense defense;
   Rng fielding_rng;
+
+ private:
+  std::vector<PitchType> types_;
+  ScoutingReport right_report_, left_report_;  ///< the league's pitcher scouted from each hand
 };
 
 /// One plate appearance from the count 0-0: pitches until it ends (the runners are the

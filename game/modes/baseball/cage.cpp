@@ -94,11 +94,19 @@ void BattingCage::next_pitch(double t) {
   // A game over: the next pitch opens a fresh one (the session's figures go on).
   if (game_ && game_->board().final) {
     game_.emplace(assets_, seed_ + static_cast<std::uint64_t>(++games_));
+    new_league_pitcher();
     board_before_ = LiveInning::Board{};
     count_ = Count{};
   }
   // A new batter's first pitch: the game's next inning opens here after a third out.
   if (game_ && count_.balls == 0 && count_.strikes == 0) game_->next_batter();
+}
+
+void BattingCage::new_league_pitcher() {
+  // Each game's starter throws with the hand the league's starters do (kLeftStarterShare).
+  const std::uint64_t seed = seed_ + static_cast<std::uint64_t>(games_);
+  const bool left = Rng(seed ^ 0x57A27E5C0FFEE33ULL).uniform() < kLeftStarterShare;
+  pitcher_ = Pitcher(league_average_pitcher(types_, left), seed ^ 0x9E3779B97F4A7C15ULL);
 }
 
 void BattingCage::start_record() {
@@ -114,8 +122,12 @@ void BattingCage::start_record() {
   stage_ = Stage::Ready;
   bot_armed_ = false;
   // Live, the at-bats are a game from its first inning.
-  if (live_) game_.emplace(assets_, seed_);
-  else game_.reset();
+  if (live_) {
+    game_.emplace(assets_, seed_);
+    new_league_pitcher();
+  } else {
+    game_.reset();
+  }
   board_before_ = LiveInning::Board{};
 }
 
@@ -348,6 +360,7 @@ void BattingCage::switch_record() {
   kept_.games = leaving.games;
   kept_.game.reset();
   if (leaving.game) kept_.game.emplace(std::move(*leaving.game));
+  if (live_) new_league_pitcher();  // the game gone back to keeps its starter's hand
 }
 
 BattingCage::Figures BattingCage::figures_of(const std::vector<SwingRecord>& swings, const std::vector<double>& carries, std::size_t told) {

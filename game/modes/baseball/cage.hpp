@@ -88,6 +88,9 @@ class BattingCage {
   /// Timing only: the bat meets the pitch at the height a pro hitter reads it at (his read's
   /// own errors included), and the player's key is the swing's timing alone. Off: Up/Down set
   /// the height.
+  /// The next pitch's thrower is left-handed: the live game's league pitcher, or in practice
+  /// the last pitch's (the machine's right-hander).
+  bool pitcher_left() const { return live_ ? pitcher_.profile().left_handed : call_.left_handed; }
   bool timing_only() const { return timing_only_; }
   bool left_handed() const { return lefty_; }
   const SwingRecord& last() const { return last_; }
@@ -147,6 +150,9 @@ class BattingCage {
   void next_pitch(double t);
   /// A fresh record: no swings, no count, no plate appearances, the next pitch on call.
   void start_record();
+  /// The league's starter for the live game now on (games_ of them so far): his hand drawn as
+  /// the league's starters throw.
+  void new_league_pitcher();
   /// Live: the pitch's result on the count, and the plate appearance's end when it comes.
   void count_pitch(PitchResult r);
 

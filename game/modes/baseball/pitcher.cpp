@@ -108,9 +108,11 @@ double StrikeZone::outside_by(const Vec3& p, double r) {
   return std::max({side, height, 0.0});
 }
 
-PitcherProfile league_average_pitcher(const std::vector<PitchType>& types) {
+PitcherProfile league_average_pitcher(const std::vector<PitchType>& types, bool left_handed) {
   PitcherProfile p;
   p.arsenal = types;
+  p.left_handed = left_handed;
+  if (left_handed) p.name = "league average, left-handed";
   return p;
 }
 

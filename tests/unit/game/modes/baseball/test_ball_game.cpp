@@ -11,6 +11,7 @@
 #include <string>
 
 #include "game/modes/baseball/ball_game.hpp"
+#include "game/modes/baseball/pitcher.hpp"
 #include "game/report/box_score.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
@@ -159,6 +160,8 @@ TEST_CASE("the same seed plays the same game; bad options are refused", "[baseba
 }
 
 namespace {
+const std::vector<GameRecord>& league_games();  // below: a hundred league games
+
 // The league's hitter against the league's pitcher: forty seeded games, both lineups batting
 // (360 innings, ~3000 plate appearances). Each game draws its teams' fielders and its pitchers
 // afresh, so games differ by more than their plate appearances' chance: twelve games' BABIP
@@ -343,14 +346,17 @@ TEST_CASE("over 60+ innings whiffs per swing by pitch type follow Statcast's", "
 // pitches meant for an edge out of the zone and some meant to be chased into it) requires.
 // Band: each type within 4 points, ~2.5 standard errors of the fewest (~1,000 curveballs);
 // changeup lowest, both fastballs above every breaking and off-speed type.
-TEST_CASE("over 60+ innings each pitch type crosses the zone as often as Statcast's", "[baseball][game][reference][statistics]") {
+TEST_CASE("over 100 games each pitch type crosses the zone as often as Statcast's", "[baseball][game][reference][statistics]") {
+  // The hundred games of the bullpen test (~2,000 of the rarest type, a cutter: one binomial
+  // standard deviation ~0.011 against the 0.04 band; forty games left it ~0.017).
   std::map<std::string, std::pair<int, int>> by_type;  // pitches, in the zone
-  for (const PlateAppearance& pa : pro_games())
-    for (const PitchRecord& p : pa.pitches) {
-      auto& t = by_type[p.planned.call.type.type];
-      ++t.first;
-      t.second += StrikeZone::contains(p.flight.plate, 0.0369) ? 1 : 0;
-    }
+  for (const GameRecord& g : league_games())
+    for (const PlateAppearance& pa : g.plate_appearances)
+      for (const PitchRecord& p : pa.pitches) {
+        auto& t = by_type[p.planned.call.type.type];
+        ++t.first;
+        t.second += StrikeZone::contains(p.flight.plate, 0.0369) ? 1 : 0;
+      }
   const std::map<std::string, double> published{{"four-seam", 0.544}, {"sinker", 0.563}, {"cutter", 0.511},
                                                 {"slider", 0.457},    {"curveball", 0.439}, {"changeup", 0.388}};
   std::map<std::string, double> rate;
@@ -407,6 +413,7 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
   // ~21 % by 2022 (Verducci, SI 2024; NL 2016: 21.4 %): a cruising starter goes on.
   int six_plus = 0, seven_plus = 0;
   int starts = 0, starter_outs = 0, starter_pitches = 0, pitchers = 0, relieved_mid_inning = 0, inherited = 0, scored = 0;
+  int left_starters = 0, relievers = 0, left_relievers = 0;
   for (const GameRecord& g : league_games()) {
     CHECK(box_score_mismatch(g.away, g.home) == "");
     CHECK(box_score_mismatch(g.home, g.away) == "");
@@ -419,6 +426,11 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
       starter_pitches += t->pitchers[0].pitches;
       pitchers += static_cast<int>(t->pitchers.size());
       relieved_mid_inning += t->pitchers[0].outs % 3 != 0;
+      left_starters += t->pitchers[0].left_handed;
+      for (std::size_t i = 1; i < t->pitchers.size(); ++i) {
+        ++relievers;
+        left_relievers += t->pitchers[i].left_handed;
+      }
       int runs = 0;
       for (const PitchingLine& p : t->pitchers) {
         CHECK(p.pitches <= 125);
@@ -455,6 +467,13 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
   CHECK(inherited >= 40);
   CHECK(share > 0.18);
   CHECK(share < 0.42);
+  // Left-handers start and relieve as often as the league's (kLeftStarterShare 30.5 % of the
+  // first three innings' pitches, kLeftRelieverShare 22.4 % of the 8th on; Lookout Landing
+  // 2008): within three binomial standard deviations of those shares.
+  const double left_start = double(left_starters) / starts, left_relief = double(left_relievers) / relievers;
+  INFO("left-handed starters " << left_starters << " of " << starts << ", relievers " << left_relievers << " of " << relievers);
+  CHECK(std::abs(left_start - kLeftStarterShare) < 3.0 * std::sqrt(kLeftStarterShare * (1.0 - kLeftStarterShare) / starts));
+  CHECK(std::abs(left_relief - kLeftRelieverShare) < 3.0 * std::sqrt(kLeftRelieverShare * (1.0 - kLeftRelieverShare) / relievers));
 }
 
 TEST_CASE("over 100 games runners take extra bases and tag up about as MLB's do", "[baseball][game][reference][statistics]") {

@@ -43,7 +43,7 @@ TEST_CASE("live game: four walks force in a run, three strikeouts retire the sid
 }
 
 TEST_CASE("live game in the cage: the pro's balls in play move the runners, the score adds up", "[modes][baseball]") {
-  BattingCage cage(test::assets(), 17);
+  BattingCage cage(test::assets(), 22);
   cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);
   REQUIRE(cage.live());
   REQUIRE(cage.board() != nullptr);
@@ -51,6 +51,7 @@ TEST_CASE("live game in the cage: the pro's balls in play move the runners, the 
   int innings_done = 0, hits = 0, home_runs = 0, rescored = 0;
   while (innings_done < 3 && now < 4000.0) {
     const Count before = cage.count();
+    const int pa_before = cage.at_bats().pa;
     cage.update({at(IntentKind::BotSwings, now)}, now);
     // Until the pitch is called and any ball in play has come down.
     for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
@@ -73,8 +74,9 @@ TEST_CASE("live game in the cage: the pro's balls in play move the runners, the 
     }
     hits = b.hits;
     home_runs = cage.at_bats().home_runs;
-    // A play the runners changed is called as the game scored it (the banner and the log).
-    if (!b.scored_as.empty() && !cage.swings().empty()) {
+    // A play the runners changed is called as the game scored it (the banner and the log):
+    // the swing that ended the plate appearance (the board keeps its words through the next).
+    if (cage.at_bats().pa > pa_before && !b.scored_as.empty() && !cage.swings().empty()) {
       ++rescored;
       CHECK_THAT(cage.swings().back().said, Catch::Matchers::StartsWith("The pro: " + b.scored_as));
     }

@@ -117,8 +117,10 @@ std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& uni
 }
 
 std::string GolfUnits::speed(double mps) const {
+  // A putt's few m/s get their tenth (a 1.4 m/s putt does not read "1 m/s").
+  const double v = imperial ? mps_to_mph(mps) : mps;
   char b[32];
-  std::snprintf(b, sizeof b, imperial ? "%.0f mph" : "%.0f m/s", imperial ? mps_to_mph(mps) : mps);
+  std::snprintf(b, sizeof b, v < 10.0 ? (imperial ? "%.1f mph" : "%.1f m/s") : (imperial ? "%.0f mph" : "%.0f m/s"), v);
   return b;
 }
 
@@ -384,8 +386,9 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
         const std::string near = units.course(hz.from, scale), far = units.course(hz.to, scale);
         const std::size_t cut = near.find(' ');
         const bool one_unit = cut != std::string::npos && far.size() > cut && far.substr(far.find(' ')) == near.substr(cut);
+        // A stretch that reads one figure at both edges is said once ("sand 79 yd", not 79-79).
         said += std::string(said.empty() ? "" : ", ") + (hz.kind == "water" ? "water " : "sand ") +
-                (one_unit ? near.substr(0, cut) + "-" + far : near + " to " + far);
+                (near == far ? far : one_unit ? near.substr(0, cut) + "-" + far : near + " to " + far);
       }
       if (!said.empty()) ImGui::TextWrapped("On the line: %s", said.c_str());
     }
@@ -648,8 +651,11 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         // The caddie's read is a second mark (blue): named, so the two are not taken for one.
         char read[48] = "";
         if (const auto& rd = play.putt_read()) std::snprintf(read, sizeof read, "; blue: the caddie's read, %.0f %%", 100.0 * rd->power);
-        std::snprintf(label, sizeof label, "putt: %s; green: the cup mark, %.0f %% (%s past on the flat)%s%s   Space: putt", cup,
-                      100.0 * cup_p, break_length(past, units).c_str(), read, last);
+        // A short putt's marker climbs slower (MeterClock::putt_tempo), as a part swing's: said,
+        // or the long putts' rhythm leaves it short.
+        const bool slower = MeterClock::putt_tempo(cup_p) > MeterClock::tempo_for(true) + 1e-9;
+        std::snprintf(label, sizeof label, "putt: %s; green: the cup mark, %.0f %% (%s past on the flat%s)%s%s   Space: putt", cup,
+                      100.0 * cup_p, break_length(past, units).c_str(), slower ? "; a slower bar" : "", read, last);
       }
     }
   } else {

@@ -318,14 +318,25 @@ StrokeInput GolfBot::intend(const GolfRound& round, std::string* passed_over) co
     correct(t, &aim, &power);
     return tune(t.in.club, power, aim, more, t.in.meter.accuracy_ms);
   };
+  // Going for the cup with a full swing that stops short of it by more than this, the next
+  // club up is tried (below), and the partial wedge gives way to the clubs above it.
+  constexpr double kShortForMore = 4.0;  // m: a fifth of a club's ~20 m gap
+  // A partial wedge, unless the wedge's full swing stops short from here (into a wind, off a
+  // heavy lie: a 78 yd lob wedge that carries 66 yd today is no club for 77 yd).
+  std::optional<Tried> first_chip;
   if (d < shortest.carry) {
+    first_chip = tune(shortest.club, std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0), toward, 3);
+    // (Or ends in the water short of the green: the longer clubs are tried as for any shot.)
+    if (first_chip->in.meter.power >= 1.0 && (first_chip->lost || d - first_chip->reach > kShortForMore)) first_chip.reset();
+  }
+  if (first_chip) {
     // A partial wedge: carry grows a little faster than swing speed; start at that guess and
     // correct the aim. Where rough or a bank lies short of the cup a ball landing there stops
     // dead and one a little firmer runs past, so the correction's steps (d / reach)^0.8 can
     // swing about the cup without settling: unsettled, the power is chosen among its
     // neighbours, the one whose ball stops nearest the cup counted with its lie (a chip left
     // in the rough is another chip).
-    const Tried first = tune(shortest.club, std::clamp(std::pow(d / shortest.carry, 0.8), 0.05, 1.0), toward, 3);
+    const Tried& first = *first_chip;
     const Vec3& pin = round.hole().pin;
     const auto left = [&](const Tried& t) {
       if (t.lost) return std::numeric_limits<double>::infinity();
@@ -426,10 +437,9 @@ StrokeInput GolfBot::intend(const GolfRound& round, std::string* passed_over) co
     const Tried t = tune(s.club, std::clamp(std::pow(d / s.carry, 0.8), 0.05, 1.0), best.in.aim, 3);
     if (!t.lost && std::abs(t.reach - d) < std::abs(best.reach - d)) best = t;
   }
-  // Going for the cup with a full swing that stops short of it: the next club up swung
-  // smooth to the distance, when it stops nearer ("take one more club": a full swing is
-  // never forced past 100 %, where its error grows, swing_meter.hpp).
-  constexpr double kShortForMore = 4.0;  // m: a fifth of a club's ~20 m gap
+  // Going for the cup with a full swing that stops short of it (kShortForMore): the next club
+  // up swung smooth to the distance, when it stops nearer ("take one more club": a full swing
+  // is never forced past 100 %, where its error grows, swing_meter.hpp).
   if (going_for_pin && !best.lost && best.in.meter.power >= 1.0 && d - best.reach > kShortForMore) {
     const std::size_t k = stock_index(best.in.club);
     if (k > 0 && allowed(stock_[k - 1])) {

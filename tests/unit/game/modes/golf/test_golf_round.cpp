@@ -277,6 +277,35 @@ TEST_CASE("out of reach with a bend close ahead, a bot plays past the bend, not 
   CHECK(checked >= 2);
 }
 
+TEST_CASE("into a wind that holds the wedge's full swing short of the cup, the caddie takes more club", "[golf][bot]") {
+  // 97 % of the lob wedge's calm carry from the cup: in still air the wedge; into a 9 m/s wind
+  // its full swing comes down short, in the water before this green (a play-test: "lob wedge,
+  // stock carry 78 yd; from here 66 yd" chosen for 77 yd), and a longer club gets there.
+  const GolferSkill& scratch = golfer_skill("scratch");
+  const GolfBot bot(test::assets(), scratch, 1);
+  const GolfBot::Stock& wedge = bot.stock().back();
+  const CourseHole& h0 = one_hole(1).holes[0];
+  Vec3 back = h0.tee - h0.pin;
+  back.y() = 0.0;
+  back.normalize();
+  const Vec3 spot = h0.pin + 0.97 * wedge.carry * back;
+  for (const double wind : {0.0, 9.0}) {
+    const Course course = one_hole(1, std::pair{spot.x(), spot.z()});
+    HoleWind w;
+    w.speed = wind;
+    w.toward = std::atan2(back.z(), back.x());  // toward the player
+    GolfRound round(test::assets(), course, scratch, {w});
+    const StrokeInput in = bot.intend(round);
+    const Vec3 rest = round.simulate(in).trajectory.summary.rest_position;
+    const double left = std::hypot(rest.x() - h0.pin.x(), rest.z() - h0.pin.z());
+    INFO("wind " << wind << " m/s, " << round.to_pin() << " m to go: " << in.club << " at " << in.meter.power << ", stops " << left
+                 << " m from the cup");
+    CHECK((in.club == wedge.club) == (wind == 0.0));
+    CHECK(in.meter.power <= 1.0);
+    CHECK(left < 8.0);
+  }
+}
+
 // Behind a tree a golfer takes a way out: a line beside it, or a club that flies under or over
 // it. On the National's 9th, from the left rough ~225 m out, a tree stands ~15 m ahead on the
 // line to the flag; the amateur bot used to hit its 3-wood into it (carry 14 m) every time.

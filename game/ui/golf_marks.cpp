@@ -271,15 +271,19 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
       dl->AddText(place(ImVec2(px(*lp).x + 6, px(*lp).y - 18), text, px(*lp)), IM_COL32(255, 230, 90, 255), text.c_str());
     }
   }
-  // The dispersion: an ellipse of two standard deviations (about 86 % of shots) at the carry.
+  // The dispersion: an ellipse of two standard deviations (about 86 % of shots) around where
+  // the swing comes down: the wind's drift and the curve taken, not on the aim line (aimed
+  // 27 yd left of a pin in a crosswind, the ball comes back to it).
   if (carry > 1.0 && spread > 0.0 && club != "putter") {
+    const Vec3 landing = play.landing_here(club, part) - ball;
+    const double along = landing.x() * aim.x() + landing.z() * aim.z(), across = landing.x() * side.x() + landing.z() * side.z();
     std::vector<Vec3> ellipse;
     for (int k = 0; k <= 48; ++k) {
       const double a = 2.0 * kPi * k / 48.0;
-      ellipse.push_back(on_ground(carry + 2.0 * spread * std::cos(a), 2.0 * std::max(side_spread, 1.0) * std::sin(a)));
+      ellipse.push_back(on_ground(along + 2.0 * spread * std::cos(a), across + 2.0 * std::max(side_spread, 1.0) * std::sin(a)));
     }
     ground_polyline(dl, cam, ellipse, w, h, IM_COL32(120, 200, 255, 230), 2.0f);
-    if (const auto lp = cam.project(on_ground(carry - 2.0 * spread, 0.0), w, h)) {
+    if (const auto lp = cam.project(on_ground(along - 2.0 * spread, across), w, h)) {
       const std::string& text = whose;
       dl->AddText(place(ImVec2(px(*lp).x + 6, px(*lp).y + 4), text, px(*lp)), IM_COL32(120, 200, 255, 255), text.c_str());
     }

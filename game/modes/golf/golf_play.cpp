@@ -227,6 +227,11 @@ double GolfPlay::stops_here(const std::string& club, double power) const {
   return flown_here(club, power).total;
 }
 
+Vec3 GolfPlay::landing_here(const std::string& club, double power) const {
+  if (round().finished() || club == "putter") return ball_centre();
+  return flown_here(club, power).landing;
+}
+
 double GolfPlay::part_swing_power(const std::string& club) const {
   return caddie_plan_ && caddie_plan_->club == club && caddie_plan_->meter.power < 1.0 ? caddie_plan_->meter.power : 1.0;
 }

@@ -193,6 +193,9 @@ class GolfPlay {
   /// The same swing's distance to where it stops (m): the caddie picks a club by where it
   /// finishes, so a club that flies short of the pin and runs up to it is said both ways.
   double stops_here(const std::string& club, double power = 1.0) const;
+  /// Where the same swing first comes down (world m): the wind's drift and the curve in it,
+  /// which the map centres the landing spread on. The ball's centre when there is no stroke.
+  Vec3 landing_here(const std::string& club, double power = 1.0) const;
   /// The same swing's carry from here in still air (m): the wind's share in carry_here() is
   /// the difference, the rest of its difference from the bag's stock carry is the ground's
   /// (the lie, and the landing above or below the ball). NaN when the still-air flight ends

@@ -748,6 +748,12 @@ TEST_CASE("in a crosswind the caddie aims upwind of the pin, the same way on eve
       return std::abs(std::sin(std::atan2(rest.z(), rest.x()) - r.line_to_pin()) * std::hypot(rest.x(), rest.z()));
     };
     CHECK(off_line(*play.caddie_plan()) < 0.5 * off_line(at_flag));
+    // Where the map centres his spread: the flight's own landing, drifted back toward the
+    // pin's line from the aim upwind (not on the aim line).
+    const Vec3 land = play.landing_here(play.club()) - r.ball();
+    const double land_off_aim = std::sin(std::atan2(land.z(), land.x()) - (r.line_to_pin() + play.aim())) * std::hypot(land.x(), land.z());
+    INFO("lands " << land_off_aim << " m to the side of the aim line");
+    CHECK(land_off_aim * side > 5.0);  // blown downwind of the aim
     // His reason is his club's: another club on the same line says none; C brings his back.
     GolfPlay changed(test::assets(), c, solo("scratch"));
     changed.update({at(IntentKind::ClubDown, 1.0)}, 1.1);

@@ -284,7 +284,8 @@ TEST_CASE("into a wind that holds the wedge's full swing short of the cup, the c
   const GolferSkill& scratch = golfer_skill("scratch");
   const GolfBot bot(test::assets(), scratch, 1);
   const GolfBot::Stock& wedge = bot.stock().back();
-  const CourseHole& h0 = one_hole(1).holes[0];
+  const Course plain = one_hole(1);
+  const CourseHole& h0 = plain.holes[0];
   Vec3 back = h0.tee - h0.pin;
   back.y() = 0.0;
   back.normalize();

@@ -46,6 +46,14 @@ bool Team::to_the_bullpen(const MoundVisit& v, std::uint64_t seed) {
 namespace {
 // The starter's hand, from the team's seed.
 bool starter_left(std::uint64_t seed) { return Rng(seed ^ 0x57A27E5C0FFEE22ULL).uniform() < kLeftStarterShare; }
+
+// The same pitches thrown with the other hand: mirror images, their side-to-side break the
+// other way (the flights are the same, so none is thrown again).
+ScoutingReport mirrored(ScoutingReport r) {
+  for (ScoutingReport::Type& t : r.types) t.horizontal_break = -t.horizontal_break;
+  r.fastball.horizontal_break = -r.fastball.horizontal_break;
+  return r;
+}
 }  // namespace
 
 Team::Team(const Assets& assets, std::string team_name, const BatterSkill& skill, std::uint64_t seed)
@@ -53,9 +61,9 @@ Team::Team(const Assets& assets, std::string team_name, const BatterSkill& skill
       pitcher(league_average_pitcher(load_pitch_types(assets), starter_left(seed)), seed ^ 0x9E3779B97F4A7C15ULL),
       report(scout(assets, pitcher.profile())),
       fielding_rng(seed ^ 0xF1E1D1C1B1A19181ULL),
-      types_(load_pitch_types(assets)),
-      right_report_(scout(assets, league_average_pitcher(types_, false))),
-      left_report_(scout(assets, league_average_pitcher(types_, true))) {
+      types_(pitcher.profile().arsenal),
+      right_report_(pitcher.profile().left_handed ? mirrored(report) : report),
+      left_report_(pitcher.profile().left_handed ? report : mirrored(report)) {
   Rng r(seed);
   const double aim = aim_inside(assets, skill, kGameBat);
   for (int i = 0; i < 9; ++i) lineup.emplace_back(skill, bats_left(i), r.next(), aim);

@@ -628,3 +628,20 @@ TEST_CASE("over 100 games a hitter's bat speed varies from swing to swing as Sta
   CHECK(double(fast) / swings > 0.09);
   CHECK(double(fast) / swings < 0.18);
 }
+
+TEST_CASE("a left-hander's pitches are a right-hander's mirrored: the same flight, the side break the other way",
+          "[baseball][game]") {
+  // The game's scouting report of a left-hander is the right-hander's mirrored (ball_game.cpp),
+  // which holds because the flight is: thrown from the other side, every type's break turns.
+  const std::vector<PitchType> types = load_pitch_types(test::assets());
+  const ScoutingReport right = scout(test::assets(), league_average_pitcher(types, false));
+  const ScoutingReport left = scout(test::assets(), league_average_pitcher(types, true));
+  REQUIRE(right.types.size() == left.types.size());
+  for (std::size_t i = 0; i < right.types.size(); ++i) {
+    INFO(right.types[i].type);
+    CHECK(left.types[i].flight_time == Approx(right.types[i].flight_time).epsilon(1e-9));
+    CHECK(left.types[i].vertical_break == Approx(right.types[i].vertical_break).margin(1e-9));
+    CHECK(left.types[i].horizontal_break == Approx(-right.types[i].horizontal_break).margin(1e-9));
+    CHECK(std::abs(right.types[i].horizontal_break) > 0.01);  // every type breaks some way
+  }
+}

@@ -1,11 +1,13 @@
 #include "game/modes/golf/golf_play.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "game/modes/replay.hpp"
+#include "game/rules/golf_scoring.hpp"
 #include "game/rules/run_shot.hpp"
 
 namespace sweetspot {
@@ -50,6 +52,15 @@ const char* end_words(StrokeEnd e) {
     case StrokeEnd::OutOfBounds: return "Out of bounds: stroke and distance";
   }
   return "";
+}
+
+// A holed stroke in a player's words, with what it scored: a putt "In the hole! Birdie", one
+// from off the green where it came from ("In the hole from the fairway! Eagle"), an ace so.
+std::string holed_words(const StrokeRecord& rec, const HoleCard& card) {
+  std::string score = card.strokes == 1 ? std::string("a hole in one") : score_name(card.strokes, card.par);
+  if (score.empty()) score = "par";
+  score[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(score[0])));
+  return (rec.lie == "green" || rec.lie.empty() ? std::string("In the hole! ") : "In the hole from the " + rec.lie + "! ") + score;
 }
 
 }  // namespace
@@ -575,6 +586,7 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
   const std::string rest = rec.unplayable ? std::string(": lodged in a tree, unplayable, one stroke (Rule 19.2)")
                           : rec.relief       ? std::string(": on the cart path, free relief (Rule 16.1)")
                           : rec.wrong_green  ? std::string(": on another hole's green, free relief (Rule 13.1f)")
+                          : rec.end == StrokeEnd::Holed ? ": " + holed_words(rec, mine.card().at(std::min(round_hole_, mine.card().size() - 1)))
                           : rec.end == StrokeEnd::Rest ? std::string() : std::string(": ") + result;
   if (last_meter_ && s.club == "putter") {
     std::snprintf(msg, sizeof msg, "%s, stroke %d: putt at %.0f %% power%s", who.name.c_str(), stroke_no,

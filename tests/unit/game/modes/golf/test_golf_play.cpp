@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <initializer_list>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "game/modes/golf/golf_play.hpp"
 #include "game/modes/golf/latency_calibration.hpp"
 #include "game/modes/replay.hpp"
+#include "game/rules/golf_scoring.hpp"
 #include "game/util/rng.hpp"
 #include "game/report/round_json.hpp"
 #include "physics/units.hpp"
@@ -1127,4 +1129,29 @@ TEST_CASE("the map's prior spread is what a golfer of the player's skill spreads
   // The better golfer's is the smaller.
   GolfPlay tour(test::assets(), course, solo("tour")), amateur(test::assets(), course, solo("amateur"));
   CHECK(tour.skill_spread("7-iron")->side_sd < amateur.skill_spread("7-iron")->side_sd);
+}
+
+TEST_CASE("a holed stroke is told with what it scored, and from where it went in", "[modes][golf]") {
+  GolfPlay play(test::assets(), first_hole(), solo("tour"));
+  double t = 0.0;
+  std::string told;
+  for (int k = 0; k < 40 && told.empty(); ++k) {
+    t += 1.0;
+    play.update({at(IntentKind::CaddiePlays, t)}, t);
+    for (int i = 0; i < 30 && told.empty(); ++i) {
+      t += 0.5;
+      play.update({}, t);
+      if (play.message().find("In the hole") != std::string::npos) told = play.message();
+    }
+    if (told.empty()) play.update({at(IntentKind::Continue, t + 0.1)}, t + 0.2);
+  }
+  INFO(told);
+  REQUIRE_FALSE(told.empty());
+  const HoleCard& card = play.group().round(0).card().front();
+  std::string score = card.strokes == 1 ? std::string("a hole in one") : score_name(card.strokes, card.par);
+  if (score.empty()) score = "par";
+  score[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(score[0])));
+  CHECK_THAT(told, Catch::Matchers::EndsWith("! " + score));
+  const std::string& lie = card.shots.back().lie;
+  CHECK_THAT(told, Catch::Matchers::Contains(lie == "green" ? std::string(": In the hole! ") : ": In the hole from the " + lie + "! "));
 }

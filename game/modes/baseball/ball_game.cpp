@@ -36,7 +36,7 @@ bool Team::to_the_bullpen(const MoundVisit& v, std::uint64_t seed) {
   else
     done = done || (thrown >= kRelieverPitches && v.runners >= 1) || thrown >= kRelieverPitches + 10;
   if (!done) return false;
-  const bool left = Rng(seed ^ 0x1EF7A4D5C0FFEE11ULL).uniform() < kLeftRelieverShare;
+  const bool left = draws_left_handed(seed ^ 0x1EF7A4D5C0FFEE11ULL, kLeftRelieverShare);
   pitcher = Pitcher(league_average_pitcher(types_, left), seed);
   report = left ? left_report_ : right_report_;
   ++pitchers_used;
@@ -45,7 +45,7 @@ bool Team::to_the_bullpen(const MoundVisit& v, std::uint64_t seed) {
 
 namespace {
 // The starter's hand, from the team's seed.
-bool starter_left(std::uint64_t seed) { return Rng(seed ^ 0x57A27E5C0FFEE22ULL).uniform() < kLeftStarterShare; }
+bool starter_left(std::uint64_t seed) { return draws_left_handed(seed ^ 0x57A27E5C0FFEE22ULL, kLeftStarterShare); }
 
 // The same pitches thrown with the other hand: mirror images, their side-to-side break the
 // other way (the flights are the same, so none is thrown again).

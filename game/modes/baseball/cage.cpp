@@ -105,7 +105,7 @@ void BattingCage::next_pitch(double t) {
 void BattingCage::new_league_pitcher() {
   // Each game's starter throws with the hand the league's starters do (kLeftStarterShare).
   const std::uint64_t seed = seed_ + static_cast<std::uint64_t>(games_);
-  const bool left = Rng(seed ^ 0x57A27E5C0FFEE33ULL).uniform() < kLeftStarterShare;
+  const bool left = draws_left_handed(seed ^ 0x57A27E5C0FFEE33ULL, kLeftStarterShare);
   pitcher_ = Pitcher(league_average_pitcher(types_, left), seed ^ 0x9E3779B97F4A7C15ULL);
 }
 

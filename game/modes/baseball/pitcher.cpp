@@ -108,6 +108,8 @@ double StrikeZone::outside_by(const Vec3& p, double r) {
   return std::max({side, height, 0.0});
 }
 
+bool draws_left_handed(std::uint64_t seed, double share) { return Rng(seed).uniform() < share; }
+
 PitcherProfile league_average_pitcher(const std::vector<PitchType>& types, bool left_handed) {
   PitcherProfile p;
   p.arsenal = types;

@@ -52,6 +52,8 @@ PitcherProfile league_average_pitcher(const std::vector<PitchType>& types, bool 
 /// left-handers threw 30.5 % of MLB's pitches in the first three innings and 22.4 % from the
 /// 8th on (Lookout Landing, "Lefties in late innings", 2008, from the season's pitch data).
 inline constexpr double kLeftStarterShare = 0.305, kLeftRelieverShare = 0.224;
+/// Whether the pitcher drawn from `seed` throws left-handed, one of a `share` of them.
+bool draws_left_handed(std::uint64_t seed, double share);
 
 /// One pitch's plan: what and where he means to throw, then where his command puts it.
 struct PlannedPitch {

@@ -61,10 +61,22 @@ struct MeterBar {
   float at(double f) const { return x0 + static_cast<float>((std::clamp(f, low, high) - low) * (bw / (high - low))); }
   bool zoomed() const { return high < kHigh; }
 };
+/// `meter`: the swing under way, if any; `next`: the meter a press would start (its pace and
+/// perfect window are the idle bar's). `last`: the last swing's clicks, marked where they
+/// show what they would on this bar (last_click_marks).
 /// `top`: the power at the bar's right end (kHigh; less zooms the bar on a chip's few per
 /// cent, the accuracy's stretch scaled with it so it keeps its share of the bar).
-MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optional<MeterClock>& last, bool putting,
-                        double window_ms, int w, int h, double now, double top = MeterBar::kHigh);
+MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const MeterClock& next, const std::optional<MeterClock>& last,
+                        int w, int h, double now, double top = MeterBar::kHigh);
+/// Which of the last swing's click marks read true on the bar for `next`, a bar whose
+/// right end is `top`: its power where the bar reaches it (a 95 % drive's mark held at a
+/// chip's 40 % end would read as a 40 % swing); its accuracy only for a swing at the same
+/// pace, as a click's place on the bar is its timing error at the pace it was made (a
+/// 10 ms late click is twice as far along at the full tempo as on a bar slowed to half).
+struct ClickMarks {
+  bool power = false, accuracy = false;
+};
+ClickMarks last_click_marks(const MeterClock& last, const MeterClock& next, double top);
 /// The bar's top for a swing whose pin mark is at `pin_power` (none: the pin beyond reach):
 /// the whole bar while the mark sits past MeterBar's middle, else zoomed so it sits near
 /// 60 % of the way along, in steps of 10 % of power (an aim's step does not jump the scale),

@@ -528,8 +528,17 @@ double zoomed_top(std::optional<double> pin_power) {
   return top >= 1.0 ? MeterBar::kHigh : top;
 }
 
-MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optional<MeterClock>& last, bool putting,
-                        double window_ms, int w, int h, double now, double top) {
+ClickMarks last_click_marks(const MeterClock& last, const MeterClock& next, double top) {
+  ClickMarks m;
+  if (last.putting() != next.putting()) return m;  // a wedge's power on the putt's scale would read as a length
+  m.power = last.power() <= top + 1e-9;
+  m.accuracy = !last.putting() && std::abs(last.tempo() - next.tempo()) <= 1e-9 * next.tempo();
+  return m;
+}
+
+MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const MeterClock& next, const std::optional<MeterClock>& last,
+                        int w, int h, double now, double top) {
+  const bool putting = next.putting();
   MeterBar bar;
   bar.high = top;
   bar.low = MeterBar::kLow * top / MeterBar::kHigh;
@@ -542,7 +551,7 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optio
   dl->AddRectFilled(ImVec2(x0, y0), ImVec2(x0 + bw, y0 + bh), IM_COL32(20, 24, 30, 255), 4.0f);
   if (!putting) {
     // The accuracy mark, as wide as the difficulty's perfect window (at least a sliver).
-    const double half = meter ? meter->window_fraction() : MeterClock(MeterClock::tempo_for(false), false, window_ms).window_fraction();
+    const double half = meter ? meter->window_fraction() : next.window_fraction();
     dl->AddRectFilled(ImVec2(at(-std::max(half, 0.006)), y0), ImVec2(at(std::max(half, 0.006)), y0 + bh), IM_COL32(60, 170, 80, 230));
   }
   if (!bar.zoomed()) dl->AddLine(ImVec2(at(1.0), y0 - 4), ImVec2(at(1.0), y0 + bh + 4), IM_COL32(250, 250, 250, 255), 2.0f);
@@ -563,11 +572,12 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const std::optio
       dl->AddLine(ImVec2(at(meter->power()), y0 - 6), ImVec2(at(meter->power()), y0 + bh + 6), IM_COL32(255, 255, 255, 255), 3.0f);
       dl->AddLine(ImVec2(at(p), y0 - 6), ImVec2(at(p), y0 + bh + 6), IM_COL32(255, 80, 60, 255), 3.0f);
     }
-  } else if (last && last->putting() == putting) {
-    // Where the last swing's clicks landed: power (white) and accuracy (red). Only a stroke
-    // of the same kind: a wedge's power mark on the putt's scale would read as a length.
-    dl->AddLine(ImVec2(at(last->power()), y0 - 6), ImVec2(at(last->power()), y0 + bh + 6), IM_COL32(255, 255, 255, 150), 2.0f);
-    if (!last->putting()) {
+  } else if (last) {
+    // Where the last swing's clicks landed: power (white) and accuracy (red).
+    const ClickMarks marks = last_click_marks(*last, next, top);
+    if (marks.power)
+      dl->AddLine(ImVec2(at(last->power()), y0 - 6), ImVec2(at(last->power()), y0 + bh + 6), IM_COL32(255, 255, 255, 150), 2.0f);
+    if (marks.accuracy) {
       // A click past the bar's ends (up to 200 ms late) is marked at the end it went past.
       const double a = std::clamp(last->accuracy_position(), MeterBar::kLow, MeterBar::kHigh);
       dl->AddLine(ImVec2(at(a), y0 - 6), ImVec2(at(a), y0 + bh + 6), IM_COL32(255, 80, 60, 170), 2.0f);
@@ -587,7 +597,8 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
   // A chip's bar zoomed on its few per cent, so its scale and its pin mark stand apart.
   const std::optional<GolfPlay::PinPower> pin = putting ? std::nullopt : play.pin_power(play.club());
   const double top = zoomed_top(pin ? std::optional<double>(pin->power) : std::nullopt);
-  const MeterBar bar = draw_meter_bar(meter, marks, putting, perfect_window_ms(play.setup().difficulty), w, h, now, top);
+  const MeterClock next = play.next_meter();
+  const MeterBar bar = draw_meter_bar(meter, next, marks, w, h, now, top);
   const float y0 = bar.y0;
   const auto at = [&](double f) { return bar.at(f); };
   const double shown = bar.shown;
@@ -720,7 +731,11 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
       std::snprintf(label, sizeof label, "%s", play.message().c_str());
     } else {
       // The last swing's two marks (draw_meter_bar) are named, as the putt's last power is.
-      const char* last_marks = marks && !marks->putting() ? "; white, red: your last clicks" : "";
+      const ClickMarks shown_marks = marks ? last_click_marks(*marks, next, top) : ClickMarks{};
+      const char* last_marks = shown_marks.accuracy && shown_marks.power ? "; white, red: your last clicks"
+                               : shown_marks.power                       ? "; white: your last power"
+                               : shown_marks.accuracy                    ? "; red: your last accuracy click"
+                                                                         : "";
       // A part swing's bar climbs slower (MeterClock::part_swing_tempo: the blue mark takes
       // 0.6 s to reach): said before the swing, so the change of pace is not a surprise.
       const std::optional<double> part = play.caddie_part_swing(club);

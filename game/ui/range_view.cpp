@@ -225,7 +225,7 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
   if (hit) draw_launch_panel(play_->last_shot(), units_, w, t);  // the last ball's numbers, its carry once it lands
   if (play_->stage() != RangePlay::Stage::Flying) {
     const MeterBar bar =
-        draw_meter_bar(play_->meter(), play_->last_click(), false, perfect_window_ms(MeterDifficulty::Standard), w, h, in.now);
+        draw_meter_bar(play_->meter(), play_->next_meter(), play_->last_click(), w, h, in.now);
     draw_meter_caption(bar, full_swing_caption(play_->meter(), in.now, play_->club() + ": Space to swing"));
   }
 }

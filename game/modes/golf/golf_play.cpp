@@ -104,6 +104,17 @@ Vec3 GolfPlay::aim_direction() const {
   return Vec3(std::cos(a), 0.0, std::sin(a));
 }
 
+MeterClock GolfPlay::next_meter() const {
+  // A putt the preview reaches: the marker slowed for a short one (putt_tempo); the caddie's
+  // part swing with this club, slowed to its mark as well.
+  const bool putting = club() == "putter";
+  const double part = putting ? 1.0 : part_swing_power(club());
+  const double tempo = putting && putt_plays_as_ > 0.0 ? MeterClock::putt_tempo(cup_mark_power())
+                       : part < 1.0                    ? MeterClock::part_swing_tempo(part)
+                                                       : MeterClock::tempo_for(putting);
+  return MeterClock(tempo, putting, perfect_window_ms(setup_.difficulty));
+}
+
 const GolfPlay::OwnLast* GolfPlay::own_last(int player) const {
   const auto i = static_cast<std::size_t>(player);
   if (i >= own_last_.size() || !own_last_[i] || own_last_[i]->hole != group_.hole_index()) return nullptr;
@@ -654,13 +665,7 @@ void GolfPlay::apply(const Intent& in) {
         case IntentKind::CaddieClub: choose_club(); break;
         case IntentKind::ReadGreen: read_green(); break;
         case IntentKind::Swing: {
-          // A putt the preview reaches: the marker slowed for a short one (putt_tempo); the
-          // caddie's part swing with this club, slowed to its mark as well.
-          const double part = putting ? 1.0 : part_swing_power(club());
-          const double tempo = putting && putt_plays_as_ > 0.0 ? MeterClock::putt_tempo(cup_mark_power())
-                               : part < 1.0                    ? MeterClock::part_swing_tempo(part)
-                                                               : MeterClock::tempo_for(putting);
-          meter_.emplace(tempo, putting, perfect_window_ms(setup_.difficulty));
+          meter_.emplace(next_meter());
           swing_undone_ = false;
           meter_->click(t);
           stage_ = Stage::Swinging;

@@ -100,6 +100,10 @@ class GolfPlay {
   static constexpr double kDoglegTurn = 0.26;  // rad (15 deg)
   AimWhy aim_why() const;
   const std::optional<MeterClock>& meter() const { return meter_; }
+  /// The meter a swing press would start now, before its first click: its tempo (a short
+  /// putt's and a part swing's slowed to their mark) and perfect window, which the idle bar
+  /// draws so it shows the swing about to be made.
+  MeterClock next_meter() const;
   /// The last stroke's physics and the time it was struck (its flight runs from then).
   const ShotResult& last_shot() const { return last_; }
   double struck_at() const { return struck_at_; }

@@ -59,6 +59,8 @@ class MeterClock {
   /// Where the marker stood at the accuracy click (−0.15 … 1.1): the meter's click mark.
   double accuracy_position() const { return -kDownFactor * (accuracy_ms_ / 1000.0) / tempo_; }
   double window_ms() const { return window_ms_; }
+  /// Seconds the marker takes from 0 to 100 % on the way up.
+  double tempo() const { return tempo_; }
   /// The perfect window's half-width as a fraction of the meter (for drawing it).
   double window_fraction() const { return kDownFactor * (window_ms_ / 1000.0) / tempo_; }
 

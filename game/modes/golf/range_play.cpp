@@ -98,7 +98,7 @@ void RangePlay::apply(const Intent& in) {
     if (in.kind == IntentKind::ClubDown && club_ + 2 < golf_bag().size()) ++club_;  // the putter stays in the bag
     if (in.kind == IntentKind::CaddiePlays) strike(bot_.full_swing(), t, true);
     if (in.kind == IntentKind::Swing) {
-      meter_.emplace(MeterClock::tempo_for(false), false, perfect_window_ms(difficulty_));
+      meter_.emplace(next_meter());
       meter_->click(t);
       stage_ = Stage::Swinging;
     }

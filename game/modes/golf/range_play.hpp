@@ -31,6 +31,8 @@ class RangePlay {
   Stage stage() const { return stage_; }
   const std::string& club() const;
   const std::optional<MeterClock>& meter() const { return meter_; }
+  /// The meter a swing press starts: the full swing's tempo at the range's difficulty.
+  MeterClock next_meter() const { return MeterClock(MeterClock::tempo_for(false), false, perfect_window_ms(difficulty_)); }
   const std::optional<MeterClock>& last_click() const { return last_click_; }
   const ShotResult& last_shot() const { return last_; }
   double struck_at() const { return struck_at_; }

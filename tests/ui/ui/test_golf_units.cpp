@@ -89,6 +89,40 @@ TEST_CASE("a part swing's carry and run read in one unit, the longer one's", "[u
   CHECK(metres.course(13.0, 21.0) == "13 m");
 }
 
+TEST_CASE("the last swing's click marks are drawn only where they read true on this bar", "[ui][golf]") {
+  const double full = MeterClock::tempo_for(false);
+  const auto clicked = [](double tempo, bool putting, double power) {
+    MeterClock m(tempo, putting, 10.0);
+    m.click(0.0);
+    m.click(power * tempo);  // the power click where the marker reached `power`
+    if (!putting) m.click(m.mark_time() + 0.02);  // 20 ms late
+    return m;
+  };
+  const MeterClock drive = clicked(full, false, 0.95);
+  REQUIRE(drive.power() == Approx(0.95));
+  // Another full swing on the whole bar: both marks.
+  ClickMarks m = last_click_marks(drive, MeterClock(full, false, 10.0), MeterBar::kHigh);
+  CHECK(m.power);
+  CHECK(m.accuracy);
+  // A chip's part swing, slower and zoomed to 40 %: the drive's power is past the bar's end
+  // and its click's place was at the full tempo's scale.
+  m = last_click_marks(drive, MeterClock(2.0 * full, false, 10.0), 0.4);
+  CHECK_FALSE(m.power);
+  CHECK_FALSE(m.accuracy);
+  // A chip after a chip at another pace: the power mark (a power is a power), not the click's.
+  const MeterClock chip = clicked(2.0 * full, false, 0.3);
+  m = last_click_marks(chip, MeterClock(1.5 * full, false, 10.0), 0.5);
+  CHECK(m.power);
+  CHECK_FALSE(m.accuracy);
+  // A putt's power never on a swing's bar, nor a swing's on a putt's.
+  const MeterClock putt = clicked(MeterClock::tempo_for(true), true, 0.4);
+  CHECK_FALSE(last_click_marks(putt, MeterClock(full, false, 10.0), MeterBar::kHigh).power);
+  CHECK_FALSE(last_click_marks(drive, MeterClock(MeterClock::tempo_for(true), true, 10.0), MeterBar::kHigh).power);
+  m = last_click_marks(putt, MeterClock(MeterClock::tempo_for(true), true, 10.0), MeterBar::kHigh);
+  CHECK(m.power);
+  CHECK_FALSE(m.accuracy);  // a putt has no accuracy click
+}
+
 TEST_CASE("a chip's meter bar zooms on its few per cent, with the pin's mark ~60 % of the way along", "[ui][golf]") {
   // The whole bar while the pin's power is past half of it or beyond reach.
   CHECK(zoomed_top(std::nullopt) == MeterBar::kHigh);

@@ -602,6 +602,15 @@ TEST_CASE("the caddie's plan: a full swing from the tee, a part swing's power fo
   REQUIRE(pitch.meter());
   CHECK(pitch.meter()->position(1.3) == Approx(0.3 / MeterClock::part_swing_tempo(power)).margin(1e-12));
   CHECK(pitch.meter()->position(1.0 + MeterClock::kLeastToCup) <= power + 1e-12);
+  // Cancelled, the idle bar is the one the next press starts: the part swing's pace and
+  // perfect window, not the full swing's (its accuracy mark would be drawn too wide).
+  pitch.update({at(IntentKind::Cancel, 1.4)}, 1.4);
+  REQUIRE_FALSE(pitch.meter());
+  CHECK(pitch.next_meter().tempo() == MeterClock::part_swing_tempo(power));
+  CHECK(pitch.next_meter().window_fraction() < MeterClock(MeterClock::tempo_for(false), false, pitch.next_meter().window_ms()).window_fraction());
+  pitch.update({at(IntentKind::Swing, 2.0)}, 2.0);
+  REQUIRE(pitch.meter());
+  CHECK(pitch.meter()->tempo() == pitch.next_meter().tempo());
 }
 
 TEST_CASE("taps that run on past the calibration's last beat are taps, not a swing", "[modes][golf]") {

@@ -461,13 +461,18 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       if (s.format == GolfFormat::Skins && s.skins)
         std::snprintf(extra, sizeof extra, "  %d skin%s", s.skins->skins[p], s.skins->skins[p] == 1 ? "" : "s");
       const std::string here = on_this_hole(p);
+      // The standings count the holes the whole group has finished; a player who has holed
+      // out here while the others play on is told his total with this hole in it, beside
+      // "holed in 2" (not the total before it, which reads as a stale sum).
+      const RunningTotal total = group ? running_total(g, s, static_cast<int>(p)) : RunningTotal{ps.total_strokes, ps.total_par, ps.holes_scored};
+      const int strokes = total.strokes, par = total.par, scored = total.holes;
       // Wrapped: a line that runs past the panel's edge ("3 ft to go, Gre") goes on below.
       char row[192];
-      if (ps.holes_scored == 0)  // no hole scored yet (or a match's only one conceded): no score to stand on
+      if (scored == 0)  // no hole scored yet (or a match's only one conceded): no score to stand on
         std::snprintf(row, sizeof row, "%-*s   -%s%s", name_w, g.players()[p].name.c_str(), extra, here.c_str());
       else
-        std::snprintf(row, sizeof row, "%-*s %3d (%s)%s%s", name_w, g.players()[p].name.c_str(), ps.total_strokes,
-                      to_par_text(ps.total_strokes - ps.total_par).c_str(), extra, here.c_str());
+        std::snprintf(row, sizeof row, "%-*s %3d (%s)%s%s", name_w, g.players()[p].name.c_str(), strokes,
+                      to_par_text(strokes - par).c_str(), extra, here.c_str());
       ImGui::TextWrapped("%s", row);
     }
     // Before the first hole is decided the match has no status of its own yet.

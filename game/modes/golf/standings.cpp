@@ -89,4 +89,19 @@ Standings standings(const GolfGroup& g) {
   return s;
 }
 
+RunningTotal running_total(const GolfGroup& group, const Standings& s, int player) {
+  const PlayerStanding& ps = s.players.at(static_cast<std::size_t>(player));
+  RunningTotal t{ps.total_strokes, ps.total_par, ps.holes_scored};
+  const std::size_t hole = group.hole_index();
+  const GolfRound& r = group.round(player);
+  if (s.holes > hole || r.card().size() <= hole || !(r.finished() || r.hole_index() > hole)) return t;
+  const HoleCard& c = r.card()[hole];
+  if (c.holed || c.picked_up) {
+    t.strokes += c.strokes;
+    t.par += c.par;
+    ++t.holes;
+  }
+  return t;
+}
+
 }  // namespace sweetspot

@@ -69,4 +69,12 @@ struct Standings {
 
 Standings standings(const GolfGroup& group);
 
+/// A player's running score while the group plays a hole: the standings' scored holes and,
+/// once he has finished the hole the group is on (holed or picked up) while others play
+/// on, that hole too. Beside "holed in 2" the total before it would read as a stale sum.
+struct RunningTotal {
+  int strokes = 0, par = 0, holes = 0;
+};
+RunningTotal running_total(const GolfGroup& group, const Standings& standings, int player);
+
 }  // namespace sweetspot

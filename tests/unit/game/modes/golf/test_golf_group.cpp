@@ -114,6 +114,39 @@ TEST_CASE("turn order: honours on the tee, then the ball farthest from the hole"
   }
 }
 
+TEST_CASE("a player who has holed out while the group plays on counts that hole in his running total", "[modes][golf][formats]") {
+  GolfGroup g(test::assets(), test::links(), {bot("tour"), bot("beginner")}, {});
+  // Play hole 1 out, then hole 2 until one player has finished it and the other has not.
+  int turns = 0;
+  const auto finished_2 = [&](int p) { return g.round(p).hole_index() > 1; };
+  while (!(g.hole_index() == 1 && (finished_2(0) != finished_2(1)))) {
+    g.play_bot();
+    REQUIRE(++turns < 80);
+  }
+  const Standings s = standings(g);
+  REQUIRE(s.holes == 1);  // the standings hold hole 1 only: the group is still on hole 2
+  const int done = finished_2(0) ? 0 : 1, playing = 1 - done;
+  const HoleCard& h1 = g.round(done).card()[0];
+  const HoleCard& h2 = g.round(done).card()[1];
+  const RunningTotal t = running_total(g, s, done);
+  CHECK(t.holes == 2);
+  CHECK(t.strokes == h1.strokes + h2.strokes);
+  CHECK(t.par == h1.par + h2.par);
+  // The one still playing it stands on hole 1's score.
+  const RunningTotal u = running_total(g, s, playing);
+  CHECK(u.holes == 1);
+  CHECK(u.strokes == g.round(playing).card()[0].strokes);
+  CHECK(u.par == g.round(playing).card()[0].par);
+  // Once the group is off the hole, the standings hold it and nothing is counted twice.
+  while (g.hole_index() == 1) {
+    g.play_bot();
+    REQUIRE(++turns < 160);
+  }
+  const Standings after = standings(g);
+  CHECK(running_total(g, after, done).strokes == after.players[static_cast<std::size_t>(done)].total_strokes);
+  CHECK(running_total(g, after, done).strokes == t.strokes);
+}
+
 TEST_CASE("match play: the status follows the holes won, a short putt is conceded, a conceded hole is lost", "[modes][golf][formats]") {
   GolfOptions o;
   o.format = GolfFormat::Match;

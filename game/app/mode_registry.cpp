@@ -39,6 +39,8 @@ std::unique_ptr<GolfPlay> golf_model(const Assets& assets, const PlayOptions& o)
     setup.players = saved.players;
     setup.options = saved.options;
     setup.resume = saved.events;
+    setup.resume_restarts = saved.restarts;
+    setup.resume_cancelled = saved.cancelled;
     return std::make_unique<GolfPlay>(assets, saved_course(assets, saved), setup);
   }
   GolfPlayer you{"You", o.skill, true, 0, {}};

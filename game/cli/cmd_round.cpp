@@ -81,8 +81,12 @@ void give_bag(const Assets& assets, const RoundOptions& o, std::vector<GolfPlaye
   if (!o.bag.empty()) players.front().bag = bag_stock(load_bag(assets, o.bag, golfer_skill_names()));
 }
 
-GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
-  if (!o.resume.empty()) return resume_round(assets, read_round_save(o.resume));
+// `resumed`: the save a --resume read, whose window record a --save carries on.
+GolfGroup new_group(const Assets& assets, const RoundOptions& o, SavedRound& resumed) {
+  if (!o.resume.empty()) {
+    resumed = read_round_save(o.resume);
+    return resume_round(assets, resumed);
+  }
   Course course = load_course(assets, o.course);
   set_up(course, o.setup, "--tees", "--pins");
   // Stopping after the last hole (or past it) would save a finished round as one to go on with.
@@ -109,7 +113,8 @@ GolfGroup new_group(const Assets& assets, const RoundOptions& o) {
 }
 
 int play_stroke_round(const Assets& assets, const RoundOptions& o) {
-  GolfGroup group = new_group(assets, o);
+  SavedRound resumed;
+  GolfGroup group = new_group(assets, o, resumed);
   const GolfOptions& options = group.options();
   std::vector<ScriptedStroke> script;
   if (!o.swings.empty()) script = load_swings(o.swings);
@@ -148,7 +153,10 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
   }
   if (!o.save.empty()) {
     // The course by its file, found again from wherever the save is resumed.
-    write_file_atomic(o.save, json_text(round_save_json(group, std::filesystem::absolute(group.course().source).string())) + "\n",
+    write_file_atomic(o.save,
+                      json_text(round_save_json(group, std::filesystem::absolute(group.course().source).string(),
+                                                resumed.restarts, resumed.cancelled)) +
+                          "\n",
                       OverInput::Allow);
   }
   if (!o.plot.empty()) {

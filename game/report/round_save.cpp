@@ -1,6 +1,7 @@
 #include "game/report/round_save.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "game/content/course_file.hpp"
 #include "game/content/json_unique_keys.hpp"
@@ -68,7 +69,7 @@ struct Reader {
 
 }  // namespace
 
-nlohmann::json round_save_json(const GolfGroup& g, const std::string& course) {
+nlohmann::json round_save_json(const GolfGroup& g, const std::string& course, const std::vector<int>& restarts, int cancelled) {
   using nlohmann::json;
   json players = json::array();
   for (const GolfPlayer& p : g.players()) {
@@ -93,7 +94,8 @@ nlohmann::json round_save_json(const GolfGroup& g, const std::string& course) {
           {"players", players},              {"format", to_string(g.options().format)},
           {"gimme_m", g.options().gimme_m},  {"auto_putt", g.options().auto_putt},
           {"seed", g.options().seed},        {"tees", g.course().setup.tees},
-          {"pin_set", g.course().setup.pin_set}, {"events", events}};
+          {"pin_set", g.course().setup.pin_set}, {"events", events},
+          {"restarts", restarts},            {"cancelled", cancelled}};
 }
 
 SavedRound parse_round_save(const std::string& text, const std::string& source) {
@@ -106,7 +108,7 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
   const Reader r{source};
   if (!j.is_object() || !j.contains("sweetspot_round")) r.fail("sweetspot_round", "missing: not a saved round");
   r.only_keys(j, {"sweetspot_round", "course", "holes", "players", "format", "gimme_m", "auto_putt", "seed", "tees",
-                  "pin_set", "events"}, "");
+                  "pin_set", "events", "restarts", "cancelled"}, "");
   if (j["sweetspot_round"] != kVersion) r.fail("sweetspot_round", "version " + j["sweetspot_round"].dump() + " (allowed: 1)");
   SavedRound s;
   s.source = source;
@@ -167,6 +169,25 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
     const double k = r.number(j, "pin_set", CourseSetup::kPinSet);
     if (k != static_cast<int>(k)) r.fail("pin_set", "must be a whole number");
     s.setup.pin_set = static_cast<int>(k);
+  }
+  // The window's record (optional: a headless round's save and older saves have none).
+  static constexpr Range kCount{0.0, 1e6};
+  if (j.contains("restarts")) {
+    const auto& restarts = j["restarts"];
+    if (!restarts.is_array() || restarts.size() > static_cast<std::size_t>(s.holes))
+      r.fail("restarts", "a list of each hole's restarts, at most " + std::to_string(s.holes) + " (the round's holes)");
+    for (std::size_t h = 0; h < restarts.size(); ++h) {
+      const std::string at = "restarts[" + std::to_string(h) + "]";
+      if (!restarts[h].is_number() || restarts[h].get<double>() < kCount.min || restarts[h].get<double>() > kCount.max ||
+          restarts[h].get<double>() != std::floor(restarts[h].get<double>()))
+        r.fail(at, "must be a whole number in [0, 1000000]");
+      s.restarts.push_back(restarts[h].get<int>());
+    }
+  }
+  if (j.contains("cancelled")) {
+    const double c = r.number(j, "cancelled", kCount);
+    if (c != std::floor(c)) r.fail("cancelled", "must be a whole number");
+    s.cancelled = static_cast<int>(c);
   }
   const auto& events = r.at(j, "events", "");
   if (!events.is_array()) r.fail("events", "must be a list");

@@ -20,11 +20,18 @@ struct SavedRound {
   std::vector<GolfPlayer> players;
   GolfOptions options;
   std::vector<GolfEvent> events;
+  /// The window's own record of the round, which the turns do not hold: each hole's
+  /// restarts from the pause menu (the card's R marks) and the swings cancelled with Esc.
+  /// A save without them (`round --save`, older saves) has none.
+  std::vector<int> restarts;
+  int cancelled = 0;
   std::string source;               ///< where it was read from (for messages)
 };
 
-/// The save's JSON. `course` names the course as load_course() will find it again.
-nlohmann::json round_save_json(const GolfGroup& group, const std::string& course);
+/// The save's JSON. `course` names the course as load_course() will find it again;
+/// `restarts` and `cancelled` as SavedRound has them (the window's; none from `round`).
+nlohmann::json round_save_json(const GolfGroup& group, const std::string& course, const std::vector<int>& restarts = {},
+                               int cancelled = 0);
 /// Reads a save; InputError naming the file and the key (with the allowed values) when it is
 /// not one. Nothing is played yet: resume_round() does that.
 SavedRound read_round_save(const std::filesystem::path& path);

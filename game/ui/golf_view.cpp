@@ -289,7 +289,9 @@ void GolfView::save_round() {
   try {
     const GolfGroup& g = play_->group();
     write_file_atomic(options_.save_path,
-                      json_text(round_save_json(g, std::filesystem::absolute(g.course().source).string())) + "\n",
+                      json_text(round_save_json(g, std::filesystem::absolute(g.course().source).string(), play_->restarts(),
+                                                play_->cancelled())) +
+                          "\n",
                       OverInput::Allow);
     note("Round saved to " + options_.save_path + " (play --mode golf --resume FILE)");
     saved_turns_ = g.events().size();

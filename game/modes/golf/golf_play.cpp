@@ -71,6 +71,8 @@ GolfPlay::GolfPlay(const Assets& assets, Course course, GolfSetup setup)
       setup_(std::move(setup)),
       group_(assets, course_, setup_.players, setup_.options) {
   group_.replay(setup_.resume);
+  restarts_ = setup_.resume_restarts;
+  cancelled_ = setup_.resume_cancelled;
   begin_turn(0.0);
   if (group_.finished()) {
     stage_ = Stage::RoundOver;  // a saved round that was already over: its final card

@@ -28,8 +28,11 @@ struct GolfSetup {
   /// s: the calibrated delay from seeing the meter to the key arriving; the power and
   /// accuracy clicks (aimed at the marker) are judged that much earlier.
   double input_latency = 0.0;
-  /// A saved round's turns, replayed before play goes on (resume).
+  /// A saved round's turns, replayed before play goes on (resume), and what the window
+  /// kept of it besides (SavedRound): each hole's restarts and the swings cancelled.
   std::vector<GolfEvent> resume;
+  std::vector<int> resume_restarts;
+  int resume_cancelled = 0;
 };
 
 /// You against a bot of your skill in stroke play: the game's default round.

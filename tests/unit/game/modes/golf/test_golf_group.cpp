@@ -368,3 +368,30 @@ TEST_CASE("a saved round resumes to the same state and finishes bit for bit the 
   twice.replace(twice.find("\"sweetspot_round\""), 0, "\"seed\": 99, ");
   CHECK_THROWS_WITH(parse_round_save(twice, "save.json"), Catch::Contains("save.json") && Catch::Contains("round.seed is given twice"));
 }
+
+TEST_CASE("a save keeps the window's record of the round: each hole's restarts and the swings cancelled", "[modes][golf][save]") {
+  GolfGroup g(test::assets(), test::links(), {bot("tour")}, {});
+  for (int k = 0; k < 3; ++k) g.play_bot();
+  const std::string text = json_text(round_save_json(g, test::links().source.string(), {0, 2}, 5));
+  const SavedRound s = parse_round_save(text, "save.json");
+  CHECK(s.restarts == std::vector<int>{0, 2});
+  CHECK(s.cancelled == 5);
+  // A headless round's save (and an older one) has neither: none read.
+  nlohmann::json old = nlohmann::json::parse(text);
+  old.erase("restarts");
+  old.erase("cancelled");
+  const SavedRound none = parse_round_save(old.dump(), "save.json");
+  CHECK(none.restarts.empty());
+  CHECK(none.cancelled == 0);
+  // Bad values name the key and what is allowed.
+  nlohmann::json bad = nlohmann::json::parse(text);
+  bad["restarts"] = {0, 1, 0, 0};  // the links has 3 holes
+  CHECK_THROWS_WITH(parse_round_save(bad.dump(), "save.json"), Catch::Contains("save.json") && Catch::Contains("restarts") && Catch::Contains("at most 3"));
+  bad["restarts"] = {0, -1};
+  CHECK_THROWS_WITH(parse_round_save(bad.dump(), "save.json"), Catch::Contains("restarts[1]") && Catch::Contains("whole number"));
+  bad["restarts"] = {0, 1.5};
+  CHECK_THROWS_WITH(parse_round_save(bad.dump(), "save.json"), Catch::Contains("restarts[1]"));
+  bad = nlohmann::json::parse(text);
+  bad["cancelled"] = -2;
+  CHECK_THROWS_WITH(parse_round_save(bad.dump(), "save.json"), Catch::Contains("cancelled"));
+}

@@ -16,7 +16,9 @@
 #include "game/modes/replay.hpp"
 #include "game/rules/golf_scoring.hpp"
 #include "game/util/rng.hpp"
+#include "game/report/report.hpp"
 #include "game/report/round_json.hpp"
+#include "game/report/round_save.hpp"
 #include "physics/units.hpp"
 #include "physics/world.hpp"
 #include "support/ball_on_green.hpp"
@@ -264,6 +266,21 @@ TEST_CASE("restarting a hole puts the round back where the hole began", "[modes]
   play.update({at(IntentKind::Restart, t + 0.7)}, t + 0.8);
   CHECK(play.restarts(1) == 1);
   CHECK(play.message() == "Hole 2 restarted");
+  // Saved and resumed, the round keeps its R mark (the turns alone do not hold it).
+  {
+    GolfSetup again = solo("tour");
+    const SavedRound saved = parse_round_save(
+        json_text(round_save_json(play.group(), play.group().course().source.string(), play.restarts(), play.cancelled())), "save.json");
+    again.players = saved.players;
+    again.options = saved.options;
+    again.resume = saved.events;
+    again.resume_restarts = saved.restarts;
+    again.resume_cancelled = saved.cancelled;
+    const GolfPlay resumed(test::assets(), play.group().course(), again);
+    CHECK(resumed.restarts(1) == 1);
+    CHECK(resumed.restarts(0) == 0);
+    CHECK(resumed.cancelled() == play.cancelled());
+  }
   // And the printed card once the hole is played out, with its key (R beside the hole's
   // number, as the window's card has it); a card without restarts has neither.
   while (!play.group().finished()) {

@@ -132,8 +132,10 @@ void walk_off_limit(PlateAppearance& pa, const GameSituation& s, std::vector<int
   for (int h = 0; h < 3; ++h)
     if (pa.result == kHits[h] && took < h + 1) {
       pa.result = kHits[took - 1];
+      // The hit's name is all before " to " ("Ground-rule double to RF" is two words).
       const std::string words = pa.result == "single" ? "Single" : pa.result == "double" ? "Double" : "Triple";
-      pa.description = words + pa.description.substr(pa.description.find(' '));
+      const std::size_t where = pa.description.find(" to ");
+      pa.description = words + (where == std::string::npos ? std::string() : pa.description.substr(where));
     }
   pa.rbi = std::min(pa.rbi, needed);
 }

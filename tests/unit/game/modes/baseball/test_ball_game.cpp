@@ -645,3 +645,31 @@ TEST_CASE("a left-hander's pitches are a right-hander's mirrored: the same fligh
     CHECK(std::abs(right.types[i].horizontal_break) > 0.01);  // every type breaks some way
   }
 }
+
+TEST_CASE("a walk-off hit counts the bases the winning run took and is told as that hit", "[modes][baseball]") {
+  // Bottom of the 10th, tied, a runner (#3) on third: a ground-rule double scores him alone.
+  GameSituation s;
+  s.inning = 10;
+  s.bottom = true;
+  s.away_runs = s.home_runs = 4;
+  PlateAppearance pa;
+  pa.bases_before = {-1, -1, 3};
+  pa.result = "double";
+  pa.description = "Ground-rule double to RF";
+  pa.rbi = 2;
+  std::vector<int> scored{3, 7};
+  walk_off_limit(pa, s, scored);
+  CHECK(pa.result == "single");  // Rule 9.06(f): the winning runner took one base
+  CHECK(pa.description == "Single to RF");
+  CHECK(scored == std::vector<int>{3});
+  CHECK(pa.rbi == 1);
+  // From second on a triple: a double, its words kept after the hit's name.
+  pa.bases_before = {-1, 5, -1};
+  pa.result = "triple";
+  pa.description = "Triple to LF";
+  pa.rbi = 1;
+  scored = {5};
+  walk_off_limit(pa, s, scored);
+  CHECK(pa.result == "double");
+  CHECK(pa.description == "Double to LF");
+}

@@ -501,7 +501,7 @@ class CageView final : public ModeView {
       const float bottom = draw_banner(lines.first.c_str(), centre, beside ? 22.0f : panel_bottom + 14.0f, scale, lines.second.c_str());
       hud_bottom_ = std::max(hud_bottom_, static_cast<double>(bottom));
     }
-    if (options_.pitches > 0 && c.pitches_done() >= options_.pitches && c.stage() == Stage::Called)
+    if (options_.pitches > 0 && c.pitches_done() >= options_.pitches && c.stage() == Stage::Called && c.told())
       ++done_frames_;
   }
 

@@ -216,6 +216,10 @@ void BattingCage::advance(double t) {
     if (swung_too_soon_) call_text_ += "   (your swing came too soon: before the pitch)";
     if (pro_takes_) call_text_ = "The pro takes: " + call_text_;
   }
+  if (stage_ == Stage::Called && !told_ && t >= miss_told_at_) {
+    call_text_ = outcome_text_;
+    told_ = true;
+  }
   if (stage_ == Stage::Batted) {
     // The call comes when the play is made: a fielder has the ball (a catch, a hit fielded
     // off the wall) or a home run lands; the ball may roll on in the corner for seconds more.
@@ -321,6 +325,15 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   }
   // What the call will say once the ball is down (a batted ball's outcome, counted), or says now.
   swings_.back().said = stage_ == Stage::Batted ? outcome_text_ : call_text_;
+  // A miss before the ball reaches the plate: the strike (a strikeout's, a walk-off's
+  // count) is called when it gets there; until then the swing is all there is to say.
+  const double arrives = released_at_ + pitch_.flight_time / time_scale_;
+  if (!last_.result.contact && t < arrives) {
+    outcome_text_ = call_text_;
+    call_text_ = by_pro ? "The pro swings and misses" : "Swing and a miss";
+    told_ = false;
+    miss_told_at_ = arrives;
+  }
 }
 
 BattingCage::Figures BattingCage::figures() const { return figures_of(swings_, carries_as_played_, swings_told()); }
@@ -441,7 +454,7 @@ void BattingCage::apply(const Intent& in) {
       if (stage_ == Stage::Pitching) break;
       // A ball in play still in the air is called first (the switch would clear its record
       // and its call unseen); the press is answered, not dropped.
-      if (stage_ == Stage::Batted && !told_) {
+      if (!told_) {
         constexpr std::string_view kWait = "   (A: once this ball is called)";
         if (!call_text_.ends_with(kWait)) call_text_ += kWait;
         break;
@@ -472,7 +485,12 @@ void BattingCage::apply(const Intent& in) {
         }
         break;
       }
-      if (stage_ != Stage::Pitching) {
+      if (stage_ == Stage::Called && !told_) {
+        // A second press while the pitch he missed is still on its way: one swing a pitch,
+        // and the next pitch only once this one is called.
+        constexpr std::string_view kOne = "   (one swing a pitch)";
+        if (!call_text_.ends_with(kOne)) call_text_ += kOne;
+      } else if (stage_ != Stage::Pitching) {
         // Space between pitches calls for the next one, as P does.
         next_pitch(t);
       } else if (in.kind == IntentKind::Swing && pitch_clock(t) < 0.0) {
@@ -503,6 +521,7 @@ void BattingCage::apply(const Intent& in) {
       // Between pitches B calls for one; the pro swings at it when it reaches him (advance),
       // unless it is already past him.
       if (bot_armed_ || (pro_takes_ && stage_ == Stage::Pitching)) break;  // he has this pitch already
+      if (stage_ == Stage::Called && !told_) break;  // the missed pitch is called first
       if (stage_ != Stage::Pitching) next_pitch(t);
       else if (pitch_clock(t) > pitch_.flight_time) break;
       if (live_) {

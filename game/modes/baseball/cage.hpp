@@ -105,6 +105,10 @@ class BattingCage {
   /// The swings whose outcome the player has been told: all but a batted ball still in the
   /// air (the HUD's session figures would otherwise give away a hit before its call).
   std::size_t swings_told() const { return swings_.size() - (told_ ? 0 : 1); }
+  /// The last swing's outcome has been called: a batted ball's once the play is made, a
+  /// miss once the pitch reaches the plate (a swing through it early is not yet a strike
+  /// the umpire has seen, and the ball is still on its way).
+  bool told() const { return told_; }
   const std::string& call_text() const { return call_text_; }
   /// The player's own swings as he has been told them (the pro's, B, only counted): the
   /// panel's figures and the exit report's. Contact counts fouls (a foul is contact); the
@@ -176,8 +180,10 @@ class BattingCage {
   std::vector<double> carries_as_played_;
   std::vector<SwingRecord> swings_;
   std::string call_text_;
-  /// A batted ball's outcome, shown once its flight is over (until then its launch).
+  /// A batted ball's outcome, shown once its flight is over (until then its launch); a
+  /// miss's call, shown once the pitch reaches the plate.
   std::string outcome_text_;
+  double miss_told_at_ = 0.0;  ///< when a miss's call is due (mode time)
   /// Whether the last swing's outcome has been called; the at-bats before it while not.
   bool told_ = true;
   AtBats at_bats_before_;

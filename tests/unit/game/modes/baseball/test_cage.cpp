@@ -60,6 +60,11 @@ TEST_CASE("a swing's timing is its key press against the pitch's arrival, at any
       REQUIRE(cage.swings().size() == 1);
       CHECK(cage.swings().back().timing_ms == Approx(late_ms).margin(1e-6));
       CHECK_FALSE(cage.swings().back().by_pro);
+      // A miss is called when the pitch reaches the plate, at any frame rate.
+      if (!cage.swings().back().result.contact) {
+        while (!cage.told()) cage.update({}, now += dt);
+        CHECK(now < arrive + dt + 1e-9);
+      }
       // The call gives the press's error as the player lived it: the pitch plays at half
       // speed, so 20 ms of pitch time early was his key 40 ms early.
       // 20 ms early the bat has turned ~53° past square: the ball crosses its line past the
@@ -258,6 +263,38 @@ TEST_CASE("a swing pressed during the windup is refused in words; strike three s
   }
   REQUIRE(cage.at_bats().strikeouts == 1);
   CHECK_THAT(cage.call_text(), Catch::Matchers::StartsWith("Strikeout swinging: early by 600 ms"));
+}
+
+TEST_CASE("a swing through a pitch early is called a strike when the pitch reaches the plate, not before", "[modes][baseball]") {
+  BattingCage cage(test::assets(), 3);
+  cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);
+  double now = 1.0;
+  cage.update({at(IntentKind::Pitch, now)}, now);
+  const double arrive = now + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
+  const double swung = arrive - 0.3 / BattingCage::kPitchTimeScale;  // 300 ms of pitch time early
+  cage.update({at(IntentKind::Swing, swung)}, swung + 0.01);
+  REQUIRE(cage.swings().size() == 1);
+  REQUIRE_FALSE(cage.swings().back().result.contact);
+  // The ball is still on its way: the swing is said, the strike and the count wait for it.
+  CHECK_FALSE(cage.told());
+  CHECK(cage.call_text() == "Swing and a miss");
+  CHECK(cage.count().strikes == 0);
+  CHECK(cage.board()->outs == 0);
+  // A second press meanwhile is no second swing and no next pitch.
+  cage.update({at(IntentKind::Swing, swung + 0.1)}, swung + 0.11);
+  CHECK(cage.swings().size() == 1);
+  CHECK(cage.stage() == BattingCage::Stage::Called);
+  CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith("(one swing a pitch)"));
+  // At the plate: the call, with how he missed, and the strike counted.
+  cage.update({}, arrive - 0.005);
+  CHECK_FALSE(cage.told());
+  cage.update({}, arrive + 0.005);
+  CHECK(cage.told());
+  CHECK_THAT(cage.call_text(), Catch::Matchers::StartsWith("Swinging strike: early by 600 ms"));
+  CHECK(cage.count().strikes == 1);
+  // And Space asks for the next pitch again.
+  cage.update({at(IntentKind::Swing, arrive + 0.5)}, arrive + 0.5);
+  CHECK(cage.stage() == BattingCage::Stage::Pitching);
 }
 
 TEST_CASE("Space pressed a beat after a pitch went by is a late swing, not a call for the next pitch", "[modes][baseball]") {

@@ -44,23 +44,24 @@ std::string GolfUnits::course(double m, double longest) const { return longest <
 constexpr double kShareNoted = 2.7;
 
 std::string why_from_here(double stock, bool measured, double here, double calm, const GolfUnits& units, const char* ground) {
+  // Each share is the difference of two figures as the panel shows them (whole yards or
+  // metres), so the named shares add up to "from here" less "stock" however each rounds.
+  const auto shown = [&](double m) { return std::lround(units.imperial ? m_to_yd(m) : m); };
   std::string out;
-  const auto share = [&](const std::string& what, double d, double floor) {
-    if (std::abs(d) < floor) return;
-    out += (out.empty() ? ": " : ", ") + what + (d >= 0.0 ? " +" : " -") + units.distance(std::abs(d));
+  const auto share = [&](const std::string& what, long d) {
+    if (d == 0) return;
+    out += (out.empty() ? ": " : ", ") + what + (d > 0 ? " +" : " -") + std::to_string(std::abs(d)) + (units.imperial ? " yd" : " m");
   };
   if (std::isnan(calm)) {  // no still-air flight to part them by: the two together
-    if (!measured) share(std::string("wind, ") + ground, here - stock, kShareNoted);
+    if (!measured && std::abs(here - stock) >= kShareNoted) share(std::string("wind, ") + ground, shown(here) - shown(stock));
     return out;
   }
-  const double wind = here - calm, ground_share = measured ? 0.0 : calm - stock;
-  // Once one share is named, the other is too from a whole unit up, so the line adds up
-  // ("stock 78 yd; from here 68 yd: wind -2 yd, lie and slope -6 yd", not the ground's alone).
-  const bool named = std::abs(wind) >= kShareNoted || std::abs(ground_share) >= kShareNoted;
-  const double unit = units.imperial ? 0.9144 : 1.0;
-  const double floor = named ? unit : kShareNoted;
-  share("wind", wind, floor);
-  if (!measured) share(ground, ground_share, floor);
+  // Once one share is worth naming, the other is too from a whole unit up, so the line adds
+  // up ("stock 78 yd; from here 68 yd: wind -2 yd, lie and slope -8 yd", not the ground's alone).
+  const bool named = std::abs(here - calm) >= kShareNoted || (!measured && std::abs(calm - stock) >= kShareNoted);
+  if (!named) return out;
+  share("wind", shown(here) - shown(calm));
+  if (!measured) share(ground, shown(calm) - shown(stock));
   return out;
 }
 

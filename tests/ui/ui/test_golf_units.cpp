@@ -55,8 +55,15 @@ TEST_CASE("the caddie's read in a golfer's words: the break in inches and cups, 
 
 TEST_CASE("the club line says why its carry from here is not the bag's: the wind's share and the ground's", "[ui][golf]") {
   const GolfUnits yards{true};
-  // 200 m in the bag, 195 m in still air from this lie (5 m to the ground), 205 m with the wind.
-  CHECK(why_from_here(200.0, false, 205.0, 195.0, yards) == ": wind +11 yd, lie and slope -5 yd");
+  // 200 m in the bag, 195 m in still air from this lie (5 m to the ground), 205 m with the wind:
+  // shown as 219 yd and 224 yd, the shares of the shown figures (213 yd in still air), so
+  // they add up (a share of its own metres rounded would say -5).
+  CHECK(why_from_here(200.0, false, 205.0, 195.0, yards) == ": wind +11 yd, lie and slope -6 yd");
+  // The play-test's 3-wood: stock 226 yd, 191 from here, which the shares must make.
+  const double y = 0.9144;
+  CHECK(why_from_here(226.4 * y, false, 190.6 * y, 212.3 * y, yards) == ": wind -21 yd, lie and slope -14 yd");
+  const GolfUnits metres{false};
+  CHECK(why_from_here(155.4, false, 149.6, 153.4, metres) == ": wind -3 m, lie and slope -2 m");  // 155 - 3 - 2 = 150
   // Into the wind from a perfect lie: only the wind's share.
   CHECK(why_from_here(200.0, false, 190.0, 200.5, yards) == ": wind -11 yd");
   // Once one share is named the other is too from a yard up, so the figures add up: 78 yd in

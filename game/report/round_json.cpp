@@ -301,7 +301,9 @@ std::string group_table(const GolfGroup& g, const std::vector<int>& restarts) {
     std::string line = cell;
     for (std::size_t p = 0; p < n; ++p) {
       const PlayerStanding::Sum nine = s.players[p].sum(from, to);
-      line += "  " + pad(std::to_string(nine.strokes) + " (" + std::to_string(nine.putts) + ")", 14);
+      std::string v = std::to_string(nine.strokes) + " (" + std::to_string(nine.putts) + ")";
+      if (s.format == GolfFormat::Stableford) v += " " + std::to_string(nine.points) + "pt";  // each nine's points, as its holes'
+      line += "  " + pad(v, 14);
     }
     return line + "\n";
   };

@@ -899,7 +899,8 @@ void draw_golf_card(const GolfPlay& play, int w, bool final) {
       for (std::size_t p = 0; p < n; ++p) {
         ImGui::TableNextColumn();
         const PlayerStanding::Sum nine = s.players[p].sum(from, to);
-        ImGui::Text("%d (%d)", nine.strokes, nine.putts);
+        if (s.format == GolfFormat::Stableford) ImGui::Text("%d (%d) %dpt", nine.strokes, nine.putts, nine.points);
+        else ImGui::Text("%d (%d)", nine.strokes, nine.putts);
       }
       if (s.match || s.skins) ImGui::TableNextColumn();
     };

@@ -139,6 +139,25 @@ for name, nine in (("out", range(0, 9)), ("in", range(9, 18))):
         assert int(strokes) == sum(holes[i]["strokes"] for i in nine), (row, p)
         assert int(putts) == sum(holes[i]["putts"] for i in nine), (row, p)
 PY
+# Stableford: each nine's points beside its strokes, from the holes' points, and the two
+# nines make the points row.
+"$bin" round --bot scratch --bot beginner --handicap 2 --handicap 30 --format stableford --seed 7 >"$tmp/sf.txt"
+"$bin" round --bot scratch --bot beginner --handicap 2 --handicap 30 --format stableford --seed 7 --json >"$tmp/sf.json"
+python3 - "$tmp/sf.txt" "$tmp/sf.json" <<'PY' || fail "stableford nines"
+import json, re, sys
+text = open(sys.argv[1]).read().splitlines()
+j = json.load(open(sys.argv[2]))
+got = [0, 0]
+for name, nine in (("out", range(0, 9)), ("in", range(9, 18))):
+    row = [l for l in text if l.startswith(name + " ")][0]
+    pts = [int(x) for x in re.findall(r"\((?:\d+)\) (\d+)pt", row)]
+    assert len(pts) == 2, row
+    for p in range(2):
+        assert pts[p] == sum(j["players"][p]["holes"][i]["points"] for i in nine), (row, p)
+        got[p] += pts[p]
+points = [l for l in text if l.startswith("points ")][0].split()[1:]
+assert [int(x) for x in points] == got, (points, got)
+PY
 
 # A script that runs out mid-round with no bot to play on is an error naming the file, not
 # a card with unfinished holes and exit 0.

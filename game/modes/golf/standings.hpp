@@ -38,13 +38,15 @@ struct PlayerStanding {
     return out;
   }
 
-  /// Strokes and putts over holes [from, to) that have a score: a card's nine (Out, In).
+  /// Strokes and putts over holes [from, to) that have a score, and the stableford points of
+  /// every hole in it (a hole picked up scores 0): a card's nine (Out, In).
   struct Sum {
-    int strokes = 0, putts = 0;
+    int strokes = 0, putts = 0, points = 0;
   };
   Sum sum(std::size_t from, std::size_t to) const {
     Sum out;
     for (std::size_t h = from; h < to && h < scored.size(); ++h) {
+      if (h < points.size()) out.points += points[h];
       if (!scored[h]) continue;
       out.strokes += gross[h];
       out.putts += putts[h];

@@ -92,6 +92,16 @@ ModeRegistry play_modes(const Assets& assets, const PlayOptions& o, std::ostream
   };
 }
 
+void check_play_course(const Assets& assets, const PlayOptions& o) {
+  try {
+    (void)play_course(assets, o);
+  } catch (const InputError& e) {
+    // The tee and pin sets' refusals name their flags; the course's is the course's.
+    if (std::string(e.what()).starts_with("--")) throw;
+    throw InputError(std::string("--course: ") + e.what());
+  }
+}
+
 void check_play_mode(const Assets& assets, const PlayOptions& o) {
   std::ostringstream quiet;  // building the registry only names the modes; nothing is made yet
   std::string names;

@@ -13,5 +13,8 @@ ModeRegistry play_modes(const Assets& assets, const PlayOptions& o, std::ostream
 
 /// Refuses (InputError listing the registry's names) a --mode that is not one of them.
 void check_play_mode(const Assets& assets, const PlayOptions& o);
+/// Loads the golf course the options name (--course, --tees, --pins, --holes), so a wrong one
+/// is refused at start, display or not, not when Tab first opens golf.
+void check_play_course(const Assets& assets, const PlayOptions& o);
 
 }  // namespace sweetspot

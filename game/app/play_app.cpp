@@ -98,8 +98,7 @@ LoopStats run_window(const Assets& assets, const PlayOptions& given, std::ostrea
   wo.width = o.width;
   wo.height = o.height;
   wo.vsync = o.frames == 0;
-  if (o.quality != "auto" && o.quality != "low" && o.quality != "high")
-    throw InputError("--quality " + o.quality + ": allowed auto, low, high");
+  check_quality(o.quality);
   GameWindow win(wo);
   RendererOptions ro;
   ro.shadows = o.quality == "high" ? 1 : o.quality == "low" ? 0 : -1;
@@ -114,6 +113,10 @@ LoopStats run_window(const Assets& assets, const PlayOptions& given, std::ostrea
 }
 
 }  // namespace
+
+void check_quality(const std::string& quality) {
+  if (quality != "auto" && quality != "low" && quality != "high") throw InputError("--quality " + quality + ": allowed auto, low, high");
+}
 
 int run_play_window(const Assets& assets, const PlayOptions& o, std::ostream& out) {
   const LoopStats stats = run_window(assets, o, out);

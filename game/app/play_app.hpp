@@ -53,6 +53,8 @@ struct PlayOptions {
 /// mean frame time on exit. Throws InputError for a bad scenario, std::runtime_error when
 /// no window can be opened.
 int run_play_window(const Assets& assets, const PlayOptions& options, std::ostream& out);
+/// Refuses a --quality other than auto, low and high (InputError naming them).
+void check_quality(const std::string& quality);
 
 /// A window mode's frame time (ms): `mode` (lab: golf/driver with its panels; golf: the first
 /// hole of Sweetspot National as it opens; range; baseball: the cage) at width x height,

@@ -1,4 +1,5 @@
 // `sweetspot play [SCENARIO]`: the game window, or the shot headless when there is no display.
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -69,7 +70,9 @@ RunFn setup_play(CLI::App& sub) {
   for (const char* name : {"--course", "--holes", "--tees", "--pins", "--bot", "--format", "--human", "--handicap", "--gimme",
                            "--auto-putt", "--bag"})
     set_by_save.push_back(sub.get_option(name));
-  return [o, window_only, set_by_save](const Assets& assets) -> int {
+  std::vector<const CLI::Option*> course_options;
+  for (const char* name : {"--course", "--tees", "--pins", "--holes"}) course_options.push_back(sub.get_option(name));
+  return [o, window_only, set_by_save, course_options](const Assets& assets) -> int {
     check_play_mode(assets, *o);  // first: an unknown mode is that, with or without a display
     if (!o->screenshot.empty()) check_png_output(o->screenshot, "--screenshot");  // before the frames run
     // The golf options are checked now, not when Tab first opens the golf mode.
@@ -81,6 +84,10 @@ RunFn setup_play(CLI::App& sub) {
         throw InputError(std::string(flag) + ": " + e.what());
       }
     };
+    check_quality(o->quality);
+    // A course, tee set or pin set that is not there is named now, not when golf opens.
+    if (o->resume.empty() && std::any_of(course_options.begin(), course_options.end(), [](const CLI::Option* c) { return c->count() > 0; }))
+      check_play_course(assets, *o);
     as_flag("--format", [&] { golf_format(o->format); });
     as_flag("--difficulty", [&] { meter_difficulty(o->difficulty); });
     as_flag("--skill", [&] { golfer_skill(o->skill); });
@@ -98,7 +105,7 @@ RunFn setup_play(CLI::App& sub) {
       if (h.empty() || h.size() > 24) throw InputError("--human '" + h + "': a name of 1 to 24 characters");
     if (o->handicaps.size() > 1 + others)
       throw InputError("--handicap: " + std::to_string(o->handicaps.size()) + " given for " + std::to_string(1 + others) +
-                       " players (yours first, then each friend's and each bot's)");
+                       (others == 0 ? " player (yours)" : " players (yours first, then each friend's and each bot's)"));
     for (const int hc : o->handicaps)
       if (hc < 0 || hc > kMaxHandicap) throw InputError("--handicap " + std::to_string(hc) + " is out of range (allowed [0, 54])");
     // Where S and F12 write is checked now, not when the player presses them mid-round.

@@ -108,6 +108,9 @@ GolfGroup new_group(const Assets& assets, const RoundOptions& o, SavedRound& res
   if (options.format == GolfFormat::Match && players.size() != 2)
     throw InputError("--format match: match play is between two players (--bot twice, or --swings and one --bot), not " +
                      std::to_string(players.size()));
+  if (options.format == GolfFormat::Skins && (players.size() < 2 || players.size() > 4))
+    throw InputError("--format skins: skins is played by 2 to 4 players (--bot two to four times, or --swings and --bot), not " +
+                     std::to_string(players.size()));
   give_bag(assets, o, players);
   return GolfGroup(assets, course, players, options);
 }

@@ -105,6 +105,12 @@ expect_bad "usage error on one line" "--world|run with --help" -- flight --ball-
 [ "$(wc -l < "$tmp/err")" = 1 ] || fail "a usage error takes $(wc -l < "$tmp/err") lines"
 expect_bad "play's game options headless" "--mode needs the game window" -- play --mode golf
 expect_bad "play: a negative gimme" "--gimme|-1" -- play --mode golf --gimme -1
+expect_bad "round: skins alone" "--format skins|2 to 4 players|not 1" -- round --format skins --bot tour
+# The course, its tee set and the quality are checked at start, display or not.
+expect_bad "play: an unknown course" "--course: unknown course 'nope'|national" -- play --mode golf --course nope
+expect_bad "play: an unknown tee set" "--tees|'purple'|blue, white, red" -- play --mode golf --tees purple
+expect_bad "play: an unknown quality" "--quality ultra|auto, low, high" -- play --quality ultra
+expect_bad "play: one handicap too many" "--handicap: 2 given for 1 player (yours)" -- play --mode golf --bot none --handicap 3 --handicap 4
 expect_bad "play: a save into a missing folder" "--save|does not exist" -- play --mode golf --save "$tmp/no/such/r.json"
 expect_bad "play: screenshots into a missing folder" "--shots-dir|no such folder" -- play --shots-dir "$tmp/no/such"
 expect_bad "play: a resumed round's course set again" "--resume|--course cannot change" -- play --mode golf --resume "$tmp/none.json" --course links

@@ -29,8 +29,9 @@ struct DerbyOptions {
   static constexpr Range kGames{1.0, 1000.0};
 };
 
-int run_game(const Assets& assets, const DerbyOptions& o, bool session_flags) {
-  if (session_flags) throw InputError("--outs, --swings: a game counts innings (--innings)");
+// `session_flag`: a session's --outs or --swings as given, which a game does not take.
+int run_game(const Assets& assets, const DerbyOptions& o, const std::string& session_flag) {
+  if (!session_flag.empty()) throw InputError(session_flag + ": a game counts innings (--innings)");
   if (o.session.left_handed) throw InputError("--left: a game's lineups mix left- and right-handed batters");
   check_range("--innings", o.innings, GameOptions::kInnings, "");
   check_range("--games", o.games, DerbyOptions::kGames, "");
@@ -103,7 +104,7 @@ RunFn setup_derby(CLI::App& sub) {
       throw InputError("--mode " + mode + ": unknown mode (allowed: derby, at-bat, practice, game)");
     if (mode != "game" && (innings->count() > 0 || games->count() > 0))
       throw InputError(std::string(innings->count() > 0 ? "--innings" : "--games") + ": only a game has innings and games (--mode game)");
-    if (mode == "game") return run_game(assets, *o, outs->count() + swings->count() > 0);
+    if (mode == "game") return run_game(assets, *o, outs->count() > 0 ? "--outs" : swings->count() > 0 ? "--swings" : "");
     const bool known = mode == "derby" || mode == "at-bat" || mode == "practice";
     if (known && outs->count() > 0 && mode != "derby")
       throw InputError("--outs: only the derby counts outs (--mode " + o->session.mode + ")");

@@ -81,6 +81,7 @@ expect_bad "round --balls in stroke play" "--balls|ctp or long-drive" -- round -
 expect_bad "derby --swings" "--swings|practice" -- derby --swings 5
 expect_bad "practice --outs" "--outs|only the derby" -- derby --mode practice --outs 5
 expect_bad "derby --outs range" "--outs = 0|[1, 50]" -- derby --outs 0
+expect_bad "game --swings" "--swings: a game counts innings" -- derby --mode game --swings 5
 expect_bad "render partial launch" "--launch-angle is required" -- render --ball-speed 100mph -o "$tmp/x.png"
 [ ! -e "$tmp/x.png" ] || fail "render wrote a PNG for a partial launch"
 scenario half_launch.toml 'sport = "golf"\n[launch]\nball_speed = "100mph"\n'

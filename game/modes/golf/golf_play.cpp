@@ -394,7 +394,8 @@ const GolfPlay::CarryTable& GolfPlay::carry_table(const std::string& club) const
   static const CarryTable none;
   const GolfRound& r = round();
   if (r.finished() || club == "putter") return none;
-  const StrokeKey key = key_for(club, false);
+  // Along the aim: turned into a tree, every power's carry is the tree's.
+  const StrokeKey key = key_for(club);
   if (carry_table_ && carry_table_->key == key) return *carry_table_;
   CarryTable t{key, {}, {}};
   StrokeInput in;

@@ -891,6 +891,36 @@ TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", 
   CHECK(play.carry_here(play.club()) == play.round().simulate(in).trajectory.summary.carry_m);
 }
 
+TEST_CASE("the meter's carry scale is the aim's: turned back at the tree, it reads the tree", "[modes][golf]") {
+  Course course = load_course(test::assets(), "national");
+  course.holes = {course.holes[8]};
+  SurfaceContact hit;
+  REQUIRE(ground_under(*course.holes[0].world->world, -307.4, -473.5, 400.0, 420.0, &hit));
+  course.holes[0].tee = hit.point;
+  GolfPlay play(test::assets(), course, solo("amateur"));
+  const std::string club = play.club();
+  // Along the caddie's line, clear of the tree: the scale's full swing is the stroke's carry.
+  const double clear = play.carry_at_power(club, 1.0);
+  CHECK(clear == Approx(play.carry_here(club)));
+  // Aimed back at the flag, the same club strikes the tree ~15 m out: the scale says so.
+  const double a = play.aim();
+  const int steps = static_cast<int>(std::lround(std::abs(a) / GolfPlay::kAimStep));
+  Intent turn = at(a > 0.0 ? IntentKind::AimLeft : IntentKind::AimRight, 1.0);
+  turn.param = steps;
+  play.update({turn}, 1.0);
+  REQUIRE(std::abs(play.aim()) < GolfPlay::kAimStep);
+  StrokeInput at_flag;
+  at_flag.club = club;
+  at_flag.aim = play.aim();
+  REQUIRE(play.round().first_touch_in_a_tree(play.round().simulate(at_flag).trajectory.summary));
+  CHECK(play.carry_at_power(club, 1.0) < 0.5 * clear);
+  // And back along the caddie's line, the clear carry again.
+  Intent back = at(a > 0.0 ? IntentKind::AimRight : IntentKind::AimLeft, 2.0);
+  back.param = steps;
+  play.update({back}, 2.0);
+  CHECK(play.carry_at_power(club, 1.0) == Approx(play.carry_here(club)));
+}
+
 TEST_CASE("beside a row of trees in a crosswind the caddie's line clears them when the swing is a little off", "[modes][golf]") {
   // The window's `play --mode golf --bot none --seed 3`: the caddie's drive on the National's
   // 1st stops in the right rough ~178 yd out, trees along the right and the wind (22 mph)

@@ -235,6 +235,10 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   // In a small window (the game allows 640 px) at most 42 % of its width, so the golfer and
   // the hole stay in view; its lines wrap instead.
   const float most = std::max(280.0f, 0.42f * ImGui::GetIO().DisplaySize.x);
+  // Under 600 px of height (the game allows 480) the panel keeps to what its rows do not
+  // already say, or its last lines run under the meter's caption.
+  constexpr float kShortWindow = 600.0f;
+  const bool short_window = ImGui::GetIO().DisplaySize.y < kShortWindow;
   ImGui::SetNextWindowSize(ImVec2(std::min(putting_view ? 345.0f : 420.0f, most), 0), ImGuiCond_Always);
   ImGui::Begin("Play", nullptr, kFixed);
   const GolfPlay::Stage stage = play.stage();
@@ -244,19 +248,20 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     // The hole on screen: the card of one just finished names it, not the next.
     const CourseHole& hole = g.course().holes[play.hole_shown()];
     const CourseSetup& setup = g.course().setup;
+    // Wrapped, as every line of the panel: a narrow window's panel cut "gimme 23 in" to "gi".
     if (!setup.tees.empty() || setup.pin_set > 1)
-      ImGui::Text("%s   %s play   %s tees   pin set %d", g.course().name.c_str(), to_string(g.options().format),
-                  setup.tees.empty() ? "own" : setup.tees.c_str(), setup.pin_set);
+      ImGui::TextWrapped("%s   %s play   %s tees   pin set %d", g.course().name.c_str(), to_string(g.options().format),
+                         setup.tees.empty() ? "own" : setup.tees.c_str(), setup.pin_set);
     else
-      ImGui::Text("%s   %s play", g.course().name.c_str(), to_string(g.options().format));
+      ImGui::TextWrapped("%s   %s play", g.course().name.c_str(), to_string(g.options().format));
     // A gimme's reach, rounded down (0.6 m is "23 in", not the "2 ft" a 0.62 m putt also reads).
     char gimme[40] = "";
     if (const double m = g.options().gimme_m; m > 0.0) {
       if (units.imperial) std::snprintf(gimme, sizeof gimme, "   gimme %.0f in", std::floor(m / 0.0254 + 1e-9));
       else std::snprintf(gimme, sizeof gimme, "   gimme %.0f cm", std::floor(100.0 * m + 1e-9));
     }
-    ImGui::Text("Hole %d   Par %d   %s   Index %d%s", hole.number, hole.par, units.distance(hole.length()).c_str(),
-                hole.stroke_index, gimme);
+    ImGui::TextWrapped("Hole %d   Par %d   %s   Index %d%s", hole.number, hole.par, units.distance(hole.length()).c_str(),
+                       hole.stroke_index, gimme);
   }
   if (stage == GolfPlay::Stage::Flyover) {
     ImGui::Separator();
@@ -510,12 +515,14 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     ImGui::Separator();
     ImGui::TextWrapped("%s", play.message().c_str());
     // Where another player's ball stopped is in his row of the group's lines above: in the
-    // putting view, whose narrow panel must end above the golfer's head, not said twice.
-    const bool others_in_rows = putting_view && group && play.human_turn() && play.shooter() != play.player();
+    // putting view, whose narrow panel must end above the golfer's head, and in a short
+    // window, whose panel must end above the meter's caption, not said twice.
+    const bool others_in_rows = (putting_view || short_window) && group && play.human_turn() && play.shooter() != play.player();
     if (play.message_is_result() && !others_in_rows) at_rest(play.last_record(), play.last_rest_lie());
   }
-  // On your turn, your own last stroke on this hole, when somebody else has played since.
-  if (!in_air && play.human_turn() && play.shooter() != play.player()) {
+  // On your turn, your own last stroke on this hole, when somebody else has played since (in
+  // a short window your row of the group's lines says where it lies).
+  if (!in_air && play.human_turn() && play.shooter() != play.player() && !(short_window && group)) {
     if (const GolfPlay::OwnLast* mine = play.own_last(play.player())) {
       ImGui::Separator();
       ImGui::TextWrapped("Your last: %s", mine->message.c_str());
@@ -785,12 +792,13 @@ std::string full_swing_caption(const std::optional<MeterClock>& meter, double no
 
 void draw_meter_caption(const MeterBar& bar, const std::string& text) {
   ImDrawList* dl = ImGui::GetForegroundDrawList();
-  // Within the window: moved left when it runs past the right edge, and cut in two at a
-  // clause break when it is wider than the window (a putt's caption in an 800 px window).
+  // Over the bar: cut in two at a clause break when it is wider than the bar (a chip's
+  // caption ran 1035 px over a 560 px bar, out to a 1280 px window's edge), and moved left
+  // when it still runs past the window's right edge.
   const float window = ImGui::GetIO().DisplaySize.x;
   const auto width = [](std::string_view s) { return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x; };
   std::pair<std::string, std::string> lines{text, ""};
-  if (width(text) > window - 16.0f) lines = split_in_two_lines(text, width);
+  if (width(text) > std::min(bar.bw + 40.0f, window - 16.0f)) lines = split_in_two_lines(text, width);
   const float line = ImGui::GetTextLineHeight();
   const float wide = std::max(width(lines.first), width(lines.second));
   const float x = std::max(8.0f, std::min(bar.x0, window - 8.0f - wide));

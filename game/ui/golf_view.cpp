@@ -193,9 +193,13 @@ class GolfView final : public ModeView {
   TapQuiet after_taps_;  // the calibration's taps that run on past its end
   int done_frames_ = 0;
   // Every key on the first hole, then the few a stroke needs; K switches (held for the round).
+  // In a window under kAllKeysHeight the full list (five lines) would run the panel down
+  // into the meter's caption (at 480 px its last lines sat under it): the few from the start.
+  static constexpr int kAllKeysHeight = 600;  // px
   std::optional<bool> all_keys_;
+  int view_height_ = kAllKeysHeight;
   Eigen::Vector4f hud_box_ = Eigen::Vector4f::Zero();  // the play panel, as last drawn (x0, y0, x1, y1 px)
-  bool all_keys() const { return all_keys_.value_or(play_->group().hole_index() == 0); }
+  bool all_keys() const { return all_keys_.value_or(play_->group().hole_index() == 0 && view_height_ >= kAllKeysHeight); }
 };
 
 void GolfView::view_keys(const std::vector<KeyPress>& keys) {
@@ -589,6 +593,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
   play_->update(golf_intents(keys), in.now);
   const GolfPlay::Stage stage = play_->stage();
   const int w = in.width, h = in.height;
+  view_height_ = h;
   const bool flying = stage == GolfPlay::Stage::Flying;
   // The ball's rest stays on screen a moment before the next player's view.
   // (A hole's end shows its card at once: the card stands over the green it was played to.)

@@ -452,6 +452,7 @@ class CageView final : public ModeView {
     }
     float panel_bottom = 0.0f;
     std::optional<std::pair<float, float>> chart_x;  // the spray chart's left and right edges, if drawn
+    view_height_ = h;
     if (!panels_hidden_) {
       panel_bottom = draw_stats(c, w, h, all_keys(), pitch_by, !in.paused, &chart_x);
     } else {
@@ -511,10 +512,14 @@ class CageView final : public ModeView {
   std::unique_ptr<ShotScene> scene_;
   int done_frames_ = 0;
   bool panels_hidden_ = false;  ///< H: the HUD panel and the spray chart out of the way
-  /// Every key for the first few swings, then the few a pitch needs; K switches (held on).
+  /// Every key for the first few swings (in a window kAllKeysMinHeight tall), then the few a
+  /// pitch needs; K switches (held on).
   std::optional<bool> all_keys_;
   static constexpr std::size_t kSwingsWithAllKeys = 5;
-  bool all_keys() const { return all_keys_.value_or(cage_->swings().size() < kSwingsWithAllKeys); }
+  int view_height_ = kAllKeysMinHeight;
+  bool all_keys() const {
+    return all_keys_.value_or(cage_->swings().size() < kSwingsWithAllKeys && view_height_ >= kAllKeysMinHeight);
+  }
   double hud_bottom_ = 0.0;  ///< px, the lowest the HUD panel and the call reached last frame
   Stage drawn_stage_ = Stage::Ready;  ///< the model's stage the last frame drew
 };

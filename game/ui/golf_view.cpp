@@ -192,14 +192,12 @@ class GolfView final : public ModeView {
   std::optional<LatencyCalibration> calibration_;
   TapQuiet after_taps_;  // the calibration's taps that run on past its end
   int done_frames_ = 0;
-  // Every key on the first hole, then the few a stroke needs; K switches (held for the round).
-  // In a window under kAllKeysHeight the full list (five lines) would run the panel down
-  // into the meter's caption (at 480 px its last lines sat under it): the few from the start.
-  static constexpr int kAllKeysHeight = 600;  // px
+  // Every key on the first hole (in a window kAllKeysMinHeight tall), then the few a stroke
+  // needs; K switches (held for the round).
   std::optional<bool> all_keys_;
-  int view_height_ = kAllKeysHeight;
+  int view_height_ = kAllKeysMinHeight;
   Eigen::Vector4f hud_box_ = Eigen::Vector4f::Zero();  // the play panel, as last drawn (x0, y0, x1, y1 px)
-  bool all_keys() const { return all_keys_.value_or(play_->group().hole_index() == 0 && view_height_ >= kAllKeysHeight); }
+  bool all_keys() const { return all_keys_.value_or(play_->group().hole_index() == 0 && view_height_ >= kAllKeysMinHeight); }
 };
 
 void GolfView::view_keys(const std::vector<KeyPress>& keys) {

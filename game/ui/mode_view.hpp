@@ -20,6 +20,12 @@ namespace sweetspot {
 class Renderer;
 class ShotScene;
 
+/// A window at least this tall (px) lists every key in a mode's panel at first; a shorter one
+/// (the game allows 480) starts with the few a stroke or pitch needs: the full list's extra
+/// four or five lines ran the golf panel under the meter and the cage's off the window's
+/// bottom at 640x480. K brings the list either way.
+inline constexpr int kAllKeysMinHeight = 600;
+
 /// A key that went down: its GLFW key code and when (s, on the clock the view is given).
 struct KeyPress {
   int key = 0;

@@ -574,3 +574,28 @@ TEST_CASE("a foul back to the screen is called so, not by the backstop's 60 ft",
   }
   CHECK(back >= 1);
 }
+
+TEST_CASE("a swing pressed after the pitch reached the plate, before it is called, is a late swing", "[modes][baseball]") {
+  for (const double late_ms : {40.0, 70.0, 140.0}) {  // of pitch time: 80, 140, 280 ms of the player's
+    CAPTURE(late_ms);
+    BattingCage cage(test::assets(), 3);
+    cage.update({at(IntentKind::Pitch, 1.0)}, 1.0);
+    const double arrive = 1.0 + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
+    const double key = arrive + late_ms / 1000.0 / BattingCage::kPitchTimeScale;
+    double now = 1.0;
+    while (now + 0.05 < key) cage.update({}, now += 0.05);
+    cage.update({at(IntentKind::Swing, key)}, now += 0.05);
+    if (late_ms < 1000.0 * BattingCage::kTakenAfter) {
+      // Inside the pitch's last kTakenAfter: a swing, called late by the player's own ms.
+      REQUIRE(cage.swings().size() == 1);
+      while (!cage.told()) cage.update({}, now += 0.05);
+      char late[32];
+      std::snprintf(late, sizeof late, "late by %.0f ms", 2.0 * late_ms);
+      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains(late) || Catch::Matchers::Contains("ms late"));
+    } else {
+      // Past it: the pitch was taken, and the call says the swing came too late.
+      CHECK(cage.swings().empty());
+      CHECK_THAT(cage.call_text(), Catch::Matchers::Contains("too late"));
+    }
+  }
+}

@@ -173,10 +173,6 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     if (c.next_time_scale() >= 1.0) ImGui::TextWrapped("%s", "Pitch: P or Space calls for one, at real speed");
     else ImGui::TextWrapped("Pitch: P or Space calls for one, at %.0f %% of real speed", 100.0 * c.next_time_scale());
     if (!c.timing_only() && c.swings().empty()) ImGui::TextWrapped("%s", "New to it? T: just time the swing, the bat finds the height");
-    // Swings and no contact yet this session at a pace quicker than the easiest: where a
-    // slower pitch is.
-    if (fig.swings >= 3 && fig.contact == 0 && c.next_time_scale() > BattingCage::kEasyPitchTimeScale)
-      ImGui::TextWrapped("%s", "Missing them? E: slower pitches");
   } else if (c.stage() == Stage::Pitching || (!c.batted() && !pitch_by)) {
     // (A pitch swung through early is still on its way.) In practice the pitch is called as
     // a coach feeding a machine would; in a game the pitcher does not tell the hitter what is
@@ -199,6 +195,11 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
     const bool same_hand = c.call().left_handed == c.left_handed();
     ImGui::TextWrapped("%s", pitch_for_batter(c.pitch().plate, c.ball_radius(), c.left_handed(), arm_side == same_hand, run_in).c_str());
   }
+  // Three misses in a row at a pace quicker than the easiest, between pitches: where a
+  // slower pitch is.
+  const bool between = c.stage() == Stage::Ready || (c.stage() == Stage::Called && c.told());
+  if (between && c.misses_in_a_row() >= 3 && c.next_time_scale() > BattingCage::kEasyPitchTimeScale)
+    ImGui::TextWrapped("%s", "Missing them? E: slower pitches");
   ImGui::TextWrapped("Swing: %s, %s-handed, %s", c.power() ? "power" : "contact", c.left_handed() ? "left" : "right",
               c.timing_only() ? "timing only" : "bat height by hand");
   if (!all_keys) {

@@ -336,6 +336,16 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   }
 }
 
+int BattingCage::misses_in_a_row() const {
+  int n = 0;
+  for (auto it = swings_.rbegin(); it != swings_.rend(); ++it) {
+    if (it->by_pro) continue;
+    if (it->result.contact) break;
+    ++n;
+  }
+  return n;
+}
+
 BattingCage::Figures BattingCage::figures() const { return figures_of(swings_, carries_as_played_, swings_told()); }
 
 std::optional<BattingCage::Figures> BattingCage::other_figures() const {

@@ -109,6 +109,9 @@ class BattingCage {
   /// miss once the pitch reaches the plate (a swing through it early is not yet a strike
   /// the umpire has seen, and the ball is still on its way).
   bool told() const { return told_; }
+  /// The player's own last swings in a row that missed the ball (the pro's left out): three
+  /// and the panel points to a slower pitch.
+  int misses_in_a_row() const;
   const std::string& call_text() const { return call_text_; }
   /// The player's own swings as he has been told them (the pro's, B, only counted): the
   /// panel's figures and the exit report's. Contact counts fouls (a foul is contact); the

@@ -599,3 +599,31 @@ TEST_CASE("a swing pressed after the pitch reached the plate, before it is calle
     }
   }
 }
+
+TEST_CASE("the player's misses in a row count his own swings since his last contact", "[modes][baseball]") {
+  BattingCage cage(test::assets(), 3);
+  double now = 1.0;
+  const auto swing_early = [&](double early_s) {
+    cage.update({at(IntentKind::Pitch, now)}, now);
+    const double arrive = now + (kWindupTime + cage.pitch().flight_time) / BattingCage::kPitchTimeScale;
+    cage.update({at(IntentKind::Swing, arrive - early_s)}, arrive - early_s);
+    now = arrive + 1.0;
+    cage.update({}, now);
+    while (!cage.told()) cage.update({}, now += 0.5);
+    now += 0.5;
+  };
+  for (int k = 0; k < 3; ++k) swing_early(0.6);
+  CHECK(cage.misses_in_a_row() == 3);
+  // The pro's swing (B) is his, not the player's: the run goes on.
+  cage.update({at(IntentKind::BotSwings, now)}, now);
+  now += 12.0;
+  cage.update({}, now);
+  while (!cage.told()) cage.update({}, now += 0.5);
+  REQUIRE(cage.swings().back().by_pro);
+  CHECK(cage.misses_in_a_row() == 3);
+  // A ball met ends it: on time at the middle of the zone with timing only.
+  cage.update({at(IntentKind::ToggleTiming, now)}, now);
+  now += 0.5;
+  for (int k = 0; k < 6 && cage.misses_in_a_row() > 0; ++k) swing_early(0.0);
+  CHECK(cage.misses_in_a_row() == 0);
+}

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -522,6 +523,9 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
   // Labels never overlap on screen: each claims its rectangle, and a label that would
   // cover an earlier one is left out (shot labels go first, so they win).
   std::vector<Eigen::Vector4d> taken;  // x0, y0, x1, y1 in pixels
+  // A box kept free for the game's own flag (below), not a label of the image: the game's
+  // flagstick keeps clear of label_boxes and would leave a gap over itself.
+  std::optional<std::size_t> flag_box;
   // False when the label was left out.
   auto label = [&](const std::string& text, const Vec3& anchor, const Eigen::Vector3f& color) {
     const double h = px(anchor, m.style.label_height_px);
@@ -654,6 +658,7 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
       if (base) {
         const double tall = std::max(40.0, top ? base->y() - top->y() : 0.0);
         flag_reach_px = 0.3 * tall + 4.0;
+        flag_box = taken.size();
         taken.push_back(
             Eigen::Vector4d(base->x() - flag_reach_px, base->y() - tall - 4.0, base->x() + flag_reach_px + kPinLabelPx, base->y()));
       }
@@ -757,7 +762,8 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     }
   }
 
-  for (const Eigen::Vector4d& b : taken) scene.label_boxes.push_back(b.cast<float>());
+  for (std::size_t i = 0; i < taken.size(); ++i)
+    if (i != flag_box) scene.label_boxes.push_back(taken[i].cast<float>());
   return scene;
 }
 

@@ -84,17 +84,25 @@ std::string break_length(double m, const GolfUnits& units) {
 
 namespace {
 // A break in the units a golfer reads a putt in (inches, centimetres) and in cups: the cup is
-// 108 mm across (Rules of Golf, Definitions "Hole"). An aim inside a quarter of it is "at the
-// cup", in the caddie's read and on the aim line alike.
+// 108 mm across (Rules of Golf, Definitions "Hole"). An aim within an eighth of it of the
+// centre is "at the cup"; out to a quarter, "inside left" or "inside right" (a golfer's
+// words for a point in the cup beside its centre), in the caddie's read and on the aim line
+// alike: a 3 ft putt aimed 21 mm left read "straight: at the cup" beside arrows that showed
+// the slope across it.
 constexpr double kCup = 0.108;             // m
+constexpr double kCentre = 0.125 * kCup;   // m
 constexpr double kStraight = 0.25 * kCup;  // m
 }  // namespace
 
 std::string putt_read_words(const GolfPlay::PuttRead& read, const GolfUnits& units) {
   const double off = std::abs(read.aim_off);
   char aim[96];
-  if (off < kStraight) {
+  if (off < kCentre) {
     std::snprintf(aim, sizeof aim, "straight: at the cup");
+  } else if (off < kStraight) {
+    // Aimed left of the centre the ball must come back right: it breaks left to right.
+    std::snprintf(aim, sizeof aim, "barely breaks %s: aim inside %s", read.aim_off < 0.0 ? "left to right" : "right to left",
+                  read.aim_off < 0.0 ? "left" : "right");
   } else {
     const std::string by = break_length(off, units);
     const double cups = std::max(0.5, std::round(2.0 * off / kCup) / 2.0);
@@ -338,8 +346,8 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       // On the green the aim in the read's words: how far beside the cup the line points.
       const double off = r.to_pin() * std::tan(play.aim());
       const double deg = rad_to_deg(play.aim());
-      if (std::abs(deg) < 0.05) ImGui::Text("Aim: at the cup");
-      else if (std::abs(off) < kStraight) ImGui::Text("Aim: at the cup (%.1f deg %s)", std::abs(deg), off > 0.0 ? "right" : "left");
+      if (std::abs(deg) < 0.05 || std::abs(off) < kCentre) ImGui::Text("Aim: at the cup");
+      else if (std::abs(off) < kStraight) ImGui::Text("Aim: inside %s (%.1f deg %s)", off > 0.0 ? "right" : "left", std::abs(deg), off > 0.0 ? "right" : "left");
       else ImGui::Text("Aim: %s %s of the cup (%.1f deg)", break_length(std::abs(off), units).c_str(), off > 0.0 ? "right" : "left",
                        std::abs(deg));
     } else {

@@ -343,6 +343,31 @@ TEST_CASE("a distance stripe at the flag gives up its number: a '50' under a 53 
   CHECK(boxes_with_flag_at(70.0, false) == boxes_with_flag_at(53.0));
 }
 
+TEST_CASE("the image's label boxes are its labels: the room kept for the game's flag is not one", "[render]") {
+  // The game's flagstick keeps clear of the image's labels (draw_cup_and_flag): a box over
+  // the flag itself would leave the pole a gap where it stands.
+  OffscreenContext context;
+  ShotSceneInput in;
+  in.assets = &test::assets();
+  in.world = &test_world("test_range.obj");
+  in.flag = Vec3(70.0 * 0.9144, 0.0, 0.0);
+  ShotScene scene(in);
+  SyntheticShotSpec spec;
+  spec.carry = 20.0;
+  spec.apex = 6.0;
+  spec.lateral = 0.0;
+  scene.set_shot(synthetic_shot(spec), std::nullopt);
+  const int w = 640, h = 360;
+  const Camera cam = scene.camera(CameraKind::Behind, 0.0, w, h);
+  const Scene view = scene.build(cam, 0.0, w, h);
+  const auto base = cam.project(*in.flag, w, h);
+  REQUIRE(base);
+  for (const Eigen::Vector4f& b : view.label_boxes) {
+    const float x = static_cast<float>(base->x()), y = static_cast<float>(base->y()) - 10.0f;  // on the pole
+    CHECK_FALSE((x > b[0] && x < b[2] && y > b[1] && y < b[3]));
+  }
+}
+
 TEST_CASE("a ball that stops within its carry's last figure is labelled once, at the landing ring", "[render]") {
   OffscreenContext context;
   const auto boxes_with_rest_past_landing = [&](double past_m) {

@@ -48,6 +48,13 @@ TEST_CASE("the caddie's read in a golfer's words: the break in inches and cups, 
   CHECK(putt_read_words(r, feet) == "straight: at the cup, uphill: play it as 3 ft on the flat (blue mark)");
   r.plays_as = 0.66;
   CHECK(putt_read_words(r, feet) == "straight: at the cup, level: play it as 2 ft on the flat (blue mark)");
+  // Inside the cup but off its centre: which side of it, as a golfer says it.
+  r.to_cup = 0.91;
+  r.plays_as = 0.91;
+  r.aim_off = -0.021;
+  CHECK(putt_read_words(r, feet) == "barely breaks left to right: aim inside left, level: play it as 3 ft on the flat (blue mark)");
+  r.aim_off = 0.02;
+  CHECK(putt_read_words(r, feet).starts_with("barely breaks right to left: aim inside right"));
   CHECK(break_length(0.30, feet) == "12 in");
   CHECK(break_length(1.20, feet) == "4 ft");
   CHECK(break_length(0.30, metres) == "30 cm");

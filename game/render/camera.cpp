@@ -238,8 +238,8 @@ Camera frame_shot(CameraKind kind, const ShotFraming& framing, int width, int he
   const Vec3 right = aim.cross(up);  // +z for a +x line (DESIGN §2: z right)
   switch (kind) {
     case CameraKind::Side: {
-      // From the right of the shot, 10° down, so downrange runs left to right.
-      const Vec3 f = (-right * std::cos(deg_to_rad(10)) - up * std::sin(deg_to_rad(10))).normalized();
+      // From the right of the shot, looking down side_down, so downrange runs left to right.
+      const Vec3 f = (-right * std::cos(framing.side_down) - up * std::sin(framing.side_down)).normalized();
       return look_along(framing.points, f, up, aspect);
     }
     case CameraKind::Top: {

@@ -72,6 +72,9 @@ struct ShotFraming {
   /// Behind, Side and Top look along it, not along this shot, so a push, a pull or a
   /// slice shows as a start or a curve away from the line.
   Vec3 target_line = Vec3::UnitX();
+  /// rad: how far Side looks down: 10° from the ground, more over the trees between it and
+  /// the flight (ShotScene::camera).
+  double side_down = 0.17453292519943295;
   Vec3 ball = Vec3::Zero();           ///< m, ball centre at the time shown
   Vec3 ball_velocity = Vec3::Zero();  ///< m/s at the time shown (Follow looks along it)
   /// s since the first landing at the time shown (negative before it); -1e9 when the shot

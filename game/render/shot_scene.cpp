@@ -253,6 +253,7 @@ ShotScene::~ShotScene() = default;
 void ShotScene::set_shot(const ShotTrajectory& trajectory, const std::optional<ImpactorPlacement>& impactor) {
   trajectory_ = trajectory;
   impactor_ = impactor;
+  side_down_.reset();
 }
 
 std::optional<double> ShotScene::ground_height(double x, double z) const {
@@ -273,9 +274,43 @@ Camera ShotScene::camera(CameraKind kind, double t, int width, int height, const
   // From above, a ballpark shows the whole park, fence to fence (a spray chart's view).
   if (kind == CameraKind::Top && impl_->input.world != nullptr)
     for (const Vec3& p : impl_->input.world->fence_line) f.points.push_back(p);
+  if (kind == CameraKind::Side) f.side_down = side_down(f, width, height);
   // Follow sits close to the ball and may dip to grass height; 0.3 m keeps it off the blades.
   if (kind != CameraKind::Follow) return keep_above_ground(frame_shot(kind, f, width, height, window), 1.0);
   return keep_clear_of_trees(keep_above_ground(frame_shot(kind, f, width, height, window), 0.3), f.ball);
+}
+
+double ShotScene::side_down(const ShotFraming& framing, int width, int height) const {
+  const double usual = framing.side_down;
+  const WorldAsset* w = impl_->input.world;
+  if (w == nullptr || framing.points.size() < 2) return usual;
+  if (side_down_ && std::get<0>(*side_down_) == width && std::get<1>(*side_down_) == height) return std::get<2>(*side_down_);
+  const Terrain& terrain = *w->world;
+  // The flight at ~20 points along it, each seen past a tree or not.
+  constexpr int kLooks = 20;
+  constexpr double kSight = 0.05;  // m: a sight line, not a ball
+  const auto hidden = [&](const Vec3& eye) {
+    int n = 0;
+    for (int i = 0; i < kLooks; ++i) {
+      const Vec3& p = framing.points[(framing.points.size() - 1) * static_cast<std::size_t>(i) / (kLooks - 1)];
+      SurfaceContact hit;
+      if (terrain.may_touch(eye, p, kSight) && terrain.sweep(eye, p, kSight, &hit, nullptr) &&
+          terrain.material(hit.material).kind == SurfaceKind::Tree)
+        ++n;
+    }
+    return n;
+  };
+  double best = usual;
+  int fewest = kLooks + 1;
+  for (const double deg : {10.0, 20.0, 30.0, 45.0, 60.0}) {
+    ShotFraming f = framing;
+    f.side_down = deg_to_rad(deg);
+    const int n = hidden(keep_above_ground(frame_shot(CameraKind::Side, f, width, height), 1.0).eye);
+    if (n < fewest) fewest = n, best = f.side_down;
+    if (n * 10 <= kLooks) break;  // a tenth or less of it behind the trees
+  }
+  side_down_ = std::make_tuple(width, height, best);
+  return best;
 }
 
 Camera ShotScene::keep_clear_of_trees(Camera c, const Vec3& subject) const {

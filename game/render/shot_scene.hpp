@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "game/render/camera.hpp"
@@ -163,6 +164,11 @@ class ShotScene {
   /// them, so it looks at the ball, not at the inside of a crown. Only trees: ground between
   /// them is keep_above_ground's.
   Camera keep_clear_of_trees(Camera c, const Vec3& subject) const;
+  /// How far the side view looks down (rad) on `framing`'s shot for a width x height image:
+  /// its usual 10°, or steeper, up to 60°, until no more than a tenth of the flight is
+  /// behind a tree (a side view from 200 m off the line of a fairway between rows of trees
+  /// sees the crowns, not the ball). Kept for the shot: the side view does not move with t.
+  double side_down(const ShotFraming& framing, int width, int height) const;
   /// Everything to draw at time t (s; clamped to the shot) seen by `camera`. A negative t
   /// is the pre-roll: the ball waits at launch and the club or bat comes down its swing.
   Scene build(const Camera& camera, double t, int width, int height) const;
@@ -183,6 +189,8 @@ class ShotScene {
   std::optional<double> focus_;
   bool carry_label_ = true;
   bool stripe_numbers_ = true;
+  /// side_down() for the shot and image size it was found for.
+  mutable std::optional<std::tuple<int, int, double>> side_down_;
   std::string carry_words_, rest_words_;
   std::optional<std::string> rest_label_;
 };

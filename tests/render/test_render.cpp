@@ -719,6 +719,47 @@ TEST_CASE("the follow camera looks over a tree between it and the ball, or stand
   }
 }
 
+TEST_CASE("the side view looks down over a row of trees between it and the flight", "[render][camera]") {
+  // A drive down +x; a row of crowns 15 m tall along the right of the line, 25 m off it,
+  // between the flight and the side view (which stands to the right).
+  const auto world = [](bool row) {
+    std::vector<TreeWall> walls;
+    if (row) walls.push_back(TreeWall{Vec3(-40, 0, 25), Vec3(290, 0, 25), 15.0});
+    auto a = std::make_unique<WorldAsset>();
+    a->name = "row";
+    a->sport = "golf";
+    a->world = std::make_unique<World>(turf_and_tree_walls(300.0, walls));
+    return a;
+  };
+  OffscreenContext context;
+  SyntheticShotSpec spec;
+  spec.lateral = 0.0;
+  const ShotTrajectory shot = synthetic_shot(spec);
+  const auto side = [&](const WorldAsset& w) {
+    ShotSceneInput input;
+    input.assets = &test::assets();
+    input.world = &w;
+    ShotScene scene(input);
+    scene.set_shot(shot, std::nullopt);
+    return scene.camera(CameraKind::Side, 1.0, 640, 400);
+  };
+  const auto down = [](const Camera& c) { return std::asin(std::clamp(-c.forward().y(), -1.0, 1.0)); };
+  const auto open = world(false), trees = world(true);
+  const Camera free = side(*open), over = side(*trees);
+  CHECK(rad_to_deg(down(free)) == Approx(10.0).margin(0.5));  // the usual side view
+  CHECK(rad_to_deg(down(over)) > 15.0);
+  // From there most of the flight is in sight past the row.
+  int hidden = 0;
+  const auto& s = shot.samples;
+  for (int i = 0; i < 20; ++i) {
+    SurfaceContact hit;
+    if (trees->world->sweep(over.eye, s[(s.size() - 1) * static_cast<std::size_t>(i) / 19].position, 0.05, &hit, nullptr) &&
+        trees->world->material(hit.material).kind == SurfaceKind::Tree)
+      ++hidden;
+  }
+  CHECK(hidden <= 2);
+}
+
 TEST_CASE("at address the golfer winds his club back up its arc as the meter climbs, and back down", "[render][golfer]") {
   OffscreenContext context;
   ShotSceneInput input;

@@ -891,6 +891,25 @@ TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", 
   CHECK(play.carry_here(play.club()) == play.round().simulate(in).trajectory.summary.carry_m);
 }
 
+TEST_CASE("the caddie's part swing at the pin stops where the pin mark does, not a few tries short of it", "[modes][golf]") {
+  // The National's 2nd, a scratch player a little past half way: his 3-wood swung soft. Tuned
+  // in three tries from a guess it stopped 14 m short in the rough, where the pin mark's
+  // power stopped at the pin on the green.
+  Course course = load_course(test::assets(), "national");
+  course.holes = {course.holes[1]};
+  const Vec3 tee = course.holes[0].tee, pin = course.holes[0].pin;
+  const Vec3 p = tee + 0.55 * (pin - tee);
+  SurfaceContact hit;
+  REQUIRE(ground_under(*course.holes[0].world->world, p.x(), p.z(), 400.0, 420.0, &hit));
+  course.holes[0].tee = hit.point;
+  const GolfPlay play(test::assets(), course, solo("scratch"));
+  const std::optional<double> part = play.caddie_part_swing(play.club());
+  REQUIRE(part);
+  CHECK(std::abs(play.stops_here(play.club(), *part) - play.round().to_pin()) < 4.0);
+  StrokeInput in = *play.caddie_plan();
+  CHECK(play.round().surface_at(play.round().simulate(in).trajectory.summary.rest_position) == "green");
+}
+
 TEST_CASE("the meter's carry scale is the aim's: turned back at the tree, it reads the tree", "[modes][golf]") {
   Course course = load_course(test::assets(), "national");
   course.holes = {course.holes[8]};

@@ -294,12 +294,16 @@ std::vector<Metric> build() {
   }));
   m.push_back(plain("friction", "Friction mu", struck, [](const ShotResult& r) { return r.impact.mu; }, 3, "", "mu"));
   // The grip threshold, when the caller computed it: whether turning µ changes anything.
-  m.push_back(text("grip", "Friction that grips mu", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
+  // The µ past which the launch no longer changes. With the compliant contact that is not
+  // where the patch first grips (the contact row says whether it did): once it sticks, the
+  // shear spring's release gives back part of the spin, less the more friction held it
+  // (Maw, Barber & Fawcett 1976), so spin peaks at a lower µ and eases toward this one's.
+  m.push_back(text("grip", "mu past which the launch is fixed", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!struck(r) || r.impact.mu_grip < 0.0) return std::nullopt;
     const std::string t = fixed(r.impact.mu_grip, 3);
     // Short enough for the launch-monitor panel's column (the tuning panel says it whole).
     if (r.impact.mu_grip == 0.0) return t + " (mu: no effect)";
-    return t + (r.impact.mu >= r.impact.mu_grip ? " (grips: no effect)" : " (slides: mu matters)");
+    return t + (r.impact.mu >= r.impact.mu_grip ? " (mu: no effect)" : " (mu moves it)");
   }));
   m.push_back(text("impulse", "Impulse n / t", [](const ShotResult& r, const DisplayUnits&) -> std::optional<std::string> {
     if (!struck(r)) return std::nullopt;

@@ -128,9 +128,16 @@ bool impact_picker(PanelContext& c) {
     dl->AddCircleFilled(ImVec2(centre.x + toe_mm, centre.y - up_mm), 5.0f, IM_COL32(255, 255, 255, 255));
     dl->AddText(ImVec2(o.x + 2, o.y + 2), IM_COL32(180, 180, 180, 255), "heel");
     dl->AddText(ImVec2(o.x + w - 24, o.y + 2), IM_COL32(180, 180, 180, 255), "toe");
-    if (clicked) {
-      const double toe = std::clamp((m.x - centre.x) / 1000.0, GolfSwing::kImpactToe.min, GolfSwing::kImpactToe.max);
-      const double up = std::clamp(-(m.y - centre.y) / 1000.0, GolfSwing::kImpactUp.min, GolfSwing::kImpactUp.max);
+    // A click on the face drawn moves the strike there, held on this club's own face (the
+    // drawing is the bag's typical face; a driver's may be a little shorter); a click beside
+    // it is no strike (it was taken as one, half of it refused as off the face).
+    const bool on_face = std::abs(m.x - centre.x) <= fw / 2 && std::abs(m.y - centre.y) <= fh / 2;
+    if (clicked && on_face) {
+      const ClubSpec& club = *s.resolved().club;
+      const double half_w = std::min(club.face_half_width, GolfSwing::kImpactToe.max);
+      const double half_h = std::min(club.face_half_height, GolfSwing::kImpactUp.max);
+      const double toe = std::clamp((m.x - centre.x) / 1000.0, -half_w, half_w);
+      const double up = std::clamp(-(m.y - centre.y) / 1000.0, -half_h, half_h);
       if (std::abs(toe - g.impact_toe) > 5e-4 || std::abs(up - up_m) > 5e-4) {
         edit(c, LabParam::ImpactToe, toe);
         edit(c, LabParam::ImpactUp, up);
@@ -243,7 +250,13 @@ bool tuning_section(PanelContext& c) {
   changed |= slider(c, LabParam::E, "e  restitution", "%.3f");
   if (s.e_replaces_law()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
-    ImGui::TextWrapped("e is constant: it replaces the equipment's speed-dependent COR");
+    // The face's COR map still applies (ClubSpec::face_cor_factor): e falls off the face's
+    // centre, so the monitor's e differs from the slider's wherever the strike is not there.
+    if (im.present && std::abs(im.e - mat.e.at(0.0)) > 5e-4)
+      ImGui::TextWrapped("e is constant over speed (it replaces the equipment's COR law); off the face's centre it falls: %.3f at this strike",
+                         im.e);
+    else
+      ImGui::TextWrapped("e is constant: it replaces the equipment's speed-dependent COR");
     ImGui::PopStyleColor();
   } else if (mat.e.count > 1) {
     ImGui::TextDisabled("e: the COR law at this impact speed");
@@ -270,8 +283,15 @@ bool tuning_section(PanelContext& c) {
     // the monitor's "contact" says), and how far it slides is mu's.
     const bool grips = mat.mu >= im.mu_grip;
     ImGui::TextColored(grips ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : ImVec4(1.0f, 0.75f, 0.3f, 1.0f),
-                       grips ? "grip: mu above %.3f changes nothing" : "slides: mu matters up to %.3f",
-                       im.mu_grip);
+                       grips ? "mu above %.3f changes nothing" : "mu moves the launch up to %.3f", im.mu_grip);
+    // With the contact's shear spring more friction is not always more spin: said, as a
+    // physics reader expects the rigid model's rise to a plateau.
+    if (!grips && mat.model == ImpactModel::Compliant)
+    {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("%s", "spin peaks where the face first grips the ball; more mu grips it sooner and its shear spring gives some back");
+      ImGui::PopStyleColor();
+    }
   }
   int model = static_cast<int>(mat.friction);
   const char* models[] = {"none", "textbook", "coulomb"};

@@ -89,8 +89,9 @@ std::string validation_scorecard(const std::vector<ValidationOutcome>& outcomes,
     std::vector<std::size_t> w(rows[0].size(), 0);
     for (const auto& r : rows)
       for (std::size_t i = 0; i < r.size(); ++i) w[i] = std::max(w[i], r[i].size());
-    out += failing ? "failing cases, then the passing ones nearest their edge:\n"
-                   : "every case passes; those nearest their edge:\n";
+    out += failing == 0 ? "every case passes; those nearest their edge:\n"
+           : n > failing ? "failing cases, then the passing ones nearest their edge:\n"
+                         : "failing cases, worst first:\n";
     for (const auto& r : rows) {
       std::string line = " ";
       for (std::size_t i = 0; i < r.size(); ++i) line += " " + (i + 1 < r.size() ? pad(r[i], w[i]) : r[i]);

@@ -270,7 +270,9 @@ class Session : public std::enable_shared_from_this<Session> {
       send(reply_status(501, std::string("Bad format: ") + e.what()), delay);
       return;
     }
-    send(reply_shot(m.club.has_value()), delay);
+    // A misread's zeros are received as GSPro receives them (200), and the reply says they
+    // were not flown, so a client is not left to think a shot is in the air.
+    send(played.flown ? reply_shot(m.club.has_value()) : reply_status(200, "Shot received: no ball speed, not flown"), delay);
     if (played.flown) {
       server_.out << played.line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n" << std::flush;
       if (server_.shot_hook) server_.shot_hook(played);

@@ -151,8 +151,14 @@ TEST_CASE("the page's example shot gets 200 and a result line", "[net][server][r
   const auto hb = c.next();
   REQUIRE(hb);
   CHECK((*hb)["Code"] == 200);
+  // A misread's zeros: received (200, as GSPro), and the reply says they were not flown.
+  REQUIRE(c.send(shot(14, 0.0, 0.0, 0.0)));
+  const auto zero = c.next();
+  REQUIRE(zero);
+  CHECK((*zero)["Code"] == 200);
+  CHECK((*zero)["Message"] == "Shot received: no ball speed, not flown");
   s.finish();
-  REQUIRE(s.lines() == 1);  // the heartbeat played nothing
+  REQUIRE(s.lines() == 1);  // the heartbeat and the zeros played nothing
   const auto line = nlohmann::json::parse(s.out.str());
   CHECK(line["shot_number"] == 13);
   CHECK(line["launch"]["spin_rpm"].get<double>() == Approx(3250.0));

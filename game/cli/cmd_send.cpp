@@ -43,9 +43,13 @@ std::vector<Outgoing> read_session(const std::string& path) {
   std::vector<Outgoing> out;
   // Line numbers for messages: count newlines up to each message's end.
   std::size_t line = 1;
+  std::size_t begun = 1;  // the line the object being read began on
   for (const char ch : text) {
     if (ch == '\n') ++line;
-    for (const auto& piece : framer.feed(std::string_view(&ch, 1))) {
+    const bool between = framer.pending() == 0;
+    const auto pieces = framer.feed(std::string_view(&ch, 1));
+    if (between && framer.pending() > 0) begun = line;
+    for (const auto& piece : pieces) {
       const std::string where = path + ":" + std::to_string(line);
       if (piece.kind == MessageFramer::Piece::Kind::Oversized)
         throw InputError(where + ": an object longer than 65536 bytes (no launch monitor sends one)");
@@ -64,7 +68,10 @@ std::vector<Outgoing> read_session(const std::string& path) {
       out.push_back({piece.text, m.kind == OcMessage::Kind::Shot});
     }
   }
-  if (framer.pending() > 0) throw InputError(path + ":" + std::to_string(line) + ": the last object is not closed");
+  // Named where it began: a message cut off on line 2 ran on to the end of the file.
+  if (framer.pending() > 0)
+    throw InputError(path + ":" + std::to_string(begun) + ": this object is not closed (it runs on to the end of the file, line " +
+                     std::to_string(line) + "); nothing was sent");
   if (out.empty()) throw InputError(path + ": no JSON object in the file");
   return out;
 }

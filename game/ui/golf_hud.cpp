@@ -448,7 +448,8 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   // far from the pin and on what, or how he finished it; a bot's ball is then not lost from
   // view when the camera has gone on to the next player.
   const bool group = g.players().size() > 1 && !g.finished();
-  const std::size_t hole = g.hole_index();
+  // In the air, the hole of the stroke (the model may already have moved the group on).
+  const std::size_t hole = in_air ? play.hole_shown() : g.hole_index();
   const auto on_this_hole = [&](std::size_t p) -> std::string {
     if (!group) return {};
     // The stroke in the air is told when it stops, not before (the model has played it).
@@ -478,7 +479,8 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       // The standings count the holes the whole group has finished; a player who has holed
       // out here while the others play on is told his total with this hole in it, beside
       // "holed in 2" (not the total before it, which reads as a stale sum).
-      const RunningTotal total = group ? running_total(g, s, static_cast<int>(p)) : RunningTotal{ps.total_strokes, ps.total_par, ps.holes_scored};
+      const bool untold = in_air && static_cast<int>(p) == play.shooter();
+      const RunningTotal total = running_total(g, s, static_cast<int>(p), hole, untold);
       const int strokes = total.strokes, par = total.par, scored = total.holes;
       // Wrapped: a line that runs past the panel's edge ("3 ft to go, Gre") goes on below.
       char row[192];
@@ -489,8 +491,12 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
                       to_par_text(strokes - par).c_str(), extra, here.c_str());
       ImGui::TextWrapped("%s", row);
     }
-    // Before the first hole is decided the match has no status of its own yet.
-    if (s.match) ImGui::Text("Match: %s", s.match->holes.empty() ? "all square" : s.match->holes.back().status.c_str());
+    // Before the first hole is decided the match has no status of its own yet; while the
+    // stroke that decides one is in the air, the status before it.
+    if (s.match) {
+      const std::size_t decided = std::min(s.match->holes.size(), in_air ? hole : s.match->holes.size());
+      ImGui::Text("Match: %s", decided == 0 ? "all square" : s.match->holes[decided - 1].status.c_str());
+    }
   } else if (g.options().format == GolfFormat::Match) {
     ImGui::Separator();
     ImGui::Text("Match: all square");
@@ -533,7 +539,10 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   if (!in_air && play.human_turn() && play.shooter() != play.player() && !(short_window && group)) {
     if (const GolfPlay::OwnLast* mine = play.own_last(play.player())) {
       ImGui::Separator();
-      ImGui::TextWrapped("Your last: %s", mine->message.c_str());
+      // At a hot seat "your" is whoever is at the keys: named, unless it is "You".
+      const std::string& name = play.player_info().name;
+      const std::string whose = name == "You" ? std::string("Your") : name + "'s";
+      ImGui::TextWrapped("%s last: %s", whose.c_str(), mine->message.c_str());
       at_rest(mine->record, mine->rest_lie);
     }
   }

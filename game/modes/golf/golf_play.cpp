@@ -106,6 +106,17 @@ Vec3 GolfPlay::aim_direction() const {
   return Vec3(std::cos(a), 0.0, std::sin(a));
 }
 
+const std::optional<MeterClock>& GolfPlay::last_click() const {
+  static const std::optional<MeterClock> none;
+  const auto who = static_cast<std::size_t>(player_);
+  return who < click_of_.size() ? click_of_[who] : none;
+}
+
+bool GolfPlay::last_click_here() const {
+  const auto who = static_cast<std::size_t>(player_);
+  return last_click() && who < click_hole_.size() && click_hole_[who] == group_.hole_index();
+}
+
 MeterClock GolfPlay::next_meter() const {
   // A putt the preview reaches: the marker slowed for a short one (putt_tempo); the caddie's
   // part swing with this club, slowed to its mark as well.
@@ -572,8 +583,11 @@ void GolfPlay::land(double t) {
 void GolfPlay::strike_from_meter(const MeterInput& m, double t) {
   last_meter_ = m;
   last_click_ = *meter_;
-  last_click_by_ = player_;
-  last_click_hole_ = group_.hole_index();
+  const auto who = static_cast<std::size_t>(player_);
+  click_of_.resize(group_.players().size());
+  click_hole_.resize(group_.players().size(), 0);
+  click_of_[who] = *meter_;
+  click_hole_[who] = group_.hole_index();
   strike({club(), aim_, m}, false, t);
 }
 
@@ -746,6 +760,8 @@ void GolfPlay::new_round(double t) {
   meter_.reset();
   last_meter_.reset();
   last_click_.reset();
+  click_of_.clear();
+  click_hole_.clear();
   struck_hole_.reset();
   say("");
   begin_turn(t);

@@ -117,11 +117,12 @@ class GolfPlay {
   void set_input_latency(double seconds) { setup_.input_latency = seconds; }
   /// The last stroke's meter result (none for the bots' and the caddie's strokes).
   const std::optional<MeterInput>& last_meter() const { return last_meter_; }
-  /// The meter as the last human stroke left it: where the clicks landed (the view marks them).
-  const std::optional<MeterClock>& last_click() const { return last_click_; }
-  /// The last human stroke was the player to play's own, on this hole: its putt's power is a
-  /// guide to this putt's (one on another green is another length).
-  bool last_click_here() const { return last_click_ && last_click_by_ == player_ && last_click_hole_ == group_.hole_index(); }
+  /// The meter as the player to play's own last stroke left it: where his clicks landed
+  /// (the view marks them). Each player's own: at a hot seat a friend's clicks are no guide.
+  const std::optional<MeterClock>& last_click() const;
+  /// That last stroke was on this hole: its putt's power is a guide to this putt's (one on
+  /// another green is another length).
+  bool last_click_here() const;
   /// What the last stroke did, in player words; set when the ball stops, not before.
   const std::string& message() const { return message_; }
   /// The message is the last stroke's result (last_record() is that stroke), not a note of
@@ -320,8 +321,9 @@ class GolfPlay {
   std::optional<MeterClock> meter_;
   std::optional<MeterInput> last_meter_;
   std::optional<MeterClock> last_click_;  ///< the meter as the last human stroke left it
-  int last_click_by_ = 0;                 ///< whose it was
-  std::size_t last_click_hole_ = 0;       ///< on which hole (group index)
+  /// Per player: the meter as his own last stroke left it, and on which hole (group index).
+  std::vector<std::optional<MeterClock>> click_of_;
+  std::vector<std::size_t> click_hole_;
   std::size_t round_hole_ = 0;            ///< the group's hole when the last stroke was struck, or the hole conceded
   std::optional<std::size_t> struck_hole_;  ///< the group's hole when last_ was struck; none before this round's first
   ShotResult last_;

@@ -89,18 +89,18 @@ Standings standings(const GolfGroup& g) {
   return s;
 }
 
-RunningTotal running_total(const GolfGroup& group, const Standings& s, int player) {
+RunningTotal running_total(const GolfGroup& group, const Standings& s, int player, std::size_t hole, bool stroke_untold) {
   const PlayerStanding& ps = s.players.at(static_cast<std::size_t>(player));
   RunningTotal t{ps.total_strokes, ps.total_par, ps.holes_scored};
-  const std::size_t hole = group.hole_index();
   const GolfRound& r = group.round(player);
-  if (s.holes > hole || r.card().size() <= hole || !(r.finished() || r.hole_index() > hole)) return t;
+  if (r.card().size() <= hole) return t;
   const HoleCard& c = r.card()[hole];
-  if (c.holed || c.picked_up) {
-    t.strokes += c.strokes;
-    t.par += c.par;
-    ++t.holes;
-  }
+  if (!(c.holed || c.picked_up) || !(r.finished() || r.hole_index() > hole)) return t;
+  const bool counted = s.holes > hole;  // the whole group is past it: the standings hold it
+  const int sign = !counted && !stroke_untold ? 1 : counted && stroke_untold ? -1 : 0;
+  t.strokes += sign * c.strokes;
+  t.par += sign * c.par;
+  t.holes += sign;
   return t;
 }
 

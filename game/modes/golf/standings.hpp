@@ -71,12 +71,15 @@ struct Standings {
 
 Standings standings(const GolfGroup& group);
 
-/// A player's running score while the group plays a hole: the standings' scored holes and,
-/// once he has finished the hole the group is on (holed or picked up) while others play
-/// on, that hole too. Beside "holed in 2" the total before it would read as a stale sum.
+/// A player's running score while the group plays `hole`: the standings' scored holes and,
+/// once he has finished that hole (holed or picked up) while others play on, that hole too
+/// (beside "holed in 2" the total before it would read as a stale sum). `stroke_untold`: his
+/// last stroke, on `hole`, is still in the air: a hole it finished is not yet his (the
+/// panel tells a stroke once the ball stops).
 struct RunningTotal {
   int strokes = 0, par = 0, holes = 0;
 };
-RunningTotal running_total(const GolfGroup& group, const Standings& standings, int player);
+RunningTotal running_total(const GolfGroup& group, const Standings& standings, int player, std::size_t hole,
+                           bool stroke_untold = false);
 
 }  // namespace sweetspot

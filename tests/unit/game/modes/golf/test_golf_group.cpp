@@ -128,12 +128,12 @@ TEST_CASE("a player who has holed out while the group plays on counts that hole 
   const int done = finished_2(0) ? 0 : 1, playing = 1 - done;
   const HoleCard& h1 = g.round(done).card()[0];
   const HoleCard& h2 = g.round(done).card()[1];
-  const RunningTotal t = running_total(g, s, done);
+  const RunningTotal t = running_total(g, s, done, 1);
   CHECK(t.holes == 2);
   CHECK(t.strokes == h1.strokes + h2.strokes);
   CHECK(t.par == h1.par + h2.par);
   // The one still playing it stands on hole 1's score.
-  const RunningTotal u = running_total(g, s, playing);
+  const RunningTotal u = running_total(g, s, playing, 1);
   CHECK(u.holes == 1);
   CHECK(u.strokes == g.round(playing).card()[0].strokes);
   CHECK(u.par == g.round(playing).card()[0].par);
@@ -143,8 +143,13 @@ TEST_CASE("a player who has holed out while the group plays on counts that hole 
     REQUIRE(++turns < 160);
   }
   const Standings after = standings(g);
-  CHECK(running_total(g, after, done).strokes == after.players[static_cast<std::size_t>(done)].total_strokes);
-  CHECK(running_total(g, after, done).strokes == t.strokes);
+  CHECK(running_total(g, after, done, 1).strokes == after.players[static_cast<std::size_t>(done)].total_strokes);
+  CHECK(running_total(g, after, done, 1).strokes == t.strokes);
+  // The stroke that finished the hole for the last of them still in the air: not his yet.
+  const RunningTotal untold = running_total(g, after, playing, 1, true);
+  CHECK(untold.holes == 1);
+  CHECK(untold.strokes == g.round(playing).card()[0].strokes);
+  CHECK(running_total(g, after, playing, 1).strokes == after.players[static_cast<std::size_t>(playing)].total_strokes);
 }
 
 TEST_CASE("match play: the status follows the holes won, a short putt is conceded, a conceded hole is lost", "[modes][golf][formats]") {

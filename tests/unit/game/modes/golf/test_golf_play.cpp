@@ -143,6 +143,37 @@ TEST_CASE("the meter climbs at one pace with every full-swing club", "[modes][go
   CHECK(heights[1] == heights[0]);
 }
 
+TEST_CASE("at a hot seat each player's meter marks his own last clicks, not his friend's", "[modes][golf]") {
+  GolfSetup setup;
+  setup.players = {{"You", "scratch", true, 0, {}}, {"Bob", "scratch", true, 0, {}}};
+  setup.flyover = false;
+  GolfPlay play(test::assets(), first_hole(), setup);
+  REQUIRE(play.player() == 0);
+  // You: the power click at 0.8 s of the 0.9 s climb.
+  play.update({at(IntentKind::Swing, 1.0), at(IntentKind::Swing, 1.8), at(IntentKind::Swing, 2.3)}, 2.4);
+  REQUIRE(play.last_click());
+  const double yours = play.last_click()->power();
+  double t = 3.0;
+  while (play.player() != 1 && t < 40.0) play.update({at(IntentKind::Continue, t)}, t += 0.5);
+  REQUIRE(play.player() == 1);
+  while (play.stage() != GolfPlay::Stage::Aiming && t < 60.0) play.update({}, t += 0.5);
+  // Bob has not swung: no marks of his (You's were the last clicks made).
+  CHECK_FALSE(play.last_click());
+  CHECK_FALSE(play.last_click_here());
+  // Bob's swing, softer; then You's turn again shows You's clicks.
+  play.update({at(IntentKind::Swing, t + 1.0), at(IntentKind::Swing, t + 1.6), at(IntentKind::Swing, t + 2.0)}, t + 2.1);
+  t += 2.5;
+  // Until it is You's turn (Bob may lie farther and play again: his caddie's swings).
+  while (!(play.player() == 0 && play.stage() == GolfPlay::Stage::Aiming) && t < 200.0) {
+    t += 0.5;
+    if (play.player() == 1 && play.stage() == GolfPlay::Stage::Aiming) play.update({at(IntentKind::CaddiePlays, t)}, t);
+    else play.update({at(IntentKind::Continue, t)}, t);
+  }
+  REQUIRE(play.player() == 0);
+  REQUIRE(play.last_click());
+  CHECK(play.last_click()->power() == yours);
+}
+
 TEST_CASE("the last clicks are this hole's guide only on this hole", "[modes][golf]") {
   // The meter marks the last putt's power as a guide to the next putt; one on another green
   // is another length, so it is this player's on this hole or none.

@@ -329,7 +329,9 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     // line's figures are the full swing's, which a part wedge from 80 yd flies well past).
     if (part_swing) {
       const double carries = play.carry_here(club, *part), stops = play.stops_here(club, *part);
-      const double longest = std::max(carries, stops);
+      // In the unit "To the pin" is given in (feet inside GolfUnits::kNear): "To the pin:
+      // 59 ft" over "stops 22 yd" mixed two for one chip.
+      const double longest = r.to_pin();
       // Firmer than the pin's green mark (GolfBot::intend: where a short miss would finish on
       // worse ground, he swings a power spread harder): said, or the two marks read as a
       // contradiction.
@@ -382,7 +384,7 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       if (deg < 0.05) ImGui::Text("Aim: at the pin");  // "0.0 deg right" has no side
       // Wrapped: the caddie's reason runs past the panel's width.
       else if (flag_is_target)
-        ImGui::TextWrapped("Aim: %s %s of the pin (%.1f deg%s%s)", units.course(r.to_pin() * std::tan(deg_to_rad(deg))).c_str(),
+        ImGui::TextWrapped("Aim: %s %s of the pin (%.1f deg%s%s)", units.course(r.to_pin() * std::tan(deg_to_rad(deg)), r.to_pin()).c_str(),
                            side, deg, *why ? "; " : "", why);
       else if (elsewhere) {
         const double pin = r.to_pin(), a = deg_to_rad(deg);
@@ -708,7 +710,7 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
     const std::string& club = play.club();
     const double longest = play.carry_at_power(club, MeterBar::kHigh);
     const double unit = units.imperial ? 0.9144 : 1.0;
-    char pin_words[96] = "";
+    char pin_words[128] = "";
     const double to_pin = play.round().to_pin();
     if (longest > 10.0 * unit) {
       MeterScale scale(dl, bar, bar.x0 + bar.bw + 4.0f);
@@ -749,11 +751,14 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
         // Where no power stops at the pin (the stop jumps across it), the nearest and where it
         // stops: a mark that promised the pin would send the ball that far past or short.
         const double miss = pin->stops - to_pin;
+        // Past full power the meter's overswing strays more (swing_meter.hpp): said, so a mark
+        // at 106 % reads as "more club", not as a swing to make.
+        const char* over = pin->power > 1.0 + 1e-9 ? " (an overswing: more club?)" : "";
         if (std::abs(miss) <= std::max(2.0, 0.04 * to_pin))
-          std::snprintf(pin_words, sizeof pin_words, "; green: stops at the pin at %.0f %%", 100.0 * pin->power);
+          std::snprintf(pin_words, sizeof pin_words, "; green: stops at the pin at %.0f %%%s", 100.0 * pin->power, over);
         else
-          std::snprintf(pin_words, sizeof pin_words, "; green: nearest the pin, %.0f %% stops %s %s", 100.0 * pin->power,
-                        units.course(std::abs(miss), to_pin).c_str(), miss > 0.0 ? "past" : "short");
+          std::snprintf(pin_words, sizeof pin_words, "; green: nearest the pin, %.0f %% stops %s %s%s", 100.0 * pin->power,
+                        units.course(std::abs(miss), to_pin).c_str(), miss > 0.0 ? "past" : "short", over);
       }
     }
     if (!meter && play.swing_undone()) {

@@ -29,12 +29,13 @@ struct PlayerStanding {
   int fairways_hit = 0, fairways = 0, greens_in_regulation = 0;
   int greens = 0;  ///< holes that count toward greens in regulation: the scored ones
 
-  /// The card's total: the strokes, and over how many holes when some have no score (a
-  /// match's conceded hole), so "5" does not stand against the par of two holes.
+  /// The card's total: the strokes, and over how many holes and their par when some have no
+  /// score (a match's conceded hole), so "7" does not stand against the par of three holes
+  /// ("7 in 2 holes (par 8)" under a par column of 12).
   std::string total_text(std::size_t holes) const {
     std::string out = std::to_string(total_strokes);
     if (static_cast<std::size_t>(holes_scored) < holes)
-      out += " in " + std::to_string(holes_scored) + (holes_scored == 1 ? " hole" : " holes");
+      out += " in " + std::to_string(holes_scored) + (holes_scored == 1 ? " hole" : " holes") + " (par " + std::to_string(total_par) + ")";
     return out;
   }
 

@@ -200,6 +200,9 @@ TEST_CASE("match play: the status follows the holes won, a short putt is concede
     }
     CHECK(ps.total_strokes == strokes);
     CHECK(ps.total_par == par);
+    // The card's total says over which holes and their par, beside the course's par column.
+    CHECK(ps.total_text(s.holes) == std::to_string(strokes) + " in " + std::to_string(s.holes - 1) +
+                                        (s.holes - 1 == 1 ? " hole" : " holes") + " (par " + std::to_string(par) + ")");
   }
   // Every conceded putt was inside the gimme; no putt was played from inside it.
   for (int p = 0; p < 2; ++p)

@@ -844,8 +844,10 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
   const double direction = std::round(10.0 * rad_to_deg(r.launch.horizontal_angle)) / 10.0;
   ImGui::Text("Direction   %.1f deg%s", std::abs(direction), direction > 0.0 ? " R" : direction < 0.0 ? " L" : "");
   ImGui::Text("Spin        %.0f rpm", radps_to_rpm(r.launch.spin.total));
-  const double axis = rad_to_deg(r.launch.spin.axis_rad);
-  ImGui::Text("Spin axis   %.1f deg", std::abs(axis) < 0.05 ? 0.0 : axis);  // no "-0.0" for a putt
+  // Tilted right (+) the ball curves right: said by side as the direction is, so "-24.8 deg"
+  // needs no sign key (no "-0.0" for a putt).
+  const double axis = std::round(10.0 * rad_to_deg(r.launch.spin.axis_rad)) / 10.0;
+  ImGui::Text("Spin axis   %.1f deg%s", std::abs(axis), axis > 0.0 ? " R" : axis < 0.0 ? " L" : "");
   const bool putt = r.trajectory.summary.rolled_only();
   if (putt && flight_t >= duration(r.trajectory)) {
     ImGui::Separator();

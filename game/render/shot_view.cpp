@@ -51,20 +51,31 @@ Camera putt_address_camera(const Vec3& ball, const Vec3& aim, double to_pin) {
   // (3.2 - 1.7)). Higher, a long putt's flag leaves the top of the frame while the ball is
   // held above the meter.
   c.eye = ball - 4.0 * aim + 0.6 * right + Vec3(0.0, 3.2, 0.0);
-  c.target = ball + (std::min(to_pin, 12.0) + 0.5) * aim;
-  c.target.y() = ball.y() - 0.2;
-  c.fov_y = deg_to_rad(45.0);
-  // Looking that far ahead alone puts a long putt's ball at the image's bottom edge, under
-  // the meter (the bottom ~110 px of the window): tilt down until the ball is no lower
-  // than 55 % of the half-height below the centre, which clears the meter in any window
-  // 500 px or taller and keeps the cup and the flag of a 40 ft putt in view.
-  const Vec3 to_ball = ball - c.eye, to_target = c.target - c.eye;
-  const double ball_dip = std::atan2(-to_ball.y(), std::hypot(to_ball.x(), to_ball.z()));
-  const double max_below_centre = std::atan(0.55 * std::tan(0.5 * c.fov_y));
-  const double flat = std::hypot(to_target.x(), to_target.z());
-  const double least_pitch = ball_dip - max_below_centre;
-  if (std::atan2(-to_target.y(), flat) < least_pitch) c.target.y() = c.eye.y() - flat * std::tan(least_pitch);
-  return c;
+  // The flag's top at the cup (the green taken as level): past ~40 ft the tilt that holds
+  // the ball above the meter leaves it out of the top of the frame (a 61 ft chip's cloth
+  // was cut off), so the lens widens, 2.5° at a time up to 60°, until it is in.
+  const Vec3 flag_top = ball + to_pin * aim + Vec3(0.0, kFlagstickHeight, 0.0);
+  for (double fov = 45.0;; fov += 2.5) {
+    c.target = ball + (std::min(to_pin, 12.0) + 0.5) * aim;
+    c.target.y() = ball.y() - 0.2;
+    c.fov_y = deg_to_rad(fov);
+    // Looking that far ahead alone puts a long putt's ball at the image's bottom edge, under
+    // the meter (the bottom ~110 px of the window): tilt down until the ball is no lower
+    // than 55 % of the half-height below the centre, which clears the meter in any window
+    // 500 px or taller and keeps the cup and the flag of a 40 ft putt in view.
+    const Vec3 to_ball = ball - c.eye, to_target = c.target - c.eye;
+    const double ball_dip = std::atan2(-to_ball.y(), std::hypot(to_ball.x(), to_ball.z()));
+    const double half = std::tan(0.5 * c.fov_y);
+    const double max_below_centre = std::atan(0.55 * half);
+    const double flat = std::hypot(to_target.x(), to_target.z());
+    const double least_pitch = ball_dip - max_below_centre;
+    if (std::atan2(-to_target.y(), flat) < least_pitch) c.target.y() = c.eye.y() - flat * std::tan(least_pitch);
+    // The flag's top within 90 % of the half-height above the centre.
+    const Vec3 to_flag = flag_top - c.eye, forward = (c.target - c.eye).normalized();
+    const double ahead = to_flag.dot(forward);
+    const double up = to_flag.dot(c.true_up());
+    if (fov >= 60.0 || (ahead > 0.0 && up / ahead <= 0.9 * half)) return c;
+  }
 }
 
 Camera clear_view_of(const Camera& c, const Vec3& ball, const Terrain& world) {

@@ -37,6 +37,16 @@ GolfSetup solo(const std::string& skill) {
   return s;
 }
 
+// The National's hole `index` (0-based) alone, its ball placed on the ground under (x, z).
+Course national_hole_from(std::size_t index, double x, double z) {
+  Course course = load_course(test::assets(), "national");
+  course.holes = {course.holes[index]};
+  SurfaceContact hit;
+  REQUIRE(ground_under(*course.holes[0].world->world, x, z, 400.0, 420.0, &hit));
+  course.holes[0].tee = hit.point;
+  return course;
+}
+
 Course first_hole(int holes = 1) {
   Course c = load_course(test::assets(), "links");
   c.holes.resize(static_cast<std::size_t>(holes));
@@ -154,7 +164,10 @@ TEST_CASE("at a hot seat each player's meter marks his own last clicks, not his 
   REQUIRE(play.last_click());
   const double yours = play.last_click()->power();
   double t = 3.0;
-  while (play.player() != 1 && t < 40.0) play.update({at(IntentKind::Continue, t)}, t += 0.5);
+  while (play.player() != 1 && t < 40.0) {
+    t += 0.5;
+    play.update({at(IntentKind::Continue, t)}, t);
+  }
   REQUIRE(play.player() == 1);
   while (play.stage() != GolfPlay::Stage::Aiming && t < 60.0) play.update({}, t += 0.5);
   // Bob has not swung: no marks of his (You's were the last clicks made).
@@ -874,12 +887,8 @@ TEST_CASE("a chip's aim off the pin in a crosswind is not the wind's: the air mo
   // landing by tens of centimetres, so any aim he takes off the pin is the green's or his
   // line's, never "the wind drifts it".
   for (const double side : {-1.0, 1.0}) {
-    Course course = load_course(test::assets(), "national");
-    course.holes = {course.holes[9]};
-    SurfaceContact hit;
-    REQUIRE(ground_under(*course.holes[0].world->world, 93.5, -407.7, 400.0, 420.0, &hit));
+    Course course = national_hole_from(9, 93.5, -407.7);
     CourseHole& h = course.holes[0];
-    h.tee = hit.point;
     const Vec3 line = h.pin - h.tee;
     h.wind_speed = 5.0;
     h.wind_toward = std::atan2(line.z(), line.x()) + side * kPi / 2.0;
@@ -902,11 +911,7 @@ TEST_CASE("behind a tree the caddie's aim points the way out, not at the flag", 
   // The National's 9th from the left rough ~225 m out: a tree ~15 m ahead on the line to the
   // flag (the bot's test, test_golf_round.cpp). The player is handed the caddie's club and
   // line: a club aimed at the flag would strike the tree.
-  Course course = load_course(test::assets(), "national");
-  course.holes = {course.holes[8]};
-  SurfaceContact hit;
-  REQUIRE(ground_under(*course.holes[0].world->world, -307.4, -473.5, 400.0, 420.0, &hit));
-  course.holes[0].tee = hit.point;
+  const Course course = national_hole_from(8, -307.4, -473.5);
   const GolfPlay play(test::assets(), course, solo("amateur"));
   REQUIRE(play.caddie_plan());
   INFO(play.club() << " aimed " << play.aim() << " rad");
@@ -926,13 +931,10 @@ TEST_CASE("the caddie's part swing at the pin stops where the pin mark does, not
   // The National's 2nd, a scratch player a little past half way: his 3-wood swung soft. Tuned
   // in three tries from a guess it stopped 14 m short in the rough, where the pin mark's
   // power stopped at the pin on the green.
-  Course course = load_course(test::assets(), "national");
-  course.holes = {course.holes[1]};
-  const Vec3 tee = course.holes[0].tee, pin = course.holes[0].pin;
-  const Vec3 p = tee + 0.55 * (pin - tee);
-  SurfaceContact hit;
-  REQUIRE(ground_under(*course.holes[0].world->world, p.x(), p.z(), 400.0, 420.0, &hit));
-  course.holes[0].tee = hit.point;
+  const Course national = load_course(test::assets(), "national");
+  const CourseHole& second = national.holes[1];
+  const Vec3 p = second.tee + 0.55 * (second.pin - second.tee);
+  const Course course = national_hole_from(1, p.x(), p.z());
   const GolfPlay play(test::assets(), course, solo("scratch"));
   const std::optional<double> part = play.caddie_part_swing(play.club());
   REQUIRE(part);
@@ -942,11 +944,7 @@ TEST_CASE("the caddie's part swing at the pin stops where the pin mark does, not
 }
 
 TEST_CASE("the meter's carry scale is the aim's: turned back at the tree, it reads the tree", "[modes][golf]") {
-  Course course = load_course(test::assets(), "national");
-  course.holes = {course.holes[8]};
-  SurfaceContact hit;
-  REQUIRE(ground_under(*course.holes[0].world->world, -307.4, -473.5, 400.0, 420.0, &hit));
-  course.holes[0].tee = hit.point;
+  const Course course = national_hole_from(8, -307.4, -473.5);
   GolfPlay play(test::assets(), course, solo("amateur"));
   const std::string club = play.club();
   // Along the caddie's line, clear of the tree: the scale's full swing is the stroke's carry.

@@ -91,7 +91,9 @@ void draw_meter_caption(const MeterBar& bar, const std::string& text);
 void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h, double now);
 /// Ball data at launch, carry once the ball has landed (as a launch monitor shows them).
 /// `hit_tree`: its first touch was a tree, so the carry reads as where it struck it.
-void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree = false);
+/// `top`: its top edge (px); below another panel where the window is too narrow for both.
+void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree = false,
+                       float top = 10.0f);
 void draw_golf_card(const GolfPlay& play, int w, bool final);
 /// The cup and flagstick, never smaller than a few pixels however far. `scene_has_flag`: the
 /// 3-D scene draws this pin's own flag (a course's), so near enough only the cup (and the

@@ -830,8 +830,8 @@ void draw_meter_caption(const MeterBar& bar, const std::string& text) {
   if (!lines.second.empty()) dl->AddText(ImVec2(x, top + line), IM_COL32(255, 255, 255, 255), lines.second.c_str());
 }
 
-void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree) {
-  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(w) - 250, 10), ImGuiCond_Always);
+void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree, float top) {
+  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(w) - 250, top), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(240, 0), ImGuiCond_Always);
   ImGui::Begin("Launch monitor", nullptr, kFixed);
   if (r.club.speed > 0.0 && r.trajectory.summary.apex_m >= 0.05) {  // a full or part swing: the club's numbers too

@@ -54,7 +54,8 @@ class RangeView final : public ModeView {
 
  private:
   /// `in_air`: the last ball has not landed yet; its carry stays out of the table until it has.
-  void draw_panel(int w, bool in_air);
+  /// Returns the panel's bottom edge (px).
+  float draw_panel(int w, bool in_air);
   void save_bag();
 
   const Assets& assets_;
@@ -83,7 +84,7 @@ void RangeView::save_bag() {
   }
 }
 
-void RangeView::draw_panel(int w, bool in_air) {
+float RangeView::draw_panel(int w, bool in_air) {
   // The ball still in the air is left out until it lands.
   const std::size_t shots = play_->session().shots().size();
   const std::size_t counted = in_air && shots > 0 ? shots - 1 : shots;
@@ -141,8 +142,10 @@ void RangeView::draw_panel(int w, bool in_air) {
   ImGui::TextDisabled("Esc: pause  Tab: next mode");
   if (!play_->message().empty()) ImGui::TextWrapped("%s", play_->message().c_str());
   if (!note_.empty()) ImGui::TextWrapped("%s", note_.c_str());
+  const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
   ImGui::End();
   (void)w;
+  return bottom;
 }
 
 void RangeView::frame(const ViewInput& in, Renderer& renderer) {
@@ -221,8 +224,13 @@ void RangeView::frame(const ViewInput& in, Renderer& renderer) {
     for (const Vec3& p : RangePlay::targets(units_.imperial))
       draw_cup_and_flag(cam, p, w, h, false, units_.distance(p.x()), view.label_boxes);
   }
-  draw_panel(w, flying && t < play_->last_shot().trajectory.summary.hang_time_s);
-  if (hit) draw_launch_panel(play_->last_shot(), units_, w, t);  // the last ball's numbers, its carry once it lands
+  const float panel_bottom = draw_panel(w, flying && t < play_->last_shot().trajectory.summary.hang_time_s);
+  // The last ball's numbers, its carry once it lands: beside the range's panel (10..530 px),
+  // or under it where the window is too narrow for both (at 640 px it covered the table's
+  // side and gap columns).
+  constexpr float kPanelRight = 530.0f, kLaunchPanelWide = 250.0f;
+  const float top = static_cast<float>(w) - kLaunchPanelWide < kPanelRight + 10.0f ? panel_bottom + 10.0f : 10.0f;
+  if (hit) draw_launch_panel(play_->last_shot(), units_, w, t, false, top);
   if (play_->stage() != RangePlay::Stage::Flying) {
     const MeterBar bar =
         draw_meter_bar(play_->meter(), play_->next_meter(), play_->last_click(), w, h, in.now);

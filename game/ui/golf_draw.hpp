@@ -107,6 +107,10 @@ void draw_cup_and_flag(const Camera& cam, const Vec3& pin, int w, int h, bool sc
                        const std::vector<Eigen::Vector4f>& clear_of = {});
 /// The aim line from the ball (to the cup's distance and a metre on for a putt).
 void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h);
+/// The other players' balls on this hole, each with its player's name, where `cam` sees them
+/// (the map draws its own): on a green a partner's ball is part of the read. Not drawn
+/// where one of `clear_of` (the play panel) would cover its name.
+void draw_other_balls(const GolfPlay& play, const Camera& cam, int w, int h, const std::vector<Eigen::Vector4f>& clear_of);
 /// The caddie's read of the putt (GolfPlay::putt_read), dotted along the green where his
 /// putt rolls.
 void draw_putt_read(const GolfPlay& play, const Camera& cam, int w, int h);

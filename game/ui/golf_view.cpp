@@ -735,6 +735,7 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     if (addressing) {
       draw_aim(*play_, cam, w, h);
       draw_putt_read(*play_, cam, w, h);  // over the aim line it starts along
+      if (camera_ != 3) draw_other_balls(*play_, cam, w, h, {hud_box_});  // the map marks its own
     }
     if (addressing && camera_ == 3) {
       draw_map_marks(*play_, units_, cam, w, h, r.hole().world->trees, view.label_boxes);

@@ -498,8 +498,8 @@ void BattingCage::apply(const Intent& in) {
       if (stage_ == Stage::Called && !told_) {
         // A second press while the pitch he missed is still on its way: one swing a pitch,
         // and the next pitch only once this one is called.
-        constexpr std::string_view kOne = "   (one swing a pitch)";
-        if (!call_text_.ends_with(kOne)) call_text_ += kOne;
+        const std::string_view said = in.kind == IntentKind::Swing ? "   (one swing a pitch)" : "   (the next pitch once this one is called)";
+        if (!call_text_.ends_with(said)) call_text_ += said;
       } else if (stage_ != Stage::Pitching) {
         // Space between pitches calls for the next one, as P does.
         next_pitch(t);

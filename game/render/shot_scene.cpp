@@ -588,8 +588,10 @@ Scene ShotScene::build(const Camera& camera, double t, int width, int height) co
     append_text(scene.top_overlay, text, origin, cam_right, cam_up, h, color);
     return true;
   };
-  // The trail colours' key, bottom-left, claimed first so no label covers it.
-  if (samples.size() >= 2 && m.style.legend) {
+  // The trail colours' key, bottom-left, claimed first so no label covers it; none for a
+  // ball lying still (a golfer at address, a hole's flyover): no trail for it to explain.
+  const bool trail = samples.size() >= 2 && (samples.back().position - samples.front().position).norm() > 1e-3;
+  if (trail && m.style.legend) {
     std::vector<LegendEntry> keys = {
         {phase_color(Phase::Flight), "flight"}, {phase_color(Phase::Bounce), "bounce"}, {phase_color(Phase::Roll), "roll"}};
     if (delivered) keys.push_back({kPathColor, "path"});

@@ -509,11 +509,11 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     const bool on_green = lie == "green" || lie == "holed";
     const std::string away = on_green ? units.putt(last.to_pin_m) : units.course(last.to_pin_m);
     // A ball at rest and then holed by a conceded putt (a gimme): where it stopped, on the green.
-    if (lie == "holed") ImGui::Text("At rest %s from the pin: conceded", away.c_str());
+    if (lie == "holed") ImGui::TextWrapped("At rest %s from the pin: conceded", away.c_str());
     else if (last.club == "putter" && last.lie == "green")
       // A putt is judged by its pace: how far past the cup it ran, or how short it stopped,
       // along its line (the rest of the distance is the line's miss).
-      ImGui::Text("At rest %s from the pin (%s %s), %s", away.c_str(), units.putt(std::abs(last.past_m)).c_str(),
+      ImGui::TextWrapped("At rest %s from the pin (%s %s), %s", away.c_str(), units.putt(std::abs(last.past_m)).c_str(),
                   last.past_m >= 0.0 ? "past" : "short", lie_words(lie));
     else {
       // Off the green a miss is read as a caddie reads it: long or short of the pin and to
@@ -523,8 +523,8 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       std::string where;
       if (std::abs(last.past_m) >= miss / 3.0) where = last.past_m >= 0.0 ? "long" : "short";
       if (std::abs(last.right_m) >= miss / 3.0) where += std::string(where.empty() ? "" : ", ") + (last.right_m >= 0.0 ? "right" : "left");
-      if (where.empty()) ImGui::Text("At rest %s from the pin, %s", away.c_str(), lie_words(lie));
-      else ImGui::Text("At rest %s from the pin (%s), %s", away.c_str(), where.c_str(), lie_words(lie));
+      if (where.empty()) ImGui::TextWrapped("At rest %s from the pin, %s", away.c_str(), lie_words(lie));
+      else ImGui::TextWrapped("At rest %s from the pin (%s), %s", away.c_str(), where.c_str(), lie_words(lie));
     }
   };
   if (!play.message().empty() && !in_air) {

@@ -278,7 +278,7 @@ void MessageFramer::resolve(std::vector<Piece>& out) {
     if (status == JsonScanner::Status::Invalid) {
       const std::size_t bad = scanned_ - 1;
       broken(out, scanner_.too_deep() ? Piece::Kind::TooDeep : Piece::Kind::Broken, bad + 1,
-             std::string(scanner_.reason()) + " at byte " + std::to_string(bad - head_ + 1));
+             std::string(scanner_.reason()) + " at byte " + std::to_string(bad - head_ + 1) + value_of(head_, bad));
       resume_inside(bad + 1);  // the refused byte may itself begin the next message
       continue;
     }
@@ -290,6 +290,24 @@ void MessageFramer::resolve(std::vector<Piece>& out) {
     compact();
     return;  // unfinished: wait for more bytes
   }
+}
+
+std::string MessageFramer::value_of(std::size_t from, std::size_t bad) const {
+  constexpr std::size_t kLongestKey = 64;  // Open Connect's keys are a few words
+  std::size_t i = bad;
+  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  while (i > from && blank(buf_[i - 1])) --i;
+  if (i <= from || buf_[i - 1] != ':') return "";
+  --i;
+  while (i > from && blank(buf_[i - 1])) --i;
+  if (i <= from || buf_[i - 1] != '"') return "";
+  const std::size_t end = --i;
+  while (i > from && buf_[i - 1] != '"' && end - i < kLongestKey) --i;
+  if (i <= from || buf_[i - 1] != '"' || i == end) return "";
+  const std::string key = buf_.substr(i, end - i);
+  // Said only when it can be printed as it is (a key of control bytes names nothing).
+  if (!std::all_of(key.begin(), key.end(), [](char c) { return c >= 0x20 && c <= 0x7e; })) return "";
+  return " (the value of \"" + key + "\")";
 }
 
 std::vector<MessageFramer::Piece> MessageFramer::finish() {

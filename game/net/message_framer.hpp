@@ -90,6 +90,9 @@ class MessageFramer {
   void resolve(std::vector<Piece>& out);
   void start_candidate(std::size_t at);
   void broken(std::vector<Piece>& out, Piece::Kind kind, std::size_t end, const std::string& reason);
+  /// " (the value of \"Speed\")" when the bytes [from, bad) end in a key and its ':' (so the
+  /// refused byte is that key's value: "Speed":NaN), else "": the message names the field.
+  std::string value_of(std::size_t from, std::size_t bad) const;
   void resume_inside(std::size_t end);
   void flush_garbage(std::vector<Piece>& out);
   /// Whether a whole object starts at `at` (then `*end` is one past it).

@@ -196,3 +196,19 @@ TEST_CASE("any valid message after any garbage prefix is found once (10^5 prefix
   }
   CHECK(failures == 0);
 }
+
+TEST_CASE("a value JSON does not have is named by its key", "[net][framer][hostile]") {
+  MessageFramer f;
+  std::vector<MessageFramer::Piece> pieces = f.feed(R"({"APIversion":"1","BallData":{"Speed": NaN,"VLA":12}})" + shot("after"));
+  REQUIRE_FALSE(pieces.empty());
+  CHECK(pieces.front().kind == Kind::Broken);
+  CHECK_THAT(pieces.front().reason, Catch::Matchers::Contains("(the value of \"Speed\")"));
+  // The shot after it is still whole.
+  append(pieces, f.finish());
+  CHECK(messages(pieces).size() == 1);
+  // A fault that is no key's value names none.
+  MessageFramer g;
+  const auto other = g.feed(R"({"APIversion":"1",,"BallData":{}})");
+  REQUIRE_FALSE(other.empty());
+  CHECK_THAT(other.front().reason, !Catch::Matchers::Contains("the value of"));
+}

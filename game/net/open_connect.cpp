@@ -56,7 +56,8 @@ bool number_text(std::string_view t) {
   return i == t.size();
 }
 
-std::optional<double> number(const nlohmann::json& o, const char* key, const char* where, double lo, double hi) {
+// `unit`: the protocol's unit of the field (mph, deg, rpm; "" for a count), said with its range.
+std::optional<double> number(const nlohmann::json& o, const char* key, const char* where, double lo, double hi, const char* unit = "") {
   const nlohmann::json* v = field(o, key);
   if (v == nullptr) return std::nullopt;
   double d = 0.0;
@@ -73,7 +74,7 @@ std::optional<double> number(const nlohmann::json& o, const char* key, const cha
   }
   if (!std::isfinite(d) || d < lo || d > hi)
     throw InputError(std::string(where) + "." + key + " = " + short_number(d) + " is out of range (allowed [" +
-                     short_number(lo) + ", " + short_number(hi) + "])");
+                     short_number(lo) + ", " + short_number(hi) + "]" + (*unit ? std::string(" ") + unit : std::string()) + ")");
   return d;
 }
 
@@ -134,19 +135,19 @@ OcMessage parse_open_connect(std::string_view text) {
     if (b == nullptr || !b->is_object()) throw InputError("ContainsBallData is true but BallData is missing");
     OcBallData ball;
     // Ranges: a ball speed up to 250 mph and spins to 20000 rpm cover every launch monitor.
-    const auto speed = number(*b, "Speed", "BallData", 0.0, 250.0);
+    const auto speed = number(*b, "Speed", "BallData", 0.0, 250.0, "mph");
     if (!speed) throw InputError("BallData.Speed is missing");
     ball.speed_mph = *speed;
     // A launch angle is what makes a shot: a message without one is refused, never flown
     // as a 0° skimmer. A missing HLA is a straight shot (some connectors omit it then).
-    const auto vla = number(*b, "VLA", "BallData", -90.0, 90.0);
+    const auto vla = number(*b, "VLA", "BallData", -90.0, 90.0, "deg");
     if (!vla) throw InputError("BallData.VLA is missing");
     ball.vla_deg = *vla;
-    ball.hla_deg = number(*b, "HLA", "BallData", -90.0, 90.0).value_or(0.0);
-    const auto total = number(*b, "TotalSpin", "BallData", 0.0, 20000.0);
-    const auto axis = number(*b, "SpinAxis", "BallData", -180.0, 180.0);
-    const auto back = number(*b, "BackSpin", "BallData", -20000.0, 20000.0);
-    const auto side = number(*b, "SideSpin", "BallData", -20000.0, 20000.0);
+    ball.hla_deg = number(*b, "HLA", "BallData", -90.0, 90.0, "deg").value_or(0.0);
+    const auto total = number(*b, "TotalSpin", "BallData", 0.0, 20000.0, "rpm");
+    const auto axis = number(*b, "SpinAxis", "BallData", -180.0, 180.0, "deg");
+    const auto back = number(*b, "BackSpin", "BallData", -20000.0, 20000.0, "rpm");
+    const auto side = number(*b, "SideSpin", "BallData", -20000.0, 20000.0, "rpm");
     if (!total && !back && !side)
       throw InputError("BallData has no spin: give TotalSpin (and SpinAxis), or BackSpin and SideSpin");
     // Both forms given: TotalSpin and SpinAxis win. They need not agree with BackSpin and
@@ -170,15 +171,15 @@ OcMessage parse_open_connect(std::string_view text) {
   if (has_club) {
     if (const nlohmann::json* c = field(j, "ClubData"); c && c->is_object()) {
       OcClubData club;
-      club.speed_mph = number(*c, "Speed", "ClubData", 0.0, 250.0);
-      club.angle_of_attack_deg = number(*c, "AngleOfAttack", "ClubData", -45.0, 45.0);
-      club.face_to_target_deg = number(*c, "FaceToTarget", "ClubData", -45.0, 45.0);
-      club.path_deg = number(*c, "Path", "ClubData", -45.0, 45.0);
-      club.loft_deg = number(*c, "Loft", "ClubData", -10.0, 90.0);
-      club.lie_deg = number(*c, "Lie", "ClubData", -90.0, 90.0);
-      club.vertical_impact_mm = number(*c, "VerticalFaceImpact", "ClubData", -100.0, 100.0);
-      club.horizontal_impact_mm = number(*c, "HorizontalFaceImpact", "ClubData", -100.0, 100.0);
-      club.closure_rate_dps = number(*c, "ClosureRate", "ClubData", -20000.0, 20000.0);
+      club.speed_mph = number(*c, "Speed", "ClubData", 0.0, 250.0, "mph");
+      club.angle_of_attack_deg = number(*c, "AngleOfAttack", "ClubData", -45.0, 45.0, "deg");
+      club.face_to_target_deg = number(*c, "FaceToTarget", "ClubData", -45.0, 45.0, "deg");
+      club.path_deg = number(*c, "Path", "ClubData", -45.0, 45.0, "deg");
+      club.loft_deg = number(*c, "Loft", "ClubData", -10.0, 90.0, "deg");
+      club.lie_deg = number(*c, "Lie", "ClubData", -90.0, 90.0, "deg");
+      club.vertical_impact_mm = number(*c, "VerticalFaceImpact", "ClubData", -100.0, 100.0, "mm");
+      club.horizontal_impact_mm = number(*c, "HorizontalFaceImpact", "ClubData", -100.0, 100.0, "mm");
+      club.closure_rate_dps = number(*c, "ClosureRate", "ClubData", -20000.0, 20000.0, "deg/s");
       m.club = club;
     }
   }

@@ -240,6 +240,9 @@ TEST_CASE("one strict value rule on the wire: numbers without units, booleans as
   CHECK(parse_open_connect(shot(R"("Speed":"150.25","VLA":"-1.5e1","TotalSpin":"2500")")).ball->vla_deg == -15.0);
   CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":"1e999","VLA":10,"TotalSpin":2500)")),
                     Catch::Contains("BallData.Speed") && Catch::Contains("out of range"));
+  // A range says the protocol's unit.
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":900,"VLA":10,"TotalSpin":2500)")), Catch::Contains("(allowed [0, 250] mph)"));
+  CHECK_THROWS_WITH(parse_open_connect(shot(R"("Speed":150,"VLA":10,"TotalSpin":25000)")), Catch::Contains("(allowed [0, 20000] rpm)"));
   // Before: "true" (or 1) was read as false, and the shot was answered 200 and dropped.
   for (const std::string flag : {R"("true")", "1", R"("yes")", "null"}) {
     INFO(flag);

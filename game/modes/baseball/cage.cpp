@@ -531,7 +531,12 @@ void BattingCage::apply(const Intent& in) {
       // Between pitches B calls for one; the pro swings at it when it reaches him (advance),
       // unless it is already past him.
       if (bot_armed_ || (pro_takes_ && stage_ == Stage::Pitching)) break;  // he has this pitch already
-      if (stage_ == Stage::Called && !told_) break;  // the missed pitch is called first
+      if (stage_ == Stage::Called && !told_) {
+        // The missed pitch is called first; the press is answered, not dropped.
+        constexpr std::string_view kWait = "   (the next pitch once this one is called)";
+        if (!call_text_.ends_with(kWait)) call_text_ += kWait;
+        break;
+      }
       if (stage_ != Stage::Pitching) next_pitch(t);
       else if (pitch_clock(t) > pitch_.flight_time) break;
       if (live_) {

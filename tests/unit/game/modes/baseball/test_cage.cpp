@@ -285,6 +285,11 @@ TEST_CASE("a swing through a pitch early is called a strike when the pitch reach
   CHECK(cage.swings().size() == 1);
   CHECK(cage.stage() == BattingCage::Stage::Called);
   CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith("(one swing a pitch)"));
+  // Nor is B (the pro) or P: answered, the pitch still the one on its way.
+  cage.update({at(IntentKind::BotSwings, swung + 0.12)}, swung + 0.13);
+  CHECK(cage.swings().size() == 1);
+  CHECK(cage.stage() == BattingCage::Stage::Called);
+  CHECK_THAT(cage.call_text(), Catch::Matchers::EndsWith("(the next pitch once this one is called)"));
   // At the plate: the call, with how he missed, and the strike counted.
   cage.update({}, arrive - 0.005);
   CHECK_FALSE(cage.told());

@@ -840,14 +840,17 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
   }
   ImGui::Text("Ball speed  %s", units.speed(r.launch.ball_speed).c_str());
   ImGui::Text("Launch      %.1f deg", rad_to_deg(r.launch.vertical_angle));
-  // A start line that rounds to 0.0 has no side.
-  const double direction = std::round(10.0 * rad_to_deg(r.launch.horizontal_angle)) / 10.0;
-  ImGui::Text("Direction   %.1f deg%s", std::abs(direction), direction > 0.0 ? " R" : direction < 0.0 ? " L" : "");
+  // An angle by side, to a tenth: one that rounds to 0.0 has none (no "-0.0" for a putt).
+  const auto by_side = [](double rad) {
+    const double deg = std::round(10.0 * rad_to_deg(rad)) / 10.0;
+    char t[32];
+    std::snprintf(t, sizeof t, "%.1f deg%s", std::abs(deg), deg > 0.0 ? " R" : deg < 0.0 ? " L" : "");
+    return std::string(t);
+  };
+  ImGui::Text("Direction   %s", by_side(r.launch.horizontal_angle).c_str());
   ImGui::Text("Spin        %.0f rpm", radps_to_rpm(r.launch.spin.total));
-  // Tilted right (+) the ball curves right: said by side as the direction is, so "-24.8 deg"
-  // needs no sign key (no "-0.0" for a putt).
-  const double axis = std::round(10.0 * rad_to_deg(r.launch.spin.axis_rad)) / 10.0;
-  ImGui::Text("Spin axis   %.1f deg%s", std::abs(axis), axis > 0.0 ? " R" : axis < 0.0 ? " L" : "");
+  // Tilted right (+) the ball curves right: said by side as the direction is.
+  ImGui::Text("Spin axis   %s", by_side(r.launch.spin.axis_rad).c_str());
   const bool putt = r.trajectory.summary.rolled_only();
   if (putt && flight_t >= duration(r.trajectory)) {
     ImGui::Separator();

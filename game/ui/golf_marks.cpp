@@ -135,30 +135,39 @@ void draw_aim(const GolfPlay& play, const Camera& cam, int w, int h) {
   if (p0 && p1) dl->AddLine(px(*p0), px(*p1), IM_COL32(255, 255, 255, 170), 2.0f);
 }
 
-void draw_other_balls(const GolfPlay& play, const Camera& cam, int w, int h, const std::vector<Eigen::Vector4f>& clear_of) {
-  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+namespace {
+// `f(name, ball)` for each other player with a ball in play on the hole being played.
+template <class F>
+void for_each_other_ball(const GolfPlay& play, F f) {
   const GolfGroup& g = play.group();
   const GolfRound& r = play.round();
   for (std::size_t p = 0; p < g.players().size(); ++p) {
     if (static_cast<int>(p) == play.player()) continue;
     const GolfRound& o = g.round(static_cast<int>(p));
     if (o.finished() || o.hole_index() != r.hole_index() || o.card().back().shots.empty()) continue;
+    f(g.players()[p].name, o.ball());
+  }
+}
+}  // namespace
+
+void draw_other_balls(const GolfPlay& play, const Camera& cam, int w, int h, const std::vector<Eigen::Vector4f>& clear_of) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  for_each_other_ball(play, [&](const std::string& name, const Vec3& ball) {
     const double radius = 0.02134;  // m: a golf ball at the Rules of Golf's least, 42.67 mm across
-    const Vec3 centre = o.ball() + Vec3(0.0, radius, 0.0);
+    const Vec3 centre = ball + Vec3(0.0, radius, 0.0);
     const auto at = cam.project(centre, w, h), edge = cam.project(centre + radius * cam.true_up(), w, h);
-    if (!at || at->x() < 0.0 || at->x() > w || at->y() < 0.0 || at->y() > h) continue;
+    if (!at || at->x() < 0.0 || at->x() > w || at->y() < 0.0 || at->y() > h) return;
     // Its true size near, never under 3 px far off, so it is found.
     const float rad = std::max(3.0f, edge ? static_cast<float>((*at - *edge).norm()) : 0.0f);
     const ImVec2 c = px(*at);
     dl->AddCircleFilled(c, rad, IM_COL32(245, 245, 245, 255));
     dl->AddCircle(c, rad, IM_COL32(0, 0, 0, 200), 0, 1.0f);
-    const std::string& name = g.players()[p].name;
     const ImVec2 size = ImGui::CalcTextSize(name.c_str());
     const ImVec2 label(c.x + rad + 4.0f, c.y - 0.5f * size.y);
-    if (overlaps_any({label.x, label.y}, {label.x + size.x, label.y + size.y}, clear_of)) continue;
+    if (overlaps_any({label.x, label.y}, {label.x + size.x, label.y + size.y}, clear_of)) return;
     dl->AddText(ImVec2(label.x + 1.0f, label.y + 1.0f), IM_COL32(0, 0, 0, 200), name.c_str());
     dl->AddText(label, IM_COL32(235, 235, 235, 255), name.c_str());
-  }
+  });
 }
 
 void draw_putt_read(const GolfPlay& play, const Camera& cam, int w, int h) {
@@ -320,17 +329,12 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
     dl->AddCircle(px(*bp), 6.0f, IM_COL32(0, 0, 0, 255), 0, 1.5f);
   }
   // The other players' balls on this hole.
-  const GolfGroup& g = play.group();
-  for (std::size_t p = 0; p < g.players().size(); ++p) {
-    if (static_cast<int>(p) == play.player()) continue;
-    const GolfRound& o = g.round(static_cast<int>(p));
-    if (o.finished() || o.hole_index() != r.hole_index() || o.card().back().shots.empty()) continue;
-    if (const auto op = cam.project(o.ball() + Vec3(0, 0.3, 0), w, h)) {
+  for_each_other_ball(play, [&](const std::string& name, const Vec3& ball) {
+    if (const auto op = cam.project(ball + Vec3(0, 0.3, 0), w, h)) {
       dl->AddCircleFilled(px(*op), 4.0f, IM_COL32(200, 200, 200, 230));
-      const std::string& name = g.players()[p].name;
       dl->AddText(place(ImVec2(px(*op).x + 6, px(*op).y - 6), name, px(*op)), IM_COL32(220, 220, 220, 255), name.c_str());
     }
-  }
+  });
 }
 
 }  // namespace sweetspot

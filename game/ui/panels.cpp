@@ -15,6 +15,7 @@
 #include "game/content/scenario_toml.hpp"
 #include "game/report/report.hpp"
 #include "game/ui/trajectory_plot.hpp"
+#include "game/ui/wrapped_text.hpp"
 #include "physics/aero.hpp"
 #include "physics/units.hpp"
 
@@ -287,11 +288,7 @@ bool tuning_section(PanelContext& c) {
     // With the contact's shear spring more friction is not always more spin: said, as a
     // physics reader expects the rigid model's rise to a plateau.
     if (!grips && mat.model == ImpactModel::Compliant)
-    {
-      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-      ImGui::TextWrapped("%s", "spin peaks where the face first grips the ball; more mu grips it sooner and its shear spring gives some back");
-      ImGui::PopStyleColor();
-    }
+      disabled_wrapped("spin peaks where the face first grips the ball; more mu grips it sooner and its shear spring gives some back");
   }
   int model = static_cast<int>(mat.friction);
   const char* models[] = {"none", "textbook", "coulomb"};

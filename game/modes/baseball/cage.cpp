@@ -14,6 +14,8 @@ namespace sweetspot {
 namespace {
 /// How miss_call begins every miss; strike three swinging keeps the rest of its words.
 constexpr std::string_view kSwingingStrike = "Swinging strike";
+/// Said beside a missed pitch's call still to come, for a press that would call the next.
+constexpr std::string_view kNextPitchAfterCall = "the next pitch once this one is called";
 
 // A miss's distance in a batter's units (the cage says feet, mph and inches): tenths under an
 // inch, never "0.0 in"; whole inches past it.
@@ -336,6 +338,11 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   }
 }
 
+void BattingCage::note_beside_call(std::string_view note) {
+  const std::string said = "   (" + std::string(note) + ")";
+  if (!call_text_.ends_with(said)) call_text_ += said;
+}
+
 int BattingCage::misses_in_a_row() const {
   int n = 0;
   for (auto it = swings_.rbegin(); it != swings_.rend(); ++it) {
@@ -465,8 +472,7 @@ void BattingCage::apply(const Intent& in) {
       // A ball in play still in the air is called first (the switch would clear its record
       // and its call unseen); the press is answered, not dropped.
       if (!told_) {
-        constexpr std::string_view kWait = "   (A: once this ball is called)";
-        if (!call_text_.ends_with(kWait)) call_text_ += kWait;
+        note_beside_call("A: once this ball is called");
         break;
       }
       // Each keeps its own record: practice swings are not the at-bats' (and the other's
@@ -498,8 +504,7 @@ void BattingCage::apply(const Intent& in) {
       if (stage_ == Stage::Called && !told_) {
         // A second press while the pitch he missed is still on its way: one swing a pitch,
         // and the next pitch only once this one is called.
-        const std::string_view said = in.kind == IntentKind::Swing ? "   (one swing a pitch)" : "   (the next pitch once this one is called)";
-        if (!call_text_.ends_with(said)) call_text_ += said;
+        note_beside_call(in.kind == IntentKind::Swing ? "one swing a pitch" : kNextPitchAfterCall);
       } else if (stage_ != Stage::Pitching) {
         // Space between pitches calls for the next one, as P does.
         next_pitch(t);
@@ -532,9 +537,7 @@ void BattingCage::apply(const Intent& in) {
       // unless it is already past him.
       if (bot_armed_ || (pro_takes_ && stage_ == Stage::Pitching)) break;  // he has this pitch already
       if (stage_ == Stage::Called && !told_) {
-        // The missed pitch is called first; the press is answered, not dropped.
-        constexpr std::string_view kWait = "   (the next pitch once this one is called)";
-        if (!call_text_.ends_with(kWait)) call_text_ += kWait;
+        note_beside_call(kNextPitchAfterCall);  // the missed pitch is called first; the press is answered
         break;
       }
       if (stage_ != Stage::Pitching) next_pitch(t);

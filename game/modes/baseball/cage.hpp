@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "game/modes/baseball/hitter.hpp"
@@ -160,6 +161,8 @@ class BattingCage {
   /// The league's starter for the live game now on (games_ of them so far): his hand drawn as
   /// the league's starters throw.
   void new_league_pitcher();
+  /// `note` in brackets after the call (once): a press answered while the call stands.
+  void note_beside_call(std::string_view note);
   /// Live: the pitch's result on the count, and the plate appearance's end when it comes.
   void count_pitch(PitchResult r);
 

@@ -582,7 +582,6 @@ void GolfPlay::land(double t) {
 
 void GolfPlay::strike_from_meter(const MeterInput& m, double t) {
   last_meter_ = m;
-  last_click_ = *meter_;
   const auto who = static_cast<std::size_t>(player_);
   click_of_.resize(group_.players().size());
   click_hole_.resize(group_.players().size(), 0);
@@ -620,7 +619,8 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
     std::snprintf(msg, sizeof msg, "%s, stroke %d: putt at %.0f %% power%s", who.name.c_str(), stroke_no,
                   100.0 * last_meter_->power, rest.c_str());
   } else if (last_meter_) {
-    const double late = last_click_ ? last_click_->click_error_ms() : last_meter_->accuracy_ms;
+    // The click as he made it (the meter he just swung: his own last click).
+    const double late = last_click() ? last_click()->click_error_ms() : last_meter_->accuracy_ms;
     // The meter plays a swing whose last click never came at its latest (MeterInput::kAccuracy).
     const bool at_the_limit = std::abs(late) >= MeterInput::kAccuracy.max - 0.5;
     // At the limit the player never made the third click in time: said so, in his words.
@@ -759,7 +759,6 @@ void GolfPlay::new_round(double t) {
   pending_message_.clear();
   meter_.reset();
   last_meter_.reset();
-  last_click_.reset();
   click_of_.clear();
   click_hole_.clear();
   struck_hole_.reset();

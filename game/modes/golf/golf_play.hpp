@@ -320,7 +320,6 @@ class GolfPlay {
   double aim_ = 0.0;
   std::optional<MeterClock> meter_;
   std::optional<MeterInput> last_meter_;
-  std::optional<MeterClock> last_click_;  ///< the meter as the last human stroke left it
   /// Per player: the meter as his own last stroke left it, and on which hole (group index).
   std::vector<std::optional<MeterClock>> click_of_;
   std::vector<std::size_t> click_hole_;

@@ -261,7 +261,8 @@ RunFn setup_round(CLI::App& sub) {
       ->check(int_range<int>(1, 18));
   sub.add_option("--resume", o->resume, "go on with a round written by --save (its players, format and options)");
   sub.add_option("--plot", o->plot, "also write the session's dispersion (carry vs side per club) to FILE.png");
-  return [o, balls, pins, course_arg](const Assets& assets) -> int {
+  auto* seed = sub.get_option("--seed");
+  return [o, balls, pins, course_arg, seed](const Assets& assets) -> int {
     if (o->mode != "stroke" && o->mode != "ctp" && o->mode != "long-drive")
       throw InputError("--mode " + o->mode + ": unknown mode (allowed: stroke, ctp, long-drive)");
     if (!o->swings.empty() && o->mode != "stroke")
@@ -271,9 +272,9 @@ RunFn setup_round(CLI::App& sub) {
     if (!o->plot.empty()) check_png_output(o->plot, "--plot");
     if (o->balls < 1 || o->balls > 100) throw InputError("--balls " + std::to_string(o->balls) + " is out of range (allowed [1, 100])");
     if (!o->resume.empty() && (!o->bots.empty() || !o->handicaps.empty() || o->format != "stroke" || !o->swings.empty() ||
-                               o->calm || o->gimme >= 0.0 || o->mode != "stroke" || !o->bag.empty()))
-      throw InputError("--resume: the saved round sets its players, format and options; give none of --bot, --handicap, "
-                       "--format, --gimme, --calm, --swings, --mode, --bag");
+                               o->calm || o->gimme >= 0.0 || o->mode != "stroke" || !o->bag.empty() || seed->count() > 0))
+      throw InputError("--resume: the saved round sets its players, format, seed and options; give none of --bot, --handicap, "
+                       "--format, --gimme, --calm, --swings, --mode, --bag, --seed");
     if (!o->resume.empty() && (course_arg->count() > 0 || !o->setup.tees.empty() || pins->count() > 0))
       throw InputError("--resume: the saved round sets its course, tees and pins; give no COURSE, --tees or --pins");
     if (o->calm && !o->save.empty()) throw InputError("--calm: a saved round keeps the course's winds; not with --save");

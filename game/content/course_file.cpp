@@ -205,6 +205,14 @@ void set_up(Course& course, const CourseSetup& setup, const char* tees_key, cons
                        (list.empty() ? std::string("none: its holes have one tee each") : list) + ")");
     }
   }
+  // A set past the course's last is refused, not wrapped round to an earlier one; a hole with
+  // fewer sets than the course's most takes its own in turn.
+  std::size_t sets = 1;
+  for (const CourseHole& h : course.holes) sets = std::max(sets, h.more_pins.size() + 1);
+  if (setup.pin_set > 0 && static_cast<std::size_t>(setup.pin_set) > sets)
+    throw InputError(std::string(pins_key) + " " + std::to_string(setup.pin_set) + ": course '" + course.name + "' has " +
+                     std::to_string(sets) + (sets == 1 ? " pin set" : " pin sets") + " (allowed 0.." + std::to_string(sets) +
+                     "; 0 mixes them)");
   for (std::size_t i = 0; i < course.holes.size(); ++i) {
     CourseHole& h = course.holes[i];
     for (const CourseHole::TeeSet& t : h.tee_sets)

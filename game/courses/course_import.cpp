@@ -62,10 +62,41 @@ int par_for_length(double m) {
   return yd <= 250.0 ? 3 : yd <= 470.0 ? 4 : 5;
 }
 
+// The steepest a tee, fairway or green may stand once the raster has shaped it. The steepest
+// playing surfaces on hilly courses run ~20-30° (fairway banks); 60° is a cliff, and a raster
+// that puts one under a fairway holds a spike or the tops of trees and buildings (a surface
+// model, not bare earth), where a ball would never come to rest.
+constexpr double kSteepestInPlay = 60.0;  // degrees
+
+void refuse_cliffs_in_play(const SurfaceMesh& mesh, const std::filesystem::path& dem) {
+  // Along the triangles' edges a metre or longer: a sliver where a mapped edge meets the grid
+  // can tilt steeply over a few centimetres without any slope a ball would meet.
+  constexpr double kShortestEdge = 1.0;  // m
+  const double steepest = std::tan(kSteepestInPlay * kPi / 180.0);
+  for (const SurfaceMesh::Group& g : mesh.groups) {
+    if (g.material != "tee" && g.material != "fairway" && g.material != "green") continue;
+    for (const auto& t : g.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const Vec3& a = mesh.vertices[t[k]];
+        const Vec3& b = mesh.vertices[t[(k + 1) % 3]];
+        const double run = std::hypot(b.x() - a.x(), b.z() - a.z());
+        if (run < kShortestEdge || std::abs(b.y() - a.y()) <= steepest * run) continue;
+        char msg[320];
+        std::snprintf(msg, sizeof msg, "%s: the %s at %.0f m east, %.0f m south of the course's centre rises %.0f m over %.1f m "
+                      "(at most %.0f deg on tees, fairways and greens): a spike, or a surface model with trees and buildings "
+                      "(give bare-earth heights)", dem.string().c_str(), g.material.c_str(), a.x(), a.z(),
+                      std::abs(b.y() - a.y()), run, kSteepestInPlay);
+        throw InputError(msg);
+      }
+  }
+}
+
 ImportResult import_course(const Assets& assets, const ImportOptions& o) {
   std::error_code ec;
-  if (std::filesystem::exists(o.out, ec))
-    throw InputError(o.out.string() + ": already exists (course import writes a new directory; remove it or give another -o)");
+  // A link counts, dangling or not: the new directory is never written through one.
+  if (std::filesystem::exists(std::filesystem::symlink_status(o.out, ec)))
+    throw InputError(o.out.string() + (std::filesystem::is_symlink(std::filesystem::symlink_status(o.out, ec)) ? ": already exists (a link)" : ": already exists") +
+                     " (course import writes a new directory; remove it or give another -o)");
   const std::filesystem::path parent = o.out.has_parent_path() ? o.out.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(parent, ec)) throw InputError(o.out.string() + ": its folder " + parent.string() + " does not exist");
   if (!(o.cell >= 0.5 && o.cell <= 50.0)) {
@@ -257,6 +288,7 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
   double tee_height = 0.0;
   if (dem) {
     shape_heights(mesh, plan, *dem, frame);
+    refuse_cliffs_in_play(mesh, o.dem);
     // Heights from hole 1's tee, which stands at y = 0 as every world's origin does.
     tee_height = dem->heights(frame, {r.holes.front().tee}).front();
     for (Vec3& v : mesh.vertices) v.y() -= tee_height;
@@ -311,6 +343,15 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
                                           std::filesystem::perms::group_exec | std::filesystem::perms::others_read |
                                           std::filesystem::perms::others_exec);  // as mkdir would make it (mkdtemp: owner only)
     std::filesystem::rename(tmp, o.out);
+  } catch (const InputError& e) {
+    // What was written does not load back: said of the course being made, never of the
+    // working directory that is removed now.
+    std::filesystem::remove_all(tmp, ec);
+    std::string why = e.what();
+    const std::string from = tmp.string() + "/";
+    for (std::size_t at = why.find(from); at != std::string::npos; at = why.find(from, at))
+      why.replace(at, from.size(), o.out.string() + "/");
+    throw InputError(why + " (nothing written)");
   } catch (...) {
     std::filesystem::remove_all(tmp, ec);
     throw;

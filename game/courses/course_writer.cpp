@@ -12,8 +12,10 @@ namespace sweetspot {
 namespace {
 
 std::string metres(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "\"%.3fm\"", v);
+  const int n = std::snprintf(nullptr, 0, "\"%.3fm\"", v);
+  std::string b(static_cast<std::size_t>(n) + 1, '\0');
+  std::snprintf(b.data(), b.size(), "\"%.3fm\"", v);
+  b.pop_back();
   return b;
 }
 

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <mutex>
+#include <utility>
 
 #include <unistd.h>
 
@@ -16,6 +17,12 @@
 #include "physics/error.hpp"
 
 namespace sweetspot {
+namespace {
+// m: a height outside these is no ground on Earth (the lowest dry land, the Dead Sea's shore,
+// lies ~430 m below the sea; Everest 8849 m above it), but a spike, a no-data value the raster
+// does not declare, or feet read as metres.
+constexpr double kLowestGround = -500.0, kHighestGround = 9000.0;
+}  // namespace
 
 struct ElevationModel::Impl {
   std::filesystem::path path;
@@ -50,6 +57,14 @@ ElevationModel::ElevationModel(const std::filesystem::path& path) : impl_(std::m
   if (m.ds == nullptr) throw m.fail("not an elevation raster GDAL reads (GeoTIFF, an ASCII grid, ...)");
   if (GDALGetRasterCount(m.ds) < 1) throw m.fail("the raster has no band of heights");
   if (GDALGetGeoTransform(m.ds, m.gt) != CE_None) throw m.fail("the raster has no georeference (where on Earth its cells lie)");
+  for (const int k : {1, 5})
+    if (!std::isfinite(m.gt[k]) || m.gt[k] == 0.0) {
+      char msg[160];
+      std::snprintf(msg, sizeof msg, "its cells have no size (%s %g): a grid's cells must be wider than 0",
+                    k == 1 ? "cell width" : "cell height", m.gt[k]);
+      throw m.fail(msg);
+    }
+  if (!std::isfinite(m.gt[0]) || !std::isfinite(m.gt[3])) throw m.fail("its corner lies nowhere (a coordinate that is not a number)");
   OGRSpatialReferenceH srs = GDALGetSpatialRef(m.ds);
   if (srs == nullptr) throw m.fail("the raster names no coordinate reference system (an ASCII grid needs its .prj beside it)");
   m.wgs84 = OSRNewSpatialReference(nullptr);
@@ -113,6 +128,13 @@ std::vector<double> ElevationModel::heights(const LocalFrame& frame, const std::
         char msg[160];
         std::snprintf(msg, sizeof msg, "has no height (its no-data value) under the course at %.0f m east, %.0f m south of its centre",
                       points[i].x, points[i].z);
+        throw m.fail(msg);
+      }
+    for (const auto& [cc, rr] : {std::pair{c0, r0}, std::pair{c1, r0}, std::pair{c0, r1}, std::pair{c1, r1}})
+      if (const double h = at(cc, rr); h < kLowestGround || h > kHighestGround) {
+        char msg[260];
+        std::snprintf(msg, sizeof msg, "cell (column %d, row %d) under the course reads %.6g m: ground lies between %.0f and %.0f m "
+                      "(the Dead Sea's shore, -430 m, to Everest, 8849 m)", cc, rr, h, kLowestGround, kHighestGround);
         throw m.fail(msg);
       }
     out[i] = (1 - v) * ((1 - u) * h00 + u * h10) + v * ((1 - u) * h01 + u * h11);

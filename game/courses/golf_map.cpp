@@ -39,7 +39,8 @@ namespace sweetspot {
 namespace {
 
 using Index = osmium::index::map::FlexMem<osmium::unsigned_object_id_type, osmium::Location>;
-using LocationHandler = osmium::handler::NodeLocationsForWays<Index>;
+// Negative ids are an editor's new objects (JOSM's, before upload): they get their own index.
+using LocationHandler = osmium::handler::NodeLocationsForWays<Index, Index>;
 
 // The surface an object's tags map, if any.
 std::optional<MapSurface> surface_of(const osmium::TagList& tags) {
@@ -333,6 +334,39 @@ std::string overpass_to_xml(const std::filesystem::path& path) {
   return x.str();
 }
 
+// OSM XML's coordinates, checked before libosmium reads them: its reader scales a value's
+// digits by its exponent in a 64-bit integer, so `lat="1e308"` wraps (to ~0) instead of being
+// refused. Each lat and lon attribute must be a plain number on the globe.
+void check_xml_coordinates(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char first = 0;
+  while (in.get(first) && std::isspace(static_cast<unsigned char>(first))) {
+  }
+  if (first != '<') return;  // PBF or compressed: its coordinates are whole numbers of 1e-7 degree
+  in.seekg(0);
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    for (const char* name : {"lat", "lon"}) {
+      const std::string key = std::string(name) + "=";
+      for (std::size_t at = line.find(key); at != std::string::npos; at = line.find(key, at + 1)) {
+        if (at > 0 && !std::isspace(static_cast<unsigned char>(line[at - 1]))) continue;  // part of a longer name
+        const std::size_t open = at + key.size();
+        if (open >= line.size() || (line[open] != '"' && line[open] != '\'')) continue;
+        const std::size_t close = line.find(line[open], open + 1);
+        if (close == std::string::npos) continue;  // the XML parser names an unclosed attribute
+        const std::string value = line.substr(open + 1, close - open - 1);
+        const double limit = key[1] == 'a' ? 90.0 : 180.0;
+        char* end = nullptr;
+        const double v = std::strtod(value.c_str(), &end);
+        const bool plain = !value.empty() && end == value.c_str() + value.size() && value.size() <= 32;
+        if (!plain || !std::isfinite(v) || std::abs(v) > limit)
+          throw InputError(path.string() + ":" + std::to_string(number) + ": " + name + "=\"" + value.substr(0, 32) +
+                           "\" is off the globe (allowed " + (limit == 90.0 ? "-90..90" : "-180..180") + " degrees)");
+      }
+    }
+  }
+}
+
 // An Overpass export: .json, or a file that opens with '{'.
 bool is_overpass_json(const std::filesystem::path& path) {
   if (path.extension() == ".json") return true;
@@ -352,6 +386,7 @@ GolfMap read_golf_map(const std::filesystem::path& path) {
     throw InputError(path.string() + (std::filesystem::exists(path, ec) ? ": not a regular file (give an .osm or .osm.pbf file)"
                                                                         : ": no such file"));
   const std::string overpass = is_overpass_json(path) ? overpass_to_xml(path) : std::string();
+  if (overpass.empty()) check_xml_coordinates(path);
   try {
     const osmium::io::File file = overpass.empty() ? osmium::io::File(path.string())
                                                    : osmium::io::File(overpass.data(), overpass.size(), "osm");
@@ -367,8 +402,8 @@ GolfMap read_golf_map(const std::filesystem::path& path) {
     filter.add_rule(true, osmium::TagMatcher("landuse", "forest"));
     osmium::area::MultipolygonManager<osmium::area::Assembler> manager(config, filter);
     osmium::relations::read_relations(file, manager);
-    Index index;
-    LocationHandler locations(index);
+    Index index, negative_index;
+    LocationHandler locations(index, negative_index);
     locations.ignore_errors();
     Collector collector(map);
     osmium::io::Reader reader(file, osmium::io::read_meta::no);

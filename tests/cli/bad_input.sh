@@ -189,6 +189,8 @@ expect_bad "an elevation raster that is not there" "$tmp/none.tif: no such file"
 expect_bad "a map that is not a file" "/dev/null: not a regular file|.osm" -- course import /dev/null -o "$tmp/course_out"
 expect_bad "a map that is not there" "$tmp/none.osm: no such file" -- course import "$tmp/none.osm" -o "$tmp/course_out"
 expect_bad "a gimme in a contest" "--gimme|not part of --mode ctp" -- round links --mode ctp --gimme 3
+expect_bad "a pin set the course lacks" "--pins 9|has 4 pin sets|allowed 0..4" -- round national_3 --pins 9
+expect_bad "a seed for a saved round" "--resume|--seed" -- round --resume "$tmp/none.json" --seed 3
 expect_bad "a pin set for a long drive" "--pins|not part of --mode long-drive" -- round links --mode long-drive --pins 3
 expect_bad "a grazing strike" "the strike misses|1 deg out of its own plane" -- shot golf/driver --set club.name=lw --set swing.attack_angle=-30deg --set swing.dynamic_loft=60deg
 expect_bad "a strike off the 7-iron's face" "on the 7-iron's face|[-0.023, 0.023] m" -- shot golf/7-iron --set "swing.impact_offset=[0mm,28mm]"

@@ -1,6 +1,8 @@
 #include "game/net/message_framer.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cstring>
 
 namespace sweetspot {
@@ -257,8 +259,9 @@ void MessageFramer::resolve(std::vector<Piece>& out) {
       if (status != JsonScanner::Status::More) break;
     }
     if (status == JsonScanner::Status::Complete && scanned_ - head_ <= max_) {
-      if ((head_ < broken_end_ || recovering_) && inside_structure(scanned_)) {
-        // An object nested in the broken part (a ',', ':', '}' or ']' goes on after it): a
+      if ((head_ < broken_end_ || recovering_) && (inside_structure(scanned_) || !names_a_sender(head_, scanned_))) {
+        // An object nested in the broken part (a ',', ':', '}' or ']' goes on after it), or
+        // one that names no sender (a cut message's last BallData or ShotDataOptions): a
         // piece of what was answered already, not a message.
         broken_end_ = std::max(broken_end_, scanned_);
         head_ = scanned_;
@@ -325,6 +328,22 @@ std::vector<MessageFramer::Piece> MessageFramer::finish() {
   return out;
 }
 
+bool MessageFramer::names_a_sender(std::size_t from, std::size_t to) const {
+  // Every Open Connect message, shot or heartbeat, carries its DeviceID, APIversion or
+  // ShotNumber (DESIGN §10); the objects nested in one (BallData, ClubData, ShotDataOptions)
+  // carry none of them. Read as keys, in any letter case, as the protocol's keys are.
+  static constexpr std::array<std::string_view, 3> kKeys{"\"deviceid\"", "\"apiversion\"", "\"shotnumber\""};
+  std::string lower = buf_.substr(from, to - from);
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  for (const std::string_view k : kKeys)
+    for (std::size_t at = lower.find(k); at != std::string::npos; at = lower.find(k, at + 1)) {
+      std::size_t i = at + k.size();
+      while (i < lower.size() && json_space(lower[i])) ++i;
+      if (i < lower.size() && lower[i] == ':') return true;
+    }
+  return false;
+}
+
 bool MessageFramer::inside_structure(std::size_t at) const {
   for (std::size_t i = at; i < buf_.size(); ++i) {
     const char c = buf_[i];
@@ -357,7 +376,7 @@ std::vector<MessageFramer::Piece> MessageFramer::flush_stalled() {
       // a sound message that is merely slow (its BallData); only one the stream leaves
       // standing alone can be a message that the stuck one hides.
       std::size_t end = 0;
-      if (!whole_message_at(s, &end) || inside_structure(end)) continue;
+      if (!whole_message_at(s, &end) || inside_structure(end) || !names_a_sender(s, end)) continue;
       broken(out, Piece::Kind::Broken, s, "cut off: a whole message began inside it");
       start_candidate(s);
       resolve(out);

@@ -14,7 +14,11 @@
 // Each broken part is reported once: a candidate that starts inside an earlier broken part
 // and breaks too is part of it, and so is an object nested in it (or found after it, before
 // any message) that a ',', ':', '}' or ']' follows: no message is followed by more of a
-// structure. One the stream ends after, or a '{' follows, is taken as a message. Bytes outside any object are one Garbage piece per run.
+// structure; and so is one that names no sender (no DeviceID, APIversion or ShotNumber key:
+// a cut message's ShotDataOptions). One the stream ends after, or a '{' follows, that names
+// its sender is taken as a message, even where the broken part's grammar had room for it as
+// a value: `{"Wrapper":` and a shot cannot be told from a shot cut after a colon and the
+// next one, and no whole message after garbage is lost. Bytes outside any object are one Garbage piece per run.
 // Memory is bounded: a candidate longer than `max_bytes` is refused as Oversized and the
 // search resumes inside it; one nested deeper than kMaxDepth is broken (TooDeep).
 //
@@ -97,6 +101,8 @@ class MessageFramer {
   void flush_garbage(std::vector<Piece>& out);
   /// Whether a whole object starts at `at` (then `*end` is one past it).
   bool whole_message_at(std::size_t at, std::size_t* end) const;
+  /// Whether the object [from, to) has a key only a whole message has (DeviceID, ...).
+  bool names_a_sender(std::size_t from, std::size_t to) const;
   /// Whether the next byte after `at` that is not whitespace goes on with a structure.
   bool inside_structure(std::size_t at) const;
   std::string excerpt(std::size_t from, std::size_t to) const;

@@ -130,6 +130,22 @@ TEST_CASE("objects nested after a broken message's bad value are pieces of it, n
   }
 }
 
+TEST_CASE("a message cut short is answered once: its last nested object is no message", "[net][framer][hostile]") {
+  // Cut before its closing brace, a shot ends in its ShotDataOptions object, which the stream's
+  // end leaves standing alone; it names no sender, so it is a piece of the cut message (one
+  // 501), not a status message (a 200 beside it). The same holds when the sender goes quiet.
+  const std::string cut = shot("cut").substr(0, shot("cut").size() - 1);
+  MessageFramer f;
+  auto pieces = f.feed(cut);
+  append(pieces, f.finish());
+  CHECK(messages(pieces).empty());
+  CHECK(bad_pieces(pieces) == 1);
+  MessageFramer g;
+  CHECK(g.feed(cut).empty());
+  CHECK(messages(g.flush_stalled()).empty());
+  CHECK(messages(g.feed(shot("next"))) == std::vector<std::string>{shot("next")});
+}
+
 TEST_CASE("the scanner holds JSON's grammar", "[net][framer]") {
   const auto whole = [](const std::string& text) {
     JsonScanner s(MessageFramer::kMaxDepth);

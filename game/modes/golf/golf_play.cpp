@@ -624,8 +624,10 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
     // The meter plays a swing whose last click never came at its latest (MeterInput::kAccuracy).
     const bool at_the_limit = std::abs(late) >= MeterInput::kAccuracy.max - 0.5;
     // At the limit the player never made the third click in time: said so, in his words.
-    const std::string timing = at_the_limit ? "no accuracy click in time, played as the latest swing (" + timing_words(late) + ")"
-                                            : timing_words(late);
+    // Early past the window is a click that came too soon; late past it, one that never came.
+    const std::string timing = !at_the_limit ? timing_words(late)
+                               : late < 0.0  ? "accuracy click too early, played as the earliest swing (" + timing_words(late) + ")"
+                                             : "no accuracy click in time, played as the latest swing (" + timing_words(late) + ")";
     std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f\u00a0%%, %s%s", who.name.c_str(), stroke_no, club_name(s.club).c_str(),
                   100.0 * last_meter_->power, timing.c_str(), rest.c_str());
   } else {
@@ -773,9 +775,15 @@ int GolfPlay::strokes_a_restart_loses() const {
   if (stage_ == Stage::RoundOver || hole >= course_.holes.size()) return 0;
   const auto& events = group_.events();
   const std::size_t first = std::min(group_.hole_first_event(hole), events.size());
-  int n = 0;
-  for (std::size_t i = first; i < events.size(); ++i) n += events[i].kind != GolfEvent::Kind::ConcedeHole;
-  return n;
+  int swings = 0;
+  for (std::size_t i = first; i < events.size(); ++i) swings += events[i].kind != GolfEvent::Kind::ConcedeHole;
+  // The strokes the card would lose: the swings, and the penalty strokes and gimmes with them.
+  int strokes = 0;
+  for (std::size_t p = 0; p < group_.players().size(); ++p) {
+    const auto& card = group_.round(static_cast<int>(p)).card();
+    if (hole < card.size()) strokes += card[hole].strokes;
+  }
+  return std::max(swings, strokes);
 }
 
 void GolfPlay::restart_hole(double t) {

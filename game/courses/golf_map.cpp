@@ -359,9 +359,16 @@ void check_xml_coordinates(const std::filesystem::path& path) {
         char* end = nullptr;
         const double v = std::strtod(value.c_str(), &end);
         const bool plain = !value.empty() && end == value.c_str() + value.size() && value.size() <= 32;
-        if (!plain || !std::isfinite(v) || std::abs(v) > limit)
-          throw InputError(path.string() + ":" + std::to_string(number) + ": " + name + "=\"" + value.substr(0, 32) +
-                           "\" is off the globe (allowed " + (limit == 90.0 ? "-90..90" : "-180..180") + " degrees)");
+        if (!plain || !std::isfinite(v) || std::abs(v) > limit) {
+          // The element by its id when it is on the same line, as OSM's writers put it.
+          std::string element;
+          if (const std::size_t id = line.find(" id="); id != std::string::npos && id + 5 < line.size()) {
+            const std::size_t end = line.find(line[id + 4], id + 5);
+            if (end != std::string::npos) element = "node " + line.substr(id + 5, std::min<std::size_t>(end - id - 5, 20)) + ": ";
+          }
+          throw InputError(path.string() + ":" + std::to_string(number) + ": " + element + name + "=\"" + value.substr(0, 32) +
+                           "\" is off the globe (allowed: " + (limit == 90.0 ? "latitude -90..90" : "longitude -180..180") + " degrees)");
+        }
       }
     }
   }

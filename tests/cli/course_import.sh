@@ -56,7 +56,7 @@ grep -q -- "at most 60 deg on tees, fairways and greens" "$tmp/err" || fail "no 
 # libosmium would wrap an exponent this large to ~0 degrees: refused at its line.
 sed '0,/lat=.\([0-9.]*\)./s//lat="1e308"/' "$src/national.osm" > "$tmp/far.osm"
 line=$(grep -n 'lat="1e308"' "$tmp/far.osm" | cut -d: -f1)
-expect2 "a latitude of 1e308" "far.osm:$line: lat=\"1e308\" is off the globe (allowed -90..90 degrees)" "$tmp/far.osm" -o "$tmp/f"
+expect2 "a latitude of 1e308" "far.osm:$line: node [0-9]*: lat=\"1e308\" is off the globe (allowed: latitude -90..90 degrees)" "$tmp/far.osm" -o "$tmp/f"
 # An editor's unsaved objects (negative ids, as JOSM writes them) import like uploaded ones.
 sed -E "s/(node id=['\"])([0-9])/\1-\2/; s/(nd ref=['\"])([0-9])/\1-\2/g" "$src/national.osm" > "$tmp/unsaved.osm"
 grep -q "node id=.-" "$tmp/unsaved.osm" || fail "the negative-id map was not made"

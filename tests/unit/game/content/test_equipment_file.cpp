@@ -92,6 +92,25 @@ TEST_CASE("the shipped equipment loads and matches DESIGN's measured references"
   CHECK(maple.radius_at(0.7) == Approx(0.033));
   CHECK(maple.radius_at(0.2) < 0.015);  // handle
   CHECK(maple.radius_at(0.9) == 0.0);   // beyond the tip
+  // A turned barrel has no corners: at every profile point inside the bat the slope (which
+  // tilts the contact's normal) is the same on either side, the radius passes through the
+  // point, and between points it never leaves the two points' range (no bulge, no dip).
+  for (const char* name : {"maple", "bbcor"}) {
+    const BatSpec& bat = cat.bat(name);
+    const auto slope = [&](double x) { return (bat.radius_at(x + 1e-6) - bat.radius_at(x - 1e-6)) / 2e-6; };
+    for (std::size_t i = 1; i + 1 < bat.barrel_profile.size(); ++i) {
+      const auto [x, r] = bat.barrel_profile[i];
+      INFO(name << " point " << i << " at " << x << " m");
+      CHECK(bat.radius_at(x) == Approx(r).epsilon(1e-12));
+      CHECK(std::abs(slope(x - 1e-5) - slope(x + 1e-5)) < 0.01);  // a linear profile's corners: 0.06-0.5
+      const auto [x1, r1] = bat.barrel_profile[i + 1];
+      for (double f = 0.1; f < 1.0; f += 0.1) {
+        const double at = bat.radius_at(x + f * (x1 - x));
+        CHECK(at >= std::min(r, r1) - 1e-12);
+        CHECK(at <= std::max(r, r1) + 1e-12);
+      }
+    }
+  }
   CHECK(maple.cor_factor_at(0.15) == Approx(1.0));
   CHECK(maple.cor_factor_at(0.0) < maple.cor_factor_at(0.15));
   CHECK(maple.cor_factor_at(0.45) < maple.cor_factor_at(0.15));

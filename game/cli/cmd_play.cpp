@@ -21,6 +21,7 @@
 #include "game/modes/golf/meter_clock.hpp"
 #include "game/report/round_save.hpp"
 #include "game/util/atomic_file.hpp"
+#include "game/util/terminal_text.hpp"
 #include "physics/error.hpp"
 
 namespace sweetspot::cli {
@@ -102,7 +103,8 @@ RunFn setup_play(CLI::App& sub) {
     if (o->format == "skins" && others < 1)
       throw InputError("--format skins: skins is played by 2 to 4 (you and at least one --bot or --human)");
     for (const std::string& h : o->humans)
-      if (h.empty() || h.size() > 24) throw InputError("--human '" + h + "': a name of 1 to 24 characters");
+      if (const std::string why = name_problem(h, 24); !why.empty())
+        throw InputError("--human '" + terminal_safe(h.substr(0, 60)) + "': " + why + " (a name of 1 to 24 characters)");
     if (o->handicaps.size() > 1 + others)
       throw InputError("--handicap: " + std::to_string(o->handicaps.size()) + " given for " + std::to_string(1 + others) +
                        (others == 0 ? " player (yours)" : " players (yours first, then each friend's and each bot's)"));

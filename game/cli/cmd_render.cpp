@@ -208,12 +208,15 @@ RunFn setup_render(CLI::App& sub) {
     // A clip too large to draw is refused before the image is written: nothing half done.
     if (!o->video.empty()) video_frame_times(result.trajectory, r, VideoRequest{o->fps, o->slow});
     try {
+      // The image and the clip are replaced together, or neither is.
+      OutputBatch outputs;
       if (!o->output.empty()) render_shot_png(result.trajectory, r, o->output);
-      if (!o->video.empty()) {
-        const int frames = render_shot_video(result.trajectory, r, VideoRequest{o->fps, o->slow}, o->video);
+      int frames = 0;
+      if (!o->video.empty()) frames = render_shot_video(result.trajectory, r, VideoRequest{o->fps, o->slow}, o->video);
+      outputs.commit();
+      if (!o->video.empty())
         std::cout << "sweetspot render: wrote " << o->video << " (" << r.width << "x" << r.height << ", " << frames
                   << " frames at " << o->fps << " fps, camera " << to_string(r.camera) << ")\n";
-      }
     } catch (const RenderUnavailable& e) {
       std::cerr << "sweetspot render: " << e.what() << "\n"
                 << "sweetspot render: rendering needs EGL with Mesa (libegl-mesa0, libgl1-mesa-dri) or a GPU driver\n";

@@ -154,6 +154,8 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
       group.play_bot();
     }
   }
+  // The save and the plot are replaced together, or neither is.
+  OutputBatch outputs;
   if (!o.save.empty()) {
     // The course by its file, found again from wherever the save is resumed.
     write_file_atomic(o.save,
@@ -167,6 +169,7 @@ int play_stroke_round(const Assets& assets, const RoundOptions& o) {
     for (const HoleCard& h : group.round(0).card()) strokes.insert(strokes.end(), h.shots.begin(), h.shots.end());
     write_dispersion_plot(strokes, group.players()[0].name, display_units(assets.sport("golf"), UnitSystem::Imperial), o.plot);
   }
+  outputs.commit();
   if (o.json) std::cout << json_text(group_json(group)) << "\n";
   else if (group.players().size() == 1 && options.format == GolfFormat::Stroke)
     std::cout << round_table(group.round(0), group.players()[0].name);

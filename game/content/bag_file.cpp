@@ -32,7 +32,7 @@ Bag load_bag(const Assets& assets, const std::filesystem::path& path, const std:
     if (c.club == "putter") f.fail(name, "name", "the putter has no carry; leave it out");
     for (const BagClub& other : bag.clubs)
       if (other.club == c.club) f.fail(name, "name", "'" + c.club + "' is in the bag twice");
-    c.carry = f.quantity(f.required(*t, "carry", "the mean carry, e.g. \"150m\""), "carry", Dimension::Length, &BagClub::kDistance);
+    c.carry = f.quantity(f.required(*t, "carry", "the mean carry, e.g. \"150m\""), "carry", Dimension::Length, &BagClub::kCarry);
     const toml::node& total = f.required(*t, "total", "the mean total, e.g. \"160m\"");
     c.total = f.quantity(total, "total", Dimension::Length, &BagClub::kDistance);
     if (c.total < c.carry) f.fail(total, "total", "shorter than the carry");

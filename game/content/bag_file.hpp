@@ -21,6 +21,8 @@ struct BagClub {
   double side_sd = 0.0;    ///< m, sideways at landing, standard deviation about the aim line
   int shots = 0;           ///< shots measured
   static constexpr Range kDistance{0.0, 450.0};  ///< m: past any long-drive record (~440 m total)
+  /// m: a full swing's mean carry; a metre is a whiff, not a club's number.
+  static constexpr Range kCarry{1.0, 450.0};
   static constexpr Range kShots{1.0, 1000.0};
 };
 

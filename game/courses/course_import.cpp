@@ -16,6 +16,7 @@
 #include "game/courses/surface_plan.hpp"
 #include "game/courses/tree_planting.hpp"
 #include "game/util/atomic_file.hpp"
+#include "game/util/terminal_text.hpp"
 #include "physics/error.hpp"
 #include "physics/range.hpp"
 
@@ -91,6 +92,9 @@ void refuse_cliffs_in_play(const SurfaceMesh& mesh, const std::filesystem::path&
   }
 }
 
+// Characters a course's name may have: a card's title line.
+constexpr std::size_t kLongestCourseName = 80;
+
 ImportResult import_course(const Assets& assets, const ImportOptions& o) {
   std::error_code ec;
   // A link counts, dangling or not: the new directory is never written through one.
@@ -115,7 +119,22 @@ ImportResult import_course(const Assets& assets, const ImportOptions& o) {
     throw InputError(where + "no golf=hole ways: nothing to play (a course's holes are mapped as golf=hole lines from tee to green)");
   ImportResult r;
   r.report = map.repairs;
-  r.name = !o.name.empty() ? o.name : !map.name.empty() ? map.name : o.map.stem().stem().string();
+  if (!o.name.empty())
+    if (const std::string why = name_problem(o.name, kLongestCourseName); !why.empty())
+      throw InputError("--name: " + why + " (a course's name of 1 to " + std::to_string(kLongestCourseName) + " characters)");
+  // A mapped name keeps its words: line breaks and other controls dropped, what a terminal
+  // could still act on shown escaped, cut to a title's length.
+  std::string mapped;
+  for (const char c : map.name)
+    if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) mapped += c;
+  const auto title = [](std::string t) {  // at most kLongestCourseName bytes, cut between characters
+    if (t.size() <= kLongestCourseName) return t;
+    std::size_t cut = kLongestCourseName;
+    while (cut > 0 && (static_cast<unsigned char>(t[cut]) & 0xC0) == 0x80) --cut;
+    return t.substr(0, cut);
+  };
+  mapped = title(terminal_safe(mapped));
+  r.name = !o.name.empty() ? o.name : !mapped.empty() ? mapped : title(terminal_safe(o.map.stem().stem().string()));
   const LocalFrame frame = LocalFrame::around(map);
   SurfacePlan plan(map, frame, r.report);
   // The holes in the order of their refs, numbered 1..n.

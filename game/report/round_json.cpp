@@ -230,15 +230,25 @@ nlohmann::json group_json(const GolfGroup& g) {
       if (s.format == GolfFormat::Stableford && h < s.holes) holes[h]["points"] = s.players[p].points[h];
       holes[h].update(wind_json(g.winds()[h]));
     }
-    // The totals are the sums of the holes listed (a round stopped mid-hole included).
+    // The totals are the sums of the holes listed that count (a round stopped mid-hole
+    // included); a match's hole conceded, or left once conceded, has no score and is in
+    // none of them, its fairway and green as little as its strokes, as on the card.
+    const PlayerStanding& ps = s.players[p];
+    for (std::size_t h = 0; h < holes.size(); ++h)
+      holes[h]["counted"] = s.format != GolfFormat::Match || h >= ps.scored.size() || ps.scored[h];
     int strokes = 0, putts = 0, net = 0, par = 0;
-    for (const auto& h : holes) {
-      strokes += h["strokes"].get<int>();
-      putts += h["putts"].get<int>();
-      net += h["net"].get<int>();
-      par += h["par"].get<int>();
+    BallStriking b;
+    for (std::size_t h = 0; h < holes.size(); ++h) {
+      if (!holes[h]["counted"].get<bool>()) continue;
+      strokes += holes[h]["strokes"].get<int>();
+      putts += holes[h]["putts"].get<int>();
+      net += holes[h]["net"].get<int>();
+      par += holes[h]["par"].get<int>();
+      const HoleCard& c = r.card()[h];
+      b.fairways += c.tee_shot != TeeShot::None;
+      b.fairways_hit += c.tee_shot == TeeShot::Fairway;
+      b.greens += c.green_in_regulation;
     }
-    const BallStriking b = ball_striking(r);
     players.push_back({{"player", pl.name},
                        {"skill", pl.human ? std::string("human") : pl.skill},
                        {"handicap", pl.handicap},

@@ -6,6 +6,7 @@
 #include "game/content/course_file.hpp"
 #include "game/content/json_unique_keys.hpp"
 #include "game/content/toml_file.hpp"
+#include "game/util/terminal_text.hpp"
 #include "physics/error.hpp"
 #include "physics/range.hpp"
 
@@ -126,7 +127,8 @@ SavedRound parse_round_save(const std::string& text, const std::string& source) 
     GolfPlayer p;
     r.only_keys(players[i], {"name", "skill", "human", "handicap", "bag"}, path);
     p.name = r.text(players[i], "name", path);
-    if (p.name.empty()) r.fail(path + "name", "empty: the card needs each player's name");
+    if (const std::string why = name_problem(p.name, 24); !why.empty())
+      r.fail(path + "name", why + ": the card needs each player's name, 1 to 24 characters");
     p.skill = r.text(players[i], "skill", path);
     p.human = r.flag(players[i], "human", path);
     const double h = r.number(players[i], "handicap", kHandicap, path);
@@ -240,7 +242,17 @@ Course saved_course(const Assets& assets, const SavedRound& saved) {
 }
 
 GolfGroup resume_round(const Assets& assets, const SavedRound& saved) {
-  GolfGroup g(assets, saved_course(assets, saved), saved.players, saved.options);
+  // The group's own refusals (a match of one, skins alone) are the save's "format" and
+  // "players" that disagree: said of the file.
+  GolfGroup g = [&] {
+    const Course course = saved_course(assets, saved);
+    try {
+      return GolfGroup(assets, course, saved.players, saved.options);
+    } catch (const InputError& e) {
+      throw InputError(saved.source + ": format \"" + to_string(saved.options.format) + "\" with " +
+                       std::to_string(saved.players.size()) + (saved.players.size() == 1 ? " player" : " players") + ": " + e.what());
+    }
+  }();
   try {
     g.replay(saved.events);
   } catch (const InputError& e) {

@@ -383,6 +383,9 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
       const char* side = right ? "right" : "left";
       if (deg < 0.05) ImGui::Text("Aim: at the pin");  // "0.0 deg right" has no side
       // Wrapped: the caddie's reason runs past the panel's width.
+      // Beside the flag by less than the unit's half: "0 yd left of the pin" is the pin.
+      else if (flag_is_target && r.to_pin() * std::tan(deg_to_rad(deg)) < 0.5 * 0.9144)
+        ImGui::TextWrapped("Aim: at the pin (%.1f deg %s%s%s)", deg, side, *why ? "; " : "", why);
       else if (flag_is_target)
         ImGui::TextWrapped("Aim: %s %s of the pin (%.1f deg%s%s)", units.course(r.to_pin() * std::tan(deg_to_rad(deg)), r.to_pin()).c_str(),
                            side, deg, *why ? "; " : "", why);

@@ -17,6 +17,7 @@
 #include <set>
 #include <tuple>
 #include <string>
+#include <stdexcept>
 #include <vector>
 
 #include "physics/error.hpp"
@@ -30,15 +31,18 @@ namespace fs = std::filesystem;
   throw InputError("cannot write '" + path.string() + "': " + what + (err != 0 ? std::string(": ") + std::strerror(err) : ""));
 }
 
-// The temporary file being written, for the signal handler to remove. A fixed buffer and a
-// lock-free flag because a handler may only call async-signal-safe functions (unlink).
-// One slot: the writers in this program run one at a time (the UI thread or the CLI).
-char g_temp_path[PATH_MAX];
-std::atomic<bool> g_temp_live{false};
+// The temporary files on disk, for the signal handler to remove: the one being written and
+// those an OutputBatch holds until its commit. Fixed buffers and lock-free flags because a
+// handler may only call async-signal-safe functions (unlink). The writers in this program
+// run one at a time (the UI thread or the CLI), so a few slots are enough.
+constexpr int kTempSlots = 8;
+char g_temp_path[kTempSlots][PATH_MAX];
+std::atomic<bool> g_temp_live[kTempSlots];
 static_assert(std::atomic<bool>::is_always_lock_free);
 
 extern "C" void remove_temp_and_reraise(int sig) {
-  if (g_temp_live.load()) ::unlink(g_temp_path);
+  for (int i = 0; i < kTempSlots; ++i)
+    if (g_temp_live[i].load()) ::unlink(g_temp_path[i]);
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }
@@ -61,12 +65,44 @@ void install_cleanup_handlers() {
 
 struct TempRegistration {
   explicit TempRegistration(const std::string& p) {
-    if (p.size() >= sizeof g_temp_path) return;  // cannot be longer: mkstemp's path fits PATH_MAX
-    std::memcpy(g_temp_path, p.c_str(), p.size() + 1);
-    g_temp_live.store(true);
+    if (p.size() >= PATH_MAX) return;  // cannot be longer: mkstemp's path fits PATH_MAX
+    for (int i = 0; i < kTempSlots; ++i)
+      if (!g_temp_live[i].load()) {
+        std::memcpy(g_temp_path[i], p.c_str(), p.size() + 1);
+        g_temp_live[i].store(true);
+        slot = i;
+        return;
+      }
   }
-  ~TempRegistration() { g_temp_live.store(false); }
+  ~TempRegistration() {
+    if (slot >= 0) g_temp_live[slot].store(false);
+  }
+  TempRegistration(const TempRegistration&) = delete;
+  TempRegistration& operator=(const TempRegistration&) = delete;
+  TempRegistration(TempRegistration&& o) noexcept : slot(o.slot) { o.slot = -1; }
+  int slot = -1;
 };
+
+// A file written and synced under its temporary name, waiting for its batch's commit.
+struct PendingRename {
+  std::string tmp;
+  fs::path target, path, dir;
+  TempRegistration registered;
+};
+thread_local std::vector<PendingRename>* g_batch = nullptr;
+
+void rename_into_place(const std::string& tmp, const fs::path& target, const fs::path& path, const fs::path& dir) {
+  if (::rename(tmp.c_str(), target.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    fail(path, "rename failed", err);
+  }
+  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd >= 0) {  // best effort: some file systems refuse fsync on directories
+    (void)::fsync(dfd);
+    ::close(dfd);
+  }
+}
 
 // Files read as input, by (device, inode): note_input_file / write_file_atomic.
 // The change time is part of the key: a file read, deleted and replaced by a new one (an
@@ -187,15 +223,38 @@ void write_file_atomic(const fs::path& path, std::string_view contents, OverInpu
     ::unlink(tmp.c_str());
     fail(path, "close failed", err);
   }
-  if (::rename(tmp.c_str(), target.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    fail(path, "rename failed", err);
+  if (g_batch != nullptr) {
+    g_batch->push_back({tmp, target, path, dir, std::move(registered)});
+    return;
   }
-  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dfd >= 0) {  // best effort: some file systems refuse fsync on directories
-    (void)::fsync(dfd);
-    ::close(dfd);
+  rename_into_place(tmp, target, path, dir);
+}
+
+OutputBatch::OutputBatch() {
+  if (g_batch != nullptr) throw std::logic_error("OutputBatch: one batch at a time");
+  pending_ = new std::vector<PendingRename>();
+  g_batch = static_cast<std::vector<PendingRename>*>(pending_);
+}
+
+OutputBatch::~OutputBatch() {
+  auto* pending = static_cast<std::vector<PendingRename>*>(pending_);
+  g_batch = nullptr;
+  for (const PendingRename& p : *pending) ::unlink(p.tmp.c_str());  // not committed: none replaced
+  delete pending;
+}
+
+void OutputBatch::commit() {
+  auto* pending = static_cast<std::vector<PendingRename>*>(pending_);
+  g_batch = nullptr;
+  std::vector<PendingRename> files = std::move(*pending);
+  pending->clear();
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    try {
+      rename_into_place(files[i].tmp, files[i].target, files[i].path, files[i].dir);
+    } catch (...) {
+      for (std::size_t k = i + 1; k < files.size(); ++k) ::unlink(files[k].tmp.c_str());
+      throw;
+    }
   }
 }
 

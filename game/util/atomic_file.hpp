@@ -31,6 +31,23 @@ enum class OverInput : unsigned char {
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents,
                        OverInput over_input = OverInput::Refuse);
 
+/// A command's outputs replaced together: while a batch is open, write_file_atomic writes
+/// and syncs each file under its temporary name but leaves the target alone; commit()
+/// renames them all into place, and a batch closed without it (a later output failed)
+/// removes them, so `render -o F.png --video F.mp4` that fails on the clip keeps the old
+/// image too. One batch at a time, on the thread that opened it.
+class OutputBatch {
+ public:
+  OutputBatch();
+  ~OutputBatch();
+  OutputBatch(const OutputBatch&) = delete;
+  OutputBatch& operator=(const OutputBatch&) = delete;
+  void commit();
+
+ private:
+  void* pending_;  ///< the files waiting (atomic_file.cpp's own type)
+};
+
 /// Notes a file the process reads (scenario, world, mesh, material library, course, case),
 /// by device and inode, so that write_file_atomic can refuse to replace it, however the
 /// output path names it (a symlink, a hard link, "./x"). Thread-safe.

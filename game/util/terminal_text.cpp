@@ -77,4 +77,17 @@ std::string terminal_safe(std::string_view text) {
   return out;
 }
 
+std::string name_problem(std::string_view name, std::size_t max_chars) {
+  if (name.empty()) return "empty";
+  std::size_t chars = 0;
+  for (std::size_t i = 0; i < name.size(); ++chars) {
+    const std::size_t n = static_cast<unsigned char>(name[i]) < 0x80 ? 1 : utf8_length(name, i);
+    if (n == 0) return "not UTF-8 text";
+    i += n;
+  }
+  if (chars > max_chars) return std::to_string(chars) + " characters long (at most " + std::to_string(max_chars) + ")";
+  if (terminal_safe(name) != name) return "holds a control character (" + terminal_safe(name).substr(0, 60) + ")";
+  return {};
+}
+
 }  // namespace sweetspot

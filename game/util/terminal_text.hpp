@@ -16,4 +16,9 @@ namespace sweetspot {
 /// unchanged.
 std::string terminal_safe(std::string_view text);
 
+/// Why `name` cannot stand as a player's or a course's name on a card, a panel or a
+/// terminal: empty, longer than `max_chars` characters, not UTF-8, or holding a byte
+/// terminal_safe() would escape (a control, a bidirectional mark). "" when it can.
+std::string name_problem(std::string_view name, std::size_t max_chars);
+
 }  // namespace sweetspot

@@ -153,6 +153,17 @@ echo old > big.csv
 rc=0; (ulimit -f 1; exec "$bin" sweep s.toml --e 0.5:0.9:6 --mu 0.2:0.6:6 --csv big.csv) >/dev/null 2>err.txt || rc=$?
 [ "$rc" = 2 ] && grep -q "big.csv" err.txt || fail "ulimit -f: exit $rc $(cat err.txt)"
 [ "$(cat big.csv)" = old ] || fail "ulimit -f: the old file was lost"
+# Two outputs of one command are replaced together: the clip over the size limit keeps the
+# image old too, and so does a plot with the saved round; no temporary is left.
+echo old > two.png; echo old > two.mp4
+rc=0; (ulimit -f 20; exec "$bin" render golf/driver -o two.png --video two.mp4 --width 64 --height 64) >/dev/null 2>err.txt || rc=$?
+[ "$rc" = 2 ] && grep -q "two.mp4" err.txt || fail "render pair: exit $rc $(cat err.txt)"
+[ "$(cat two.png)" = old ] && [ "$(cat two.mp4)" = old ] || fail "render pair: an output was replaced though the other failed"
+echo old > pair.json; echo old > pair.png
+rc=0; (ulimit -f 4; exec "$bin" round links --bot tour --save pair.json --plot pair.png --stop-after 1) >/dev/null 2>err.txt || rc=$?
+[ "$rc" = 2 ] || fail "round pair: exit $rc $(cat err.txt)"
+[ "$(cat pair.json)" = old ] && [ "$(cat pair.png)" = old ] || fail "round pair: an output was replaced though the other failed"
+ls -A | grep -q '\.tmp' && fail "a temporary was left: $(ls -A | grep '\.tmp')"
 ls -A | grep -q '\.tmp' && fail "a temporary file was left: $(ls -A)"
 
 # Seeds and grids are checked, not wrapped or clamped; a --set the grid overrides is refused.

@@ -206,15 +206,20 @@ def received(h, si):  # WHS: the round's share of the handicap, by stroke index
     return total // n + (1 if si <= total % n else 0)
 nets = []
 for p in j["players"]:
-    assert p["total_strokes"] == sum(h["strokes"] for h in p["holes"]), p["player"]
-    assert p["total_putts"] == sum(h["putts"] for h in p["holes"]), p["player"]
-    assert p["to_par"] == p["total_strokes"] - sum(h["par"] for h in p["holes"]), p["player"]
+    counted = [h for h in p["holes"] if h["counted"]]
+    assert fmt == "match" or len(counted) == len(p["holes"]), p["player"]
+    assert p["total_strokes"] == sum(h["strokes"] for h in counted), p["player"]
+    assert p["total_putts"] == sum(h["putts"] for h in counted), p["player"]
+    assert p["to_par"] == p["total_strokes"] - sum(h["par"] for h in counted), p["player"]
+    assert p["fairways"] == sum(h["par"] > 3 for h in counted), p["player"]
+    assert p["fairways_hit"] == sum(h["fairway"] == "hit" for h in counted), p["player"]
+    assert p["greens_in_regulation"] == sum(h["green_in_regulation"] for h in counted), p["player"]
     for h, si in zip(p["holes"], index):
         assert "wind_mps" in h and "wind_toward_deg" in h
         assert h["strokes_received"] == received(p["handicap"], si), (p["player"], h["number"])
         assert h["net"] == h["strokes"] - h["strokes_received"]
         assert h["strokes"] == len(h["shots"]) + h["penalties"], h
-    assert p["total_net"] == sum(h["net"] for h in p["holes"])
+    assert p["total_net"] == sum(h["net"] for h in counted)
     nets.append([h["net"] for h in p["holes"]])
 r = j["result"]
 if fmt == "stableford":

@@ -319,8 +319,10 @@ StrokeInput GolfBot::intend(const GolfRound& round, std::string* passed_over) co
     return tune(t.in.club, power, aim, more, t.in.meter.accuracy_ms);
   };
   // Going for the cup with a full swing that stops short of it by more than this, the next
-  // club up is tried (below), and the partial wedge gives way to the clubs above it.
-  constexpr double kShortForMore = 4.0;  // m: a fifth of a club's ~20 m gap
+  // club up is tried (below), and the partial wedge gives way to the clubs above it: a full
+  // swing a metre short is the one the meter's pin mark puts past 100 % ("an overswing: more
+  // club?"), and the caddie who handed it over would contradict his own meter.
+  constexpr double kShortForMore = 1.0;  // m
   // A partial wedge, unless the wedge's full swing stops short from here (into a wind, off a
   // heavy lie: a 78 yd lob wedge that carries 66 yd today is no club for 77 yd).
   std::optional<Tried> first_chip;

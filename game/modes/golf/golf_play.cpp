@@ -640,9 +640,11 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
 void GolfPlay::apply(const Intent& in) {
   const double t = in.time;
   if (in.kind != IntentKind::Concede && concede_asked_) {
+    // The question answered no, and that is all the key does, as the pause menu's
+    // confirmations take theirs: the aim, the club or a swing are the next key's.
     concede_asked_ = false;
-    // The question answered no (the key does its own work as well; a swing says its own).
-    if (in.kind != IntentKind::Swing) say("Hole not conceded: play on");
+    say("Hole not conceded: play on");
+    return;
   }
   if (in.kind == IntentKind::Restart) {
     if (stage_ == Stage::RoundOver) new_round(t);

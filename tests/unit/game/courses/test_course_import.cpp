@@ -469,10 +469,18 @@ TEST_CASE("course import: a hostile course name is written safely", "[course][im
   ImportOptions o;
   o.map = kData / "edge_cases.osm";
   o.out = s.dir / "c";
-  o.name = "St Andrew's \"Old\" \\ Course\nname = \"hijacked\"";
+  o.name = "St Andrew's \"Old\" \\ Course name = \"hijacked\"";
   import_course(test::assets(), o);
   const Course c = load_course(test::assets(), o.out.string());
-  CHECK(c.name == "St Andrew's \"Old\" \\ Coursename = \"hijacked\"");
+  CHECK(c.name == "St Andrew's \"Old\" \\ Course name = \"hijacked\"");
+  // A line break or a terminal's escape in --name is refused, naming the flag: a card's
+  // title is one line, and a name printed to a terminal cannot clear its screen.
+  o.out = s.dir / "d";
+  o.name = "Old\nname = \"hijacked\"";
+  CHECK_THROWS_WITH(import_course(test::assets(), o), Contains("--name") && Contains("control character"));
+  o.name = "a\x1b[2Jb";
+  CHECK_THROWS_WITH(import_course(test::assets(), o), Contains("--name") && Contains("control character"));
+  CHECK_FALSE(fs::exists(o.out));
 }
 
 // Hostile maps: nodes off the globe, a green with no area, a stray node kilometres away, a

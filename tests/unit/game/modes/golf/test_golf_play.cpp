@@ -1043,9 +1043,11 @@ TEST_CASE("match play: H asks before it gives up the hole, another key answers n
   CHECK(play.group().hole_index() == 0);
   CHECK_FALSE(play.round().card().front().conceded);
   CHECK(play.message().find("H again") != std::string::npos);
-  // Any other key answers no, and the next H asks again.
+  // Any other key answers no, and does nothing else (the aim stays); the next H asks again.
+  const double aim = play.aim();
   play.update({at(IntentKind::AimLeft, 1.5)}, 1.5);
   CHECK(play.message() == "Hole not conceded: play on");
+  CHECK(play.aim() == aim);
   play.update({at(IntentKind::Concede, 2.0)}, 2.0);
   CHECK(play.group().hole_index() == 0);
   // H twice: the hole is given up and the match moves to the next one.

@@ -301,7 +301,11 @@ TEST_CASE("into a wind that holds the wedge's full swing short of the cup, the c
     const double left = std::hypot(rest.x() - h0.pin.x(), rest.z() - h0.pin.z());
     INFO("wind " << wind << " m/s, " << round.to_pin() << " m to go: " << in.club << " at " << in.meter.power << ", stops " << left
                  << " m from the cup");
-    CHECK((in.club == wedge.club) == (wind == 0.0));
+    // In still air the wedge, or the next club up swung smooth where the wedge's full swing
+    // would stop a metre or more short (the meter would call it an overswing); into the wind
+    // never the wedge.
+    if (wind > 0.0) CHECK(in.club != wedge.club);
+    else CHECK((in.club == wedge.club || in.club == bot.stock()[bot.stock().size() - 2].club));
     CHECK(in.meter.power <= 1.0);
     CHECK(left < 8.0);
   }

@@ -310,8 +310,11 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
                                            : PitchResult::InPlay);
     // The call as the game scored the play once its runners changed it (a ground out that
     // became a double play), so the banner, the panel and the log say one thing.
+    // Only for a ball put in play: that play ended the plate appearance and set scored_as; a
+    // foul later ("Foul ball" starts with "Foul") is no rescored play of an earlier one.
     const std::string& fielded = last_.result.play.description;
-    if (stage_ == Stage::Batted && game_ && !game_->board().scored_as.empty() && call_text_.starts_with(fielded))
+    const bool in_play = last_.result.contact && o != BattedOutcome::Foul;
+    if (in_play && stage_ == Stage::Batted && game_ && !game_->board().scored_as.empty() && call_text_.starts_with(fielded))
       call_text_ = game_->board().scored_as + call_text_.substr(fielded.size());
   }
   if (by_pro) call_text_ = "The pro: " + call_text_;  // his swing, not the player's

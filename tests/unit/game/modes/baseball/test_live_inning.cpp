@@ -48,10 +48,11 @@ TEST_CASE("live game in the cage: the pro's balls in play move the runners, the 
   REQUIRE(cage.live());
   REQUIRE(cage.board() != nullptr);
   double now = 1.0;
-  int innings_done = 0, hits = 0, home_runs = 0, rescored = 0;
+  int innings_done = 0, hits = 0, home_runs = 0, rescored = 0, foul_after_rescored = 0;
   while (innings_done < 3 && now < 4000.0) {
     const Count before = cage.count();
     const int pa_before = cage.at_bats().pa;
+    const std::size_t swings_before = cage.swings().size();
     cage.update({at(IntentKind::BotSwings, now)}, now);
     // Until the pitch is called and any ball in play has come down.
     for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
@@ -80,9 +81,16 @@ TEST_CASE("live game in the cage: the pro's balls in play move the runners, the 
       ++rescored;
       CHECK_THAT(cage.swings().back().said, Catch::Matchers::StartsWith("The pro: " + b.scored_as));
     }
+    // A swing that did not end the plate appearance (a foul) is called as itself, never with
+    // the words of the last play the runners changed ("Foul ball" starts with "Foul").
+    if (cage.at_bats().pa == pa_before && swings_before < cage.swings().size() && !b.scored_as.empty()) {
+      ++foul_after_rescored;
+      CHECK_FALSE(cage.swings().back().said.starts_with("The pro: " + b.scored_as));
+    }
   }
   CHECK(innings_done == 3);
   CHECK(rescored >= 1);  // these three innings have a play whose runners changed its words
+  CHECK(foul_after_rescored >= 1);  // and a swing after one that did not end its plate appearance
   // Every run is a batter who reached (a hit, a walk, a hit-by-pitch, an error) and came round;
   // the others were left on or put out on the bases.
   const LiveInning::Board& b = *cage.board();

@@ -294,9 +294,12 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
         ScoreAfter after{1 - half, mound, 0, 0, {}};
         int earned = 0;
         // The inning as it would have gone without the errors: over before this play, or
-        // ended by this play's out before the runs crossed (a sacrifice fly for the third out).
-        const bool past_the_third_out =
-            pa.outs_before + errors_as_outs >= 3 || (pa.outs_made > 0 && h.outs + errors_as_outs >= 3);
+        // ended by this play's out before the runs crossed (a sacrifice fly for the third out),
+        // or by this play itself when it is the error (with two out, the batter put out as he
+        // should have been ends the inning, and no run scores on it: Rule 5.08(a)).
+        const bool this_error = pa.result == "error";
+        const bool past_the_third_out = pa.outs_before + errors_as_outs + this_error >= 3 ||
+                                        (pa.outs_made > 0 && h.outs + errors_as_outs >= 3);
         for (int who : scored) {
           ++box[half].batting[static_cast<std::size_t>(who)].r;
           const bool is_earned = !unearned[static_cast<std::size_t>(who)] && !past_the_third_out;

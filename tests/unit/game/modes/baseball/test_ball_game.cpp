@@ -108,7 +108,8 @@ TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9
       }
       CHECK(pa.earned_runs >= 0);
       CHECK(pa.earned_runs <= pa.runs);
-      const bool past = pa.outs_before + errors >= 3 || (pa.outs_made > 0 && pa.outs_before + pa.outs_made + errors >= 3);
+      const bool past = pa.outs_before + errors + (pa.result == "error") >= 3 ||
+                        (pa.outs_made > 0 && pa.outs_before + pa.outs_made + errors >= 3);
       if (past) {
         INFO("seed " << seed << ", inning " << pa.inning << ": " << pa.description);
         CHECK(pa.earned_runs == 0);
@@ -122,6 +123,17 @@ TEST_CASE("earned runs: each error counts as the out it should have been (Rule 9
     with_unearned += unearned > 0;
   }
   CHECK(with_unearned > 0);  // games with runs the errors made unearned
+  // With two out the error itself is the third out it should have been: seed 190's first
+  // inning, runners on 2nd and 3rd, "Reached on an error by 1B", a run scores, unearned.
+  GameOptions o;
+  o.seed = 190;
+  int two_out_errors = 0;
+  for (const PlateAppearance& pa : play_game(test::assets(), o).plate_appearances)
+    if (pa.result == "error" && pa.outs_before == 2 && pa.runs > 0) {
+      ++two_out_errors;
+      CHECK(pa.earned_runs == 0);
+    }
+  CHECK(two_out_errors > 0);
 }
 
 TEST_CASE("the play-by-play reads as a scorer's: sacrifice flies named, infield flies popped up", "[baseball][game]") {

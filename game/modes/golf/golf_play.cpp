@@ -48,7 +48,7 @@ const char* end_words(StrokeEnd e) {
   switch (e) {
     case StrokeEnd::Rest: return "";
     case StrokeEnd::Holed: return "In the hole!";
-    case StrokeEnd::Water: return "In the water: penalty stroke, drop";
+    case StrokeEnd::Water: return "In the water: one penalty stroke, dropped behind it, back toward where it was played from (Rule 17.1d)";
     case StrokeEnd::OutOfBounds: return "Out of bounds: stroke and distance";
   }
   return "";

@@ -16,6 +16,7 @@ namespace {
 constexpr std::string_view kSwingingStrike = "Swinging strike";
 /// Said beside a missed pitch's call still to come, for a press that would call the next.
 constexpr std::string_view kNextPitchAfterCall = "the next pitch once this one is called";
+constexpr std::string_view kNewGameOnP = "the game is over: P for a new one";
 
 // A miss's distance in a batter's units (the cage says feet, mph and inches): tenths under an
 // inch, never "0.0 in"; whole inches past it.
@@ -341,6 +342,8 @@ void BattingCage::swing(const SwingInput& s, double t, double pressed_ms, double
   }
 }
 
+bool BattingCage::game_over() const { return live_ && game_ && game_->board().final; }
+
 void BattingCage::note_beside_call(std::string_view note) {
   const std::string said = "   (" + std::string(note) + ")";
   if (!call_text_.ends_with(said)) call_text_ += said;
@@ -508,6 +511,10 @@ void BattingCage::apply(const Intent& in) {
         // A second press while the pitch he missed is still on its way: one swing a pitch,
         // and the next pitch only once this one is called.
         note_beside_call(in.kind == IntentKind::Swing ? "one swing a pitch" : kNextPitchAfterCall);
+      } else if (stage_ != Stage::Pitching && in.kind == IntentKind::Swing && game_over()) {
+        // The final stays until P, as the panel says: the Space he swung with all game does
+        // not throw it away.
+        note_beside_call(kNewGameOnP);
       } else if (stage_ != Stage::Pitching) {
         // Space between pitches calls for the next one, as P does.
         next_pitch(t);
@@ -541,6 +548,10 @@ void BattingCage::apply(const Intent& in) {
       if (bot_armed_ || (pro_takes_ && stage_ == Stage::Pitching)) break;  // he has this pitch already
       if (stage_ == Stage::Called && !told_) {
         note_beside_call(kNextPitchAfterCall);  // the missed pitch is called first; the press is answered
+        break;
+      }
+      if (stage_ != Stage::Pitching && game_over()) {
+        note_beside_call(kNewGameOnP);  // the final stays until P
         break;
       }
       if (stage_ != Stage::Pitching) next_pitch(t);

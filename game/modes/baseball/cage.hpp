@@ -162,6 +162,8 @@ class BattingCage {
   /// the league's starters throw.
   void new_league_pitcher();
   /// `note` in brackets after the call (once): a press answered while the call stands.
+  /// A live game that has ended: its final stays until P opens the next.
+  bool game_over() const;
   void note_beside_call(std::string_view note);
   /// Live: the pitch's result on the count, and the plate appearance's end when it comes.
   void count_pitch(PitchResult r);

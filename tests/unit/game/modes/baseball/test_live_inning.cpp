@@ -202,3 +202,31 @@ TEST_CASE("live game: the league bats the bottom half; nine innings, no bottom o
   CHECK(away_wins > 0);
   CHECK(no_bottom_ninth > 0);
 }
+
+TEST_CASE("live game in the cage: the final stays until P; B and Space say so", "[modes][baseball]") {
+  // The pro bats the whole game (B between pitches); once it is over, B and Space, the keys
+  // of the game, answer that P starts a new one, and only P does.
+  BattingCage cage(test::assets(), 5);
+  cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);
+  REQUIRE(cage.live());
+  double now = 1.0;
+  while (!cage.board()->final && now < 40000.0) {
+    cage.update({at(IntentKind::BotSwings, now)}, now);
+    for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
+                                                      cage.stage() == BattingCage::Stage::Batted);)
+      cage.update({}, now += 0.1);
+    now += 0.5;
+  }
+  REQUIRE(cage.board()->final);
+  const std::string final_line = cage.board()->final_line;
+  for (const IntentKind k : {IntentKind::BotSwings, IntentKind::Swing}) {
+    cage.update({at(k, now)}, now);
+    now += 0.5;
+    CHECK(cage.board()->final);
+    CHECK(cage.board()->final_line == final_line);
+    CHECK(cage.stage() != BattingCage::Stage::Pitching);
+  }
+  cage.update({at(IntentKind::Pitch, now)}, now);
+  CHECK_FALSE(cage.board()->final);
+  CHECK(cage.stage() == BattingCage::Stage::Pitching);
+}

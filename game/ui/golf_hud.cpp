@@ -265,8 +265,8 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     // A gimme's reach, rounded down (0.6 m is "23 in", not the "2 ft" a 0.62 m putt also reads).
     char gimme[40] = "";
     if (const double m = g.options().gimme_m; m > 0.0) {
-      if (units.imperial) std::snprintf(gimme, sizeof gimme, "   gimme %.0f in", std::floor(m / 0.0254 + 1e-9));
-      else std::snprintf(gimme, sizeof gimme, "   gimme %.0f cm", std::floor(100.0 * m + 1e-9));
+      if (units.imperial) std::snprintf(gimme, sizeof gimme, "   gimme %.0f\u00a0in", std::floor(m / 0.0254 + 1e-9));
+      else std::snprintf(gimme, sizeof gimme, "   gimme %.0f\u00a0cm", std::floor(100.0 * m + 1e-9));
     }
     ImGui::TextWrapped("Hole %d   Par %d   %s   Index %d%s", hole.number, hole.par, units.distance(hole.length()).c_str(),
                        hole.stroke_index, gimme);

@@ -110,7 +110,9 @@ TEST_CASE("live game: the pro bats against the league's pitcher as the game's hi
   cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);
   double now = 1.0;
   while (cage.at_bats().pa < 120 && now < 40000.0) {
-    cage.update({at(IntentKind::BotSwings, now)}, now);
+    // A game over: P opens the next (B leaves the final standing), and the pro bats on.
+    if (cage.board()->final) cage.update({at(IntentKind::Pitch, now)}, now);
+    cage.update({at(IntentKind::BotSwings, now + 0.01)}, now + 0.01);
     for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
                                                       cage.stage() == BattingCage::Stage::Batted);)
       cage.update({}, now += 0.05);

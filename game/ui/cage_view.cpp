@@ -540,6 +540,8 @@ void cage_report(const BattingCage& c, std::ostream& out) {
                   mps_to_mph(f.mean_exit_speed), rad_to_deg(f.mean_launch), 100.0 * f.hard_hit / f.fair, m_to_ft(f.longest));
     out << line << "\n";
   }
+  // Each live game finished before the one on now, by its final line.
+  for (const std::string& final_line : c.finished_games()) out << "live game finished: " << final_line << "\n";
   if (c.live()) {
     const BattingCage::AtBats& a = c.at_bats();
     std::snprintf(line, sizeof line, "live game: PA %d: %d H (%d HR), %d K, %d BB, %d HBP against a %s-hander", a.pa, a.hits,

@@ -96,6 +96,7 @@ void BattingCage::next_pitch(double t) {
   pro_takes_ = false;
   // A game over: the next pitch opens a fresh one (the session's figures go on).
   if (game_ && game_->board().final) {
+    finals_.push_back(game_->board().final_line);
     game_.emplace(assets_, seed_ + static_cast<std::uint64_t>(++games_));
     new_league_pitcher();
     board_before_ = LiveInning::Board{};

@@ -141,6 +141,8 @@ class BattingCage {
   };
   /// As the player has been told them: a ball in play counts from its call.
   const AtBats& at_bats() const { return told_ ? at_bats_ : at_bats_before_; }
+  /// The final lines of the live games finished and replaced by a new one this session.
+  const std::vector<std::string>& finished_games() const { return finals_; }
   /// Live: the game's scoreboard (innings, outs, runners, runs) as told, the ball in the air
   /// not yet on it; none in batting practice.
   const LiveInning::Board* board() const {
@@ -211,6 +213,7 @@ class BattingCage {
   std::uint64_t seed_ = 0;  ///< the session's: a live game's teams and throws draw from it
   std::optional<LiveInning> game_;  ///< live: the innings the at-bats make
   int games_ = 0;                   ///< live games finished this session
+  std::vector<std::string> finals_;  ///< their final lines, in order (the report lists them)
   LiveInning::Board board_before_;
   Pitcher pitcher_;
   BotBatter reader_;  ///< the pro's eye that sets the bat's height when timing_only_

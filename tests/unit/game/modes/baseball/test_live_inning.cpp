@@ -228,7 +228,10 @@ TEST_CASE("live game in the cage: the final stays until P; B and Space say so", 
     CHECK(cage.board()->final_line == final_line);
     CHECK(cage.stage() != BattingCage::Stage::Pitching);
   }
+  CHECK(cage.finished_games().empty());
   cage.update({at(IntentKind::Pitch, now)}, now);
   CHECK_FALSE(cage.board()->final);
   CHECK(cage.stage() == BattingCage::Stage::Pitching);
+  // The finished game's final is kept for the exit report.
+  CHECK(cage.finished_games() == std::vector<std::string>{final_line});
 }

@@ -98,8 +98,8 @@ constexpr std::size_t kLongestCourseName = 80;
 ImportResult import_course(const Assets& assets, const ImportOptions& o) {
   std::error_code ec;
   // A link counts, dangling or not: the new directory is never written through one.
-  if (std::filesystem::exists(std::filesystem::symlink_status(o.out, ec)))
-    throw InputError(o.out.string() + (std::filesystem::is_symlink(std::filesystem::symlink_status(o.out, ec)) ? ": already exists (a link)" : ": already exists") +
+  if (const std::filesystem::file_status out = std::filesystem::symlink_status(o.out, ec); std::filesystem::exists(out))
+    throw InputError(o.out.string() + (std::filesystem::is_symlink(out) ? ": already exists (a link)" : ": already exists") +
                      " (course import writes a new directory; remove it or give another -o)");
   const std::filesystem::path parent = o.out.has_parent_path() ? o.out.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(parent, ec)) throw InputError(o.out.string() + ": its folder " + parent.string() + " does not exist");

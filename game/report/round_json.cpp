@@ -60,13 +60,14 @@ nlohmann::json holes_json(const GolfRound& round) {
 struct BallStriking {
   int fairways_hit = 0, fairways = 0, greens = 0;
 };
+void count_hole(BallStriking& b, const HoleCard& h) {
+  b.fairways += h.tee_shot != TeeShot::None;
+  b.fairways_hit += h.tee_shot == TeeShot::Fairway;
+  b.greens += h.green_in_regulation;
+}
 BallStriking ball_striking(const GolfRound& round) {
   BallStriking b;
-  for (const HoleCard* h : listed_holes(round)) {
-    b.fairways += h->tee_shot != TeeShot::None;
-    b.fairways_hit += h->tee_shot == TeeShot::Fairway;
-    b.greens += h->green_in_regulation;
-  }
+  for (const HoleCard* h : listed_holes(round)) count_hole(b, *h);
   return b;
 }
 
@@ -244,10 +245,7 @@ nlohmann::json group_json(const GolfGroup& g) {
       putts += holes[h]["putts"].get<int>();
       net += holes[h]["net"].get<int>();
       par += holes[h]["par"].get<int>();
-      const HoleCard& c = r.card()[h];
-      b.fairways += c.tee_shot != TeeShot::None;
-      b.fairways_hit += c.tee_shot == TeeShot::Fairway;
-      b.greens += c.green_in_regulation;
+      count_hole(b, r.card()[h]);
     }
     players.push_back({{"player", pl.name},
                        {"skill", pl.human ? std::string("human") : pl.skill},

@@ -63,6 +63,11 @@ void install_cleanup_handlers() {
   });
 }
 
+}  // namespace
+
+// Named (not anonymous) so that OutputBatch::Pending can hold them.
+namespace atomic_file_detail {
+
 struct TempRegistration {
   explicit TempRegistration(const std::string& p) {
     if (p.size() >= PATH_MAX) return;  // cannot be longer: mkstemp's path fits PATH_MAX
@@ -89,6 +94,13 @@ struct PendingRename {
   fs::path target, path, dir;
   TempRegistration registered;
 };
+}  // namespace atomic_file_detail
+
+namespace {
+using atomic_file_detail::PendingRename;
+using atomic_file_detail::TempRegistration;
+
+// The open batch's files (OutputBatch), or none: write_file_atomic renames at once.
 thread_local std::vector<PendingRename>* g_batch = nullptr;
 
 void rename_into_place(const std::string& tmp, const fs::path& target, const fs::path& path, const fs::path& dir) {
@@ -230,24 +242,24 @@ void write_file_atomic(const fs::path& path, std::string_view contents, OverInpu
   rename_into_place(tmp, target, path, dir);
 }
 
-OutputBatch::OutputBatch() {
+struct OutputBatch::Pending {
+  std::vector<PendingRename> files;
+};
+
+OutputBatch::OutputBatch() : pending_(std::make_unique<Pending>()) {
   if (g_batch != nullptr) throw std::logic_error("OutputBatch: one batch at a time");
-  pending_ = new std::vector<PendingRename>();
-  g_batch = static_cast<std::vector<PendingRename>*>(pending_);
+  g_batch = &pending_->files;
 }
 
 OutputBatch::~OutputBatch() {
-  auto* pending = static_cast<std::vector<PendingRename>*>(pending_);
-  g_batch = nullptr;
-  for (const PendingRename& p : *pending) ::unlink(p.tmp.c_str());  // not committed: none replaced
-  delete pending;
+  if (g_batch == &pending_->files) g_batch = nullptr;
+  for (const PendingRename& p : pending_->files) ::unlink(p.tmp.c_str());  // not committed: none replaced
 }
 
 void OutputBatch::commit() {
-  auto* pending = static_cast<std::vector<PendingRename>*>(pending_);
   g_batch = nullptr;
-  std::vector<PendingRename> files = std::move(*pending);
-  pending->clear();
+  std::vector<PendingRename> files = std::move(pending_->files);
+  pending_->files.clear();
   for (std::size_t i = 0; i < files.size(); ++i) {
     try {
       rename_into_place(files[i].tmp, files[i].target, files[i].path, files[i].dir);

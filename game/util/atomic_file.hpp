@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string_view>
 
 namespace sweetspot {
@@ -45,7 +46,8 @@ class OutputBatch {
   void commit();
 
  private:
-  void* pending_;  ///< the files waiting (atomic_file.cpp's own type)
+  struct Pending;  ///< the files waiting for their rename (atomic_file.cpp)
+  std::unique_ptr<Pending> pending_;
 };
 
 /// Notes a file the process reads (scenario, world, mesh, material library, course, case),

@@ -129,6 +129,7 @@ void validate_golf_swing(const GolfSwing& w, const ClubSpec& club) {
   check_range("swing.impact_offset[0] (toe) on the " + club.name + "'s face", w.impact_toe, toe_on_face, "m");
   check_range("swing.impact_offset[1] (up) on the " + club.name + "'s face", up, up_on_face, "m");
   check_range("swing.closure_rate", w.closure_rate, GolfSwing::kClosureRate, "rad/s");
+  check_range("swing.sand_entry", w.sand_entry, kSandEntry, "m");
   // The loft last: a loft given at the strike is checked where the strike (checked above)
   // puts the face centre, and named as given.
   if (!std::isnan(w.dynamic_loft) && !std::isnan(w.strike_loft))

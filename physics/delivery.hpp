@@ -12,6 +12,7 @@
 #include "physics/impact.hpp"
 #include "physics/launch.hpp"
 #include "physics/range.hpp"
+#include "physics/sand_splash.hpp"
 
 namespace sweetspot {
 
@@ -51,6 +52,9 @@ struct GolfSwing {
   static constexpr Range kImpactUp{-0.03, 0.03};   ///< half a driver face (~60 mm tall)
   double closure_rate = 0;     ///< rad/s about the shaft axis, + closing; tour ~ 30–40 rad/s
   static constexpr Range kClosureRate{-110.0, 110.0};  ///< ±6300 deg/s, ~3x a tour player's
+  /// m before the ball where the club enters the sand: a splash from a bunker
+  /// (physics/sand_splash.hpp); 0, the ball struck first. Range kSandEntry.
+  double sand_entry = 0.0;
 };
 
 /// A bat swing at impact. Defaults: a line drive with a wood bat.

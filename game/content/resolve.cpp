@@ -134,6 +134,7 @@ ResolvedShot resolve(const ShotSpec& spec, const Assets& assets) {
     r.start_surface = to_string(under.kind);
     r.lie_friction = under.lie_friction;
     r.lie_speed_loss = under.lie_speed_loss;
+    r.lie_restitution = under.e;
   }
   if (!p.lie.empty() && p.lie != r.start_surface) {
     throw InputError("world.lie: the ball at world.ball_position lies on " + r.start_surface + ", not " + p.lie);

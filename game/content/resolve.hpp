@@ -29,6 +29,7 @@ struct ResolvedShot {
   std::string start_surface;            ///< the surface under the ball ("tee", "fairway", ...; "" in the air)
   double lie_friction = 1.0;            ///< the lie's factor on the face µ (SurfaceMaterial::lie_friction)
   double lie_speed_loss = 0.0;          ///< the lie's club-speed loss before contact
+  CorCurve lie_restitution = CorCurve::constant(0.0);  ///< the surface's own bounce (a splash's cushion)
 };
 
 /// Looks up every name of `spec` and checks every value against its physics range.

@@ -98,6 +98,7 @@ ShotSpec spec_from(const CheckedDoc& doc) {
         w.impact_up = offset[1];
       }
       w.closure_rate = doc.quantity("swing.closure_rate");
+      w.sand_entry = doc.quantity("swing.sand_entry");
       s.strike = c;
     } else {
       BatStrike b;

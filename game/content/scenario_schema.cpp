@@ -128,6 +128,8 @@ Schema build_scenario_schema() {
   k.push_back(list("swing.impact_offset", Length, 2, {&GolfSwing::kImpactToe, &GolfSwing::kImpactUp, nullptr}, "mm",
                    "", "impact point [toe +, up +] from the face centre (default: the club's usual strike)", C));
   k.push_back(quantity("swing.closure_rate", Spin, &GolfSwing::kClosureRate, "deg/s", "0deg/s", "face closure rate, + closing", C));
+  k.push_back(quantity("swing.sand_entry", Length, &kSandEntry, "in", "0in",
+                       "from a bunker: where the club enters the sand behind the ball (a splash; 1in as taught), 0 = the ball first", C));
 
   k.push_back(quantity("swing.speed", Speed, &BatSwing::kBatSpeed, "mph", "31.3m/s", "bat speed at the sweet spot", B));
   k.push_back(quantity("swing.attack_angle", Angle, &BatSwing::kAttackAngle, "deg", "0.15rad", "swing plane angle, + up", B));

@@ -66,6 +66,7 @@ struct ClubNumbers {
   double impact_toe = 0.0;          ///< m from the face centre, + toward the toe
   double impact_up = 0.0;           ///< m from the face centre, + up
   double closure_rate = 0.0;        ///< rad/s, + closing
+  double sand_entry = 0.0;          ///< m behind the ball where a splash entered the sand; 0: none
 };
 
 /// Baseball delivery.

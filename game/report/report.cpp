@@ -82,6 +82,7 @@ nlohmann::json shot_json(const ShotResult& r) {
           {"impact_offset_m", {r.club.impact_toe, r.club.impact_up}},
       };
       if (!r.lie.empty()) j["club"]["lie"] = r.lie;
+      if (r.club.sand_entry > 0.0) j["club"]["sand_entry_m"] = r.club.sand_entry;
     } else if (!r.bat.bat.empty()) {
       j["bat"] = {
           {"name", r.bat.bat},

@@ -7,6 +7,7 @@
 
 #include "game/rules/shot_rules.hpp"
 #include "physics/error.hpp"
+#include "physics/sand_splash.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -31,14 +32,30 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
   } else {
     Delivery d;
     if (const auto* c = std::get_if<ClubStrike>(&s.spec.strike)) {
-      // The lie acts on the strike: grass between face and ball, a club slowed by sand.
+      // The lie acts on the strike. Grass lies between face and ball wherever the ball sits in
+      // it (less grip; long grass slows the club too). A ball in sand sits on it: struck first
+      // it meets the face as from a tight lie, and a splash meets it through the sand
+      // (physics/sand_splash.hpp).
       ImpactMaterial face = s.material;
-      face.mu *= s.lie_friction;
       GolfSwing through = c->swing;
-      through.club_speed *= 1.0 - s.lie_speed_loss;
       // The swing is checked as written first, so a refusal names the value the user gave;
       // then the speed the lie leaves, naming the lie.
       validate_golf_swing(c->swing, *s.club);
+      const bool sand = s.start_surface == "sand";
+      if (c->swing.sand_entry > 0.0) {
+        if (!sand)
+          throw InputError("swing.sand_entry: a splash is played from sand, and the ball lies on " +
+                           (s.start_surface.empty() ? std::string("nothing") : s.start_surface) +
+                           " (0in strikes the ball first; from a bunker 0in to 6in)");
+        const ClubSpec& k = *s.club;
+        through.club_speed = club_speed_after_sand(through.club_speed, k.head_mass + k.shaft_tip_mass,
+                                                   2.0 * k.face_half_width, c->swing.sand_entry);
+        face.e = s.lie_restitution;
+        face.mu *= s.lie_friction;
+      } else if (!sand) {
+        face.mu *= s.lie_friction;
+        through.club_speed *= 1.0 - s.lie_speed_loss;
+      }
       if (!GolfSwing::kClubSpeed.contains(through.club_speed))
         throw InputError("swing.speed: the " + s.start_surface + " lie takes " +
                          std::to_string(static_cast<int>(std::lround(100.0 * s.lie_speed_loss))) +
@@ -64,6 +81,7 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
       // the face's normal where it meets the ball; a face open or shut to the path adds to it.
       k.spin_loft = std::acos(std::clamp(d.impact_input.normal.normalized().dot(head_direction(w)), -1.0, 1.0));
       k.closure_rate = w.closure_rate;
+      k.sand_entry = w.sand_entry;
       r.impactor_mesh = s.club_info->mesh;
     } else {
       const auto& b = std::get<BatStrike>(s.spec.strike);

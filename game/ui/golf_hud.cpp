@@ -292,6 +292,11 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     ImGui::Text("%s to play%s", play.player_info().name.c_str(), play.human_turn() ? "" : play.player_info().human ? " (auto-putt)" : " (bot)");
     const HoleCard& card = r.card().back();
     ImGui::Text("Stroke %d   Lie: %s", card.strokes + 1, lie_words(r.lie()));
+    // From a bunker the club decides the technique (sand_entry_for): say which it will be.
+    if (r.lie() == "sand" && play.club() != "putter")
+      ImGui::TextWrapped("%s", r.sand_entry(play.club()) > 0.0
+                                   ? "Splash: the club enters the sand an inch behind the ball (about a third as far as from grass)"
+                                   : "Picked clean, the ball first (the sand and lob wedges splash)");
     // On the green in the putt's units however long the putt.
     ImGui::Text("To the pin: %s", r.lie() == "green" ? units.putt(r.to_pin()).c_str() : units.course(r.to_pin()).c_str());
     const std::string& club = play.club();

@@ -51,6 +51,11 @@ GolfSwing golfer_swing(const GolferSkill& g, const MeterInput& m, const Equipmen
   return s;
 }
 
+double sand_entry_for(const ClubSpec& club, const std::string& lie) {
+  constexpr double kSplashLoft = deg_to_rad(54.0);  // the SW's 56° and the LW's 60°, not the PW's 46°
+  return lie == "sand" && club.loft >= kSplashLoft ? kSplashEntry : 0.0;
+}
+
 double full_swing_speed(const GolferSkill& g, const ClubInfo& club) {
   if (club.kind == "putter") return club.tour_speed;
   return club.tour_speed * g.driver_speed / mph_to_mps(113.0);

@@ -77,6 +77,10 @@ std::string GolfRound::surface_at(const Vec3& p) const {
 
 std::string GolfRound::lie() const { return surface_at(ball_); }
 
+double GolfRound::sand_entry(const std::string& club) const {
+  return sand_entry_for(assets_->equipment().club(club), lie());
+}
+
 double GolfRound::to_pin() const { return std::hypot(hole().pin.x() - ball_.x(), hole().pin.z() - ball_.z()); }
 
 std::optional<Vec3> GolfRound::next_bend() const {
@@ -110,6 +114,7 @@ ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
   ClubStrike c;
   c.club = in.club;
   c.swing = golfer_swing(golfer_, in.meter, eq, in.club);
+  c.swing.sand_entry = sand_entry(in.club);
   s.strike = c;
   // The ball is kept in world coordinates; a placement is measured from the world's origin.
   const Vec3& origin = hole().world->description().origin;

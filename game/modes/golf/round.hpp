@@ -97,6 +97,9 @@ class GolfRound {
   bool teed() const { return teed_; }
   /// The surface under the ball ("tee", "fairway", "rough", "sand", "green").
   std::string lie() const;
+  /// m before the ball where `club` enters the sand from here: a splash with the sand and lob
+  /// wedges from a bunker (sand_entry_for), else 0.
+  double sand_entry(const std::string& club) const;
   double to_pin() const;
   /// World direction from the ball to the cup, rad right of +x.
   double line_to_pin() const;

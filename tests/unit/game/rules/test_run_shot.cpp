@@ -92,7 +92,7 @@ TEST_CASE("aim turns the shot on the world, not its launch numbers", "[run_shot]
   CHECK(rad_to_deg(std::atan2(pb.z(), pb.x()) - std::atan2(pa.z(), pa.x())) == Approx(10.0).epsilon(1e-6));
 }
 
-TEST_CASE("the lie acts on the strike: a flyer from the rough, a slowed club in the sand", "[run_shot][lie]") {
+TEST_CASE("the lie acts on the strike: a flyer from the rough", "[run_shot][lie]") {
   // Grass and water between face and ball (materials.toml lie_friction) lower the face's
   // grip: less spin and a higher launch together. A wedge study's wet faces (Peterfield Golf,
   // 2020) lost ~35 % of the spin on average, 10 % for the best wedges and 60 % for the worst,
@@ -119,6 +119,87 @@ TEST_CASE("the lie acts on the strike: a flyer from the rough, a slowed club in 
   CHECK(speed < -0.02);
   CHECK(speed > -0.08);
   CHECK(rough.launch.vertical_angle > clean.launch.vertical_angle);
+}
+
+TEST_CASE("from sand a ball struck first plays as from the fairway, and a splash pushes it out through the sand",
+          "[run_shot][lie][sand]") {
+  // golf_hole: fairway at [255 m, 0], its fairway bunker at [255 m, 17 m]. A sand wedge's
+  // pitch stroke (40 mph, -4 deg).
+  const Assets& A = test::assets();
+  ShotSpec spec;
+  auto& c = std::get<ClubStrike>(spec.strike);
+  c.club = "sw";
+  c.swing.club_speed = mph_to_mps(40.0);
+  c.swing.attack_angle = deg_to_rad(-4.0);
+  spec.placement.x = 255.0;
+  const ShotResult grass = run_shot(resolve(spec, A), "fairway", {true, false});
+  REQUIRE(grass.lie == "fairway");
+  spec.placement.z = 17.0;
+  const ShotResult pick = run_shot(resolve(spec, A), "pick", {true, false});
+  REQUIRE(pick.lie == "sand");
+  // Picked clean: nothing between face and ball, the club not slowed.
+  CHECK(pick.launch.ball_speed == Approx(grass.launch.ball_speed).epsilon(1e-9));
+  CHECK(pick.launch.spin.total == Approx(grass.launch.spin.total).epsilon(1e-9));
+
+  c.swing.sand_entry = kSplashEntry;
+  const ResolvedShot splash_spec = resolve(spec, A);
+  const ShotResult splash = run_shot(splash_spec, "splash", {true, false});
+  // The plough: the head reaches the ball at the closed form's speed (sand_splash.hpp).
+  const ClubSpec& sw = *splash_spec.club;
+  CHECK(splash.club.speed_at_impact ==
+        Approx(club_speed_after_sand(pick.club.speed_at_impact, sw.head_mass + sw.shaft_tip_mass, 2.0 * sw.face_half_width,
+                                     kSplashEntry))
+            .epsilon(1e-9));
+  CHECK(splash.club.sand_entry == kSplashEntry);
+  // The cushion: the sand's own rebound (~0.07 at this approach) where the face gives ~0.87,
+  // so about (1 + 0.07) / (1 + 0.87) of the ball's speed at 88 % of the club's: about half.
+  CHECK(splash.impact.e < 0.2);
+  const double speed = splash.launch.ball_speed / pick.launch.ball_speed;
+  INFO("splash/pick: ball speed " << speed << ", spin " << splash.launch.spin.total / pick.launch.spin.total << ", launch "
+                                  << rad_to_deg(splash.launch.vertical_angle) << " against "
+                                  << rad_to_deg(pick.launch.vertical_angle) << " deg");
+  CHECK(speed > 0.4);
+  CHECK(speed < 0.6);
+  // Through sliding layers of sand the face barely grips: the ball comes out "knuckling",
+  // higher and with a fraction of the spin (golf-info-guide, "Explosion shot").
+  CHECK(splash.launch.spin.total < 0.3 * pick.launch.spin.total);
+  CHECK(splash.launch.vertical_angle > pick.launch.vertical_angle);
+  CHECK(splash.trajectory.summary.carry_m < 0.5 * pick.trajectory.summary.carry_m);
+
+  // Sand before the ball is sand: from the fairway there is none to enter.
+  spec.placement.z = 0.0;
+  CHECK_THROWS_WITH(run_shot(resolve(spec, A), "fat", {true, false}),
+                    Catch::Contains("swing.sand_entry") && Catch::Contains("fairway"));
+}
+
+TEST_CASE("the 30-yard pitch stroke splashes the ball roughly 30 feet out of a greenside bunker", "[run_shot][lie][sand]") {
+  // Backswing, "Calibrate your sand explosion shots" (undated): "the 30 yard pitch stroke if
+  // used in a bunker will have the ball traveling roughly 30 feet if you hit the sand first an
+  // inch behind the ball". The stroke is found from the fairway short of golf_hole's green
+  // ([380 m, 4 m], toward the cup), its total 30 yd; then played from the greenside bunker's
+  // green side ([388 m, -14 m], onto the green). "Roughly": a third either way, 10 ft.
+  const Assets& A = test::assets();
+  ShotSpec spec;
+  auto& c = std::get<ClubStrike>(spec.strike);
+  c.club = "sw";
+  c.swing.attack_angle = deg_to_rad(-4.0);
+  const auto total = [&](double mph, double x, double z, double aim_deg, double entry) {
+    c.swing.club_speed = mph_to_mps(mph);
+    c.swing.sand_entry = entry;
+    spec.placement.x = x;
+    spec.placement.z = z;
+    spec.placement.aim = deg_to_rad(aim_deg);
+    return run_shot(resolve(spec, A), "splash", {true, false}).trajectory.summary.total_m;
+  };
+  double lo = 15.0, hi = 45.0;  // mph: a 30-yd pitch lies between
+  for (int i = 0; i < 30; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (total(mid, 380.0, 4.0, -2.3, 0.0) < 30.0 * 0.9144 ? lo : hi) = mid;
+  }
+  const double stroke = 0.5 * (lo + hi);
+  const double splash_ft = total(stroke, 388.0, -14.0, 45.0, kSplashEntry) / 0.3048;
+  INFO("the 30-yd pitch stroke: " << stroke << " mph; its splash travels " << splash_ft << " ft");
+  CHECK(splash_ft == Approx(30.0).margin(10.0));
 }
 
 TEST_CASE("from a wet grassy lie the contact gives TrackMan's launch, spin and ball speed together", "[run_shot][lie]") {

@@ -174,3 +174,12 @@ TEST_CASE("the range's flags stand every 50 yd, or every 50 m for a metric golfe
     CHECK(metres[k].z() == yards[k].z());  // the same places off the line
   }
 }
+
+TEST_CASE("from a bunker the sand and lob wedges splash an inch behind the ball, every other club picks it clean",
+          "[golfer][sand]") {
+  const EquipmentCatalog& eq = test::assets().equipment();
+  CHECK(sand_entry_for(eq.club("sw"), "sand") == kSplashEntry);
+  CHECK(sand_entry_for(eq.club("lw"), "sand") == kSplashEntry);
+  for (const char* club : {"pw", "9-iron", "5-iron", "hybrid", "3-wood"}) CHECK(sand_entry_for(eq.club(club), "sand") == 0.0);
+  for (const char* lie : {"fairway", "rough", "tee", "green"}) CHECK(sand_entry_for(eq.club("sw"), lie) == 0.0);
+}

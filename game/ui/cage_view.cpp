@@ -359,7 +359,7 @@ class CageView final : public ModeView {
   const char* restart_label() const override { return "Restart session"; }
   std::string restart_loses() const override {
     const BattingCage& c = *cage_;
-    const int pa = c.at_bats().pa;
+    const int pa = c.game_pa();
     const Count& k = c.count();
     // Live, the game so far: its plate appearances, or the one under way (a 2-0 count).
     if (c.live() && pa > 0) return "the live game so far (" + std::to_string(pa) + (pa == 1 ? " plate appearance)" : " plate appearances)");

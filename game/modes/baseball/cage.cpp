@@ -97,6 +97,7 @@ void BattingCage::next_pitch(double t) {
   // A game over: the next pitch opens a fresh one (the session's figures go on).
   if (game_ && game_->board().final) {
     finals_.push_back(game_->board().final_line);
+    game_first_pa_ = at_bats_.pa;
     game_.emplace(assets_, seed_ + static_cast<std::uint64_t>(++games_));
     new_league_pitcher();
     board_before_ = LiveInning::Board{};
@@ -122,6 +123,7 @@ void BattingCage::start_record() {
   outcome_text_.clear();
   count_ = Count{};
   at_bats_ = AtBats{};
+  game_first_pa_ = 0;
   told_ = true;
   stage_ = Stage::Ready;
   bot_armed_ = false;
@@ -374,10 +376,11 @@ void BattingCage::Kept::clear() {
   count = Count{};
   game.reset();
   games = 0;
+  game_first_pa = 0;
 }
 
 void BattingCage::switch_record() {
-  Kept leaving{std::move(swings_), std::move(carries_as_played_), at_bats_, count_, std::nullopt, games_};
+  Kept leaving{std::move(swings_), std::move(carries_as_played_), at_bats_, count_, std::nullopt, games_, game_first_pa_};
   if (game_) leaving.game.emplace(std::move(*game_));
   live_ = !live_;
   start_record();
@@ -386,6 +389,7 @@ void BattingCage::switch_record() {
   at_bats_ = kept_.at_bats;
   count_ = kept_.count;
   games_ = kept_.games;
+  game_first_pa_ = kept_.game_first_pa;
   if (kept_.game) {
     game_.reset();
     game_.emplace(std::move(*kept_.game));
@@ -395,6 +399,7 @@ void BattingCage::switch_record() {
   kept_.at_bats = leaving.at_bats;
   kept_.count = leaving.count;
   kept_.games = leaving.games;
+  kept_.game_first_pa = leaving.game_first_pa;
   kept_.game.reset();
   if (leaving.game) kept_.game.emplace(std::move(*leaving.game));
   if (live_) new_league_pitcher();  // the game gone back to keeps its starter's hand

@@ -141,6 +141,8 @@ class BattingCage {
   };
   /// As the player has been told them: a ball in play counts from its call.
   const AtBats& at_bats() const { return told_ ? at_bats_ : at_bats_before_; }
+  /// Live: the plate appearances of the game now on (at_bats() counts every game's).
+  int game_pa() const { return at_bats().pa - game_first_pa_; }
   /// The final lines of the live games finished and replaced by a new one this session.
   const std::vector<std::string>& finished_games() const { return finals_; }
   /// Live: the game's scoreboard (innings, outs, runners, runs) as told, the ball in the air
@@ -213,6 +215,7 @@ class BattingCage {
   std::uint64_t seed_ = 0;  ///< the session's: a live game's teams and throws draw from it
   std::optional<LiveInning> game_;  ///< live: the innings the at-bats make
   int games_ = 0;                   ///< live games finished this session
+  int game_first_pa_ = 0;           ///< at_bats_.pa when the live game now on began
   std::vector<std::string> finals_;  ///< their final lines, in order (the report lists them)
   LiveInning::Board board_before_;
   Pitcher pitcher_;
@@ -227,6 +230,7 @@ class BattingCage {
     Count count;
     std::optional<LiveInning> game;
     int games = 0;
+    int game_first_pa = 0;
     void clear();
   };
   Kept kept_;

@@ -182,7 +182,8 @@ std::string describe(const FieldingPlay& f, const Vec3& toward) {
           case BattedBallType::FlyBall: return "Fly out to " + who;
         }
       }
-      return who == "1B" ? "Ground out to 1B unassisted" : "Ground out, " + who + " to 1B";
+      if (f.out_at_first_by == f.fielder) return "Ground out to " + who + " unassisted";
+      return "Ground out, " + who + " to " + kPositionNames[static_cast<std::size_t>(std::max(f.out_at_first_by, 0))];
     case BattedOutcome::Strike: return "Strike";
   }
   return "";
@@ -503,7 +504,20 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   const auto defence = [&](int base) { return ready + transfer_and_throw(thrower, first_p, base); };
   const double to_first = play.batter_to_first;
   const double base_to_base = kBaseLine / std::max(batter_sprint, 1.0) + kBaseRoundingTime;
-  if (defence(1) < to_first) {
+  // The ball at first: thrown to the man covering it. The first baseman with his own ground
+  // ball runs it to the bag when that is sooner (unassisted); from farther off he tosses it
+  // to the pitcher, who breaks for the bag at contact, once the pitcher can be there (3-1).
+  double at_first = defence(1);
+  play.out_at_first_by = covering_fielder(1, play.fielder);
+  if (play.fielder == kFirstBaseman) {
+    const Vec3 bag = base_position(1);
+    const double carried = ready + fielder_run_time(f, horizontal(first_p, bag)) - f.reaction;
+    const double tossed =
+        std::max(at_first, fielder_run_time(defense.ability[kPitcher], horizontal(play.start[kPitcher], bag)));
+    play.out_at_first_by = carried <= tossed ? kFirstBaseman : kPitcher;
+    at_first = std::min(carried, tossed);
+  }
+  if (at_first < to_first) {
     play.outcome = BattedOutcome::Out;
     if (rng && rng->uniform() < kBootRate) play.outcome = BattedOutcome::Error;
     play.description = describe(play, first_p);

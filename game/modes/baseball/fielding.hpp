@@ -49,6 +49,8 @@ struct Defense {
   std::array<FielderAbility, 9> ability;
 };
 inline constexpr std::array<const char*, 9> kPositionNames{"P", "C", "1B", "2B", "SS", "3B", "LF", "CF", "RF"};
+inline constexpr int kPitcher = 0;       ///< kPositionNames' index of the pitcher
+inline constexpr int kFirstBaseman = 2;  ///< and of the first baseman
 
 /// The league's means: Statcast 2024 sprint speed and arm strength by position. Outfielders
 /// react in 0.3 s and accelerate at 4 m/s² (Statcast's 3 s "jump", 34 ft on average);
@@ -86,6 +88,9 @@ struct FieldingPlay {
   /// The base (2 or 3) where the throw gets the batter stretching his hit, 0 when it does not:
   /// the hit is his (`outcome`), and the out (the game's base running records it).
   int batter_out_at = 0;
+  /// Who has the ball at first on a ground out (kPositionNames' index): the first baseman
+  /// (unassisted on his own ball), or the pitcher he tossed it to; -1 when no play was made.
+  int out_at_first_by = -1;
   std::array<Vec3, 9> start{}, goal{};  ///< each fielder's spot and where he runs (drawing)
   std::string description;       ///< "Fly out to CF", "Double to RF", ...
 };

@@ -229,9 +229,15 @@ TEST_CASE("live game in the cage: the final stays until P; B and Space say so", 
     CHECK(cage.stage() != BattingCage::Stage::Pitching);
   }
   CHECK(cage.finished_games().empty());
+  const int game_pa = cage.game_pa();
+  CHECK(game_pa == cage.at_bats().pa);  // the first game: every plate appearance is its own
+  CHECK(game_pa >= 27);                  // at least three up in each of nine innings
   cage.update({at(IntentKind::Pitch, now)}, now);
   CHECK_FALSE(cage.board()->final);
   CHECK(cage.stage() == BattingCage::Stage::Pitching);
-  // The finished game's final is kept for the exit report.
+  // The finished game's final is kept for the exit report; the session's plate appearances
+  // go on, the new game's start from none (what a restart would lose).
   CHECK(cage.finished_games() == std::vector<std::string>{final_line});
+  CHECK(cage.at_bats().pa == game_pa);
+  CHECK(cage.game_pa() == 0);
 }

@@ -88,6 +88,10 @@ SwingInput BotBatter::plan(const PitchFlight& pitch, bool derby, bool left_hande
   }
   s.timing_ms = std::clamp(timing + rng_.normal(skill_.timing_sd_ms), SwingInput::kTiming.min, SwingInput::kTiming.max);
   s.undercut = std::clamp(s.undercut + rng_.normal(skill_.height_sd), SwingInput::kUndercut.min, SwingInput::kUndercut.max);
+  // No two swings run at the same speed (BatterSkill::bat_speed_sd), in batting practice as
+  // in a game.
+  s.speed_error = std::clamp(rng_.normal(skill_.bat_speed_sd * skill_.bat_speed), SwingInput::kSpeedError.min,
+                             SwingInput::kSpeedError.max);
   return s;
 }
 

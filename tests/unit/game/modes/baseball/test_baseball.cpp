@@ -296,6 +296,26 @@ TEST_CASE("derby swings: home runs cross the fence in flight, fouls land outside
   CHECK(home_runs > 0);
 }
 
+TEST_CASE("batting practice swings run at a speed of their own, spread as Statcast's hitters' are", "[baseball][derby]") {
+  // BatterSkill::bat_speed_sd: 4.3 % of the hitter's average (Statcast's fast-swing shares,
+  // docs/baseball.md), as the live game's hitter draws it.
+  const BatterSkill& pro = batter_skill("pro");
+  BotBatter bot(test::assets(), pro, 11);
+  Rng pitcher(3);
+  const PitchFlight pitch = throw_pitch(test::assets(), derby_pitch(load_pitch_types(test::assets()), pitcher));
+  double sum = 0.0, sum2 = 0.0;
+  const int n = 400;
+  for (int i = 0; i < n; ++i) {
+    const double e = bot.plan(pitch, false, false).speed_error;
+    sum += e;
+    sum2 += e * e;
+  }
+  const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+  INFO("speed error " << mean << " +- " << sd << " m/s against " << pro.bat_speed_sd * pro.bat_speed);
+  CHECK(std::abs(mean) < 0.2 * pro.bat_speed_sd * pro.bat_speed);
+  CHECK(sd == Approx(pro.bat_speed_sd * pro.bat_speed).epsilon(0.15));
+}
+
 TEST_CASE("bad baseball input names the value and its range", "[baseball][input]") {
   // A path cannot climb more steeply than the plane the bat turns in.
   SwingInput steep;

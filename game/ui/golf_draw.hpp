@@ -95,6 +95,9 @@ void draw_golf_meter(const GolfPlay& play, const GolfUnits& units, int w, int h,
 void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, double flight_t, bool hit_tree = false,
                        float top = 10.0f);
 void draw_golf_card(const GolfPlay& play, int w, bool final);
+/// Whether the card (600 px, centred) reaches the wind dial (right edge, 94 px): in a window
+/// narrower than ~790 px, where the dial would stand over the card's right column.
+bool golf_card_covers_wind(int w);
 /// The cup and flagstick, never smaller than a few pixels however far. `scene_has_flag`: the
 /// 3-D scene draws this pin's own flag (a course's), so near enough only the cup (and the
 /// label) is added.

@@ -295,7 +295,7 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     // From a bunker the club decides the technique (sand_entry_for): say which it will be.
     if (r.lie() == "sand" && play.club() != "putter")
       ImGui::TextWrapped("%s", r.sand_entry(play.club()) > 0.0
-                                   ? "Splash: the club enters the sand an inch behind the ball (about a third as far as from grass)"
+                                   ? "Splash: an inch of sand before the ball (about a third as far)"
                                    : "Picked clean, the ball first (the sand and lob wedges splash)");
     // On the green in the putt's units however long the putt.
     ImGui::Text("To the pin: %s", r.lie() == "green" ? units.putt(r.to_pin()).c_str() : units.course(r.to_pin()).c_str());
@@ -905,6 +905,8 @@ void draw_wind(const GolfPlay& play, const GolfUnits& units, int w, double scree
   dl->AddText(ImVec2(c.x - 29, c.y + 39), IM_COL32(0, 0, 0, 220), label);
   dl->AddText(ImVec2(c.x - 30, c.y + 38), IM_COL32(255, 255, 255, 255), label);
 }
+
+bool golf_card_covers_wind(int w) { return 0.5f * static_cast<float>(w) + 300.0f > static_cast<float>(w) - 96.0f; }
 
 void draw_golf_card(const GolfPlay& play, int w, bool final) {
   const GolfGroup& g = play.group();

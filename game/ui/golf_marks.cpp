@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "game/ui/clear_of.hpp"
@@ -279,14 +280,27 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
                             ImVec2(dot.x + 6.0f, dot.y + 8.0f + size.y),
                             ImVec2(dot.x + 6.0f, dot.y + 8.0f + 2.0f * size.y),
                             ImVec2(dot.x + 6.0f, dot.y - 8.0f - 2.0f * size.y)};
-    ImVec2 chosen = at;
-    for (const ImVec2& t : tries)
-      if (!overlaps(t)) {
+    // Whole on the screen too (a label out to the right of a small window was cut off);
+    // where no place is both, the first clear one moved onto the screen.
+    const auto on_screen = [&](ImVec2 a) {
+      return a.x >= 0.0f && a.y >= 0.0f && a.x + size.x <= static_cast<float>(w) && a.y + size.y <= static_cast<float>(h);
+    };
+    const auto onto_screen = [&](ImVec2 a) {
+      return ImVec2(std::clamp(a.x, 0.0f, std::max(0.0f, static_cast<float>(w) - size.x)),
+                    std::clamp(a.y, 0.0f, std::max(0.0f, static_cast<float>(h) - size.y)));
+    };
+    std::optional<ImVec2> chosen, clear;
+    for (const ImVec2& t : tries) {
+      if (overlaps(t)) continue;
+      if (!clear) clear = t;
+      if (on_screen(t)) {
         chosen = t;
         break;
       }
-    taken.emplace_back(chosen, ImVec2(chosen.x + size.x, chosen.y + size.y));
-    return chosen;
+    }
+    const ImVec2 at_last = chosen ? *chosen : onto_screen(clear ? *clear : at);
+    taken.emplace_back(at_last, ImVec2(at_last.x + size.x, at_last.y + size.y));
+    return at_last;
   };
   // The carry ring: a circle of the carry around the ball.
   if (carry > 1.0) {

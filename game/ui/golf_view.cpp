@@ -760,8 +760,10 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     ImGui::PopTextWrapPos();
     ImGui::End();
   }
+  const bool card_up = (stage == GolfPlay::Stage::HoleOver || stage == GolfPlay::Stage::RoundOver) && !settling;
   if (flying || settling) draw_launch_panel(play_->last_shot(), units_, w, flying ? t : end, play_->last_hit_tree());
-  else if (!in.paused) draw_wind(*play_, units_, w, screen_up_heading(cam));  // the menu stands there
+  else if (!in.paused && !(card_up && golf_card_covers_wind(w)))  // the menu stands there; a narrow window's card
+    draw_wind(*play_, units_, w, screen_up_heading(cam));
   if (!settling) draw_golf_meter(*play_, units_, w, h, in.now);
   if (calibration_) draw_calibration(w, h, in.now);
   if (stage == GolfPlay::Stage::HoleOver && !settling) draw_golf_card(*play_, w, false);

@@ -160,3 +160,11 @@ TEST_CASE("a chip's meter bar zooms on its few per cent, with the pin's mark ~60
   CHECK(bar.at(1.0) == Approx(bar.x0 + bar.bw));  // a marker run past the end stays at it
   CHECK(bar.at(-1.0) == Approx(bar.x0));
 }
+
+TEST_CASE("the wind dial gives way to the scorecard only where the card reaches it", "[ui][golf]") {
+  // The card is 600 px wide and centred; the dial and its label take the right 96 px.
+  CHECK(golf_card_covers_wind(640));
+  CHECK(golf_card_covers_wind(780));
+  CHECK_FALSE(golf_card_covers_wind(800));
+  CHECK_FALSE(golf_card_covers_wind(1280));
+}

@@ -57,8 +57,9 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
         through.club_speed *= 1.0 - s.lie_speed_loss;
       }
       if (!GolfSwing::kClubSpeed.contains(through.club_speed))
-        throw InputError("swing.speed: the " + s.start_surface + " lie takes " +
-                         std::to_string(static_cast<int>(std::lround(100.0 * s.lie_speed_loss))) +
+        throw InputError("swing.speed: " +
+                         std::string(c->swing.sand_entry > 0.0 ? "the sand before the ball takes " : "the " + s.start_surface + " lie takes ") +
+                         std::to_string(static_cast<int>(std::lround(100.0 * (1.0 - through.club_speed / c->swing.club_speed)))) +
                          " % of it, leaving " + range_refusal("the speed at the ball", through.club_speed,
                                                               GolfSwing::kClubSpeed, "m/s"));
       d = deliver_golf(s.ball, *s.club, through, face);

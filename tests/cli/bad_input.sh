@@ -57,6 +57,9 @@ expect_bad "wrong sport key" "swing.undercut|scenarios that swing a bat" -- shot
 expect_bad "bad --units" "--units|imperial, metric" -- shot golf/driver --units furlongs
 expect_bad "unknown world" "world.name|moon" -- shot golf/driver --set world.name=moon
 expect_bad "bad lie" "world.lie|not sand" -- shot golf/sand-wedge --set "world.ball_position=[100m,0m]"
+expect_bad "splash off the sand" "swing.sand_entry|a splash is played from sand" -- shot golf/pw --set swing.sand_entry=1in
+expect_bad "splash past 6 in" "swing.sand_entry|6 in" -- shot golf/sand-wedge --set swing.sand_entry=7in
+expect_bad "splash too slow" "swing.speed: the sand before the ball takes 45 %" -- shot golf/sand-wedge --set swing.speed=0.3mph --set swing.sand_entry=6in
 
 # No partial output files: sweep and regress write nothing when the input is bad.
 expect_bad "sweep bad e grid" "--e 0:2:3|<= 1" -- sweep golf/driver --e 0:2:3 --mu 0:1:2 --csv "$tmp/out.csv"

@@ -12,6 +12,22 @@
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
+
+namespace {
+
+/// A full-swing stroke with `club` at `mph` and `attack_deg`, the ball at [x, z] on golf_hole.
+ShotSpec club_stroke(const char* club, double mph, double attack_deg, double x, double z) {
+  ShotSpec spec;
+  auto& c = std::get<ClubStrike>(spec.strike);
+  c.club = club;
+  c.swing.club_speed = mph_to_mps(mph);
+  c.swing.attack_angle = deg_to_rad(attack_deg);
+  spec.placement.x = x;
+  spec.placement.z = z;
+  return spec;
+}
+
+}  // namespace
 using Catch::Matchers::Contains;
 
 TEST_CASE("a ShotSpec in code and the scenario file of the same shot give the same bytes", "[run_shot]") {
@@ -98,13 +114,7 @@ TEST_CASE("the lie acts on the strike: a flyer from the rough", "[run_shot][lie]
   // 2020) lost ~35 % of the spin on average, 10 % for the best wedges and 60 % for the worst,
   // and launched higher; ball speed falls a few per cent with the club slowed in the grass.
   const Assets& A = test::assets();
-  ShotSpec spec;
-  auto& c = std::get<ClubStrike>(spec.strike);
-  c.club = "8-iron";
-  c.swing.club_speed = mph_to_mps(87.0);
-  c.swing.attack_angle = deg_to_rad(-4.5);
-  spec.placement.x = 150.0;
-  spec.placement.z = 0.0;
+  ShotSpec spec = club_stroke("8-iron", 87.0, -4.5, 150.0, 0.0);
   const ShotResult clean = run_shot(resolve(spec, A), "fairway", {true, false});
   REQUIRE(clean.lie == "fairway");
   spec.placement.z = 30.0;
@@ -126,12 +136,8 @@ TEST_CASE("from sand a ball struck first plays as from the fairway, and a splash
   // golf_hole: fairway at [255 m, 0], its fairway bunker at [255 m, 17 m]. A sand wedge's
   // pitch stroke (40 mph, -4 deg).
   const Assets& A = test::assets();
-  ShotSpec spec;
+  ShotSpec spec = club_stroke("sw", 40.0, -4.0, 255.0, 0.0);
   auto& c = std::get<ClubStrike>(spec.strike);
-  c.club = "sw";
-  c.swing.club_speed = mph_to_mps(40.0);
-  c.swing.attack_angle = deg_to_rad(-4.0);
-  spec.placement.x = 255.0;
   const ShotResult grass = run_shot(resolve(spec, A), "fairway", {true, false});
   REQUIRE(grass.lie == "fairway");
   spec.placement.z = 17.0;
@@ -179,10 +185,8 @@ TEST_CASE("the 30-yard pitch stroke splashes the ball roughly 30 feet out of a g
   // ([380 m, 4 m], toward the cup), its total 30 yd; then played from the greenside bunker's
   // green side ([388 m, -14 m], onto the green). "Roughly": a third either way, 10 ft.
   const Assets& A = test::assets();
-  ShotSpec spec;
+  ShotSpec spec = club_stroke("sw", 30.0, -4.0, 380.0, 4.0);
   auto& c = std::get<ClubStrike>(spec.strike);
-  c.club = "sw";
-  c.swing.attack_angle = deg_to_rad(-4.0);
   const auto total = [&](double mph, double x, double z, double aim_deg, double entry) {
     c.swing.club_speed = mph_to_mps(mph);
     c.swing.sand_entry = entry;
@@ -215,13 +219,7 @@ TEST_CASE("from a wet grassy lie the contact gives TrackMan's launch, spin and b
   const Row rows[] = {{"pw", 80.1, -5.0, 93.4, 28.6, 5218}, {"7-iron", 87.3, -4.3, 114.1, 17.7, 5686}};
   const Assets& A = test::assets();
   for (const Row& row : rows) {
-    ShotSpec spec;
-    auto& c = std::get<ClubStrike>(spec.strike);
-    c.club = row.club;
-    c.swing.club_speed = mph_to_mps(row.club_mph);
-    c.swing.attack_angle = deg_to_rad(row.attack_deg);
-    spec.placement.x = 150.0;
-    spec.placement.z = 30.0;
+    const ShotSpec spec = club_stroke(row.club, row.club_mph, row.attack_deg, 150.0, 30.0);
     const ShotResult r = run_shot(resolve(spec, A), "wet", {true, false});
     REQUIRE(r.lie == "rough");
     INFO(row.club << ": " << mps_to_mph(r.launch.ball_speed) << " mph, " << rad_to_deg(r.launch.vertical_angle)

@@ -100,8 +100,8 @@ double added_loft(const GolferSkill& g, const EquipmentCatalog& eq);
 
 /// m behind the ball where a golfer's `club` enters the sand from a ball lying on `lie`: from
 /// a bunker the sand and lob wedges (lofted 54° or more, the soles made to skim sand) splash,
-/// entering the taught inch behind the ball (kSplashEntry); every other club picks the ball clean, as taught for
-/// fairway bunkers. 0 off sand.
+/// entering the taught inch behind the ball (kSplashEntry); every other club picks the ball
+/// clean, as fairway bunkers are taught. 0 off sand.
 double sand_entry_for(const ClubSpec& club, const std::string& lie);
 
 /// A golfer's full-swing club speed (m/s) with `club`: the club's tour speed scaled by the

@@ -364,7 +364,9 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
     for (const TrajectorySample& s : t.samples) {
       if (s.t > hang) break;
       const double reach = near_wall && horizontal(s.position, land) < 3.0 ? kLeap : kCatchable;
-      if (s.position.y() > reach || s.t < 0.05) continue;
+      // Nothing he can react to: a ball past him, or down, before he can move is no catch.
+      // (The catcher's glove in a foul tip's path makes a strike of it, not an out.)
+      if (s.position.y() > reach || s.t < in_air[i].reaction) continue;
       if (play.foul && !in_foul_ground(s.position)) continue;
       const double run = fielder_run_time(in_air[i], horizontal(play.start[i], s.position) / kRouteEfficiency);
       const double spare = s.t - run - kGatherUnder;

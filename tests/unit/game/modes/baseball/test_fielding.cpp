@@ -265,6 +265,31 @@ TEST_CASE("as_played: a foul ground ball is dead where it is called, not after i
   }
 }
 
+TEST_CASE("a ball past the catcher before he can react is a foul, never a foul out", "[baseball][fielding]") {
+  // Straight back off the bat at 30 m/s, 1 m up: it passes the catcher's mitt (4 ft back)
+  // 0.04 s after contact and reaches the backstop (15 m) at 0.5 s. A catcher's glove in a
+  // foul tip's path makes a strike of it (Rule definitions: foul tip), never a caught foul
+  // fly; it used to be "Foul out to C" about 2 % of the time.
+  ShotResult shot;
+  shot.end = ShotEnd::OutOfBounds;
+  ShotTrajectory& t = shot.trajectory;
+  for (int i = 0; i <= 250; ++i) {
+    TrajectorySample q;
+    q.t = 0.002 * i;
+    q.position = Vec3(-30.0 * q.t, 1.0, 0.0);
+    q.phase = Phase::Flight;
+    t.samples.push_back(q);
+  }
+  t.summary.hang_time_s = t.summary.total_time_s = 0.5;
+  t.summary.landing_position = t.summary.rest_position = t.samples.back().position;
+  t.summary.carry_m = t.summary.total_m = 15.0;
+  const FieldingPlay p = field_play(shot, aero(), Environment{}, league_defense(), false, 8.23, nullptr);
+  CHECK(p.foul);
+  CHECK(p.outcome == BattedOutcome::Foul);
+  CHECK_FALSE(p.caught);
+  CHECK(p.catch_probability < 1e-6);
+}
+
 TEST_CASE("a foul tip ends in the catcher's mitt, 4 ft behind the plate, not at the backstop", "[modes][baseball]") {
   // A ball going straight back from the plate at 30 m/s, 1 m up, sampled every millisecond
   // for 0.5 s (15 m: the backstop's distance).

@@ -112,6 +112,14 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
         continue;
       }
       if (k.key == GLFW_KEY_TAB) {
+        // A swing under way is taken back first (no stroke counted), as Esc takes it back: the
+        // mode left behind does not play it out with the clicks it never got.
+        if (view.busy()) {
+          Intent cancel;
+          cancel.kind = IntentKind::Cancel;
+          cancel.time = k.time - slot.offset;
+          view.send(cancel);
+        }
         choice = MenuChoice::NextMode;
         carried.assign(keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, keys.end());
         break;

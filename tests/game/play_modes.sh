@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The one main loop under Xvfb, driven by key presses like a player (Debian's xdotool): a
-# swing is started in the golf game, Tab cycles through every mode three times and back
-# (each mode made on first use, none aborting), the swing is still in progress (the golf
-# clock stopped while away), Esc cancels it with no stroke and pauses, Esc resumes, the
-# caddie plays the tee shot, Tab goes round once more, Esc and Q ask (the round is not saved)
-# and Q again quits with exit 0. The
+# swing is started in the golf game, Tab takes it back (no stroke: the clicks it never got
+# would have played it out on the way back) and cycles through every mode three times and
+# back (each mode made on first use, none aborting), Esc pauses, Esc resumes, the caddie
+# plays the tee shot, Tab goes round once more, Esc and Q ask (the round is not saved) and Q
+# again quits with exit 0. The
 # round's state is read from what the golf mode reports on exit.
 # $1 = sweetspot, $2 = check_screenshot.
 set -euo pipefail
@@ -24,11 +24,9 @@ for _ in $(seq 1 150); do wid=$(xdotool search --name Sweetspot 2>/dev/null | he
 [ -n "$wid" ] || { echo "no window"; kill $pid; exit 1; }
 sleep 2
 xdotool windowfocus --sync "$wid" 2>/dev/null || true
-# The backswing starts; the marker tops out 0.8 s of golf time later, so the golf mode is
-# only passed through on the way round (its clock runs only while it is shown).
+# The backswing starts; the first Tab takes it back.
 xdotool key space; sleep 0.15
 for _ in $(seq 1 12); do xdotool key Tab; sleep 0.1; done  # golf -> range -> baseball -> lab -> golf, three times
-xdotool key Escape; sleep 0.5                     # cancels the swing (play goes on)
 kill -0 $pid 2>/dev/null || { echo "the window closed while cycling modes"; exit 1; }
 xdotool key Escape; sleep 0.3                     # pauses
 xdotool key Escape; sleep 0.3                     # resumes

@@ -162,7 +162,8 @@ void add_measured_range_warnings(const ResolvedShot& s, ShotResult& r) {
                   "equipment does this", name, value, range.min, range.max, m->pair.c_str(), m->source.c_str());
     r.warnings.emplace_back(buf);
   };
-  check("e", r.impact.e, m->e);
+  // A splash's rebound is the sand's (run_shot's lie), not the face's: no face's range for it.
+  if (r.club.sand_entry <= 0.0) check("e", r.impact.e, m->e);
   if (s.material.friction != FrictionModel::None) check("mu", s.material.mu, m->mu);
   // The compliant contact makes its own e_t; only the rigid model (and the textbook
   // friction) take it as an input.

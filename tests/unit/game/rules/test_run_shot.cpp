@@ -157,6 +157,7 @@ TEST_CASE("from sand a ball struck first plays as from the fairway, and a splash
                                      kSplashEntry))
             .epsilon(1e-9));
   CHECK(splash.club.sand_entry == kSplashEntry);
+  CHECK(splash.warnings.empty());  // the sand's rebound is no face's out of its measured range
   // The cushion: the sand's own rebound (~0.07 at this approach) where the face gives ~0.87,
   // so about (1 + 0.07) / (1 + 0.87) of the ball's speed at 88 % of the club's: about half.
   CHECK(splash.impact.e < 0.2);

@@ -294,12 +294,14 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
         ScoreAfter after{1 - half, mound, 0, 0, {}};
         int earned = 0;
         // The inning as it would have gone without the errors: over before this play, or
-        // ended by this play's out before the runs crossed (a sacrifice fly for the third out),
-        // or by this play itself when it is the error (with two out, the batter put out as he
-        // should have been ends the inning, and no run scores on it: Rule 5.08(a)).
+        // ended by this play's out (a sacrifice fly or a force for the third out: the pitcher
+        // has the benefit of the doubt, Rule 9.16), or by this play itself when it is the
+        // error (with two out, the batter put out as he should have been ends the inning, and
+        // no run scores on it: Rule 5.08(a)). With no error in the half the inning is as it
+        // went: a run that beat the third out on its play (a time play) counted, and is earned.
         const bool this_error = pa.result == "error";
         const bool past_the_third_out = pa.outs_before + errors_as_outs + this_error >= 3 ||
-                                        (pa.outs_made > 0 && h.outs + errors_as_outs >= 3);
+                                        (pa.outs_made > 0 && errors_as_outs > 0 && h.outs + errors_as_outs >= 3);
         for (int who : scored) {
           ++box[half].batting[static_cast<std::size_t>(who)].r;
           const bool is_earned = !unearned[static_cast<std::size_t>(who)] && !past_the_third_out;

@@ -102,6 +102,9 @@ FairCall fair_call(const ShotTrajectory& t, const std::optional<TrajectorySample
   if (std::hypot(land.x(), land.z()) > kBaseLine) return {fair_direction(land), t.summary.hang_time_s, land};
   for (const TrajectorySample& s : t.samples) {
     if (touched && s.t >= touched->t) return {fair_direction(touched->position), touched->t, touched->position};
+    // Bounding past the bases: only once it has come down (a pop-up that drifts out beyond
+    // them in the air and falls back short of them is judged where it settles or is touched).
+    if (s.t < t.summary.hang_time_s) continue;
     if (std::hypot(s.position.x(), s.position.z()) > kBaseLine) return {fair_direction(s.position), s.t, s.position};
   }
   if (touched) return {fair_direction(touched->position), touched->t, touched->position};
@@ -337,12 +340,6 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
     play.called_time = call.t;
     play.called_at = call.at;
   }
-  if (!play.foul && shot.end == ShotEnd::OutOfBounds) {
-    // Fair, then over the fence or into the stands on a bounce: two bases (Rule 5.05(a)(6)).
-    play.outcome = BattedOutcome::Double;
-    play.description = std::string("Ground-rule double to ") + field_part(land);
-    return play;
-  }
   // In the air: the fielder with the most time to spare anywhere along its path below his
   // reach (at the wall, a leap) gets under it; a foul fly only while it is over foul ground.
   const bool near_wall = land.y() > 0.3;  // its first touch was the fence
@@ -426,6 +423,14 @@ FieldingPlay field_play(const ShotResult& shot, const AeroModel& aero, const Env
   if (play.foul) {
     play.outcome = BattedOutcome::Foul;
     play.description = describe(play, land);
+    return play;
+  }
+  // Fair, not caught, then over the fence or into the stands on a bounce with no fielder's
+  // hand on it first: two bases (Rule 5.05(a)(6)). One a fielder reaches on the ground over
+  // fair ground (what made it fair) he plays.
+  if (shot.end == ShotEnd::OutOfBounds && !(touch && call.t == touch->at.t)) {
+    play.outcome = BattedOutcome::Double;
+    play.description = std::string("Ground-rule double to ") + field_part(land);
     return play;
   }
   // On the ground: the fielder who first reaches the ball low enough to field it, or at rest.

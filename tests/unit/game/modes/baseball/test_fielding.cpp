@@ -265,6 +265,37 @@ TEST_CASE("as_played: a foul ground ball is dead where it is called, not after i
   }
 }
 
+TEST_CASE("a pop-up that drifts past the bases' distance in the air and lands short of them is judged where it settles",
+          "[baseball][fielding]") {
+  // Up to 29 m out over fair ground at its top, down at 23 m (31 deg, fair) short of the
+  // bases, then off into the stands down the third-base side: foul (Rule definitions: a ball
+  // short of the bases is fair or foul where it settles or is touched, not where it flew).
+  // It used to be called by where its flight crossed the bases' distance: a ground-rule double.
+  ShotResult shot;
+  shot.end = ShotEnd::OutOfBounds;
+  ShotTrajectory& t = shot.trajectory;
+  const Vec3 bat(0.0, 0.9, 0.0), top(28.0, 30.0, -8.0), land(20.0, 0.037, -12.0), gone(2.0, 0.037, -22.0);
+  const double apex = 3.0, hang = 5.8, end = 8.0;
+  for (double at = 0.0; at <= end + 1e-9; at += 0.02) {
+    TrajectorySample q;
+    q.t = at;
+    if (at < apex) q.position = bat + (top - bat) * (at / apex);
+    else if (at < hang) q.position = top + (land - top) * ((at - apex) / (hang - apex));
+    else q.position = land + (gone - land) * ((at - hang) / (end - hang));
+    q.phase = at < hang ? Phase::Flight : Phase::Roll;
+    t.samples.push_back(q);
+  }
+  t.summary.hang_time_s = hang;
+  t.summary.total_time_s = end;
+  t.summary.landing_position = land;
+  t.summary.rest_position = gone;
+  t.summary.carry_m = std::hypot(land.x(), land.z());
+  t.summary.total_m = std::hypot(gone.x(), gone.z());
+  CHECK_FALSE(is_fair_ball(shot));
+  const FieldingPlay p = field_play(shot, aero(), Environment{}, league_defense(), false, 8.23, nullptr);
+  CHECK(p.outcome != BattedOutcome::Double);
+}
+
 TEST_CASE("a ball past the catcher before he can react is a foul, never a foul out", "[baseball][fielding]") {
   // Straight back off the bat at 30 m/s, 1 m up: it passes the catcher's mitt (4 ft back)
   // 0.04 s after contact and reaches the backstop (15 m) at 0.5 s. A catcher's glove in a

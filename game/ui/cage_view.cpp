@@ -342,6 +342,25 @@ float draw_stats(const BattingCage& c, int w, int h, bool all_keys, bool pitch_b
   return bottom;
 }
 
+// What a restart loses of a live game: the game so far (its plate appearances), or the one
+// under way (a 2-0 count); nothing before its first pitch.
+std::string live_game_loses(int pa, const Count& k, bool swung) {
+  if (pa > 0) return "the live game so far (" + std::to_string(pa) + (pa == 1 ? " plate appearance)" : " plate appearances)");
+  if (k.balls > 0 || k.strikes > 0 || swung)
+    return "the live game's first plate appearance (" + std::to_string(k.balls) + "-" + std::to_string(k.strikes) + ")";
+  return {};
+}
+
+// And of batting practice: its swings, the pro's among them.
+std::string practice_loses(const std::vector<SwingRecord>& swings, const std::string& whose) {
+  const std::size_t n = swings.size();
+  if (n == 0) return {};
+  std::size_t pro = 0;
+  for (const SwingRecord& s : swings) pro += s.by_pro;
+  return whose + std::to_string(n) + (n == 1 ? " swing" : " swings") +
+         (pro > 0 ? " (" + std::to_string(pro) + " by the pro)" : std::string());
+}
+
 class CageView final : public ModeView {
  public:
   const ShotScene* clip_scene() const override { return scene_.get(); }
@@ -358,19 +377,14 @@ class CageView final : public ModeView {
   AmbienceSpec ambience() const override { return {Ambience::Ballpark, 0.0}; }
   const char* restart_label() const override { return "Restart session"; }
   std::string restart_loses() const override {
+    // A restart clears both records (the one on and the one A keeps for the way back).
     const BattingCage& c = *cage_;
-    const int pa = c.game_pa();
-    const Count& k = c.count();
-    // Live, the game so far: its plate appearances, or the one under way (a 2-0 count).
-    if (c.live() && pa > 0) return "the live game so far (" + std::to_string(pa) + (pa == 1 ? " plate appearance)" : " plate appearances)");
-    if (c.live() && (k.balls > 0 || k.strikes > 0 || !c.swings().empty()))
-      return "the live game's first plate appearance (" + std::to_string(k.balls) + "-" + std::to_string(k.strikes) + ")";
-    const std::size_t n = c.swings().size();
-    if (n == 0) return {};
-    std::size_t pro = 0;
-    for (const SwingRecord& s : c.swings()) pro += s.by_pro;
-    return "this session's " + std::to_string(n) + (n == 1 ? " swing" : " swings") +
-           (pro > 0 ? " (" + std::to_string(pro) + " by the pro)" : std::string());
+    const std::string on = c.live() ? live_game_loses(c.game_pa(), c.count(), !c.swings().empty())
+                                    : practice_loses(c.swings(), "this session's ");
+    const std::string kept = c.live() ? practice_loses(c.other_swings(), "batting practice's ")
+                                      : live_game_loses(c.other_game_pa(), Count{}, false);
+    if (on.empty() || kept.empty()) return on + kept;
+    return on + " and " + kept;
   }
   void send(const Intent& in) override { cage_->update({in}, in.time); }
   bool done() const override { return options_.exit_when_done && done_frames_ >= 30; }

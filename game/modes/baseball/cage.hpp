@@ -143,6 +143,8 @@ class BattingCage {
   const AtBats& at_bats() const { return told_ ? at_bats_ : at_bats_before_; }
   /// Live: the plate appearances of the game now on (at_bats() counts every game's).
   int game_pa() const { return at_bats().pa - game_first_pa_; }
+  /// In batting practice: the plate appearances of the live game kept for A's way back.
+  int other_game_pa() const { return kept_.at_bats.pa - kept_.game_first_pa; }
   /// The final lines of the live games finished and replaced by a new one this session.
   const std::vector<std::string>& finished_games() const { return finals_; }
   /// Live: the game's scoreboard (innings, outs, runners, runs) as told, the ball in the air

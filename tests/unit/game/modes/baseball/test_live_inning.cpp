@@ -241,3 +241,26 @@ TEST_CASE("live game in the cage: the final stays until P; B and Space say so", 
   CHECK(cage.at_bats().pa == game_pa);
   CHECK(cage.game_pa() == 0);
 }
+
+TEST_CASE("the live game A keeps for the way back is counted while practising (what a restart would also lose)",
+          "[modes][baseball]") {
+  BattingCage cage(test::assets(), 7);
+  cage.update({at(IntentKind::ToggleLive, 0.1)}, 0.1);
+  REQUIRE(cage.live());
+  double now = 1.0;
+  while (cage.game_pa() < 4 && now < 4000.0) {
+    cage.update({at(IntentKind::BotSwings, now)}, now);
+    for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
+                                                      cage.stage() == BattingCage::Stage::Batted);)
+      cage.update({}, now += 0.1);
+    now += 0.5;
+  }
+  const int pa = cage.game_pa();
+  REQUIRE(pa >= 4);
+  cage.update({at(IntentKind::ToggleLive, now)}, now);
+  REQUIRE_FALSE(cage.live());
+  CHECK(cage.other_game_pa() == pa);
+  cage.update({at(IntentKind::ToggleLive, now + 1.0)}, now + 1.0);
+  REQUIRE(cage.live());
+  CHECK(cage.game_pa() == pa);
+}

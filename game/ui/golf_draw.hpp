@@ -131,8 +131,9 @@ std::string why_from_here(double stock, bool measured, double here, double calm,
                           const char* ground = "lie and slope");
 /// The ground's share of a carry in a golfer's words: from a clean lie (tee, fairway, green)
 /// only the landing's height changes it, "uphill" (landing `rise` m above the ball) or
-/// "downhill"; from the rough or sand the lie and the slope together.
-const char* ground_share_words(const std::string& lie, double rise);
+/// "downhill"; from the rough or sand the lie and the slope together; a splash (`splash`: the
+/// club enters the sand first) by its name.
+const char* ground_share_words(const std::string& lie, double rise, bool splash = false);
 /// A putt's break or aim beside the cup: inches (centimetres) inside a yard (a metre), then
 /// the putt's units.
 std::string break_length(double m, const GolfUnits& units);

@@ -65,7 +65,9 @@ std::string why_from_here(double stock, bool measured, double here, double calm,
   return out;
 }
 
-const char* ground_share_words(const std::string& lie, double rise) {
+const char* ground_share_words(const std::string& lie, double rise, bool splash) {
+  // A splash's sand takes most of the carry: name it, not the slope.
+  if (splash) return "splash and slope";
   // Under a metre of rise a carry changes by less than kShareNoted: nothing to name it by.
   constexpr double kRiseNoted = 1.0;  // m
   const bool clean = lie == "tee" || lie == "fairway" || lie == "green";
@@ -318,7 +320,7 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     else {
       const double here = play.carry_here(club), stops = play.stops_here(club);
       const std::string why = why_from_here(carry, stock && stock->spread > 0.0, here, play.calm_carry_here(club), units,
-                                            ground_share_words(r.lie(), play.landing_rise_here(club)));
+                                            ground_share_words(r.lie(), play.landing_rise_here(club), r.sand_entry(club) > 0.0));
       // A run worth counting (the rough's flyer, a firm fairway), or one that takes a ball
       // landing short of the pin up toward it (a wedge that carries 65 yd of 76): where it
       // stops as well, the distance the caddie chose it by.

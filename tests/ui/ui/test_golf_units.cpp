@@ -92,6 +92,7 @@ TEST_CASE("the club line says why its carry from here is not the bag's: the wind
   CHECK(why_from_here(200.0, false, 210.0, 210.0, yards, ground_share_words("fairway", -4.0)) == ": downhill +11 yd");
   CHECK(std::string(ground_share_words("fairway", 0.3)) == "lie and slope");  // no rise to name
   CHECK(std::string(ground_share_words("rough", 5.0)) == "lie and slope");    // the lie's share too
+  CHECK(std::string(ground_share_words("sand", 0.0, true)) == "splash and slope");  // a splash by name
 }
 
 TEST_CASE("a part swing's carry and run read in one unit, the longer one's", "[ui][golf]") {

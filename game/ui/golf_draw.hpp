@@ -66,6 +66,10 @@ struct MeterBar {
 /// show what they would on this bar (last_click_marks).
 /// `top`: the power at the bar's right end (kHigh; less zooms the bar on a chip's few per
 /// cent, the accuracy's stretch scaled with it so it keeps its share of the bar).
+/// The box (x0, y0, x1, y1 px) the meter takes at the bottom of a `w` x `h` window: its
+/// caption above, the bar, its power figure to the right and its scale below. Labels on the
+/// course step aside from it.
+Eigen::Vector4f meter_area(int w, int h);
 MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const MeterClock& next, const std::optional<MeterClock>& last,
                         int w, int h, double now, double top = MeterBar::kHigh);
 /// Which of the last swing's click marks read true on the bar for `next`, a bar whose

@@ -578,6 +578,13 @@ ClickMarks last_click_marks(const MeterClock& last, const MeterClock& next, doub
   return m;
 }
 
+Eigen::Vector4f meter_area(int w, int h) {
+  // draw_meter_bar's geometry: the 560 px bar centred 80 px from the bottom, two caption
+  // lines above it, the power figure (~50 px) to its right, the scale under it.
+  const float x0 = 0.5f * (static_cast<float>(w) - MeterBar{}.bw), y0 = static_cast<float>(h) - 80.0f;
+  return {x0 - 6.0f, y0 - 60.0f, x0 + MeterBar{}.bw + 60.0f, static_cast<float>(h)};
+}
+
 MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const MeterClock& next, const std::optional<MeterClock>& last,
                         int w, int h, double now, double top) {
   const bool putting = next.putting();

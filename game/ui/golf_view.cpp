@@ -738,7 +738,10 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
       if (camera_ != 3) draw_other_balls(*play_, cam, w, h, {hud_box_});  // the map marks its own
     }
     if (addressing && camera_ == 3) {
-      draw_map_marks(*play_, units_, cam, w, h, r.hole().world->trees, view.label_boxes);
+      std::vector<Eigen::Vector4f> taken = view.label_boxes;
+      taken.push_back(meter_area(w, h));  // the meter and its caption stand over the map
+      taken.push_back(hud_box_);
+      draw_map_marks(*play_, units_, cam, w, h, r.hole().world->trees, taken);
     }
   }
   hud_box_ = draw_golf_hud(*play_, units_, camera_, settling, t, all_keys());

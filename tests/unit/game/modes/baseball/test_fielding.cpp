@@ -26,6 +26,16 @@ BattedOutcome outcome(double ev_mph, double la_deg, double spray_deg, double spi
   const ShotResult shot = run_shot(r, "test", {true, true});
   return field_ball(shot, *r.aero, r.spec.environment, who);
 }
+
+// A hand-made path's summary: lands at `land` after `hang` s, rests at `rest` after `end` s.
+void summarise(ShotTrajectory& t, double hang, double end, const Vec3& land, const Vec3& rest) {
+  t.summary.hang_time_s = hang;
+  t.summary.total_time_s = end;
+  t.summary.landing_position = land;
+  t.summary.rest_position = rest;
+  t.summary.carry_m = std::hypot(land.x(), land.z());
+  t.summary.total_m = std::hypot(rest.x(), rest.z());
+}
 }  // namespace
 
 TEST_CASE("a throw through the air takes longer than its distance at release speed", "[baseball][fielding]") {
@@ -175,12 +185,7 @@ TEST_CASE("a chopper a fielder reaches over fair ground is fair, though it would
     }
     t.samples.push_back(q);
   }
-  t.summary.hang_time_s = hang;
-  t.summary.total_time_s = end;
-  t.summary.landing_position = land;
-  t.summary.rest_position = rest;
-  t.summary.carry_m = std::hypot(land.x(), land.z());
-  t.summary.total_m = std::hypot(rest.x(), rest.z());
+  summarise(t, hang, end, land, rest);
   REQUIRE(rest.z() > rest.x());                         // it stops over foul ground
   REQUIRE(std::hypot(rest.x(), rest.z()) < 27.43);      // short of the bases
   const Defense defense = league_defense();
@@ -285,12 +290,7 @@ TEST_CASE("a pop-up that drifts past the bases' distance in the air and lands sh
     q.phase = at < hang ? Phase::Flight : Phase::Roll;
     t.samples.push_back(q);
   }
-  t.summary.hang_time_s = hang;
-  t.summary.total_time_s = end;
-  t.summary.landing_position = land;
-  t.summary.rest_position = gone;
-  t.summary.carry_m = std::hypot(land.x(), land.z());
-  t.summary.total_m = std::hypot(gone.x(), gone.z());
+  summarise(t, hang, end, land, gone);
   CHECK_FALSE(is_fair_ball(shot));
   const FieldingPlay p = field_play(shot, aero(), Environment{}, league_defense(), false, 8.23, nullptr);
   CHECK(p.outcome != BattedOutcome::Double);

@@ -153,6 +153,8 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
 /// The hole's wind as an arrow turned as the view is: `screen_up` is the heading (rad, as a
 /// hole's line) of the ground direction that points up the screen (screen_up_heading).
 void draw_wind(const GolfPlay& play, const GolfUnits& units, int w, double screen_up);
+/// The box (x0, y0, x1, y1 px) the wind dial and its label take in a window `w` wide.
+Eigen::Vector4f wind_area(int w);
 /// The heading of the ground direction up `cam`'s image: its forward along the ground for a
 /// view along it, its up for a view from above (both lie in the same vertical plane).
 double screen_up_heading(const Camera& cam);

@@ -2,6 +2,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -250,6 +251,11 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
   constexpr float kShortWindow = 600.0f;
   const bool short_window = ImGui::GetIO().DisplaySize.y < kShortWindow;
   ImGui::SetNextWindowSize(ImVec2(std::min(putting_view ? 345.0f : 420.0f, most), 0), ImGuiCond_Always);
+  // Never down over the meter's caption: what does not fit scrolls (the hole, the lie and the
+  // club stay at the top; a group's standings and the last stroke's lines go under).
+  const ImVec2 screen = ImGui::GetIO().DisplaySize;
+  const float room = meter_area(static_cast<int>(screen.x), static_cast<int>(screen.y))[1] - 10.0f - 6.0f;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(FLT_MAX, std::max(160.0f, room)));
   ImGui::Begin("Play", nullptr, kFixed);
   const GolfPlay::Stage stage = play.stage();
   const bool in_air = stage == GolfPlay::Stage::Flying;
@@ -886,6 +892,13 @@ void draw_launch_panel(const ShotResult& r, const GolfUnits& units, int w, doubl
 double screen_up_heading(const Camera& cam) {
   const Vec3 up = cam.forward() + cam.true_up();
   return std::atan2(up.z(), up.x());
+}
+
+Eigen::Vector4f wind_area(int w) {
+  // draw_wind's geometry: a 34 px dial centred 60 px from the right edge at 230 px, its
+  // label under it.
+  const float cx = static_cast<float>(w) - 60.0f;
+  return {cx - 40.0f, 230.0f - 40.0f, static_cast<float>(w), 230.0f + 56.0f};
 }
 
 void draw_wind(const GolfPlay& play, const GolfUnits& units, int w, double screen_up) {

@@ -735,12 +735,13 @@ void GolfView::frame(const ViewInput& in, Renderer& renderer) {
     if (addressing) {
       draw_aim(*play_, cam, w, h);
       draw_putt_read(*play_, cam, w, h);  // over the aim line it starts along
-      if (camera_ != 3) draw_other_balls(*play_, cam, w, h, {hud_box_});  // the map marks its own
+      if (camera_ != 3) draw_other_balls(*play_, cam, w, h, {hud_box_, wind_area(w)});  // the map marks its own
     }
     if (addressing && camera_ == 3) {
       std::vector<Eigen::Vector4f> taken = view.label_boxes;
       taken.push_back(meter_area(w, h));  // the meter and its caption stand over the map
       taken.push_back(hud_box_);
+      taken.push_back(wind_area(w));
       draw_map_marks(*play_, units_, cam, w, h, r.hole().world->trees, taken);
     }
   }

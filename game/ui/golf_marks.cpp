@@ -312,9 +312,10 @@ void draw_map_marks(const GolfPlay& play, const GolfUnits& units, const Camera& 
     ground_polyline(dl, cam, ring, w, h, IM_COL32(255, 230, 90, 220), 2.0f);
     if (const auto lp = cam.project(on_ground(carry, 0.0), w, h)) {
       // A putt's ring in the putt's units, as the panel says its distance ("putter 18 ft"); a
-      // part swing's in the unit the panel gives its carry and stop together ("carries 17 yd,
-      // stops 35 yd", not "52 ft" here); a full swing's as the launch monitor will say it.
-      const double longest = part < 1.0 ? std::max(carry, play.stops_here(club, part)) : carry;
+      // part swing's in the unit the panel gives its carry and stop in, "To the pin"'s
+      // ("carries 12 yd" from 25 yd, not "37 ft" here); a full swing's as the launch monitor
+      // will say it.
+      const double longest = part < 1.0 ? play.round().to_pin() : carry;
       const std::string text =
           club + " " + (club == "putter" ? units.putt(carry) : units.course(carry, longest)) + (part < 1.0 ? ", part swing" : "");
       dl->AddText(place(ImVec2(px(*lp).x + 6, px(*lp).y - 18), text, px(*lp)), IM_COL32(255, 230, 90, 255), text.c_str());

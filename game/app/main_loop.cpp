@@ -87,6 +87,13 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
     MenuChoice choice = MenuChoice::None;
     ViewInput vi;
     bool snapshot = false;
+    // Takes back a swing under way (Esc; Tab on the way out): no stroke counted.
+    const auto cancel_at = [&](double key_time) {
+      Intent cancel;
+      cancel.kind = IntentKind::Cancel;
+      cancel.time = key_time - slot.offset;
+      view.send(cancel);
+    };
     for (std::size_t i = 0; i < keys.size(); ++i) {
       const KeyPress& k = keys[i];
       if (k.key == GLFW_KEY_F12) {  // a screenshot, in any mode, paused or not
@@ -114,12 +121,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
       if (k.key == GLFW_KEY_TAB) {
         // A swing under way is taken back first (no stroke counted), as Esc takes it back: the
         // mode left behind does not play it out with the clicks it never got.
-        if (view.busy()) {
-          Intent cancel;
-          cancel.kind = IntentKind::Cancel;
-          cancel.time = k.time - slot.offset;
-          view.send(cancel);
-        }
+        if (view.busy()) cancel_at(k.time);
         choice = MenuChoice::NextMode;
         carried.assign(keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, keys.end());
         break;
@@ -128,10 +130,7 @@ LoopStats run_main_loop(GameWindow& win, Renderer& renderer, const ModeRegistry&
         // Esc takes back a swing under way (no stroke counted) and play goes on; with none,
         // it pauses. (Both at one press opened the menu over a cancelled swing.)
         const bool busy = view.busy();
-        Intent cancel;
-        cancel.kind = IntentKind::Cancel;
-        cancel.time = k.time - slot.offset;
-        view.send(cancel);
+        cancel_at(k.time);
         if (busy) continue;
         paused = true;
         paused_at = k.time;

@@ -584,10 +584,13 @@ ClickMarks last_click_marks(const MeterClock& last, const MeterClock& next, doub
   return m;
 }
 
+// px from the window's bottom to the meter bar's top (draw_meter_bar, meter_area).
+constexpr float kMeterFromBottom = 80.0f;
+
 Eigen::Vector4f meter_area(int w, int h) {
-  // draw_meter_bar's geometry: the 560 px bar centred 80 px from the bottom, two caption
-  // lines above it, the power figure (~50 px) to its right, the scale under it.
-  const float x0 = 0.5f * (static_cast<float>(w) - MeterBar{}.bw), y0 = static_cast<float>(h) - 80.0f;
+  // draw_meter_bar's geometry: the bar centred kMeterFromBottom up, two caption lines above
+  // it, the power figure (~50 px) to its right, the scale under it.
+  const float x0 = 0.5f * (static_cast<float>(w) - MeterBar{}.bw), y0 = static_cast<float>(h) - kMeterFromBottom;
   return {x0 - 6.0f, y0 - 60.0f, x0 + MeterBar{}.bw + 60.0f, static_cast<float>(h)};
 }
 
@@ -598,7 +601,7 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const MeterClock
   bar.high = top;
   bar.low = MeterBar::kLow * top / MeterBar::kHigh;
   bar.x0 = 0.5f * (static_cast<float>(w) - bar.bw);
-  bar.y0 = static_cast<float>(h) - 80.0f;
+  bar.y0 = static_cast<float>(h) - kMeterFromBottom;
   const float x0 = bar.x0, y0 = bar.y0, bw = bar.bw, bh = bar.bh;
   const auto at = [&](double f) { return bar.at(f); };
   ImDrawList* dl = ImGui::GetForegroundDrawList();
@@ -894,11 +897,13 @@ double screen_up_heading(const Camera& cam) {
   return std::atan2(up.z(), up.x());
 }
 
+// The wind dial's centre: 60 px in from the right edge, 230 px down (draw_wind, wind_area).
+ImVec2 wind_dial_centre(int w) { return ImVec2(static_cast<float>(w) - 60.0f, 230.0f); }
+
 Eigen::Vector4f wind_area(int w) {
-  // draw_wind's geometry: a 34 px dial centred 60 px from the right edge at 230 px, its
-  // label under it.
-  const float cx = static_cast<float>(w) - 60.0f;
-  return {cx - 40.0f, 230.0f - 40.0f, static_cast<float>(w), 230.0f + 56.0f};
+  // draw_wind's geometry: a 34 px dial, its label under it.
+  const ImVec2 c = wind_dial_centre(w);
+  return {c.x - 40.0f, c.y - 40.0f, static_cast<float>(w), c.y + 56.0f};
 }
 
 void draw_wind(const GolfPlay& play, const GolfUnits& units, int w, double screen_up) {
@@ -907,7 +912,7 @@ void draw_wind(const GolfPlay& play, const GolfUnits& units, int w, double scree
   // The hole the header names: while a finished hole's card shows, its wind, not the next's.
   const HoleWind wind = g.winds()[play.hole_shown()];
   ImDrawList* dl = ImGui::GetForegroundDrawList();
-  const ImVec2 c(static_cast<float>(w) - 60.0f, 230.0f);
+  const ImVec2 c = wind_dial_centre(w);
   dl->AddCircleFilled(c, 34.0f, IM_COL32(20, 24, 30, 200));
   char label[48];
   if (wind.speed < 0.5) {
@@ -928,7 +933,7 @@ void draw_wind(const GolfPlay& play, const GolfUnits& units, int w, double scree
   dl->AddText(ImVec2(c.x - 30, c.y + 38), IM_COL32(255, 255, 255, 255), label);
 }
 
-bool golf_card_covers_wind(int w) { return 0.5f * static_cast<float>(w) + 300.0f > static_cast<float>(w) - 96.0f; }
+bool golf_card_covers_wind(int w) { return 0.5f * static_cast<float>(w) + 300.0f > wind_area(w)[0]; }
 
 void draw_golf_card(const GolfPlay& play, int w, bool final) {
   const GolfGroup& g = play.group();

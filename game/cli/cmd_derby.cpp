@@ -84,16 +84,24 @@ int run_game(const Assets& assets, const DerbyOptions& o, const std::string& ses
   return 0;
 }
 
+/// A count flag refused in int_range's words ("1e20 is not a whole number", "2000000 is out
+/// of range") against the model's own range, before any of the modes' checks.
+CLI::Validator whole_in(const Range& r) { return int_range<int>(static_cast<int>(r.min), static_cast<int>(r.max)); }
+
 RunFn setup_derby(CLI::App& sub) {
   auto o = std::make_shared<DerbyOptions>();
   sub.add_option("--bot", o->bot, "batter skill: pro or amateur (default pro)")
       ->check(checked_by([](const std::string& t) { batter_skill(t); }, "SKILL"));
   sub.add_option("--seed", o->seed, "seed of the pitcher's and the batter's errors, 0..18446744073709551615 (default 1)")->check(kSeedText);
-  auto* outs = sub.add_option("--outs", o->session.outs, "derby: outs before it ends, 1..50 (default 10)");
+  auto* outs = sub.add_option("--outs", o->session.outs, "derby: outs before it ends, 1..50 (default 10)")
+                   ->check(whole_in(SessionOptions::kOuts));
   sub.add_option("--mode", o->session.mode, "derby (default), at-bat, practice or game (two bot lineups against bot pitchers)");
-  auto* innings = sub.add_option("--innings", o->innings, "game: innings scheduled, 1..50 (default 9)");
-  auto* games = sub.add_option("--games", o->games, "game: games in a row (seeds S, S+1, ...) with their league rates, 1..1000 (default 1)");
-  auto* swings = sub.add_option("--swings", o->session.swings, "practice: pitches, 1..500 (default 20)");
+  auto* innings = sub.add_option("--innings", o->innings, "game: innings scheduled, 1..50 (default 9)")
+                      ->check(whole_in(GameOptions::kInnings));
+  auto* games = sub.add_option("--games", o->games, "game: games in a row (seeds S, S+1, ...) with their league rates, 1..1000 (default 1)")
+                    ->check(whole_in(DerbyOptions::kGames));
+  auto* swings = sub.add_option("--swings", o->session.swings, "practice: pitches, 1..500 (default 20)")
+                     ->check(whole_in(SessionOptions::kSwings));
   sub.add_flag("--left", o->session.left_handed, "a left-handed batter");
   sub.add_flag("--json", o->json, "print the DESIGN §9 JSON");
   sub.add_option("--plot", o->plot, "write the session's spray chart (PNG)");

@@ -56,6 +56,13 @@ bool stdout_failed() {
 /// this says what the flag takes, from its help text (which gives the range).
 std::string conversion_help(const CLI::App* top, const CLI::Error& e) {
   const std::string what = e.what();
+  // CLI11 says "--seed: At Most 1 required but received 2" for an option given twice.
+  if (e.get_name() == "ArgumentMismatch") {
+    constexpr std::string_view kTwice = ": At Most 1 required but received ";
+    const auto colon = what.find(kTwice);
+    if (colon != std::string::npos)
+      return what.substr(0, colon) + ": given " + what.substr(colon + kTwice.size()) + " times; it takes one value, so give it once";
+  }
   if (e.get_name() != "ConversionError") return what;
   const auto colon = what.find(": "), eq = what.find(" = ");
   if (colon == std::string::npos || eq == std::string::npos || eq < colon) return what;

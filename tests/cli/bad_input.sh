@@ -83,7 +83,12 @@ expect_bad "fit stray comma" "stray comma" -- fit golf/driver --target ball_spee
 expect_bad "round --balls in stroke play" "--balls|ctp or long-drive" -- round --balls 5
 expect_bad "derby --swings" "--swings|practice" -- derby --swings 5
 expect_bad "practice --outs" "--outs|only the derby" -- derby --mode practice --outs 5
-expect_bad "derby --outs range" "--outs = 0|[1, 50]" -- derby --outs 0
+expect_bad "derby --outs range" "--outs: 0 is out of range|[1, 50]" -- derby --outs 0
+# A count refused in one wording, whether it is out of range or no whole number at all.
+expect_bad "game --games range" "--games: 2000000 is out of range|[1, 1000]" -- derby --mode game --games 2000000
+expect_bad "game --games not whole" "--games: '1e20' is not a whole number|[1, 1000]" -- derby --mode game --games 1e20
+# An option given twice is named, with how often, not CLI11's "At Most 1 required".
+expect_bad "derby --seed twice" "--seed: given 2 times|give it once" -- derby --seed 1 --seed 2
 expect_bad "game --swings" "--swings: a game counts innings" -- derby --mode game --swings 5
 expect_bad "render partial launch" "--launch-angle is required" -- render --ball-speed 100mph -o "$tmp/x.png"
 [ ! -e "$tmp/x.png" ] || fail "render wrote a PNG for a partial launch"

@@ -27,19 +27,22 @@ bool Team::to_the_bullpen(const MoundVisit& v, std::uint64_t seed) {
   if (pitchers_used >= kMaxPitchers) return false;
   const int thrown = pitcher.pitches_thrown();
   const bool starter = pitchers_used == 1;
+  const bool long_man = pitchers_used == 2 && entered_inning <= kLongReliefBy;
+  const int outs_limit = long_man ? kLongReliefOuts : 3, pitch_limit = long_man ? kLongReliefPitches : kRelieverPitches;
   bool done = v.runs_this_inning >= kBlowUpRuns;
   if (v.inning_start)
     done = done || (starter ? thrown >= kStarterPitches || (v.inning > kStarterInnings && thrown >= kStarterCruising)
-                            : thrown > 0 && (v.outs_recorded >= 3 || thrown >= kRelieverPitches));
+                            : thrown > 0 && (v.outs_recorded >= outs_limit || thrown >= pitch_limit));
   else if (starter)
     done = done || thrown >= kStarterLimit || (thrown >= kStarterPitches - 15 && v.runners >= 2);
   else
-    done = done || (thrown >= kRelieverPitches && v.runners >= 1) || thrown >= kRelieverPitches + 10;
+    done = done || (thrown >= pitch_limit && v.runners >= 1) || thrown >= pitch_limit + 10;
   if (!done) return false;
   const bool left = draws_left_handed(seed ^ 0x1EF7A4D5C0FFEE11ULL, kLeftRelieverShare);
   pitcher = Pitcher(league_average_pitcher(types_, left), seed);
   report = left ? left_report_ : right_report_;
   ++pitchers_used;
+  entered_inning = v.inning;
   return true;
 }
 

@@ -452,6 +452,7 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
   int six_plus = 0, seven_plus = 0;
   int starts = 0, starter_outs = 0, starter_pitches = 0, pitchers = 0, relieved_mid_inning = 0, inherited = 0, scored = 0;
   int left_starters = 0, relievers = 0, left_relievers = 0;
+  int knockouts = 0, knockout_staff = 0, long_outings = 0;
   for (const GameRecord& g : league_games()) {
     CHECK(box_score_mismatch(g.away, g.home) == "");
     CHECK(box_score_mismatch(g.home, g.away) == "");
@@ -468,7 +469,9 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
       for (std::size_t i = 1; i < t->pitchers.size(); ++i) {
         ++relievers;
         left_relievers += t->pitchers[i].left_handed;
+        long_outings += t->pitchers[i].outs >= 7;
       }
+      if (t->pitchers[0].outs < 12) ++knockouts, knockout_staff += static_cast<int>(t->pitchers.size());
       int runs = 0;
       for (const PitchingLine& p : t->pitchers) {
         CHECK(p.pitches <= 125);
@@ -497,6 +500,16 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
   CHECK(staff > 3.8);
   CHECK(staff < 5.0);
   CHECK(relieved_mid_inning >= starts / 5);
+  // A starter knocked out inside four innings is followed by a long man (Team::to_the_bullpen),
+  // not by a reliever an inning until the 9th: the relief outings past two innings are that
+  // rare few (MLB 2016: the average relief outing 1.04 innings), and such a game's staff stays
+  // near an ordinary one's (6.8 pitchers when each reliever went an inning).
+  INFO(knockouts << " starters out inside four innings, " << knockout_staff << " pitchers in those games; "
+                 << long_outings << " of " << relievers << " relief outings of 7 outs or more");
+  REQUIRE(knockouts >= 10);
+  CHECK(double(knockout_staff) / knockouts < 6.0);
+  CHECK(long_outings >= knockouts / 3);
+  CHECK(long_outings < relievers / 15);
   INFO(six_plus << " starts of 6+ innings, " << seven_plus << " of 7+ in " << starts);
   CHECK(six_plus > starts * 30 / 100);
   CHECK(six_plus < starts * 55 / 100);

@@ -628,8 +628,10 @@ void GolfPlay::strike(const StrokeInput& s, bool bot, double t) {
     const std::string timing = !at_the_limit ? timing_words(late)
                                : late < 0.0  ? "accuracy click too early, played as the earliest swing (" + timing_words(late) + ")"
                                              : "no accuracy click in time, played as the latest swing (" + timing_words(late) + ")";
-    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f\u00a0%%, %s%s", who.name.c_str(), stroke_no, club_name(s.club).c_str(),
-                  100.0 * last_meter_->power, timing.c_str(), rest.c_str());
+    // From a bunker a splash says how it met the sand: the timing moved where it entered.
+    const std::string sand = splash_words(assets_.equipment().club(s.club), rec.lie, last_.club.sand_entry);
+    std::snprintf(msg, sizeof msg, "%s, stroke %d: %s, power %.0f\u00a0%%, %s%s%s", who.name.c_str(), stroke_no, club_name(s.club).c_str(),
+                  100.0 * last_meter_->power, timing.c_str(), sand.empty() ? "" : (", " + sand).c_str(), rest.c_str());
   } else {
     std::snprintf(msg, sizeof msg, "%s, stroke %d: %s%s%s", who.name.c_str(), stroke_no, club_name(s.club).c_str(),
                   who.human ? " (the caddie's swing)" : "", rest.c_str());

@@ -1,10 +1,12 @@
 #include "game/modes/golf/golfer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "game/modes/golf/swing_meter.hpp"
 #include "physics/error.hpp"
+#include "physics/sand_splash.hpp"
 #include "physics/units.hpp"
 
 namespace sweetspot {
@@ -51,9 +53,17 @@ GolfSwing golfer_swing(const GolferSkill& g, const MeterInput& m, const Equipmen
   return s;
 }
 
-double sand_entry_for(const ClubSpec& club, const std::string& lie) {
+double sand_entry_for(const ClubSpec& club, const std::string& lie, double timing_ms) {
   constexpr double kSplashLoft = deg_to_rad(54.0);  // the SW's 56° and the LW's 60°, not the PW's 46°
-  return lie == "sand" && club.loft >= kSplashLoft ? kSplashEntry : 0.0;
+  if (lie != "sand" || club.loft < kSplashLoft) return 0.0;
+  return std::clamp(kSplashEntry - kLowPointPerMs * timing_ms, kSandEntry.min, kSandEntry.max);
+}
+
+std::string splash_words(const ClubSpec& club, const std::string& lie, double entry) {
+  if (sand_entry_for(club, lie) <= 0.0) return "";
+  if (entry <= 0.0) return "bladed, no sand before the ball";
+  if (entry >= 2.0 * kSplashEntry) return "heavy, deep in the sand behind it";
+  return "";
 }
 
 double full_swing_speed(const GolferSkill& g, const ClubInfo& club) {

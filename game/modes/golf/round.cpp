@@ -5,6 +5,7 @@
 
 #include "physics/error.hpp"
 #include "game/rules/run_shot.hpp"
+#include "game/modes/golf/swing_meter.hpp"
 
 namespace sweetspot {
 
@@ -114,7 +115,7 @@ ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
   ClubStrike c;
   c.club = in.club;
   c.swing = golfer_swing(golfer_, in.meter, eq, in.club);
-  c.swing.sand_entry = sand_entry(in.club);
+  c.swing.sand_entry = sand_entry_for(eq.club(in.club), lie(), timing_error_ms(in.meter, eq.club(in.club)));
   s.strike = c;
   // The ball is kept in world coordinates; a placement is measured from the world's origin.
   const Vec3& origin = hole().world->description().origin;

@@ -24,6 +24,11 @@ inline constexpr double kPathPerMs = -0.00069813170; // rad (−0.04°)
 inline constexpr double kHeelPerMs = 0.00015;        // m toward the heel per late ms
 inline constexpr double kDriverLength = 1.1557;      // m (45.5 in): the error's reference club
 
+/// The accuracy click's timing error as the driver would feel it (ms, + late): the click's
+/// error scaled by `club`'s length over the driver's and magnified by an over-swing, the
+/// error every mapping above reads.
+double timing_error_ms(const MeterInput& m, const ClubSpec& club);
+
 /// The swing a meter result delivers with `club` (its ClubSpec and ClubInfo) for a golfer
 /// whose full swing with it is `full_speed` m/s. A putter takes the power only.
 GolfSwing meter_swing(const MeterInput& m, const ClubSpec& club, const ClubInfo& info, double full_speed);

@@ -8,6 +8,7 @@
 #include "game/content/bag_file.hpp"
 #include "game/modes/golf/range_play.hpp"
 #include "game/modes/golf/range_session.hpp"
+#include "game/modes/golf/swing_meter.hpp"
 #include "game/modes/replay.hpp"
 #include "physics/error.hpp"
 #include "support/intent_at.hpp"
@@ -182,4 +183,27 @@ TEST_CASE("from a bunker the sand and lob wedges splash an inch behind the ball,
   CHECK(sand_entry_for(eq.club("lw"), "sand") == kSplashEntry);
   for (const char* club : {"pw", "9-iron", "5-iron", "hybrid", "3-wood"}) CHECK(sand_entry_for(eq.club(club), "sand") == 0.0);
   for (const char* lie : {"fairway", "rough", "tee", "green"}) CHECK(sand_entry_for(eq.club("sw"), lie) == 0.0);
+}
+
+TEST_CASE("a splash timed early enters the sand farther behind the ball, one timed late meets the ball first",
+          "[golfer][sand]") {
+  const EquipmentCatalog& eq = test::assets().equipment();
+  const ClubSpec& sw = eq.club("sw");
+  MeterInput m;
+  m.accuracy_ms = -10.0;
+  const double early = sand_entry_for(sw, "sand", timing_error_ms(m, sw));
+  m.accuracy_ms = 10.0;
+  const double late = sand_entry_for(sw, "sand", timing_error_ms(m, sw));
+  // The sand wedge's 10 ms moves the arc's bottom ~8 mm (kLowPointPerMs by its length).
+  CHECK(early - kSplashEntry == Approx(kSplashEntry - late));
+  CHECK(early - kSplashEntry == Approx(10.0 * kLowPointPerMs * sw.length / kDriverLength));
+  CHECK(early - kSplashEntry > 0.007);
+  // 40 ms late bottoms out ahead of the ball: no sand before it, a clean (bladed) strike.
+  m.accuracy_ms = 40.0;
+  CHECK(sand_entry_for(sw, "sand", timing_error_ms(m, sw)) == 0.0);
+  // Far too early still meets the ball within the splash's range; a pick stays a pick.
+  m.accuracy_ms = -200.0;
+  CHECK(sand_entry_for(sw, "sand", timing_error_ms(m, sw)) == kSandEntry.max);
+  CHECK(sand_entry_for(eq.club("7-iron"), "sand", timing_error_ms(m, eq.club("7-iron"))) == 0.0);
+  CHECK(sand_entry_for(sw, "rough", timing_error_ms(m, sw)) == 0.0);
 }

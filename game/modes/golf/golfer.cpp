@@ -61,7 +61,7 @@ double sand_entry_for(const ClubSpec& club, const std::string& lie, double timin
 
 std::string splash_words(const ClubSpec& club, const std::string& lie, double entry) {
   if (sand_entry_for(club, lie) <= 0.0) return "";
-  if (entry <= 0.0) return "bladed, no sand before the ball";
+  if (entry <= 0.0) return "caught clean, no sand before the ball";
   if (entry >= 2.0 * kSplashEntry) return "heavy, deep in the sand behind it";
   return "";
 }

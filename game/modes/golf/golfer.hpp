@@ -105,8 +105,8 @@ double added_loft(const GolferSkill& g, const EquipmentCatalog& eq);
 /// greenside bunker rates (MyGolfSpy, "Shot Scope case study: greenside bunker play"): a
 /// 2-handicap misses the green from the sand 10 % of the time and leaves it in 1 %, a
 /// 26-handicap 50 % and 21 %. At 1 mm the sand wedge (35.25 in) moves its arc 0.78 mm per ms:
-/// the tour bot's 12 ms spread enters within ±9 mm of the taught inch and blades 0.1 % of its
-/// splashes; the beginner's 55 ms ±43 mm, a quarter of them met ball first (clean, and long).
+/// the tour bot's 12 ms spread enters within ±9 mm of the taught inch and catches 0.3 % of its
+/// splashes clean; the beginner's 55 ms ±43 mm, a quarter of them met ball first (clean, and long).
 /// Over 120 National rounds each the bots' greenside bunker shots finish off the green 16 %
 /// (tour), 17 % (scratch), 32 % (amateur) and 39 % (beginner) of the time; at 1.3 mm 40 % for
 /// the amateur, and without it 22 % and 18 % (the beginner better than the amateur). Few stay
@@ -122,8 +122,10 @@ inline constexpr double kLowPointPerMs = 0.0010;
 double sand_entry_for(const ClubSpec& club, const std::string& lie, double timing_ms = 0.0);
 
 /// How a splash met the sand, in a golfer's words, from where the club entered it (`entry`,
-/// sand_entry_for with the swing's timing): "bladed, no sand before the ball" where the arc
-/// bottomed out at or past the ball, "heavy, deep in the sand behind it" from twice the taught
+/// sand_entry_for with the swing's timing): "caught clean, no sand before the ball" where the
+/// arc bottomed out at or past the ball (the face meets the ball as from a tight lie: long and
+/// spinning, not the skull of a leading edge, which an arc too high would give and this does
+/// not model), "heavy, deep in the sand behind it" from twice the taught
 /// inch, else empty. Empty for a pick and off sand: nothing was meant to meet the sand.
 std::string splash_words(const ClubSpec& club, const std::string& lie, double entry);
 

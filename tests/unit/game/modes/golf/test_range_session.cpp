@@ -198,7 +198,7 @@ TEST_CASE("a splash timed early enters the sand farther behind the ball, one tim
   CHECK(early - kSplashEntry == Approx(kSplashEntry - late));
   CHECK(early - kSplashEntry == Approx(10.0 * kLowPointPerMs * sw.length / kDriverLength));
   CHECK(early - kSplashEntry > 0.007);
-  // 40 ms late bottoms out ahead of the ball: no sand before it, a clean (bladed) strike.
+  // 40 ms late bottoms out ahead of the ball: no sand before it, a clean strike.
   m.accuracy_ms = 40.0;
   CHECK(sand_entry_for(sw, "sand", timing_error_ms(m, sw)) == 0.0);
   // Far too early still meets the ball within the splash's range; a pick stays a pick.

@@ -50,8 +50,13 @@ ShotResult launch_shot(const ResolvedShot& s, const std::string& name) {
         const ClubSpec& k = *s.club;
         through.club_speed = club_speed_after_sand(through.club_speed, k.head_mass + k.shaft_tip_mass,
                                                    2.0 * k.face_half_width, c->swing.sand_entry);
-        face.e = s.lie_restitution;
-        face.mu *= s.lie_friction;
+        // The sand's share: its cushion against how far the ball flattens on the face at the
+        // strike's normal approach (the head's speed across the face's loft).
+        const double approach = through.club_speed * std::cos(face_centre_loft(c->swing, k));
+        const double share = cushion_share(sand_cushion(c->swing.sand_entry, s.ball.radius),
+                                           hertz_flattening(s.ball.mass, s.ball.compliance.stiffness, approach));
+        face.e = mix_restitution(face.e, s.lie_restitution, share);
+        face.mu *= 1.0 - share + share * s.lie_friction;
       } else if (!sand) {
         face.mu *= s.lie_friction;
         through.club_speed *= 1.0 - s.lie_speed_loss;

@@ -108,8 +108,8 @@ double added_loft(const GolferSkill& g, const EquipmentCatalog& eq);
 /// the tour bot's 12 ms spread enters within ±9 mm of the taught inch and catches 0.3 % of its
 /// splashes clean; the beginner's 55 ms ±43 mm, a quarter of them met ball first (clean, and long).
 /// Over 120 National rounds each the bots' greenside bunker shots finish off the green 16 %
-/// (tour), 17 % (scratch), 32 % (amateur) and 39 % (beginner) of the time; at 1.3 mm 40 % for
-/// the amateur, and without it 22 % and 18 % (the beginner better than the amateur). Few stay
+/// (tour), 18 % (scratch), 38 % (amateur) and 46 % (beginner) of the time; without it 22 % and
+/// 18 % for the amateur and the beginner (the beginner better than the amateur). Few stay
 /// in: the worlds' bunkers are 0.35 m deep with a 0.6 face, no lip that a fat splash fails.
 inline constexpr double kLowPointPerMs = 0.0010;
 

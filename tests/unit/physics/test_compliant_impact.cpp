@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "physics/compliant_impact.hpp"
+#include "physics/sand_splash.hpp"
 #include "physics/impact.hpp"
 #include "physics/units.hpp"
 #include "support/body_balance.hpp"
@@ -65,6 +66,16 @@ TEST_CASE("a head-on impact returns the restitution it was set for", "[compliant
       CHECK(r.ball_after.velocity.x() / v == Approx(e).margin(1e-3));
       CHECK(r.ball_after.angular_velocity.norm() < 1e-9);
     }
+  }
+}
+
+TEST_CASE("a nearly elastic contact flattens the ball as far as Hertz's energy balance says", "[compliant]") {
+  // hertz_flattening (physics/sand_splash.hpp), which the splash's cushion is weighed against:
+  // ½ m v² = (2/5) k δ^{5/2} at the peak of an undamped contact on a heavy plate.
+  for (double v : {4.0, 8.0, 20.0, 45.0}) {
+    const CompliantImpactResult r = solve_compliant_impact(plate_case(v, 0.0, 0.999, 0.0));
+    INFO(v << " m/s: " << r.max_compression << " m");
+    CHECK(r.max_compression == Approx(hertz_flattening(0.04593, 2.36e7, v)).epsilon(0.01));
   }
 }
 

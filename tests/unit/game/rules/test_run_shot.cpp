@@ -173,6 +173,20 @@ TEST_CASE("from sand a ball struck first plays as from the fairway, and a splash
   CHECK(splash.launch.vertical_angle > pick.launch.vertical_angle);
   CHECK(splash.trajectory.summary.carry_m < 0.5 * pick.trajectory.summary.carry_m);
 
+  // Between the pick and the inch nothing jumps: a few millimetres of sand are pressed through
+  // (the cushion thinner than the ball flattens), and the carry falls step by step from the
+  // pick's to the splash's. Each quarter millimetre moves it less than a tenth of the way.
+  double last = pick.trajectory.summary.carry_m;
+  const double span = last - splash.trajectory.summary.carry_m;
+  for (double x = 2.5e-4; x <= 0.008; x += 2.5e-4) {
+    c.swing.sand_entry = x;
+    const double carry = run_shot(resolve(spec, A), "thin layer", {true, false}).trajectory.summary.carry_m;
+    INFO(x * 1e3 << " mm of sand: " << carry << " m (the step before " << last << " m)");
+    CHECK(carry < last);
+    CHECK(last - carry < 0.1 * span);
+    last = carry;
+  }
+
   // Sand before the ball is sand: from the fairway there is none to enter.
   spec.placement.z = 0.0;
   CHECK_THROWS_WITH(run_shot(resolve(spec, A), "fat", {true, false}),

@@ -55,12 +55,14 @@ GolfSwing golfer_swing(const GolferSkill& g, const MeterInput& m, const Equipmen
 
 double sand_entry_for(const ClubSpec& club, const std::string& lie, double timing_ms) {
   constexpr double kSplashLoft = deg_to_rad(54.0);  // the SW's 56° and the LW's 60°, not the PW's 46°
-  if (lie != "sand" || club.loft < kSplashLoft) return 0.0;
-  return std::clamp(kSplashEntry - kLowPointPerMs * timing_ms, kSandEntry.min, kSandEntry.max);
+  if (lie != "sand") return 0.0;
+  const double meant = club.loft >= kSplashLoft ? kSplashEntry : -kPickBeyond;  // + behind the ball
+  return std::clamp(meant - kLowPointPerMs * timing_ms, kSandEntry.min, kSandEntry.max);
 }
 
 std::string splash_words(const ClubSpec& club, const std::string& lie, double entry) {
-  if (sand_entry_for(club, lie) <= 0.0) return "";
+  if (lie != "sand") return "";
+  if (sand_entry_for(club, lie) <= 0.0) return entry > 0.0 ? "heavy, sand before the ball" : "";
   if (entry <= 0.0) return "caught clean, no sand before the ball";
   if (entry >= 2.0 * kSplashEntry) return "heavy, deep in the sand behind it";
   return "";

@@ -112,21 +112,28 @@ double added_loft(const GolferSkill& g, const EquipmentCatalog& eq);
 /// 18 % for the amateur and the beginner (the beginner better than the amateur). Few stay
 /// in: the worlds' bunkers are 0.35 m deep with a 0.6 face, no lip that a fat splash fails.
 inline constexpr double kLowPointPerMs = 0.0010;
+/// m past the ball where a fairway-bunker pick is meant to bottom out: the splash's inch
+/// mirrored (ESTIMATE of "ball first, then the sand"). The amateur's 5-iron (its arc's
+/// spread 21 mm) then takes sand first on ~1 pick in 9, mostly a few millimetres.
+inline constexpr double kPickBeyond = 0.0254;
 
 /// m behind the ball where a golfer's `club` enters the sand from a ball lying on `lie`, for
 /// a swing whose timing error is `timing_ms` (timing_error_ms; 0: as meant). From a bunker
 /// the sand and lob wedges (lofted 54° or more, the soles made to skim sand) splash, meant to
 /// enter the taught inch behind the ball (kSplashEntry) and moved by the timing error through
 /// kLowPointPerMs (0 when the arc bottoms out at or past the ball: it is struck clean);
-/// every other club picks the ball clean, as fairway bunkers are taught. 0 off sand.
+/// every other club picks the ball clean, as fairway bunkers are taught, its arc meant to
+/// bottom out kPickBeyond past the ball ("ball, then sand", the ball back in the stance), so
+/// only a timing that moves it back farther than that takes sand first (a heavy pick). 0
+/// off sand.
 double sand_entry_for(const ClubSpec& club, const std::string& lie, double timing_ms = 0.0);
 
-/// How a splash met the sand, in a golfer's words, from where the club entered it (`entry`,
-/// sand_entry_for with the swing's timing): "caught clean, no sand before the ball" where the
-/// arc bottomed out at or past the ball (the face meets the ball as from a tight lie: long and
-/// spinning, not the skull of a leading edge, which an arc too high would give and this does
-/// not model), "heavy, deep in the sand behind it" from twice the taught
-/// inch, else empty. Empty for a pick and off sand: nothing was meant to meet the sand.
+/// How a stroke from sand met it, in a golfer's words, from where the club entered it
+/// (`entry`, sand_entry_for with the swing's timing). A splash: "caught clean, no sand before
+/// the ball" where the arc bottomed out at or past the ball (the face meets the ball as from a
+/// tight lie: long and spinning, not the skull of a leading edge, which an arc too high would
+/// give and this does not model), "heavy, deep in the sand behind it" from twice the taught
+/// inch. A pick: "heavy, sand before the ball" when it took any. Else, and off sand, empty.
 std::string splash_words(const ClubSpec& club, const std::string& lie, double entry);
 
 /// A golfer's full-swing club speed (m/s) with `club`: the club's tour speed scaled by the

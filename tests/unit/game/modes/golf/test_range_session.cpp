@@ -204,6 +204,19 @@ TEST_CASE("a splash timed early enters the sand farther behind the ball, one tim
   // Far too early still meets the ball within the splash's range; a pick stays a pick.
   m.accuracy_ms = -200.0;
   CHECK(sand_entry_for(sw, "sand", timing_error_ms(m, sw)) == kSandEntry.max);
-  CHECK(sand_entry_for(eq.club("7-iron"), "sand", timing_error_ms(m, eq.club("7-iron"))) == 0.0);
   CHECK(sand_entry_for(sw, "rough", timing_error_ms(m, sw)) == 0.0);
+  // A pick is meant to bottom out an inch past the ball: a little early still takes no sand,
+  // far early takes sand first (heavy), late never does.
+  const ClubSpec& iron = eq.club("7-iron");
+  for (double ms : {-10.0, 0.0, 60.0}) {
+    m.accuracy_ms = ms;
+    CHECK(sand_entry_for(iron, "sand", timing_error_ms(m, iron)) == 0.0);
+    CHECK(splash_words(iron, "sand", sand_entry_for(iron, "sand", timing_error_ms(m, iron))).empty());
+  }
+  m.accuracy_ms = -60.0;
+  const double heavy = sand_entry_for(iron, "sand", timing_error_ms(m, iron));
+  CHECK(heavy == Approx(60.0 * kLowPointPerMs * iron.length / kDriverLength - kPickBeyond));
+  CHECK(heavy > 0.01);
+  CHECK(splash_words(iron, "sand", heavy) == "heavy, sand before the ball");
+  CHECK(splash_words(iron, "fairway", heavy).empty());
 }

@@ -617,7 +617,12 @@ MeterBar draw_meter_bar(const std::optional<MeterClock>& meter, const MeterClock
     // A chip's zoomed bar: its end says what power it stands for, a marker past it stays there.
     char end[16];
     std::snprintf(end, sizeof end, "%.0f %%", 100.0 * bar.high);
-    dl->AddText(ImVec2(x0 + bw + 6.0f, y0 + 0.5f * (bh - ImGui::GetTextLineHeight())), IM_COL32(230, 230, 230, 255), end);
+    // On the bar's own dark ground: bare light text is lost over sand or a pale sky.
+    const ImVec2 at_end(x0 + bw + 6.0f, y0 + 0.5f * (bh - ImGui::GetTextLineHeight()));
+    const ImVec2 size = ImGui::CalcTextSize(end);
+    dl->AddRectFilled(ImVec2(at_end.x - 3.0f, at_end.y - 2.0f), ImVec2(at_end.x + size.x + 3.0f, at_end.y + size.y + 2.0f),
+                      IM_COL32(20, 24, 30, 255), 3.0f);
+    dl->AddText(at_end, IM_COL32(230, 230, 230, 255), end);
   }
   if (meter) {
     const double p = meter->position(now);

@@ -303,7 +303,7 @@ Eigen::Vector4f draw_golf_hud(const GolfPlay& play, const GolfUnits& units, int 
     // From a bunker the club decides the technique (sand_entry_for): say which it will be.
     if (r.lie() == "sand" && play.club() != "putter")
       ImGui::TextWrapped("%s", r.sand_entry(play.club()) > 0.0
-                                   ? "Splash: an inch of sand before the ball (about a third as far)"
+                                   ? "Splash: an inch of sand before the ball (about a third as far; late catches it clean and long, early takes more sand)"
                                    : "Picked clean, the ball first (the sand and lob wedges splash)");
     // On the green in the putt's units however long the putt.
     ImGui::Text("To the pin: %s", r.lie() == "green" ? units.putt(r.to_pin()).c_str() : units.course(r.to_pin()).c_str());

@@ -27,7 +27,7 @@ bool Team::to_the_bullpen(const MoundVisit& v, std::uint64_t seed) {
   if (pitchers_used >= kMaxPitchers) return false;
   const int thrown = pitcher.pitches_thrown();
   const bool starter = pitchers_used == 1;
-  const bool long_man = pitchers_used == 2 && entered_inning <= kLongReliefBy;
+  const bool long_man = !starter && (entered_inning <= kLongReliefBy || std::abs(entered_lead) >= kBlowoutRuns);
   const int outs_limit = long_man ? kLongReliefOuts : 3, pitch_limit = long_man ? kLongReliefPitches : kRelieverPitches;
   bool done = v.runs_this_inning >= kBlowUpRuns;
   if (v.inning_start)
@@ -43,6 +43,7 @@ bool Team::to_the_bullpen(const MoundVisit& v, std::uint64_t seed) {
   report = left ? left_report_ : right_report_;
   ++pitchers_used;
   entered_inning = v.inning;
+  entered_lead = v.lead;
   return true;
 }
 
@@ -226,7 +227,8 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
       bool inning_start = true;
       while (h.outs < 3) {
         // The fielding team's bullpen: the manager's look before each batter.
-        const Team::MoundVisit visit{s.inning, inning_start, runners_on(h.bases), runs_on_watch, fbox.pitchers.back().outs};
+        const Team::MoundVisit visit{s.inning, inning_start, runners_on(h.bases), runs_on_watch, fbox.pitchers.back().outs,
+                                     s.bottom ? s.away_runs - s.home_runs : s.home_runs - s.away_runs};
         const std::uint64_t mound_seed = o.seed * 1000003ULL + static_cast<std::uint64_t>(2 * s.inning + half) +
                                          (inning_start ? 0ULL : 7919ULL * static_cast<std::uint64_t>(field.pitchers_used));
         const bool change = field.to_the_bullpen(visit, mound_seed);

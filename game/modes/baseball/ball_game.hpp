@@ -68,6 +68,7 @@ class Team {
   ScoutingReport report;   ///< of the pitcher on the mound, as the other team knows him
   int pitchers_used = 1;
   int entered_inning = 1;  ///< the inning the pitcher on the mound came in
+  int entered_lead = 0;    ///< his team's lead when he came in
   /// The manager's look at his pitcher before a plate appearance.
   struct MoundVisit {
     int inning = 1;
@@ -75,6 +76,7 @@ class Team {
     int runners = 0;            ///< on base now
     int runs_this_inning = 0;   ///< scored while this pitcher was on the mound this half
     int outs_recorded = 0;      ///< by this pitcher, the whole game
+    int lead = 0;               ///< the fielding team's lead in runs (behind: negative)
   };
   /// Whether the pitcher gives way to the bullpen now; a fresh one (seeded by `seed`) is then
   /// on the mound. ESTIMATE of today's usage (MLB 2023-24: starters ~88 pitches and ~5⅓
@@ -85,12 +87,13 @@ class Team {
   /// cruising (under kStarterCruising pitches), and during one at kStarterLimit, or from
   /// kStarterPitches − 15 when two men are on; a reliever goes after an inning of work or
   /// kRelieverPitches, and during an inning from kRelieverPitches with a man on; anyone who
-  /// has let in kBlowUpRuns this inning goes. A starter knocked out by the kLongReliefBy
-  /// inning is followed by a long man, who covers up to kLongReliefOuts or kLongReliefPitches
-  /// as a starter's innings are covered when he leaves early (MLB.com, "5 bullpen usage trends
-  /// to know", 2017: long relievers are rarer, the average relief outing 1.04 innings in 2016;
-  /// the long man's three innings or 50 pitches: ESTIMATE); without him an early knockout
-  /// used six to nine pitchers, an inning each. No more than kMaxPitchers pitch (a roster's 13,
+  /// has let in kBlowUpRuns this inning goes. A reliever who comes in by the kLongReliefBy
+  /// inning, or with the game kBlowoutRuns either way (a mop-up man), is a long man: he
+  /// covers up to kLongReliefOuts or kLongReliefPitches, as a starter's innings are covered
+  /// when he leaves early and a lopsided game's are by one arm (MLB.com, "5 bullpen usage
+  /// trends to know", 2017: long relievers are rarer, the average relief outing 1.04 innings
+  /// in 2016; the long man's three innings or 50 pitches and the six-run blowout: ESTIMATE);
+  /// without him an early knockout used six to nine pitchers, an inning each. No more than kMaxPitchers pitch (a roster's 13,
   /// MLB Rule since 2022), the last one finishes. Over the tests' 100 games: starters 5.4
   /// innings and 89 pitches, 48 % of starts six innings or more, 12 % seven or more.
   /// Each pitcher throws left-handed as the league's do (kLeftStarterShare,
@@ -104,6 +107,7 @@ class Team {
   static constexpr int kLongReliefBy = 4;
   static constexpr int kLongReliefOuts = 9;
   static constexpr int kLongReliefPitches = 50;
+  static constexpr int kBlowoutRuns = 8;
   static constexpr int kBlowUpRuns = 4;
   static constexpr int kMaxPitchers = 13;
   Defense defense;

@@ -74,7 +74,7 @@ void LiveInning::play_their_half() {
     mound_runs_ = 0;
     while (h.outs < 3) {
       // The player's side's bullpen, as a game's manager works it (Team::to_the_bullpen).
-      const Team::MoundVisit visit{s.inning, inning_start, runners_on(h.bases), mound_runs_, mound_outs_};
+      const Team::MoundVisit visit{s.inning, inning_start, runners_on(h.bases), mound_runs_, mound_outs_, s.away_runs - s.home_runs};
       const std::uint64_t mound_seed = seed_ * 1000003ULL + static_cast<std::uint64_t>(2 * s.inning + 1) +
                                        (inning_start ? 0ULL : 7919ULL * static_cast<std::uint64_t>(batting_.pitchers_used));
       if (batting_.to_the_bullpen(visit, mound_seed)) {

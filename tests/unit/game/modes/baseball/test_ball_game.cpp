@@ -452,7 +452,7 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
   int six_plus = 0, seven_plus = 0;
   int starts = 0, starter_outs = 0, starter_pitches = 0, pitchers = 0, relieved_mid_inning = 0, inherited = 0, scored = 0;
   int left_starters = 0, relievers = 0, left_relievers = 0;
-  int knockouts = 0, knockout_staff = 0, long_outings = 0;
+  int knockouts = 0, knockout_staff = 0, long_outings = 0, relief_outs = 0;
   for (const GameRecord& g : league_games()) {
     CHECK(box_score_mismatch(g.away, g.home) == "");
     CHECK(box_score_mismatch(g.home, g.away) == "");
@@ -470,6 +470,7 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
         ++relievers;
         left_relievers += t->pitchers[i].left_handed;
         long_outings += t->pitchers[i].outs >= 7;
+        relief_outs += t->pitchers[i].outs;
       }
       if (t->pitchers[0].outs < 12) ++knockouts, knockout_staff += static_cast<int>(t->pitchers.size());
       int runs = 0;
@@ -500,16 +501,21 @@ TEST_CASE("over 100 games starters and relievers work as MLB's do, relieved duri
   CHECK(staff > 3.8);
   CHECK(staff < 5.0);
   CHECK(relieved_mid_inning >= starts / 5);
-  // A starter knocked out inside four innings is followed by a long man (Team::to_the_bullpen),
-  // not by a reliever an inning until the 9th: the relief outings past two innings are that
-  // rare few (MLB 2016: the average relief outing 1.04 innings), and such a game's staff stays
-  // near an ordinary one's (6.8 pitchers when each reliever went an inning).
+  // A starter knocked out inside four innings is followed by long men (Team::to_the_bullpen),
+  // as is a blowout, not by a reliever an inning until the 9th: the relief outings past two
+  // innings are a rare few, the average outing about an inning (MLB 2016: 1.04 innings), and
+  // such a game's staff stays near an ordinary one's (6.7 pitchers when each reliever went an
+  // inning, 5.1 with one long man).
+  const double relief_ip = relief_outs / 3.0 / relievers;
   INFO(knockouts << " starters out inside four innings, " << knockout_staff << " pitchers in those games; "
-                 << long_outings << " of " << relievers << " relief outings of 7 outs or more");
+                 << long_outings << " of " << relievers << " relief outings of 7 outs or more; " << relief_ip
+                 << " innings a relief outing");
   REQUIRE(knockouts >= 10);
-  CHECK(double(knockout_staff) / knockouts < 6.0);
+  CHECK(double(knockout_staff) / knockouts < 5.5);
   CHECK(long_outings >= knockouts / 3);
   CHECK(long_outings < relievers / 15);
+  CHECK(relief_ip > 0.9);
+  CHECK(relief_ip < 1.25);
   INFO(six_plus << " starts of 6+ innings, " << seven_plus << " of 7+ in " << starts);
   CHECK(six_plus > starts * 30 / 100);
   CHECK(six_plus < starts * 55 / 100);

@@ -118,13 +118,15 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
     return std::string(" (") + kPositionNames[fielder] +
            (takes == p.fielder ? std::string(" unassisted)") : std::string(" to ") + kPositionNames[static_cast<std::size_t>(takes)] + ")");
   };
-  // A runner put out: his out, and the scorer's words for it after the batter's.
+  // A runner put out: his out, and the scorer's words for it after the batter's. Thrown out
+  // advancing after the batter's own out (tagging up on a catch) he makes it a double play.
   std::string runner_out;
-  const auto put_out = [&](int from, int at) {
+  const auto put_out = [&](int from, int at, bool batter_out = false) {
     ++outs;
     ++outs_made;
     runner_out = from == at ? std::string(", double play: runner doubled off ") + base_name(at) + thrown_to(at)
-                            : std::string(", runner from ") + base_name(from) + " out at " + base_name(at) + thrown_to(at);
+                            : std::string(", runner from ") + base_name(from) + " out at " + base_name(at) + thrown_to(at) +
+                                  (batter_out ? ": double play" : "");
   };
   Bases next{-1, -1, -1};
   const auto place = [&](int who, int base) {
@@ -209,7 +211,7 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
       const double s = spare(bases[2], 3, 4, p.fielded_time, 0.0, p.fielded_time);
       if (s > kRunnerExtraBaseMargin) {
         if (safe(s)) scored.push_back(bases[2]);
-        else put_out(3, 4);
+        else put_out(3, 4, true);
         bases[2] = -1;
       }
     }
@@ -219,7 +221,7 @@ void HalfInning::advance(const PlateAppearance& pa, const Team& batting, const T
       const double s = spare(bases[1], 2, 3, p.fielded_time, 0.0, p.fielded_time);
       if (throw_home || s > kRunnerExtraBaseMargin) {
         if (throw_home || safe(s)) bases[2] = bases[1];
-        else put_out(2, 3);
+        else put_out(2, 3, true);
         bases[1] = -1;
       }
     }

@@ -630,6 +630,13 @@ TEST_CASE("over 100 games some runners who are sent are thrown out, and on a gro
       // A lone runner on second, a ground ball out at first: hit to the right side (1B, 2B) it
       // is behind him; to the pitcher, third or short it is in front of him.
       const FieldingPlay& play = pa.pitches.back().result.play;
+      // A runner thrown out tagging up after the catch makes the play a double play, as the
+      // scorer calls one turned by the infield ("Fly out to LF, runner from 2nd out at 3rd (LF
+      // to 3B): double play").
+      if (pa.result == "out" && play.caught && pa.outs_made == 2) {
+        INFO(pa.description);
+        CHECK(pa.description.find("double play") != std::string::npos);
+      }
       if (same_half && pa.result == "out" && pa.outs_made == 1 && play.type == BattedBallType::GroundBall && !play.caught &&
           before[0] < 0 && before[1] >= 0 && before[2] < 0 && pa.outs_before < 2) {
         const bool moved = pas[i + 1].bases_before[2] == before[1];

@@ -142,10 +142,11 @@ void BattingCage::count_pitch(PitchResult r) {
   char text[256];
   if (end == PlateEnd::None) {
     static const char* kWords[] = {"Ball", "Called strike", "Swinging strike", "Foul", "Foul tip", "In play", "Hit by pitch"};
-    std::snprintf(text, sizeof text, "%s   (%d-%d)", kWords[static_cast<int>(r)], count_.balls, count_.strikes);
+    // The count after the pitch, said so: "Ball (3-2)" read as ball four at 3-2.
+    std::snprintf(text, sizeof text, "%s   (count now %d-%d)", kWords[static_cast<int>(r)], count_.balls, count_.strikes);
     // A foul's or a miss's own words (call_text_) come first when the swing made some.
     call_text_ = (r == PitchResult::Foul || r == PitchResult::SwingingStrike) && !call_text_.empty()
-                     ? call_text_ + "   (" + std::to_string(count_.balls) + "-" + std::to_string(count_.strikes) + ")"
+                     ? call_text_ + "   (count now " + std::to_string(count_.balls) + "-" + std::to_string(count_.strikes) + ")"
                      : std::string(text);
     return;
   }

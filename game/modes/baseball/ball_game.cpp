@@ -234,7 +234,7 @@ GameRecord play_game(const Assets& assets, const GameOptions& o) {
         const bool change = field.to_the_bullpen(visit, mound_seed);
         if (change) {
           PitchingLine fresh;
-          fresh.lead_at_entry = s.bottom ? s.away_runs - s.home_runs : s.home_runs - s.away_runs;
+          fresh.lead_at_entry = visit.lead;
           fresh.runners_at_entry = visit.runners;
           fresh.inherited = inning_start ? 0 : visit.runners;  // extra innings' runner is his own
           fresh.left_handed = field.pitcher.profile().left_handed;

@@ -92,9 +92,9 @@ class Team {
   /// covers up to kLongReliefOuts or kLongReliefPitches, as a starter's innings are covered
   /// when he leaves early and a lopsided game's are by one arm (MLB.com, "5 bullpen usage
   /// trends to know", 2017: long relievers are rarer, the average relief outing 1.04 innings
-  /// in 2016; the long man's three innings or 50 pitches and the six-run blowout: ESTIMATE);
-  /// without him an early knockout used six to nine pitchers, an inning each. No more than kMaxPitchers pitch (a roster's 13,
-  /// MLB Rule since 2022), the last one finishes. Over the tests' 100 games: starters 5.4
+  /// in 2016; the long man's three innings or 50 pitches and the eight-run blowout: ESTIMATE);
+  /// without him an early knockout used six to nine pitchers, an inning each. No more than
+  /// kMaxPitchers pitch (a roster's 13, MLB Rule since 2022), the last one finishes. Over the tests' 100 games: starters 5.4
   /// innings and 89 pitches, 48 % of starts six innings or more, 12 % seven or more.
   /// Each pitcher throws left-handed as the league's do (kLeftStarterShare,
   /// kLeftRelieverShare), drawn from his seed; the report is then his.

@@ -139,15 +139,15 @@ void BattingCage::start_record() {
 
 void BattingCage::count_pitch(PitchResult r) {
   const PlateEnd end = apply_pitch(count_, r);
-  char text[256];
   if (end == PlateEnd::None) {
     static const char* kWords[] = {"Ball", "Called strike", "Swinging strike", "Foul", "Foul tip", "In play", "Hit by pitch"};
     // The count after the pitch, said so: "Ball (3-2)" read as ball four at 3-2.
-    std::snprintf(text, sizeof text, "%s   (count now %d-%d)", kWords[static_cast<int>(r)], count_.balls, count_.strikes);
+    const std::string count = "   (count now " + std::to_string(count_.balls) + "-" + std::to_string(count_.strikes) + ")";
     // A foul's or a miss's own words (call_text_) come first when the swing made some.
-    call_text_ = (r == PitchResult::Foul || r == PitchResult::SwingingStrike) && !call_text_.empty()
-                     ? call_text_ + "   (count now " + std::to_string(count_.balls) + "-" + std::to_string(count_.strikes) + ")"
-                     : std::string(text);
+    call_text_ = ((r == PitchResult::Foul || r == PitchResult::SwingingStrike) && !call_text_.empty()
+                      ? call_text_
+                      : std::string(kWords[static_cast<int>(r)])) +
+                 count;
     return;
   }
   ++at_bats_.pa;

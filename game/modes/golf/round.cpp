@@ -115,7 +115,8 @@ ShotSpec GolfRound::spec_for(const StrokeInput& in) const {
   ClubStrike c;
   c.club = in.club;
   c.swing = golfer_swing(golfer_, in.meter, eq, in.club);
-  c.swing.sand_entry = sand_entry_for(eq.club(in.club), lie(), timing_error_ms(in.meter, eq.club(in.club)));
+  const ClubSpec& club = eq.club(in.club);
+  c.swing.sand_entry = sand_entry_for(club, lie(), timing_error_ms(in.meter, club));
   s.strike = c;
   // The ball is kept in world coordinates; a placement is measured from the world's origin.
   const Vec3& origin = hole().world->description().origin;

@@ -12,6 +12,7 @@
 #include "game/modes/baseball/figures.hpp"
 #include "physics/error.hpp"
 #include "physics/units.hpp"
+#include "support/cage_play.hpp"
 #include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
 
@@ -515,9 +516,7 @@ TEST_CASE("A keeps the record it leaves: batting practice's swings and the live 
   // B pitches and lets the pro swing; on until the call.
   const auto pro_swings = [&] {
     cage.update({at(IntentKind::BotSwings, now)}, now);
-    for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
-                                                      cage.stage() == BattingCage::Stage::Batted);)
-      cage.update({}, now += 0.05);
+    test::play_out_pitch(cage, now, 0.05);
     now += 0.5;
   };
   for (int k = 0; k < 3; ++k) pro_swings();

@@ -7,11 +7,13 @@
 
 #include "game/modes/baseball/cage.hpp"
 #include "game/modes/baseball/live_inning.hpp"
+#include "support/cage_play.hpp"
 #include "support/intent_at.hpp"
 #include "support/test_assets.hpp"
 
 using namespace sweetspot;
 using test::at;
+using test::play_out_pitch;
 
 TEST_CASE("live game: four walks force in a run, three strikeouts retire the side, the next inning starts empty",
           "[modes][baseball]") {
@@ -113,9 +115,7 @@ TEST_CASE("live game: the pro bats against the league's pitcher as the game's hi
     // A game over: P opens the next (B leaves the final standing), and the pro bats on.
     if (cage.board()->final) cage.update({at(IntentKind::Pitch, now)}, now);
     cage.update({at(IntentKind::BotSwings, now + 0.01)}, now + 0.01);
-    for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
-                                                      cage.stage() == BattingCage::Stage::Batted);)
-      cage.update({}, now += 0.05);
+    play_out_pitch(cage, now, 0.05);
     now += 0.5;
   }
   const BattingCage::AtBats& a = cage.at_bats();
@@ -214,9 +214,7 @@ TEST_CASE("live game in the cage: the final stays until P; B and Space say so", 
   double now = 1.0;
   while (!cage.board()->final && now < 40000.0) {
     cage.update({at(IntentKind::BotSwings, now)}, now);
-    for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
-                                                      cage.stage() == BattingCage::Stage::Batted);)
-      cage.update({}, now += 0.1);
+    play_out_pitch(cage, now, 0.1);
     now += 0.5;
   }
   REQUIRE(cage.board()->final);
@@ -250,9 +248,7 @@ TEST_CASE("the live game A keeps for the way back is counted while practising (w
   double now = 1.0;
   while (cage.game_pa() < 4 && now < 4000.0) {
     cage.update({at(IntentKind::BotSwings, now)}, now);
-    for (double until = now + 20.0; now < until && (cage.stage() == BattingCage::Stage::Pitching ||
-                                                      cage.stage() == BattingCage::Stage::Batted);)
-      cage.update({}, now += 0.1);
+    play_out_pitch(cage, now, 0.1);
     now += 0.5;
   }
   const int pa = cage.game_pa();
